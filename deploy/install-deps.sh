@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs exactly the Debian 12 packages semnav builds, runs and tests with.
+# Idempotent and quiet: packages already present are not fetched again.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  g++ cmake ninja-build ccache pkg-config git
+  # contracts and transport
+  libgrpc++-dev protobuf-compiler-grpc libprotobuf-dev protobuf-compiler grpc-proto libabsl-dev
+  # algorithms
+  libeigen3-dev liboctomap-dev libompl-dev
+  libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-dnn-dev
+  # config, text, HTTP
+  libyaml-cpp-dev nlohmann-json3-dev libicu-dev libcurl4-openssl-dev libcpp-httplib-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-onnx python3-numpy
+  iproute2 openssl
+  # contract tooling from npm (buf, grpc-js)
+  nodejs
+)
+# A machine whose nodejs already bundles npm (e.g. NodeSource) must not get Debian's npm on top.
+command -v npm >/dev/null 2>&1 || packages+=(npm)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  sudo_cmd=()
+  [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# npm tools pinned by package-lock.json (buf for proto lint/breaking, grpc-js for the non-C++ client).
+repo_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+if [[ -f "$repo_root/package-lock.json" ]]; then
+  (cd "$repo_root" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+fi

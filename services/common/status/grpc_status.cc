@@ -1,0 +1,72 @@
+#include "services/common/status/grpc_status.h"
+
+#include <google/protobuf/any.pb.h>
+
+#include "absl/strings/match.h"
+#include "absl/strings/str_cat.h"
+
+namespace semnav {
+namespace {
+
+constexpr absl::string_view kTypeUrlPrefix = "type.googleapis.com/";
+
+}  // namespace
+
+grpc::Status ToGrpcStatus(const absl::Status& status) {
+  if (status.ok()) return grpc::Status::OK;
+  // absl and gRPC share the canonical code numbering (0-16).
+  const auto code = static_cast<grpc::StatusCode>(status.code());
+  const std::string message(status.message());
+  semnav::common::v1::RichStatus rich;
+  rich.set_code(static_cast<int>(status.code()));
+  rich.set_message(message);
+  status.ForEachPayload([&rich](absl::string_view type_url, const absl::Cord& payload) {
+    if (!absl::StartsWith(type_url, kTypeUrlPrefix)) return;
+    google::protobuf::Any* any = rich.add_details();
+    any->set_type_url(std::string(type_url));
+    any->set_value(std::string(payload));
+  });
+  if (rich.details_size() == 0) return grpc::Status(code, message);
+  return grpc::Status(code, message, rich.SerializeAsString());
+}
+
+absl::Status FromGrpcStatus(const grpc::Status& status) {
+  if (status.ok()) return absl::OkStatus();
+  absl::Status result(static_cast<absl::StatusCode>(status.error_code()), status.error_message());
+  semnav::common::v1::RichStatus rich;
+  if (!status.error_details().empty() && rich.ParseFromString(status.error_details())) {
+    for (const google::protobuf::Any& any : rich.details()) {
+      result.SetPayload(any.type_url(), absl::Cord(any.value()));
+    }
+  }
+  return result;
+}
+
+void AttachDetail(absl::Status& status, const google::protobuf::Message& detail) {
+  if (status.ok()) return;
+  status.SetPayload(absl::StrCat(kTypeUrlPrefix, detail.GetDescriptor()->full_name()),
+                    absl::Cord(detail.SerializeAsString()));
+}
+
+absl::Status FieldError(absl::StatusCode code, absl::string_view field, absl::string_view message,
+                        absl::string_view reason) {
+  absl::Status status(code, absl::StrCat(field, ": ", message));
+  semnav::common::v1::ErrorInfo info;
+  info.set_reason(std::string(reason));
+  info.set_field(std::string(field));
+  AttachDetail(status, info);
+  return status;
+}
+
+std::optional<std::string> FindDetailBytes(const grpc::Status& status, absl::string_view full_name) {
+  if (status.error_details().empty()) return std::nullopt;
+  semnav::common::v1::RichStatus rich;
+  if (!rich.ParseFromString(status.error_details())) return std::nullopt;
+  const std::string wanted = absl::StrCat(kTypeUrlPrefix, std::string(full_name));
+  for (const google::protobuf::Any& any : rich.details()) {
+    if (any.type_url() == wanted) return any.value();
+  }
+  return std::nullopt;
+}
+
+}  // namespace semnav

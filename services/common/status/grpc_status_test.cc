@@ -1,0 +1,64 @@
+#include "services/common/status/grpc_status.h"
+
+#include <gtest/gtest.h>
+
+namespace semnav {
+namespace {
+
+using semnav::common::v1::ErrorInfo;
+
+TEST(GrpcStatusTest, OkMapsToOk) { EXPECT_TRUE(ToGrpcStatus(absl::OkStatus()).ok()); }
+
+TEST(GrpcStatusTest, CodesAndMessagesSurvive) {
+  const grpc::Status s = ToGrpcStatus(absl::NotFoundError("map 'lab' not found"));
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(s.error_message(), "map 'lab' not found");
+  EXPECT_TRUE(s.error_details().empty());
+  EXPECT_EQ(ToGrpcStatus(absl::DeadlineExceededError("x")).error_code(),
+            grpc::StatusCode::DEADLINE_EXCEEDED);
+  EXPECT_EQ(ToGrpcStatus(absl::DataLossError("x")).error_code(), grpc::StatusCode::DATA_LOSS);
+  EXPECT_EQ(ToGrpcStatus(absl::UnauthenticatedError("x")).error_code(),
+            grpc::StatusCode::UNAUTHENTICATED);
+}
+
+TEST(GrpcStatusTest, FieldErrorCarriesTypedDetailAcrossTheAdapter) {
+  const absl::Status error =
+      FieldError(absl::StatusCode::kInvalidArgument, "frame.depth.width", "640 != intrinsics 320");
+  EXPECT_EQ(error.message(), "frame.depth.width: 640 != intrinsics 320");
+  const grpc::Status wire = ToGrpcStatus(error);
+  EXPECT_EQ(wire.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  std::optional<ErrorInfo> info = GetDetail<ErrorInfo>(wire);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "frame.depth.width");
+  EXPECT_EQ(info->reason(), "FIELD_INVALID");
+
+  const absl::Status back = FromGrpcStatus(wire);
+  EXPECT_EQ(back.code(), absl::StatusCode::kInvalidArgument);
+  std::optional<ErrorInfo> again = GetDetail<ErrorInfo>(back);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_EQ(again->field(), "frame.depth.width");
+}
+
+TEST(GrpcStatusTest, AttachDetailReplacesSameTypeAndIgnoresOk) {
+  absl::Status status = absl::FailedPreconditionError("no map");
+  ErrorInfo first;
+  first.set_reason("A");
+  AttachDetail(status, first);
+  ErrorInfo second;
+  second.set_reason("B");
+  AttachDetail(status, second);
+  EXPECT_EQ(GetDetail<ErrorInfo>(status)->reason(), "B");
+
+  absl::Status ok = absl::OkStatus();
+  AttachDetail(ok, first);
+  EXPECT_TRUE(ok.ok());
+}
+
+TEST(GrpcStatusTest, NonProtoPayloadsStayLocal) {
+  absl::Status status = absl::InternalError("boom");
+  status.SetPayload("local/trace", absl::Cord("secret-ish"));
+  EXPECT_TRUE(ToGrpcStatus(status).error_details().empty());
+}
+
+}  // namespace
+}  // namespace semnav

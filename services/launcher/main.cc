@@ -1,0 +1,123 @@
+// semnav: runs the whole stack on one machine and hosts the benchmark and demo entry points.
+#include <signal.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "absl/strings/str_cat.h"
+#include "services/common/cli/flags.h"
+#include "services/launcher/stack_runner.h"
+
+namespace {
+
+using semnav::launcher::StackConfig;
+
+constexpr char kUsage[] = R"(Usage: semnav <command> [flags]
+
+Commands:
+  up [--config FILE]        start every service on localhost, wait until all are SERVING,
+                            print the endpoints, stop them all on Ctrl-C / SIGTERM
+  status [--config FILE]    health of every service of the stack (exit 1 if any is down)
+  bench <area> [args...]    run the benchmark of an area (e.g. mapping, planning,
+                            relocalization, modelproxy, gateway); `--json FILE` writes its figures
+  help                      this text
+
+Without --config the embedded localhost stack (same as deploy/local.yaml) is used: no model
+keys, no network, the offline reasoner.
+)";
+
+std::string BinDir() { return std::filesystem::canonical("/proc/self/exe").parent_path().string(); }
+
+absl::StatusOr<StackConfig> StackFromFlags(int argc, char** argv) {
+  static const std::vector<semnav::FlagSpec> specs = {{"config", "FILE", "stack YAML"}};
+  absl::StatusOr<semnav::ParsedFlags> flags = semnav::ParseFlags(argc, argv, 2, specs);
+  if (!flags.ok()) return flags.status();
+  if (!flags->positional.empty()) {
+    return absl::InvalidArgumentError("unexpected argument '" + flags->positional[0] + "'");
+  }
+  if (auto path = flags->Get("config")) return semnav::launcher::LoadStackConfig(*path);
+  return semnav::launcher::DefaultStackConfig();
+}
+
+int Up(const StackConfig& stack) {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  sigaddset(&signals, SIGCHLD);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  semnav::launcher::StackRunner runner(stack, BinDir());
+  if (absl::Status started = runner.Start(); !started.ok()) {
+    std::cerr << "semnav up: " << started.message() << "\n";
+    return 1;
+  }
+  std::cout << "semnav stack is up:\n";
+  for (const auto& service : stack.services) {
+    std::cout << "  " << service.name << std::string(16 - std::min<std::size_t>(15, service.name.size()), ' ')
+              << service.listen << "\n";
+  }
+  std::cout << "Ctrl-C stops every service." << std::endl;
+  absl::Status waited = runner.WaitForStopRequest();
+  absl::Status stopped = runner.Stop();
+  if (!waited.ok()) {
+    std::cerr << "semnav up: " << waited.message() << "\n";
+    return 1;
+  }
+  if (!stopped.ok()) {
+    std::cerr << "semnav up: " << stopped.message() << "\n";
+    return 1;
+  }
+  std::cout << "semnav stack stopped." << std::endl;
+  return 0;
+}
+
+int Bench(int argc, char** argv) {
+  if (argc < 3) {
+    std::cerr << "semnav bench: name an area\n";
+    return 2;
+  }
+  const std::string area = argv[2];
+  const std::string path = absl::StrCat(BinDir(), "/semnav-bench-", area);
+  if (::access(path.c_str(), X_OK) != 0) {
+    std::set<std::string> areas;
+    for (const auto& entry : std::filesystem::directory_iterator(BinDir())) {
+      const std::string name = entry.path().filename().string();
+      if (name.starts_with("semnav-bench-")) areas.insert(name.substr(13));
+    }
+    std::cerr << "semnav bench: no benchmark for area '" << area << "'; built areas:";
+    for (const std::string& a : areas) std::cerr << " " << a;
+    std::cerr << "\n";
+    return 2;
+  }
+  std::vector<char*> args = {const_cast<char*>(path.c_str())};
+  for (int i = 3; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  ::execv(path.c_str(), args.data());
+  std::cerr << "semnav bench: cannot run " << path << "\n";
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string command = argc > 1 ? argv[1] : "help";
+  if (command == "help" || command == "--help" || command == "-h") {
+    std::cout << kUsage;
+    return 0;
+  }
+  if (command == "bench") return Bench(argc, argv);
+  if (command == "up" || command == "status") {
+    absl::StatusOr<StackConfig> stack = StackFromFlags(argc, argv);
+    if (!stack.ok()) {
+      std::cerr << "semnav " << command << ": " << stack.status().message() << "\n";
+      return 2;
+    }
+    if (command == "up") return Up(*stack);
+    absl::Status status = semnav::launcher::PrintStatus(*stack);
+    return status.ok() ? 0 : 1;
+  }
+  std::cerr << "semnav: unknown command '" << command << "'\n" << kUsage;
+  return 2;
+}

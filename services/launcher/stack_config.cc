@@ -1,0 +1,58 @@
+#include "services/launcher/stack_config.h"
+
+#include <filesystem>
+
+#include "services/common/config/config_reader.h"
+
+namespace semnav::launcher {
+namespace {
+
+absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem::path& base) {
+  StackConfig stack;
+  root.Read("startup_timeout_s", &stack.startup_timeout_s)
+      .Read("stop_timeout_s", &stack.stop_timeout_s);
+  root.Check(stack.startup_timeout_s > 0, "startup_timeout_s", "must be > 0");
+  root.Check(stack.stop_timeout_s > 0, "stop_timeout_s", "must be > 0");
+  ConfigReader services = root.Child("services");
+  for (const std::string& name : services.Keys()) {
+    ConfigReader entry = services.Child(name);
+    StackService service{.name = name, .binary = "", .listen = "", .config = ""};
+    entry.Read("binary", &service.binary).Read("listen", &service.listen).Read("config", &service.config);
+    entry.Check(!service.binary.empty(), "binary", "is required");
+    entry.Check(!service.listen.empty(), "listen", "is required (host:port)");
+    if (!service.config.empty() && std::filesystem::path(service.config).is_relative()) {
+      service.config = (base / service.config).lexically_normal().string();
+    }
+    stack.services.push_back(service);
+  }
+  root.Check(!stack.services.empty(), "services", "must list at least one service");
+  if (absl::Status status = root.Finish(); !status.ok()) return status;
+  return stack;
+}
+
+constexpr char kDefaultStack[] = R"yaml(
+startup_timeout_s: 20
+stop_timeout_s: 10
+services:
+  gateway: {binary: semnav-gateway, listen: "127.0.0.1:50050"}
+  mapping: {binary: semnav-mapping, listen: "127.0.0.1:50051"}
+  planning: {binary: semnav-planning, listen: "127.0.0.1:50052"}
+  relocalization: {binary: semnav-relocalization, listen: "127.0.0.1:50053"}
+  modelproxy: {binary: semnav-model-proxy, listen: "127.0.0.1:50054"}
+)yaml";
+
+}  // namespace
+
+absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path) {
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromFile(path);
+  if (!root.ok()) return root.status();
+  return ParseStack(*root, std::filesystem::absolute(path).parent_path());
+}
+
+StackConfig DefaultStackConfig() {
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(kDefaultStack);
+  absl::StatusOr<StackConfig> stack = ParseStack(*root, std::filesystem::current_path());
+  return *stack;  // the embedded text is fixed and tested
+}
+
+}  // namespace semnav::launcher
