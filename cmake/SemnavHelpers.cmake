@@ -33,6 +33,9 @@ function(semnav_test name)
     SEMNAV_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
     SEMNAV_BIN_DIR="${CMAKE_RUNTIME_OUTPUT_DIRECTORY}")
   semnav_strict(${name})
+  # Each test process gets its own TEST_TMPDIR/TMPDIR (see run-isolated.sh).
+  set_target_properties(${name} PROPERTIES
+    CROSSCOMPILING_EMULATOR ${CMAKE_SOURCE_DIR}/cmake/run-isolated.sh)
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 30
     PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 300)
 endfunction()

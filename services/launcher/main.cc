@@ -21,7 +21,10 @@ Commands:
                             print the endpoints, stop them all on Ctrl-C / SIGTERM
   status [--config FILE]    health of every service of the stack (exit 1 if any is down)
   bench <area> [args...]    run the benchmark of an area (e.g. mapping, planning,
-                            relocalization, modelproxy, gateway); `--json FILE` writes its figures
+                            relocalization, modelproxy, gateway, mission); `--json FILE` writes
+                            its figures
+  demo [args...]            start the stack, run one short simulated indoor mission, print the
+                            result and where the report is
   help                      this text
 
 Without --config the embedded localhost stack (same as deploy/local.yaml) is used: no model
@@ -73,14 +76,25 @@ int Up(const StackConfig& stack) {
   return 0;
 }
 
+// Replaces this process by a sibling binary, passing argv[first..].
+int ExecSibling(const std::string& binary, int argc, char** argv, int first) {
+  const std::string path = absl::StrCat(BinDir(), "/", binary);
+  std::vector<char*> args = {const_cast<char*>(path.c_str())};
+  for (int i = first; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  ::execv(path.c_str(), args.data());
+  std::cerr << "semnav: cannot run " << path << "\n";
+  return 1;
+}
+
 int Bench(int argc, char** argv) {
   if (argc < 3) {
     std::cerr << "semnav bench: name an area\n";
     return 2;
   }
   const std::string area = argv[2];
-  const std::string path = absl::StrCat(BinDir(), "/semnav-bench-", area);
-  if (::access(path.c_str(), X_OK) != 0) {
+  const std::string binary = "semnav-bench-" + area;
+  if (::access(absl::StrCat(BinDir(), "/", binary).c_str(), X_OK) != 0) {
     std::set<std::string> areas;
     for (const auto& entry : std::filesystem::directory_iterator(BinDir())) {
       const std::string name = entry.path().filename().string();
@@ -91,12 +105,7 @@ int Bench(int argc, char** argv) {
     std::cerr << "\n";
     return 2;
   }
-  std::vector<char*> args = {const_cast<char*>(path.c_str())};
-  for (int i = 3; i < argc; ++i) args.push_back(argv[i]);
-  args.push_back(nullptr);
-  ::execv(path.c_str(), args.data());
-  std::cerr << "semnav bench: cannot run " << path << "\n";
-  return 1;
+  return ExecSibling(binary, argc, argv, 3);
 }
 
 }  // namespace
@@ -108,6 +117,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (command == "bench") return Bench(argc, argv);
+  if (command == "demo") return ExecSibling("semnav-sim-demo", argc, argv, 2);
   if (command == "up" || command == "status") {
     absl::StatusOr<StackConfig> stack = StackFromFlags(argc, argv);
     if (!stack.ok()) {

@@ -1,0 +1,109 @@
+#include "services/mapping/core/map_serialization.h"
+
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "absl/strings/str_cat.h"
+
+namespace semnav::mapping {
+namespace {
+
+using nlohmann::json;
+
+void PutSection(std::string& out, const std::string& section) {
+  for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((section.size() >> (8 * i)) & 0xff));
+  out += section;
+}
+
+absl::StatusOr<std::string> TakeSection(const std::string& in, size_t& offset, absl::string_view name) {
+  if (in.size() - offset < 8) return absl::DataLossError(absl::StrCat("map payload: ", name, " section missing"));
+  uint64_t size = 0;
+  for (int i = 0; i < 8; ++i) size |= static_cast<uint64_t>(static_cast<unsigned char>(in[offset + i])) << (8 * i);
+  offset += 8;
+  if (in.size() - offset < size) return absl::DataLossError(absl::StrCat("map payload: ", name, " section truncated"));
+  std::string section = in.substr(offset, size);
+  offset += size;
+  return section;
+}
+
+json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+Eigen::Vector3d Vec(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
+
+}  // namespace
+
+std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObject>& objects, uint64_t next_object_id,
+                         const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points) {
+  std::ostringstream octree;
+  tree.write(octree);
+  json scene = {{"next_id", next_object_id}, {"objects", json::array()}};
+  for (const SceneObject& o : objects) {
+    scene["objects"].push_back({{"id", o.id},
+                                {"label", o.label},
+                                {"position", Vec(o.position)},
+                                {"size", Vec(o.size)},
+                                {"score", o.score},
+                                {"count", o.detection_count},
+                                {"embedding", o.embedding},
+                                {"first_seen_ns", o.first_seen_ns},
+                                {"last_seen_ns", o.last_seen_ns}});
+  }
+  json semantic = json::object();
+  for (const auto& [label, points] : semantic_points) {
+    std::vector<float> flat;
+    for (const Eigen::Vector3f& p : points) flat.insert(flat.end(), {p.x(), p.y(), p.z()});
+    semantic[label] = flat;
+  }
+  std::string out;
+  PutSection(out, octree.str());
+  PutSection(out, scene.dump());
+  PutSection(out, semantic.dump());
+  return out;
+}
+
+absl::StatusOr<MapContent> ParseMap(const std::string& payload) {
+  size_t offset = 0;
+  absl::StatusOr<std::string> octree = TakeSection(payload, offset, "octree");
+  if (!octree.ok()) return octree.status();
+  absl::StatusOr<std::string> scene = TakeSection(payload, offset, "scene");
+  if (!scene.ok()) return scene.status();
+  absl::StatusOr<std::string> semantic = TakeSection(payload, offset, "semantic");
+  if (!semantic.ok()) return semantic.status();
+
+  MapContent content;
+  std::istringstream octree_stream(*octree);
+  std::unique_ptr<octomap::AbstractOcTree> tree(octomap::AbstractOcTree::read(octree_stream));
+  auto* oc_tree = dynamic_cast<octomap::OcTree*>(tree.get());
+  if (oc_tree == nullptr) return absl::DataLossError("map payload: octree section is not an OcTree");
+  tree.release();
+  content.tree.reset(oc_tree);
+  try {
+    const json scene_json = json::parse(*scene);
+    content.next_object_id = scene_json.at("next_id").get<uint64_t>();
+    for (const json& j : scene_json.at("objects")) {
+      SceneObject o;
+      o.id = j.at("id").get<uint64_t>();
+      o.label = j.at("label").get<std::string>();
+      o.position = Vec(j.at("position"));
+      o.size = Vec(j.at("size"));
+      o.score = j.at("score").get<double>();
+      o.detection_count = j.at("count").get<int>();
+      o.embedding = j.at("embedding").get<std::vector<float>>();
+      o.first_seen_ns = j.at("first_seen_ns").get<int64_t>();
+      o.last_seen_ns = j.at("last_seen_ns").get<int64_t>();
+      content.objects.push_back(std::move(o));
+    }
+    const json semantic_json = json::parse(*semantic);
+    for (const auto& [label, flat] : semantic_json.items()) {
+      const std::vector<float> values = flat.get<std::vector<float>>();
+      if (values.size() % 3 != 0) return absl::DataLossError("map payload: semantic points not in xyz triples");
+      auto& points = content.semantic_points[label];
+      for (size_t i = 0; i + 2 < values.size(); i += 3) points.emplace_back(values[i], values[i + 1], values[i + 2]);
+    }
+  } catch (const json::exception& e) {
+    return absl::DataLossError(absl::StrCat("map payload: ", e.what()));
+  }
+  return content;
+}
+
+}  // namespace semnav::mapping

@@ -1,0 +1,322 @@
+#include "services/mapping/core/mapping_engine.h"
+
+#include <algorithm>
+#include <cctype>
+#include <deque>
+#include <set>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "absl/strings/str_cat.h"
+#include "services/mapping/core/frame_validation.h"
+#include "services/mapping/core/map_serialization.h"
+#include "services/mapping/core/semantic_filters.h"
+
+namespace semnav::mapping {
+
+struct MappingEngine::State {
+  explicit State(const MappingConfig& config)
+      : tree(std::make_unique<octomap::OcTree>(config.octomap_resolution_m)),
+        columns(config.octomap_resolution_m),
+        grid(config.grid, config.heights),
+        semantic(config.semantic),
+        scene(config.scene) {}
+
+  // Replaces the geometry and semantics by `content`; the scene graph keeps its revision history.
+  void Adopt(MapContent content, const MappingConfig& config) {
+    tree = std::move(content.tree);
+    columns = VoxelColumns::FromOctree(*tree);
+    grid = HierarchicalGrid(config.grid, config.heights);
+    absl::flat_hash_set<VoxelColumns::ColumnId> all;
+    for (const auto& [id, column] : columns.columns()) all.insert(id);
+    grid.Update(columns, all);
+    semantic.Clear();
+    for (const auto& [label, points] : content.semantic_points) semantic.Add(label, points);
+    scene.Replace(std::move(content.objects), content.next_object_id);
+    last_stamp.clear();
+    embedding_dim = 0;
+    for (const SceneObject& o : scene.objects()) {
+      if (!o.embedding.empty()) embedding_dim = static_cast<int>(o.embedding.size());
+    }
+  }
+
+  std::unique_ptr<octomap::OcTree> tree;
+  VoxelColumns columns;
+  HierarchicalGrid grid;
+  SemanticMap semantic;
+  SceneGraph scene;
+  absl::flat_hash_map<std::string, int64_t> last_stamp;
+  int embedding_dim = 0;
+  std::deque<std::pair<uint64_t, GridWindow>> grid_changes;
+  uint64_t grid_forgotten_before = 0;
+  int accepted_frames = 0;
+};
+
+namespace {
+
+std::string Lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+GridWindow Union(const GridWindow& a, const GridWindow& b) {
+  if (a.width == 0) return b;
+  if (b.width == 0) return a;
+  const int min_x = std::min(a.min.x, b.min.x);
+  const int min_y = std::min(a.min.y, b.min.y);
+  const int max_x = std::max(a.min.x + a.width, b.min.x + b.width);
+  const int max_y = std::max(a.min.y + a.height, b.min.y + b.height);
+  return {{min_x, min_y}, max_x - min_x, max_y - min_y};
+}
+
+}  // namespace
+
+MappingEngine::MappingEngine(const MappingConfig& config)
+    : config_(config), integrator_(config.threads), state_(std::make_unique<State>(config)) {}
+
+MappingEngine::~MappingEngine() = default;
+
+absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
+  absl::MutexLock lock(&mu_);
+  State& s = *state_;
+  ValidationContext context;
+  if (const auto it = s.last_stamp.find(frame.robot_id); it != s.last_stamp.end()) context.last_stamp_ns = it->second;
+  context.embedding_dim = s.embedding_dim;
+  if (absl::Status status = ValidateFrame(frame, context); !status.ok()) return status;
+  FrameResult result;
+  if (!frame.rgb_encoded.empty()) {
+    const cv::Mat encoded(1, static_cast<int>(frame.rgb_encoded.size()), CV_8U,
+                          const_cast<char*>(frame.rgb_encoded.data()));
+    const cv::Mat gray = cv::imdecode(encoded, cv::IMREAD_GRAYSCALE);
+    if (gray.empty()) return absl::InvalidArgumentError("rgb.data: not a decodable PNG or JPEG image");
+    result.blurred = LaplacianVariance(gray) < config_.blur_min_laplacian_variance;
+  }
+
+  const cv::Mat depth = DecodeDepth(frame.depth);
+  std::vector<Eigen::Vector3f> points =
+      ProjectDepth(depth, frame.intrinsics, frame.pose, config_.range, config_.pixel_stride);
+  const Eigen::Matrix3f rotation = frame.pose.orientation.toRotationMatrix().cast<float>();
+  const Eigen::Vector3f origin = frame.pose.position.cast<float>();
+  for (const Eigen::Vector3f& p : frame.lidar_points) {
+    const float range = p.norm();
+    if (range >= config_.range.min_m && range <= config_.range.max_m) points.push_back(rotation * p + origin);
+  }
+  const std::vector<TouchedVoxel> touched = integrator_.Integrate(*s.tree, points, origin);
+  result.voxels_updated = static_cast<uint32_t>(touched.size());
+  const absl::flat_hash_set<VoxelColumns::ColumnId> columns = s.columns.Apply(touched);
+  s.grid.Update(s.columns, columns);
+
+  std::vector<ObjectObservation> observations;
+  if (!result.blurred) {
+    for (const Detection& detection : frame.detections) {
+      std::optional<LiftedDetection> lifted = LiftDetection(detection, depth, frame.intrinsics, frame.pose,
+                                                            config_.range, config_.lift, frame.stamp_ns, frame.robot_id);
+      if (!lifted) continue;
+      s.semantic.Add(detection.label, lifted->points);
+      observations.push_back(std::move(lifted->observation));
+      if (!detection.embedding.empty()) s.embedding_dim = static_cast<int>(detection.embedding.size());
+    }
+  }
+  result.detections_used = static_cast<uint32_t>(observations.size());
+  s.scene.Integrate(observations, frame.stamp_ns);
+  s.last_stamp[frame.robot_id] = frame.stamp_ns;
+
+  ++revision_;
+  if (++s.accepted_frames == config_.estimate_heights_after_frames) {
+    if (const std::optional<ClimbingHeights> heights = EstimateHeights(s.columns)) {
+      s.grid = HierarchicalGrid(config_.grid, *heights);
+      absl::flat_hash_set<VoxelColumns::ColumnId> all;
+      for (const auto& [id, column] : s.columns.columns()) all.insert(id);
+      s.grid.Update(s.columns, all);
+      s.grid_changes.clear();
+      s.grid_forgotten_before = revision_;  // every cell may have changed: watchers resync
+      result.revision = revision_;
+      return result;
+    }
+  }
+  GridWindow changed;
+  for (VoxelColumns::ColumnId id : columns) {
+    const CellIndex cell = s.grid.CellOf(s.columns.KeyToCoord(VoxelColumns::XKey(id)),
+                                         s.columns.KeyToCoord(VoxelColumns::YKey(id)));
+    // One cell of margin: eq. 1-2 coverage and the 9x9 / inflation kernels spill into neighbours.
+    const int margin = config_.layers.obstacle_kernel / 2 + 1 +
+                       static_cast<int>(config_.layers.robot_radius_m / config_.grid.resolution_m);
+    changed = Union(changed, GridWindow{{cell.x - margin, cell.y - margin}, 2 * margin + 1, 2 * margin + 1});
+  }
+  RecordGridChange(changed);
+  result.revision = revision_;
+  return result;
+}
+
+void MappingEngine::RecordGridChange(const GridWindow& changed) {
+  State& s = *state_;
+  s.grid_changes.push_back({revision_, changed});
+  while (s.grid_changes.size() > config_.grid_change_log_size) {
+    s.grid_forgotten_before = s.grid_changes.front().first;
+    s.grid_changes.pop_front();
+  }
+}
+
+uint64_t MappingEngine::revision() const {
+  absl::MutexLock lock(&mu_);
+  return revision_;
+}
+
+GridLayers MappingEngine::Grid(const std::optional<GridWindow>& window, uint64_t* revision) const {
+  absl::MutexLock lock(&mu_);
+  GridLayers layers = RenderLayers(state_->grid, window.value_or(FullWindow(state_->grid)), config_.layers);
+  state_->semantic.Render(layers);
+  if (revision != nullptr) *revision = revision_;
+  return layers;
+}
+
+std::optional<GridWindow> MappingEngine::GridChangesSince(uint64_t since) const {
+  absl::MutexLock lock(&mu_);
+  if (since < state_->grid_forgotten_before) return std::nullopt;
+  GridWindow changed;
+  for (const auto& [revision, window] : state_->grid_changes) {
+    if (revision > since) changed = Union(changed, window);
+  }
+  return changed;
+}
+
+GridWindow MappingEngine::WindowOf(double min_x, double min_y, double max_x, double max_y) const {
+  absl::MutexLock lock(&mu_);
+  const CellIndex lo = state_->grid.CellOf(min_x, min_y);
+  const CellIndex hi = state_->grid.CellOf(max_x, max_y);
+  return {lo, hi.x - lo.x + 1, hi.y - lo.y + 1};
+}
+
+std::string MappingEngine::OccupancyBinary(const Eigen::Vector3d& min, const Eigen::Vector3d& max) const {
+  absl::MutexLock lock(&mu_);
+  const octomap::OcTree& tree = *state_->tree;
+  octomap::OcTree box(tree.getResolution());
+  octomap::OcTreeKey lo;
+  octomap::OcTreeKey hi;
+  if (tree.coordToKeyChecked(octomap::point3d(min.x(), min.y(), min.z()), lo) &&
+      tree.coordToKeyChecked(octomap::point3d(max.x(), max.y(), max.z()), hi)) {
+    const unsigned depth = tree.getTreeDepth();
+    for (auto it = tree.begin_leafs_bbx(lo, hi); it != tree.end_leafs_bbx(); ++it) {
+      // A pruned leaf covers span^3 finest voxels: copy the ones inside the box.
+      const int span = 1 << (depth - it.getDepth());
+      const octomap::OcTreeKey base = it.getIndexKey();
+      for (int dz = 0; dz < span; ++dz) {
+        for (int dy = 0; dy < span; ++dy) {
+          for (int dx = 0; dx < span; ++dx) {
+            const int k[3] = {base[0] + dx, base[1] + dy, base[2] + dz};
+            bool inside = true;
+            for (int a = 0; a < 3; ++a) inside = inside && k[a] >= lo[a] && k[a] <= hi[a];
+            if (!inside) continue;
+            box.setNodeValue(octomap::OcTreeKey(static_cast<octomap::key_type>(k[0]), static_cast<octomap::key_type>(k[1]),
+                                                static_cast<octomap::key_type>(k[2])),
+                             it->getLogOdds(), /*lazy_eval=*/true);
+          }
+        }
+      }
+    }
+    box.updateInnerOccupancy();
+  }
+  std::ostringstream out;
+  box.writeBinary(out);
+  return out.str();
+}
+
+SceneSnapshot MappingEngine::Scene() const {
+  absl::MutexLock lock(&mu_);
+  const SceneGraph& g = state_->scene;
+  return {g.revision(), g.objects(), g.relations(), g.regions(), g.Summary()};
+}
+
+std::optional<SceneDelta> MappingEngine::SceneChangesSince(uint64_t since) const {
+  absl::MutexLock lock(&mu_);
+  return state_->scene.ChangesSince(since);
+}
+
+absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQuery& query) const {
+  if (query.labels.empty() && query.embedding.empty() && !query.near.has_value()) {
+    return absl::InvalidArgumentError("labels: give at least one of labels, embedding or near");
+  }
+  if (query.near.has_value() && !(query.near_radius_m > 0.0)) {
+    return absl::InvalidArgumentError("near_radius: must be > 0 when near is set");
+  }
+  std::set<std::string> wanted;
+  for (const std::string& label : query.labels) {
+    const std::string l = Lower(label);
+    wanted.insert(l);
+    for (const auto& [key, names] : config_.synonyms) {
+      const bool listed = std::any_of(names.begin(), names.end(), [&](const std::string& n) { return Lower(n) == l; });
+      if (Lower(key) != l && !listed) continue;
+      wanted.insert(Lower(key));
+      for (const std::string& n : names) wanted.insert(Lower(n));
+    }
+  }
+  absl::MutexLock lock(&mu_);
+  if (!query.embedding.empty() && state_->embedding_dim != 0 &&
+      static_cast<int>(query.embedding.size()) != state_->embedding_dim) {
+    return absl::InvalidArgumentError(absl::StrCat("embedding: length ", query.embedding.size(),
+                                                   " != map embedding length ", state_->embedding_dim));
+  }
+  std::vector<ObjectHit> hits;
+  for (const SceneObject& o : state_->scene.objects()) {
+    if (!wanted.empty() && !wanted.contains(Lower(o.label))) continue;
+    ObjectHit hit{o, 0.0, 0.0};
+    if (!query.embedding.empty()) {
+      hit.cosine = Cosine(query.embedding, o.embedding);
+      if (hit.cosine < query.min_cosine) continue;
+    }
+    if (query.near.has_value()) {
+      hit.distance = (o.position - *query.near).norm();
+      if (hit.distance > query.near_radius_m) continue;
+    }
+    hits.push_back(std::move(hit));
+  }
+  std::sort(hits.begin(), hits.end(), [](const ObjectHit& a, const ObjectHit& b) {
+    if (a.cosine != b.cosine) return a.cosine > b.cosine;
+    if (a.object.score != b.object.score) return a.object.score > b.object.score;
+    return a.distance < b.distance;
+  });
+  if (query.max_results > 0 && hits.size() > query.max_results) hits.resize(query.max_results);
+  return hits;
+}
+
+uint64_t MappingEngine::AwaitChange(uint64_t revision, absl::Duration timeout) const {
+  absl::MutexLock lock(&mu_);
+  auto changed = [this, revision]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return revision_ > revision; };
+  mu_.AwaitWithTimeout(absl::Condition(&changed), timeout);
+  return revision_;
+}
+
+std::string MappingEngine::Serialize() const {
+  absl::MutexLock lock(&mu_);
+  const State& s = *state_;
+  return SerializeMap(*s.tree, s.scene.objects(), s.scene.next_id(), s.semantic.points());
+}
+
+absl::Status MappingEngine::Restore(const std::string& payload) {
+  absl::StatusOr<MapContent> content = ParseMap(payload);
+  if (!content.ok()) return content.status();
+  if (content->tree->getResolution() != config_.octomap_resolution_m) {
+    return absl::FailedPreconditionError(absl::StrCat("map_id: stored octree resolution ", content->tree->getResolution(),
+                                                      " m differs from the configured ", config_.octomap_resolution_m, " m"));
+  }
+  absl::MutexLock lock(&mu_);
+  state_->Adopt(std::move(*content), config_);
+  ++revision_;
+  state_->grid_changes.clear();
+  state_->grid_forgotten_before = revision_;  // watchers resync with a snapshot
+  return absl::OkStatus();
+}
+
+void MappingEngine::Reset() {
+  MapContent empty;
+  empty.tree = std::make_unique<octomap::OcTree>(config_.octomap_resolution_m);
+  absl::MutexLock lock(&mu_);
+  empty.next_object_id = state_->scene.next_id();
+  state_->Adopt(std::move(empty), config_);
+  ++revision_;
+  state_->grid_changes.clear();
+  state_->grid_forgotten_before = revision_;
+}
+
+}  // namespace semnav::mapping

@@ -1,0 +1,223 @@
+#include "services/mapping/core/mapping_engine.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "services/mapping/testing/synthetic_room.h"
+
+namespace semnav::mapping {
+namespace {
+
+constexpr int64_t kFrameNs = 100'000'000;  // 10 Hz
+
+// A camera at the room's left end looking down the room.
+CameraPose Viewpoint() { return testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}); }
+
+// Pixel box around the image projection of map point p (half size in pixels).
+PixelBox BoxAround(const Eigen::Vector3d& p, const CameraPose& pose, double half) {
+  const Intrinsics k = testing::Vga();
+  const Eigen::Vector3d c = pose.orientation.conjugate() * (p - pose.position);
+  const double u = k.fx * c.x() / c.z() + k.cx;
+  const double v = k.fy * c.y() / c.z() + k.cy;
+  return {u - half, v - half, u + half, v + half};
+}
+
+uint8_t CellValue(const MappingEngine& engine, double x, double y) {
+  const GridWindow window = engine.WindowOf(x, y, x, y);
+  return engine.Grid(window, nullptr).hierarchical[0];
+}
+
+TEST(MappingEngineTest, MovingBoxVanishesStaticBoxStays) {
+  MappingEngine engine{MappingConfig{}};
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  const std::vector<double> ys{1.2, 1.6, 2.0, 2.4, 2.8};
+  int64_t stamp = 0;
+  bool seen_moving_box = false;
+  for (double y : ys) {
+    testing::SyntheticRoom with_box = room;
+    with_box.boxes.push_back({{2.0, y - 0.2, 0.0}, {2.4, y + 0.2, 1.0}});
+    for (int repeat = 0; repeat < 2; ++repeat) {
+      ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(with_box, Viewpoint(), stamp += kFrameNs)).ok());
+    }
+    const uint8_t value = CellValue(engine, 2.1, y);
+    seen_moving_box = seen_moving_box || (value >= 1 && value <= 99);
+  }
+  EXPECT_TRUE(seen_moving_box);
+  for (int i = 0; i < 12; ++i) {
+    ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, Viewpoint(), stamp += kFrameNs)).ok());
+  }
+  for (double y : ys) EXPECT_EQ(CellValue(engine, 2.2, y), 0) << "moving box left a trace at y = " << y;
+  // Static box: its top face z = 0.8 lies in voxel [0.80, 0.85), centre 0.825 m ->
+  // h_o = 100 (0.825 - 0.1) / (2.3 - 0.1) = 33.
+  EXPECT_EQ(CellValue(engine, 3.3, 1.3), 33);
+  EXPECT_EQ(CellValue(engine, 5.99, 2.0), HierarchicalGrid::kStructure);  // far wall
+  EXPECT_EQ(CellValue(engine, 4.5, 2.0), HierarchicalGrid::kFree);
+}
+
+TEST(MappingEngineTest, RejectedFramesChangeNothing) {
+  MappingEngine engine{MappingConfig{}};
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, Viewpoint(), 2 * kFrameNs)).ok());
+  const uint64_t revision = engine.revision();
+  const std::string before = engine.Serialize();
+
+  SensorFrame wrong_size = testing::RenderFrame(room, Viewpoint(), 3 * kFrameNs);
+  wrong_size.intrinsics.height = 240;
+  EXPECT_EQ(engine.AddFrame(wrong_size).status().code(), absl::StatusCode::kInvalidArgument);
+  const SensorFrame backwards = testing::RenderFrame(room, Viewpoint(), 1 * kFrameNs);
+  EXPECT_EQ(engine.AddFrame(backwards).status().code(), absl::StatusCode::kFailedPrecondition);
+  SensorFrame bad_rgb = testing::RenderFrame(room, Viewpoint(), 3 * kFrameNs);
+  bad_rgb.rgb_encoded = "not an image";
+  EXPECT_EQ(engine.AddFrame(bad_rgb).status().code(), absl::StatusCode::kInvalidArgument);
+
+  EXPECT_EQ(engine.revision(), revision);
+  EXPECT_EQ(engine.Serialize(), before);
+  // Another robot has its own clock.
+  SensorFrame other = backwards;
+  other.robot_id = "robot-2";
+  EXPECT_TRUE(engine.AddFrame(other).ok());
+}
+
+TEST(MappingEngineTest, DetectionBecomesObjectAndSemanticCells) {
+  MappingEngine engine{MappingConfig{}};
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  for (int i = 0; i < 3; ++i) {
+    SensorFrame frame = testing::RenderFrame(room, Viewpoint(), (i + 1) * kFrameNs);
+    Detection table;
+    table.label = "table";
+    table.score = 0.9;
+    table.box = BoxAround({3.2, 1.3, 0.7}, Viewpoint(), 40);
+    frame.detections.push_back(table);
+    const absl::StatusOr<FrameResult> result = engine.AddFrame(frame);
+    ASSERT_TRUE(result.ok()) << result.status();
+    EXPECT_EQ(result->detections_used, 1u);
+  }
+  const SceneSnapshot scene = engine.Scene();
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const SceneObject& object = scene.objects[0];
+  EXPECT_EQ(object.detection_count, 3);
+  EXPECT_NEAR(object.score, 0.9, 1e-12);
+  // The visible front face (x = 3.0) and top (z = 0.8) of the box [3, 3.6] x [1, 1.6] x [0, 0.8].
+  EXPECT_NEAR(object.position.x(), 3.05, 0.1);
+  EXPECT_NEAR(object.position.y(), 1.3, 0.1);
+  EXPECT_GT(object.position.z(), 0.3);
+  EXPECT_LT(object.position.z(), 0.85);
+  EXPECT_EQ(scene.summary, "Scene has 1 objects in 1 regions. Region 0 (area_with_table): 1 table.");
+
+  const GridLayers layers = engine.Grid(engine.WindowOf(2.8, 0.9, 3.7, 1.7), nullptr);
+  ASSERT_EQ(layers.semantic_labels, std::vector<std::string>{"table"});
+  int labelled = 0;
+  for (uint8_t v : layers.semantic) labelled += v == 1 ? 1 : 0;
+  EXPECT_GT(labelled, 0);
+
+  const absl::StatusOr<std::vector<ObjectHit>> hits = engine.QueryObjects({{"TABLE"}, {}, 0.0, std::nullopt, 0.0, 0});
+  ASSERT_TRUE(hits.ok());
+  EXPECT_EQ(hits->size(), 1u);
+  EXPECT_EQ(engine.QueryObjects({{}, {}, 0.0, std::nullopt, 0.0, 0}).status().code(),
+            absl::StatusCode::kInvalidArgument);
+}
+
+TEST(MappingEngineTest, BlurredColourImageSkipsDetectionsButKeepsDepth) {
+  MappingEngine engine{MappingConfig{}};
+  SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);
+  std::vector<uchar> png;
+  cv::imencode(".png", cv::Mat(480, 640, CV_8U, cv::Scalar(128)), png);  // flat: Laplacian variance 0
+  frame.rgb_encoded.assign(png.begin(), png.end());
+  Detection det;
+  det.label = "table";
+  det.score = 0.9;
+  det.box = BoxAround({3.2, 1.3, 0.7}, Viewpoint(), 40);
+  frame.detections.push_back(det);
+  const absl::StatusOr<FrameResult> result = engine.AddFrame(frame);
+  ASSERT_TRUE(result.ok());
+  EXPECT_TRUE(result->blurred);
+  EXPECT_EQ(result->detections_used, 0u);
+  EXPECT_GT(result->voxels_updated, 100000u);
+  EXPECT_TRUE(engine.Scene().objects.empty());
+}
+
+TEST(MappingEngineTest, LidarPointsAreIntegrated) {
+  MappingEngine engine{MappingConfig{}};
+  SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);
+  std::fill(frame.depth.data.begin(), frame.depth.data.end(), '\0');  // no depth at all
+  frame.lidar_points = {Eigen::Vector3f(0.0f, 0.0f, 2.0f), Eigen::Vector3f(0.0f, 0.0f, 20.0f)};  // 2nd beyond 8 m
+  const absl::StatusOr<FrameResult> result = engine.AddFrame(frame);
+  ASSERT_TRUE(result.ok());
+  // 2 m along the optical axis at 0.05 m: the hit voxel plus the ~40 voxels the ray passes.
+  EXPECT_GE(result->voxels_updated, 40u);
+  EXPECT_LE(result->voxels_updated, 60u);
+}
+
+TEST(MappingEngineTest, QueriesBySynonymEmbeddingAndDistance) {
+  MappingConfig config;
+  config.synonyms["sofa"] = {"couch"};
+  MappingEngine engine{config};
+  SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);
+  Detection det;
+  det.label = "sofa";
+  det.score = 0.8;
+  det.box = BoxAround({3.2, 1.3, 0.7}, Viewpoint(), 40);
+  det.embedding = {0.0f, 1.0f};
+  frame.detections.push_back(det);
+  ASSERT_TRUE(engine.AddFrame(frame).ok());
+
+  ObjectQuery by_synonym;
+  by_synonym.labels = {"Couch"};
+  EXPECT_EQ(engine.QueryObjects(by_synonym)->size(), 1u);
+  ObjectQuery by_embedding;
+  by_embedding.embedding = {0.0f, 2.0f};
+  by_embedding.min_cosine = 0.9;
+  ASSERT_EQ(engine.QueryObjects(by_embedding)->size(), 1u);
+  EXPECT_NEAR(engine.QueryObjects(by_embedding)->front().cosine, 1.0, 1e-6);
+  by_embedding.embedding = {1.0f, 0.0f};  // orthogonal: cosine 0 < 0.9
+  EXPECT_TRUE(engine.QueryObjects(by_embedding)->empty());
+  by_embedding.embedding = {1.0f, 0.0f, 0.0f};
+  EXPECT_EQ(engine.QueryObjects(by_embedding).status().code(), absl::StatusCode::kInvalidArgument);
+  ObjectQuery far;
+  far.near = Eigen::Vector3d(0.0, 0.0, 0.0);
+  far.near_radius_m = 1.0;
+  EXPECT_TRUE(engine.QueryObjects(far)->empty());
+  far.near_radius_m = 0.0;
+  EXPECT_EQ(engine.QueryObjects(far).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+TEST(MappingEngineTest, EstimatesFootAndCeilingFromTheMapAtStartUp) {
+  MappingConfig config;
+  config.estimate_heights_after_frames = 2;
+  MappingEngine engine{config};
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  const CameraPose level = testing::LookAt({0.5, 2.0, 1.2}, {6.0, 2.0, 1.2});  // sees floor and ceiling
+  ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, level, kFrameNs)).ok());
+  EXPECT_EQ(engine.Grid(GridWindow{{0, 0}, 1, 1}, nullptr).heights.ceiling_m, 2.3);  // configured until then
+  ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, level, 2 * kFrameNs)).ok());
+  const ClimbingHeights heights = engine.Grid(GridWindow{{0, 0}, 1, 1}, nullptr).heights;
+  // Floor z = 0 -> voxel [0, 0.05), h_f one voxel up: 0.075; ceiling z = 2.5 -> voxel
+  // [2.5, 2.55), h_c one voxel down: 2.475.
+  EXPECT_NEAR(heights.foot_m, 0.075, 1e-9);
+  EXPECT_NEAR(heights.ceiling_m, 2.475, 1e-9);
+  EXPECT_EQ(CellValue(engine, 6.02, 2.0), HierarchicalGrid::kStructure);  // behind the far wall's face
+  EXPECT_FALSE(engine.GridChangesSince(1).has_value());  // watchers must resync
+}
+
+TEST(MappingEngineTest, RestoreRoundTripsAndRejectsGarbageUntouched) {
+  MappingConfig config;
+  MappingEngine engine{config};
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, Viewpoint(), kFrameNs)).ok());
+  const std::string saved = engine.Serialize();
+
+  MappingEngine copy{config};
+  ASSERT_TRUE(copy.Restore(saved).ok());
+  EXPECT_EQ(CellValue(copy, 3.3, 1.3), CellValue(engine, 3.3, 1.3));
+  EXPECT_EQ(copy.Serialize(), saved);
+
+  const uint64_t revision = copy.revision();
+  EXPECT_EQ(copy.Restore(saved.substr(0, saved.size() / 2)).code(), absl::StatusCode::kDataLoss);
+  EXPECT_EQ(copy.revision(), revision);
+  EXPECT_EQ(copy.Serialize(), saved);
+}
+
+}  // namespace
+}  // namespace semnav::mapping

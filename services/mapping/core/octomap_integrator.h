@@ -1,0 +1,33 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <octomap/OcTree.h>
+
+namespace semnav::mapping {
+
+// A voxel changed by one scan and its occupancy after the update.
+struct TouchedVoxel {
+  octomap::OcTreeKey key;
+  bool occupied = false;
+};
+
+// Inserts scans into an OcTree, equivalent to OctoMap's discretized insertPointCloud
+// (free space by ray casting to each distinct endpoint voxel, endpoint voxels occupied, a voxel
+// both hit and passed counts as hit) but faster: rays are cast on `threads` threads into
+// per-scan voxel bitsets instead of a hash set, and the tree is updated in one Morton-ordered
+// pass (ApplyVoxelUpdates) instead of one root-to-leaf descent per voxel.
+class OctomapIntegrator {
+ public:
+  explicit OctomapIntegrator(int threads) : threads_(threads < 1 ? 1 : threads) {}
+
+  // `points` are map-frame endpoints already limited to the sensor range; `origin` is the sensor.
+  std::vector<TouchedVoxel> Integrate(octomap::OcTree& tree, const std::vector<Eigen::Vector3f>& points,
+                                      const Eigen::Vector3f& origin) const;
+
+ private:
+  int threads_;
+};
+
+}  // namespace semnav::mapping

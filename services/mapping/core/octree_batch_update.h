@@ -1,0 +1,24 @@
+#pragma once
+
+#include <vector>
+
+#include <octomap/OcTree.h>
+
+#include "services/mapping/core/octomap_integrator.h"
+
+namespace semnav::mapping {
+
+// One measurement for a voxel: hit (occupied) or passed by a ray (free).
+struct VoxelUpdate {
+  octomap::OcTreeKey key;
+  bool hit = false;
+};
+
+// Applies one hit/miss update per voxel in a single depth-first pass. The keys are sorted into
+// OctoMap's child order (Morton order), so each tree node on their paths is visited once instead of
+// once per key as with updateNode; pruned leaves are expanded like updateNode does, and every inner
+// node on a touched path is refreshed to its max-child occupancy (non-lazy OctoMap semantics).
+// Returns each voxel with its occupancy after the update. Keys must be distinct.
+std::vector<TouchedVoxel> ApplyVoxelUpdates(octomap::OcTree& tree, std::vector<VoxelUpdate> updates);
+
+}  // namespace semnav::mapping

@@ -1,0 +1,71 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "services/mapping/core/scene_types.h"
+
+namespace semnav::mapping {
+
+struct SceneGraphConfig {
+  double ema_new_weight = 0.3;             // seed 002: new = 0.3 * detection + 0.7 * existing
+  double embedding_min_cosine = 0.8;       // embedding match needs at least this cosine
+  double embedding_max_distance_m = 3.0;   // ... and the instance within this distance
+  double label_max_distance_m = 1.0;       // fallback match: same label within this distance
+  double prune_single_after_s = 10.0;      // drop instances seen once and not again for this long
+  size_t removal_log_size = 4096;          // removals remembered for resumable watches
+  RelationConfig relations;
+};
+
+// What changed after a revision, for resumable watches.
+struct SceneDelta {
+  std::vector<uint64_t> upserted_ids;
+  std::vector<uint64_t> removed_ids;
+};
+
+// Instance tracking and scene graph of seed 002 (ConceptGraphs / SG-Nav style).
+class SceneGraph {
+ public:
+  explicit SceneGraph(const SceneGraphConfig& config) : config_(config) {}
+
+  // Matches each observation to an instance embedding-first (best cosine >= embedding_min_cosine
+  // within embedding_max_distance_m), else by same label nearest within label_max_distance_m among
+  // instances the embedding cannot judge (one side has none: two differing embeddings never merge);
+  // merges with EMA (position, size, embedding), counts detections and averages scores; new
+  // instances otherwise. Then prunes stale single detections (relative to `now_ns`) and rebuilds
+  // relations and regions. Bumps the revision when anything changed.
+  void Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns);
+
+  uint64_t revision() const { return revision_; }
+  const std::vector<SceneObject>& objects() const { return objects_; }
+  const std::vector<Relation>& relations() const { return relations_; }
+  const std::vector<Region>& regions() const { return regions_; }
+  std::string Summary() const;
+  const SceneObject* Find(uint64_t id) const;
+  // Changes after `since`; nullopt when removals that old were forgotten (send a snapshot).
+  std::optional<SceneDelta> ChangesSince(uint64_t since) const;
+  // Replaces the whole graph (map load / reset); bumps the revision.
+  void Replace(std::vector<SceneObject> objects, uint64_t next_id);
+  uint64_t next_id() const { return next_id_; }
+
+ private:
+  SceneObject* Match(const ObjectObservation& observation);
+  void Merge(SceneObject& object, const ObjectObservation& observation);
+  void Rebuild();
+
+  SceneGraphConfig config_;
+  std::vector<SceneObject> objects_;
+  std::vector<Relation> relations_;
+  std::vector<Region> regions_;
+  std::vector<std::pair<uint64_t, uint64_t>> removals_;  // (revision, id), oldest first
+  uint64_t forgotten_before_ = 0;                        // removals at or below this revision are gone
+  uint64_t revision_ = 0;
+  uint64_t next_id_ = 1;
+};
+
+// Cosine similarity; 0 when either vector is empty, zero or of a different length.
+double Cosine(const std::vector<float>& a, const std::vector<float>& b);
+
+}  // namespace semnav::mapping

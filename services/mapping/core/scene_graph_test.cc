@@ -1,0 +1,122 @@
+#include "services/mapping/core/scene_graph.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "services/mapping/core/scene_relations.h"
+
+namespace semnav::mapping {
+namespace {
+
+constexpr int64_t kSecond = 1'000'000'000;
+
+ObjectObservation Obs(const std::string& label, Eigen::Vector3d position, double score = 0.8,
+                      std::vector<float> embedding = {}, int64_t stamp = 0) {
+  ObjectObservation o;
+  o.label = label;
+  o.position = position;
+  o.size = Eigen::Vector3d(0.5, 0.5, 0.5);
+  o.score = score;
+  o.embedding = std::move(embedding);
+  o.stamp_ns = stamp;
+  return o;
+}
+
+TEST(SceneGraphTest, MergesWithEmaAndAveragesScore) {
+  SceneGraph graph{SceneGraphConfig{}};
+  graph.Integrate({Obs("chair", {0, 0, 0}, 0.9)}, 0);
+  graph.Integrate({Obs("chair", {1, 0, 0}, 0.5)}, 0);  // 1 m <= label_max_distance_m
+  ASSERT_EQ(graph.objects().size(), 1u);
+  const SceneObject& chair = graph.objects()[0];
+  EXPECT_NEAR(chair.position.x(), 0.3, 1e-12);  // 0.3 * 1 + 0.7 * 0
+  EXPECT_EQ(chair.detection_count, 2);
+  EXPECT_NEAR(chair.score, 0.7, 1e-12);
+  EXPECT_EQ(graph.revision(), 2u);
+}
+
+TEST(SceneGraphTest, LabelFallbackStopsAtMaxDistance) {
+  SceneGraph graph{SceneGraphConfig{}};
+  graph.Integrate({Obs("chair", {0, 0, 0})}, 0);
+  graph.Integrate({Obs("chair", {1.2, 0, 0}), Obs("table", {0.1, 0, 0})}, 0);
+  EXPECT_EQ(graph.objects().size(), 3u);
+}
+
+TEST(SceneGraphTest, EmbeddingMatchWinsOverNearestSameLabel) {
+  SceneGraph graph{SceneGraphConfig{}};
+  graph.Integrate({Obs("chair", {0, 0, 0}, 0.8, {1, 0, 0}), Obs("chair", {0.6, 0, 0}, 0.8, {0, 1, 0})}, 0);
+  ASSERT_EQ(graph.objects().size(), 2u);
+  // Right on top of chair 1, but looks like chair 2.
+  graph.Integrate({Obs("chair", {0, 0, 0}, 0.8, {0, 2, 0})}, 0);
+  EXPECT_EQ(graph.objects()[0].detection_count, 1);
+  EXPECT_EQ(graph.objects()[1].detection_count, 2);
+  EXPECT_NEAR(graph.objects()[1].position.x(), 0.42, 1e-12);  // 0.3 * 0 + 0.7 * 0.6
+  // A different-looking detection (cosine 0 with both) is a new chair.
+  graph.Integrate({Obs("chair", {0.05, 0, 0}, 0.8, {0, 0, 1})}, 0);
+  EXPECT_EQ(graph.objects().size(), 3u);
+  // Without an embedding, label + distance decides: nearest chair within 1 m.
+  graph.Integrate({Obs("chair", {0.5, 0, 0})}, 0);
+  EXPECT_EQ(graph.objects()[1].detection_count, 3);
+}
+
+TEST(SceneGraphTest, PrunesInstancesSeenOnceAndReportsRemoval) {
+  SceneGraph graph{SceneGraphConfig{}};
+  graph.Integrate({Obs("ghost", {5, 5, 0}, 0.4, {}, 0), Obs("sofa", {0, 0, 0}, 0.9, {}, 0)}, 0);
+  graph.Integrate({Obs("sofa", {0, 0, 0}, 0.9, {}, 1 * kSecond)}, 1 * kSecond);
+  const uint64_t before = graph.revision();
+  graph.Integrate({}, 9 * kSecond);  // 9 s <= 10 s: nothing changes
+  EXPECT_EQ(graph.revision(), before);
+  graph.Integrate({}, 11 * kSecond);
+  ASSERT_EQ(graph.objects().size(), 1u);
+  EXPECT_EQ(graph.objects()[0].label, "sofa");
+  const std::optional<SceneDelta> delta = graph.ChangesSince(before);
+  ASSERT_TRUE(delta.has_value());
+  EXPECT_EQ(delta->removed_ids, std::vector<uint64_t>{1});
+  EXPECT_TRUE(delta->upserted_ids.empty());
+}
+
+SceneObject Object(uint64_t id, const std::string& label, Eigen::Vector3d position,
+                   Eigen::Vector3d size = Eigen::Vector3d::Zero()) {
+  SceneObject o;
+  o.id = id;
+  o.label = label;
+  o.position = position;
+  o.size = size;
+  return o;
+}
+
+TEST(SceneRelationsTest, OnLeftRightAndNear) {
+  std::vector<SceneObject> objects(3);
+  objects[0] = Object(1, "table", Eigen::Vector3d(0, 0, 0.4), Eigen::Vector3d(1, 1, 0.8));
+  objects[1] = Object(2, "cup", Eigen::Vector3d(0.1, 0, 0.85), Eigen::Vector3d(0.1, 0.1, 0.1));
+  objects[2] = Object(3, "chair", Eigen::Vector3d(0, 1.0, 0.4), Eigen::Vector3d(0.5, 0.5, 0.8));
+  const std::vector<Relation> relations = ComputeRelations(objects, RelationConfig{});
+  auto has = [&](uint64_t s, RelationKind k, uint64_t o) {
+    return std::any_of(relations.begin(), relations.end(),
+                       [&](const Relation& r) { return r.subject_id == s && r.kind == k && r.object_id == o; });
+  };
+  EXPECT_TRUE(has(2, RelationKind::kOn, 1));
+  EXPECT_TRUE(has(1, RelationKind::kRightOf, 3));  // table is 1 m to the right (-y) of the chair
+  EXPECT_TRUE(has(2, RelationKind::kRightOf, 3));
+  EXPECT_TRUE(has(1, RelationKind::kNear, 2));
+  EXPECT_EQ(relations.size(), 6u);  // 3 near + on + 2 right_of
+}
+
+TEST(SceneRelationsTest, RegionsChainWithinThreeMetresAndSummary) {
+  std::vector<SceneObject> objects(4);
+  objects[0] = Object(1, "chair", Eigen::Vector3d(0, 0, 0));
+  objects[1] = Object(2, "desk", Eigen::Vector3d(2.5, 0, 0));
+  objects[2] = Object(3, "chair", Eigen::Vector3d(5.0, 0, 0));
+  objects[3] = Object(4, "bed", Eigen::Vector3d(10.0, 0, 0));
+  const std::vector<Region> regions = ComputeRegions(objects, RelationConfig{});
+  ASSERT_EQ(regions.size(), 2u);
+  EXPECT_EQ(regions[0].object_ids, (std::vector<uint64_t>{1, 2, 3}));
+  EXPECT_EQ(regions[0].name, "area_with_chair_desk");
+  EXPECT_EQ(objects[3].region_id, 1);
+  EXPECT_EQ(Summarize(objects, regions),
+            "Scene has 4 objects in 2 regions. Region 0 (area_with_chair_desk): 2 chair, 1 desk. "
+            "Region 1 (area_with_bed): 1 bed.");
+}
+
+}  // namespace
+}  // namespace semnav::mapping

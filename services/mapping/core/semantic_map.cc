@@ -1,0 +1,50 @@
+#include "services/mapping/core/semantic_map.h"
+
+#include <cmath>
+
+#include <opencv2/core.hpp>
+
+#include "services/mapping/core/semantic_filters.h"
+
+namespace semnav::mapping {
+
+void SemanticMap::Add(const std::string& label, const std::vector<Eigen::Vector3f>& points) {
+  auto& cubes = occupied_cubes_[label];
+  auto& kept = points_[label];
+  const auto r = static_cast<float>(config_.point_resolution_m);
+  for (const Eigen::Vector3f& p : points) {
+    const std::array<int, 3> cube{static_cast<int>(std::floor(p.x() / r)), static_cast<int>(std::floor(p.y() / r)),
+                                  static_cast<int>(std::floor(p.z() / r))};
+    if (cubes.insert(cube).second) kept.push_back(p);
+  }
+}
+
+void SemanticMap::Clear() {
+  points_.clear();
+  occupied_cubes_.clear();
+}
+
+void SemanticMap::Render(GridLayers& layers) const {
+  layers.semantic.assign(static_cast<size_t>(layers.width) * layers.height, 0);
+  layers.semantic_labels.clear();
+  for (const auto& [label, points] : points_) {
+    layers.semantic_labels.push_back(label);
+    const auto index = static_cast<uint8_t>(std::min<size_t>(layers.semantic_labels.size(), 255));
+    const std::vector<bool> keep = RadiusFilter(points, config_.radius_m, config_.min_neighbours);
+    cv::Mat cells = cv::Mat::zeros(layers.height, layers.width, CV_8U);
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (!keep[i]) continue;
+      const int col = static_cast<int>(std::floor((points[i].x() - layers.origin_x) / layers.resolution));
+      const int row = static_cast<int>(std::floor((points[i].y() - layers.origin_y) / layers.resolution));
+      if (col >= 0 && row >= 0 && col < layers.width && row < layers.height) cells.at<uint8_t>(row, col) = 1;
+    }
+    const cv::Mat opened = OpenSemanticLayer(cells, config_.opening_kernel);
+    for (int row = 0; row < layers.height; ++row) {
+      for (int col = 0; col < layers.width; ++col) {
+        if (opened.at<uint8_t>(row, col) != 0) layers.semantic[static_cast<size_t>(row) * layers.width + col] = index;
+      }
+    }
+  }
+}
+
+}  // namespace semnav::mapping

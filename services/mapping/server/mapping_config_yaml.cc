@@ -1,0 +1,96 @@
+#include "services/mapping/server/mapping_config_yaml.h"
+
+#include <algorithm>
+
+namespace semnav::mapping {
+
+MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
+  MappingServiceConfig config;
+  MappingConfig& c = config.core;
+
+  ConfigReader octomap = section.Child("octomap");
+  octomap.Read("resolution_m", &c.octomap_resolution_m)
+      .Read("min_range_m", &c.range.min_m)
+      .Read("max_range_m", &c.range.max_m)
+      .Read("pixel_stride", &c.pixel_stride)
+      .Read("threads", &c.threads);
+  octomap.Check(c.octomap_resolution_m > 0.0, "resolution_m", "must be > 0");
+  octomap.Check(c.range.min_m >= 0.0 && c.range.max_m > c.range.min_m, "max_range_m", "must be > min_range_m >= 0");
+  octomap.Check(c.pixel_stride >= 1, "pixel_stride", "must be >= 1");
+  octomap.Check(c.threads >= 1 && c.threads <= 64, "threads", "must be in [1, 64]");
+
+  ConfigReader grid = section.Child("grid");
+  int change_log = static_cast<int>(c.grid_change_log_size);
+  grid.Read("resolution_m", &c.grid.resolution_m)
+      .Read("p_hit", &c.grid.p_hit)
+      .Read("p_miss", &c.grid.p_miss)
+      .Read("p_threshold", &c.grid.p_threshold)
+      .Read("log_odds_min", &c.grid.log_odds_min)
+      .Read("log_odds_max", &c.grid.log_odds_max)
+      .Read("foot_height_m", &c.heights.foot_m)
+      .Read("ceiling_height_m", &c.heights.ceiling_m)
+      .Read("estimate_heights_after_frames", &c.estimate_heights_after_frames)
+      .Read("obstacle_kernel", &c.layers.obstacle_kernel)
+      .Read("robot_radius_m", &c.layers.robot_radius_m)
+      .Read("change_log_size", &change_log);
+  grid.Check(c.grid.resolution_m > 0.0, "resolution_m", "must be > 0");
+  grid.Check(c.grid.p_hit > 0.5 && c.grid.p_hit < 1.0, "p_hit", "must be in (0.5, 1)");
+  grid.Check(c.grid.p_miss > 0.0 && c.grid.p_miss < 0.5, "p_miss", "must be in (0, 0.5)");
+  grid.Check(c.grid.p_threshold > 0.0 && c.grid.p_threshold < 1.0, "p_threshold", "must be in (0, 1)");
+  grid.Check(c.grid.log_odds_min < 0.0 && c.grid.log_odds_max > 0.0, "log_odds_max", "need log_odds_min < 0 < log_odds_max");
+  grid.Check(c.heights.ceiling_m > c.heights.foot_m, "ceiling_height_m", "must be > foot_height_m");
+  grid.Check(c.estimate_heights_after_frames >= 0, "estimate_heights_after_frames", "must be >= 0 (0 = off)");
+  grid.Check(c.layers.obstacle_kernel >= 1 && c.layers.obstacle_kernel % 2 == 1, "obstacle_kernel", "must be odd and >= 1");
+  grid.Check(c.layers.robot_radius_m >= 0.0, "robot_radius_m", "must be >= 0");
+  grid.Check(change_log >= 1, "change_log_size", "must be >= 1");
+  c.grid_change_log_size = static_cast<size_t>(std::max(change_log, 1));
+
+  ConfigReader semantic = section.Child("semantic");
+  semantic.Read("blur_min_laplacian_variance", &c.blur_min_laplacian_variance)
+      .Read("erosion_kernel", &c.lift.erosion_kernel)
+      .Read("erosion_keep_above", &c.lift.erosion_keep_above)
+      .Read("mask_pixel_stride", &c.lift.pixel_stride)
+      .Read("depth_band_m", &c.lift.depth_band_m)
+      .Read("point_resolution_m", &c.semantic.point_resolution_m)
+      .Read("radius_m", &c.semantic.radius_m)
+      .Read("min_neighbours", &c.semantic.min_neighbours)
+      .Read("opening_kernel", &c.semantic.opening_kernel);
+  semantic.Check(c.blur_min_laplacian_variance >= 0.0, "blur_min_laplacian_variance", "must be >= 0");
+  semantic.Check(c.lift.erosion_kernel >= 1 && c.lift.erosion_kernel % 2 == 1, "erosion_kernel", "must be odd and >= 1");
+  semantic.Check(c.lift.pixel_stride >= 1, "mask_pixel_stride", "must be >= 1");
+  semantic.Check(c.lift.depth_band_m > 0.0, "depth_band_m", "must be > 0");
+  semantic.Check(c.semantic.point_resolution_m > 0.0, "point_resolution_m", "must be > 0");
+  semantic.Check(c.semantic.radius_m > 0.0f, "radius_m", "must be > 0");
+  semantic.Check(c.semantic.min_neighbours >= 0, "min_neighbours", "must be >= 0");
+  semantic.Check(c.semantic.opening_kernel >= 1, "opening_kernel", "must be >= 1");
+
+  ConfigReader scene = section.Child("scene_graph");
+  SceneGraphConfig& s = c.scene;
+  scene.Read("ema_new_weight", &s.ema_new_weight)
+      .Read("embedding_min_cosine", &s.embedding_min_cosine)
+      .Read("embedding_max_distance_m", &s.embedding_max_distance_m)
+      .Read("label_max_distance_m", &s.label_max_distance_m)
+      .Read("prune_single_after_s", &s.prune_single_after_s)
+      .Read("near_m", &s.relations.near_m)
+      .Read("direction_margin_m", &s.relations.direction_margin_m)
+      .Read("on_tolerance_m", &s.relations.on_tolerance_m)
+      .Read("region_radius_m", &s.relations.region_radius_m);
+  scene.Check(s.ema_new_weight > 0.0 && s.ema_new_weight <= 1.0, "ema_new_weight", "must be in (0, 1]");
+  scene.Check(s.embedding_min_cosine >= -1.0 && s.embedding_min_cosine <= 1.0, "embedding_min_cosine", "must be in [-1, 1]");
+  scene.Check(s.prune_single_after_s > 0.0, "prune_single_after_s", "must be > 0");
+  scene.Check(s.relations.near_m > 0.0 && s.relations.region_radius_m > 0.0, "region_radius_m", "radii must be > 0");
+
+  for (const std::string& label : section.Child("synonyms").Keys()) {
+    std::vector<std::string> names;
+    section.Child("synonyms").Read(label, &names);
+    c.synonyms[label] = names;
+  }
+  section.Read("store_directory", &config.store_directory)
+      .Read("watch_min_interval_ms", &config.watch_min_interval_ms)
+      .Read("query_min_cosine", &config.query_min_cosine);
+  section.Check(!config.store_directory.empty(), "store_directory", "must not be empty");
+  section.Check(config.watch_min_interval_ms >= 10, "watch_min_interval_ms", "must be >= 10");
+  return config;
+}
+
+}  // namespace semnav::mapping

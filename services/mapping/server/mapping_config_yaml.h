@@ -1,0 +1,35 @@
+#pragma once
+
+#include <string>
+
+#include "services/common/config/config_reader.h"
+#include "services/mapping/core/mapping_config.h"
+
+namespace semnav::mapping {
+
+// Service-level settings around the core pipeline.
+struct MappingServiceConfig {
+  MappingConfig core;
+  std::string store_directory = "var/maps";  // map store (created if missing)
+  int watch_min_interval_ms = 200;           // grid/scene watch rate limit (floor for clients)
+  double query_min_cosine = 0.2;             // QueryObjects default when the request says 0
+  size_t idempotency_cache_size = 1024;      // remembered request_ids
+};
+
+// Reads the "mapping" YAML section. Keys (defaults in brackets):
+//   octomap: {resolution_m [0.05], min_range_m [0.3], max_range_m [8], pixel_stride [1], threads [2]}
+//   grid: {resolution_m [0.05], p_hit [0.7], p_miss [0.4], p_threshold [0.65], log_odds_min [-2],
+//          log_odds_max [3.5], foot_height_m [0.1], ceiling_height_m [2.3],
+//          estimate_heights_after_frames [0 = off], obstacle_kernel [9],
+//          robot_radius_m [0.25], change_log_size [256]}
+//   semantic: {blur_min_laplacian_variance [100], erosion_kernel [5], erosion_keep_above [23.5],
+//              mask_pixel_stride [2], depth_band_m [0.3], point_resolution_m [0.02],
+//              radius_m [0.1], min_neighbours [5], opening_kernel [3]}
+//   scene_graph: {ema_new_weight [0.3], embedding_min_cosine [0.8], embedding_max_distance_m [3],
+//                 label_max_distance_m [1], prune_single_after_s [10], near_m [1.5],
+//                 direction_margin_m [0.2], on_tolerance_m [0.15], region_radius_m [3]}
+//   synonyms: {label: [other names]}   store_directory   watch_min_interval_ms   query_min_cosine
+// Errors are recorded on `section` (reported with their key path by the caller's Finish()).
+MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section);
+
+}  // namespace semnav::mapping

@@ -1,0 +1,40 @@
+#include "services/mapping/server/mapping_config_yaml.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace semnav::mapping {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(MappingConfigYamlTest, DefaultsFollowTheSeeds) {
+  ConfigReader root = ConfigReader::Empty();
+  ConfigReader section = root.Child("mapping");
+  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
+  ASSERT_TRUE(root.Finish().ok());
+  EXPECT_EQ(config.core.grid.p_threshold, 0.65);       // seed 003 eq. 9
+  EXPECT_EQ(config.core.layers.obstacle_kernel, 9);    // seed 004
+  EXPECT_EQ(config.core.lift.erosion_keep_above, 23.5);  // seed 004
+  EXPECT_EQ(config.core.semantic.radius_m, 0.1f);      // seed 004
+  EXPECT_EQ(config.core.scene.ema_new_weight, 0.3);    // seed 002
+  EXPECT_EQ(config.core.scene.relations.region_radius_m, 3.0);  // seed 002
+  EXPECT_EQ(config.core.range.min_m, 0.3);
+  EXPECT_EQ(config.core.range.max_m, 8.0);
+}
+
+TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
+      "mapping:\n  octomap: {resolution_m: 0.1}\n  synonyms: {sofa: [couch, settee]}\n  grid: {p_threshold: 1.5}\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
+  EXPECT_EQ(config.core.octomap_resolution_m, 0.1);
+  EXPECT_EQ(config.core.synonyms.at("sofa"), (std::vector<std::string>{"couch", "settee"}));
+  const absl::Status status = root->Finish();
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.grid.p_threshold"));
+}
+
+}  // namespace
+}  // namespace semnav::mapping

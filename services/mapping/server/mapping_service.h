@@ -1,0 +1,62 @@
+#pragma once
+
+#include <atomic>
+#include <memory>
+
+#include <grpcpp/grpcpp.h>
+
+#include "semnav/mapping/v1/mapping_service.grpc.pb.h"
+#include "services/mapping/core/map_store.h"
+#include "services/mapping/core/mapping_engine.h"
+#include "services/mapping/server/idempotency_cache.h"
+#include "services/mapping/server/mapping_config_yaml.h"
+
+namespace semnav::mapping {
+
+// semnav.mapping.v1.MappingService over one MappingEngine and one MapStore (callback API).
+class MappingServiceImpl final : public v1::MappingService::CallbackService {
+ public:
+  MappingServiceImpl(const MappingServiceConfig& config, MapStore store);
+
+  // Ends every watch stream (server shutdown hook).
+  void StopWatches() { stopping_.store(true); }
+
+  grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse>* StreamFrames(
+      grpc::CallbackServerContext* context) override;
+  grpc::ServerUnaryReactor* GetGridMap(grpc::CallbackServerContext* context, const v1::GetGridMapRequest* request,
+                                       v1::GetGridMapResponse* response) override;
+  grpc::ServerWriteReactor<v1::WatchGridMapResponse>* WatchGridMap(grpc::CallbackServerContext* context,
+                                                                   const v1::WatchGridMapRequest* request) override;
+  grpc::ServerWriteReactor<v1::GetOccupancyResponse>* GetOccupancy(grpc::CallbackServerContext* context,
+                                                                   const v1::GetOccupancyRequest* request) override;
+  grpc::ServerUnaryReactor* GetSceneGraph(grpc::CallbackServerContext* context, const v1::GetSceneGraphRequest* request,
+                                          v1::GetSceneGraphResponse* response) override;
+  grpc::ServerWriteReactor<v1::WatchSceneGraphResponse>* WatchSceneGraph(
+      grpc::CallbackServerContext* context, const v1::WatchSceneGraphRequest* request) override;
+  grpc::ServerUnaryReactor* QueryObjects(grpc::CallbackServerContext* context, const v1::QueryObjectsRequest* request,
+                                         v1::QueryObjectsResponse* response) override;
+  grpc::ServerUnaryReactor* SaveMap(grpc::CallbackServerContext* context, const v1::SaveMapRequest* request,
+                                    v1::SaveMapResponse* response) override;
+  grpc::ServerUnaryReactor* LoadMap(grpc::CallbackServerContext* context, const v1::LoadMapRequest* request,
+                                    v1::LoadMapResponse* response) override;
+  grpc::ServerUnaryReactor* ListMaps(grpc::CallbackServerContext* context, const v1::ListMapsRequest* request,
+                                     v1::ListMapsResponse* response) override;
+  grpc::ServerUnaryReactor* DeleteMap(grpc::CallbackServerContext* context, const v1::DeleteMapRequest* request,
+                                      v1::DeleteMapResponse* response) override;
+  grpc::ServerUnaryReactor* ResetMap(grpc::CallbackServerContext* context, const v1::ResetMapRequest* request,
+                                     v1::ResetMapResponse* response) override;
+
+ private:
+  // Runs `call` once per (method, request_id) and replays its answer for repeats.
+  template <typename Response, typename Call>
+  grpc::Status Idempotent(const std::string& method, const std::string& request_id, Response* response, Call call);
+
+  MappingServiceConfig config_;
+  MapStore store_;
+  MappingEngine engine_;
+  IdempotencyCache idempotency_;
+  absl::Mutex store_mu_;  // one save/load/delete at a time
+  std::atomic<bool> stopping_{false};
+};
+
+}  // namespace semnav::mapping

@@ -1,0 +1,374 @@
+// Contract test: the real semnav-mapping binary on a loopback port, called through generated stubs.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <octomap/OcTree.h>
+
+#include "semnav/mapping/v1/mapping_service.grpc.pb.h"
+#include "services/common/status/grpc_status.h"
+#include "services/mapping/testing/frame_proto.h"
+#include "services/mapping/testing/synthetic_room.h"
+#include "tests/support/service_process.h"
+
+namespace semnav::mapping {
+namespace {
+
+using semnav::common::v1::ErrorInfo;
+using ::testing::HasSubstr;
+
+constexpr int64_t kFrameNs = 100'000'000;
+
+CameraPose Viewpoint() { return testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}); }
+
+// A room frame with a "table" detection around the static box, optionally with an embedding.
+v1::SensorFrame RoomFrame(int64_t stamp, std::vector<float> embedding = {}) {
+  v1::SensorFrame frame = testing::FrameToProto(testing::RenderFrame(testing::StandardRoom(), Viewpoint(), stamp));
+  const Intrinsics k = testing::Vga();
+  const Eigen::Vector3d c = Viewpoint().orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - Viewpoint().position);
+  const double u = k.fx * c.x() / c.z() + k.cx;
+  const double v = k.fy * c.y() / c.z() + k.cy;
+  v1::Detection* det = frame.add_detections();
+  det->set_label("table");
+  det->set_score(0.9);
+  det->mutable_box()->set_x_min(u - 40);
+  det->mutable_box()->set_y_min(v - 40);
+  det->mutable_box()->set_x_max(u + 40);
+  det->mutable_box()->set_y_max(v + 40);
+  det->mutable_embedding()->Assign(embedding.begin(), embedding.end());
+  return frame;
+}
+
+class MappingContractTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    store_ = ::testing::TempDir() + "/mapping_contract_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::filesystem::remove_all(store_);
+    const std::string config = store_ + ".yaml";
+    std::ofstream(config) << "mapping:\n  store_directory: " << store_ << "\n  watch_min_interval_ms: 50\n";
+    absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> process =
+        semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", config});
+    ASSERT_TRUE(process.ok()) << process.status();
+    process_ = *std::move(process);
+    stub_ = v1::MappingService::NewStub(process_->channel());
+  }
+
+  // Streams frames and returns their acks.
+  std::vector<v1::FrameAck> Stream(const std::vector<v1::SensorFrame>& frames) {
+    grpc::ClientContext context;
+    auto stream = stub_->StreamFrames(&context);
+    std::vector<v1::FrameAck> acks;
+    for (const v1::SensorFrame& frame : frames) {
+      v1::StreamFramesRequest request;
+      *request.mutable_frame() = frame;
+      EXPECT_TRUE(stream->Write(request));
+      v1::StreamFramesResponse response;
+      EXPECT_TRUE(stream->Read(&response));
+      acks.push_back(response.ack());
+    }
+    stream->WritesDone();
+    EXPECT_TRUE(stream->Finish().ok());
+    return acks;
+  }
+
+  v1::GetGridMapResponse Grid() {
+    grpc::ClientContext context;
+    v1::GetGridMapRequest request;
+    v1::GetGridMapResponse response;
+    EXPECT_TRUE(stub_->GetGridMap(&context, request, &response).ok());
+    return response;
+  }
+
+  v1::SceneGraph Scene() {
+    grpc::ClientContext context;
+    v1::GetSceneGraphResponse response;
+    EXPECT_TRUE(stub_->GetSceneGraph(&context, v1::GetSceneGraphRequest(), &response).ok());
+    return response.graph();
+  }
+
+  std::string store_;
+  std::unique_ptr<semnav::testing::ServiceProcess> process_;
+  std::unique_ptr<v1::MappingService::Stub> stub_;
+};
+
+uint8_t CellAt(const semnav::common::v1::GridMap& grid, double x, double y) {
+  const int col = static_cast<int>(std::floor((x - grid.origin().x()) / grid.resolution()));
+  const int row = static_cast<int>(std::floor((y - grid.origin().y()) / grid.resolution()));
+  for (const auto& layer : grid.layers()) {
+    if (layer.kind() == semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL) {
+      return static_cast<uint8_t>(layer.data()[static_cast<size_t>(row) * grid.width() + col]);
+    }
+  }
+  return 0;
+}
+
+TEST_F(MappingContractTest, SyntheticRoomFramesBecomeGridAndSceneGraph) {
+  const std::vector<v1::FrameAck> acks = Stream({RoomFrame(kFrameNs), RoomFrame(2 * kFrameNs), RoomFrame(3 * kFrameNs)});
+  for (size_t i = 0; i < acks.size(); ++i) {
+    EXPECT_TRUE(acks[i].accepted()) << acks[i].error().ShortDebugString();
+    EXPECT_EQ(acks[i].sequence(), i);
+    EXPECT_EQ(acks[i].revision(), i + 1);
+    EXPECT_EQ(acks[i].detections_used(), 1u);
+  }
+  const semnav::common::v1::GridMap grid = Grid().grid();
+  EXPECT_EQ(grid.resolution(), 0.05);
+  EXPECT_EQ(grid.revision(), 3u);
+  EXPECT_EQ(grid.layers_size(), 6);
+  EXPECT_EQ(grid.semantic_labels(0), "table");
+  EXPECT_EQ(CellAt(grid, 3.3, 1.3), 33);   // static box: h_o of its 0.825 m top voxel
+  EXPECT_EQ(CellAt(grid, 5.99, 2.0), 100);  // far wall: structure
+  EXPECT_EQ(CellAt(grid, 4.5, 2.0), 0);     // free floor
+
+  const v1::SceneGraph scene = Scene();
+  ASSERT_EQ(scene.objects_size(), 1);
+  EXPECT_EQ(scene.objects(0).label(), "table");
+  EXPECT_EQ(scene.objects(0).observation_count(), 3u);
+  EXPECT_NEAR(scene.objects(0).position().y(), 1.3, 0.1);
+  EXPECT_EQ(scene.summary(), "Scene has 1 objects in 1 regions. Region 0 (area_with_table): 1 table.");
+}
+
+TEST_F(MappingContractTest, BadFramesAreRejectedWithTheirFieldAndChangeNothing) {
+  const std::vector<float> embedding{1.0f, 0.0f, 0.0f};
+  std::vector<v1::SensorFrame> frames{RoomFrame(10 * kFrameNs, embedding)};
+  std::vector<std::string> fields;
+  auto bad = [&](const std::string& field, auto mutate) {
+    v1::SensorFrame frame = RoomFrame(11 * kFrameNs, embedding);
+    mutate(frame);
+    frames.push_back(frame);
+    fields.push_back(field);
+  };
+  bad("depth.width", [](v1::SensorFrame& f) { f.mutable_intrinsics()->set_width(320); });
+  bad("depth.encoding", [](v1::SensorFrame& f) { f.mutable_depth()->set_encoding(semnav::common::v1::IMAGE_ENCODING_MONO8); });
+  bad("pose.orientation", [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_orientation()->set_w(0.5); });
+  bad("pose.position", [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_position()->set_x(std::nan("")); });
+  bad("stamp", [](v1::SensorFrame& f) { f.mutable_header()->mutable_stamp()->set_seconds(0); });
+  bad("detections[0].box", [](v1::SensorFrame& f) { f.mutable_detections(0)->mutable_box()->set_x_max(700); });
+  bad("detections[0].embedding", [](v1::SensorFrame& f) { f.mutable_detections(0)->add_embedding(0.5f); });
+  frames.push_back(RoomFrame(12 * kFrameNs, embedding));  // the stream goes on
+
+  const std::vector<v1::FrameAck> acks = Stream(frames);
+  ASSERT_EQ(acks.size(), frames.size());
+  EXPECT_TRUE(acks.front().accepted());
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const v1::FrameAck& ack = acks[i + 1];
+    EXPECT_FALSE(ack.accepted()) << fields[i];
+    EXPECT_EQ(ack.error().field(), fields[i]);
+    EXPECT_EQ(ack.error().reason(), fields[i] == "stamp" ? "FAILED_PRECONDITION" : "INVALID_ARGUMENT");
+    EXPECT_EQ(ack.revision(), 1u) << fields[i];  // unchanged
+  }
+  EXPECT_TRUE(acks.back().accepted());
+  EXPECT_EQ(acks.back().revision(), 2u);
+  const v1::SceneGraph scene = Scene();
+  ASSERT_EQ(scene.objects_size(), 1);
+  EXPECT_EQ(scene.objects(0).observation_count(), 2u);  // only the two good frames
+}
+
+TEST_F(MappingContractTest, BadRequestsNameTheFieldAndKeepState) {
+  Stream({RoomFrame(kFrameNs)});
+  const std::string before = Grid().SerializeAsString();
+  {
+    grpc::ClientContext context;
+    v1::GetGridMapRequest request;
+    request.mutable_window()->mutable_min()->set_x(2.0);
+    request.mutable_window()->mutable_max()->set_x(1.0);
+    request.mutable_window()->mutable_max()->set_y(1.0);
+    v1::GetGridMapResponse response;
+    const grpc::Status status = stub_->GetGridMap(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "window.max.x");
+  }
+  {
+    grpc::ClientContext context;
+    v1::QueryObjectsResponse response;
+    const grpc::Status status = stub_->QueryObjects(&context, v1::QueryObjectsRequest(), &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "labels");
+  }
+  {
+    grpc::ClientContext context;
+    v1::SaveMapRequest request;
+    request.set_map_id("lab");
+    v1::SaveMapResponse response;
+    const grpc::Status status = stub_->SaveMap(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "request_id");
+  }
+  {
+    grpc::ClientContext context;
+    v1::LoadMapRequest request;
+    request.set_request_id("load-1");
+    request.set_map_id("../etc");
+    v1::LoadMapResponse response;
+    const grpc::Status status = stub_->LoadMap(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "map_id");
+  }
+  {
+    grpc::ClientContext context;
+    v1::GetOccupancyRequest request;
+    request.mutable_max()->set_x(1.0);
+    request.mutable_max()->set_y(1.0);
+    auto reader = stub_->GetOccupancy(&context, request);
+    v1::GetOccupancyResponse chunk;
+    EXPECT_FALSE(reader->Read(&chunk));
+    const grpc::Status status = reader->Finish();
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "max.z");
+  }
+  EXPECT_EQ(Grid().SerializeAsString(), before);
+}
+
+TEST_F(MappingContractTest, SaveLoadAndCorruptFileIsDataLossWithLiveMapUntouched) {
+  Stream({RoomFrame(kFrameNs)});
+  v1::SaveMapRequest save;
+  save.set_request_id("save-1");
+  save.set_map_id("lab");
+  v1::SaveMapResponse saved;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(stub_->SaveMap(&context, save, &saved).ok());
+    EXPECT_EQ(saved.map().map_id(), "lab");
+    EXPECT_GT(saved.map().size_bytes(), 1000u);
+  }
+  Stream({RoomFrame(2 * kFrameNs)});
+  {
+    // Same request_id: the first answer, no second save.
+    grpc::ClientContext context;
+    v1::SaveMapResponse again;
+    ASSERT_TRUE(stub_->SaveMap(&context, save, &again).ok());
+    EXPECT_EQ(again.SerializeAsString(), saved.SerializeAsString());
+  }
+  {
+    grpc::ClientContext context;
+    v1::ResetMapRequest reset;
+    reset.set_request_id("reset-1");
+    v1::ResetMapResponse response;
+    ASSERT_TRUE(stub_->ResetMap(&context, reset, &response).ok());
+    EXPECT_EQ(Scene().objects_size(), 0);
+  }
+  {
+    grpc::ClientContext context;
+    v1::LoadMapRequest load;
+    load.set_request_id("load-1");
+    load.set_map_id("lab");
+    v1::LoadMapResponse response;
+    ASSERT_TRUE(stub_->LoadMap(&context, load, &response).ok());
+    ASSERT_EQ(Scene().objects_size(), 1);
+    EXPECT_EQ(Scene().objects(0).observation_count(), 1u);  // the state when saved
+    EXPECT_EQ(CellAt(Grid().grid(), 3.3, 1.3), 33);
+  }
+  {
+    std::fstream file(store_ + "/lab.snmap", std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(100);
+    file.put('\x7f');
+  }
+  const std::string grid_before = Grid().SerializeAsString();
+  const std::string scene_before = Scene().SerializeAsString();
+  {
+    grpc::ClientContext context;
+    v1::LoadMapRequest load;
+    load.set_request_id("load-2");
+    load.set_map_id("lab");
+    v1::LoadMapResponse response;
+    const grpc::Status status = stub_->LoadMap(&context, load, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::DATA_LOSS);
+    EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "map_id");
+  }
+  EXPECT_EQ(Grid().SerializeAsString(), grid_before);
+  EXPECT_EQ(Scene().SerializeAsString(), scene_before);
+  {
+    grpc::ClientContext context;
+    v1::ListMapsResponse list;
+    ASSERT_TRUE(stub_->ListMaps(&context, v1::ListMapsRequest(), &list).ok());
+    ASSERT_EQ(list.maps_size(), 1);
+    EXPECT_EQ(list.maps(0).map_id(), "lab");
+  }
+}
+
+TEST_F(MappingContractTest, OccupancyComesBackAsOctomapChunks) {
+  Stream({RoomFrame(kFrameNs)});
+  grpc::ClientContext context;
+  v1::GetOccupancyRequest request;
+  request.mutable_min()->set_z(-0.1);
+  request.mutable_max()->set_x(6.1);
+  request.mutable_max()->set_y(4.1);
+  request.mutable_max()->set_z(2.6);
+  auto reader = stub_->GetOccupancy(&context, request);
+  std::string payload;
+  v1::GetOccupancyResponse response;
+  std::string sha256;
+  std::string content_type;
+  while (reader->Read(&response)) {
+    EXPECT_EQ(response.chunk().offset(), payload.size());
+    payload += response.chunk().data();
+    if (!response.chunk().sha256().empty()) sha256 = response.chunk().sha256();
+    if (!response.chunk().content_type().empty()) content_type = response.chunk().content_type();
+  }
+  ASSERT_TRUE(reader->Finish().ok());
+  EXPECT_EQ(content_type, "application/x-octomap-bt");
+  EXPECT_EQ(sha256.size(), 64u);
+  octomap::OcTree tree(0.05);
+  std::istringstream in(payload);
+  ASSERT_TRUE(tree.readBinary(in));
+  const octomap::OcTreeNode* wall = tree.search(5.99, 2.0, 1.0);
+  ASSERT_NE(wall, nullptr);
+  EXPECT_TRUE(tree.isNodeOccupied(wall));
+}
+
+TEST_F(MappingContractTest, SceneWatchSendsSnapshotThenDelta) {
+  grpc::ClientContext context;
+  v1::WatchSceneGraphRequest request;
+  auto reader = stub_->WatchSceneGraph(&context, request);
+  v1::WatchSceneGraphResponse first;
+  ASSERT_TRUE(reader->Read(&first));
+  ASSERT_TRUE(first.has_snapshot());
+  EXPECT_EQ(first.snapshot().objects_size(), 0);
+  Stream({RoomFrame(kFrameNs)});
+  v1::WatchSceneGraphResponse second;
+  ASSERT_TRUE(reader->Read(&second));
+  ASSERT_TRUE(second.has_delta());
+  EXPECT_EQ(second.delta().from_revision(), first.snapshot().revision());
+  ASSERT_EQ(second.delta().upserted_objects_size(), 1);
+  EXPECT_EQ(second.delta().upserted_objects(0).label(), "table");
+  context.TryCancel();
+}
+
+TEST_F(MappingContractTest, GridWatchSendsSnapshotThenChangedWindowAndResumes) {
+  Stream({RoomFrame(kFrameNs)});
+  uint64_t resume_from = 0;
+  {
+    grpc::ClientContext context;
+    v1::WatchGridMapRequest request;
+    request.add_layers(semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL);
+    auto reader = stub_->WatchGridMap(&context, request);
+    v1::WatchGridMapResponse first;
+    ASSERT_TRUE(reader->Read(&first));
+    EXPECT_TRUE(first.snapshot());
+    EXPECT_EQ(first.grid().revision(), 1u);
+    EXPECT_EQ(first.grid().layers_size(), 1);
+    Stream({RoomFrame(2 * kFrameNs)});
+    v1::WatchGridMapResponse second;
+    ASSERT_TRUE(reader->Read(&second));
+    EXPECT_FALSE(second.snapshot());
+    EXPECT_EQ(second.grid().revision(), 2u);
+    EXPECT_GT(second.grid().width(), 0u);
+    EXPECT_EQ(CellAt(second.grid(), 3.3, 1.3), 33);
+    resume_from = second.grid().revision();
+    context.TryCancel();
+  }
+  Stream({RoomFrame(3 * kFrameNs)});
+  grpc::ClientContext context;
+  v1::WatchGridMapRequest request;
+  request.set_since_revision(resume_from);
+  auto reader = stub_->WatchGridMap(&context, request);
+  v1::WatchGridMapResponse resumed;
+  ASSERT_TRUE(reader->Read(&resumed));
+  EXPECT_FALSE(resumed.snapshot());  // only what changed after revision 2
+  EXPECT_EQ(resumed.grid().revision(), 3u);
+  context.TryCancel();
+}
+
+}  // namespace
+}  // namespace semnav::mapping

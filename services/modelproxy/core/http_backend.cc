@@ -1,0 +1,75 @@
+#include "services/modelproxy/core/http_backend.h"
+
+#include "absl/status/status.h"
+#include "absl/strings/str_cat.h"
+#include "services/modelproxy/core/anthropic_wire.h"
+#include "services/modelproxy/core/dashscope_wire.h"
+#include "services/modelproxy/core/http_status.h"
+#include "services/modelproxy/core/openai_wire.h"
+
+namespace semnav::modelproxy {
+namespace {
+
+constexpr size_t kMaxVendorMessage = 200;
+
+std::unique_ptr<WireFormat> MakeWire(BackendKind kind) {
+  switch (kind) {
+    case BackendKind::kAnthropic:
+      return std::make_unique<AnthropicWire>();
+    case BackendKind::kDashScope:
+      return std::make_unique<DashScopeWire>();
+    case BackendKind::kOpenAi:
+      break;
+  }
+  return std::make_unique<OpenAiWire>();
+}
+
+}  // namespace
+
+HttpBackend::HttpBackend(HttpBackendSpec spec, ApiKey key, std::shared_ptr<HttpTransport> transport)
+    : spec_(std::move(spec)),
+      key_(std::move(key)),
+      transport_(std::move(transport)),
+      wire_(MakeWire(spec_.kind)) {}
+
+absl::StatusOr<std::string> HttpBackend::PostForBody(const std::string& path,
+                                                     const std::string& body, absl::Time deadline) {
+  if (!configured()) {
+    return absl::FailedPreconditionError(absl::StrCat("no API key (", key_.source(), " is empty)"));
+  }
+  absl::StatusOr<HttpResponse> response =
+      transport_->Post(spec_.base_url + path, wire_->Headers(key_.value()), body, deadline);
+  if (!response.ok()) return response.status();
+  if (response->status != 200) {
+    std::string detail = key_.Redact(wire_->ErrorMessage(response->body));
+    if (detail.size() > kMaxVendorMessage) detail = detail.substr(0, kMaxVendorMessage) + "...";
+    return StatusFromHttp(response->status, detail);
+  }
+  return std::move(response->body);
+}
+
+absl::StatusOr<BackendReply> HttpBackend::Complete(const CompletionRequest& request,
+                                                   absl::Time deadline) {
+  absl::StatusOr<std::string> body =
+      PostForBody(wire_->ChatPath(request),
+                  wire_->ChatBody(request, spec_.model, spec_.default_max_tokens), deadline);
+  if (!body.ok()) return body.status();
+  absl::StatusOr<BackendReply> reply = wire_->ParseChat(*body);
+  if (reply.ok() && reply->model.empty()) reply->model = spec_.model;
+  return reply;
+}
+
+absl::StatusOr<EmbeddingReply> HttpBackend::Embed(const EmbeddingRequest& request,
+                                                  absl::Time deadline) {
+  if (spec_.kind != BackendKind::kOpenAi) {
+    return absl::UnimplementedError("only OpenAI-compatible backends serve /embeddings");
+  }
+  absl::StatusOr<std::string> body = PostForBody(
+      OpenAiWire::EmbeddingsPath(), OpenAiWire::EmbeddingsBody(request, spec_.model), deadline);
+  if (!body.ok()) return body.status();
+  absl::StatusOr<EmbeddingReply> reply = OpenAiWire::ParseEmbeddings(*body, request.texts.size());
+  if (reply.ok() && reply->model.empty()) reply->model = spec_.model;
+  return reply;
+}
+
+}  // namespace semnav::modelproxy

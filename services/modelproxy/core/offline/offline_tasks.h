@@ -1,0 +1,27 @@
+#pragma once
+// The gateway's structured questions answered from the commonsense prior and lexical matching
+// (spec: docs/algorithms/modelproxy.md, "Offline structured tasks").
+#include "absl/status/statusor.h"
+#include "nlohmann/json.hpp"
+#include "services/modelproxy/core/offline/lexicon.h"
+#include "services/modelproxy/core/offline/place_prior.h"
+
+namespace semnav::modelproxy::offline {
+
+struct OfflineParams {
+  LexicalScores lexical;
+  double relatedness_weight = 0.5;  // times the place-distribution cosine of two objects
+  double place_weight = 0.8;        // times the target's affinity to a region's place name
+  double min_score = 0.1;           // below this best_id is "" (nothing useful: explore)
+  double description_cap = 0.7;     // a free-text mention never beats a label match
+  size_t max_items = 512;           // candidates / regions per request
+};
+
+// Runs a task object ({"task": "match_target" | "rank_regions", ...}). INVALID_ARGUMENT naming
+// the offending field for a malformed task. The answer has task, target, best_id, confidence,
+// target_in_prior (false: only lexical evidence was possible), ranking [{id, score, reason}],
+// offline = true and provenance.
+absl::StatusOr<nlohmann::json> RunOfflineTask(const nlohmann::json& task, const PlacePrior& prior,
+                                              const OfflineParams& params);
+
+}  // namespace semnav::modelproxy::offline

@@ -1,0 +1,34 @@
+#pragma once
+// Fixed threads running queued jobs. Model calls block on network I/O for seconds, so they run
+// here instead of on gRPC's callback threads.
+#include <deque>
+#include <functional>
+#include <thread>
+#include <vector>
+
+#include "absl/synchronization/mutex.h"
+
+namespace semnav::modelproxy {
+
+class WorkerPool {
+ public:
+  explicit WorkerPool(int threads);
+  ~WorkerPool();  // Shutdown()
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  // False (job not run) after Shutdown().
+  bool Submit(std::function<void()> job);
+  // Runs the jobs already queued, then joins the threads. Idempotent.
+  void Shutdown();
+
+ private:
+  void Run();
+
+  absl::Mutex mu_;
+  std::deque<std::function<void()>> jobs_ ABSL_GUARDED_BY(mu_);
+  bool stopping_ ABSL_GUARDED_BY(mu_) = false;
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace semnav::modelproxy

@@ -1,0 +1,26 @@
+#include "services/modelproxy/server/worker_pool.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+namespace semnav::modelproxy {
+namespace {
+
+TEST(ModelProxyWorkerPoolTest, RunsQueuedJobsBeforeStoppingAndRefusesNewOnes) {
+  std::atomic<int> done{0};
+  WorkerPool pool(2);
+  for (int i = 0; i < 50; ++i) {
+    ASSERT_TRUE(pool.Submit([&done] {
+      absl::SleepFor(absl::Milliseconds(1));
+      ++done;
+    }));
+  }
+  pool.Shutdown();
+  EXPECT_EQ(done.load(), 50);
+  EXPECT_FALSE(pool.Submit([&done] { ++done; }));
+  EXPECT_EQ(done.load(), 50);
+}
+
+}  // namespace
+}  // namespace semnav::modelproxy

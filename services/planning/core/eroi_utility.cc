@@ -1,0 +1,130 @@
+#include "services/planning/core/eroi_utility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <queue>
+
+#include "services/planning/core/alternative_point.h"
+
+namespace semnav::planning {
+namespace {
+
+struct Node {
+  Cell cell;
+  int eroi = -1;  // -1 for the robot
+  double gain = 0.0;
+};
+
+bool SegmentFree(const PassabilityGrid& free, Cell a, Cell b) {
+  for (const Cell& c : LineCells(a, b)) {
+    if (!IsFree(free, c.x, c.y)) return false;
+  }
+  return true;
+}
+
+// An EROI is active once some of it is explored, and still worth a look
+// while some of it is not.
+bool Active(const ExplorationLayers& layers, int x0, int y0, int size) {
+  bool seen = false;
+  bool unseen = false;
+  for (int y = y0; y < std::min(y0 + size, layers.explored.height()); ++y) {
+    for (int x = x0; x < std::min(x0 + size, layers.explored.width()); ++x) {
+      (layers.explored.at(x, y) != 0 ? seen : unseen) = true;
+    }
+  }
+  return seen && unseen;
+}
+
+}  // namespace
+
+int EroiCount(int width, int height, const EroiConfig& config) {
+  const int d = config.eroi_size_cells;
+  return ((width + d - 1) / d) * ((height + d - 1) / d);
+}
+
+int ViewpointGain(const ExplorationLayers& layers, Cell viewpoint, const EroiConfig& config) {
+  std::vector<uint8_t> counted(layers.explored.size(), 0);
+  int gain = 0;
+  for (int r = 0; r < config.rays; ++r) {
+    const double angle = 2 * std::numbers::pi * r / config.rays;
+    const Cell end{static_cast<int>(std::lround(viewpoint.x + config.ray_range_cells * std::cos(angle))),
+                   static_cast<int>(std::lround(viewpoint.y + config.ray_range_cells * std::sin(angle)))};
+    for (const Cell& c : LineCells(viewpoint, end)) {
+      if (!layers.explored.Contains(c)) break;
+      const int i = layers.explored.Index(c);
+      if (layers.explored.values()[i] != 0) {
+        if (layers.free.values()[i] == 0) break;  // the ray ends on an obstacle
+        continue;
+      }
+      if (counted[i] == 0) {
+        counted[i] = 1;
+        ++gain;
+      }
+    }
+  }
+  return gain;
+}
+
+std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell robot,
+                                         const std::vector<double>& semantic,
+                                         const EroiConfig& config) {
+  const int d = config.eroi_size_cells;
+  const int columns = (layers.explored.width() + d - 1) / d;
+  const int count = EroiCount(layers.explored.width(), layers.explored.height(), config);
+  const auto s = [&](int eroi) { return semantic.empty() ? 1.0 / count : semantic[eroi]; };
+
+  std::vector<Node> nodes = {{robot, -1, 0.0}};
+  for (int e = 0; e < count; ++e) {
+    const int x0 = (e % columns) * d;
+    const int y0 = (e / columns) * d;
+    if (!Active(layers, x0, y0, d)) continue;
+    for (int v = 0; v < config.viewpoints_per_eroi; ++v) {
+      const double angle = 2 * std::numbers::pi * v / config.viewpoints_per_eroi;
+      const Cell c{static_cast<int>(std::lround(x0 + d / 2.0 + config.viewpoint_radius_cells * std::cos(angle))),
+                   static_cast<int>(std::lround(y0 + d / 2.0 + config.viewpoint_radius_cells * std::sin(angle)))};
+      if (!IsFree(layers.free, c.x, c.y) || layers.explored.at(c) == 0) continue;
+      const int gain = ViewpointGain(layers, c, config);
+      if (gain > 0) nodes.push_back({c, e, static_cast<double>(gain)});
+    }
+  }
+  double s_max = 0.0;
+  for (const Node& n : nodes) {
+    if (n.eroi >= 0) s_max = std::max(s_max, s(n.eroi));
+  }
+  const double tau = config.k * s_max;
+
+  // Dijkstra over the sparse roadmap (edges built on demand).
+  std::vector<double> dist(nodes.size(), INFINITY);
+  std::vector<int> parent(nodes.size(), -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  dist[0] = 0.0;
+  open.push({0.0, 0});
+  std::optional<EroiChoice> best;
+  while (!open.empty()) {
+    const auto [l, i] = open.top();
+    open.pop();
+    if (l > dist[i]) continue;
+    if (nodes[i].eroi >= 0) {
+      const double value = nodes[i].gain * s(nodes[i].eroi);  // U_b = I s
+      const double u = s(nodes[i].eroi) <= tau ? value * std::exp(-config.lambda * l) : value;
+      if (!best || u > best->utility) {
+        best = EroiChoice{nodes[i].cell, nodes[i].eroi, nodes[i].gain, s(nodes[i].eroi), l, u, {}};
+        for (int at = i; at >= 0; at = parent[at]) best->route.push_back(nodes[at].cell);
+        std::reverse(best->route.begin(), best->route.end());
+      }
+    }
+    for (size_t j = 1; j < nodes.size(); ++j) {
+      const double edge = std::hypot(nodes[j].cell.x - nodes[i].cell.x, nodes[j].cell.y - nodes[i].cell.y);
+      if (edge > config.connect_radius_cells || l + edge >= dist[j]) continue;
+      if (!SegmentFree(layers.free, nodes[i].cell, nodes[j].cell)) continue;
+      dist[j] = l + edge;
+      parent[j] = static_cast<int>(i);
+      open.push({dist[j], static_cast<int>(j)});
+    }
+  }
+  return best;
+}
+
+}  // namespace semnav::planning

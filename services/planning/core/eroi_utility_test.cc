@@ -1,0 +1,81 @@
+#include "services/planning/core/eroi_utility.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace semnav::planning {
+namespace {
+
+ExplorationLayers AllUnknown(int w, int h) {
+  return {CellGrid<uint8_t>(w, h, 0), PassabilityGrid(w, h, 0)};
+}
+
+void MarkFree(ExplorationLayers* l, int x, int y) {
+  l->explored.at(x, y) = 1;
+  l->free.at(x, y) = 1;
+}
+
+TEST(EroiUtility, ViewpointGainCountsUnknownCellsUntilAnObstacle) {
+  ExplorationLayers layers = AllUnknown(21, 21);
+  MarkFree(&layers, 10, 10);
+  EroiConfig config;
+  config.rays = 4;  // east, north, west, south
+  config.ray_range_cells = 5;
+  EXPECT_EQ(ViewpointGain(layers, {10, 10}, config), 20);  // 4 rays x 5 unknown cells
+  layers.explored.at(12, 10) = 1;  // an explored obstacle 2 cells east
+  EXPECT_EQ(ViewpointGain(layers, {10, 10}, config), 16);  // east ray: 1 cell, then stops
+}
+
+// 60 x 20 cells, three 20-cell EROIs; everything explored and free except
+// a 5 x 10 block at x 15-19, y 0-9 (EROI 0, near the robot) and the strip
+// x 55-59 (EROI 2, far away). The robot at (2, 15) passes below the block.
+ExplorationLayers TwoUnknownStrips() {
+  ExplorationLayers layers = AllUnknown(60, 20);
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 55; ++x) {
+      if (x < 15 || x > 19 || y >= 10) MarkFree(&layers, x, y);
+    }
+  }
+  return layers;
+}
+
+EroiConfig SmallConfig() {
+  EroiConfig config;
+  config.eroi_size_cells = 20;
+  config.viewpoint_radius_cells = 5;
+  config.ray_range_cells = 30;
+  return config;
+}
+
+TEST(EroiUtility, HighSemanticValueIgnoresPathCost) {
+  const ExplorationLayers layers = TwoUnknownStrips();
+  EroiConfig config = SmallConfig();
+  ASSERT_EQ(EroiCount(60, 20, config), 3);
+  // s = 1.0 for the far EROI exceeds tau = 0.8: greedy, no e^(-lambda L).
+  std::optional<EroiChoice> choice = SelectEroiGoal(layers, {2, 15}, {0.2, 0.0, 1.0}, config);
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_EQ(choice->eroi, 2);
+  EXPECT_GT(choice->path_cells, 40.0);
+  EXPECT_DOUBLE_EQ(choice->utility, choice->gain * 1.0);
+  EXPECT_EQ(choice->route.front(), (Cell{2, 15}));
+  EXPECT_EQ(choice->route.back(), choice->viewpoint);
+}
+
+TEST(EroiUtility, PathCostFavoursTheNearerEroiBelowTheThreshold) {
+  const ExplorationLayers layers = TwoUnknownStrips();
+  EroiConfig config = SmallConfig();
+  config.k = 1.0;  // tau = max s: every node pays the path cost
+  std::optional<EroiChoice> choice = SelectEroiGoal(layers, {2, 15}, {0.3, 0.0, 0.3}, config);
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_EQ(choice->eroi, 0);
+  EXPECT_NEAR(choice->utility,
+              choice->gain * 0.3 * std::exp(-config.lambda * choice->path_cells), 1e-12);
+  // Without semantic values (uniform 1/3 > 0.8 / 3) the gain alone decides.
+  std::optional<EroiChoice> uniform = SelectEroiGoal(layers, {2, 15}, {}, SmallConfig());
+  ASSERT_TRUE(uniform.has_value());
+  EXPECT_DOUBLE_EQ(uniform->utility, uniform->gain / 3.0);
+}
+
+}  // namespace
+}  // namespace semnav::planning

@@ -1,0 +1,12 @@
+#pragma once
+
+#include "services/planning/core/cell_grid.h"
+
+namespace semnav::planning {
+
+// Footprint inflation: blocks every cell whose centre lies within
+// radius_cells of a blocked cell's centre, so a disc robot of that radius
+// can be planned as a point. radius_cells <= 0 returns the grid unchanged.
+PassabilityGrid InflateObstacles(const PassabilityGrid& grid, double radius_cells);
+
+}  // namespace semnav::planning

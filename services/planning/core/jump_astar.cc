@@ -1,0 +1,162 @@
+#include "services/planning/core/jump_astar.h"
+
+#include <algorithm>
+
+#include "absl/strings/str_cat.h"
+#include "services/planning/core/grid_path.h"
+#include "services/planning/core/grid_search_common.h"
+#include "services/planning/core/jump_scan.h"
+#include "services/planning/core/octile.h"
+#include "services/planning/core/plan_failure.h"
+
+namespace semnav::planning {
+namespace {
+
+// One uniform region for the jump rules: structure blocks, boundary cells
+// stop jumps, straight jumps come from the precomputed table.
+struct RegionSpace {
+  const LayeredGrid& grid;
+  const RegionTables& tables;
+  bool Free(int x, int y) const { return Passable(grid, x, y); }
+  bool Stop(Cell c) const { return tables.Boundary(grid.Index(c)); }
+  bool JumpStraight(Cell from, int dx, int dy, Cell goal, Cell* found) const {
+    return tables.jumps().Jump(from, dx, dy, goal, found);
+  }
+};
+
+absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell goal) {
+  for (auto [cell, field] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
+    if (!grid.Contains(cell)) {
+      return absl::InvalidArgumentError(absl::StrCat(field, " (", cell.x, ", ", cell.y,
+                                                     ") is outside the grid"));
+    }
+  }
+  if (grid.at(start) >= kStructureValue) {
+    return MakePlanFailure(PlanFailure::kStartOccupied, "start is on building structure");
+  }
+  if (grid.at(goal) >= kStructureValue) {
+    return MakePlanFailure(PlanFailure::kGoalOccupied, "goal is on building structure");
+  }
+  return absl::OkStatus();
+}
+
+// Splits the cell path into maximal single-mode segments with their
+// lengths and eq. 10 / eq. 12 energies, and reduces the waypoints to the
+// turning points (heading or mode changes).
+void Summarise(const LayeredGrid& grid, const JumpAStarOptions& options, MultiModalPath* path) {
+  const std::vector<Cell> cells = ExpandWaypoints(path->waypoints);
+  path->waypoints.assign(1, cells.front());
+  int last_dx = 0;
+  int last_dy = 0;
+  for (size_t i = 1; i < cells.size(); ++i) {
+    const int dx = cells[i].x - cells[i - 1].x;
+    const int dy = cells[i].y - cells[i - 1].y;
+    MotionMode mode = MotionMode::kRolling;
+    ClassifyMove(grid, cells[i - 1], dx, dy, &mode);
+    const double length = (dx != 0 && dy != 0 ? kSqrt2 : 1.0) * options.resolution_m;
+    const bool flying = mode == MotionMode::kFlying;
+    const double energy =
+        length * (flying ? options.energy.FlyingJPerM() : options.energy.rolling_j_per_m);
+    const bool new_segment = path->segments.empty() || path->segments.back().mode != mode;
+    if (i > 1 && (new_segment || dx != last_dx || dy != last_dy)) {
+      path->waypoints.push_back(cells[i - 1]);
+    }
+    if (new_segment) {
+      const int at = static_cast<int>(path->waypoints.size()) - 1;
+      path->segments.push_back({cells[i - 1], cells[i - 1], at, at, mode, 0.0, 0.0});
+    }
+    ModalSegment& segment = path->segments.back();
+    segment.to = cells[i];
+    segment.last_point = static_cast<int>(path->waypoints.size());  // cells[i] comes next
+    segment.length_m += length;
+    segment.energy_j += energy;
+    (flying ? path->fly_m : path->roll_m) += length;
+    path->energy_j += energy;
+    last_dx = dx;
+    last_dy = dy;
+  }
+  if (cells.size() > 1) path->waypoints.push_back(cells.back());
+  path->length_m = path->fly_m + path->roll_m;
+  path->switches = path->segments.empty() ? 0 : static_cast<int>(path->segments.size()) - 1;
+}
+
+}  // namespace
+
+void JumpAStarPlanner::UpdateCaches(const LayeredGrid& grid, const StepCosts& costs) {
+  if (regions_.Update(grid)) {
+    queries_on_grid_ = 0;
+    landmarks_.Clear();
+  }
+  if (++queries_on_grid_ < 2) return;
+  if (!landmarks_.Matches(costs)) landmarks_.Reset(grid, costs);
+  landmarks_.AddLandmark(grid);
+}
+
+absl::StatusOr<MultiModalPath> JumpAStarPlanner::Plan(const LayeredGrid& grid, Cell start,
+                                                      Cell goal, const JumpAStarOptions& options,
+                                                      const SearchLimits& limits) {
+  if (absl::Status s = CheckMultiModalEndpoints(grid, start, goal); !s.ok()) return s;
+  const double unit = options.resolution_m / options.energy_unit_j;
+  const StepCosts costs{
+      options.alpha * options.resolution_m + options.beta * options.energy.rolling_j_per_m * unit,
+      options.alpha * options.resolution_m + options.beta * options.energy.FlyingJPerM() * unit};
+  const bool prune = options.jump_pruning;
+  if (prune) UpdateCaches(grid, costs);
+  const RegionSpace space{grid, regions_};
+  const bool landmarks = prune && landmarks_.Matches(costs);
+  const int goal_index = grid.Index(goal);
+  if (landmarks) landmarks_.SetGoal(goal_index);
+  auto heuristic = [&](Cell c) {
+    const double octile = costs.roll * OctileDistance(c, goal);
+    return landmarks ? std::max(octile, landmarks_.Bound(grid.Index(c))) : octile;
+  };
+  // Without pruning every cell expands fully (the plain A* reference).
+  auto jumps_through = [&](int cell) { return prune && !regions_.Boundary(cell); };
+
+  workspace_.Reset(grid.size());
+  auto relax = [&](int from, Cell to, double step_cost) {
+    const int next = grid.Index(to);
+    if (workspace_.Closed(next)) return;
+    const double g = workspace_.g(from) + step_cost;
+    workspace_.Relax(next, g, g + heuristic(to), from);
+  };
+  // A jump stays in the region of `c`, so every step has the region's cost.
+  auto try_jump = [&](int from, Cell c, int dx, int dy) {
+    if (const std::optional<Cell> jump = Jump(space, c, dx, dy, goal)) {
+      const double step = IsObstacle(grid.at(c)) ? costs.fly : costs.roll;
+      relax(from, *jump, step * OctileDistance(c, *jump));
+    }
+  };
+  auto expand = [&](int current) {
+    const Cell c = grid.CellAt(current);
+    const int parent = workspace_.parent(current);
+    if (parent >= 0 && jumps_through(current)) {
+      const Cell p = grid.CellAt(parent);
+      ForEachPrunedDirection(space, c, (c.x > p.x) - (c.x < p.x), (c.y > p.y) - (c.y < p.y),
+                             [&](int dx, int dy) { try_jump(current, c, dx, dy); });
+      return;
+    }
+    const bool in_obstacle = IsObstacle(grid.at(c));
+    ForEachMove(grid, c, [&](Cell n, MotionMode mode, double cells) {
+      const bool same_region = IsObstacle(grid.at(n)) == in_obstacle &&
+                               (mode == MotionMode::kFlying) == in_obstacle;
+      if (same_region && jumps_through(grid.Index(n))) {
+        try_jump(current, c, n.x - c.x, n.y - c.y);
+      } else {
+        relax(current, n, costs.Of(mode) * cells);
+      }
+    });
+  };
+  const absl::Status status =
+      RunBestFirst(workspace_, grid.Index(start), heuristic(start), goal_index, limits, expand);
+  if (!status.ok()) return status;
+  const GridPath trace = TracePath(workspace_, grid.width(), goal_index);
+  MultiModalPath path;
+  path.waypoints = trace.waypoints;
+  path.cost = trace.length_cells;
+  path.expansions = trace.expansions;
+  Summarise(grid, options, &path);
+  return path;
+}
+
+}  // namespace semnav::planning

@@ -1,0 +1,91 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "services/planning/core/energy_model.h"
+#include "services/planning/core/landmark_heuristic.h"
+#include "services/planning/core/layered_grid.h"
+#include "services/planning/core/region_tables.h"
+#include "services/planning/core/search_limits.h"
+#include "services/planning/core/search_workspace.h"
+
+namespace semnav::planning {
+
+struct JumpAStarOptions {
+  double resolution_m = 0.05;  // grid cell size
+  // Eq. 14 weights f = alpha g + beta e + h (Table 1: 1.0 and 1.0).
+  double alpha = 1.0;
+  double beta = 1.0;
+  // e(n) (eq. 13) enters eq. 14 in units of energy_unit_j. The seed does not
+  // state the unit; in plain joules beta e outweighs alpha g 400:1 and
+  // alpha/beta has no effect, so kJ is the default (see docs).
+  double energy_unit_j = 1000.0;
+  EnergyModel energy;
+  // false: plain A* expansion everywhere (same costs), the reference used to
+  // check that jump pruning keeps the optimum.
+  bool jump_pruning = true;
+};
+
+// A maximal run of path cells travelled in one mode.
+struct ModalSegment {
+  Cell from;
+  Cell to;
+  int first_point = 0;  // index of `from` in MultiModalPath::waypoints
+  int last_point = 0;   // index of `to`
+  MotionMode mode = MotionMode::kRolling;
+  double length_m = 0.0;
+  double energy_j = 0.0;
+};
+
+struct MultiModalPath {
+  // Turning points: start, goal, and every cell where the heading or the
+  // mode changes; consecutive points are joined by straight/45-degree runs.
+  std::vector<Cell> waypoints;
+  std::vector<ModalSegment> segments;
+  double length_m = 0.0;
+  double fly_m = 0.0;
+  double roll_m = 0.0;
+  double energy_j = 0.0;
+  int switches = 0;    // mode changes along the path
+  double cost = 0.0;   // alpha g + beta e at the goal
+  int expansions = 0;
+};
+
+// Improved Jump A* (seed 003, sec. 3.2): jump-point pruning inside uniform
+// regions, plain A* expansion where the two modes meet. A move is rolling
+// when every cell it touches (target, and for diagonals both orthogonal
+// cells) is free, otherwise flying; structure is never entered and never
+// corner-cut. Cells whose 8 neighbours include the other class (free vs
+// obstacle) are "boundary" cells: jumps stop there and they are expanded
+// to all 8 neighbours, so rolling/flying choices are made exactly as in A*.
+// Away from boundaries every move in a region has one cost, so JPS pruning
+// is exact: in free space (the seed's rolling JPS on the structure layer)
+// and also inside obstacle interiors (an extension of the seed, whose A*
+// expands them cell by cell; same optimum, measured in docs).
+// h is the larger of (alpha + beta * rolling energy per metre) * octile
+// distance (no metre costs less than rolling) and, from the second pruned
+// query on the same grid and costs, a landmark bound; both are admissible
+// and consistent, so the optimum is unchanged.
+// The planner caches per-grid tables: reuse one planner for many queries on
+// a map. Not thread-safe.
+class JumpAStarPlanner {
+ public:
+  absl::StatusOr<MultiModalPath> Plan(const LayeredGrid& grid, Cell start, Cell goal,
+                                      const JumpAStarOptions& options,
+                                      const SearchLimits& limits = {});
+
+ private:
+  // Rebuilds the region tables when the grid changes. From the second query
+  // on a grid, adds one landmark per query: a one-off query pays no
+  // whole-grid Dijkstra and no query pays more than one.
+  void UpdateCaches(const LayeredGrid& grid, const StepCosts& costs);
+
+  SearchWorkspace workspace_;
+  RegionTables regions_;
+  LandmarkHeuristic landmarks_;
+  int queries_on_grid_ = 0;
+};
+
+}  // namespace semnav::planning

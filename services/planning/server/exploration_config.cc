@@ -1,0 +1,62 @@
+#include "services/planning/server/exploration_config.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace semnav::planning {
+
+EroiConfig ExplorationConfig::EroiInCells(double resolution_m) const {
+  EroiConfig c;
+  c.eroi_size_cells = std::max(1, static_cast<int>(std::lround(eroi_size_m / resolution_m)));
+  c.viewpoints_per_eroi = eroi_viewpoints;
+  c.viewpoint_radius_cells = eroi_viewpoint_radius_m / resolution_m;
+  c.rays = eroi_rays;
+  c.ray_range_cells = eroi_ray_range_m / resolution_m;
+  c.connect_radius_cells = eroi_connect_radius_m / resolution_m;
+  c.lambda = eroi_lambda_per_m * resolution_m;
+  c.k = eroi_k;
+  return c;
+}
+
+void ExplorationConfig::Read(ConfigReader& section) {
+  section.Read("min_frontier_cells", &min_frontier_cells)
+      .Read("l_max_steps", &coverage.l_max_steps);
+  section.Check(min_frontier_cells >= 1, "min_frontier_cells", "must be >= 1");
+  section.Check(coverage.l_max_steps >= 1, "l_max_steps", "must be >= 1");
+  ConfigReader score_section = section.Child("semantic_frontier");
+  score_section.Read("distance_weight", &score.distance_weight)
+      .Read("novelty_weight", &score.novelty_weight)
+      .Read("language_weight", &score.language_weight)
+      .Read("grounding_weight", &score.grounding_weight)
+      .Read("language_radius_m", &score.language_radius_m)
+      .Read("novelty_radius_m", &score.novelty_radius_m);
+  score_section.Check(score.novelty_radius_m > 0 && score.language_radius_m > 0,
+                      "novelty_radius_m", "radii must be > 0");
+  ConfigReader eroi = section.Child("eroi");
+  eroi.Read("size_m", &eroi_size_m)
+      .Read("viewpoints", &eroi_viewpoints)
+      .Read("viewpoint_radius_m", &eroi_viewpoint_radius_m)
+      .Read("rays", &eroi_rays)
+      .Read("ray_range_m", &eroi_ray_range_m)
+      .Read("connect_radius_m", &eroi_connect_radius_m)
+      .Read("lambda_per_m", &eroi_lambda_per_m)
+      .Read("k", &eroi_k);
+  eroi.Check(eroi_size_m > 0 && eroi_ray_range_m > 0 && eroi_connect_radius_m > 0, "size_m",
+             "EROI lengths must be > 0");
+  eroi.Check(eroi_viewpoints >= 1 && eroi_rays >= 1, "viewpoints", "counts must be >= 1");
+  eroi.Check(eroi_k > 0 && eroi_k <= 1, "k", "must be in (0, 1]");
+}
+
+void TrajectoryConfig::Read(ConfigReader& section) {
+  section.Read("spacing_m", &smoothing.spacing_m)
+      .Read("iterations", &smoothing.iterations)
+      .Read("max_speed_mps", &limits.max_speed_mps)
+      .Read("max_accel_mps2", &limits.max_accel_mps2)
+      .Read("max_yaw_rate_rps", &limits.max_yaw_rate_rps);
+  section.Check(smoothing.spacing_m > 0, "spacing_m", "must be > 0");
+  section.Check(limits.max_speed_mps > 0 && limits.max_accel_mps2 > 0 &&
+                    limits.max_yaw_rate_rps > 0,
+                "max_speed_mps", "limits must be > 0");
+}
+
+}  // namespace semnav::planning

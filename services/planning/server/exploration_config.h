@@ -1,0 +1,38 @@
+#pragma once
+
+#include "services/common/config/config_reader.h"
+#include "services/planning/core/coverage_goal.h"
+#include "services/planning/core/eroi_utility.h"
+#include "services/planning/core/frontier_scoring.h"
+#include "services/planning/core/trajectory.h"
+
+namespace semnav::planning {
+
+// YAML "planning.exploration": frontier, coverage-max, semantic scoring and
+// EROI settings (lengths in metres here, cells in the core).
+struct ExplorationConfig {
+  int min_frontier_cells = 5;
+  FrontierScoreConfig score;        // seed 002 weights 0.2/0.3/0.2/0.3
+  CoverageGoalConfig coverage;      // L_MAX, turn step
+  double eroi_size_m = 2.0;         // Delta
+  int eroi_viewpoints = 8;
+  double eroi_viewpoint_radius_m = 0.5;
+  int eroi_rays = 72;
+  double eroi_ray_range_m = 5.0;
+  double eroi_connect_radius_m = 3.0;
+  double eroi_lambda_per_m = 1.0;   // eq. 24 lambda
+  double eroi_k = 0.8;              // eq. 24 tau = k max s
+
+  EroiConfig EroiInCells(double resolution_m) const;
+  void Read(ConfigReader& section);
+};
+
+// YAML "planning.trajectory": seed 000 sec. 2.3 smoothing and limits.
+struct TrajectoryConfig {
+  SmoothingConfig smoothing;
+  TimeAllocationConfig limits;  // 1.0 m/s, 2.0 m/s^2, 2.0 rad/s
+
+  void Read(ConfigReader& section);
+};
+
+}  // namespace semnav::planning

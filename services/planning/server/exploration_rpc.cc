@@ -1,0 +1,171 @@
+#include "services/planning/server/exploration_rpc.h"
+
+#include <optional>
+#include <vector>
+
+#include "absl/strings/str_cat.h"
+#include "services/common/status/grpc_status.h"
+#include "services/planning/core/coverage_goal.h"
+#include "services/planning/core/distance_field.h"
+#include "services/planning/core/eroi_utility.h"
+#include "services/planning/core/frontier.h"
+#include "services/planning/core/frontier_scoring.h"
+
+namespace semnav::planning {
+namespace {
+
+namespace pb = semnav::planning::v1;
+using semnav::common::v1::GridMap;
+
+// Everything the frontier strategies need from one request.
+struct FrontierView {
+  GridFrame frame;
+  CellGrid<uint8_t> explored;
+  PassabilityGrid free;
+  Cell robot;
+  std::vector<Frontier> frontiers;
+  std::vector<FrontierCandidate> candidates;  // metres, path distances
+  std::vector<FrontierScore> scores;
+};
+
+Point2 ToPoint(const semnav::common::v1::Pose2D& p) { return {p.x(), p.y()}; }
+
+absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
+                                       const semnav::common::v1::Pose2D& robot,
+                                       uint32_t min_cells, const pb::SemanticContext& semantics,
+                                       const PlanningConfig& config) {
+  FrontierView view;
+  absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
+  if (!frame.ok()) return frame.status();
+  view.frame = *frame;
+  absl::StatusOr<Cell> cell = view.frame.ToCell(robot, "robot");
+  if (!cell.ok()) return cell.status();
+  view.robot = *cell;
+  absl::StatusOr<CellGrid<uint8_t>> explored = ToExplored(grid, field);
+  if (!explored.ok()) return explored.status();
+  view.explored = *std::move(explored);
+  absl::StatusOr<PassabilityGrid> free = ToPassability(grid, {config.occupied_percent, false}, field);
+  if (!free.ok()) return free.status();
+  view.free = *std::move(free);
+  const int min = min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
+  view.frontiers = ExtractFrontiers(view.explored, view.free, min);
+  const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
+  for (const Frontier& f : view.frontiers) {
+    double nearest = kUnreachable;
+    for (const Cell& c : f.cells) nearest = std::min(nearest, distance[view.free.Index(c)]);
+    const double x = view.frame.origin_x + (f.centroid_x + 0.5) * view.frame.resolution;
+    const double y = view.frame.origin_y + (f.centroid_y + 0.5) * view.frame.resolution;
+    view.candidates.push_back(
+        {{x, y}, nearest == kUnreachable ? -1.0 : nearest * view.frame.resolution});
+  }
+  std::vector<Point2> visited;
+  for (const auto& v : semantics.visited()) visited.push_back(ToPoint(v));
+  std::vector<ScoredObject> objects;
+  for (const auto& o : semantics.objects()) {
+    objects.push_back({ToPoint(o.position()), o.relevance(), o.relation(), o.cooccurrence()});
+  }
+  const Point2 robot_m = ToPoint(view.frame.ToPose(view.robot));
+  view.scores = ScoreFrontiers(view.candidates, robot_m, visited, objects, config.exploration.score);
+  return view;
+}
+
+absl::Status NotFound(absl::string_view message) {
+  return FieldError(absl::StatusCode::kNotFound, "", message, "NO_EXPLORATION_GOAL");
+}
+
+}  // namespace
+
+absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
+                                const pb::ExtractFrontiersRequest& request,
+                                const PlanningConfig& config,
+                                pb::ExtractFrontiersResponse* response) {
+  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(), request.min_cells(),
+                                                request.semantics(), config);
+  if (!view.ok()) return view.status();
+  for (size_t i = 0; i < view->frontiers.size(); ++i) {
+    pb::Frontier* f = response->add_frontiers();
+    f->mutable_centroid()->set_x(view->candidates[i].centroid.x);
+    f->mutable_centroid()->set_y(view->candidates[i].centroid.y);
+    *f->mutable_anchor() = view->frame.ToPose(view->frontiers[i].anchor);
+    f->set_size_cells(static_cast<uint32_t>(view->frontiers[i].cells.size()));
+    f->set_path_distance_m(view->candidates[i].path_distance_m);
+    const FrontierScore& s = view->scores[i];
+    pb::FrontierScore* score = f->mutable_score();
+    score->set_distance(s.distance);
+    score->set_novelty(s.novelty);
+    score->set_language(s.language);
+    score->set_grounding(s.grounding);
+    score->set_total(s.total);
+  }
+  response->set_map_revision(grid.revision());
+  return absl::OkStatus();
+}
+
+absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
+                          const pb::SelectExplorationGoalRequest& request,
+                          const PlanningConfig& config,
+                          pb::SelectExplorationGoalResponse* response) {
+  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
+                                                request.min_frontier_cells(), request.semantics(),
+                                                config);
+  if (!view.ok()) return view.status();
+  const pb::ExplorationStrategy strategy =
+      request.strategy() == pb::EXPLORATION_STRATEGY_UNSPECIFIED
+          ? pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER
+          : request.strategy();
+  response->set_strategy(strategy);
+  response->set_map_revision(grid.revision());
+  switch (strategy) {
+    case pb::EXPLORATION_STRATEGY_COVERAGE_MAX: {
+      // Seed 004: unknown space counts as free for the long-term goal.
+      PassabilityGrid open = view->free;
+      for (int i = 0; i < open.size(); ++i) {
+        if (view->explored.values()[i] == 0) open.values()[i] = 1;
+      }
+      const std::optional<Cell> goal =
+          CoverageMaxGoal(open, view->robot, request.robot().yaw(), config.exploration.coverage);
+      if (!goal) return NotFound("no reachable boundary goal in any direction");
+      *response->mutable_goal() = view->frame.ToPose(*goal);
+      return absl::OkStatus();
+    }
+    case pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER: {
+      int best = -1;
+      for (size_t i = 0; i < view->scores.size(); ++i) {
+        if (view->candidates[i].path_distance_m < 0) continue;
+        if (best < 0 || view->scores[i].total > view->scores[best].total) best = static_cast<int>(i);
+      }
+      if (best < 0) return NotFound("no reachable frontier");
+      *response->mutable_goal() = view->frame.ToPose(view->frontiers[best].anchor);
+      response->set_score(view->scores[best].total);
+      return absl::OkStatus();
+    }
+    case pb::EXPLORATION_STRATEGY_EROI_UTILITY: {
+      const EroiConfig eroi = config.exploration.EroiInCells(view->frame.resolution);
+      const std::vector<double> values(request.eroi_semantic_values().begin(),
+                                       request.eroi_semantic_values().end());
+      const int count = EroiCount(view->frame.width, view->frame.height, eroi);
+      if (!values.empty() && static_cast<int>(values.size()) != count) {
+        return FieldError(absl::StatusCode::kInvalidArgument, "eroi_semantic_values",
+                          absl::StrCat("eroi_semantic_values has ", values.size(),
+                                       " values; this grid has ", count, " EROIs"));
+      }
+      const std::optional<EroiChoice> choice =
+          SelectEroiGoal({view->explored, view->free}, view->robot, values, eroi);
+      if (!choice) return NotFound("no reachable EROI viewpoint");
+      *response->mutable_goal() = view->frame.ToPose(choice->viewpoint);
+      response->set_score(choice->utility);
+      for (const Cell& c : choice->route) *response->add_route() = view->frame.ToPose(c);
+      return absl::OkStatus();
+    }
+    default: {
+      const std::optional<NearestFrontier> nearest =
+          SelectNearestFrontier(view->frontiers, view->free, view->robot);
+      if (!nearest) return NotFound("no reachable frontier");
+      *response->mutable_goal() = view->frame.ToPose(nearest->cell);
+      response->set_score(nearest->distance_cells * view->frame.resolution);
+      return absl::OkStatus();
+    }
+  }
+}
+
+}  // namespace semnav::planning

@@ -1,0 +1,126 @@
+#include "services/planning/server/grid_conversion.h"
+
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+#include "services/common/status/grpc_status.h"
+
+namespace semnav::planning {
+namespace {
+
+using semnav::common::v1::GridLayerKind;
+using semnav::common::v1::GridMap;
+
+constexpr uint8_t kUnknown = 255;
+constexpr int64_t kMaxCells = int64_t{1} << 26;  // 8192 x 8192
+
+absl::Status Invalid(const std::string& field, absl::string_view message) {
+  return FieldError(absl::StatusCode::kInvalidArgument, field, message);
+}
+
+}  // namespace
+
+absl::StatusOr<Cell> GridFrame::ToCell(const semnav::common::v1::Pose2D& pose,
+                                       const std::string& field) const {
+  const double col = std::floor((pose.x() - origin_x) / resolution);
+  const double row = std::floor((pose.y() - origin_y) / resolution);
+  if (!(col >= 0 && row >= 0 && col < width && row < height)) {
+    return Invalid(field, absl::StrCat(field, " (", pose.x(), ", ", pose.y(),
+                                       ") m is outside the grid"));
+  }
+  return Cell{static_cast<int>(col), static_cast<int>(row)};
+}
+
+semnav::common::v1::Pose2D GridFrame::ToPose(Cell cell) const {
+  semnav::common::v1::Pose2D pose;
+  pose.set_x(origin_x + (cell.x + 0.5) * resolution);
+  pose.set_y(origin_y + (cell.y + 0.5) * resolution);
+  return pose;
+}
+
+absl::StatusOr<GridFrame> ReadGridFrame(const GridMap& grid, const std::string& field) {
+  if (!(grid.resolution() > 0.0) || !std::isfinite(grid.resolution())) {
+    return Invalid(field + ".resolution", "resolution must be a finite value > 0");
+  }
+  const int64_t cells = int64_t{grid.width()} * grid.height();
+  if (grid.width() == 0 || grid.height() == 0 || cells > kMaxCells) {
+    return Invalid(field + ".width", absl::StrCat("width x height must be in 1..", kMaxCells));
+  }
+  for (int i = 0; i < grid.layers_size(); ++i) {
+    if (static_cast<int64_t>(grid.layers(i).data().size()) != cells) {
+      return Invalid(absl::StrCat(field, ".layers[", i, "].data"),
+                     absl::StrCat("layer data has ", grid.layers(i).data().size(),
+                                  " bytes, expected width x height = ", cells));
+    }
+  }
+  return GridFrame{grid.resolution(), grid.origin().x(), grid.origin().y(),
+                   static_cast<int>(grid.width()), static_cast<int>(grid.height())};
+}
+
+const std::string* FindLayer(const GridMap& grid, GridLayerKind kind) {
+  for (const auto& layer : grid.layers()) {
+    if (layer.kind() == kind) return &layer.data();
+  }
+  return nullptr;
+}
+
+absl::StatusOr<PassabilityGrid> ToPassability(const GridMap& grid,
+                                              const TraversabilityRules& rules,
+                                              const std::string& field) {
+  PassabilityGrid out(static_cast<int>(grid.width()), static_cast<int>(grid.height()), 0);
+  const std::string* hierarchical =
+      FindLayer(grid, semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL);
+  const std::string* occupancy = FindLayer(grid, semnav::common::v1::GRID_LAYER_KIND_OCCUPANCY);
+  const std::string* layer = hierarchical != nullptr ? hierarchical : occupancy;
+  if (layer == nullptr) {
+    return FieldError(absl::StatusCode::kFailedPrecondition, field + ".layers",
+                      "2D planning needs a HIERARCHICAL or OCCUPANCY layer", "LAYER_MISSING");
+  }
+  const int limit = hierarchical != nullptr ? 1 : rules.occupied_percent;
+  for (int i = 0; i < out.size(); ++i) {
+    const uint8_t v = static_cast<uint8_t>((*layer)[i]);
+    out.values()[i] = v == kUnknown ? rules.unknown_is_free : v < limit;
+  }
+  return out;
+}
+
+CellGrid<uint8_t> ToObstacleProbability(const GridMap& grid) {
+  const std::string* layer =
+      FindLayer(grid, semnav::common::v1::GRID_LAYER_KIND_OBSTACLE_PROBABILITY);
+  if (layer == nullptr) return {};
+  CellGrid<uint8_t> out(static_cast<int>(grid.width()), static_cast<int>(grid.height()), 0);
+  for (int i = 0; i < out.size(); ++i) {
+    const uint8_t v = static_cast<uint8_t>((*layer)[i]);
+    out.values()[i] = v == kUnknown ? 0 : v;
+  }
+  return out;
+}
+
+absl::StatusOr<CellGrid<uint8_t>> ToExplored(const GridMap& grid, const std::string& field) {
+  const std::string* layer = FindLayer(grid, semnav::common::v1::GRID_LAYER_KIND_EXPLORED);
+  if (layer == nullptr) {
+    return FieldError(absl::StatusCode::kFailedPrecondition, field + ".layers",
+                      "exploration needs an EXPLORED layer", "LAYER_MISSING");
+  }
+  CellGrid<uint8_t> out(static_cast<int>(grid.width()), static_cast<int>(grid.height()), 0);
+  for (int i = 0; i < out.size(); ++i) out.values()[i] = (*layer)[i] != 0;
+  return out;
+}
+
+absl::StatusOr<LayeredGrid> ToLayeredGrid(const GridMap& grid, bool unknown_is_free,
+                                          const std::string& field) {
+  const std::string* layer = FindLayer(grid, semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL);
+  if (layer == nullptr) {
+    return FieldError(absl::StatusCode::kFailedPrecondition, field + ".layers",
+                      "JUMP_ASTAR needs a HIERARCHICAL layer", "LAYER_MISSING");
+  }
+  LayeredGrid out(static_cast<int>(grid.width()), static_cast<int>(grid.height()), 0);
+  for (int i = 0; i < out.size(); ++i) {
+    const uint8_t v = static_cast<uint8_t>((*layer)[i]);
+    out.values()[i] = v == kUnknown ? (unknown_is_free ? 0 : kStructureValue)
+                                    : (v > kStructureValue ? kStructureValue : v);
+  }
+  return out;
+}
+
+}  // namespace semnav::planning

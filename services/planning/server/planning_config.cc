@@ -1,0 +1,47 @@
+#include "services/planning/server/planning_config.h"
+
+namespace semnav::planning {
+
+absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section) {
+  PlanningConfig config;
+  ConfigReader grid = section.Child("grid");
+  grid.Read("occupied_percent", &config.occupied_percent)
+      .Read("unknown_is_free", &config.unknown_is_free)
+      .Read("max_low_probability_percent", &config.grid_planner.max_low_probability_percent);
+  grid.Check(config.occupied_percent >= 1 && config.occupied_percent <= 100, "occupied_percent",
+             "must be in 1..100");
+  grid.Check(config.grid_planner.max_low_probability_percent >= 0 &&
+                 config.grid_planner.max_low_probability_percent <= 100,
+             "max_low_probability_percent", "must be in 0..100");
+
+  JumpAStarOptions& ja = config.jump_astar;
+  ConfigReader jump = section.Child("jump_astar");
+  jump.Read("alpha", &ja.alpha)
+      .Read("beta", &ja.beta)
+      .Read("energy_unit_j", &ja.energy_unit_j)
+      .Read("rolling_energy_j_per_m", &ja.energy.rolling_j_per_m)
+      .Read("hover_power_w", &ja.energy.hover_power_w)
+      .Read("flight_speed_mps", &ja.energy.flight_speed_mps);
+  jump.Check(ja.alpha >= 0 && ja.beta >= 0 && ja.alpha + ja.beta > 0, "alpha",
+             "alpha and beta must be >= 0 and not both 0");
+  jump.Check(ja.energy_unit_j > 0, "energy_unit_j", "must be > 0");
+  jump.Check(ja.energy.rolling_j_per_m > 0, "rolling_energy_j_per_m", "must be > 0");
+  jump.Check(ja.energy.hover_power_w > 0, "hover_power_w", "must be > 0");
+  jump.Check(ja.energy.flight_speed_mps > 0, "flight_speed_mps", "must be > 0");
+
+  ConfigReader exploration = section.Child("exploration");
+  config.exploration.Read(exploration);
+  ConfigReader trajectory = section.Child("trajectory");
+  config.trajectory.Read(trajectory);
+
+  section.Read("max_planning_time_ms", &config.max_planning_time_ms)
+      .Read("worker_threads", &config.worker_threads);
+  section.Check(config.max_planning_time_ms > 0, "max_planning_time_ms", "must be > 0");
+  section.Check(config.worker_threads >= 1 && config.worker_threads <= 64, "worker_threads",
+                "must be in 1..64");
+  ConfigReader mapping = section.Child("mapping");
+  config.mapping = ClientOptions::FromConfig(mapping, config.mapping);
+  return config;
+}
+
+}  // namespace semnav::planning

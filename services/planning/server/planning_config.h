@@ -1,0 +1,43 @@
+#pragma once
+
+#include "absl/status/statusor.h"
+#include "services/common/client/channel.h"
+#include "services/common/config/config_reader.h"
+#include "services/planning/core/grid_planner.h"
+#include "services/planning/core/jump_astar.h"
+#include "services/planning/server/exploration_config.h"
+
+namespace semnav::planning {
+
+// Settings of semnav-planning (YAML section "planning"); defaults are the
+// seed values.
+struct PlanningConfig {
+  // grid.occupied_percent: an OCCUPANCY cell at or above this blocks 2D
+  // planning (seed 003 eq. 9, p_th = 0.65).
+  int occupied_percent = 65;
+  // grid.unknown_is_free: unknown cells (255) count as free instead of blocked.
+  bool unknown_is_free = false;
+  // grid.max_low_probability_percent: seed 004 second-stage limit.
+  GridPlannerConfig grid_planner;
+  // jump_astar.{alpha, beta, energy_unit_j, rolling_energy_j_per_m,
+  // hover_power_w, flight_speed_mps}: seed 003 Table 1 and sec. 4.2.
+  JumpAStarOptions jump_astar;
+  // exploration.*: frontier, coverage-max, semantic frontier, EROI settings.
+  ExplorationConfig exploration;
+  // trajectory.*: smoothing and time-allocation limits.
+  TrajectoryConfig trajectory;
+  // max_planning_time_ms: cap on any one search, whatever the deadline.
+  int max_planning_time_ms = 5000;
+  // worker_threads: searches run on this many threads, off the gRPC threads.
+  int worker_threads = 2;
+  // mapping: how to reach the mapping service for live-map requests.
+  ClientOptions mapping = [] {
+    ClientOptions options;
+    options.address = "127.0.0.1:50051";  // deploy/local.yaml mapping port
+    return options;
+  }();
+
+  static absl::StatusOr<PlanningConfig> FromConfig(ConfigReader& section);
+};
+
+}  // namespace semnav::planning

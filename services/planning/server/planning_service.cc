@@ -1,0 +1,238 @@
+#include "services/planning/server/planning_service.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <grpcpp/client_context.h>
+
+#include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
+#include "services/common/status/grpc_status.h"
+#include "services/planning/core/plan_failure.h"
+#include "services/planning/server/grid_conversion.h"
+#include "services/planning/server/exploration_rpc.h"
+#include "services/planning/server/plan_response.h"
+#include "services/planning/server/trajectory_rpc.h"
+
+namespace semnav::planning {
+namespace {
+
+namespace pb = semnav::planning::v1;
+using semnav::common::v1::GridMap;
+
+absl::Status Invalid(absl::string_view field, absl::string_view message) {
+  return FieldError(absl::StatusCode::kInvalidArgument, field, message);
+}
+
+bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
+
+// The earliest of the call deadline, the request budget and the config cap.
+absl::Time SearchDeadline(const grpc::CallbackServerContext& context, uint32_t request_ms,
+                          int config_ms) {
+  absl::Time deadline = absl::Now() + absl::Milliseconds(config_ms);
+  if (request_ms > 0) deadline = std::min(deadline, absl::Now() + absl::Milliseconds(request_ms));
+  const auto call = context.deadline();
+  if (call != std::chrono::system_clock::time_point::max()) {
+    deadline = std::min(deadline, absl::FromChrono(call));
+  }
+  return deadline;
+}
+
+absl::Status CheckRequest(const pb::PlanPathRequest& request) {
+  if (!NonNegative(request.robot_radius_m())) {
+    return Invalid("robot_radius_m", "robot_radius_m must be a finite value >= 0");
+  }
+  if (!NonNegative(request.goal_tolerance_m())) {
+    return Invalid("goal_tolerance_m", "goal_tolerance_m must be a finite value >= 0");
+  }
+  if (request.allow_alternative_point() && !request.has_first_sighting()) {
+    return Invalid("first_sighting", "first_sighting is required when allow_alternative_point");
+  }
+  const pb::MultiModalOptions& mm = request.multimodal();
+  if (mm.has_alpha() && !NonNegative(mm.alpha())) {
+    return Invalid("multimodal.alpha", "alpha must be a finite value >= 0");
+  }
+  if (mm.has_beta() && !NonNegative(mm.beta())) {
+    return Invalid("multimodal.beta", "beta must be a finite value >= 0");
+  }
+  return absl::OkStatus();
+}
+
+absl::Status FetchLiveGrid(semnav::mapping::v1::MappingService::Stub& mapping,
+                           grpc::CallbackServerContext* context, const pb::LiveMapGrid& live,
+                           GridMap* grid) {
+  semnav::mapping::v1::GetGridMapRequest fetch;
+  if (live.has_window_min() || live.has_window_max()) {
+    fetch.mutable_window()->mutable_min()->set_x(live.window_min().x());
+    fetch.mutable_window()->mutable_min()->set_y(live.window_min().y());
+    fetch.mutable_window()->mutable_max()->set_x(live.window_max().x());
+    fetch.mutable_window()->mutable_max()->set_y(live.window_max().y());
+  }
+  grpc::ClientContext call;
+  call.set_deadline(context->deadline());
+  semnav::mapping::v1::GetGridMapResponse reply;
+  const grpc::Status status = mapping.GetGridMap(&call, fetch, &reply);
+  if (!status.ok()) {
+    const absl::Status mapped = FromGrpcStatus(status);
+    const absl::StatusCode code = mapped.code() == absl::StatusCode::kInvalidArgument
+                                      ? absl::StatusCode::kInvalidArgument
+                                      : absl::StatusCode::kUnavailable;
+    return FieldError(code, "source.live_map",
+                      absl::StrCat("mapping service GetGridMap failed: ", status.error_message()),
+                      "MAPPING_UNAVAILABLE");
+  }
+  *grid = std::move(*reply.mutable_grid());
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+PlanningServiceImpl::PlanningServiceImpl(PlanningConfig config,
+                                         std::shared_ptr<grpc::Channel> mapping)
+    : config_(std::move(config)),
+      mapping_(semnav::mapping::v1::MappingService::NewStub(std::move(mapping))),
+      workers_(config_.worker_threads) {}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::Serve(grpc::CallbackServerContext* context,
+                                                     std::function<absl::Status()> fn) {
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  workers_.Post([reactor, fn = std::move(fn)] { reactor->Finish(ToGrpcStatus(fn())); });
+  return reactor;
+}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::PlanPath(grpc::CallbackServerContext* context,
+                                                        const pb::PlanPathRequest* request,
+                                                        pb::PlanPathResponse* response) {
+  return Serve(context, [=, this] { return Plan(context, *request, response); });
+}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::ServeOnGrid(
+    grpc::CallbackServerContext* context, const pb::GridSource& source,
+    std::function<absl::Status(const GridMap&, const std::string&)> fn) {
+  return Serve(context, [=, this]() -> absl::Status {
+    GridMap fetched;
+    std::string field;
+    absl::StatusOr<const GridMap*> grid = ResolveGrid(context, source, &fetched, &field);
+    if (!grid.ok()) return grid.status();
+    return fn(**grid, field);
+  });
+}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::ExtractFrontiers(
+    grpc::CallbackServerContext* context, const pb::ExtractFrontiersRequest* request,
+    pb::ExtractFrontiersResponse* response) {
+  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
+                                                           const std::string& field) {
+    return ExtractFrontiersOn(grid, field, *request, config_, response);
+  });
+}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::SelectExplorationGoal(
+    grpc::CallbackServerContext* context, const pb::SelectExplorationGoalRequest* request,
+    pb::SelectExplorationGoalResponse* response) {
+  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
+                                                           const std::string& field) {
+    return SelectGoalOn(grid, field, *request, config_, response);
+  });
+}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::SmoothTrajectory(
+    grpc::CallbackServerContext* context, const pb::SmoothTrajectoryRequest* request,
+    pb::SmoothTrajectoryResponse* response) {
+  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
+                                                           const std::string& field) {
+    return SmoothTrajectoryOn(grid, field, *request, config_.trajectory,
+                              config_.occupied_percent, response);
+  });
+}
+
+absl::StatusOr<const GridMap*> PlanningServiceImpl::ResolveGrid(
+    grpc::CallbackServerContext* context, const pb::GridSource& source, GridMap* fetched,
+    std::string* field) {
+  switch (source.source_case()) {
+    case pb::GridSource::kGrid:
+      *field = "source.grid";
+      return &source.grid();
+    case pb::GridSource::kLiveMap:
+      *field = "source.live_map";
+      if (absl::Status s = FetchLiveGrid(*mapping_, context, source.live_map(), fetched); !s.ok()) {
+        return s;
+      }
+      return fetched;
+    default:
+      return Invalid("source", "set source.grid (inline) or source.live_map");
+  }
+}
+
+absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
+                                       const pb::PlanPathRequest& request,
+                                       pb::PlanPathResponse* response) {
+  if (absl::Status s = CheckRequest(request); !s.ok()) return s;
+  const absl::Time started = absl::Now();
+  GridMap fetched;
+  std::string grid_field;
+  absl::StatusOr<const GridMap*> resolved =
+      ResolveGrid(context, request.source(), &fetched, &grid_field);
+  if (!resolved.ok()) return resolved.status();
+  const GridMap& map = **resolved;
+  absl::StatusOr<GridFrame> frame = ReadGridFrame(map, grid_field);
+  if (!frame.ok()) return frame.status();
+  absl::StatusOr<Cell> start = frame->ToCell(request.start(), "start");
+  if (!start.ok()) return start.status();
+  absl::StatusOr<Cell> goal = frame->ToCell(request.goal(), "goal");
+  if (!goal.ok()) return goal.status();
+
+  SearchLimits limits;
+  limits.deadline =
+      SearchDeadline(*context, request.max_planning_time_ms(), config_.max_planning_time_ms);
+  limits.is_cancelled = [context] { return context->IsCancelled(); };
+
+  absl::Status failure;
+  if (request.planner() == pb::PLANNER_KIND_JUMP_ASTAR) {
+    absl::StatusOr<LayeredGrid> grid = ToLayeredGrid(map, config_.unknown_is_free, grid_field);
+    if (!grid.ok()) return grid.status();
+    JumpAStarOptions options = config_.jump_astar;
+    options.resolution_m = frame->resolution;
+    if (request.multimodal().has_alpha()) options.alpha = request.multimodal().alpha();
+    if (request.multimodal().has_beta()) options.beta = request.multimodal().beta();
+    if (options.alpha + options.beta <= 0.0) {
+      return Invalid("multimodal.alpha", "alpha and beta must not both be 0");
+    }
+    JumpAStarPlanner planner;
+    absl::StatusOr<MultiModalPath> path = planner.Plan(*grid, *start, *goal, options, limits);
+    if (path.ok()) FillResponse(*frame, *path, response);
+    failure = path.status();
+  } else {
+    absl::StatusOr<PassabilityGrid> free =
+        ToPassability(map, {config_.occupied_percent, config_.unknown_is_free}, grid_field);
+    if (!free.ok()) return free.status();
+    GridPlanRequest plan;
+    plan.free = *std::move(free);
+    plan.obstacle_probability = ToObstacleProbability(map);
+    plan.resolution_m = frame->resolution;
+    plan.start = *start;
+    plan.goal = *goal;
+    plan.robot_radius_m = request.robot_radius_m();
+    plan.goal_tolerance_m = request.goal_tolerance_m();
+    if (request.allow_alternative_point()) {
+      absl::StatusOr<Cell> sighting = frame->ToCell(request.first_sighting(), "first_sighting");
+      if (!sighting.ok()) return sighting.status();
+      plan.first_sighting = *sighting;
+    }
+    plan.use_jps = request.planner() != pb::PLANNER_KIND_ASTAR;
+    plan.limits = limits;
+    GridPlanner planner(config_.grid_planner);
+    absl::StatusOr<GridPlanResult> result = planner.Plan(plan);
+    if (result.ok()) FillResponse(*frame, *result, response);
+    failure = result.status();
+  }
+  if (!failure.ok()) {
+    AttachPlanFailure(failure, *start, *goal);
+    return failure;
+  }
+  response->set_planning_time_ms(absl::ToDoubleMilliseconds(absl::Now() - started));
+  response->set_map_revision(map.revision());
+  return absl::OkStatus();
+}
+
+}  // namespace semnav::planning

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <grpcpp/channel.h>
+
+#include "absl/status/status.h"
+#include "semnav/mapping/v1/mapping_service.grpc.pb.h"
+#include "semnav/planning/v1/planning_service.grpc.pb.h"
+#include "services/planning/server/planning_config.h"
+#include "services/planning/server/work_queue.h"
+
+namespace semnav::planning {
+
+// gRPC adapter of semnav.planning.v1.PlanningService (callback API): turns
+// requests into core planner calls on a worker pool, honours the call
+// deadline and cancellation, and returns typed PlanFailureDetail errors.
+class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::CallbackService {
+ public:
+  // `mapping` is the channel to the mapping service for live-map requests.
+  PlanningServiceImpl(PlanningConfig config, std::shared_ptr<grpc::Channel> mapping);
+
+  grpc::ServerUnaryReactor* PlanPath(grpc::CallbackServerContext* context,
+                                     const semnav::planning::v1::PlanPathRequest* request,
+                                     semnav::planning::v1::PlanPathResponse* response) override;
+
+  grpc::ServerUnaryReactor* ExtractFrontiers(
+      grpc::CallbackServerContext* context,
+      const semnav::planning::v1::ExtractFrontiersRequest* request,
+      semnav::planning::v1::ExtractFrontiersResponse* response) override;
+
+  grpc::ServerUnaryReactor* SelectExplorationGoal(
+      grpc::CallbackServerContext* context,
+      const semnav::planning::v1::SelectExplorationGoalRequest* request,
+      semnav::planning::v1::SelectExplorationGoalResponse* response) override;
+
+  grpc::ServerUnaryReactor* SmoothTrajectory(
+      grpc::CallbackServerContext* context,
+      const semnav::planning::v1::SmoothTrajectoryRequest* request,
+      semnav::planning::v1::SmoothTrajectoryResponse* response) override;
+
+  // Finishes queued searches and stops the workers.
+  void Shutdown() { workers_.Stop(); }
+
+ private:
+  absl::Status Plan(grpc::CallbackServerContext* context,
+                    const semnav::planning::v1::PlanPathRequest& request,
+                    semnav::planning::v1::PlanPathResponse* response);
+  // Runs fn() on a worker and finishes the call with its status.
+  grpc::ServerUnaryReactor* Serve(grpc::CallbackServerContext* context,
+                                  std::function<absl::Status()> fn);
+  // Serve() for requests with a GridSource: fn gets the resolved grid and
+  // its field name.
+  grpc::ServerUnaryReactor* ServeOnGrid(
+      grpc::CallbackServerContext* context, const semnav::planning::v1::GridSource& source,
+      std::function<absl::Status(const semnav::common::v1::GridMap&, const std::string&)> fn);
+  // The request's grid: the inline one, or the live map fetched into
+  // *fetched; *field names it for errors ("source.grid" / "source.live_map").
+  absl::StatusOr<const semnav::common::v1::GridMap*> ResolveGrid(
+      grpc::CallbackServerContext* context, const semnav::planning::v1::GridSource& source,
+      semnav::common::v1::GridMap* fetched, std::string* field);
+
+  const PlanningConfig config_;
+  std::unique_ptr<semnav::mapping::v1::MappingService::Stub> mapping_;
+  WorkQueue workers_;
+};
+
+}  // namespace semnav::planning

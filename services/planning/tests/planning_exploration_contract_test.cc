@@ -1,0 +1,187 @@
+// Contract test of the exploration and trajectory RPCs of the real
+// semnav-planning binary.
+#include <gtest/gtest.h>
+
+#include <grpcpp/client_context.h>
+
+#include <string>
+#include <vector>
+
+#include "semnav/common/v1/errors.pb.h"
+#include "semnav/planning/v1/planning_service.grpc.pb.h"
+#include "services/common/status/grpc_status.h"
+#include "services/planning/tests/planning_binary_test.h"
+
+namespace semnav::planning {
+namespace {
+
+namespace pb = semnav::planning::v1;
+using semnav::common::v1::GridMap;
+using semnav::common::v1::Pose2D;
+
+// 1 m cells, origin (-1, -2), row 0 lowest: '.' explored free, '#' explored
+// structure, '?' unexplored.
+const std::vector<std::string> kRows = {
+    "......??",
+    "......??",
+    "..##..??",
+    "........",
+    "???.....",
+};
+
+GridMap ExplorationGrid() {
+  GridMap grid;
+  grid.set_resolution(1.0);
+  grid.mutable_origin()->set_x(-1.0);
+  grid.mutable_origin()->set_y(-2.0);
+  grid.set_width(8);
+  grid.set_height(5);
+  std::string hierarchical;
+  std::string explored;
+  for (const std::string& row : kRows) {
+    for (char c : row) {
+      hierarchical.push_back(static_cast<char>(c == '.' ? 0 : c == '#' ? 100 : 255));
+      explored.push_back(static_cast<char>(c == '?' ? 0 : 1));
+    }
+  }
+  auto* h = grid.add_layers();
+  h->set_kind(semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL);
+  h->set_data(hierarchical);
+  auto* e = grid.add_layers();
+  e->set_kind(semnav::common::v1::GRID_LAYER_KIND_EXPLORED);
+  e->set_data(explored);
+  return grid;
+}
+
+Pose2D CellCentre(int col, int row) {
+  Pose2D p;
+  p.set_x(-1.0 + col + 0.5);
+  p.set_y(-2.0 + row + 0.5);
+  return p;
+}
+
+using ExplorationContract = PlanningBinaryTest;
+
+pb::SelectExplorationGoalRequest GoalRequest(pb::ExplorationStrategy strategy) {
+  pb::SelectExplorationGoalRequest request;
+  *request.mutable_source()->mutable_grid() = ExplorationGrid();
+  *request.mutable_robot() = CellCentre(0, 0);
+  request.set_strategy(strategy);
+  request.set_min_frontier_cells(1);
+  return request;
+}
+
+TEST_F(ExplorationContract, ExtractFrontiersClustersAndScores) {
+  pb::ExtractFrontiersRequest request;
+  *request.mutable_source()->mutable_grid() = ExplorationGrid();
+  *request.mutable_robot() = CellCentre(0, 0);
+  request.set_min_cells(1);
+  pb::ExtractFrontiersResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->ExtractFrontiers(&context, request, &response).ok());
+  ASSERT_EQ(response.frontiers_size(), 2);
+  // Right cluster: (5,0) (5,1) (5,2) (6,3) (7,3); path from (0,0) to (5,0) is 5 m.
+  EXPECT_EQ(response.frontiers(0).size_cells(), 5u);
+  EXPECT_DOUBLE_EQ(response.frontiers(0).path_distance_m(), 5.0);
+  EXPECT_DOUBLE_EQ(response.frontiers(0).anchor().x(), CellCentre(5, 2).x());
+  // Left cluster: (0,3) (1,3) (2,3) (3,4); 3 m away.
+  EXPECT_EQ(response.frontiers(1).size_cells(), 4u);
+  EXPECT_DOUBLE_EQ(response.frontiers(1).path_distance_m(), 3.0);
+  EXPECT_DOUBLE_EQ(response.frontiers(1).score().distance(), 1.0 - 3.0 / 5.0);
+  EXPECT_DOUBLE_EQ(response.frontiers(1).score().novelty(), 1.0);
+}
+
+TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(
+      &context, GoalRequest(pb::EXPLORATION_STRATEGY_UNSPECIFIED), &response).ok());
+  EXPECT_EQ(response.strategy(), pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(0, 3).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(0, 3).y());
+  EXPECT_DOUBLE_EQ(response.score(), 3.0);
+}
+
+TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
+  pb::SemanticObject* sofa = request.mutable_semantics()->add_objects();
+  sofa->set_label("sofa");
+  sofa->mutable_position()->set_x(6.0);
+  sofa->mutable_position()->set_y(-1.5);
+  sofa->set_relevance(1.0);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 2).x());  // the right cluster's anchor
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 2).y());
+}
+
+TEST_F(ExplorationContract, CoverageMaxGoesToTheBoundaryAhead) {
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_COVERAGE_MAX);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
+  // Heading +x from (0,0): sqrt2 * 8 / 2 = 5.66 cells ahead -> (6,0).
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(6, 0).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(6, 0).y());
+}
+
+TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
+  // From (5,3) the roadmap (edges <= 3 m) reaches the viewpoints of the
+  // partly explored EROIs on the right.
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY);
+  *request.mutable_robot() = CellCentre(5, 3);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  const grpc::Status ok = Stub()->SelectExplorationGoal(&context, request, &response);
+  ASSERT_TRUE(ok.ok()) << ok.error_message();
+  EXPECT_GT(response.score(), 0.0);
+  ASSERT_GE(response.route_size(), 2);
+  EXPECT_DOUBLE_EQ(response.route(0).x(), CellCentre(5, 3).x());
+  EXPECT_DOUBLE_EQ(response.route(0).y(), CellCentre(5, 3).y());
+
+  // From (0,0) no viewpoint lies within the roadmap's 3 m edges: NOT_FOUND.
+  grpc::ClientContext far_context;
+  EXPECT_EQ(Stub()->SelectExplorationGoal(&far_context,
+                                          GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY),
+                                          &response).error_code(),
+            grpc::StatusCode::NOT_FOUND);
+
+  pb::SelectExplorationGoalRequest bad = GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY);
+  bad.add_eroi_semantic_values(0.5);  // the grid has 4 x 3 EROIs of 2 m
+  grpc::ClientContext bad_context;
+  const grpc::Status status = Stub()->SelectExplorationGoal(&bad_context, bad, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(status);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "eroi_semantic_values");
+}
+
+TEST_F(ExplorationContract, SmoothTrajectoryRespectsTheLimits) {
+  pb::SmoothTrajectoryRequest request;
+  *request.mutable_source()->mutable_grid() = ExplorationGrid();
+  for (auto [c, r] : {std::pair{0, 0}, std::pair{4, 0}, std::pair{4, 3}}) {
+    *request.add_path() = CellCentre(c, r);
+  }
+  pb::SmoothTrajectoryResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SmoothTrajectory(&context, request, &response).ok());
+  ASSERT_GT(response.points_size(), 10);
+  EXPECT_DOUBLE_EQ(response.points(0).pose().x(), CellCentre(0, 0).x());
+  EXPECT_DOUBLE_EQ(response.points(response.points_size() - 1).pose().y(), CellCentre(4, 3).y());
+  EXPECT_DOUBLE_EQ(response.points(0).speed_mps(), 0.0);
+  EXPECT_GT(response.duration_s(), 7.0);  // more than 7 m of path at <= 1 m/s
+  for (const pb::TrajectoryPoint& p : response.points()) EXPECT_LE(p.speed_mps(), 1.0 + 1e-12);
+
+  pb::SmoothTrajectoryRequest blocked = request;
+  *blocked.mutable_path(1) = CellCentre(2, 2);  // structure
+  grpc::ClientContext bad_context;
+  const grpc::Status status = Stub()->SmoothTrajectory(&bad_context, blocked, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(status);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "path[1]");
+}
+
+}  // namespace
+}  // namespace semnav::planning

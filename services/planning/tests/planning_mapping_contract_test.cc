@@ -1,0 +1,120 @@
+// Contract test across two real binaries: semnav-mapping builds a map from
+// rendered frames; semnav-planning fetches it by live_map and plans on it.
+#include <gtest/gtest.h>
+
+#include <grpcpp/client_context.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "semnav/mapping/v1/mapping_service.grpc.pb.h"
+#include "semnav/planning/v1/planning_service.grpc.pb.h"
+#include "services/mapping/testing/frame_proto.h"
+#include "services/mapping/testing/synthetic_room.h"
+#include "tests/support/service_process.h"
+
+namespace semnav::planning {
+namespace {
+
+namespace mpb = semnav::mapping::v1;
+namespace pb = semnav::planning::v1;
+using semnav::common::v1::GridMap;
+
+// Centre of the free HIERARCHICAL cell nearest (x, y), if any.
+std::optional<semnav::common::v1::Pose2D> FreeCellNear(const GridMap& grid, double x, double y) {
+  const std::string* layer = nullptr;
+  for (const auto& l : grid.layers()) {
+    if (l.kind() == semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL) layer = &l.data();
+  }
+  if (layer == nullptr) return std::nullopt;
+  std::optional<semnav::common::v1::Pose2D> best;
+  double best_d = 0.0;
+  for (uint32_t r = 0; r < grid.height(); ++r) {
+    for (uint32_t c = 0; c < grid.width(); ++c) {
+      if ((*layer)[r * grid.width() + c] != 0) continue;
+      semnav::common::v1::Pose2D pose;
+      pose.set_x(grid.origin().x() + (c + 0.5) * grid.resolution());
+      pose.set_y(grid.origin().y() + (r + 0.5) * grid.resolution());
+      const double d = std::hypot(pose.x() - x, pose.y() - y);
+      if (!best || d < best_d) {
+        best = pose;
+        best_d = d;
+      }
+    }
+  }
+  return best;
+}
+
+TEST(PlanningWithMapping, LiveMapPlanEqualsInlinePlanOnTheSameGrid) {
+  const std::string dir = ::testing::TempDir() + "/planning_mapping_contract";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/store\n";
+  absl::StatusOr<std::unique_ptr<testing::ServiceProcess>> mapping =
+      testing::ServiceProcess::Start("semnav-mapping", {"--config", dir + "/mapping.yaml"});
+  ASSERT_TRUE(mapping.ok()) << mapping.status();
+
+  // Map the standard synthetic room from a short tour.
+  auto mapping_stub = mpb::MappingService::NewStub((*mapping)->channel());
+  {
+    grpc::ClientContext context;
+    auto stream = mapping_stub->StreamFrames(&context);
+    const mapping::testing::SyntheticRoom room = mapping::testing::StandardRoom();
+    int64_t stamp = 1'000'000'000;
+    for (const mapping::CameraPose& pose : mapping::testing::RoomTour(room, 6)) {
+      mpb::StreamFramesRequest request;
+      *request.mutable_frame() =
+          mapping::testing::FrameToProto(mapping::testing::RenderFrame(room, pose, stamp));
+      request.mutable_frame()->mutable_header()->set_robot_id("robot-1");
+      stamp += 100'000'000;
+      ASSERT_TRUE(stream->Write(request));
+      mpb::StreamFramesResponse response;
+      ASSERT_TRUE(stream->Read(&response));
+    }
+    stream->WritesDone();
+    ASSERT_TRUE(stream->Finish().ok());
+  }
+  mpb::GetGridMapResponse grid;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(mapping_stub->GetGridMap(&context, {}, &grid).ok());
+  }
+  ASSERT_GT(grid.grid().revision(), 0u);
+
+  std::ofstream(dir + "/planning.yaml")
+      << "planning:\n  mapping:\n    address: " << (*mapping)->address() << "\n";
+  absl::StatusOr<std::unique_ptr<testing::ServiceProcess>> planning =
+      testing::ServiceProcess::Start("semnav-planning", {"--config", dir + "/planning.yaml"});
+  ASSERT_TRUE(planning.ok()) << planning.status();
+  auto stub = pb::PlanningService::NewStub((*planning)->channel());
+
+  // Across the room, past the table-height box at x 3.0-3.6, y 1.0-1.6.
+  std::optional<semnav::common::v1::Pose2D> start = FreeCellNear(grid.grid(), 1.5, 1.3);
+  std::optional<semnav::common::v1::Pose2D> goal = FreeCellNear(grid.grid(), 4.3, 1.3);
+  ASSERT_TRUE(start && goal);
+  pb::PlanPathRequest live;
+  live.mutable_source()->mutable_live_map();
+  *live.mutable_start() = *start;
+  *live.mutable_goal() = *goal;
+  pb::PlanPathRequest inline_grid = live;
+  *inline_grid.mutable_source()->mutable_grid() = grid.grid();
+
+  pb::PlanPathResponse from_live;
+  pb::PlanPathResponse from_inline;
+  grpc::ClientContext c1;
+  const grpc::Status live_status = stub->PlanPath(&c1, live, &from_live);
+  ASSERT_TRUE(live_status.ok()) << live_status.error_message();
+  grpc::ClientContext c2;
+  ASSERT_TRUE(stub->PlanPath(&c2, inline_grid, &from_inline).ok());
+  EXPECT_EQ(from_live.map_revision(), grid.grid().revision());
+  EXPECT_DOUBLE_EQ(from_live.length_m(), from_inline.length_m());
+  EXPECT_EQ(from_live.path_size(), from_inline.path_size());
+  // The table box lies on the straight line, so the path detours round it.
+  const double straight = std::hypot(goal->x() - start->x(), goal->y() - start->y());
+  EXPECT_GT(from_live.length_m(), straight + 0.1) << "straight " << straight;
+}
+
+}  // namespace
+}  // namespace semnav::planning

@@ -1,0 +1,50 @@
+#include "services/relocalization/server/service_config.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace semnav::relocalization {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(RelocServiceConfigTest, EmptySectionKeepsTheSeedDefaults) {
+  ConfigReader empty = ConfigReader::Empty();
+  const auto c = ServiceConfig::FromYaml(empty);
+  ASSERT_TRUE(c.ok()) << c.status();
+  EXPECT_TRUE(c->storage_dir.empty());
+  EXPECT_EQ(c->object_points.nms_kernel, 1);
+  EXPECT_EQ(c->relocalization.match.early_stop_matches, 6u);
+  EXPECT_DOUBLE_EQ(c->relocalization.match.similarity.alpha, 0.4);
+  EXPECT_DOUBLE_EQ(c->relocalization.pose.outlier_distance_m, 0.2);
+  EXPECT_TRUE(c->detector.model_path.empty());
+}
+
+TEST(RelocServiceConfigTest, ReadsNestedSections) {
+  auto r = ConfigReader::FromString(
+      "storage_dir: /tmp/maps\n"
+      "matching: {early_stop_matches: 8, alpha: 0.5}\n"
+      "detector: {model_path: m.onnx, mean_rgb: [1, 2, 3]}\n"
+      "reliability: {rotation_deg: 4}\n");
+  ASSERT_TRUE(r.ok());
+  const auto c = ServiceConfig::FromYaml(*r);
+  ASSERT_TRUE(c.ok()) << c.status();
+  EXPECT_EQ(c->storage_dir, "/tmp/maps");
+  EXPECT_EQ(c->relocalization.match.early_stop_matches, 8u);
+  EXPECT_DOUBLE_EQ(c->relocalization.match.similarity.alpha, 0.5);
+  EXPECT_EQ(c->detector.model_path, "m.onnx");
+  EXPECT_DOUBLE_EQ(c->detector.mean_b, 3.0);
+  EXPECT_DOUBLE_EQ(c->relocalization.reliable_rotation_deg, 4.0);
+}
+
+TEST(RelocServiceConfigTest, BadValuesAndUnknownKeysNameTheKey) {
+  auto r = ConfigReader::FromString("pose: {min_inliers: 2}\nmatching: {bogus: 1}\n");
+  ASSERT_TRUE(r.ok());
+  const auto c = ServiceConfig::FromYaml(*r);
+  EXPECT_EQ(c.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(c.status().message(), HasSubstr("pose.min_inliers"));
+  EXPECT_THAT(c.status().message(), HasSubstr("matching.bogus"));
+}
+
+}  // namespace
+}  // namespace semnav::relocalization
