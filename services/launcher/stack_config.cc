@@ -1,11 +1,31 @@
 #include "services/launcher/stack_config.h"
 
+#include <unistd.h>
+
 #include <filesystem>
+#include <fstream>
+
+#include "absl/strings/str_cat.h"
 
 #include "services/common/config/config_reader.h"
 
 namespace semnav::launcher {
 namespace {
+
+// Writes a service's inline settings where its binary can read them as a config file.
+absl::StatusOr<std::string> WriteSettings(const std::string& name, const std::string& yaml) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / absl::StrCat("semnav-stack-", ::getpid());
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  const std::filesystem::path path = dir / (name + ".yaml");
+  std::ofstream out(path);
+  out << yaml << "\n";
+  if (error || !out) {
+    return absl::InternalError(absl::StrCat("services.", name, ".settings: cannot write ", path.string()));
+  }
+  return path.string();
+}
 
 absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem::path& base) {
   StackConfig stack;
@@ -17,11 +37,20 @@ absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem
   for (const std::string& name : services.Keys()) {
     ConfigReader entry = services.Child(name);
     StackService service{.name = name, .binary = "", .listen = "", .config = ""};
+    std::string settings;
     entry.Read("binary", &service.binary).Read("listen", &service.listen).Read("config", &service.config);
+    entry.ReadSubtree("settings", &settings);
+    entry.Check(service.config.empty() || settings.empty(), "settings",
+                "give a config file or inline settings, not both");
     entry.Check(!service.binary.empty(), "binary", "is required");
     entry.Check(!service.listen.empty(), "listen", "is required (host:port)");
     if (!service.config.empty() && std::filesystem::path(service.config).is_relative()) {
       service.config = (base / service.config).lexically_normal().string();
+    }
+    if (!settings.empty() && service.config.empty()) {
+      absl::StatusOr<std::string> path = WriteSettings(name, settings);
+      if (!path.ok()) return path.status();
+      service.config = *path;
     }
     stack.services.push_back(service);
   }

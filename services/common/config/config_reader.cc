@@ -70,6 +70,15 @@ std::string ConfigReader::Dump(const YAML::Node& node) {
   return out.c_str();
 }
 
+ConfigReader& ConfigReader::ReadSubtree(absl::string_view key, std::string* yaml) {
+  std::optional<YAML::Node> node = Take(key);
+  if (!node) return *this;
+  YAML::Emitter out;
+  out << *node;
+  *yaml = out.c_str();
+  return *this;
+}
+
 ConfigReader ConfigReader::Child(absl::string_view key) {
   std::optional<YAML::Node> child = Take(key);
   return ConfigReader(child ? *child : YAML::Node(YAML::NodeType::Map), KeyPath(key), shared_);

@@ -37,6 +37,10 @@ class ConfigReader {
     return *this;
   }
 
+  // The subtree under `key` as YAML text, unchecked (for settings handed on to another
+  // program, which checks them itself); `*yaml` is left alone when the key is absent.
+  ConfigReader& ReadSubtree(absl::string_view key, std::string* yaml);
+
   // The mapping under `key` (an empty one when absent); errors go to the same Finish().
   ConfigReader Child(absl::string_view key);
   // The mappings of the sequence under `key`, paths "key[0]", "key[1]", ...

@@ -64,6 +64,21 @@ TEST(ConfigReaderTest, ItemsAndKeysGivePathsForLists) {
   EXPECT_THAT(reader->Finish().message(), HasSubstr("backends[1].bogus: unknown key"));
 }
 
+TEST(ConfigReaderTest, SubtreeIsHandedOnAsYamlWithoutKeyChecks) {
+  auto reader = ConfigReader::FromString("settings: {gateway: {mapping: {address: 'h:1'}}}\n");
+  ASSERT_TRUE(reader.ok());
+  std::string yaml = "untouched";
+  std::string absent = "untouched";
+  reader->ReadSubtree("settings", &yaml).ReadSubtree("absent", &absent);
+  EXPECT_TRUE(reader->Finish().ok()) << reader->Finish();
+  EXPECT_EQ(absent, "untouched");
+  auto again = ConfigReader::FromString(yaml);
+  ASSERT_TRUE(again.ok());
+  std::string address;
+  again->Child("gateway").Child("mapping").Read("address", &address);
+  EXPECT_EQ(address, "h:1");
+}
+
 TEST(ConfigReaderTest, MissingFileIsNotFoundAndBadYamlIsInvalid) {
   EXPECT_EQ(ConfigReader::FromFile("/nonexistent/semnav.yaml").status().code(),
             absl::StatusCode::kNotFound);

@@ -6,7 +6,7 @@
 
 #include "semnav/modelproxy/v1/modelproxy.grpc.pb.h"
 #include "services/modelproxy/core/model_proxy.h"
-#include "services/modelproxy/server/worker_pool.h"
+#include "services/common/server/worker_pool.h"
 
 namespace semnav::modelproxy {
 

@@ -96,7 +96,9 @@ PlanningServiceImpl::PlanningServiceImpl(PlanningConfig config,
 grpc::ServerUnaryReactor* PlanningServiceImpl::Serve(grpc::CallbackServerContext* context,
                                                      std::function<absl::Status()> fn) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  workers_.Post([reactor, fn = std::move(fn)] { reactor->Finish(ToGrpcStatus(fn())); });
+  if (!workers_.Submit([reactor, fn = std::move(fn)] { reactor->Finish(ToGrpcStatus(fn())); })) {
+    reactor->Finish(grpc::Status(grpc::StatusCode::UNAVAILABLE, "planning is shutting down"));
+  }
   return reactor;
 }
 

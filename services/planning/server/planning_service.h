@@ -10,7 +10,7 @@
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/planning/server/planning_config.h"
-#include "services/planning/server/work_queue.h"
+#include "services/common/server/worker_pool.h"
 
 namespace semnav::planning {
 
@@ -42,7 +42,7 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
       semnav::planning::v1::SmoothTrajectoryResponse* response) override;
 
   // Finishes queued searches and stops the workers.
-  void Shutdown() { workers_.Stop(); }
+  void Shutdown() { workers_.Shutdown(); }
 
  private:
   absl::Status Plan(grpc::CallbackServerContext* context,
@@ -64,7 +64,7 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
 
   const PlanningConfig config_;
   std::unique_ptr<semnav::mapping::v1::MappingService::Stub> mapping_;
-  WorkQueue workers_;
+  semnav::WorkerPool workers_;
 };
 
 }  // namespace semnav::planning

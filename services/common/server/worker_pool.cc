@@ -1,6 +1,6 @@
-#include "services/modelproxy/server/worker_pool.h"
+#include "services/common/server/worker_pool.h"
 
-namespace semnav::modelproxy {
+namespace semnav {
 
 WorkerPool::WorkerPool(int threads) {
   for (int i = 0; i < threads; ++i) threads_.emplace_back([this] { Run(); });
@@ -42,4 +42,4 @@ void WorkerPool::Run() {
   }
 }
 
-}  // namespace semnav::modelproxy
+}  // namespace semnav

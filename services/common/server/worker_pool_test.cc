@@ -1,13 +1,13 @@
-#include "services/modelproxy/server/worker_pool.h"
+#include "services/common/server/worker_pool.h"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
 
-namespace semnav::modelproxy {
+namespace semnav {
 namespace {
 
-TEST(ModelProxyWorkerPoolTest, RunsQueuedJobsBeforeStoppingAndRefusesNewOnes) {
+TEST(WorkerPoolTest, RunsQueuedJobsBeforeStoppingAndRefusesNewOnes) {
   std::atomic<int> done{0};
   WorkerPool pool(2);
   for (int i = 0; i < 50; ++i) {
@@ -23,4 +23,4 @@ TEST(ModelProxyWorkerPoolTest, RunsQueuedJobsBeforeStoppingAndRefusesNewOnes) {
 }
 
 }  // namespace
-}  // namespace semnav::modelproxy
+}  // namespace semnav

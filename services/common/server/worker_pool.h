@@ -1,6 +1,6 @@
 #pragma once
-// Fixed threads running queued jobs. Model calls block on network I/O for seconds, so they run
-// here instead of on gRPC's callback threads.
+// Fixed threads running queued jobs, so long work (searches, model calls blocking on network
+// I/O) never holds gRPC's callback threads.
 #include <deque>
 #include <functional>
 #include <thread>
@@ -8,7 +8,7 @@
 
 #include "absl/synchronization/mutex.h"
 
-namespace semnav::modelproxy {
+namespace semnav {
 
 class WorkerPool {
  public:
@@ -31,4 +31,4 @@ class WorkerPool {
   std::vector<std::thread> threads_;
 };
 
-}  // namespace semnav::modelproxy
+}  // namespace semnav
