@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "services/common/cli/help.h"
 #include "services/mapping/bench/figures.h"
 #include "services/mapping/bench/grid_image.h"
 #include "services/mapping/core/climbing.h"
@@ -203,6 +204,11 @@ void MeasureAgreement() {
 }  // namespace semnav::mapping::bench
 
 int main(int argc, char** argv) {
+  if (semnav::HelpRequested(argc, argv)) {
+    std::printf("usage: semnav-bench-mapping [--json FILE] [--png FILE] [--benchmark_* flags]\n"
+                "Frame integration vs plain OctoMap, agreement, FR-079 grid, scene-graph update.\n");
+    return 0;
+  }
   using namespace semnav::mapping::bench;
   std::string json_path;
   std::vector<char*> args{argv[0]};

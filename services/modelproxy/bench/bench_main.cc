@@ -26,6 +26,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "nlohmann/json.hpp"
+#include "services/common/cli/help.h"
 #include "services/modelproxy/core/http_backend.h"
 #include "services/modelproxy/core/model_proxy.h"
 #include "services/modelproxy/core/openai_wire.h"
@@ -195,6 +196,12 @@ std::vector<double> MeasureFallback(const std::string& primary_url,
 }  // namespace
 
 int Main(int argc, char** argv) {
+  if (HelpRequested(argc, argv)) {
+    std::cout << kUsage
+              << "Proxy overhead per call beyond the backend's own time, throughput with concurrent\n"
+                 "callers, and fallback switch time, against a local OpenAI-format test server.\n";
+    return 0;
+  }
   const std::optional<Flags> parsed = ParseFlags(argc, argv);
   if (!parsed) return 2;
   const Flags& flags = *parsed;

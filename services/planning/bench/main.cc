@@ -10,11 +10,19 @@
 #include <string>
 
 #include "nlohmann/json.hpp"
+#include "services/common/cli/help.h"
 #include "services/planning/bench/movingai_suite.h"
 #include "services/planning/bench/multimodal_suite.h"
 #include "services/planning/bench/rrtstar_suite.h"
 
 int main(int argc, char** argv) {
+  if (semnav::HelpRequested(argc, argv)) {
+    std::printf("usage: %s [--json FILE] [--only movingai|multimodal|rrtstar] [--rrtstar_seconds S]"
+                " [--threads N] [--movingai_dir DIR]\n"
+                "A*/JPS on every Moving AI row, multi-modal Jump A* (seed 003 Table 2) and the OMPL"
+                " RRT* anchor.\n", argv[0]);
+    return 0;
+  }
   std::string json_path;
   std::string only;  // run one suite: movingai | multimodal | rrtstar
   double rrtstar_seconds = 3.0;

@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include "services/common/cli/help.h"
 #include "services/relocalization/bench/evaluation.h"
 #include "services/relocalization/core/hungarian.h"
 
@@ -114,6 +115,12 @@ void BM_Hungarian8x8(benchmark::State& state) {
 BENCHMARK(BM_Hungarian8x8);
 
 int Main(int argc, char** argv) {
+  if (HelpRequested(argc, argv)) {
+    std::cout << "usage: semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S]"
+                 " [--benchmark_* flags]\n"
+                 "Seed 001 relocalization vs the RANSAC + Umeyama baseline on seeded scenarios.\n";
+    return 0;
+  }
   const Options options = ParseOptions(&argc, argv);
   const RelocalizationParams params;
   const eval::BaselineParams baseline;
