@@ -1,0 +1,34 @@
+#ifndef SEMNAV_CLIENTS_SIM_CORE_GEOMETRY2D_H_
+#define SEMNAV_CLIENTS_SIM_CORE_GEOMETRY2D_H_
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "clients/sim/core/world.h"
+
+// Small 2D helpers on footprints (the xy plane).
+namespace semnav::sim {
+
+using Polygon2 = std::vector<Eigen::Vector2d>;
+
+bool PointInPolygon(const Polygon2& polygon, const Eigen::Vector2d& point);
+double PolygonArea(const Polygon2& polygon);  // absolute value
+// Distance from a point to the segment [a, b].
+double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b);
+// Distance from a point to the polygon boundary (0 on the edge, also inside).
+double DistanceToPolygonBoundary(const Polygon2& polygon, const Eigen::Vector2d& point);
+// Four footprint corners of a box, counter-clockwise.
+std::array<Eigen::Vector2d, 4> BoxCorners(const BoxShape& box);
+// Distance from a point to a box footprint (0 inside).
+double DistanceToBoxFootprint(const BoxShape& box, const Eigen::Vector2d& point);
+// True if two box footprints, each grown by `clearance` on every side, overlap (separating
+// axis test on the four edge normals).
+bool FootprintsOverlap(const BoxShape& a, const BoxShape& b, double clearance);
+// Axis-aligned bounds of a shape footprint: (min, max).
+std::pair<Eigen::Vector2d, Eigen::Vector2d> FootprintBounds(const Shape& shape);
+
+}  // namespace semnav::sim
+
+#endif  // SEMNAV_CLIENTS_SIM_CORE_GEOMETRY2D_H_

@@ -1,0 +1,96 @@
+#include "clients/sim/core/world_yaml.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace semnav::sim {
+namespace {
+
+constexpr char kWorld[] = R"(
+name: tiny
+bounds: {min: [0, 0], max: [6, 4]}
+ceiling_height: 2.5
+rooms:
+  - {name: kitchen_1, type: kitchen, polygon: [[0, 0], [6, 0], [6, 4], [0, 4]]}
+starts:
+  - {position: [1, 1, 0], yaw: 0.5, modality: ground}
+objects:
+  - {id: fridge_1, label: refrigerator, colour: [240, 240, 240], room: kitchen_1,
+     box: {center: [5, 3], size: [0.7, 0.7, 1.8]}}
+obstacles:
+  - {kind: wall, colour: [200, 200, 200], box: {center: [3, 0], size: [6, 0.1, 2.5]}}
+  - {kind: furniture, prism: {polygon: [[1, 2], [2, 2], [2, 3]], height: 0.9}}
+)";
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+void ExpectInvalid(const std::string& text, const std::string& field) {
+  const absl::StatusOr<World> world = ParseWorldYaml(text);
+  ASSERT_FALSE(world.ok()) << field;
+  EXPECT_EQ(world.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(std::string(world.status().message()).find(field), std::string::npos)
+      << world.status().message();
+}
+
+TEST(SimWorldYamlTest, ParsesEveryField) {
+  const absl::StatusOr<World> world = ParseWorldYaml(kWorld);
+  ASSERT_TRUE(world.ok()) << world.status();
+  EXPECT_EQ(world->name, "tiny");
+  EXPECT_DOUBLE_EQ(world->ceiling_height, 2.5);
+  ASSERT_EQ(world->objects.size(), 1u);
+  EXPECT_EQ(world->objects[0].label, "refrigerator");
+  EXPECT_EQ(world->objects[0].room, "kitchen_1");
+  EXPECT_DOUBLE_EQ(world->objects[0].box.size.z(), 1.8);
+  ASSERT_EQ(world->obstacles.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<PrismShape>(world->obstacles[1].shape));
+  EXPECT_EQ(world->starts[0].modality, Modality::kGround);
+  EXPECT_DOUBLE_EQ(world->starts[0].yaw, 0.5);
+}
+
+TEST(SimWorldYamlTest, ErrorsNameTheField) {
+  ExpectInvalid(Replace(kWorld, "size: [0.7, 0.7, 1.8]", "size: [0.7, 1.8]"),
+                "objects[0].box.size");
+  ExpectInvalid(Replace(kWorld, "modality: ground", "modality: boat"), "starts[0].modality");
+  ExpectInvalid(Replace(kWorld, "kind: furniture,", "kind: furniture, colr: [1, 2, 3],"),
+                "obstacles[1].colr");
+  ExpectInvalid(Replace(kWorld, "room: kitchen_1,", "room: garage,"), "objects[0].room");
+  ExpectInvalid(Replace(kWorld, "height: 0.9", "height: -1"), "obstacles[1].prism.height");
+  ExpectInvalid(Replace(kWorld, "max: [6, 4]", "max: [0, 4]"), "bounds.max");
+  ExpectInvalid(Replace(kWorld, "colour: [240, 240, 240]", "colour: [240, 256, 240]"),
+                "objects[0].colour");
+  ExpectInvalid(Replace(kWorld, "name: tiny", "title: tiny"), "title");
+  ExpectInvalid("name: [unclosed", "YAML syntax error");
+}
+
+TEST(SimWorldYamlTest, WriterRoundTrips) {
+  const absl::StatusOr<World> world = ParseWorldYaml(kWorld);
+  ASSERT_TRUE(world.ok());
+  const std::string text = WorldToYaml(*world);
+  const absl::StatusOr<World> again = ParseWorldYaml(text);
+  ASSERT_TRUE(again.ok()) << again.status() << "\n" << text;
+  EXPECT_EQ(WorldToYaml(*again), text);
+  EXPECT_EQ(again->objects[0].colour, (Rgb{240, 240, 240}));
+  EXPECT_EQ(std::get<PrismShape>(again->obstacles[1].shape).polygon.size(), 3u);
+}
+
+TEST(SimWorldYamlTest, SuiteIsEveryYamlFileSorted) {
+  const std::string dir = ::testing::TempDir() + "/suite_test";
+  std::filesystem::create_directories(dir);
+  World world = *ParseWorldYaml(kWorld);
+  world.name = "b";
+  ASSERT_TRUE(SaveWorldFile(world, dir + "/b.yaml").ok());
+  world.name = "a";
+  ASSERT_TRUE(SaveWorldFile(world, dir + "/a.yaml").ok());
+  const auto suite = LoadSuite(dir);
+  ASSERT_TRUE(suite.ok()) << suite.status();
+  ASSERT_EQ(suite->size(), 2u);
+  EXPECT_EQ((*suite)[0].name, "a");
+  EXPECT_EQ(LoadSuite(dir + "/missing").status().code(), absl::StatusCode::kNotFound);
+}
+
+}  // namespace
+}  // namespace semnav::sim

@@ -1,0 +1,55 @@
+// Executes the gateway's robot-session commands with a SimRobot, one simulated step at a time,
+// and says which feedback the robot owes the gateway.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "clients/sim/core/sim_robot.h"
+#include "clients/sim/loop/local_planner.h"
+#include "semnav/reasoning/v1/robot_session.pb.h"
+
+namespace semnav::sim::loop {
+
+struct Feedback {
+  uint64_t command_id = 0;
+  semnav::reasoning::v1::FeedbackKind kind = semnav::reasoning::v1::FEEDBACK_KIND_UNSPECIFIED;
+  std::string detail;
+};
+
+class CommandExecutor {
+ public:
+  // Without a local planner, navigate commands without a path head straight for the goal.
+  explicit CommandExecutor(SimRobot& robot, LocalPlanFn local_planner = {})
+      : robot_(robot), local_planner_(std::move(local_planner)) {}
+
+  // Starts a command (superseding the current one). Returns ACCEPTED, or FAILED with the
+  // robot's error (e.g. a fly waypoint for a ground robot).
+  Feedback Start(const semnav::reasoning::v1::RobotCommand& command);
+  // Advances the robot by dt seconds; returns the command's outcome when it ends this step:
+  // GOAL_REACHED (navigate arrived and faced goal_yaw, rotation/hold duration elapsed),
+  // BLOCKED (collision).
+  std::optional<Feedback> Step(double dt);
+  // True once a (non-emergency) STOP was executed: the episode's stop action.
+  bool stop_issued() const { return robot_.stopped(); }
+
+ private:
+  enum class Phase { kIdle, kDriving, kFacing, kRotating, kHolding };
+  Feedback Done(semnav::reasoning::v1::FeedbackKind kind, std::string detail);
+  absl::StatusOr<FollowPath> ToFollowPath(const semnav::reasoning::v1::NavigateAction& navigate);
+  absl::StatusOr<FollowPath> PlanLocally(const Eigen::Vector3d& goal) const;
+
+  SimRobot& robot_;
+  LocalPlanFn local_planner_;
+  Phase phase_ = Phase::kIdle;
+  uint64_t command_id_ = 0;
+  double goal_yaw_ = 0.0;
+  double rate_rps_ = 0.0;
+  double remaining_s_ = 0.0;  // < 0: until the next command
+  std::optional<Eigen::Vector3d> local_goal_;  // set while driving a locally planned path
+  double since_plan_s_ = 0.0;
+};
+
+}  // namespace semnav::sim::loop

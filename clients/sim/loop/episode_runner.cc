@@ -1,0 +1,217 @@
+#include "clients/sim/loop/episode_runner.h"
+
+#include <chrono>
+
+#include "absl/strings/str_cat.h"
+#include "clients/sim/core/occupancy_raster.h"
+#include "clients/sim/core/scene.h"
+#include "clients/sim/core/sim_robot.h"
+#include "clients/sim/loop/command_executor.h"
+#include "clients/sim/loop/frame_encoder.h"
+#include "clients/sim/loop/frame_stream.h"
+#include "clients/sim/loop/instruction.h"
+#include "clients/sim/loop/local_planner.h"
+#include "clients/sim/loop/proto_geometry.h"
+#include "clients/sim/loop/robot_session.h"
+#include "clients/sim/loop/shortest_path.h"
+#include "semnav/reasoning/v1/operator.grpc.pb.h"
+
+namespace semnav::sim::loop {
+namespace {
+
+namespace api = semnav::reasoning::v1;
+
+// Wall time the robot gives the gateway to answer each step (it reacts to state, feedback and
+// scene-graph updates asynchronously); simulated time does not depend on it.
+constexpr absl::Duration kCommandWait = absl::Milliseconds(15);
+
+bool Terminal(api::TaskStatus status) {
+  return status == api::TASK_STATUS_SUCCEEDED || status == api::TASK_STATUS_FAILED ||
+         status == api::TASK_STATUS_CANCELLED;
+}
+
+api::SessionHello Hello(const EpisodeSpec& spec, const RobotConfig& robot) {
+  api::SessionHello hello;
+  hello.set_robot_id(spec.robot_id);
+  hello.set_software_version("semnav-sim-loop");
+  api::Capabilities* caps = hello.mutable_capabilities();
+  switch (spec.world.starts[spec.start_index].modality) {
+    case Modality::kGround:
+      caps->add_modes(api::LOCOMOTION_MODE_GROUND);
+      caps->set_max_linear_speed_mps(robot.roll_speed);
+      break;
+    case Modality::kUav:
+      caps->add_modes(api::LOCOMOTION_MODE_AIR);
+      caps->set_max_linear_speed_mps(robot.fly_speed);
+      caps->set_max_vertical_speed_mps(robot.fly_speed);
+      break;
+    case Modality::kFlyRoll:
+      caps->add_modes(api::LOCOMOTION_MODE_FLY_ROLL);
+      caps->set_max_linear_speed_mps(robot.fly_speed);
+      caps->set_max_vertical_speed_mps(robot.fly_speed);
+      break;
+  }
+  caps->set_max_angular_speed_rps(robot.yaw_rate);
+  caps->set_footprint_radius_m(robot.radius);
+  return hello;
+}
+
+api::ConnectRequest StateMessage(const SimRobot& robot, const std::string& robot_id) {
+  api::ConnectRequest request;
+  api::RobotState* state = request.mutable_state();
+  *state->mutable_header()->mutable_stamp() = ToStamp(robot.time_s());
+  state->mutable_header()->set_frame_id("map");
+  state->mutable_header()->set_robot_id(robot_id);
+  *state->mutable_pose() = ToProtoPose(robot.odometry_pose());
+  state->set_mode(robot.pose().position.z() > 0.05 ? api::LOCOMOTION_MODE_AIR : api::LOCOMOTION_MODE_GROUND);
+  state->set_battery_fraction(-1.0);
+  return request;
+}
+
+api::ConnectRequest FeedbackMessage(const Feedback& feedback) {
+  api::ConnectRequest request;
+  request.mutable_feedback()->set_command_id(feedback.command_id);
+  request.mutable_feedback()->set_kind(feedback.kind);
+  request.mutable_feedback()->set_detail(feedback.detail);
+  return request;
+}
+
+absl::StatusOr<api::TaskSnapshot> GetTask(api::OperatorService::Stub& op, const std::string& task_id) {
+  api::GetTaskRequest request;
+  request.set_task_id(task_id);
+  api::GetTaskResponse response;
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  const grpc::Status status = op.GetTask(&context, request, &response);
+  if (!status.ok()) return absl::UnavailableError(absl::StrCat("GetTask: ", status.error_message()));
+  return response.task();
+}
+
+absl::StatusOr<api::TaskSnapshot> Submit(api::OperatorService::Stub& op, const EpisodeSpec& spec) {
+  api::SubmitInstructionRequest request;
+  request.set_request_id(absl::StrCat(spec.robot_id, "-", spec.world.name, "-", spec.start_index, "-",
+                                      spec.target, "-", spec.seed, "-",
+                                      std::chrono::steady_clock::now().time_since_epoch().count()));
+  request.set_robot_id(spec.robot_id);
+  request.set_instruction(SearchInstruction(spec.target));
+  api::SubmitInstructionResponse response;
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(30));
+  const grpc::Status status = op.SubmitInstruction(&context, request, &response);
+  if (!status.ok()) return absl::UnavailableError(absl::StrCat("SubmitInstruction: ", status.error_message()));
+  return response.task();
+}
+
+// Every episode starts from an empty map: earlier episodes' objects must not leak into this one.
+absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping, const EpisodeSpec& spec) {
+  auto stub = semnav::mapping::v1::MappingService::NewStub(mapping);
+  semnav::mapping::v1::ResetMapRequest request;
+  request.set_request_id(absl::StrCat("reset-", spec.robot_id, "-", std::chrono::steady_clock::now().time_since_epoch().count()));
+  semnav::mapping::v1::ResetMapResponse response;
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  const grpc::Status status = stub->ResetMap(&context, request, &response);
+  if (!status.ok()) return absl::UnavailableError(absl::StrCat("ResetMap: ", status.error_message()));
+  return absl::OkStatus();
+}
+
+void RecordTask(const api::TaskSnapshot& task, EpisodeResult& result) {
+  result.final_status = task.status();
+  result.final_reason = task.reason();
+  result.record.model_calls = task.model_requests();
+  const bool resolved = task.has_target() && task.target().path() != api::RESOLUTION_PATH_UNSPECIFIED;
+  result.record.goals_resolved = resolved ? 1 : 0;
+  result.record.goals_fast_path = resolved && task.target().path() == api::RESOLUTION_PATH_FAST ? 1 : 0;
+}
+
+}  // namespace
+
+absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoints& endpoints,
+                                         const StepObserver& observer) {
+  if (spec.start_index < 0 || spec.start_index >= static_cast<int>(spec.world.starts.size())) {
+    return absl::InvalidArgumentError(absl::StrCat("start_index ", spec.start_index, " not in world ", spec.world.name));
+  }
+  const std::string label = spec.target_label.empty() ? spec.target : spec.target_label;
+  const StartPose& start = spec.world.starts[spec.start_index];
+  const Scene scene = Scene::Build(spec.world);
+  RobotConfig robot_config = RobotConfig::ForModality(start.modality);
+  if (start.modality == Modality::kGround) robot_config.camera_pitch = spec.ground_camera_pitch;
+  SimRobot robot(spec.world, scene, start, robot_config, spec.sensors, spec.seed);
+  CommandExecutor executor(robot, LiveMapPlanner(endpoints.planning, robot_config.radius));
+
+  if (absl::Status s = ResetMap(endpoints.mapping, spec); !s.ok()) return s;
+  absl::StatusOr<std::unique_ptr<RobotSession>> session =
+      RobotSession::Open(endpoints.gateway, Hello(spec, robot_config));
+  if (!session.ok()) return session.status();
+  FrameStream frames(endpoints.mapping);
+  auto op = api::OperatorService::NewStub(endpoints.gateway);
+
+  EpisodeResult result;
+  result.record.strategy = spec.strategy;
+  result.record.world = spec.world.name;
+  result.record.target = spec.target;
+  // The gateway must know where the robot is and what it sees before it plans.
+  if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
+  if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(robot.Capture(), spec.robot_id));
+      !ack.ok()) {
+    return ack.status();
+  }
+  absl::StatusOr<api::TaskSnapshot> task = Submit(*op, spec);
+  if (!task.ok()) return task.status();
+  result.task_id = task->task_id();
+  RecordTask(*task, result);
+
+  for (int step = 0; step < spec.max_steps && !Terminal(result.final_status); ++step) {
+    for (const api::RobotCommand& command : (*session)->TakeCommands(kCommandWait)) {
+      if (absl::Status s = (*session)->Send(FeedbackMessage(executor.Start(command))); !s.ok()) return s;
+    }
+    if (executor.stop_issued()) break;  // the agent's stop action ends the episode
+    const std::optional<Feedback> outcome = executor.Step(spec.step_s);
+    result.steps = step + 1;
+    result.trajectory.push_back(robot.pose().position.head<2>());
+    if (outcome.has_value()) {
+      if (absl::Status s = (*session)->Send(FeedbackMessage(*outcome)); !s.ok()) return s;
+    }
+    if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
+    if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(robot.Capture(), spec.robot_id));
+        !ack.ok()) {
+      return ack.status();
+    }
+    task = GetTask(*op, result.task_id);
+    if (!task.ok()) return task.status();
+    RecordTask(*task, result);
+    if (observer) observer(step, result);
+  }
+  // The task's final STOP and its terminal state race each other: execute the commands that
+  // are still on the way, and give a stopped robot's task a moment to publish its end.
+  for (int i = 0; i < 20 && !(executor.stop_issued() && Terminal(result.final_status)); ++i) {
+    for (const api::RobotCommand& command : (*session)->TakeCommands(kCommandWait)) {
+      if (absl::Status s = (*session)->Send(FeedbackMessage(executor.Start(command))); !s.ok()) return s;
+    }
+    if (!executor.stop_issued() && Terminal(result.final_status) && i >= 10) break;  // ended without a stop
+    task = GetTask(*op, result.task_id);
+    if (!task.ok()) return task.status();
+    RecordTask(*task, result);
+  }
+
+  const StopOutcome outcome = ScoreStop(spec.world, label, robot.pose().position.head<2>(),
+                                        executor.stop_issued(), spec.success_radius);
+  result.stop_issued = executor.stop_issued();
+  result.collisions = static_cast<int>(robot.collisions().size());
+  result.record.success = outcome.success;
+  result.record.distance_to_goal_m = outcome.distance_to_goal_m;
+  result.record.path_m = robot.path_length_m();
+  result.record.time_s = robot.time_s();
+  result.record.energy_j = robot.energy_j();
+  RasterOptions raster;
+  raster.robot_radius = robot_config.radius;
+  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, raster);
+  auto planning = semnav::planning::v1::PlanningService::NewStub(endpoints.planning);
+  absl::StatusOr<double> shortest =
+      ShortestPathToTarget(*planning, spec.world, grid, start.position.head<2>(), label, spec.success_radius);
+  if (!shortest.ok() && !absl::IsNotFound(shortest.status())) return shortest.status();
+  result.record.shortest_path_m = shortest.ok() ? *shortest : 0.0;  // unreachable: SPL term is 0
+  return result;
+}
+
+}  // namespace semnav::sim::loop

@@ -1,0 +1,57 @@
+// What one closed-loop episode is and what it produced.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <grpcpp/channel.h>
+
+#include "clients/sim/core/episode_metrics.h"
+#include "clients/sim/core/robot_config.h"
+#include "clients/sim/core/world.h"
+#include "semnav/reasoning/v1/task.pb.h"
+
+namespace semnav::sim::loop {
+
+// Sensors for the loop: 160 x 120 depth (the 640 x 480 default scaled by 1/4, same field of
+// view) keeps mapping's per-frame integration fast on two cores; detector pixel floor scaled alike.
+SensorConfig LoopSensorConfig();
+
+struct EpisodeSpec {
+  World world;
+  int start_index = 0;
+  std::string target;        // as the operator says it: English or Chinese
+  std::string target_label;  // the world's English label, for scoring; empty = target
+  std::string strategy;      // label for the records (the gateway's config chooses the strategy)
+  std::string robot_id = "sim-robot";
+  int max_steps = 500;       // seed 004's episode budget
+  double step_s = 0.5;       // simulated seconds per step (one frame per step)
+  double success_radius = kDefaultSuccessRadius;
+  uint64_t seed = 1;
+  SensorConfig sensors = LoopSensorConfig();
+  // Ground robots look down this much (rad) so low furniture in front of them reaches the map;
+  // level (the Habitat agent's 0) leaves everything under 0.88 m unseen within ~1.9 m.
+  double ground_camera_pitch = 0.35;
+};
+
+struct Endpoints {
+  std::shared_ptr<grpc::Channel> gateway;
+  std::shared_ptr<grpc::Channel> mapping;
+  std::shared_ptr<grpc::Channel> planning;  // the robot's local planner (live map) and l_i (true map)
+};
+
+struct EpisodeResult {
+  EpisodeRecord record;
+  std::string task_id;
+  semnav::reasoning::v1::TaskStatus final_status = semnav::reasoning::v1::TASK_STATUS_UNSPECIFIED;
+  std::string final_reason;
+  bool stop_issued = false;
+  int steps = 0;
+  int collisions = 0;
+  std::vector<Eigen::Vector2d> trajectory;  // true xy per step, for plots
+};
+
+}  // namespace semnav::sim::loop

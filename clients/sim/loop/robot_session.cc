@@ -1,0 +1,61 @@
+#include "clients/sim/loop/robot_session.h"
+
+#include "absl/strings/str_cat.h"
+
+namespace semnav::sim::loop {
+
+namespace api = semnav::reasoning::v1;
+
+absl::StatusOr<std::unique_ptr<RobotSession>> RobotSession::Open(const std::shared_ptr<grpc::Channel>& gateway,
+                                                                 const api::SessionHello& hello) {
+  std::unique_ptr<RobotSession> session(new RobotSession());
+  session->stub_ = api::RobotSessionService::NewStub(gateway);
+  session->stream_ = session->stub_->Connect(&session->context_);
+  api::ConnectRequest first;
+  *first.mutable_hello() = hello;
+  if (!session->stream_->Write(first)) return absl::UnavailableError("gateway closed the robot session");
+  api::ConnectResponse answer;
+  const bool read_ok = session->stream_->Read(&answer);
+  if (!read_ok || !answer.has_accepted()) {
+    grpc::Status status = session->stream_->Finish();
+    return absl::UnavailableError(absl::StrCat("robot session not accepted: ", status.error_message()));
+  }
+  session->reader_ = std::thread([s = session.get()] { s->ReadLoop(); });
+  return session;
+}
+
+RobotSession::~RobotSession() {
+  if (stream_ != nullptr) {
+    stream_->WritesDone();
+    context_.TryCancel();
+  }
+  if (reader_.joinable()) reader_.join();
+  if (stream_ != nullptr) stream_->Finish();
+}
+
+void RobotSession::ReadLoop() {
+  api::ConnectResponse response;
+  while (stream_->Read(&response)) {
+    if (!response.has_command()) continue;
+    absl::MutexLock lock(&mu_);
+    commands_.push_back(response.command());
+  }
+  absl::MutexLock lock(&mu_);
+  closed_ = true;
+}
+
+absl::Status RobotSession::Send(const api::ConnectRequest& request) {
+  if (!stream_->Write(request)) return absl::UnavailableError("gateway closed the robot session");
+  return absl::OkStatus();
+}
+
+std::vector<api::RobotCommand> RobotSession::TakeCommands(absl::Duration wait) {
+  absl::MutexLock lock(&mu_);
+  auto ready = [this]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return !commands_.empty() || closed_; };
+  mu_.AwaitWithTimeout(absl::Condition(&ready), wait);
+  std::vector<api::RobotCommand> out(commands_.begin(), commands_.end());
+  commands_.clear();
+  return out;
+}
+
+}  // namespace semnav::sim::loop

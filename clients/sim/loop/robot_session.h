@@ -1,0 +1,46 @@
+// The robot's side of RobotSessionService/Connect: hello, state and feedback out; commands in
+// (read by a background thread so the simulation never blocks on the gateway).
+#pragma once
+
+#include <deque>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <grpcpp/grpcpp.h>
+
+#include "absl/status/statusor.h"
+#include "absl/synchronization/mutex.h"
+#include "absl/time/time.h"
+#include "semnav/reasoning/v1/robot_session.grpc.pb.h"
+
+namespace semnav::sim::loop {
+
+class RobotSession {
+ public:
+  // Opens the stream and waits for SessionAccepted (or the gateway's refusal).
+  static absl::StatusOr<std::unique_ptr<RobotSession>> Open(
+      const std::shared_ptr<grpc::Channel>& gateway, const semnav::reasoning::v1::SessionHello& hello);
+  ~RobotSession();
+
+  absl::Status Send(const semnav::reasoning::v1::ConnectRequest& request);
+  // Commands received since the last call, oldest first; waits up to `wait` for the first.
+  std::vector<semnav::reasoning::v1::RobotCommand> TakeCommands(absl::Duration wait);
+
+ private:
+  RobotSession() = default;
+  void ReadLoop();
+
+  grpc::ClientContext context_;
+  std::unique_ptr<semnav::reasoning::v1::RobotSessionService::Stub> stub_;
+  std::unique_ptr<grpc::ClientReaderWriter<semnav::reasoning::v1::ConnectRequest,
+                                           semnav::reasoning::v1::ConnectResponse>>
+      stream_;
+  std::thread reader_;
+  absl::Mutex mu_;
+  std::deque<semnav::reasoning::v1::RobotCommand> commands_ ABSL_GUARDED_BY(mu_);
+  bool closed_ ABSL_GUARDED_BY(mu_) = false;
+};
+
+}  // namespace semnav::sim::loop

@@ -1,0 +1,95 @@
+#include "clients/sim/loop/sim_stack.h"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <grpcpp/grpcpp.h>
+
+#include "absl/strings/str_cat.h"
+
+namespace semnav::sim::loop {
+namespace {
+
+// A loopback port the kernel reports free right now (another process may still take it before
+// the service binds; the stack start then fails loudly).
+absl::StatusOr<int> FreePort() {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return absl::InternalError("socket() failed");
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t len = sizeof(addr);
+  const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) == 0 &&
+                  getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0;
+  close(fd);
+  if (!ok) return absl::InternalError("could not find a free port");
+  return ntohs(addr.sin_port);
+}
+
+absl::StatusOr<std::string> Address(bool free_port, int default_port) {
+  int port = default_port;
+  if (free_port) {
+    absl::StatusOr<int> p = FreePort();
+    if (!p.ok()) return p.status();
+    port = *p;
+  }
+  return absl::StrCat("127.0.0.1:", port);
+}
+
+std::string WriteConfig(const std::string& dir, const std::string& name, const std::string& yaml) {
+  const std::string path = dir + "/" + name + ".yaml";
+  std::ofstream(path) << yaml;
+  return path;
+}
+
+}  // namespace
+
+absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions& options) {
+  std::error_code error;
+  std::filesystem::create_directories(options.work_dir + "/maps", error);
+  if (error) return absl::InternalError(absl::StrCat("cannot create ", options.work_dir, ": ", error.message()));
+  std::unique_ptr<SimStack> stack(new SimStack());
+  absl::StatusOr<std::string> gateway = Address(options.free_ports, 50050);
+  absl::StatusOr<std::string> mapping = Address(options.free_ports, 50051);
+  absl::StatusOr<std::string> planning = Address(options.free_ports, 50052);
+  if (!gateway.ok() || !mapping.ok() || !planning.ok()) return absl::InternalError("no free ports");
+  stack->gateway_ = *gateway;
+  stack->mapping_ = *mapping;
+  stack->planning_ = *planning;
+
+  semnav::launcher::StackConfig config;
+  // Mapping publishes scene-graph deltas every 20 ms so the gateway sees detections promptly.
+  config.services.push_back({"mapping", "semnav-mapping", *mapping,
+                             WriteConfig(options.work_dir, "mapping",
+                                         absl::StrCat("mapping:\n  store_directory: ", options.work_dir,
+                                                      "/maps\n  watch_min_interval_ms: 20\n"))});
+  config.services.push_back({"planning", "semnav-planning", *planning,
+                             WriteConfig(options.work_dir, "planning",
+                                         // The robot's local planner treats unexplored space as free.
+                                         absl::StrCat("planning:\n  grid:\n    unknown_is_free: true\n"
+                                                      "  mapping:\n    address: ", *mapping, "\n"))});
+  config.services.push_back({"gateway", "semnav-gateway", *gateway,
+                             WriteConfig(options.work_dir, "gateway",
+                                         absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping, "\n"))});
+  stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
+  if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
+  return stack;
+}
+
+SimStack::~SimStack() {
+  if (runner_ != nullptr) runner_->Stop().IgnoreError();
+}
+
+Endpoints SimStack::endpoints() const {
+  auto channel = [](const std::string& address) {
+    return grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
+  };
+  return Endpoints{channel(gateway_), channel(mapping_), channel(planning_)};
+}
+
+}  // namespace semnav::sim::loop

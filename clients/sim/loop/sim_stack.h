@@ -1,0 +1,35 @@
+// The services a closed-loop episode talks to (mapping, planning, gateway), started with the
+// launcher's StackRunner from a bin folder, wired to each other through generated configs.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "absl/status/statusor.h"
+#include "clients/sim/loop/episode_spec.h"
+#include "services/launcher/stack_runner.h"
+
+namespace semnav::sim::loop {
+
+struct SimStackOptions {
+  std::string bin_dir;   // folder holding semnav-mapping, semnav-planning, semnav-gateway
+  std::string work_dir;  // configs and the mapping store go here (created)
+  bool free_ports = true;  // false: the deploy/local.yaml ports (gateway 50050, ...)
+};
+
+class SimStack {
+ public:
+  static absl::StatusOr<std::unique_ptr<SimStack>> Start(const SimStackOptions& options);
+  ~SimStack();
+
+  const std::string& gateway_address() const { return gateway_; }
+  // Fresh channels to the three services.
+  Endpoints endpoints() const;
+
+ private:
+  SimStack() = default;
+  std::unique_ptr<semnav::launcher::StackRunner> runner_;
+  std::string gateway_, mapping_, planning_;
+};
+
+}  // namespace semnav::sim::loop

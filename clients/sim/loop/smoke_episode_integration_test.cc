@@ -1,0 +1,53 @@
+// The closed loop end to end: real mapping, planning and gateway on free ports; the simulated
+// robot finds an in-sight object in a generated home through the public contracts only.
+#include <gtest/gtest.h>
+
+#include "absl/strings/str_cat.h"
+
+#include "clients/sim/loop/episode_runner.h"
+#include "clients/sim/loop/sim_stack.h"
+#include "clients/sim/loop/smoke_episode.h"
+
+namespace semnav::sim::loop {
+namespace {
+
+TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
+  absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  absl::StatusOr<std::unique_ptr<SimStack>> stack =
+      SimStack::Start({SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true});
+  ASSERT_TRUE(stack.ok()) << stack.status();
+
+  absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
+  ASSERT_TRUE(result.ok()) << result.status();
+  SCOPED_TRACE(absl::StrCat("target ", spec->target, ", task ", result->final_reason, ", steps ", result->steps));
+  EXPECT_EQ(result->final_status, semnav::reasoning::v1::TASK_STATUS_SUCCEEDED);
+  EXPECT_TRUE(result->stop_issued);
+  EXPECT_TRUE(result->record.success);
+  EXPECT_LE(result->record.distance_to_goal_m, kDefaultSuccessRadius);
+  // The in-sight target is 1.5-3.5 m away: l_i is positive and no longer than the path taken
+  // plus the success-radius slack; SPL is then in (0, 1].
+  EXPECT_GT(result->record.shortest_path_m, 0.0);
+  const double spl = SuccessWeightedPathLength(true, result->record.shortest_path_m, result->record.path_m);
+  EXPECT_GT(spl, 0.0);
+  EXPECT_LE(spl, 1.0);
+}
+
+TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameSink) {
+  absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  ASSERT_EQ(spec->target, "sink");  // world seed 7's in-sight object
+  spec->target = "水槽";             // instruction "找水槽"
+  spec->target_label = "sink";
+  absl::StatusOr<std::unique_ptr<SimStack>> stack =
+      SimStack::Start({SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true});
+  ASSERT_TRUE(stack.ok()) << stack.status();
+  absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->final_status, semnav::reasoning::v1::TASK_STATUS_SUCCEEDED) << result->final_reason;
+  EXPECT_TRUE(result->record.success);
+  EXPECT_EQ(result->record.goals_fast_path, 1);
+}
+
+}  // namespace
+}  // namespace semnav::sim::loop

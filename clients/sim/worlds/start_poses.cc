@@ -1,0 +1,120 @@
+#include "clients/sim/worlds/start_poses.h"
+
+#include <cmath>
+#include <deque>
+#include <numbers>
+
+#include "clients/sim/core/geometry2d.h"
+#include "clients/sim/core/robot_config.h"
+
+namespace semnav::sim {
+namespace {
+
+Eigen::Vector2d CellCentre(const GroundTruthGrid& grid, int x, int y) {
+  return grid.origin + grid.resolution * Eigen::Vector2d(x + 0.5, y + 0.5);
+}
+
+}  // namespace
+
+GroundTruthGrid ModalityGrid(const World& world, Modality modality, double altitude) {
+  const RobotConfig robot = RobotConfig::ForModality(modality);
+  RasterOptions options;
+  options.resolution = 0.1;
+  options.robot_radius = robot.radius;
+  options.z_min = altitude + robot.ground_clearance;
+  options.z_max = altitude + robot.body_height;
+  return RasterizeOccupancy(world, options);
+}
+
+std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid) {
+  std::vector<int> label(grid.cells.size(), -1);
+  std::vector<int> sizes;
+  for (size_t seed = 0; seed < grid.cells.size(); ++seed) {
+    if (grid.cells[seed] != 0 || label[seed] >= 0) continue;
+    const int id = static_cast<int>(sizes.size());
+    int size = 0;
+    std::deque<size_t> queue{seed};
+    label[seed] = id;
+    while (!queue.empty()) {
+      const size_t c = queue.front();
+      queue.pop_front();
+      ++size;
+      const int x = static_cast<int>(c % grid.width), y = static_cast<int>(c / grid.width);
+      const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
+      for (int k = 0; k < 4; ++k) {
+        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid.width || ny[k] >= grid.height) continue;
+        const size_t n = static_cast<size_t>(ny[k]) * grid.width + nx[k];
+        if (grid.cells[n] == 0 && label[n] < 0) {
+          label[n] = id;
+          queue.push_back(n);
+        }
+      }
+    }
+    sizes.push_back(size);
+  }
+  std::vector<uint8_t> mask(grid.cells.size(), 0);
+  if (sizes.empty()) return mask;
+  const int best = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+  for (size_t c = 0; c < mask.size(); ++c) mask[c] = label[c] == best ? 1 : 0;
+  return mask;
+}
+
+std::vector<StartPose> ChooseStarts(const World& world, Modality modality, double altitude,
+                                    int count, Rng& rng) {
+  const GroundTruthGrid grid = ModalityGrid(world, modality, altitude);
+  const std::vector<uint8_t> region = LargestFreeRegion(grid);
+  std::vector<Eigen::Vector2d> cells;
+  for (size_t c = 0; c < region.size(); ++c) {
+    if (region[c] != 0) {
+      cells.push_back(
+          CellCentre(grid, static_cast<int>(c % grid.width), static_cast<int>(c / grid.width)));
+    }
+  }
+  std::vector<StartPose> starts;
+  if (cells.empty()) return starts;
+  for (int k = 0; k < count; ++k) {
+    Eigen::Vector2d pick = cells[rng.UniformInt(0, static_cast<int>(cells.size()) - 1)];
+    for (int attempt = 0; attempt < 50; ++attempt) {
+      bool spread = true;
+      for (const StartPose& s : starts)
+        spread = spread && (s.position.head<2>() - pick).norm() >= 1.5;
+      if (spread) break;
+      pick = cells[rng.UniformInt(0, static_cast<int>(cells.size()) - 1)];
+    }
+    StartPose start;
+    start.position = Eigen::Vector3d(pick.x(), pick.y(), altitude);
+    start.yaw = rng.Uniform(-std::numbers::pi, std::numbers::pi);
+    start.modality = modality;
+    starts.push_back(start);
+  }
+  return starts;
+}
+
+int RemoveUnreachableObjects(World& world, Modality modality, double altitude, double radius) {
+  const GroundTruthGrid grid = ModalityGrid(world, modality, altitude);
+  const std::vector<uint8_t> region = LargestFreeRegion(grid);
+  const size_t before = world.objects.size();
+  std::erase_if(world.objects, [&](const ObjectInstance& o) {
+    const auto [lo, hi] = FootprintBounds(o.box);
+    const int x0 =
+        std::max(0, static_cast<int>((lo.x() - radius - grid.origin.x()) / grid.resolution));
+    const int y0 =
+        std::max(0, static_cast<int>((lo.y() - radius - grid.origin.y()) / grid.resolution));
+    const int x1 = std::min(
+        grid.width - 1, static_cast<int>((hi.x() + radius - grid.origin.x()) / grid.resolution));
+    const int y1 = std::min(
+        grid.height - 1, static_cast<int>((hi.y() + radius - grid.origin.y()) / grid.resolution));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        if (region[static_cast<size_t>(y) * grid.width + x] != 0 &&
+            DistanceToBoxFootprint(o.box, CellCentre(grid, x, y)) <= radius) {
+          return false;
+        }
+      }
+    }
+    return true;
+  });
+  return static_cast<int>(before - world.objects.size());
+}
+
+}  // namespace semnav::sim
