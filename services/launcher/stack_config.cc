@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 
@@ -14,8 +15,10 @@ namespace {
 
 // Writes a service's inline settings where its binary can read them as a config file.
 absl::StatusOr<std::string> WriteSettings(const std::string& name, const std::string& yaml) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / absl::StrCat("semnav-stack-", ::getpid());
+  // A fresh folder each time, so two stacks read by one process never share files.
+  static std::atomic<int> parses{0};
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    absl::StrCat("semnav-stack-", ::getpid(), "-", parses++);
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   const std::filesystem::path path = dir / (name + ".yaml");
@@ -63,10 +66,24 @@ constexpr char kDefaultStack[] = R"yaml(
 startup_timeout_s: 20
 stop_timeout_s: 10
 services:
-  gateway: {binary: semnav-gateway, listen: "127.0.0.1:50050"}
-  mapping: {binary: semnav-mapping, listen: "127.0.0.1:50051"}
+  gateway:
+    binary: semnav-gateway
+    listen: 127.0.0.1:50050
+    settings:
+      gateway:
+        mapping: {address: "127.0.0.1:50051"}
+        planning: {address: "127.0.0.1:50052", exploration_strategy: SEMANTIC_FRONTIER}
+  mapping:
+    binary: semnav-mapping
+    listen: 127.0.0.1:50051
+    settings:
+      mapping: {store_directory: var/maps}
   planning: {binary: semnav-planning, listen: "127.0.0.1:50052"}
-  relocalization: {binary: semnav-relocalization, listen: "127.0.0.1:50053"}
+  relocalization:
+    binary: semnav-relocalization
+    listen: 127.0.0.1:50053
+    settings:
+      relocalization: {storage_dir: var/landmarks}
   modelproxy: {binary: semnav-model-proxy, listen: "127.0.0.1:50054"}
 )yaml";
 

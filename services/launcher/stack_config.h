@@ -23,7 +23,7 @@ struct StackConfig {
 
 // The stack from a YAML file (see deploy/local.yaml); relative config paths resolve against
 // the file's folder. A service's inline `settings:` (its config file's content) is written
-// to <TMPDIR>/semnav-stack-<pid>/<name>.yaml and handed over as its config.
+// to <TMPDIR>/semnav-stack-<pid>-<n>/<name>.yaml and handed over as its config.
 absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path);
 // The embedded default: deploy/local.yaml's content, compiled in.
 StackConfig DefaultStackConfig();

@@ -1,7 +1,10 @@
 #include "services/launcher/stack_config.h"
 
+#include "services/common/config/config_reader.h"
+
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,6 +13,14 @@ namespace semnav::launcher {
 namespace {
 
 using ::testing::HasSubstr;
+
+std::string ReadFile(const std::string& path) {
+  if (path.empty()) return "";
+  std::ifstream in(path);
+  std::stringstream content;
+  content << in.rdbuf();
+  return content.str();
+}
 
 TEST(StackConfigTest, EmbeddedDefaultIsDeployLocalYaml) {
   absl::StatusOr<StackConfig> file = LoadStackConfig(std::string(SEMNAV_SOURCE_DIR) + "/deploy/local.yaml");
@@ -21,6 +32,8 @@ TEST(StackConfigTest, EmbeddedDefaultIsDeployLocalYaml) {
     EXPECT_EQ(embedded.services[i].name, file->services[i].name);
     EXPECT_EQ(embedded.services[i].binary, file->services[i].binary);
     EXPECT_EQ(embedded.services[i].listen, file->services[i].listen);
+    EXPECT_EQ(ReadFile(embedded.services[i].config), ReadFile(file->services[i].config))
+        << embedded.services[i].name;
   }
   EXPECT_EQ(embedded.startup_timeout_s, file->startup_timeout_s);
 }
@@ -33,6 +46,27 @@ TEST(StackConfigTest, RelativeServiceConfigResolvesAgainstTheStackFile) {
   absl::StatusOr<StackConfig> stack = LoadStackConfig((dir / "stack.yaml").string());
   ASSERT_TRUE(stack.ok()) << stack.status();
   EXPECT_EQ(stack->services[0].config, (dir / "conf/mapping.yaml").string());
+}
+
+TEST(StackConfigTest, InlineSettingsBecomeTheServiceConfigFile) {
+  const auto path = std::filesystem::temp_directory_path() / "semnav_stack_settings.yaml";
+  std::ofstream(path) << "services:\n  gateway:\n    binary: semnav-gateway\n    listen: "
+                         "'127.0.0.1:1'\n    settings: {gateway: {mapping: {address: 'h:2'}}}\n";
+  absl::StatusOr<StackConfig> stack = LoadStackConfig(path.string());
+  ASSERT_TRUE(stack.ok()) << stack.status();
+  absl::StatusOr<ConfigReader> written = ConfigReader::FromFile(stack->services[0].config);
+  ASSERT_TRUE(written.ok()) << written.status();
+  std::string address;
+  written->Child("gateway").Child("mapping").Read("address", &address);
+  EXPECT_EQ(address, "h:2");
+}
+
+TEST(StackConfigTest, ConfigFileAndInlineSettingsTogetherAreRefused) {
+  const auto path = std::filesystem::temp_directory_path() / "semnav_stack_both.yaml";
+  std::ofstream(path) << "services:\n  mapping: {binary: semnav-mapping, listen: 'h:1', config: "
+                         "m.yaml, settings: {mapping: {}}}\n";
+  EXPECT_THAT(LoadStackConfig(path.string()).status().message(),
+              HasSubstr("services.mapping.settings: give a config file or inline settings"));
 }
 
 TEST(StackConfigTest, MissingListenAndUnknownKeysAreNamed) {

@@ -28,6 +28,9 @@ struct Binary {
   std::string service;  // the full name its health and reflection report
 };
 
+// Test names and failure messages show the binary, not the struct's bytes.
+void PrintTo(const Binary& binary, std::ostream* out) { *out << binary.name; }
+
 const std::vector<Binary>& AllBinaries() {
   static const std::vector<Binary> binaries = {
       {"semnav-mapping", "semnav.mapping.v1.MappingService"},

@@ -75,7 +75,8 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
                                                       "  mapping:\n    address: ", *mapping, "\n"))});
   config.services.push_back({"gateway", "semnav-gateway", *gateway,
                              WriteConfig(options.work_dir, "gateway",
-                                         absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping, "\n"))});
+                                         absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
+                                                      "\n  planning:\n    address: ", *planning, "\n"))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
   return stack;

@@ -1,0 +1,52 @@
+// Bilingual (English / Chinese) lexicon of objects, rooms, colours, spatial relations and
+// instruction words, loaded from services/reasoning/data/lexicon.tsv.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "absl/status/statusor.h"
+
+namespace semnav::reasoning {
+
+enum class TermKind { kObject, kRoom, kColour, kRelation, kAction, kDeixis, kNegation, kFiller };
+
+struct LexiconEntry {
+  TermKind kind;
+  std::string canonical;            // English canonical name, e.g. "couch", "left_of", "go".
+  std::vector<std::string> english;  // lower-case forms, may contain spaces ("dining table").
+  std::vector<std::string> chinese;
+};
+
+class Lexicon {
+ public:
+  // Parses the tab-separated format documented at the top of lexicon.tsv.
+  static absl::StatusOr<Lexicon> Parse(std::string_view tsv);
+  static absl::StatusOr<Lexicon> Load(const std::string& path);
+  // The data file shipped with the source tree.
+  static std::string DefaultPath();
+
+  // Entries having `form` (lower-cased English or Chinese) among their forms; empty if none.
+  std::vector<const LexiconEntry*> Lookup(std::string_view form) const;
+  // The first entry of `kind` having `form`, or nullptr.
+  const LexiconEntry* Find(std::string_view form, TermKind kind) const;
+  // The canonical object name for a free-text label ("Sofa" -> "couch"); the lower-cased label
+  // itself when the lexicon does not know it.
+  std::string CanonicalObject(std::string_view label) const;
+
+  const std::vector<LexiconEntry>& entries() const { return entries_; }
+  // Longest form measured in segmenter tokens, bounding the phrase matcher's window.
+  std::size_t max_form_words() const { return max_form_words_; }
+
+ private:
+  std::vector<LexiconEntry> entries_;
+  std::unordered_map<std::string, std::vector<std::size_t>> index_;
+  std::size_t max_form_words_ = 1;
+};
+
+std::string ToLowerAscii(std::string_view text);
+
+}  // namespace semnav::reasoning

@@ -1,0 +1,52 @@
+#include "services/reasoning/core/lexicon.h"
+
+#include <fstream>
+#include <string>
+
+#include "absl/strings/match.h"
+#include "gtest/gtest.h"
+#include "services/reasoning/testing/test_lexicon.h"
+
+namespace semnav::reasoning {
+namespace {
+
+TEST(GatewayLexiconTest, CoversAllCoco80ClassesInBothLanguages) {
+  std::ifstream classes(std::string(SEMNAV_SHARED_DATA_DIR) +
+                        "/object-priors/conceptnet_atlocation_coco80/ms-coco-80-categories.txt");
+  ASSERT_TRUE(classes.good());
+  int count = 0;
+  for (std::string name; std::getline(classes, name);) {
+    if (name.empty()) continue;
+    ++count;
+    const LexiconEntry* entry = ShippedLexicon().Find(name, TermKind::kObject);
+    ASSERT_NE(entry, nullptr) << name;
+    EXPECT_EQ(entry->canonical, name);
+    EXPECT_FALSE(entry->chinese.empty()) << name;
+  }
+  EXPECT_EQ(count, 80);
+}
+
+TEST(GatewayLexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
+  const Lexicon& lexicon = ShippedLexicon();
+  EXPECT_EQ(lexicon.CanonicalObject("Sofa"), "couch");
+  EXPECT_EQ(lexicon.CanonicalObject("沙发"), "couch");
+  EXPECT_EQ(lexicon.CanonicalObject("fire_extinguisher"), "fire extinguisher");
+  EXPECT_EQ(lexicon.CanonicalObject("灭火器"), "fire extinguisher");
+  EXPECT_EQ(lexicon.CanonicalObject("厨房"), "kitchen");
+  EXPECT_EQ(lexicon.CanonicalObject("flux capacitor"), "flux capacitor");
+  ASSERT_NE(lexicon.Find("红色", TermKind::kColour), nullptr);
+  EXPECT_EQ(lexicon.Find("红色", TermKind::kColour)->canonical, "red");
+  EXPECT_EQ(lexicon.Find("左边", TermKind::kRelation)->canonical, "left_of");
+  // "orange" is both a fruit and a colour; lookup returns both.
+  EXPECT_EQ(lexicon.Lookup("orange").size(), 2u);
+}
+
+TEST(GatewayLexiconTest, RejectsMalformedLines) {
+  EXPECT_EQ(Lexicon::Parse("object\tcup\tcup\n").status().code(), absl::StatusCode::kInvalidArgument);
+  absl::StatusOr<Lexicon> bad_kind = Lexicon::Parse("gadget\tx\tx\tx\n");
+  EXPECT_EQ(bad_kind.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_TRUE(absl::StrContains(bad_kind.status().message(), "line 1"));
+}
+
+}  // namespace
+}  // namespace semnav::reasoning

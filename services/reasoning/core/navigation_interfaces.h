@@ -1,0 +1,39 @@
+// Services the executor needs, implemented by the server over gRPC (planning) and by fakes in
+// tests. Calls are synchronous with the implementation's own deadline.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "absl/status/statusor.h"
+#include "services/reasoning/core/robot_types.h"
+
+namespace semnav::reasoning {
+
+// One path request. The robot's modality decides the search: 2D for ground robots, the
+// multi-modal (roll + fly, seed 003) search for fly-roll robots.
+struct PathQuery {
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();  // map frame, metres
+  Eigen::Vector3d goal = Eigen::Vector3d::Zero();   // map frame, metres
+  bool multi_modal = false;                         // fly-roll robot
+  double robot_radius_m = 0.0;                      // footprint inflation; 0 = point robot
+  // Seed 004 alternative point: when the goal is in or behind an obstacle, plan to the free point
+  // nearest it on the line from here to the goal. Unset = the goal must be reachable as given.
+  std::optional<Eigen::Vector3d> alternative_from;
+};
+
+class PathPlanner {
+ public:
+  virtual ~PathPlanner() = default;
+  // Waypoints from start to the planned goal (the last one; an empty list lets the robot plan
+  // locally). Typed failures: FAILED_PRECONDITION = the goal is occupied (retry with
+  // alternative_from), NOT_FOUND = no path (explore instead); any other error is transient.
+  virtual absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) = 0;
+  // Next exploration goal (the planner's configured strategy, frontier based); NOT_FOUND when the
+  // map has no frontier left.
+  virtual absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose& pose) = 0;
+};
+
+}  // namespace semnav::reasoning

@@ -1,0 +1,47 @@
+// The gateway's view of mapping's scene graph (seed 002, 3.1.3): objects, pairwise relations
+// (near/left_of/right_of/in_front_of/behind/on/above) and 3 m regions. Plain values; the server
+// converts mapping's protos into these.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace semnav::reasoning {
+
+struct SceneObject {
+  int64_t id = 0;
+  std::string label;                    // open-vocabulary detector label, e.g. "red cup" or "sofa".
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // map frame, metres.
+  double score = 0.0;                   // detector confidence in [0, 1].
+  int detection_count = 0;              // how many frames confirmed the object.
+  int64_t region_id = -1;               // -1: no region.
+  std::vector<std::string> attributes;  // e.g. colours reported by the detector/captioner.
+  std::vector<float> embedding;         // visual embedding (CLIP-like); empty: none.
+};
+
+struct SceneRelation {
+  int64_t subject_id = 0;
+  std::string relation;  // "near", "left_of", ... read as "subject relation object".
+  int64_t object_id = 0;
+  double distance_m = 0.0;
+};
+
+struct SceneRegion {
+  int64_t id = 0;
+  std::string name;  // e.g. "kitchen" or "area_with_chair_desk".
+  std::vector<int64_t> object_ids;
+};
+
+struct SceneGraph {
+  uint64_t revision = 0;
+  std::vector<SceneObject> objects;
+  std::vector<SceneRelation> relations;
+  std::vector<SceneRegion> regions;
+
+  const SceneObject* FindObject(int64_t id) const;
+};
+
+}  // namespace semnav::reasoning

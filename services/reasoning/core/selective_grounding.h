@@ -1,0 +1,30 @@
+// ESCA selective grounding (seed 002, 3.2.2 slow path): shrink the scene graph before a model call
+// by keyword match -> 1-hop relation expansion -> region expansion (about 200 -> 15 objects).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "services/reasoning/core/label_matcher.h"
+#include "services/reasoning/core/scene_graph.h"
+#include "services/reasoning/core/subgoal.h"
+
+namespace semnav::reasoning {
+
+struct GroundingConfig {
+  int max_objects = 15;
+};
+
+struct GroundedGraph {
+  SceneGraph graph;                   // selected objects, relations among them, their regions.
+  std::vector<int64_t> keyword_hits;  // objects matched by the target or anchor name.
+};
+
+// Keyword hits are objects whose name overlaps the target's or the anchor's (colour ignored, so
+// the model can still pick "the red one" among cups), best match first; then the other ends of
+// relations touching them, nearest relation first; then objects of the same regions (or of a region
+// named like the target room), nearest to the first hit first; stopping at `max_objects`.
+GroundedGraph SelectiveGrounding(const TargetSpec& target, const SceneGraph& graph,
+                                 const LabelMatcher& matcher, const GroundingConfig& config);
+
+}  // namespace semnav::reasoning

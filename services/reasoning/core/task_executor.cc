@@ -1,0 +1,425 @@
+#include "services/reasoning/core/task_executor.h"
+
+#include <cmath>
+
+#include "absl/status/status.h"
+#include "absl/strings/str_cat.h"
+
+namespace semnav::reasoning {
+
+std::string_view TaskStateName(TaskState state) {
+  switch (state) {
+    case TaskState::kRunning: return "RUNNING";
+    case TaskState::kPaused: return "PAUSED";
+    case TaskState::kSucceeded: return "SUCCEEDED";
+    case TaskState::kFailed: return "FAILED";
+    case TaskState::kCancelled: return "CANCELLED";
+  }
+  return "UNKNOWN";
+}
+
+TaskExecutor::TaskExecutor(std::string instruction, std::vector<Subgoal> subgoals, const FastResolver* resolver,
+                           PathPlanner* planner, const TopologicalMemory* memory, ExecutorConfig config)
+    : instruction_(std::move(instruction)),
+      subgoals_(std::move(subgoals)),
+      resolver_(resolver),
+      planner_(planner),
+      memory_(memory),
+      config_(config) {}
+
+bool TaskExecutor::finished() const {
+  return progress_.state == TaskState::kSucceeded || progress_.state == TaskState::kFailed ||
+         progress_.state == TaskState::kCancelled;
+}
+
+const TargetSpec& TaskExecutor::ActiveTarget() const {
+  const auto is_object = [](const Subgoal& goal) { return !goal.target.empty() && !goal.target.is_room; };
+  if (is_object(current())) return current().target;
+  for (int i = progress_.subgoal_index; i >= 0; --i) {
+    if (is_object(subgoals_[static_cast<std::size_t>(i)])) return subgoals_[static_cast<std::size_t>(i)].target;
+  }
+  for (const Subgoal& goal : subgoals_) {
+    if (is_object(goal)) return goal.target;
+  }
+  return current().target;
+}
+
+double TaskExecutor::YawTo(const Eigen::Vector3d& point) const {
+  const Eigen::Vector3d d = point - pose_.position;
+  return d.head<2>().norm() < 1e-9 ? pose_.yaw : std::atan2(d.y(), d.x());
+}
+
+std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose) {
+  pose_ = pose;
+  return EnterSubgoal(now);
+}
+
+std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
+                                               Phase phase, const std::string& reason) {
+  absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal, phase);
+  if (absl::IsNotFound(path.status()) && phase != Phase::kExploring) {
+    // No path to a known place: explore (the map grows) and try again when the target is seen.
+    if (++progress_.replans > config_.max_replans) {
+      return Fail(absl::StrCat("gave up after ", config_.max_replans, " re-plans: no path"));
+    }
+    progress_.reason = absl::StrCat("no path: ", path.status().message(), "; exploring");
+    return Explore(now);
+  }
+  if (!path.ok()) return Replan(now, absl::StrCat("no path: ", path.status().message()));
+  RobotCommand command = NewCommand(CommandKind::kNavigate, reason);
+  command.goal = goal;
+  if (!path->empty()) command.goal.head<2>() = path->back().head<2>();  // alternative point or adjusted goal
+  command.goal_yaw = yaw;
+  command.max_speed = speed;
+  command.path = *path;
+  progress_.path = *std::move(path);
+  progress_.phase = phase == Phase::kExploring ? "exploring" : phase == Phase::kVerifying ? "verifying" : "navigating";
+  progress_.reason = reason;
+  phase_ = phase;
+  phase_deadline_ = now + (phase == Phase::kVerifying ? config_.verify_timeout_s : config_.navigate_timeout_s);
+  return {command};
+}
+
+absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal, Phase phase) {
+  if ((goal - pose_.position).head<2>().norm() < 1e-6) return std::vector<Eigen::Vector3d>{};  // turn in place
+  PathQuery query{pose_.position, goal, config_.multi_modal, config_.robot_radius_m, std::nullopt};
+  absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
+  if (absl::IsFailedPrecondition(path.status()) && phase != Phase::kExploring) {
+    // Seed 004: the goal lies in an obstacle; go to the free point nearest it seen from here.
+    query.alternative_from = pose_.position;
+    path = planner_->Plan(query);
+  }
+  return path;
+}
+
+std::vector<RobotCommand> TaskExecutor::Rotate(double now, double rate, double duration, Phase phase,
+                                               const std::string& reason) {
+  RobotCommand command = NewCommand(CommandKind::kRotate, reason);
+  command.angular_speed = rate;
+  command.duration_s = duration;
+  progress_.phase = "looking_around";
+  progress_.reason = reason;
+  phase_ = phase;
+  phase_deadline_ = now + duration;
+  return {command};
+}
+
+std::vector<RobotCommand> TaskExecutor::Hold(double now, double duration, const std::string& reason) {
+  RobotCommand command = NewCommand(CommandKind::kHold, reason);
+  command.duration_s = duration;
+  progress_.phase = "waiting";
+  progress_.reason = reason;
+  phase_ = Phase::kWaiting;
+  phase_deadline_ = now + duration;
+  return {command};
+}
+
+RobotCommand TaskExecutor::NewCommand(CommandKind kind, const std::string& reason) {
+  RobotCommand command;
+  command.kind = kind;
+  command.id = active_command_ = next_command_id_++;
+  command.reason = reason;
+  return command;
+}
+
+std::vector<RobotCommand> TaskExecutor::Halt(TaskState state, CommandKind kind, const std::string& reason) {
+  progress_.state = state;
+  progress_.reason = reason;
+  phase_ = Phase::kIdle;
+  return {NewCommand(kind, reason)};
+}
+
+std::vector<RobotCommand> TaskExecutor::Fail(const std::string& reason) {
+  return Halt(TaskState::kFailed, CommandKind::kStop, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& reason) {
+  if (++progress_.replans > config_.max_replans) {
+    return Fail(absl::StrCat("gave up after ", config_.max_replans, " re-plans: ", reason));
+  }
+  progress_.reason = reason;
+  return phase_ == Phase::kExploring ? Explore(now) : EnterSubgoal(now);
+}
+
+std::vector<RobotCommand> TaskExecutor::NextSubgoal(double now, const std::string& reason) {
+  progress_.reason = reason;
+  progress_.replans = 0;
+  ++progress_.subgoal_index;
+  return EnterSubgoal(now);
+}
+
+bool TaskExecutor::TryResolve() {
+  if (progress_.target.has_value() && excluded_.count(progress_.target->object_id) == 0) return true;
+  progress_.target.reset();
+  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, {}, excluded_);
+  if (!resolution.accepted) return false;
+  const SceneObject* object = graph_.FindObject(resolution.best->object_id);
+  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "fast", 0};
+  return true;
+}
+
+void TaskExecutor::MaybeRequestModel() {
+  if (!config_.model_available || awaiting_model_ || graph_.objects.empty() ||
+      (progress_.model_requests > 0 && graph_.revision == requested_revision_)) {
+    return;
+  }
+  GroundingConfig grounding;
+  grounding.max_objects = config_.grounding_max_objects;
+  GroundedGraph grounded = SelectiveGrounding(ActiveTarget(), graph_, resolver_->matcher(), grounding);
+  ModelRequest request;
+  request.graph_revision = requested_revision_ = graph_.revision;
+  request.request = BuildResolveRequest(instruction_, ActiveTarget(), grounded.graph);
+  request.grounded = std::move(grounded.graph);
+  pending_request_ = std::move(request);
+  awaiting_model_ = true;
+  ++progress_.model_requests;
+}
+
+std::optional<ModelRequest> TaskExecutor::TakeModelRequest() {
+  std::optional<ModelRequest> request = std::move(pending_request_);
+  pending_request_.reset();
+  return request;
+}
+
+std::vector<RobotCommand> TaskExecutor::Explore(double now) {
+  if (progress_.explore_goals >= config_.max_explore_goals) {
+    if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration budget used");
+    return Fail(absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
+  }
+  ++progress_.explore_goals;
+  absl::StatusOr<Eigen::Vector3d> goal = planner_->ExplorationGoal(pose_);
+  Eigen::Vector3d target;
+  if (goal.ok()) {
+    target = *goal;
+  } else {
+    // No frontier from planning: step toward the least-explored sector of the topological memory.
+    const double yaw = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
+    target = pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
+  }
+  return MoveTo(now, target, YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
+}
+
+std::vector<RobotCommand> TaskExecutor::Search(double now) {
+  MaybeRequestModel();
+  return Explore(now);
+}
+
+std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
+  if (progress_.state != TaskState::kRunning) return {};
+  if (progress_.subgoal_index >= static_cast<int>(subgoals_.size())) {
+    progress_.phase = "done";
+    return Halt(TaskState::kSucceeded, CommandKind::kStop, "task complete");
+  }
+  const Subgoal& goal = current();
+  switch (goal.type) {
+    case SubgoalType::kNavigate: {
+      if (goal.target.is_room) {
+        for (const SceneRegion& region : graph_.regions) {
+          if (!resolver_->matcher().SameName(region.name, goal.target.name) || region.object_ids.empty()) continue;
+          Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+          int count = 0;
+          for (int64_t id : region.object_ids) {
+            if (const SceneObject* object = graph_.FindObject(id)) {
+              centre += object->position;
+              ++count;
+            }
+          }
+          if (count > 0) {
+            centre /= count;
+            return MoveTo(now, centre, YawTo(centre), 0.0, Phase::kMoving, "going to " + goal.target.name);
+          }
+        }
+        return NextSubgoal(now, goal.target.name + " is not in the map yet; searching from here");
+      }
+      if (!TryResolve()) return Search(now);
+      const Eigen::Vector3d to_target = progress_.target->position - pose_.position;
+      const double distance = to_target.head<2>().norm();
+      if (distance <= config_.navigate_standoff_m) return NextSubgoal(now, "already near the target");
+      const Eigen::Vector3d stop = progress_.target->position - to_target * (config_.navigate_standoff_m / distance);
+      return MoveTo(now, stop, YawTo(progress_.target->position), 0.0, Phase::kMoving, "going to the target");
+    }
+    case SubgoalType::kFind:
+      if (TryResolve()) return NextSubgoal(now, absl::StrCat("found object ", progress_.target->object_id));
+      return Search(now);
+    case SubgoalType::kLookAround:
+      if (progress_.target.has_value()) return NextSubgoal(now, "target already located");
+      return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kRotating,
+                    "looking around");
+    case SubgoalType::kApproach: {
+      if (!TryResolve()) return Search(now);
+      const double stand_off = goal.distance_m > 0.0 ? goal.distance_m : 0.5;
+      const Eigen::Vector3d to_target = progress_.target->position - pose_.position;
+      const double distance = to_target.head<2>().norm();
+      if (distance <= stand_off + 1e-6) return NextSubgoal(now, "already close");
+      const Eigen::Vector3d stop = progress_.target->position - to_target * (stand_off / distance);
+      return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps, Phase::kMoving,
+                    "approaching the target");
+    }
+    case SubgoalType::kVerify: {
+      if (!TryResolve()) return Search(now);
+      const SceneObject* object = graph_.FindObject(progress_.target->object_id);
+      progress_.target->detections_at_verify = object != nullptr ? object->detection_count : 0;
+      return MoveTo(now, pose_.position, YawTo(progress_.target->position), 0.0, Phase::kVerifying,
+                    "turning to face the target to verify it");
+    }
+    case SubgoalType::kBacktrack: {
+      std::optional<Eigen::Vector3d> back =
+          memory_ != nullptr ? memory_->BacktrackPosition(goal.target) : std::nullopt;
+      if (!back.has_value()) return NextSubgoal(now, "nothing to backtrack to");
+      return MoveTo(now, *back, YawTo(*back), 0.0, Phase::kMoving, "backtracking");
+    }
+    case SubgoalType::kExplore:
+      return Explore(now);
+    case SubgoalType::kWait:
+      return Hold(now, goal.duration_s > 0.0 ? goal.duration_s : config_.wait_duration_s, "waiting");
+  }
+  return {};
+}
+
+std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
+  const double distance = (progress_.target->position - pose_.position).head<2>().norm();
+  if (distance <= config_.success_radius_m) return NextSubgoal(now, "target verified within the success radius");
+  for (int i = progress_.subgoal_index; i >= 0; --i) {
+    if (subgoals_[static_cast<std::size_t>(i)].type == SubgoalType::kApproach) {
+      progress_.subgoal_index = i;
+      return EnterSubgoal(now);
+    }
+  }
+  const Eigen::Vector3d to_target = progress_.target->position - pose_.position;
+  const Eigen::Vector3d stop = progress_.target->position - to_target * (0.5 / to_target.head<2>().norm());
+  return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps, Phase::kMoving,
+                "verified but too far: approaching");
+}
+
+std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_id, RobotFeedback feedback) {
+  if (progress_.state != TaskState::kRunning || command_id != active_command_) return {};
+  if (feedback != RobotFeedback::kGoalReached) {
+    return Replan(now, feedback == RobotFeedback::kBlocked ? "robot blocked" : "robot reported failure");
+  }
+  switch (phase_) {
+    case Phase::kExploring:
+      if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration goal reached");
+      return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
+                    "scanning at the exploration goal");
+    case Phase::kExploreScan:
+      return Explore(now);
+    case Phase::kVerifying:
+      return {};  // facing the target; confirmation comes from detections or the vision model
+    case Phase::kMoving:
+    case Phase::kRotating:
+    case Phase::kWaiting:
+      return NextSubgoal(now, std::string(SubgoalTypeName(current().type)) + " done");
+    case Phase::kIdle:
+      return {};
+  }
+  return {};
+}
+
+std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose) {
+  pose_ = pose;
+  if (progress_.state != TaskState::kRunning || phase_ == Phase::kIdle || now < phase_deadline_) return {};
+  switch (phase_) {
+    case Phase::kRotating:
+    case Phase::kWaiting:
+    case Phase::kExploreScan:
+      return OnFeedback(now, active_command_, RobotFeedback::kGoalReached);
+    case Phase::kVerifying:
+      return OnVisionVerdict(now, false);
+    default:
+      return Replan(now, "motion timed out");
+  }
+}
+
+std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGraph& graph) {
+  graph_ = graph;
+  if (progress_.state != TaskState::kRunning) return {};
+  if (phase_ == Phase::kVerifying && progress_.target.has_value()) {
+    const SceneObject* object = graph_.FindObject(progress_.target->object_id);
+    if (object == nullptr) return {};
+    progress_.target->position = object->position;
+    if (object->detection_count - progress_.target->detections_at_verify >= config_.verify_detections) {
+      return CheckSuccessOrApproach(now);
+    }
+    return {};
+  }
+  const bool searching = (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) &&
+                         current().type != SubgoalType::kExplore;
+  if (!searching) return {};
+  if (TryResolve()) return EnterSubgoal(now);
+  MaybeRequestModel();
+  return {};
+}
+
+std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t graph_revision,
+                                                       const SlowDecision& decision) {
+  awaiting_model_ = false;
+  if (progress_.state != TaskState::kRunning || progress_.target.has_value()) return {};
+  if (decision.action == SlowAction::kExplore || excluded_.count(decision.object_id) > 0) {
+    progress_.reason = absl::StrCat("model: keep exploring (", decision.explanation, ")");
+    return {};
+  }
+  const SceneObject* object = graph_.FindObject(decision.object_id);
+  if (object == nullptr) {
+    progress_.reason = absl::StrCat("model answer for revision ", graph_revision, " names a vanished object");
+    return {};
+  }
+  // A vision-verify answer is only a candidate: the VERIFY subgoal confirms or rejects it.
+  progress_.target = LocatedTarget{object->id, object->position, decision.confidence, "slow", 0};
+  const bool searching = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
+  return searching ? EnterSubgoal(now) : std::vector<RobotCommand>{};
+}
+
+std::vector<RobotCommand> TaskExecutor::OnVisionVerdict(double now, bool confirmed) {
+  if (progress_.state != TaskState::kRunning || phase_ != Phase::kVerifying) return {};
+  if (confirmed) {
+    return CheckSuccessOrApproach(now);
+  }
+  excluded_.insert(progress_.target->object_id);
+  const std::string reason = absl::StrCat("object ", progress_.target->object_id, " not confirmed");
+  progress_.target.reset();
+  for (int i = 0; i < static_cast<int>(subgoals_.size()); ++i) {
+    const SubgoalType type = subgoals_[static_cast<std::size_t>(i)].type;
+    if (type == SubgoalType::kFind || (type == SubgoalType::kNavigate && !subgoals_[static_cast<std::size_t>(i)].target.is_room)) {
+      progress_.subgoal_index = i;
+      break;
+    }
+  }
+  return Replan(now, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::Pause() {
+  if (progress_.state != TaskState::kRunning) return {};
+  return Halt(TaskState::kPaused, CommandKind::kHold, "task paused");
+}
+
+std::vector<RobotCommand> TaskExecutor::Resume(double now) {
+  if (progress_.state != TaskState::kPaused) return {};
+  progress_.state = TaskState::kRunning;
+  return EnterSubgoal(now);
+}
+
+std::vector<RobotCommand> TaskExecutor::Cancel(const std::string& reason) {
+  if (finished()) return {};
+  std::vector<RobotCommand> stop = Fail(reason);
+  progress_.state = TaskState::kCancelled;
+  return stop;
+}
+
+std::vector<RobotCommand> TaskExecutor::Retarget(double now, const TargetSpec& target, bool exclude_current) {
+  if (finished()) return {};
+  if (exclude_current && progress_.target.has_value()) excluded_.insert(progress_.target->object_id);
+  progress_.target.reset();
+  int first = -1;
+  for (int i = 0; i < static_cast<int>(subgoals_.size()); ++i) {
+    Subgoal& goal = subgoals_[static_cast<std::size_t>(i)];
+    if (goal.target.empty() || goal.target.is_room) continue;
+    goal.target = target;
+    if (first < 0) first = i;
+  }
+  if (first >= 0 && first < progress_.subgoal_index) progress_.subgoal_index = first;
+  progress_.replans = 0;
+  progress_.reason = "target corrected";
+  return progress_.state == TaskState::kRunning ? EnterSubgoal(now) : std::vector<RobotCommand>{};
+}
+
+}  // namespace semnav::reasoning

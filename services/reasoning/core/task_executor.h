@@ -1,0 +1,152 @@
+// Per-task state machine over the action primitives (seed 002, 3.2.5, LOVON): NAVIGATE (goal with
+// yaw toward the target), APPROACH (stop 0.5 m away at 0.15 m/s), LOOK_AROUND (0.5 rad/s for 12 s),
+// VERIFY (turn to face, confirm by new detections or the vision model), BACKTRACK, EXPLORE,
+// WAIT; with timeouts, re-planning on failure, and success = stopped within 1 m of a verified
+// target (seed 004). Goal resolution uses the fast path; when it is not confident the executor
+// keeps exploring and offers a slow-path model request that the server runs asynchronously
+// (seed 000, 3.5: the model never blocks motion).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "services/reasoning/core/fast_resolver.h"
+#include "services/reasoning/core/navigation_interfaces.h"
+#include "services/reasoning/core/robot_types.h"
+#include "services/reasoning/core/scene_graph.h"
+#include "services/reasoning/core/selective_grounding.h"
+#include "services/reasoning/core/slow_answer.h"
+#include "services/reasoning/core/subgoal.h"
+#include "services/reasoning/core/topological_memory.h"
+
+namespace semnav::reasoning {
+
+struct ExecutorConfig {
+  double approach_speed_mps = 0.15;      // APPROACH speed (LOVON)
+  double look_around_rate_rps = 0.5;     // LOOK_AROUND angular speed
+  double look_around_duration_s = 12.0;  // seed 002: 12 s ~ one turn
+  double navigate_standoff_m = 1.0;      // NAVIGATE to an object stops this far from it
+  double navigate_timeout_s = 120.0;     // per motion command before re-planning
+  double verify_timeout_s = 10.0;        // VERIFY gives up (object rejected) after this
+  int verify_detections = 2;             // new detections of the target that confirm it
+  double wait_duration_s = 5.0;          // WAIT default
+  double success_radius_m = 1.0;         // seed 004: success within 1 m of the target
+  int max_replans = 3;                   // failures of one subgoal before the task fails
+  int max_explore_goals = 30;            // exploration goals per search before giving up
+  double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
+  bool model_available = false;          // offer slow-path model requests
+  int grounding_max_objects = 15;        // ESCA budget of a slow-path request
+  bool multi_modal = false;              // the robot can fly-roll: plan multi-modal paths
+  double robot_radius_m = 0.0;           // the robot's footprint radius for path planning
+};
+
+enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
+
+struct LocatedTarget {
+  int64_t object_id = -1;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double confidence = 0.0;
+  std::string path;  // "fast" or "slow"
+  int detections_at_verify = 0;
+};
+
+struct TaskProgress {
+  TaskState state = TaskState::kRunning;
+  int subgoal_index = 0;                  // index into the subgoal list
+  std::string phase;                      // e.g. "navigating", "exploring", "verifying"
+  std::string reason;                     // latest decision or failure reason
+  std::optional<LocatedTarget> target;
+  int replans = 0;
+  int explore_goals = 0;
+  int model_requests = 0;
+  std::vector<Eigen::Vector3d> path;      // the active navigate path
+};
+
+// A slow-path model call the server should run without blocking the executor.
+struct ModelRequest {
+  uint64_t graph_revision = 0;
+  ResolveRequest request;  // prose + match_target task for the model proxy
+  SceneGraph grounded;  // ESCA subgraph the answer must refer to
+};
+
+class TaskExecutor {
+ public:
+  // All pointers must outlive the executor; `memory` may be null.
+  TaskExecutor(std::string instruction, std::vector<Subgoal> subgoals, const FastResolver* resolver,
+               PathPlanner* planner, const TopologicalMemory* memory, ExecutorConfig config);
+
+  // Each event returns the commands to send to the robot now (possibly none). `now` is monotonic
+  // seconds.
+  std::vector<RobotCommand> Start(double now, const RobotPose& pose);
+  std::vector<RobotCommand> OnPose(double now, const RobotPose& pose);
+  std::vector<RobotCommand> OnFeedback(double now, uint64_t command_id, RobotFeedback feedback);
+  std::vector<RobotCommand> OnSceneGraph(double now, const SceneGraph& graph);
+  std::vector<RobotCommand> OnSlowDecision(double now, uint64_t graph_revision, const SlowDecision& decision);
+  std::vector<RobotCommand> OnVisionVerdict(double now, bool confirmed);
+  std::vector<RobotCommand> Pause();
+  std::vector<RobotCommand> Resume(double now);
+  std::vector<RobotCommand> Cancel(const std::string& reason);
+  // Replace the target of the remaining subgoals (multi-turn correction).
+  std::vector<RobotCommand> Retarget(double now, const TargetSpec& target, bool exclude_current);
+
+  // The robot's modality and footprint for path planning (known once its session opened).
+  void SetMobility(bool multi_modal, double robot_radius_m) {
+    config_.multi_modal = multi_modal;
+    config_.robot_radius_m = robot_radius_m;
+  }
+
+  // A pending slow-path request, handed out once.
+  std::optional<ModelRequest> TakeModelRequest();
+  const TaskProgress& progress() const { return progress_; }
+  const std::vector<Subgoal>& subgoals() const { return subgoals_; }
+  bool finished() const;
+
+ private:
+  enum class Phase { kIdle, kMoving, kRotating, kWaiting, kExploring, kExploreScan, kVerifying };
+
+  std::vector<RobotCommand> EnterSubgoal(double now);
+  std::vector<RobotCommand> NextSubgoal(double now, const std::string& reason);
+  RobotCommand NewCommand(CommandKind kind, const std::string& reason);
+  std::vector<RobotCommand> Halt(TaskState state, CommandKind kind, const std::string& reason);
+  std::vector<RobotCommand> Fail(const std::string& reason);
+  std::vector<RobotCommand> Replan(double now, const std::string& reason);
+  std::vector<RobotCommand> Search(double now);
+  absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(const Eigen::Vector3d& goal, Phase phase);
+  std::vector<RobotCommand> Explore(double now);
+  std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
+                                   Phase phase, const std::string& reason);
+  std::vector<RobotCommand> Rotate(double now, double rate, double duration, Phase phase, const std::string& reason);
+  std::vector<RobotCommand> Hold(double now, double duration, const std::string& reason);
+  std::vector<RobotCommand> CheckSuccessOrApproach(double now);
+  bool TryResolve();
+  void MaybeRequestModel();
+  const Subgoal& current() const { return subgoals_[static_cast<std::size_t>(progress_.subgoal_index)]; }
+  const TargetSpec& ActiveTarget() const;
+  double YawTo(const Eigen::Vector3d& point) const;
+
+  std::string instruction_;
+  std::vector<Subgoal> subgoals_;
+  const FastResolver* resolver_;
+  PathPlanner* planner_;
+  const TopologicalMemory* memory_;
+  ExecutorConfig config_;
+
+  TaskProgress progress_;
+  Phase phase_ = Phase::kIdle;
+  RobotPose pose_;
+  SceneGraph graph_;
+  std::set<int64_t> excluded_;
+  uint64_t next_command_id_ = 1;
+  uint64_t active_command_ = 0;
+  double phase_deadline_ = 0.0;
+  uint64_t requested_revision_ = 0;
+  bool awaiting_model_ = false;
+  std::optional<ModelRequest> pending_request_;
+};
+
+std::string_view TaskStateName(TaskState state);
+
+}  // namespace semnav::reasoning

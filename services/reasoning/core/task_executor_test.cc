@@ -1,0 +1,335 @@
+#include "services/reasoning/core/task_executor.h"
+
+#include <deque>
+
+#include "absl/strings/match.h"
+#include "gtest/gtest.h"
+#include "services/reasoning/testing/test_lexicon.h"
+
+namespace semnav::reasoning {
+namespace {
+
+// Straight-line paths; exploration goals from a script, NOT_FOUND when it runs out. Records every
+// query; `failures` are returned (in order) before any path.
+class ScriptedPlanner : public PathPlanner {
+ public:
+  absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
+    queries.push_back(query);
+    if (!failures.empty()) {
+      absl::Status failure = failures.front();
+      failures.pop_front();
+      return failure;
+    }
+    if (unreachable) return absl::NotFoundError("goal unreachable");
+    if (query.alternative_from.has_value()) return std::vector<Eigen::Vector3d>{query.start, alternative_point};
+    return std::vector<Eigen::Vector3d>{query.start, query.goal};
+  }
+  std::vector<PathQuery> queries;
+  std::deque<absl::Status> failures;
+  Eigen::Vector3d alternative_point = Eigen::Vector3d::Zero();
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose&) override {
+    if (frontiers.empty()) return absl::NotFoundError("no frontier");
+    Eigen::Vector3d goal = frontiers.front();
+    frontiers.pop_front();
+    return goal;
+  }
+  std::deque<Eigen::Vector3d> frontiers;
+  bool unreachable = false;
+};
+
+SceneObject Extinguisher(int detections) {
+  SceneObject object;
+  object.id = 7;
+  object.label = "fire extinguisher";
+  object.attributes = {"red"};
+  object.position = Eigen::Vector3d(5, 0, 0);
+  object.score = 0.9;
+  object.detection_count = detections;
+  return object;
+}
+
+SceneGraph GraphWith(std::vector<SceneObject> objects, uint64_t revision) {
+  SceneGraph graph;
+  graph.revision = revision;
+  graph.objects = std::move(objects);
+  return graph;
+}
+
+RobotPose At(double x, double y = 0.0) {
+  RobotPose pose;
+  pose.position = Eigen::Vector3d(x, y, 0);
+  return pose;
+}
+
+TargetSpec RedExtinguisher() {
+  TargetSpec target;
+  target.name = "fire extinguisher";
+  target.colours = {"red"};
+  return target;
+}
+
+std::vector<Subgoal> GoToTarget() {  // "go to the red fire extinguisher"
+  std::vector<Subgoal> goals(3);
+  goals[0].type = SubgoalType::kNavigate;
+  goals[1].type = SubgoalType::kApproach;
+  goals[1].distance_m = 0.5;
+  goals[2].type = SubgoalType::kVerify;
+  for (Subgoal& goal : goals) goal.target = RedExtinguisher();
+  return goals;
+}
+
+std::vector<Subgoal> FindTarget() {  // "find the red fire extinguisher"
+  std::vector<Subgoal> goals = GoToTarget();
+  goals[0].type = SubgoalType::kFind;
+  Subgoal look;
+  look.type = SubgoalType::kLookAround;
+  goals.insert(goals.begin() + 1, look);
+  return goals;
+}
+
+SubgoalType current_type(const TaskExecutor& task) {
+  return task.subgoals()[static_cast<std::size_t>(task.progress().subgoal_index)].type;
+}
+
+class GatewayTaskExecutorTest : public ::testing::Test {
+ protected:
+  TaskExecutor Make(std::vector<Subgoal> goals, ExecutorConfig config = {}) {
+    return TaskExecutor("instruction", std::move(goals), &resolver_, &planner_, nullptr, config);
+  }
+  FastResolver resolver_{&ShippedLexicon(), FastResolverConfig{}};
+  ScriptedPlanner planner_;
+};
+
+TEST_F(GatewayTaskExecutorTest, NavigateApproachVerifySucceedsWithinOneMetre) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4, 0, 0)));  // 1 m stand-off
+  EXPECT_DOUBLE_EQ(out[0].goal_yaw, 0.0);                       // facing the target
+  EXPECT_EQ(out[0].path.size(), 2u);
+  EXPECT_EQ(task.progress().target->path, "fast");
+
+  task.OnPose(5, At(4));
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().subgoal_index, 1);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));  // APPROACH stops 0.5 m away
+  EXPECT_DOUBLE_EQ(out[0].max_speed, 0.15);
+
+  task.OnPose(9, At(4.5));
+  out = task.OnFeedback(9, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));  // turn in place
+  EXPECT_TRUE(task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached).empty());
+  EXPECT_TRUE(task.OnSceneGraph(10, GraphWith({Extinguisher(16)}, 2)).empty());  // one new detection
+  out = task.OnSceneGraph(11, GraphWith({Extinguisher(17)}, 3));                 // two: verified
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppears) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.model_available = true;
+  TaskExecutor task = Make(FindTarget(), config);
+  SceneObject chair;
+  chair.id = 1;
+  chair.label = "chair";
+  task.OnSceneGraph(0, GraphWith({chair}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_EQ(task.progress().phase, "exploring");
+  // The slow path is offered once for this graph revision and does not block motion.
+  std::optional<ModelRequest> request = task.TakeModelRequest();
+  ASSERT_TRUE(request.has_value());
+  EXPECT_TRUE(absl::StrContains(request->request.prose, "instruction"));
+  EXPECT_TRUE(absl::StrContains(request->request.task_json, "\"target\":\"red fire extinguisher\""));
+  EXPECT_FALSE(task.TakeModelRequest().has_value());
+
+  out = task.OnFeedback(20, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);  // look around at the frontier
+  EXPECT_DOUBLE_EQ(out[0].angular_speed, 0.5);
+  EXPECT_DOUBLE_EQ(out[0].duration_s, 12.0);
+  EXPECT_TRUE(task.OnPose(31, At(10)).empty());
+  out = task.OnPose(32, At(10));  // 12 s elapsed: next exploration goal
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+
+  out = task.OnSceneGraph(33, GraphWith({chair, Extinguisher(12)}, 2));
+  ASSERT_EQ(out.size(), 1u);  // FIND done, LOOK_AROUND skipped, APPROACH issued
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  EXPECT_DOUBLE_EQ(out[0].max_speed, 0.15);
+}
+
+TEST_F(GatewayTaskExecutorTest, SlowPathAnswerProvidesTheGoal) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0)};
+  ExecutorConfig config;
+  config.model_available = true;
+  TaskExecutor task = Make(GoToTarget(), config);
+  SceneObject unsure = Extinguisher(1);  // fused 0.7 + 0.15 * 0.09 < 0.75: not fast
+  task.OnSceneGraph(0, GraphWith({unsure}, 1));
+  task.Start(0, At(0));
+  ASSERT_TRUE(task.TakeModelRequest().has_value());
+  SlowDecision decision;
+  decision.action = SlowAction::kGoal;
+  decision.object_id = 7;
+  decision.confidence = 0.8;
+  std::vector<RobotCommand> out = task.OnSlowDecision(2, 1, decision);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4, 0, 0)));
+  EXPECT_EQ(task.progress().target->path, "slow");
+}
+
+TEST_F(GatewayTaskExecutorTest, FailuresReplanThenFail) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  out = task.OnPose(121, At(1));  // navigate timeout: re-plan
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().replans, 1);
+  EXPECT_TRUE(task.OnFeedback(122, out[0].id - 1, RobotFeedback::kBlocked).empty());  // stale id ignored
+  out = task.OnFeedback(122, out[0].id, RobotFeedback::kBlocked);
+  out = task.OnFeedback(123, out[0].id, RobotFeedback::kFailed);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  out = task.OnFeedback(124, out[0].id, RobotFeedback::kBlocked);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kFailed);
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "gave up after 3 re-plans"));
+}
+
+TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetIsRejectedAndSearchResumes) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0)};
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  task.Start(0, At(4.5));  // already 0.5 m away: NAVIGATE and APPROACH complete at once
+  EXPECT_EQ(current_type(task), SubgoalType::kVerify);
+  std::vector<RobotCommand> out = task.OnPose(11, At(4.5));  // 10 s without new detections
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().subgoal_index, 0);
+  EXPECT_FALSE(task.progress().target.has_value());
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));  // object 7 excluded: explore
+}
+
+TEST_F(GatewayTaskExecutorTest, PauseResumeCancelAndCorrection) {
+  TaskExecutor task = Make(GoToTarget());
+  SceneObject blue = Extinguisher(15);
+  blue.id = 8;
+  blue.attributes = {"blue"};
+  blue.position = Eigen::Vector3d(0, 5, 0);
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15), blue}, 1));
+  task.Start(0, At(0));
+  std::vector<RobotCommand> out = task.Pause();
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  EXPECT_EQ(task.progress().state, TaskState::kPaused);
+  out = task.Resume(1);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  // "not that one, the blue one"
+  TargetSpec blue_target = RedExtinguisher();
+  blue_target.colours = {"blue"};
+  out = task.Retarget(2, blue_target, true);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 4, 0)));
+  EXPECT_EQ(task.progress().target->object_id, 8);
+  out = task.Cancel("operator cancelled");
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kCancelled);
+  EXPECT_TRUE(task.Resume(3).empty());
+}
+
+TEST_F(GatewayTaskExecutorTest, LookAroundAndWaitAreTimed) {
+  std::vector<Subgoal> goals(2);
+  goals[0].type = SubgoalType::kLookAround;
+  goals[1].type = SubgoalType::kWait;
+  TaskExecutor task = Make(goals);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  out = task.OnPose(12, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  EXPECT_DOUBLE_EQ(out[0].duration_s, 5.0);
+  out = task.OnPose(17, At(0));
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
+
+namespace semnav::reasoning {
+namespace {
+
+TEST_F(GatewayTaskExecutorTest, NavigateCarriesThePlannedPathAndTheRobotsModality) {
+  ExecutorConfig config;
+  config.multi_modal = true;
+  config.robot_radius_m = 0.3;
+  TaskExecutor task = Make(GoToTarget(), config);
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0, 1));
+  ASSERT_EQ(planner_.queries.size(), 1u);
+  const PathQuery& query = planner_.queries[0];
+  EXPECT_TRUE(query.multi_modal);
+  EXPECT_DOUBLE_EQ(query.robot_radius_m, 0.3);
+  EXPECT_TRUE(query.start.isApprox(Eigen::Vector3d(0, 1, 0)));
+  // Target (5, 0) from (0, 1): distance sqrt(26), 1 m stand-off along the line.
+  const Eigen::Vector3d stop = Eigen::Vector3d(5, 0, 0) - Eigen::Vector3d(5, -1, 0) / std::sqrt(26.0);
+  EXPECT_TRUE(query.goal.isApprox(stop));
+  EXPECT_FALSE(query.alternative_from.has_value());
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].path.size(), 2u);
+  EXPECT_TRUE(out[0].path.back().isApprox(stop));
+  EXPECT_EQ(task.progress().path.size(), 2u);
+}
+
+TEST_F(GatewayTaskExecutorTest, OccupiedGoalIsReplannedWithTheAlternativePoint) {
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};
+  planner_.alternative_point = Eigen::Vector3d(3.5, 0.5, 0);
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(planner_.queries.size(), 2u);
+  ASSERT_TRUE(planner_.queries[1].alternative_from.has_value());
+  EXPECT_TRUE(planner_.queries[1].alternative_from->isApprox(Eigen::Vector3d::Zero()));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(3.5, 0.5, 0)));  // the planned goal, not the occupied one
+  EXPECT_EQ(task.progress().replans, 0);
+}
+
+TEST_F(GatewayTaskExecutorTest, NoPathToTheTargetExploresInstead) {
+  planner_.failures = {absl::NotFoundError("no path")};
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_EQ(task.progress().replans, 1);
+  EXPECT_EQ(task.progress().explore_goals, 1);
+}
+
+TEST_F(GatewayTaskExecutorTest, BlockedFeedbackPlansAgainFromTheCurrentPose) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(2, At(1, 0.5));
+  out = task.OnFeedback(2, out[0].id, RobotFeedback::kBlocked);
+  ASSERT_EQ(planner_.queries.size(), 2u);
+  EXPECT_TRUE(planner_.queries[1].start.isApprox(Eigen::Vector3d(1, 0.5, 0)));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].path.front().isApprox(Eigen::Vector3d(1, 0.5, 0)));
+  EXPECT_EQ(task.progress().replans, 1);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning

@@ -1,0 +1,48 @@
+// semnav-gateway: semantic reasoning and task orchestration (operator API + robot sessions).
+#include <memory>
+
+#include "services/common/server/service_binary.h"
+#include "services/common/client/channel.h"
+#include "services/reasoning/server/gateway_hub.h"
+#include "services/reasoning/server/mapping_watcher.h"
+#include "services/reasoning/server/operator_service.h"
+#include "services/reasoning/server/planning_client.h"
+#include "services/reasoning/server/robot_local_planner.h"
+#include "services/reasoning/server/robot_session_service.h"
+
+namespace {
+
+absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
+  using namespace semnav::reasoning;
+  const GatewayConfig config = GatewayConfig::FromYaml(section);
+  absl::StatusOr<Lexicon> lexicon = Lexicon::Load(config.lexicon_path);
+  if (!lexicon.ok()) return lexicon.status();
+  // Lexicon and planner live as long as the process; the hub refers to them.
+  static const Lexicon* shared_lexicon = new Lexicon(*std::move(lexicon));
+  static PathPlanner* planner = new RobotLocalPlanner();
+  if (!config.planning.channel.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.planning.channel);
+    if (!channel.ok()) return channel.status();
+    planner = new PlanningClient(*channel, config.planning);
+  }
+  auto hub = std::make_shared<GatewayHub>(config, shared_lexicon, planner);
+  host.AddService(std::make_unique<OperatorServiceImpl>(hub), "semnav.reasoning.v1.OperatorService");
+  host.AddService(std::make_unique<RobotSessionServiceImpl>(hub), "semnav.reasoning.v1.RobotSessionService");
+  host.OnShutdown([hub] { hub->Shutdown(); });
+  if (!config.mapping.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.mapping);
+    if (!channel.ok()) return channel.status();
+    auto watcher = std::make_shared<MappingWatcher>(*channel, [hub](const SceneGraph& graph) { hub->OnSceneGraph(graph); });
+    host.OnShutdown([watcher] { watcher->Stop(); });  // runs before the hub's hook
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return semnav::RunServiceBinary(
+      argc, argv,
+      {"semnav-gateway", "semantic reasoning gateway: instructions -> subgoals -> goals -> robot commands",
+       "127.0.0.1:50050", "gateway", Setup});
+}

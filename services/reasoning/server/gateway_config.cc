@@ -1,0 +1,84 @@
+#include "services/reasoning/server/gateway_config.h"
+
+namespace semnav::reasoning {
+
+GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
+  GatewayConfig c;
+  ConfigReader decomposer = section.Child("decomposer");
+  decomposer.Read("approach_distance_m", &c.decomposer.approach_distance_m)
+      .Read("max_simple_unknown_words", &c.decomposer.max_simple_unknown_words);
+  decomposer.Check(c.decomposer.approach_distance_m > 0.0, "approach_distance_m", "must be > 0");
+
+  ConfigReader fast = section.Child("fast_path");
+  fast.Read("label_weight", &c.fast_path.label_weight)
+      .Read("embedding_weight", &c.fast_path.embedding_weight)
+      .Read("detector_weight", &c.fast_path.detector_weight)
+      .Read("spatial_weight", &c.fast_path.spatial_weight)
+      .Read("fast_threshold", &c.fast_path.fast_threshold)
+      .Read("detection_count_saturation", &c.fast_path.detection_count_saturation)
+      .Read("unknown_colour_factor", &c.fast_path.unknown_colour_factor);
+  fast.Check(c.fast_path.detection_count_saturation > 0, "detection_count_saturation", "must be > 0");
+  fast.Check(c.fast_path.fast_threshold >= 0.0 && c.fast_path.fast_threshold <= 1.0, "fast_threshold",
+             "must be in [0, 1]");
+
+  ConfigReader slow = section.Child("slow_path");
+  slow.Read("confidence_threshold", &c.slow_path.confidence_threshold)
+      .Read("vision_threshold", &c.slow_path.vision_threshold)
+      .Read("vision_enabled", &c.slow_path.vision_enabled)
+      .Read("offline_confidence_factor", &c.slow_path.offline_confidence_factor);
+
+  ConfigReader executor = section.Child("executor");
+  executor.Read("approach_speed_mps", &c.executor.approach_speed_mps)
+      .Read("look_around_rate_rps", &c.executor.look_around_rate_rps)
+      .Read("look_around_duration_s", &c.executor.look_around_duration_s)
+      .Read("navigate_standoff_m", &c.executor.navigate_standoff_m)
+      .Read("navigate_timeout_s", &c.executor.navigate_timeout_s)
+      .Read("verify_timeout_s", &c.executor.verify_timeout_s)
+      .Read("verify_detections", &c.executor.verify_detections)
+      .Read("wait_duration_s", &c.executor.wait_duration_s)
+      .Read("success_radius_m", &c.executor.success_radius_m)
+      .Read("max_replans", &c.executor.max_replans)
+      .Read("max_explore_goals", &c.executor.max_explore_goals)
+      .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
+      .Read("grounding_max_objects", &c.executor.grounding_max_objects);
+  executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
+  executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
+
+  ConfigReader memory = section.Child("memory");
+  memory.Read("node_spacing_m", &c.memory.node_spacing_m)
+      .Read("max_nodes", &c.memory.max_nodes)
+      .Read("sectors", &c.memory.sectors);
+  memory.Check(c.memory.node_spacing_m > 0.0, "node_spacing_m", "must be > 0");
+
+  if (section.Has("mapping")) {  // absent: no scene graph, the gateway explores
+    ConfigReader mapping = section.Child("mapping");
+    c.mapping = ClientOptions::FromConfig(mapping, ClientOptions{});
+  }
+
+  if (section.Has("planning")) {  // absent: the robot plans locally
+    ConfigReader planning = section.Child("planning");
+    c.planning.channel = ClientOptions::FromConfig(planning, ClientOptions{});
+    planning.Read("exploration_strategy", &c.planning.exploration_strategy)
+        .Read("deadline_ms", &c.planning.deadline_ms)
+        .Read("goal_tolerance_m", &c.planning.goal_tolerance_m);
+    const std::string& strategy = c.planning.exploration_strategy;
+    planning.Check(strategy == "NEAREST_FRONTIER" || strategy == "COVERAGE_MAX" || strategy == "SEMANTIC_FRONTIER" ||
+                       strategy == "EROI_UTILITY",
+                   "exploration_strategy", "must be NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY");
+    planning.Check(c.planning.deadline_ms > 0, "deadline_ms", "must be > 0");
+    planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
+  }
+
+  section.Read("default_lease_ttl_s", &c.default_lease_ttl_s)
+      .Read("max_lease_ttl_s", &c.max_lease_ttl_s)
+      .Read("retained_events", &c.retained_events)
+      .Read("idempotency_entries", &c.idempotency_entries)
+      .Read("memory_label_radius_m", &c.memory_label_radius_m)
+      .Read("lexicon_path", &c.lexicon_path);
+  section.Check(c.default_lease_ttl_s >= 1.0 && c.default_lease_ttl_s <= c.max_lease_ttl_s, "default_lease_ttl_s",
+                "must be in [1, max_lease_ttl_s]");
+  section.Check(c.retained_events > 0, "retained_events", "must be > 0");
+  return c;
+}
+
+}  // namespace semnav::reasoning

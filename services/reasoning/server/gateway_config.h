@@ -1,0 +1,47 @@
+// Settings of semnav-gateway (YAML section "gateway"); every default is the seed's value.
+#pragma once
+
+#include <string>
+
+#include "absl/status/statusor.h"
+#include "services/common/client/channel.h"
+#include "services/common/config/config_reader.h"
+#include "services/reasoning/core/fast_resolver.h"
+#include "services/reasoning/core/slow_answer.h"
+#include "services/reasoning/core/task_decomposer.h"
+#include "services/reasoning/core/task_executor.h"
+#include "services/reasoning/core/topological_memory.h"
+
+namespace semnav::reasoning {
+
+// The planning service (section "planning"). No address = no planning: the robot plans every
+// path locally and exploration steps toward the topological memory's least-explored sector.
+struct PlanningSettings {
+  ClientOptions channel;                                 // address empty = no planning service
+  std::string exploration_strategy = "SEMANTIC_FRONTIER";  // NEAREST_FRONTIER, COVERAGE_MAX,
+                                                         // SEMANTIC_FRONTIER or EROI_UTILITY
+  int deadline_ms = 2000;                                // per PlanPath / SelectExplorationGoal
+  double goal_tolerance_m = 0.0;  // an occupied goal may move this far; 0 = use the alternative point
+};
+
+struct GatewayConfig {
+  DecomposerConfig decomposer;
+  FastResolverConfig fast_path;
+  SlowPathConfig slow_path;
+  ExecutorConfig executor;
+  TopologicalMemoryConfig memory;
+  double default_lease_ttl_s = 30.0;  // AcquireLease without ttl
+  double max_lease_ttl_s = 600.0;     // longest lease
+  int retained_events = 10000;        // event log replay window
+  int idempotency_entries = 4096;     // remembered request_ids
+  std::string lexicon_path = Lexicon::DefaultPath();  // bilingual lexicon (TSV); default: the source tree's
+  ClientOptions mapping;              // mapping service; empty address = no scene graph
+  PlanningSettings planning;
+  double memory_label_radius_m = 3.0;  // scene-graph objects this close count as seen at a memory
+                                       // node (no per-frame visibility reaches the gateway)
+
+  // Reads the keys it knows and records bad values on `section` (reported by Finish()).
+  static GatewayConfig FromYaml(ConfigReader& section);
+};
+
+}  // namespace semnav::reasoning

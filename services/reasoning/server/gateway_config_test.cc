@@ -1,0 +1,71 @@
+#include "services/reasoning/server/gateway_config.h"
+
+#include "absl/strings/match.h"
+#include "gtest/gtest.h"
+
+namespace semnav::reasoning {
+namespace {
+
+TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
+  ConfigReader empty = ConfigReader::Empty();
+  const GatewayConfig config = GatewayConfig::FromYaml(empty);
+  ASSERT_TRUE(empty.Finish().ok());
+  EXPECT_DOUBLE_EQ(config.fast_path.label_weight, 0.35);
+  EXPECT_DOUBLE_EQ(config.fast_path.embedding_weight, 0.35);
+  EXPECT_DOUBLE_EQ(config.fast_path.detector_weight, 0.15);
+  EXPECT_DOUBLE_EQ(config.fast_path.spatial_weight, 0.15);
+  EXPECT_DOUBLE_EQ(config.fast_path.fast_threshold, 0.75);
+  EXPECT_DOUBLE_EQ(config.slow_path.confidence_threshold, 0.6);
+  EXPECT_DOUBLE_EQ(config.slow_path.vision_threshold, 0.5);
+  EXPECT_DOUBLE_EQ(config.executor.approach_speed_mps, 0.15);
+  EXPECT_DOUBLE_EQ(config.executor.look_around_rate_rps, 0.5);
+  EXPECT_DOUBLE_EQ(config.executor.success_radius_m, 1.0);
+  EXPECT_DOUBLE_EQ(config.memory.node_spacing_m, 2.0);
+  EXPECT_EQ(config.memory.max_nodes, 500);
+  EXPECT_TRUE(config.mapping.address.empty());
+  EXPECT_TRUE(config.planning.channel.address.empty());  // no planning: the robot plans locally
+  EXPECT_EQ(config.planning.exploration_strategy, "SEMANTIC_FRONTIER");
+}
+
+TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
+  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+      "planning: {address: 127.0.0.1:50052, exploration_strategy: EROI_UTILITY, deadline_ms: 500}\n");
+  ASSERT_TRUE(reader.ok());
+  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  EXPECT_EQ(config.planning.channel.address, "127.0.0.1:50052");
+  EXPECT_EQ(config.planning.exploration_strategy, "EROI_UTILITY");
+  EXPECT_EQ(config.planning.deadline_ms, 500);
+
+  absl::StatusOr<ConfigReader> bad =
+      ConfigReader::FromString("planning: {address: 127.0.0.1:50052, exploration_strategy: RANDOM}\n");
+  ASSERT_TRUE(bad.ok());
+  GatewayConfig::FromYaml(*bad);
+  const absl::Status status = bad->Finish();
+  EXPECT_FALSE(status.ok());
+  EXPECT_TRUE(absl::StrContains(status.message(), "planning.exploration_strategy")) << status;
+}
+
+TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
+  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+      "fast_path: {fast_threshold: 0.8}\nexecutor: {success_radius_m: 0.5}\nmapping: {address: 127.0.0.1:50051}\n");
+  ASSERT_TRUE(reader.ok());
+  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  EXPECT_DOUBLE_EQ(config.fast_path.fast_threshold, 0.8);
+  EXPECT_DOUBLE_EQ(config.executor.success_radius_m, 0.5);
+  EXPECT_EQ(config.mapping.address, "127.0.0.1:50051");
+
+  for (const char* yaml : {"fast_path: {fast_threshold: 1.5}", "executor: {success_radius_m: 0}",
+                           "fast_path: {fast_treshold: 0.8}"}) {
+    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
+    ASSERT_TRUE(bad.ok());
+    GatewayConfig::FromYaml(*bad);
+    const absl::Status status = bad->Finish();
+    EXPECT_FALSE(status.ok()) << yaml;
+    EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'f' ? "fast_path." : "executor.")) << status;
+  }
+}
+
+}  // namespace
+}  // namespace semnav::reasoning

@@ -1,0 +1,156 @@
+// The gateway's shared state behind both services: robots and their sessions, tasks and their
+// executors, leases, the event log and idempotency. One mutex guards everything; stream sinks
+// are called under it and only queue.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <thread>
+
+#include "absl/status/statusor.h"
+#include "absl/synchronization/mutex.h"
+#include "absl/time/time.h"
+#include "semnav/reasoning/v1/operator.pb.h"
+#include "semnav/reasoning/v1/robot_session.pb.h"
+#include "services/reasoning/core/event_log.h"
+#include "services/reasoning/core/lease_table.h"
+#include "services/reasoning/core/request_cache.h"
+#include "services/reasoning/core/task_decomposer.h"
+#include "services/reasoning/core/task_executor.h"
+#include "services/reasoning/core/topological_memory.h"
+#include "services/reasoning/server/gateway_config.h"
+#include "services/reasoning/server/stream_sink.h"
+
+namespace semnav::reasoning {
+
+namespace api = ::semnav::reasoning::v1;
+
+class GatewayHub {
+ public:
+  // `lexicon` and `planner` must outlive the hub. Starts the 10 Hz ticker that drives executor
+  // timeouts and slow telemetry; Shutdown() stops it.
+  GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner);
+  ~GatewayHub();
+
+  absl::StatusOr<api::SubmitInstructionResponse> Submit(const api::SubmitInstructionRequest& request);
+  absl::StatusOr<api::TaskSnapshot> GetTask(const std::string& task_id);
+  absl::StatusOr<api::TaskSnapshot> Cancel(const api::CancelTaskRequest& request);
+  absl::StatusOr<api::TaskSnapshot> Pause(const api::PauseTaskRequest& request);
+  absl::StatusOr<api::TaskSnapshot> Resume(const api::ResumeTaskRequest& request);
+  absl::StatusOr<api::Lease> AcquireLease(const api::AcquireLeaseRequest& request);
+  absl::StatusOr<api::Lease> RenewLease(const api::RenewLeaseRequest& request);
+  void ReleaseLease(const std::string& lease_id);
+  absl::StatusOr<api::EmergencyStopResponse> EmergencyStop(const api::EmergencyStopRequest& request);
+  absl::Status ClearEmergencyStop(const api::ClearEmergencyStopRequest& request);
+  absl::StatusOr<api::DecomposeInstructionResponse> Decompose(const api::DecomposeInstructionRequest& request);
+  absl::StatusOr<api::ResolveTargetResponse> ResolveTarget(const api::ResolveTargetRequest& request);
+  // A new revision of mapping's scene graph (shared by all robots of this gateway).
+  void OnSceneGraph(const SceneGraph& graph);
+
+  // Streams. Watchers get the current snapshot / replayed events at once, then live ones; request
+  // errors close the sink with the error.
+  void WatchTask(const api::WatchTaskRequest& request, StreamSink<api::WatchTaskResponse>* sink);
+  void UnwatchTask(StreamSink<api::WatchTaskResponse>* sink);
+  void WatchEvents(const api::StreamEventsRequest& request, StreamSink<api::StreamEventsResponse>* sink);
+  void UnwatchEvents(StreamSink<api::StreamEventsResponse>* sink);
+
+  // Telemetry: fast samples on every robot state (throttled), slow samples every period.
+  void WatchFastTelemetry(const api::StreamFastTelemetryRequest& request,
+                          StreamSink<api::StreamFastTelemetryResponse>* sink);
+  void UnwatchFastTelemetry(StreamSink<api::StreamFastTelemetryResponse>* sink);
+  void WatchSlowTelemetry(const api::StreamSlowTelemetryRequest& request,
+                          StreamSink<api::StreamSlowTelemetryResponse>* sink);
+  void UnwatchSlowTelemetry(StreamSink<api::StreamSlowTelemetryResponse>* sink);
+
+  // Robot sessions.
+  absl::StatusOr<api::SessionAccepted> OpenSession(const api::SessionHello& hello,
+                                                   StreamSink<api::ConnectResponse>* sink);
+  void OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state);
+  void OnFeedback(StreamSink<api::ConnectResponse>* sink, const api::CommandFeedback& feedback);
+  void CloseSession(StreamSink<api::ConnectResponse>* sink);
+
+  // Ends every open stream (server shutdown).
+  void Shutdown();
+
+ private:
+  struct Robot {
+    StreamSink<api::ConnectResponse>* session = nullptr;
+    api::Capabilities capabilities;
+    RobotPose pose;
+    bool emergency_stop = false;
+    std::string active_task;
+    std::unique_ptr<TopologicalMemory> memory;
+    uint64_t next_command_id = 1;
+    uint64_t last_session_command = 0;   // id sent on the session
+    uint64_t last_executor_command = 0;  // the executor's id for it
+    api::RobotState last_state;
+    api::RobotCommand last_command;
+  };
+  template <typename Sink>
+  struct Subscription {
+    std::string robot_id;
+    absl::Duration interval;
+    absl::Time last_sent = absl::InfinitePast();
+  };
+  struct Task {
+    std::string task_id;
+    std::string robot_id;
+    std::string instruction;
+    std::string source;
+    std::unique_ptr<TaskExecutor> executor;
+    bool started = false;
+    bool paused_by_session = false;
+    uint64_t revision = 0;
+    absl::Time created;
+    absl::Time updated;
+    std::set<StreamSink<api::WatchTaskResponse>*> watchers;
+    std::string fingerprint;      // snapshot without revision/time, to detect changes
+    api::TaskSnapshot published;  // last snapshot sent to watchers
+  };
+
+  template <typename Request, typename Action>
+  absl::StatusOr<api::TaskSnapshot> ControlTask(const char* method, const Request& request, Action action);
+  double Now() const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  Robot& RobotRecord(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  absl::StatusOr<Task*> FindTask(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  api::TaskSnapshot Snapshot(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Sends the executor's commands to the robot, bumps the revision and notifies watchers.
+  void Apply(Task& task, const std::vector<RobotCommand>& commands) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void Tick() ABSL_LOCKS_EXCLUDED(mu_);
+  api::StreamSlowTelemetryResponse SlowSample(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id, std::string message)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  Robot* RobotOfSink(StreamSink<api::ConnectResponse>* sink, std::string* robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  absl::Status CheckControl(const std::string& robot_id, const std::string& lease_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+
+  const GatewayConfig config_;
+  const Lexicon* lexicon_;
+  PathPlanner* planner_;
+  const FastResolver resolver_;
+  const LabelMatcher matcher_;
+  const absl::Time start_;
+
+  absl::Mutex mu_;
+  std::unique_ptr<TaskDecomposer> decomposer_ ABSL_GUARDED_BY(mu_);
+  std::map<std::string, Robot> robots_ ABSL_GUARDED_BY(mu_);
+  std::map<std::string, Task> tasks_ ABSL_GUARDED_BY(mu_);
+  LeaseTable leases_ ABSL_GUARDED_BY(mu_);
+  EventLog events_ ABSL_GUARDED_BY(mu_);
+  RequestCache requests_ ABSL_GUARDED_BY(mu_);
+  std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_ ABSL_GUARDED_BY(mu_);
+  std::map<StreamSink<api::StreamFastTelemetryResponse>*, Subscription<api::StreamFastTelemetryResponse>>
+      fast_watchers_ ABSL_GUARDED_BY(mu_);
+  std::map<StreamSink<api::StreamSlowTelemetryResponse>*, Subscription<api::StreamSlowTelemetryResponse>>
+      slow_watchers_ ABSL_GUARDED_BY(mu_);
+  SceneGraph scene_graph_ ABSL_GUARDED_BY(mu_);
+  uint64_t fast_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
+  uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
+  uint64_t next_task_ ABSL_GUARDED_BY(mu_) = 1;
+  bool shut_down_ ABSL_GUARDED_BY(mu_) = false;
+  std::thread ticker_;
+};
+
+}  // namespace semnav::reasoning

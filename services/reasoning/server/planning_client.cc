@@ -1,0 +1,93 @@
+#include "services/reasoning/server/planning_client.h"
+
+#include <chrono>
+
+#include <grpcpp/client_context.h>
+
+#include "absl/strings/str_cat.h"
+#include "services/common/logging/log.h"
+#include "services/common/status/grpc_status.h"
+
+namespace semnav::reasoning {
+namespace {
+
+namespace pb = ::semnav::planning::v1;
+
+void SetPose(const Eigen::Vector3d& point, common::v1::Pose2D* out) {
+  out->set_x(point.x());
+  out->set_y(point.y());
+}
+
+void SetDeadline(grpc::ClientContext& context, int deadline_ms) {
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::milliseconds(deadline_ms));
+}
+
+}  // namespace
+
+PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings)
+    : channel_(channel), stub_(pb::PlanningService::NewStub(channel)), settings_(std::move(settings)) {
+  channel_->GetState(/*try_to_connect=*/true);
+  // GatewayConfig validated the name.
+  pb::ExplorationStrategy_Parse("EXPLORATION_STRATEGY_" + settings_.exploration_strategy, &strategy_);
+}
+
+bool PlanningClient::Ready(const char* call) {
+  if (channel_->GetState(/*try_to_connect=*/true) == GRPC_CHANNEL_READY) return true;
+  LogWarning("planning_not_connected", {{"call", call}, {"fallback", "robot plans locally"}});
+  return false;
+}
+
+absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuery& query) {
+  if (!Ready("PlanPath")) return std::vector<Eigen::Vector3d>{};
+  pb::PlanPathRequest request;
+  request.mutable_source()->mutable_live_map();
+  SetPose(query.start, request.mutable_start());
+  SetPose(query.goal, request.mutable_goal());
+  request.set_planner(query.multi_modal ? pb::PLANNER_KIND_JUMP_ASTAR : pb::PLANNER_KIND_JPS);
+  request.set_robot_radius_m(query.robot_radius_m);
+  request.set_goal_tolerance_m(settings_.goal_tolerance_m);
+  if (query.alternative_from.has_value()) {
+    request.set_allow_alternative_point(true);
+    SetPose(*query.alternative_from, request.mutable_first_sighting());
+  }
+  grpc::ClientContext context;
+  SetDeadline(context, settings_.deadline_ms);
+  const auto started = std::chrono::steady_clock::now();
+  pb::PlanPathResponse response;
+  const grpc::Status status = stub_->PlanPath(&context, request, &response);
+  if (!status.ok()) {
+    const std::optional<pb::PlanFailureDetail> detail = GetDetail<pb::PlanFailureDetail>(status);
+    const pb::PlanFailureReason reason = detail.has_value() ? detail->reason() : pb::PLAN_FAILURE_REASON_UNSPECIFIED;
+    if (reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED) return absl::FailedPreconditionError(status.error_message());
+    if (reason == pb::PLAN_FAILURE_REASON_NO_PATH) return absl::NotFoundError(status.error_message());
+    LogWarning("planning_unavailable", {{"code", static_cast<int>(status.error_code())},
+                                        {"message", status.error_message()},
+                                        {"elapsed_ms", std::chrono::duration<double, std::milli>(
+                                                           std::chrono::steady_clock::now() - started).count()},
+                                        {"fallback", "robot plans locally"}});
+    return std::vector<Eigen::Vector3d>{};
+  }
+  std::vector<Eigen::Vector3d> path;
+  path.reserve(static_cast<std::size_t>(response.path_size()));
+  for (const common::v1::Pose2D& point : response.path()) path.emplace_back(point.x(), point.y(), query.goal.z());
+  return path;
+}
+
+absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const RobotPose& pose) {
+  if (!Ready("SelectExplorationGoal")) return absl::NotFoundError("planning service not connected");
+  pb::SelectExplorationGoalRequest request;
+  request.mutable_source()->mutable_live_map();
+  SetPose(pose.position, request.mutable_robot());
+  request.mutable_robot()->set_yaw(pose.yaw);
+  request.set_strategy(strategy_);
+  grpc::ClientContext context;
+  SetDeadline(context, settings_.deadline_ms);
+  pb::SelectExplorationGoalResponse response;
+  const grpc::Status status = stub_->SelectExplorationGoal(&context, request, &response);
+  if (!status.ok()) {
+    return absl::NotFoundError(absl::StrCat("no exploration goal from planning: ", status.error_message()));
+  }
+  return Eigen::Vector3d(response.goal().x(), response.goal().y(), pose.position.z());
+}
+
+}  // namespace semnav::reasoning

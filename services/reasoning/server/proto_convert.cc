@@ -1,0 +1,119 @@
+#include "services/reasoning/server/proto_convert.h"
+
+#include <cmath>
+
+#include "google/protobuf/util/time_util.h"
+
+namespace semnav::reasoning {
+namespace {
+
+void SetVector(const Eigen::Vector3d& v, common::v1::Vector3* out) {
+  out->set_x(v.x());
+  out->set_y(v.y());
+  out->set_z(v.z());
+}
+
+}  // namespace
+
+api::TargetSpec ToProto(const TargetSpec& target) {
+  api::TargetSpec out;
+  out.set_name(target.name);
+  out.set_is_room(target.is_room);
+  for (const std::string& colour : target.colours) out.add_colours(colour);
+  out.set_relation(target.relation);
+  out.set_anchor(target.anchor);
+  out.set_text(target.text);
+  return out;
+}
+
+TargetSpec FromProto(const api::TargetSpec& target) {
+  TargetSpec out;
+  out.name = target.name();
+  out.is_room = target.is_room();
+  out.colours.assign(target.colours().begin(), target.colours().end());
+  out.relation = target.relation();
+  out.anchor = target.anchor();
+  out.text = target.text();
+  return out;
+}
+
+api::Subgoal ToProto(const Subgoal& subgoal) {
+  api::Subgoal out;
+  // SubgoalType values are declared in the same order, one above the core's.
+  out.set_type(static_cast<api::SubgoalType>(static_cast<int>(subgoal.type) + 1));
+  *out.mutable_target() = ToProto(subgoal.target);
+  out.set_distance_m(subgoal.distance_m);
+  out.set_duration_s(subgoal.duration_s);
+  out.set_reason(subgoal.reason);
+  return out;
+}
+
+api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id, const std::string& task_id) {
+  api::RobotCommand out;
+  out.set_command_id(session_command_id);
+  out.set_task_id(task_id);
+  out.set_reason(command.reason);
+  switch (command.kind) {
+    case CommandKind::kNavigate: {
+      api::NavigateAction* navigate = out.mutable_navigate();
+      SetVector(command.goal, navigate->mutable_goal());
+      navigate->set_goal_yaw(command.goal_yaw);
+      navigate->set_max_speed_mps(command.max_speed);
+      for (const Eigen::Vector3d& point : command.path) SetVector(point, navigate->add_path()->mutable_position());
+      break;
+    }
+    case CommandKind::kRotate:
+      out.mutable_rotate()->set_angular_speed_rps(command.angular_speed);
+      out.mutable_rotate()->set_duration_s(command.duration_s);
+      break;
+    case CommandKind::kStop:
+      out.mutable_stop();
+      break;
+    case CommandKind::kHold:
+      out.mutable_hold()->set_duration_s(command.duration_s);
+      break;
+  }
+  return out;
+}
+
+api::Event ToProto(const LoggedEvent& event) {
+  api::Event out;
+  out.set_event_id(event.id);
+  *out.mutable_time() = google::protobuf::util::TimeUtil::NanosecondsToTimestamp(absl::ToUnixNanos(event.time));
+  out.set_kind(static_cast<api::EventKind>(event.kind));
+  out.set_robot_id(event.robot_id);
+  out.set_task_id(event.task_id);
+  out.set_message(event.message);
+  return out;
+}
+
+api::TaskStatus ToProto(TaskState state) {
+  switch (state) {
+    case TaskState::kRunning: return api::TASK_STATUS_RUNNING;
+    case TaskState::kPaused: return api::TASK_STATUS_PAUSED;
+    case TaskState::kSucceeded: return api::TASK_STATUS_SUCCEEDED;
+    case TaskState::kFailed: return api::TASK_STATUS_FAILED;
+    case TaskState::kCancelled: return api::TASK_STATUS_CANCELLED;
+  }
+  return api::TASK_STATUS_UNSPECIFIED;
+}
+
+RobotPose FromProto(const api::RobotState& state) {
+  RobotPose pose;
+  const common::v1::Pose& p = state.pose();
+  pose.position = Eigen::Vector3d(p.position().x(), p.position().y(), p.position().z());
+  const common::v1::Quaternion& q = p.orientation();
+  pose.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
+  return pose;
+}
+
+std::optional<RobotFeedback> FromProto(api::FeedbackKind kind) {
+  switch (kind) {
+    case api::FEEDBACK_KIND_GOAL_REACHED: return RobotFeedback::kGoalReached;
+    case api::FEEDBACK_KIND_FAILED: return RobotFeedback::kFailed;
+    case api::FEEDBACK_KIND_BLOCKED: return RobotFeedback::kBlocked;
+    default: return std::nullopt;
+  }
+}
+
+}  // namespace semnav::reasoning

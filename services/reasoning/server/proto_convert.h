@@ -1,0 +1,30 @@
+// Conversions between the gateway's core values and its API messages.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "semnav/reasoning/v1/operator.pb.h"
+#include "semnav/reasoning/v1/robot_session.pb.h"
+#include "semnav/reasoning/v1/task.pb.h"
+#include "services/reasoning/core/event_log.h"
+#include "services/reasoning/core/robot_types.h"
+#include "services/reasoning/core/subgoal.h"
+#include "services/reasoning/core/task_executor.h"
+
+namespace semnav::reasoning {
+
+namespace api = ::semnav::reasoning::v1;
+
+api::TargetSpec ToProto(const TargetSpec& target);
+TargetSpec FromProto(const api::TargetSpec& target);
+api::Subgoal ToProto(const Subgoal& subgoal);
+api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id, const std::string& task_id);
+api::Event ToProto(const LoggedEvent& event);
+api::TaskStatus ToProto(TaskState state);
+// Pose and yaw (about z) from the robot's state message.
+RobotPose FromProto(const api::RobotState& state);
+// nullopt for ACCEPTED and UNSPECIFIED, which need no reaction.
+std::optional<RobotFeedback> FromProto(api::FeedbackKind kind);
+
+}  // namespace semnav::reasoning

@@ -1,0 +1,389 @@
+// Contract test: the real semnav-gateway binary on a loopback port, a scripted robot on the
+// session stream and an operator through the generated stubs.
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <thread>
+
+#include <grpcpp/grpcpp.h>
+
+#include "gtest/gtest.h"
+#include "semnav/common/v1/errors.pb.h"
+#include "semnav/reasoning/v1/operator.grpc.pb.h"
+#include "semnav/reasoning/v1/robot_session.grpc.pb.h"
+#include "services/common/status/grpc_status.h"
+#include "services/reasoning/testing/operator_calls.h"
+#include "tests/support/service_process.h"
+
+namespace semnav::reasoning {
+namespace {
+
+namespace api = ::semnav::reasoning::v1;
+
+std::chrono::system_clock::time_point Deadline() {
+  return std::chrono::system_clock::now() + std::chrono::seconds(20);
+}
+
+// A robot that says hello, reports poses and answers commands on its session stream.
+class ScriptedRobot {
+ public:
+  ScriptedRobot(const std::shared_ptr<grpc::Channel>& channel, const std::string& robot_id)
+      : stub_(api::RobotSessionService::NewStub(channel)) {
+    context_.set_deadline(Deadline());
+    stream_ = stub_->Connect(&context_);
+    api::ConnectRequest hello;
+    hello.mutable_hello()->set_robot_id(robot_id);
+    hello.mutable_hello()->mutable_capabilities()->add_modes(api::LOCOMOTION_MODE_GROUND);
+    stream_->Write(hello);
+    api::ConnectResponse first;
+    EXPECT_TRUE(stream_->Read(&first));
+    EXPECT_TRUE(first.has_accepted());
+    accepted_ = first.accepted();
+    ReportPose(0.0, 0.0);
+  }
+  ~ScriptedRobot() { Leave(); }
+
+  void ReportPose(double x, double y) {
+    api::ConnectRequest state;
+    state.mutable_state()->mutable_pose()->mutable_position()->set_x(x);
+    state.mutable_state()->mutable_pose()->mutable_position()->set_y(y);
+    state.mutable_state()->mutable_pose()->mutable_orientation()->set_w(1.0);
+    stream_->Write(state);
+  }
+  api::RobotCommand NextCommand() {
+    api::ConnectResponse response;
+    EXPECT_TRUE(stream_->Read(&response));
+    EXPECT_TRUE(response.has_command());
+    return response.command();
+  }
+  void Report(const api::RobotCommand& command, api::FeedbackKind kind) {
+    api::ConnectRequest feedback;
+    feedback.mutable_feedback()->set_command_id(command.command_id());
+    feedback.mutable_feedback()->set_kind(kind);
+    stream_->Write(feedback);
+  }
+  void Leave() {
+    if (left_) return;
+    left_ = true;
+    stream_->WritesDone();
+    api::ConnectResponse ignored;
+    while (stream_->Read(&ignored)) {
+    }
+    stream_->Finish();
+  }
+  const api::SessionAccepted& accepted() const { return accepted_; }
+
+ private:
+  std::unique_ptr<api::RobotSessionService::Stub> stub_;
+  grpc::ClientContext context_;
+  std::unique_ptr<grpc::ClientReaderWriter<api::ConnectRequest, api::ConnectResponse>> stream_;
+  api::SessionAccepted accepted_;
+  bool left_ = false;
+};
+
+class GatewayContractTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> process = semnav::testing::ServiceProcess::Start("semnav-gateway");
+    ASSERT_TRUE(process.ok()) << process.status();
+    process_ = *std::move(process);
+    operator_ = api::OperatorService::NewStub(process_->channel());
+  }
+
+  grpc::Status Submit(const std::string& request_id, const std::string& instruction,
+                      api::SubmitInstructionResponse* response, const std::string& lease_id = "") {
+    api::SubmitInstructionRequest request;
+    request.set_request_id(request_id);
+    request.set_robot_id("r1");
+    request.set_instruction(instruction);
+    request.set_lease_id(lease_id);
+    grpc::ClientContext context;
+    return operator_->SubmitInstruction(&context, request, response);
+  }
+  api::TaskSnapshot Get(const std::string& task_id) {
+    absl::StatusOr<api::TaskSnapshot> task = reasoning::testing::FetchTask(*operator_, task_id);
+    EXPECT_TRUE(task.ok()) << task.status();
+    return task.ok() ? *task : api::TaskSnapshot();
+  }
+
+  std::unique_ptr<semnav::testing::ServiceProcess> process_;
+  std::unique_ptr<api::OperatorService::Stub> operator_;
+};
+
+TEST_F(GatewayContractTest, RobotReceivesCommandsUntilSuccessAndWatchSeesIt) {
+  ScriptedRobot robot(process_->channel(), "r1");
+  api::SubmitInstructionResponse submitted;
+  ASSERT_TRUE(Submit("req-1", "look around, then wait", &submitted).ok());
+  ASSERT_EQ(submitted.task().subgoals_size(), 2);
+  EXPECT_EQ(submitted.task().subgoals(0).type(), api::SUBGOAL_TYPE_LOOK_AROUND);
+
+  api::RobotCommand rotate = robot.NextCommand();
+  ASSERT_TRUE(rotate.has_rotate());
+  EXPECT_DOUBLE_EQ(rotate.rotate().angular_speed_rps(), 0.5);
+  EXPECT_DOUBLE_EQ(rotate.rotate().duration_s(), 12.0);
+  EXPECT_EQ(rotate.task_id(), submitted.task_id());
+  robot.Report(rotate, api::FEEDBACK_KIND_GOAL_REACHED);
+  api::RobotCommand hold = robot.NextCommand();
+  ASSERT_TRUE(hold.has_hold());
+  EXPECT_DOUBLE_EQ(hold.hold().duration_s(), 5.0);
+  robot.Report(hold, api::FEEDBACK_KIND_GOAL_REACHED);
+  EXPECT_TRUE(robot.NextCommand().has_stop());
+
+  // WatchTask from revision 0 gets the final snapshot and ends OK.
+  api::WatchTaskRequest watch;
+  watch.set_task_id(submitted.task_id());
+  grpc::ClientContext context;
+  context.set_deadline(Deadline());
+  auto reader = operator_->WatchTask(&context, watch);
+  api::WatchTaskResponse last;
+  for (api::WatchTaskResponse update; reader->Read(&update);) last = update;
+  EXPECT_TRUE(reader->Finish().ok());
+  EXPECT_EQ(last.task().status(), api::TASK_STATUS_SUCCEEDED);
+  EXPECT_EQ(last.task().current_subgoal(), 2);
+  EXPECT_DOUBLE_EQ(last.task().progress(), 1.0);
+
+  // The event log replays the story: created, subgoal changes, and the final status.
+  api::StreamEventsRequest events;
+  events.set_robot_id("r1");
+  events.set_last_event_id(1);
+  grpc::ClientContext events_context;
+  events_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(3));
+  auto event_reader = operator_->StreamEvents(&events_context, events);
+  std::vector<api::EventKind> kinds;
+  for (api::StreamEventsResponse event; kinds.empty() || kinds.back() != api::EVENT_KIND_TASK_STATUS;) {
+    ASSERT_TRUE(event_reader->Read(&event));
+    kinds.push_back(event.event().kind());
+    if (kinds.back() == api::EVENT_KIND_TASK_STATUS) {
+      EXPECT_EQ(event.event().message().rfind("TASK_STATUS_SUCCEEDED", 0), 0u) << event.event().message();
+    }
+  }
+  EXPECT_NE(std::find(kinds.begin(), kinds.end(), api::EVENT_KIND_TASK_CREATED), kinds.end());
+  EXPECT_NE(std::find(kinds.begin(), kinds.end(), api::EVENT_KIND_SUBGOAL), kinds.end());
+  events_context.TryCancel();
+}
+
+TEST_F(GatewayContractTest, SearchWithoutMapExploresAndCancelStops) {
+  ScriptedRobot robot(process_->channel(), "r1");
+  api::SubmitInstructionResponse submitted;
+  ASSERT_TRUE(Submit("req-1", "找红色杯子", &submitted).ok());
+  // No planning service: 3 m toward the least-explored sector (east at the start), robot plans.
+  api::RobotCommand explore = robot.NextCommand();
+  ASSERT_TRUE(explore.has_navigate());
+  EXPECT_DOUBLE_EQ(explore.navigate().goal().x(), 3.0);
+  EXPECT_DOUBLE_EQ(explore.navigate().goal().y(), 0.0);
+  EXPECT_EQ(explore.navigate().path_size(), 0);
+  robot.ReportPose(3.0, 0.0);
+  robot.Report(explore, api::FEEDBACK_KIND_GOAL_REACHED);
+  EXPECT_TRUE(robot.NextCommand().has_rotate());  // scan at the exploration goal
+  EXPECT_EQ(Get(submitted.task_id()).phase(), "looking_around");
+
+  api::CancelTaskRequest cancel;
+  cancel.set_request_id("cancel-1");
+  cancel.set_task_id(submitted.task_id());
+  api::CancelTaskResponse cancelled;
+  grpc::ClientContext context;
+  ASSERT_TRUE(operator_->CancelTask(&context, cancel, &cancelled).ok());
+  EXPECT_EQ(cancelled.task().status(), api::TASK_STATUS_CANCELLED);
+  EXPECT_TRUE(robot.NextCommand().has_stop());
+}
+
+TEST_F(GatewayContractTest, LeaseIdempotencyAndFieldErrors) {
+  api::AcquireLeaseRequest acquire;
+  acquire.set_request_id("lease-1");
+  acquire.set_robot_id("r1");
+  acquire.set_holder("alice");
+  api::AcquireLeaseResponse alice;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->AcquireLease(&context, acquire, &alice).ok());
+  }
+  acquire.set_request_id("lease-2");
+  acquire.set_holder("bob");
+  api::AcquireLeaseResponse bob;
+  grpc::ClientContext bob_context;
+  EXPECT_EQ(operator_->AcquireLease(&bob_context, acquire, &bob).error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+
+  api::SubmitInstructionResponse response;
+  grpc::Status no_lease = Submit("req-1", "go to the kitchen", &response);
+  EXPECT_EQ(no_lease.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  std::optional<common::v1::ErrorInfo> info = GetDetail<common::v1::ErrorInfo>(no_lease);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "lease_id");
+
+  api::SubmitInstructionResponse first, again;
+  ASSERT_TRUE(Submit("req-2", "go to the kitchen", &first, alice.lease().lease_id()).ok());
+  ASSERT_TRUE(Submit("req-2", "something else entirely", &again, alice.lease().lease_id()).ok());
+  EXPECT_EQ(again.task_id(), first.task_id());  // a repeated request_id returns the first answer
+  EXPECT_EQ(first.task().status(), api::TASK_STATUS_PENDING);  // no robot session yet
+
+  grpc::Status empty = Submit("req-3", "", &response, alice.lease().lease_id());
+  EXPECT_EQ(empty.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(empty)->field(), "instruction");
+
+  api::GetTaskRequest unknown;
+  unknown.set_task_id("task-999");
+  api::GetTaskResponse ignored;
+  grpc::ClientContext context;
+  EXPECT_EQ(operator_->GetTask(&context, unknown, &ignored).error_code(), grpc::StatusCode::NOT_FOUND);
+}
+
+TEST_F(GatewayContractTest, EmergencyStopWinsUntilCleared) {
+  ScriptedRobot robot(process_->channel(), "r1");
+  api::SubmitInstructionResponse submitted;
+  ASSERT_TRUE(Submit("req-1", "find the bottle", &submitted).ok());
+  EXPECT_TRUE(robot.NextCommand().has_navigate());
+
+  api::EmergencyStopRequest stop;
+  stop.set_request_id("stop-1");
+  stop.set_reason("person in the way");
+  api::EmergencyStopResponse stopped;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->EmergencyStop(&context, stop, &stopped).ok());
+  }
+  ASSERT_EQ(stopped.cancelled_task_ids_size(), 1);
+  api::RobotCommand command = robot.NextCommand();
+  ASSERT_TRUE(command.has_stop());
+  EXPECT_TRUE(command.stop().emergency());
+  EXPECT_EQ(Get(submitted.task_id()).status(), api::TASK_STATUS_CANCELLED);
+
+  api::SubmitInstructionResponse refused;
+  EXPECT_EQ(Submit("req-2", "find the bottle", &refused).error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  api::ClearEmergencyStopRequest clear;
+  clear.set_request_id("clear-1");
+  clear.set_robot_id("r1");
+  api::ClearEmergencyStopResponse cleared;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->ClearEmergencyStop(&context, clear, &cleared).ok());
+  }
+  EXPECT_TRUE(Submit("req-3", "find the bottle", &refused).ok());
+  EXPECT_TRUE(robot.NextCommand().has_navigate());
+}
+
+TEST_F(GatewayContractTest, LostSessionPausesAndTheTaskResumesOnReconnect) {
+  api::SubmitInstructionResponse submitted;
+  {
+    ScriptedRobot robot(process_->channel(), "r1");
+    ASSERT_TRUE(Submit("req-1", "find the bottle", &submitted).ok());
+    EXPECT_TRUE(robot.NextCommand().has_navigate());
+  }
+  EXPECT_EQ(Get(submitted.task_id()).status(), api::TASK_STATUS_PAUSED);
+  ScriptedRobot back(process_->channel(), "r1");
+  EXPECT_EQ(back.accepted().resumed_task_id(), submitted.task_id());
+  EXPECT_TRUE(back.NextCommand().has_navigate());
+  EXPECT_EQ(Get(submitted.task_id()).status(), api::TASK_STATUS_RUNNING);
+
+  // The event log replays what happened after event 1.
+  api::StreamEventsRequest events;
+  events.set_last_event_id(1);
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(2));
+  auto reader = operator_->StreamEvents(&context, events);
+  api::StreamEventsResponse event;
+  ASSERT_TRUE(reader->Read(&event));
+  EXPECT_EQ(event.event().event_id(), 2u);
+  EXPECT_FALSE(event.replay_truncated());
+  context.TryCancel();
+}
+
+TEST_F(GatewayContractTest, TelemetryStreams) {
+  ScriptedRobot robot(process_->channel(), "r1");
+  api::StreamFastTelemetryRequest fast;
+  fast.set_robot_id("r1");
+  fast.set_max_rate_hz(50);
+  grpc::ClientContext fast_context;
+  fast_context.set_deadline(Deadline());
+  auto fast_reader = operator_->StreamFastTelemetry(&fast_context, fast);
+  // The stream is registered once the call is up; keep reporting until a sample arrives.
+  api::StreamFastTelemetryResponse sample;
+  std::thread reporter([&robot] {
+    for (int i = 1; i <= 20; ++i) {
+      robot.ReportPose(0.1 * i, 0.0);
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  });
+  // The hello pose (x = 0) may still arrive after the subscription; a reported one must follow.
+  bool moved = false;
+  while (!moved && fast_reader->Read(&sample)) moved = sample.state().pose().position().x() > 0.0;
+  reporter.join();
+  EXPECT_TRUE(moved);
+  fast_context.TryCancel();
+
+  api::StreamSlowTelemetryRequest slow;
+  slow.set_robot_id("r1");
+  slow.mutable_period()->set_nanos(100000000);
+  grpc::ClientContext slow_context;
+  slow_context.set_deadline(Deadline());
+  auto slow_reader = operator_->StreamSlowTelemetry(&slow_context, slow);
+  api::StreamSlowTelemetryResponse status;
+  ASSERT_TRUE(slow_reader->Read(&status));
+  EXPECT_TRUE(status.session_connected());
+  EXPECT_FALSE(status.emergency_stop_active());
+  EXPECT_GE(status.topological_nodes(), 1u);
+  slow_context.TryCancel();
+
+  slow.mutable_period()->set_nanos(1000000);  // 1 ms: below the 100 ms minimum
+  grpc::ClientContext bad_context;
+  auto bad_reader = operator_->StreamSlowTelemetry(&bad_context, slow);
+  EXPECT_FALSE(bad_reader->Read(&status));
+  grpc::Status bad = bad_reader->Finish();
+  EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(bad)->field(), "period");
+}
+
+TEST_F(GatewayContractTest, DebugDecomposeAndResolve) {
+  api::DecomposeInstructionRequest decompose;
+  decompose.set_instruction("去厨房找红色杯子");
+  api::DecomposeInstructionResponse steps;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->DecomposeInstruction(&context, decompose, &steps).ok());
+  }
+  ASSERT_EQ(steps.subgoals_size(), 5);
+  EXPECT_EQ(steps.subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);
+  EXPECT_TRUE(steps.subgoals(0).target().is_room());
+  EXPECT_EQ(steps.subgoals(3).type(), api::SUBGOAL_TYPE_APPROACH);
+  EXPECT_DOUBLE_EQ(steps.subgoals(3).distance_m(), 0.5);
+  EXPECT_EQ(steps.source(), "rules");
+
+  // Without a mapping service the scene graph is empty: understood, but no candidate.
+  api::ResolveTargetRequest resolve;
+  resolve.set_robot_id("r1");
+  resolve.set_text("去红色灭火器旁边");
+  resolve.set_allow_slow_path(true);
+  api::ResolveTargetResponse resolved;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->ResolveTarget(&context, resolve, &resolved).ok());
+  }
+  EXPECT_EQ(resolved.understood().name(), "fire extinguisher");
+  EXPECT_EQ(resolved.understood().relation(), "near");
+  EXPECT_FALSE(resolved.has_best_candidate());
+  EXPECT_FALSE(resolved.has_target());
+  EXPECT_FALSE(resolved.explanation().empty());
+
+  resolve.clear_text();
+  grpc::ClientContext context;
+  grpc::Status missing = operator_->ResolveTarget(&context, resolve, &resolved);
+  EXPECT_EQ(missing.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(missing)->field(), "text");
+}
+
+TEST_F(GatewayContractTest, SessionMustStartWithHello) {
+  auto stub = api::RobotSessionService::NewStub(process_->channel());
+  grpc::ClientContext context;
+  context.set_deadline(Deadline());
+  auto stream = stub->Connect(&context);
+  api::ConnectRequest state;
+  state.mutable_state()->mutable_pose()->mutable_orientation()->set_w(1.0);
+  stream->Write(state);
+  api::ConnectResponse ignored;
+  EXPECT_FALSE(stream->Read(&ignored));
+  grpc::Status status = stream->Finish();
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(status)->field(), "hello");
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
