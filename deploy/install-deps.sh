@@ -35,8 +35,8 @@ if ((${#missing[@]})); then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# npm tools pinned by package-lock.json (buf for proto lint/breaking, grpc-js for the non-C++ client).
+# npm tools pinned to exact versions in package.json and package-lock.json (buf for proto lint).
+# `npm install --no-save` rather than `npm ci`: npm 11's ci rejects a lock file that lists only
+# this platform's optional buf binary; install honours the lock and never rewrites it.
 repo_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-if [[ -f "$repo_root/package-lock.json" ]]; then
-  (cd "$repo_root" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-fi
+(cd "$repo_root" && npm install --no-save --no-audit --no-fund --loglevel=error >/dev/null)
