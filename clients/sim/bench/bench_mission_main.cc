@@ -10,6 +10,7 @@
 #include <string>
 
 #include "absl/strings/str_format.h"
+#include "absl/strings/str_split.h"
 #include "clients/sim/bench/episode_plan.h"
 #include "clients/sim/bench/mission_plot.h"
 #include "clients/sim/bench/mission_report.h"
@@ -26,19 +27,20 @@ namespace sim = semnav::sim;
 
 constexpr char kUsage[] =
     "usage: semnav-bench-mission [--suite DIR] [--episodes N] [--json FILE] [--out DIR] [--seed N]\n"
-    "                            [--max-steps N] [--bin-dir DIR]\n"
+    "                            [--max-steps N] [--strategies LIST] [--bin-dir DIR]\n"
     "  --suite DIR      folder of world YAML files (default: 4 generated homes)\n"
     "  --episodes N     episodes per strategy (default 4)\n"
     "  --json FILE      write the per-strategy figures as JSON\n"
     "  --out DIR        report folder: mission.md and one PNG per episode (default mission_report)\n"
     "  --seed N         episode and world seed (default 1)\n"
     "  --max-steps N    step budget per episode, 0.5 s each (default 500, seed 004)\n"
+    "  --strategies L   comma list of exploration strategies (default NEAREST_FRONTIER,\n"
+    "                   COVERAGE_MAX,SEMANTIC_FRONTIER; EROI_UTILITY needs a vision model)\n"
     "  --bin-dir DIR    folder with the service binaries (default: this program's folder)\n";
 
-// The strategy is chosen by the gateway. Its configuration has no planning client yet, so it
-// explores with its built-in fallback (least-explored sector of the topological memory);
-// NEAREST_FRONTIER / COVERAGE_MAX / SEMANTIC_FRONTIER / EROI_UTILITY cannot be selected.
-constexpr char kStrategy[] = "GATEWAY_SECTOR_FALLBACK";
+// Compared side by side on the same episodes, each with its own stack whose gateway explores
+// by that strategy. EROI_UTILITY needs a vision model, so it joins only on request.
+constexpr char kDefaultStrategies[] = "NEAREST_FRONTIER,COVERAGE_MAX,SEMANTIC_FRONTIER";
 
 std::string ProgramDir() {
   return std::filesystem::canonical("/proc/self/exe").parent_path().string();
@@ -56,8 +58,11 @@ absl::StatusOr<std::vector<sim::World>> Worlds(const std::map<std::string, std::
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::map<std::string, std::string> flags = {
-      {"--episodes", "4"}, {"--out", "mission_report"}, {"--seed", "1"}, {"--max-steps", "500"}};
+  std::map<std::string, std::string> flags = {{"--episodes", "4"},
+                                              {"--out", "mission_report"},
+                                              {"--seed", "1"},
+                                              {"--max-steps", "500"},
+                                              {"--strategies", kDefaultStrategies}};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -85,36 +90,44 @@ int main(int argc, char** argv) {
   const std::string out_dir = flags["--out"];
   std::filesystem::create_directories(out_dir);
   const std::string bin_dir = flags.contains("--bin-dir") ? flags["--bin-dir"] : ProgramDir();
-  absl::StatusOr<std::unique_ptr<loop::SimStack>> stack =
-      loop::SimStack::Start({bin_dir, out_dir + "/stack", true});
-  if (!stack.ok()) {
-    std::cerr << "semnav-bench-mission: cannot start the stack: " << stack.status() << "\n";
-    return 1;
-  }
-  std::cout << "strategy " << kStrategy << " (the gateway's exploration; see docs/performance/mission.md)\n";
   std::vector<sim::EpisodeRecord> records;
-  for (size_t i = 0; i < plan.size(); ++i) {
-    loop::EpisodeSpec& spec = plan[i];
-    spec.strategy = kStrategy;
-    spec.max_steps = std::atoi(flags["--max-steps"].c_str());
-    std::cout << absl::StrFormat("[%d/%d] %s start %d: find %s ... ", i + 1, plan.size(), spec.world.name,
-                                 spec.start_index, spec.target)
-              << std::flush;
-    absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, (*stack)->endpoints());
-    if (!result.ok()) {
-      std::cerr << "\nsemnav-bench-mission: episode failed to run: " << result.status() << "\n";
+  const std::vector<std::string> strategies =
+      absl::StrSplit(flags["--strategies"], ',', absl::SkipEmpty());
+  for (const std::string& strategy : strategies) {
+    absl::StatusOr<std::unique_ptr<loop::SimStack>> stack =
+        loop::SimStack::Start({bin_dir, out_dir + "/stack_" + strategy, true, strategy});
+    if (!stack.ok()) {
+      std::cerr << "semnav-bench-mission: cannot start the stack: " << stack.status() << "\n";
       return 1;
     }
-    records.push_back(result->record);
-    std::cout << absl::StrFormat("%s in %d steps, DTG %.2f m, path %.1f m, l %.1f m (%s)\n",
-                                 result->record.success ? "SUCCESS" : "fail", result->steps,
-                                 result->record.distance_to_goal_m, result->record.path_m,
-                                 result->record.shortest_path_m, result->final_reason);
-    sim::RasterOptions raster;
-    const sim::GroundTruthGrid grid = sim::RasterizeOccupancy(spec.world, raster);
-    const std::string png = absl::StrFormat("%s/episode_%02d_%s.png", out_dir, i, spec.world.name);
-    if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, grid, spec.target, *result, png); !s.ok()) {
-      std::cerr << "semnav-bench-mission: " << s << "\n";
+    std::cout << "strategy " << strategy << " (the gateway explores with planning's "
+              << "SelectExplorationGoal)\n";
+    for (size_t i = 0; i < plan.size(); ++i) {
+      loop::EpisodeSpec spec = plan[i];
+      spec.strategy = strategy;
+      spec.max_steps = std::atoi(flags["--max-steps"].c_str());
+      std::cout << absl::StrFormat("[%d/%d] %s start %d: find %s ... ", i + 1, plan.size(),
+                                   spec.world.name, spec.start_index, spec.target)
+                << std::flush;
+      absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, (*stack)->endpoints());
+      if (!result.ok()) {
+        std::cerr << "\nsemnav-bench-mission: episode failed to run: " << result.status() << "\n";
+        return 1;
+      }
+      records.push_back(result->record);
+      std::cout << absl::StrFormat("%s in %d steps, DTG %.2f m, path %.1f m, l %.1f m (%s)\n",
+                                   result->record.success ? "SUCCESS" : "fail", result->steps,
+                                   result->record.distance_to_goal_m, result->record.path_m,
+                                   result->record.shortest_path_m, result->final_reason);
+      sim::RasterOptions raster;
+      const sim::GroundTruthGrid grid = sim::RasterizeOccupancy(spec.world, raster);
+      const std::string png = absl::StrFormat("%s/%s_episode_%02d_%s.png", out_dir, strategy, i,
+                                              spec.world.name);
+      if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, grid, spec.target,
+                                                                *result, png);
+          !s.ok()) {
+        std::cerr << "semnav-bench-mission: " << s << "\n";
+      }
     }
   }
   const std::string table = semnav::sim::bench::MissionTable(records, sim::kDefaultSuccessRadius);

@@ -15,6 +15,9 @@ struct SimStackOptions {
   std::string bin_dir;   // folder holding semnav-mapping, semnav-planning, semnav-gateway
   std::string work_dir;  // configs and the mapping store go here (created)
   bool free_ports = true;  // false: the deploy/local.yaml ports (gateway 50050, ...)
+  // The gateway's exploration strategy (planning's SelectExplorationGoal): NEAREST_FRONTIER,
+  // COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY.
+  std::string exploration_strategy = "SEMANTIC_FRONTIER";
 };
 
 class SimStack {

@@ -15,7 +15,8 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
   ASSERT_TRUE(spec.ok()) << spec.status();
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
-      SimStack::Start({SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true});
+      SimStack::Start(
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, "SEMANTIC_FRONTIER"});
   ASSERT_TRUE(stack.ok()) << stack.status();
 
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
@@ -40,7 +41,8 @@ TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameSink) {
   spec->target = "水槽";             // instruction "找水槽"
   spec->target_label = "sink";
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
-      SimStack::Start({SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true});
+      SimStack::Start(
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, "SEMANTIC_FRONTIER"});
   ASSERT_TRUE(stack.ok()) << stack.status();
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();
