@@ -56,7 +56,7 @@ std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose)
 
 std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
                                                Phase phase, const std::string& reason) {
-  absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal, phase);
+  absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
   if (absl::IsNotFound(path.status()) && phase != Phase::kExploring) {
     // No path to a known place: explore (the map grows) and try again when the target is seen.
     if (++progress_.replans > config_.max_replans) {
@@ -80,12 +80,13 @@ std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d
   return {command};
 }
 
-absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal, Phase phase) {
+absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal) {
   if ((goal - pose_.position).head<2>().norm() < 1e-6) return std::vector<Eigen::Vector3d>{};  // turn in place
   PathQuery query{pose_.position, goal, config_.multi_modal, config_.robot_radius_m, std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
-  if (absl::IsFailedPrecondition(path.status()) && phase != Phase::kExploring) {
+  if (absl::IsFailedPrecondition(path.status())) {
     // Seed 004: the goal lies in an obstacle; go to the free point nearest it seen from here.
+    // Frontier goals too: they sit on the edge of the unknown, often in inflated cells.
     query.alternative_from = pose_.position;
     path = planner_->Plan(query);
   }

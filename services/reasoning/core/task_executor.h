@@ -114,7 +114,7 @@ class TaskExecutor {
   std::vector<RobotCommand> Fail(const std::string& reason);
   std::vector<RobotCommand> Replan(double now, const std::string& reason);
   std::vector<RobotCommand> Search(double now);
-  absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(const Eigen::Vector3d& goal, Phase phase);
+  absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(const Eigen::Vector3d& goal);
   std::vector<RobotCommand> Explore(double now);
   std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
                                    Phase phase, const std::string& reason);

@@ -304,6 +304,24 @@ TEST_F(GatewayTaskExecutorTest, OccupiedGoalIsReplannedWithTheAlternativePoint) 
   EXPECT_EQ(task.progress().replans, 0);
 }
 
+TEST_F(GatewayTaskExecutorTest, OccupiedFrontierIsApproachedByTheAlternativePoint) {
+  planner_.failures = {absl::NotFoundError("no path"), absl::FailedPreconditionError("goal occupied")};
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
+  planner_.alternative_point = Eigen::Vector3d(0, 9.2, 0);
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  // The target (no path), the frontier (occupied), then the frontier's alternative point.
+  ASSERT_EQ(planner_.queries.size(), 3u);
+  EXPECT_TRUE(planner_.queries[1].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  ASSERT_TRUE(planner_.queries[2].alternative_from.has_value());
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 9.2, 0)));
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_EQ(task.progress().replans, 1);  // only the unreachable target counted
+}
+
 TEST_F(GatewayTaskExecutorTest, NoPathToTheTargetExploresInstead) {
   planner_.failures = {absl::NotFoundError("no path")};
   planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
