@@ -9,6 +9,7 @@
 #include "absl/strings/str_cat.h"
 
 #include "services/common/config/config_reader.h"
+#include "services/launcher/default_stack.h"
 
 namespace semnav::launcher {
 namespace {
@@ -62,31 +63,6 @@ absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem
   return stack;
 }
 
-constexpr char kDefaultStack[] = R"yaml(
-startup_timeout_s: 20
-stop_timeout_s: 10
-services:
-  gateway:
-    binary: semnav-gateway
-    listen: 127.0.0.1:50050
-    settings:
-      gateway:
-        mapping: {address: "127.0.0.1:50051"}
-        planning: {address: "127.0.0.1:50052", exploration_strategy: SEMANTIC_FRONTIER}
-  mapping:
-    binary: semnav-mapping
-    listen: 127.0.0.1:50051
-    settings:
-      mapping: {store_directory: var/maps}
-  planning: {binary: semnav-planning, listen: "127.0.0.1:50052"}
-  relocalization:
-    binary: semnav-relocalization
-    listen: 127.0.0.1:50053
-    settings:
-      relocalization: {storage_dir: var/landmarks}
-  modelproxy: {binary: semnav-model-proxy, listen: "127.0.0.1:50054"}
-)yaml";
-
 }  // namespace
 
 absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path) {
@@ -96,9 +72,9 @@ absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path) {
 }
 
 StackConfig DefaultStackConfig() {
-  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(kDefaultStack);
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(kDefaultStackYaml);
   absl::StatusOr<StackConfig> stack = ParseStack(*root, std::filesystem::current_path());
-  return *stack;  // the embedded text is fixed and tested
+  return *stack;  // deploy/local.yaml, checked by StackConfigTest
 }
 
 }  // namespace semnav::launcher

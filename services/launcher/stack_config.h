@@ -25,7 +25,7 @@ struct StackConfig {
 // the file's folder. A service's inline `settings:` (its config file's content) is written
 // to <TMPDIR>/semnav-stack-<pid>-<n>/<name>.yaml and handed over as its config.
 absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path);
-// The embedded default: deploy/local.yaml's content, compiled in.
+// The embedded default: deploy/local.yaml's content, compiled in at build time.
 StackConfig DefaultStackConfig();
 
 }  // namespace semnav::launcher

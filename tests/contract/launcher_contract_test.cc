@@ -1,8 +1,6 @@
 // `semnav up` brings the five real services to SERVING, `semnav status` sees them, SIGTERM
 // stops them all cleanly.
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,6 +12,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "services/launcher/free_port.h"
 #include "tests/support/service_process.h"
 
 namespace semnav::testing {
@@ -21,25 +20,13 @@ namespace {
 
 using ::testing::HasSubstr;
 
-int FreePort() {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address));
-  socklen_t length = sizeof(address);
-  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
-  ::close(fd);
-  return ntohs(address.sin_port);
-}
-
 std::string WriteStack() {
   const auto path = std::filesystem::temp_directory_path() /
                     absl::StrCat("semnav_stack_", ::getpid(), ".yaml");
   std::ofstream out(path);
   out << "services:\n";
   for (const char* name : {"gateway", "mapping", "planning", "relocalization", "model-proxy"}) {
-    out << "  " << name << ": {binary: semnav-" << name << ", listen: '127.0.0.1:" << FreePort()
+    out << "  " << name << ": {binary: semnav-" << name << ", listen: '127.0.0.1:" << *semnav::launcher::FreeLoopbackPort()
         << "'}\n";
   }
   return path.string();

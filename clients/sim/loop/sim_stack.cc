@@ -1,40 +1,20 @@
 #include "clients/sim/loop/sim_stack.h"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
 #include <grpcpp/grpcpp.h>
 
 #include "absl/strings/str_cat.h"
+#include "services/launcher/free_port.h"
 
 namespace semnav::sim::loop {
 namespace {
 
-// A loopback port the kernel reports free right now (another process may still take it before
-// the service binds; the stack start then fails loudly).
-absl::StatusOr<int> FreePort() {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  if (fd < 0) return absl::InternalError("socket() failed");
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  socklen_t len = sizeof(addr);
-  const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) == 0 &&
-                  getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0;
-  close(fd);
-  if (!ok) return absl::InternalError("could not find a free port");
-  return ntohs(addr.sin_port);
-}
-
 absl::StatusOr<std::string> Address(bool free_port, int default_port) {
   int port = default_port;
   if (free_port) {
-    absl::StatusOr<int> p = FreePort();
+    absl::StatusOr<int> p = semnav::launcher::FreeLoopbackPort();
     if (!p.ok()) return p.status();
     port = *p;
   }
