@@ -19,6 +19,10 @@ export async function startService(binary: string, args: string[] = [], timeoutM
   if (!binDir || !fs.existsSync(file)) throw new Error(`${file} not built (SEMNAV_BIN_DIR=${binDir})`);
   const child = spawn(file, [...args, '--listen', '127.0.0.1:0'], { stdio: ['ignore', 'pipe', 'inherit'] });
   const exited = new Promise<number | null>((resolve) => child.once('exit', (code) => resolve(code)));
+  // Never outlive the test process, even when it dies before its after() hooks.
+  const killOnExit = () => child.kill('SIGKILL');
+  process.once('exit', killOnExit);
+  exited.then(() => process.removeListener('exit', killOnExit));
   const address = await servingAddress(child, binary, timeoutMs);
   return {
     address,
