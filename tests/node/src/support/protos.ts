@@ -31,7 +31,7 @@ function semnavProtoFiles(): string[] {
 // Field names as written in the .proto (snake_case), enums as names, 64-bit ints as JS numbers
 // (every id and revision the tests see is far below 2^53), unset fields with their defaults and
 // the name of the set oneof member in the oneof's own field.
-export const packageDefinition = protoLoader.loadSync(semnavProtoFiles(), {
+const packageDefinition = protoLoader.loadSync(semnavProtoFiles(), {
   includeDirs: [protoDir],
   keepCase: true,
   longs: Number,
