@@ -87,9 +87,12 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
   }
   section.Read("store_directory", &config.store_directory)
       .Read("watch_min_interval_ms", &config.watch_min_interval_ms)
-      .Read("query_min_cosine", &config.query_min_cosine);
+      .Read("query_min_cosine", &config.query_min_cosine)
+      .Read("occupancy_chunk_bytes", &config.occupancy_chunk_bytes);
   section.Check(!config.store_directory.empty(), "store_directory", "must not be empty");
   section.Check(config.watch_min_interval_ms >= 10, "watch_min_interval_ms", "must be >= 10");
+  section.Check(config.occupancy_chunk_bytes >= 1024 && config.occupancy_chunk_bytes <= (1 << 20),
+                "occupancy_chunk_bytes", "must be in [1024, 1048576]");
   return config;
 }
 

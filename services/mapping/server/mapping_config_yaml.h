@@ -14,6 +14,7 @@ struct MappingServiceConfig {
   int watch_min_interval_ms = 200;           // grid/scene watch rate limit (floor for clients)
   double query_min_cosine = 0.2;             // QueryObjects default when the request says 0
   size_t idempotency_cache_size = 1024;      // remembered request_ids
+  int occupancy_chunk_bytes = 1 << 20;       // GetOccupancy DataChunk size (protocol max 1 MiB)
 };
 
 // Reads the "mapping" YAML section. Keys (defaults in brackets):
@@ -29,6 +30,7 @@ struct MappingServiceConfig {
 //                 label_max_distance_m [1], prune_single_after_s [10], near_m [1.5],
 //                 direction_margin_m [0.2], on_tolerance_m [0.15], region_radius_m [3]}
 //   synonyms: {label: [other names]}   store_directory   watch_min_interval_ms   query_min_cosine
+//   occupancy_chunk_bytes [1048576, in 1024..1048576]
 // Errors are recorded on `section` (reported with their key path by the caller's Finish()).
 MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section);
 

@@ -21,6 +21,17 @@ TEST(MappingConfigYamlTest, DefaultsFollowTheSeeds) {
   EXPECT_EQ(config.core.scene.relations.region_radius_m, 3.0);  // seed 002
   EXPECT_EQ(config.core.range.min_m, 0.3);
   EXPECT_EQ(config.core.range.max_m, 8.0);
+  EXPECT_EQ(config.occupancy_chunk_bytes, 1 << 20);  // DataChunk's protocol maximum
+}
+
+TEST(MappingConfigYamlTest, ChunkSizeStaysWithinTheProtocolLimit) {
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString("mapping:\n  occupancy_chunk_bytes: 2097152\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  MappingServiceConfigFromYaml(section);
+  const absl::Status status = root->Finish();
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.occupancy_chunk_bytes"));
 }
 
 TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {

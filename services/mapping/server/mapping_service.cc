@@ -14,7 +14,6 @@
 namespace semnav::mapping {
 namespace {
 
-constexpr size_t kChunkBytes = 1 << 20;
 constexpr double kMaxOccupancyVoxels = 5e7;
 
 grpc::Status Invalid(absl::string_view field, absl::string_view message) {
@@ -72,8 +71,11 @@ std::string Sha256Hex(const std::string& data) {
 // Streams a prepared payload as DataChunks.
 class ChunkWriter : public grpc::ServerWriteReactor<v1::GetOccupancyResponse> {
  public:
-  ChunkWriter(std::string payload, std::string content_type)
-      : payload_(std::move(payload)), content_type_(std::move(content_type)), sha256_(Sha256Hex(payload_)) {
+  ChunkWriter(std::string payload, std::string content_type, size_t chunk_bytes)
+      : payload_(std::move(payload)),
+        content_type_(std::move(content_type)),
+        sha256_(Sha256Hex(payload_)),
+        chunk_bytes_(chunk_bytes) {
     WriteNext();
   }
   void OnWriteDone(bool ok) override {
@@ -95,7 +97,7 @@ class ChunkWriter : public grpc::ServerWriteReactor<v1::GetOccupancyResponse> {
     auto* chunk = response_.mutable_chunk();
     chunk->set_offset(offset_);
     chunk->set_total_size(payload_.size());
-    chunk->set_data(payload_.substr(offset_, kChunkBytes));
+    chunk->set_data(payload_.substr(offset_, chunk_bytes_));
     if (offset_ == 0) chunk->set_content_type(content_type_);
     offset_ += std::max<size_t>(chunk->data().size(), 1);
     if (offset_ >= payload_.size()) chunk->set_sha256(sha256_);
@@ -105,6 +107,7 @@ class ChunkWriter : public grpc::ServerWriteReactor<v1::GetOccupancyResponse> {
   std::string payload_;
   std::string content_type_;
   std::string sha256_;
+  size_t chunk_bytes_;
   size_t offset_ = 0;
   v1::GetOccupancyResponse response_;
 };
@@ -207,7 +210,8 @@ grpc::ServerWriteReactor<v1::GetOccupancyResponse>* MappingServiceImpl::GetOccup
     return FailStream<v1::GetOccupancyResponse>(
         Invalid("max", absl::StrCat("box holds ", voxels, " voxels, more than ", kMaxOccupancyVoxels)));
   }
-  return new ChunkWriter(engine_.OccupancyBinary(min, max), "application/x-octomap-bt");
+  return new ChunkWriter(engine_.OccupancyBinary(min, max), "application/x-octomap-bt",
+                         static_cast<size_t>(config_.occupancy_chunk_bytes));
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::GetSceneGraph(grpc::CallbackServerContext* context,

@@ -10,7 +10,8 @@ import { parseOctomapBt } from './support/octomap_bt';
 
 let mapping: MappingUnderTest;
 before(async () => {
-  mapping = await startMapping();
+  // Small chunks so the 12 KB test map crosses several chunk boundaries.
+  mapping = await startMapping('  occupancy_chunk_bytes: 4096\n');
   await streamFrames(mapping.client, [wallFrame(1)]);
 });
 after(async () => {
@@ -41,7 +42,9 @@ async function download(request: object): Promise<{ payload: Buffer; contentType
 }
 
 test('chunks reassemble into a checksummed OctoMap holding the wall and the chair', async () => {
-  const { payload, contentType } = await download({ min: { x: 0, y: -1, z: -1 }, max: { x: 4, y: 5, z: 3 } });
+  const { payload, contentType, chunks } = await download({ min: { x: 0, y: -1, z: -1 }, max: { x: 4, y: 5, z: 3 } });
+  assert.equal(chunks, Math.ceil(payload.length / 4096), `chunks for ${payload.length} bytes`);
+  assert.ok(chunks >= 2, `expected several chunks, got ${chunks}`);
   assert.equal(contentType, 'application/x-octomap-bt');
   const tree = parseOctomapBt(payload);
   assert.equal(tree.id, 'OcTree');
