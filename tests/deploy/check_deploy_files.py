@@ -122,7 +122,11 @@ class RunningService:
         line = self.process.stdout.readline()
         if " serving on " not in line:
             self.process.kill()
-            raise AssertionError(f"{binary} --config {config_path}: {line}{self.process.stderr.read()}")
+            error = self.process.stderr.read()
+            self.process.wait()
+            self.process.stdout.close()
+            self.process.stderr.close()
+            raise AssertionError(f"{binary} --config {config_path}: {line}{error}")
         self.port = int(line.strip().rsplit(":", 1)[1])
 
     def stop(self):
@@ -261,6 +265,18 @@ class DeployFilesTest(unittest.TestCase):
                 self.assertEqual(health[:2], ["semnav", "probe"])
                 self.assertEqual(health[health.index("--addr") + 1], f"127.0.0.1:{port}")
                 self.start_and_probe(binary_of(service), config, [health[2:]])
+
+    def test_probe_exits_nonzero_with_the_code_of_a_failed_check(self):
+        service = RunningService("semnav-planning", os.path.join(DEPLOY, "k8s/config/planning.yaml"), self.pki, self.tmp)
+        try:
+            unknown = probe(["--addr", "x", "--service", "semnav.planning.v1.NoSuchService"], service.port)
+            self.assertEqual((unknown.returncode, unknown.stderr.split(":")[:2]), (1, ["semnav probe", " NOT_FOUND"]))
+            token = probe(["--addr", "x", "--token_file", os.path.join(self.pki.etc, "tokens/client.token")],
+                          service.port)
+            self.assertEqual(token.stdout.strip(), "SERVING")  # a token to a server without auth is ignored
+        finally:
+            self.assertEqual(service.stop(), 0)
+        self.assertEqual(probe(["--addr", "x", "--timeout_s", "soon"], 1).returncode, 2)
 
     # --- deploy/k8s --------------------------------------------------------------------------
 
