@@ -43,9 +43,11 @@ in_ns() {
   shift
   ip netns exec "${ns[$host]}" "$@"
 }
+in_ns robot true 2>/dev/null || skip "cannot enter network namespaces here (ip netns exec failed)"
 
 # --- network: robot <-> ground on 10.77.1.0/24, ground <-> cloud on 10.77.2.0/24 ---------------
-ip link add "sr$tag" netns "${ns[robot]}" type veth peer name "sg$tag" netns "${ns[ground]}"
+ip link add "sr$tag" netns "${ns[robot]}" type veth peer name "sg$tag" netns "${ns[ground]}" 2>/dev/null ||
+  skip "cannot create veth pairs here (ip link add type veth failed)"
 ip link add "tg$tag" netns "${ns[ground]}" type veth peer name "tc$tag" netns "${ns[cloud]}"
 in_ns robot ip addr add 10.77.1.1/24 dev "sr$tag"
 in_ns ground ip addr add 10.77.1.2/24 dev "sg$tag"
@@ -66,7 +68,7 @@ declare -A hosts_file=(
   [cloud]="10.77.2.2 ground-station
 10.77.2.3 cloud")
 for host in robot ground cloud; do
-  mkdir -p "/etc/netns/${ns[$host]}"
+  mkdir -p "/etc/netns/${ns[$host]}" 2>/dev/null || skip "cannot write /etc/netns (per-namespace /etc/hosts)"
   printf '127.0.0.1 localhost\n%s\n' "${hosts_file[$host]}" >"/etc/netns/${ns[$host]}/hosts"
 done
 
