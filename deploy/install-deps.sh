@@ -14,7 +14,7 @@ packages=(
   # config, text, HTTP
   libyaml-cpp-dev nlohmann-json3-dev libicu-dev libcurl4-openssl-dev libcpp-httplib-dev
   # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-onnx python3-numpy
+  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-onnx python3-numpy python3-yaml
   iproute2 openssl
   # contract tooling from npm (buf, grpc-js)
   nodejs

@@ -8,6 +8,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "services/common/cli/flags.h"
+#include "services/launcher/health_probe.h"
 #include "services/launcher/stack_runner.h"
 
 namespace {
@@ -20,6 +21,9 @@ Commands:
   up [--config FILE]        start every service on localhost, wait until all are SERVING,
                             print the endpoints, stop them all on Ctrl-C / SIGTERM
   status [--config FILE]    health of every service of the stack (exit 1 if any is down)
+  probe --addr HOST:PORT    health of one service, with TLS/mTLS and token flags (see
+                            `semnav probe --help`); exit 0 when SERVING: for container and
+                            orchestrator health checks
   bench <area> [args...]    run the benchmark of an area (e.g. mapping, planning,
                             relocalization, modelproxy, gateway, mission); `--json FILE` writes
                             its figures
@@ -117,6 +121,13 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (command == "bench") return Bench(argc, argv);
+  if (command == "probe") {
+    if (argc > 2 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
+      std::cout << "Usage: semnav probe --addr HOST:PORT [flags]\n\nFlags:\n" << semnav::FlagsHelp(semnav::launcher::ProbeFlags());
+      return 0;
+    }
+    return semnav::launcher::RunProbe(argc, argv, 2);
+  }
   if (command == "demo") return ExecSibling("semnav-sim-demo", argc, argv, 2);
   if (command == "up" || command == "status") {
     absl::StatusOr<StackConfig> stack = StackFromFlags(argc, argv);

@@ -7,25 +7,20 @@
 #include <iomanip>
 #include <iostream>
 
-#include <grpcpp/create_channel.h>
-
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
-#include "grpc/health/v1/health.grpc.pb.h"
+#include "services/launcher/health_probe.h"
 
 namespace semnav::launcher {
 namespace {
 
 // One health check; "SERVING", "NOT_SERVING", or the transport error.
 std::string CheckHealth(const std::string& address, absl::Duration timeout) {
-  auto stub = grpc::health::v1::Health::NewStub(
-      grpc::CreateChannel(address, grpc::InsecureChannelCredentials()));
-  grpc::ClientContext context;
-  context.set_deadline(absl::ToChronoTime(absl::Now() + timeout));
-  grpc::health::v1::HealthCheckResponse response;
-  grpc::Status status = stub->Check(&context, {}, &response);
-  if (!status.ok()) return absl::StrCat("UNAVAILABLE (", status.error_message(), ")");
-  return grpc::health::v1::HealthCheckResponse::ServingStatus_Name(response.status());
+  ClientOptions plaintext;
+  plaintext.address = address;
+  absl::StatusOr<std::string> health = ProbeHealth(plaintext, "", timeout);
+  if (!health.ok()) return absl::StrCat("UNAVAILABLE (", health.status().message(), ")");
+  return *health;
 }
 
 }  // namespace

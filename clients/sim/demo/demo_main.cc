@@ -10,6 +10,7 @@
 #include "clients/sim/bench/mission_report.h"
 #include "clients/sim/core/occupancy_raster.h"
 #include "clients/sim/loop/episode_runner.h"
+#include "clients/sim/loop/remote_endpoints.h"
 #include "clients/sim/loop/sim_stack.h"
 #include "clients/sim/loop/smoke_episode.h"
 
@@ -19,19 +20,24 @@ namespace loop = semnav::sim::loop;
 namespace sim = semnav::sim;
 
 constexpr char kUsage[] =
-    "usage: semnav-sim-demo [--out DIR] [--default-ports]\n"
+    "usage: semnav-sim-demo [--out DIR] [--default-ports | --remote FILE]\n"
     "  --out DIR         report folder (default semnav_demo_report)\n"
-    "  --default-ports   start the services on deploy/local.yaml's ports instead of free ones\n";
+    "  --default-ports   start the services on deploy/local.yaml's ports instead of free ones\n"
+    "  --remote FILE     start nothing: use the gateway, mapping and planning of FILE's client\n"
+    "                    sections (address, tls.*, auth.*; see docs/operations.md)\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string out_dir = "semnav_demo_report";
   bool free_ports = true;
+  std::string remote_file;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--out" && i + 1 < argc) {
       out_dir = argv[++i];
+    } else if (arg == "--remote" && i + 1 < argc) {
+      remote_file = argv[++i];
     } else if (arg == "--default-ports") {
       free_ports = false;
     } else {
@@ -46,18 +52,32 @@ int main(int argc, char** argv) {
   }
   out_dir = std::filesystem::absolute(out_dir).string();
   std::filesystem::create_directories(out_dir);
-  const std::string bin_dir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
-  std::cout << "starting mapping, planning and gateway from " << bin_dir << " ..." << std::endl;
-  absl::StatusOr<std::unique_ptr<loop::SimStack>> stack = loop::SimStack::Start(
-      {bin_dir, out_dir + "/stack", free_ports, "SEMANTIC_FRONTIER"});
-  if (!stack.ok()) {
-    std::cerr << "semnav-sim-demo: cannot start the stack: " << stack.status() << "\n";
+  std::unique_ptr<loop::SimStack> stack;
+  absl::StatusOr<loop::Endpoints> endpoints;
+  std::string gateway_address = "from " + remote_file;
+  if (!remote_file.empty()) {
+    endpoints = loop::LoadRemoteEndpoints(remote_file);
+  } else {
+    const std::string bin_dir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
+    std::cout << "starting mapping, planning and gateway from " << bin_dir << " ..." << std::endl;
+    absl::StatusOr<std::unique_ptr<loop::SimStack>> started =
+        loop::SimStack::Start({bin_dir, out_dir + "/stack", free_ports, "SEMANTIC_FRONTIER"});
+    if (started.ok()) {
+      stack = *std::move(started);
+      endpoints = stack->endpoints();
+      gateway_address = stack->gateway_address();
+    } else {
+      endpoints = started.status();
+    }
+  }
+  if (!endpoints.ok()) {
+    std::cerr << "semnav-sim-demo: cannot reach the stack: " << endpoints.status() << "\n";
     return 1;
   }
   std::cout << absl::StrFormat("world %s, start %d, instruction \"find a %s\" (gateway %s)\n", spec->world.name,
-                               spec->start_index, spec->target, (*stack)->gateway_address());
+                               spec->start_index, spec->target, gateway_address);
   absl::StatusOr<loop::EpisodeResult> result =
-      loop::RunEpisode(*spec, (*stack)->endpoints(), [](int step, const loop::EpisodeResult&) {
+      loop::RunEpisode(*spec, *endpoints, [](int step, const loop::EpisodeResult&) {
         if (step % 20 == 19) std::cout << "  step " << step + 1 << "\n" << std::flush;
       });
   if (!result.ok()) {
