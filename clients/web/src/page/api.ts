@@ -1,4 +1,4 @@
-// The proxy's HTTP/JSON + SSE API (see docs/dashboard.md): unary calls and server streams that
+// The proxy's HTTP/JSON + SSE API (see docs/dashboard.md): unary calls, and server streams that
 // reconnect by themselves, with the operator's bearer token from ?token= (kept for the session).
 export type Service = "operator" | "mapping" | "planning";
 
@@ -35,59 +35,83 @@ export async function call<Response>(service: Service, method: string, request: 
   return body as Response;
 }
 
-export interface StreamHandlers<Message> {
+export interface Subscription<Message> {
+  service: Service;
+  method: string;
   request: () => object;                 // built again on every (re)connect, to resume
   onMessage: (message: Message) => void;
-  onStatus?: (connected: boolean, error?: ApiError) => void;
-  onEnd?: () => void;                    // the stream ended OK: not reopened
+  onStatus?: (connected: boolean) => void;
+  onEnd?: () => void;                    // the stream ended OK: it is dropped
 }
 
-// A server stream read with fetch (so the token header goes along), reopened after errors with
-// a growing pause; close() stops it.
-export function stream<Message>(service: Service, method: string, handlers: StreamHandlers<Message>): { close(): void } {
-  const abort = new AbortController();
-  let retryMs = 500;
-  const run = async () => {
-    while (!abort.signal.aborted) {
-      let ended = false;
-      try {
-        const reply = await fetch(`/api/${service}/${method}`, {
-          method: "POST", headers: headers(), body: JSON.stringify(handlers.request()), signal: abort.signal,
-        });
-        if (!reply.ok || reply.body === null) throw new CallError(await reply.json() as ApiError);
-        handlers.onStatus?.(true);
-        ended = await readEvents(reply.body, (event, data) => {
-          if (event === "message") {
-            retryMs = 500;
-            handlers.onMessage(JSON.parse(data) as Message);
-          } else if (event === "error") {
-            throw new CallError(JSON.parse(data) as ApiError);
-          }
-        });
-      } catch (error) {
-        if (abort.signal.aborted) return;
-        handlers.onStatus?.(false, error instanceof CallError ? error.body : { code: "UNAVAILABLE", message: String(error), details: [] });
-      }
-      if (ended) {
-        handlers.onEnd?.();
-        return;
-      }
-      await new Promise((resolve) => setTimeout(resolve, retryMs));
-      retryMs = Math.min(retryMs * 2, 5000);
+// Every server stream of the page over one /api/streams connection (a browser allows only six
+// HTTP/1.1 connections per host, and unary calls need some). Subscribing or unsubscribing
+// reopens the connection with every stream's resume request; so does an error, after a pause
+// that grows while errors repeat.
+export class StreamHub {
+  private readonly subscriptions = new Map<string, Subscription<never>>();
+  private abort: AbortController | null = null;
+  private retryMs = 500;
+  private reconnectTimer = 0;
+
+  subscribe<Message>(name: string, subscription: Subscription<Message>): void {
+    this.subscriptions.set(name, subscription as Subscription<never>);
+    this.reconnect(0);
+  }
+
+  unsubscribe(name: string): void {
+    if (this.subscriptions.delete(name)) this.reconnect(0);
+  }
+
+  private reconnect(delayMs: number): void {
+    clearTimeout(this.reconnectTimer);
+    this.reconnectTimer = window.setTimeout(() => void this.connect(), delayMs);
+  }
+
+  private async connect(): Promise<void> {
+    this.abort?.abort();
+    if (this.subscriptions.size === 0) return;
+    const abort = (this.abort = new AbortController());
+    const body: Record<string, object> = {};
+    for (const [name, s] of this.subscriptions) body[name] = { service: s.service, method: s.method, request: s.request() };
+    try {
+      const reply = await fetch("/api/streams", { method: "POST", headers: headers(), body: JSON.stringify(body), signal: abort.signal });
+      if (!reply.ok || reply.body === null) throw new CallError(await reply.json() as ApiError);
+      for (const s of this.subscriptions.values()) s.onStatus?.(true);
+      await readEvents(reply.body, (event, data) => {
+        const { stream, message } = JSON.parse(data) as { stream: string; message: never };
+        const subscription = this.subscriptions.get(stream);
+        if (subscription === undefined) return;
+        if (event === "message") {
+          this.retryMs = 500;
+          subscription.onMessage(message);
+        } else if (event === "end") {
+          this.subscriptions.delete(stream);
+          subscription.onEnd?.();
+        } else if (event === "error") {
+          subscription.onStatus?.(false);
+          this.reconnect(this.retryMs);
+          this.retryMs = Math.min(this.retryMs * 2, 5000);
+        }
+      });
+    } catch {
+      if (abort.signal.aborted) return;
     }
-  };
-  void run();
-  return { close: () => abort.abort() };
+    if (abort.signal.aborted) return;
+    for (const s of this.subscriptions.values()) s.onStatus?.(false);
+    this.reconnect(this.retryMs);
+    this.retryMs = Math.min(this.retryMs * 2, 5000);
+  }
 }
 
-// Parses text/event-stream; returns true when the "end" event arrived.
-async function readEvents(body: ReadableStream<Uint8Array>, onEvent: (event: string, data: string) => void): Promise<boolean> {
+// Parses text/event-stream until the connection closes.
+async function readEvents(body: ReadableStream<Uint8Array>, onEvent: (event: string, data: string) => void): Promise<void> {
   const reader = body.getReader();
   const decoder = new TextDecoder();
   let buffer = "";
   for (;;) {
     const { value, done } = await reader.read();
-    if (done) return false;
+    if (done) return;
     buffer += decoder.decode(value, { stream: true });
     let boundary;
     while ((boundary = buffer.indexOf("\n\n")) >= 0) {
@@ -99,7 +123,6 @@ async function readEvents(body: ReadableStream<Uint8Array>, onEvent: (event: str
         if (line.startsWith("event: ")) event = line.slice(7);
         else if (line.startsWith("data: ")) data.push(line.slice(6));
       }
-      if (event === "end") return true;
       if (data.length > 0) onEvent(event, data.join("\n"));
     }
   }

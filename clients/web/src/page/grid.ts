@@ -6,6 +6,8 @@ type GridMap = semnav.common.v1.GridMap;
 type LayerKind = semnav.common.v1.GridLayerKind;
 
 const UNKNOWN = 255;
+// Value of a cell nobody has seen, per layer (255 unless the layer says otherwise).
+const UNOBSERVED: Partial<Record<LayerKind, number>> = { GRID_LAYER_KIND_EXPLORED: 0, GRID_LAYER_KIND_SEMANTIC: 0 };
 
 export class LiveGrid {
   grid: GridMap | null = null;
@@ -23,12 +25,18 @@ export class LiveGrid {
       this.layers = new Map(part.layers.map((l) => [l.kind, decodeBase64(l.data)]));
       return;
     }
-    // The delta window lies inside the watched window; copy it in row by row.
+    // The delta covers every changed cell; the whole-map watch grows with the map.
     const resolution = this.grid.resolution;
-    const column0 = Math.round(((part.origin?.x ?? 0) - (this.grid.origin?.x ?? 0)) / resolution);
-    const row0 = Math.round(((part.origin?.y ?? 0) - (this.grid.origin?.y ?? 0)) / resolution);
+    const cell = (metres: number, origin: number) => Math.round((metres - origin) / resolution);
+    const ox = this.grid.origin?.x ?? 0, oy = this.grid.origin?.y ?? 0;
+    let column0 = cell(part.origin?.x ?? 0, ox), row0 = cell(part.origin?.y ?? 0, oy);
     if (column0 < 0 || row0 < 0 || column0 + part.width > this.grid.width || row0 + part.height > this.grid.height) {
-      return;  // outside the snapshot (the map grew): the next snapshot brings it
+      const left = Math.min(0, column0), bottom = Math.min(0, row0);
+      const width = Math.max(this.grid.width, column0 + part.width) - left;
+      const height = Math.max(this.grid.height, row0 + part.height) - bottom;
+      this.resize(-left, -bottom, width, height);
+      column0 -= left;
+      row0 -= bottom;
     }
     for (const layer of part.layers) {
       const target = this.layers.get(layer.kind);
@@ -39,6 +47,20 @@ export class LiveGrid {
       }
     }
     this.grid = { ...this.grid, revision: part.revision };
+  }
+
+  // Moves the cells by (shiftColumns, shiftRows) into a width x height grid; new cells unknown.
+  private resize(shiftColumns: number, shiftRows: number, width: number, height: number): void {
+    const grid = this.grid!;
+    for (const [kind, cells] of this.layers) {
+      const grown = new Uint8Array(width * height).fill(UNOBSERVED[kind] ?? UNKNOWN);
+      for (let row = 0; row < grid.height; ++row) {
+        grown.set(cells.subarray(row * grid.width, (row + 1) * grid.width), (row + shiftRows) * width + shiftColumns);
+      }
+      this.layers.set(kind, grown);
+    }
+    const origin = { x: (grid.origin?.x ?? 0) - shiftColumns * grid.resolution, y: (grid.origin?.y ?? 0) - shiftRows * grid.resolution, yaw: 0 };
+    this.grid = { ...grid, origin, width, height };
   }
 
   layer(kind: LayerKind): Uint8Array | undefined {

@@ -1,6 +1,6 @@
 // Wires the proxy's streams and calls to the state, the map and the panels.
 import type { semnav } from "../generated/protos";
-import { call, CallError, requestId, stream } from "./api";
+import { call, CallError, requestId, StreamHub } from "./api";
 import { MapView } from "./map_view";
 import { appendEvent, renderFrontiers, renderPlan, renderSceneGraph, renderTask } from "./panels";
 import { DashboardState, type Point } from "./state";
@@ -8,6 +8,7 @@ import { DashboardState, type Point } from "./state";
 
 const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
 const state = new DashboardState();
+const streams = new StreamHub();
 const map = new MapView($<HTMLCanvasElement>("map"), state);
 let frame = 0;
 // Redraw at most once per animation frame however many messages arrive.
@@ -39,7 +40,8 @@ function link(name: string): (connected: boolean) => void {
 }
 
 function watchMap(): void {
-  stream<semnav.mapping.v1.WatchGridMapResponse>("mapping", "WatchGridMap", {
+  streams.subscribe<semnav.mapping.v1.WatchGridMapResponse>("grid", {
+    service: "mapping", method: "WatchGridMap",
     request: () => ({ since_revision: state.grid.revision, min_interval_ms: 500 }),
     onMessage: (update) => {
       state.grid.apply(update);
@@ -47,7 +49,8 @@ function watchMap(): void {
     },
     onStatus: link("map"),
   });
-  stream<semnav.mapping.v1.WatchSceneGraphResponse>("mapping", "WatchSceneGraph", {
+  streams.subscribe<semnav.mapping.v1.WatchSceneGraphResponse>("scene", {
+    service: "mapping", method: "WatchSceneGraph",
     request: () => ({ since_revision: state.sceneRevision }),
     onMessage: (update) => {
       state.applySceneGraph(update);
@@ -59,7 +62,8 @@ function watchMap(): void {
 }
 
 function watchRobot(): void {
-  stream<semnav.reasoning.v1.StreamFastTelemetryResponse>("operator", "StreamFastTelemetry", {
+  streams.subscribe<semnav.reasoning.v1.StreamFastTelemetryResponse>("fast", {
+    service: "operator", method: "StreamFastTelemetry",
     request: () => ({ robot_id: state.robotId, max_rate_hz: 10 }),
     onMessage: (sample) => {
       state.applyFastTelemetry(sample);
@@ -68,7 +72,8 @@ function watchRobot(): void {
     },
     onStatus: link("robot"),
   });
-  stream<semnav.reasoning.v1.StreamSlowTelemetryResponse>("operator", "StreamSlowTelemetry", {
+  streams.subscribe<semnav.reasoning.v1.StreamSlowTelemetryResponse>("slow", {
+    service: "operator", method: "StreamSlowTelemetry",
     request: () => ({ robot_id: state.robotId, period: { seconds: 1 } }),
     onMessage: (sample) => {
       state.emergencyStop = sample.emergency_stop_active;
@@ -78,7 +83,8 @@ function watchRobot(): void {
     onStatus: link("gateway"),
   });
   let lastEvent = "0";
-  stream<semnav.reasoning.v1.StreamEventsResponse>("operator", "StreamEvents", {
+  streams.subscribe<semnav.reasoning.v1.StreamEventsResponse>("events", {
+    service: "operator", method: "StreamEvents",
     request: () => ({ robot_id: "", last_event_id: lastEvent }),
     onMessage: (message) => {
       if (message.event === null) return;
@@ -89,24 +95,23 @@ function watchRobot(): void {
   });
 }
 
-let taskWatch: { id: string; close(): void } | null = null;
+// One task is watched at a time: the latest submitted or the one the robot reports.
+let watchedTask = "";
 function watchTask(taskId: string): void {
-  if (taskWatch?.id === taskId) return;
-  taskWatch?.close();
+  if (watchedTask === taskId) return;
+  watchedTask = taskId;
   let revision = "0";
-  taskWatch = {
-    id: taskId,
-    ...stream<semnav.reasoning.v1.WatchTaskResponse>("operator", "WatchTask", {
-      request: () => ({ task_id: taskId, since_revision: revision }),
-      onMessage: (message) => {
-        if (message.task === null) return;
-        revision = message.task.revision;
-        state.task = message.task;
-        renderTask(state);
-        redraw();
-      },
-    }),
-  };
+  streams.subscribe<semnav.reasoning.v1.WatchTaskResponse>("task", {
+    service: "operator", method: "WatchTask",
+    request: () => ({ task_id: taskId, since_revision: revision }),
+    onMessage: (message) => {
+      if (message.task === null) return;
+      revision = message.task.revision;
+      state.task = message.task;
+      renderTask(state);
+      redraw();
+    },
+  });
 }
 
 async function refreshFrontiers(): Promise<void> {

@@ -48,7 +48,7 @@ export function renderTask(state: DashboardState): void {
     `progress ${Math.round(task.progress * 100)}%`,
     `re-plans ${task.replans}`,
     `exploration goals ${task.explore_goals}`,
-    target && `target ${target.label} #${target.object_id} (${target.path.replace("RESOLUTION_PATH_", "").toLowerCase()} path, ${target.confidence.toFixed(2)})`,
+    target && `target ${target.label || state.objects.get(target.object_id)?.label || ""} #${target.object_id} (${target.path.replace("RESOLUTION_PATH_", "").toLowerCase()} path, ${target.confidence.toFixed(2)})`,
   ].filter(Boolean);
   $("task-phase").textContent = details.join(" · ");
   const list = $("task-subgoals");

@@ -3,7 +3,8 @@
 // --start-stack), the proxy, and the page. Checks that the map from the stack is drawn, that a
 // typed instruction makes a task whose progress shows, that two clicks plan a path, and that
 // the e-stop button stops the task and the robot. --screenshot-dir also saves screenshots.
-// Usage: node dashboard_e2e.js --bin-dir DIR --web-dir DIR [--screenshot-dir DIR] [--chromium PATH]
+// Usage: node dashboard_e2e.js --bin-dir DIR --web-dir DIR [--screenshot-dir DIR [--screenshot-delay-ms MS]]
+//        [--chromium PATH] [--speed X  simulated seconds per wall second, default 1]
 import { type ChildProcess, spawn } from "node:child_process";
 import * as fs from "node:fs";
 import * as os from "node:os";
@@ -11,7 +12,7 @@ import * as path from "node:path";
 import * as readline from "node:readline";
 import { chromium, type Page } from "playwright-core";
 
-interface Args { binDir: string; webDir: string; screenshotDir?: string; chromium: string; speed: string }
+interface Args { binDir: string; webDir: string; screenshotDir?: string; screenshotDelayMs: string; chromium: string; speed: string }
 
 function parseArgs(argv: string[]): Args {
   const get = (name: string) => {
@@ -19,8 +20,9 @@ function parseArgs(argv: string[]): Args {
     return i >= 0 ? argv[i + 1] : undefined;
   };
   const binDir = get("bin-dir"), webDir = get("web-dir");
-  if (binDir === undefined || webDir === undefined) throw new Error("usage: dashboard_e2e.js --bin-dir DIR --web-dir DIR [--screenshot-dir DIR] [--chromium PATH] [--speed X]");
-  return { binDir, webDir, screenshotDir: get("screenshot-dir"), chromium: get("chromium") ?? "/usr/bin/chromium", speed: get("speed") ?? "2" };
+  if (binDir === undefined || webDir === undefined) throw new Error("usage: dashboard_e2e.js --bin-dir DIR --web-dir DIR [--screenshot-dir DIR [--screenshot-delay-ms MS]] [--chromium PATH] [--speed X]");
+  return { binDir, webDir, screenshotDir: get("screenshot-dir"), screenshotDelayMs: get("screenshot-delay-ms") ?? "3000",
+           chromium: get("chromium") ?? "/usr/bin/chromium", speed: get("speed") ?? "1" };
 }
 
 const children: ChildProcess[] = [];
@@ -104,7 +106,8 @@ async function run(args: Args): Promise<void> {
     check(drawn > 1000, `the canvas draws ${drawn} free-cell pixels`);
 
     // An instruction typed in becomes a running task with visible progress.
-    const instruction = `find a ${stack.nearest_object} then find a fire extinguisher`;
+    // Exploring after the find keeps the task running until the e-stop.
+    const instruction = `find a ${stack.nearest_object} then explore then look around then explore`;
     await page.fill("#instruction", instruction);
     await page.click("#instruction-form button[type=submit]");
     await page.waitForFunction(() => document.getElementById("task-card")?.dataset.status === "running", null, { timeout: 15000 });
@@ -121,7 +124,29 @@ async function run(args: Args): Promise<void> {
     }, [x0, y0], { timeout: 20000 });
     check(true, "the robot moves under the task");
 
-    // Two clicks plan a path: from the robot to the far corner of the known map.
+    if (args.screenshotDir !== undefined) {
+      await page.waitForTimeout(Number(args.screenshotDelayMs));
+      await page.screenshot({ path: path.join(args.screenshotDir, "dashboard-mission.png") });
+    }
+
+    // The e-stop button stops the task and the robot.
+    const before = await page.getAttribute("#task-card", "data-status");
+    check(before === "running", `the task is still running before the e-stop (${before}: ${await text(page, "#task-reason")})`);
+    await page.click("#estop");
+    await page.waitForFunction(() => document.getElementById("task-card")?.dataset.status === "e-stopped", null, { timeout: 10000 });
+    check(true, `after the e-stop the task shows "${await text(page, "#task-status")}"`);
+    const taskId = await page.getAttribute("#task-card", "data-task-id");
+    const status = await page.evaluate(async (id) => {
+      const reply = await fetch("/api/operator/GetTask", { method: "POST", body: JSON.stringify({ task_id: id }) });
+      return (await reply.json()).task.status as string;
+    }, taskId);
+    check(status === "TASK_STATUS_CANCELLED", `the gateway has the task ${status}`);
+    const [sx, sy] = await pose(page);
+    await page.waitForTimeout(1500);
+    const [ex, ey] = await pose(page);
+    check(Math.hypot(ex - sx, ey - sy) < 0.05, `the robot stays put after the e-stop (moved ${Math.hypot(ex - sx, ey - sy).toFixed(3)} m)`);
+
+    // Two clicks plan a path: from the robot to the farthest known free cell.
     const [rx, ry] = await pose(page);
     await page.click("#plan-mode");
     const from = await toScreen(page, rx, ry);
@@ -147,27 +172,8 @@ async function run(args: Args): Promise<void> {
     await page.waitForSelector("#plan-figures", { timeout: 15000 });
     const figures = await text(page, "#plan-figures");
     check(/length\d+\.\d+ m/.test(figures) && /energy\d+ J/.test(figures), `two clicks plan a path: ${figures.replace(/\s+/g, " ")}`);
-    if (args.screenshotDir !== undefined) {
-      await page.waitForTimeout(1500);
-      await page.screenshot({ path: path.join(args.screenshotDir, "dashboard-mission.png") });
-    }
+    if (args.screenshotDir !== undefined) await page.screenshot({ path: path.join(args.screenshotDir, "dashboard-plan.png") });
 
-    // The e-stop button stops the task and the robot.
-    check(await page.getAttribute("#task-card", "data-status") === "running", "the task is still running before the e-stop");
-    await page.click("#estop");
-    await page.waitForFunction(() => document.getElementById("task-card")?.dataset.status === "e-stopped", null, { timeout: 10000 });
-    check(true, `after the e-stop the task shows "${await text(page, "#task-status")}"`);
-    const taskId = await page.getAttribute("#task-card", "data-task-id");
-    const status = await page.evaluate(async (id) => {
-      const reply = await fetch("/api/operator/GetTask", { method: "POST", body: JSON.stringify({ task_id: id }) });
-      return (await reply.json()).task.status as string;
-    }, taskId);
-    check(status === "TASK_STATUS_CANCELLED", `the gateway has the task ${status}`);
-    const [sx, sy] = await pose(page);
-    await page.waitForTimeout(1500);
-    const [ex, ey] = await pose(page);
-    check(Math.hypot(ex - sx, ey - sy) < 0.05, `the robot stays put after the e-stop (moved ${Math.hypot(ex - sx, ey - sy).toFixed(3)} m)`);
-    if (args.screenshotDir !== undefined) await page.screenshot({ path: path.join(args.screenshotDir, "dashboard-estop.png") });
     check(pageErrors.length === 0, `no page errors${pageErrors.length ? `: ${pageErrors.join("; ")}` : ""}`);
     console.log(`passed in ${((Date.now() - started) / 1000).toFixed(1)} s`);
   } finally {
