@@ -1,5 +1,5 @@
 // Builds the dashboard into OUT: semnav-dashboard.js (the Node proxy, dependencies bundled),
-// static/ (page bundle, HTML, CSS) and dashboard_e2e.js (the Playwright test). The page's proto
+// static/ (page bundle, HTML, CSS) and the tests dashboard_e2e.js (Playwright) and proxy_test.js. The page's proto
 // types are generated first (src/generated/protos.ts). Usage: node build.mjs [--out DIR]
 import * as fs from "node:fs";
 import * as path from "node:path";
@@ -29,10 +29,10 @@ await Promise.all([
   }),
   esbuild.build({
     ...node,
-    entryPoints: [path.join(here, "src/test/dashboard_e2e.ts")],
-    outfile: path.join(out, "dashboard_e2e.js"),
+    entryPoints: [path.join(here, "src/test/dashboard_e2e.ts"), path.join(here, "src/test/proxy_test.ts")],
+    outdir: out,
     external: ["playwright-core"],
-    nodePaths: [path.resolve(here, "../../node_modules")],
+    define: { DEFAULT_PROTO_DIR: JSON.stringify(protoDir), NODE_MODULES_DIR: JSON.stringify(path.resolve(here, "../../node_modules")) },
   }),
   esbuild.build({
     bundle: true, platform: "browser", target: "chrome110", format: "iife", logLevel: "warning", sourcemap: true,

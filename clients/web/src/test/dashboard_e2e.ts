@@ -9,8 +9,13 @@ import { type ChildProcess, spawn } from "node:child_process";
 import * as fs from "node:fs";
 import * as os from "node:os";
 import * as path from "node:path";
+import { createRequire } from "node:module";
 import * as readline from "node:readline";
-import { chromium, type Page } from "playwright-core";
+import type { Page } from "playwright-core";
+
+// playwright-core stays outside the bundle; it is loaded from the checkout's node_modules.
+declare const NODE_MODULES_DIR: string;
+const { chromium } = createRequire(path.join(NODE_MODULES_DIR, "resolve-from-here.js"))("playwright-core") as typeof import("playwright-core");
 
 interface Args { binDir: string; webDir: string; screenshotDir?: string; screenshotDelayMs: string; chromium: string; speed: string }
 
