@@ -46,7 +46,7 @@ export class MapView {
     if (this.state.show.relations) this.drawRelations(c);
     if (this.state.show.frontiers) this.drawFrontiers(c);
     this.drawTaskPath(c);
-    for (const leg of this.state.commandLegs) this.drawLeg(c, leg, 3, [6, 4]);
+    for (const leg of this.state.commandLegs) this.drawLeg(c, leg, 2.5, [6, 4]);
     this.drawPlan(c);
     if (this.state.show.objects) this.drawObjects(c);
     this.drawRobot(c);
@@ -135,8 +135,8 @@ export class MapView {
     if (path.length < 2) return;
     c.save();
     c.strokeStyle = COLOURS.task;
-    c.globalAlpha = 0.7;
-    c.lineWidth = 5;
+    c.globalAlpha = 0.45;
+    c.lineWidth = 8;
     c.lineJoin = c.lineCap = "round";
     this.polyline(c, path);
     c.restore();

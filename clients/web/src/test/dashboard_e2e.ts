@@ -4,7 +4,7 @@
 // typed instruction makes a task whose progress shows, that two clicks plan a path, and that
 // the e-stop button stops the task and the robot. --screenshot-dir also saves screenshots.
 // Usage: node dashboard_e2e.js --bin-dir DIR --web-dir DIR [--screenshot-dir DIR [--screenshot-delay-ms MS]]
-//        [--chromium PATH] [--speed X  simulated seconds per wall second, default 1]
+//        [--viewport WxH] [--chromium PATH] [--speed X  simulated seconds per wall second, default 1]
 import { type ChildProcess, spawn } from "node:child_process";
 import * as fs from "node:fs";
 import * as os from "node:os";
@@ -17,7 +17,7 @@ import type { Page } from "playwright-core";
 declare const NODE_MODULES_DIR: string;
 const { chromium } = createRequire(path.join(NODE_MODULES_DIR, "resolve-from-here.js"))("playwright-core") as typeof import("playwright-core");
 
-interface Args { binDir: string; webDir: string; screenshotDir?: string; screenshotDelayMs: string; chromium: string; speed: string }
+interface Args { binDir: string; webDir: string; screenshotDir?: string; screenshotDelayMs: string; viewport: string; chromium: string; speed: string }
 
 function parseArgs(argv: string[]): Args {
   const get = (name: string) => {
@@ -26,7 +26,7 @@ function parseArgs(argv: string[]): Args {
   };
   const binDir = get("bin-dir"), webDir = get("web-dir");
   if (binDir === undefined || webDir === undefined) throw new Error("usage: dashboard_e2e.js --bin-dir DIR --web-dir DIR [--screenshot-dir DIR [--screenshot-delay-ms MS]] [--chromium PATH] [--speed X]");
-  return { binDir, webDir, screenshotDir: get("screenshot-dir"), screenshotDelayMs: get("screenshot-delay-ms") ?? "3000",
+  return { binDir, webDir, screenshotDir: get("screenshot-dir"), screenshotDelayMs: get("screenshot-delay-ms") ?? "3000", viewport: get("viewport") ?? "1440x900",
            chromium: get("chromium") ?? "/usr/bin/chromium", speed: get("speed") ?? "1" };
 }
 
@@ -88,7 +88,7 @@ async function run(args: Args): Promise<void> {
     headless: true,
     args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
            "--disable-background-networking", "--disable-component-update", "--disable-sync"],
-    viewport: { width: 1440, height: 900 },
+    viewport: { width: Number(args.viewport.split("x")[0]), height: Number(args.viewport.split("x")[1]) },
   });
   try {
     const page = context.pages()[0] ?? await context.newPage();
