@@ -54,9 +54,10 @@ api::RobotCommand KeepAlive(api::RobotCommand command) {
   return command;
 }
 
+// Bad flags exit with 2 (usage), everything else with 1.
 int Fail(const absl::Status& status) {
   std::cerr << "semnav-dashboard-sim-robot: " << status << "\n";
-  return 1;
+  return absl::IsInvalidArgument(status) ? 2 : 1;
 }
 
 }  // namespace

@@ -21,6 +21,7 @@ export interface ProxyConfig {
   robotId: string;         // robot the page shows first
   upstreamToken?: string;  // bearer token used when a browser request brings none
   deadlineMs: number;      // deadline of unary calls without grpc-timeout / timeout_ms
+  verbose: boolean;        // log every API request (level=info), not only problems
   tls: TlsConfig;
 }
 
@@ -42,11 +43,17 @@ const FLAGS: FlagSpec[] = [
   { name: "robot-id", env: "SEMNAV_WEB_ROBOT_ID", value: "ID", help: "robot shown first (default sim-robot)", apply: (c, v) => (c.robotId = v) },
   { name: "token-env", env: "SEMNAV_WEB_TOKEN_ENV", value: "VAR", help: "environment variable holding the upstream bearer token used when the browser sends none", apply: (c, v) => (c.upstreamToken = process.env[v]) },
   { name: "deadline-ms", env: "SEMNAV_WEB_DEADLINE_MS", value: "MS", help: "deadline of unary calls without grpc-timeout (default 10000)", apply: (c, v) => (c.deadlineMs = positiveInt("deadline-ms", v)) },
+  { name: "log-level", env: "SEMNAV_WEB_LOG_LEVEL", value: "LEVEL", help: "warning (default) or info: info logs start-up and every API request", apply: (c, v) => (c.verbose = logLevel(v)) },
   { name: "tls-ca", env: "SEMNAV_WEB_TLS_CA", value: "FILE", help: "PEM CA of the upstream servers: TLS on", apply: (c, v) => (c.tls.caFile = v) },
   { name: "tls-cert", env: "SEMNAV_WEB_TLS_CERT", value: "FILE", help: "client certificate for upstream mTLS", apply: (c, v) => (c.tls.certFile = v) },
   { name: "tls-key", env: "SEMNAV_WEB_TLS_KEY", value: "FILE", help: "client key for upstream mTLS", apply: (c, v) => (c.tls.keyFile = v) },
   { name: "tls-server-name", env: "SEMNAV_WEB_TLS_SERVER_NAME", value: "NAME", help: "server name to verify when dialling an IP", apply: (c, v) => (c.tls.serverName = v) },
 ];
+
+function logLevel(value: string): boolean {
+  if (value !== "info" && value !== "warning") throw new Error(`--log-level: expected info or warning, got '${value}'`);
+  return value === "info";
+}
 
 function positiveInt(flag: string, value: string): number {
   const n = Number(value);
@@ -70,6 +77,7 @@ export function parseConfig(argv: string[], env: NodeJS.ProcessEnv, bundleDir: s
     staticDir: path.join(bundleDir, "static"),
     robotId: "sim-robot",
     deadlineMs: 10000,
+    verbose: false,
     tls: {},
   };
   for (const flag of FLAGS) {

@@ -8,9 +8,10 @@ import { DetailDecoder } from "./status_json";
 import { Transcoder, sendJson } from "./transcoder";
 import { connectUpstreams, loadPackages } from "./upstreams";
 
-function log(event: string, fields: Record<string, string | number> = {}): void {
-  const pairs = Object.entries(fields).map(([k, v]) => `${k}=${/[\s"]/.test(String(v)) ? JSON.stringify(String(v)) : v}`);
-  process.stderr.write(`ts=${new Date().toISOString()} level=info svc=semnav-dashboard event=${event} ${pairs.join(" ")}\n`);
+// logfmt on stderr, like the services.
+function log(level: "info" | "warning", event: string, fields: Record<string, string | number> = {}): void {
+  const pairs = Object.entries(fields).map(([k, v]) => `${k}=${/[\s"=]/.test(String(v)) ? JSON.stringify(String(v)) : v}`);
+  process.stderr.write(`ts=${new Date().toISOString()} level=${level} svc=semnav-dashboard event=${event} ${pairs.join(" ")}\n`);
 }
 
 function start(config: ProxyConfig): http.Server {
@@ -18,6 +19,11 @@ function start(config: ProxyConfig): http.Server {
   const transcoder = new Transcoder(connectUpstreams(config, packages), new DetailDecoder(config.protoDir), config);
   const server = http.createServer((request, response) => {
     const url = new URL(request.url ?? "/", "http://dashboard");
+    if (config.verbose && url.pathname.startsWith("/api/")) {
+      const started = Date.now();
+      response.on("close", () => log("info", "request", { method: request.method ?? "", path: url.pathname,
+                                                          status: response.statusCode, ms: Date.now() - started }));
+    }
     if (url.pathname === "/api/config") {
       sendJson(response, 200, { robot_id: config.robotId, services: transcoder.describe() });
       return;
@@ -25,7 +31,10 @@ function start(config: ProxyConfig): http.Server {
     if (url.pathname.startsWith("/api/")) {
       transcoder.handle(request, response, url).then((handled) => {
         if (!handled) sendJson(response, 404, { code: "NOT_FOUND", message: `no method ${url.pathname}`, details: [] });
-      }, (error: Error) => sendJson(response, 500, { code: "INTERNAL", message: error.message, details: [] }));
+      }, (error: Error) => {
+        log("warning", "internal_error", { path: url.pathname, message: error.message });
+        sendJson(response, 500, { code: "INTERNAL", message: error.message, details: [] });
+      });
       return;
     }
     serveStatic(config.staticDir, url.pathname, response).catch(() => response.destroy());
@@ -34,7 +43,7 @@ function start(config: ProxyConfig): http.Server {
   server.listen(port, host, () => {
     const address = server.address();
     const bound = typeof address === "object" && address !== null ? `${address.address}:${address.port}` : config.listen;
-    log("serving", { listen: bound, gateway: config.gateway, mapping: config.mapping, planning: config.planning,
+    if (config.verbose) log("info", "serving", { listen: bound, gateway: config.gateway, mapping: config.mapping, planning: config.planning,
                      tls: config.tls.caFile !== undefined ? "true" : "false" });
     // One machine-readable line on stdout for scripts that pass port 0.
     process.stdout.write(`${JSON.stringify({ listen: bound })}\n`);
