@@ -151,32 +151,23 @@ async function run(args: Args): Promise<void> {
     const [ex, ey] = await pose(page);
     check(Math.hypot(ex - sx, ey - sy) < 0.05, `the robot stays put after the e-stop (moved ${Math.hypot(ex - sx, ey - sy).toFixed(3)} m)`);
 
-    // Two clicks plan a path: from the robot to the farthest known free cell.
+    // Two clicks plan a path: from the robot to the anchor of the farthest frontier planning can reach.
     const [rx, ry] = await pose(page);
+    const anchor = await page.evaluate(async (robot) => {
+      const reply = await fetch("/api/planning/ExtractFrontiers", {
+        method: "POST", body: JSON.stringify({ source: { live_map: {} }, robot: { x: robot[0], y: robot[1] } }),
+      });
+      const frontiers = (await reply.json()).frontiers as { anchor: { x: number; y: number }; path_distance_m: number }[];
+      return frontiers.filter((f) => f.path_distance_m > 0).sort((a, b) => b.path_distance_m - a.path_distance_m)[0]?.anchor;
+    }, [rx, ry]);
+    check(anchor !== undefined, "planning reports a reachable frontier");
     await page.click("#plan-mode");
-    const from = await toScreen(page, rx, ry);
-    await page.locator("#map").click({ position: from });
-    const goal = await page.evaluate((robot) => {
-      // The known free cell farthest from the robot, read from the page's own grid rendering.
-      const canvas = document.getElementById("map") as HTMLCanvasElement;
-      const ratio = window.devicePixelRatio || 1;
-      const pixels = canvas.getContext("2d")!.getImageData(0, 0, canvas.width, canvas.height).data;
-      const [rxs, rys] = [robot.x, robot.y];
-      let best = { x: rxs, y: rys, d: 0 };
-      for (let y = 0; y < canvas.height; y += 4) {
-        for (let x = 0; x < canvas.width; x += 4) {
-          const i = (y * canvas.width + x) * 4;
-          if (pixels[i] !== 245 || pixels[i + 1] !== 242 || pixels[i + 2] !== 234) continue;
-          const d = Math.hypot(x / ratio - rxs, y / ratio - rys);
-          if (d > best.d) best = { x: x / ratio, y: y / ratio, d };
-        }
-      }
-      return best;
-    }, from);
-    await page.locator("#map").click({ position: { x: goal.x, y: goal.y } });
-    await page.waitForSelector("#plan-figures", { timeout: 15000 });
-    const figures = await text(page, "#plan-figures");
-    check(/length\d+\.\d+ m/.test(figures) && /energy\d+ J/.test(figures), `two clicks plan a path: ${figures.replace(/\s+/g, " ")}`);
+    await page.locator("#map").click({ position: await toScreen(page, rx, ry) });
+    await page.locator("#map").click({ position: await toScreen(page, anchor!.x, anchor!.y) });
+    await page.waitForSelector("#plan-figures, #plan-result.error", { timeout: 15000 });
+    const figures = await text(page, "#plan-result");
+    check(/length\d+\.\d+ m/.test(figures) && /energy\d+ J/.test(figures) && /mode switches\d+/.test(figures),
+          `two clicks plan a path: ${figures.replace(/\s+/g, " ")}`);
     if (args.screenshotDir !== undefined) await page.screenshot({ path: path.join(args.screenshotDir, "dashboard-plan.png") });
 
     check(pageErrors.length === 0, `no page errors${pageErrors.length ? `: ${pageErrors.join("; ")}` : ""}`);
