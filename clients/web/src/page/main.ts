@@ -160,23 +160,33 @@ function wireControls(): void {
       errorBox.textContent = error instanceof Error ? error.message : String(error);
     }
   });
-  $("estop").addEventListener("click", async () => {
+  // A control that fails says so in the header: an e-stop must never fail silently.
+  const guarded = (what: string, action: () => Promise<void>) => async () => {
+    const box = $("control-error");
+    box.textContent = "";
+    try {
+      await action();
+    } catch (error) {
+      box.textContent = `${what} failed: ${error instanceof Error ? error.message : String(error)}`;
+    }
+  };
+  $("estop").addEventListener("click", guarded("Emergency stop", async () => {
     await call("operator", "EmergencyStop", { request_id: requestId(), robot_id: state.robotId, reason: "dashboard emergency stop" }, 3000);
     state.emergencyStop = true;
     renderTask(state);
-  });
-  $("clear-estop").addEventListener("click", async () => {
+  }));
+  $("clear-estop").addEventListener("click", guarded("Clearing the e-stop", async () => {
     await call("operator", "ClearEmergencyStop", { request_id: requestId(), robot_id: state.robotId });
     state.emergencyStop = false;
     renderTask(state);
-  });
-  const control = (method: string) => async () => {
+  }));
+  const control = (method: string) => guarded(method.replace("Task", ""), async () => {
     if (state.task === null) return;
     const reply = await call<{ task: semnav.reasoning.v1.TaskSnapshot | null }>("operator", method,
       { request_id: requestId(), task_id: state.task.task_id, reason: "operator (dashboard)" });
     if (reply.task !== null) state.task = reply.task;
     renderTask(state);
-  };
+  });
   $("task-pause").addEventListener("click", control("PauseTask"));
   $("task-resume").addEventListener("click", control("ResumeTask"));
   $("task-cancel").addEventListener("click", control("CancelTask"));
@@ -223,6 +233,7 @@ async function start(): Promise<void> {
   setInterval(() => void refreshFrontiers(), 2000);
   renderTask(state);
   renderPlan(state);
+  redraw();
 }
 
 void start();
