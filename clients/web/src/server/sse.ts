@@ -24,10 +24,6 @@ export class EventStream {
     });
   }
 
-  get isClosed(): boolean {
-    return this.closed;
-  }
-
   send(event: string, data: object): void {
     if (!this.closed) this.response.write(`event: ${event}\ndata: ${JSON.stringify(data)}\n\n`);
   }

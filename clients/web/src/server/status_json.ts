@@ -60,7 +60,7 @@ export class DetailDecoder {
   private details(metadata?: grpc.Metadata): object[] {
     const raw = metadata?.get("grpc-status-details-bin")[0];
     if (!(raw instanceof Buffer)) return [];
-    const conversion = { ...JSON_OPTIONS, longs: String, enums: String, bytes: String } as protobuf.IConversionOptions;
+    const conversion = JSON_OPTIONS as protobuf.IConversionOptions;  // the same JSON shape as responses
     const rich = this.root.lookupType("semnav.common.v1.RichStatus").decode(raw) as unknown as {
       details: { type_url: string; value: Uint8Array }[];
     };
