@@ -18,6 +18,7 @@ packages=(
   iproute2 openssl
   # contract tooling from npm (buf, grpc-js)
   nodejs
+  chromium  # headless browser of the dashboard end-to-end test (playwright-core drives it)
 )
 # A machine whose nodejs already bundles npm (e.g. NodeSource) must not get Debian's npm on top.
 command -v npm >/dev/null 2>&1 || packages+=(npm)

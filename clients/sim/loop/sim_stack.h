@@ -26,6 +26,8 @@ class SimStack {
   ~SimStack();
 
   const std::string& gateway_address() const { return gateway_; }
+  const std::string& mapping_address() const { return mapping_; }
+  const std::string& planning_address() const { return planning_; }
   // Fresh channels to the three services.
   Endpoints endpoints() const;
 
