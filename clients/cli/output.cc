@@ -27,7 +27,9 @@ void PrintJson(const google::protobuf::Message& message) { std::cout << ToJson(m
 int Fail(const absl::Status& status) {
   std::cerr << "semnavctl: " << absl::StatusCodeToString(status.code()) << ": " << status.message();
   std::optional<common::v1::ErrorInfo> info = GetDetail<common::v1::ErrorInfo>(status);
-  if (info && !info->reason().empty()) std::cerr << " [" << info->reason() << "]";
+  if (info && !info->reason().empty() && info->reason() != absl::StatusCodeToString(status.code())) {
+    std::cerr << " [" << info->reason() << "]";
+  }
   std::cerr << std::endl;
   return ToInt(ExitCodeFor(status.code()));
 }
