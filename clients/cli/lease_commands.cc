@@ -1,6 +1,5 @@
 // lease acquire / renew / release and estop trigger / clear on the gateway's OperatorService.
-#include <iostream>
-
+#include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "absl/time/time.h"
 #include "clients/cli/call.h"
@@ -29,14 +28,10 @@ absl::Status SetTtl(const Invocation& invocation, Request& request) {
   return absl::OkStatus();
 }
 
-void PrintLease(const Invocation& invocation, const google::protobuf::Message& response, const api::Lease& lease) {
-  if (invocation.json()) {
-    PrintJson(response);
-    return;
-  }
+std::string LeaseLine(const api::Lease& lease) {
   const absl::Time expires = absl::FromUnixSeconds(lease.expires_at().seconds());
-  std::cout << lease.lease_id() << "  robot " << lease.robot_id() << "  holder " << lease.holder() << "  expires "
-            << absl::FormatTime("%Y-%m-%dT%H:%M:%SZ", expires, absl::UTCTimeZone()) << std::endl;
+  return absl::StrCat(lease.lease_id(), "  robot ", lease.robot_id(), "  holder ", lease.holder(), "  expires ",
+                      absl::FormatTime("%Y-%m-%dT%H:%M:%SZ", expires, absl::UTCTimeZone()), "\n");
 }
 
 int Acquire(const Invocation& invocation) {
@@ -46,39 +41,25 @@ int Acquire(const Invocation& invocation) {
   request.set_robot_id(invocation.Flag("robot"));
   request.set_holder(invocation.Flag("holder"));
   if (absl::Status ttl = SetTtl(invocation, request); !ttl.ok()) return UsageError(std::string(ttl.message()));
-  return WithStub<api::OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    api::AcquireLeaseResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::AcquireLease, request, &response); !s.ok()) return Fail(s);
-    PrintLease(invocation, response, response.lease());
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::OperatorService>(invocation, Service::kGateway, &OperatorStub::AcquireLease, request,
+                                        [](const api::AcquireLeaseResponse& r) { return LeaseLine(r.lease()); });
 }
 
 int Renew(const Invocation& invocation) {
   api::RenewLeaseRequest request;
   request.set_lease_id(invocation.positional()[0]);
   if (absl::Status ttl = SetTtl(invocation, request); !ttl.ok()) return UsageError(std::string(ttl.message()));
-  return WithStub<api::OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    api::RenewLeaseResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::RenewLease, request, &response); !s.ok()) return Fail(s);
-    PrintLease(invocation, response, response.lease());
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::OperatorService>(invocation, Service::kGateway, &OperatorStub::RenewLease, request,
+                                        [](const api::RenewLeaseResponse& r) { return LeaseLine(r.lease()); });
 }
 
 int Release(const Invocation& invocation) {
   api::ReleaseLeaseRequest request;
   request.set_lease_id(invocation.positional()[0]);
-  return WithStub<api::OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    api::ReleaseLeaseResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::ReleaseLease, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << "released " << request.lease_id() << std::endl;
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::OperatorService>(invocation, Service::kGateway, &OperatorStub::ReleaseLease, request,
+                                        [&](const api::ReleaseLeaseResponse&) {
+                                          return absl::StrCat("released ", request.lease_id(), "\n");
+                                        });
 }
 
 int Trigger(const Invocation& invocation) {
@@ -86,17 +67,11 @@ int Trigger(const Invocation& invocation) {
   request.set_request_id(invocation.RequestId());
   request.set_robot_id(invocation.Flag("robot"));
   request.set_reason(invocation.Flag("reason", "emergency stop from semnavctl"));
-  return WithStub<api::OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    api::EmergencyStopResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::EmergencyStop, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << "emergency stop: robots stopped [" << absl::StrJoin(response.stopped_robot_ids(), ", ")
-                << "], tasks cancelled [" << absl::StrJoin(response.cancelled_task_ids(), ", ") << "]" << std::endl;
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::OperatorService>(
+      invocation, Service::kGateway, &OperatorStub::EmergencyStop, request, [](const api::EmergencyStopResponse& r) {
+        return absl::StrCat("emergency stop: robots stopped [", absl::StrJoin(r.stopped_robot_ids(), ", "),
+                            "], tasks cancelled [", absl::StrJoin(r.cancelled_task_ids(), ", "), "]\n");
+      });
 }
 
 int Clear(const Invocation& invocation) {
@@ -105,18 +80,10 @@ int Clear(const Invocation& invocation) {
   request.set_request_id(invocation.RequestId());
   request.set_robot_id(invocation.Flag("robot"));
   request.set_lease_id(invocation.Flag("lease"));
-  return WithStub<api::OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    api::ClearEmergencyStopResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::ClearEmergencyStop, request, &response); !s.ok()) {
-      return Fail(s);
-    }
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << "emergency stop cleared for " << request.robot_id() << std::endl;
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::OperatorService>(invocation, Service::kGateway, &OperatorStub::ClearEmergencyStop, request,
+                                        [&](const api::ClearEmergencyStopResponse&) {
+                                          return absl::StrCat("emergency stop cleared for ", request.robot_id(), "\n");
+                                        });
 }
 
 }  // namespace

@@ -1,10 +1,7 @@
 // map save / load / list / delete: the mapping service's store of named maps.
-#include <iostream>
-
 #include "absl/time/time.h"
 #include "clients/cli/call.h"
 #include "clients/cli/command.h"
-#include "clients/cli/core/exit_codes.h"
 #include "clients/cli/core/table.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 
@@ -22,48 +19,27 @@ std::string MapLine(const api::MapInfo& map) {
   return absl::StrCat(map.map_id(), "  ", map.size_bytes(), " bytes  saved ", SavedTime(map.saved_ns()));
 }
 
-// save, load and delete: a request id and a map id in, a message out.
-template <typename Request, typename Response>
+// save, load and delete: a request id and the map id argument in.
+template <typename Request, typename Response, typename Describe>
 int Transact(const Invocation& invocation,
-             absl::Status (*call)(const Invocation&, MappingStub&, const Request&, Response*),
-             const std::function<std::string(const Request&, const Response&)>& describe) {
+             grpc::Status (MappingStub::*method)(grpc::ClientContext*, const Request&, Response*), Describe describe) {
   Request request;
   request.set_request_id(invocation.RequestId());
   request.set_map_id(invocation.positional()[0]);
-  return WithStub<api::MappingService>(invocation, Service::kMapping, [&](MappingStub& stub) {
-    Response response;
-    if (absl::Status s = call(invocation, stub, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << describe(request, response) << std::endl;
-    }
-    return ToInt(ExitCode::kOk);
-  });
-}
-
-template <auto Method, typename Request, typename Response>
-absl::Status Call(const Invocation& invocation, MappingStub& stub, const Request& request, Response* response) {
-  return CallUnary(invocation, stub, Method, request, response);
+  return RunUnary<api::MappingService>(invocation, Service::kMapping, method, request,
+                                       [&](const Response& response) { return describe(request, response); });
 }
 
 int List(const Invocation& invocation) {
-  return WithStub<api::MappingService>(invocation, Service::kMapping, [&](MappingStub& stub) {
-    api::ListMapsResponse response;
-    if (auto s = CallUnary(invocation, stub, &MappingStub::ListMaps, api::ListMapsRequest(), &response); !s.ok()) {
-      return Fail(s);
-    }
-    if (invocation.json()) {
-      PrintJson(response);
-      return ToInt(ExitCode::kOk);
-    }
-    Table table({"MAP", "BYTES", "SAVED"});
-    for (const api::MapInfo& map : response.maps()) {
-      table.AddRow({map.map_id(), std::to_string(map.size_bytes()), SavedTime(map.saved_ns())});
-    }
-    std::cout << table.Render();
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::MappingService>(invocation, Service::kMapping, &MappingStub::ListMaps, api::ListMapsRequest(),
+                                       [](const api::ListMapsResponse& r) {
+                                         Table table({"MAP", "BYTES", "SAVED"});
+                                         for (const api::MapInfo& map : r.maps()) {
+                                           table.AddRow({map.map_id(), std::to_string(map.size_bytes()),
+                                                         SavedTime(map.saved_ns())});
+                                         }
+                                         return table.Render();
+                                       });
 }
 
 }  // namespace
@@ -73,26 +49,24 @@ std::vector<Command> MapCommands() {
       {"map", "save", "MAP_ID", "write the live map to the store (replaces a map of that name)", Service::kMapping,
        {kRequestIdFlag},
        [](const Invocation& i) {
-         return Transact<api::SaveMapRequest, api::SaveMapResponse>(
-             i, Call<&MappingStub::SaveMap, api::SaveMapRequest, api::SaveMapResponse>,
-             [](const api::SaveMapRequest&, const api::SaveMapResponse& r) { return "saved " + MapLine(r.map()); });
+         return Transact(i, &MappingStub::SaveMap, [](const api::SaveMapRequest&, const api::SaveMapResponse& r) {
+           return "saved " + MapLine(r.map()) + "\n";
+         });
        },
        1},
       {"map", "load", "MAP_ID", "replace the live map by a stored one", Service::kMapping, {kRequestIdFlag},
        [](const Invocation& i) {
-         return Transact<api::LoadMapRequest, api::LoadMapResponse>(
-             i, Call<&MappingStub::LoadMap, api::LoadMapRequest, api::LoadMapResponse>,
-             [](const api::LoadMapRequest&, const api::LoadMapResponse& r) {
-               return absl::StrCat("loaded ", MapLine(r.map()), "  live revision ", r.revision());
-             });
+         return Transact(i, &MappingStub::LoadMap, [](const api::LoadMapRequest&, const api::LoadMapResponse& r) {
+           return absl::StrCat("loaded ", MapLine(r.map()), "  live revision ", r.revision(), "\n");
+         });
        },
        1},
       {"map", "list", "", "maps in the store", Service::kMapping, {}, List, 0},
       {"map", "delete", "MAP_ID", "remove a stored map", Service::kMapping, {kRequestIdFlag},
        [](const Invocation& i) {
-         return Transact<api::DeleteMapRequest, api::DeleteMapResponse>(
-             i, Call<&MappingStub::DeleteMap, api::DeleteMapRequest, api::DeleteMapResponse>,
-             [](const api::DeleteMapRequest& q, const api::DeleteMapResponse&) { return "deleted " + q.map_id(); });
+         return Transact(i, &MappingStub::DeleteMap, [](const api::DeleteMapRequest& q, const api::DeleteMapResponse&) {
+           return "deleted " + q.map_id() + "\n";
+         });
        },
        1},
   };

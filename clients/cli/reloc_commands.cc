@@ -56,18 +56,13 @@ int Upsert(const Invocation& invocation) {
   api::UpsertLandmarksRequest request;
   if (absl::Status s = LoadRequest(invocation, "landmarks", request); !s.ok()) return UsageError(std::string(s.message()));
   request.set_request_id(invocation.RequestId());
-  return WithStub<api::RelocalizationService>(invocation, Service::kRelocalization, [&](RelocStub& stub) {
-    api::UpsertLandmarksResponse response;
-    if (auto s = CallUnary(invocation, stub, &RelocStub::UpsertLandmarks, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << request.map_id() << " revision " << response.revision() << ": " << response.inserted()
-                << " inserted, " << response.merged() << " merged, " << response.replaced() << " replaced; ids "
-                << absl::StrJoin(response.landmark_ids(), " ") << std::endl;
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::RelocalizationService>(
+      invocation, Service::kRelocalization, &RelocStub::UpsertLandmarks, request,
+      [&](const api::UpsertLandmarksResponse& r) {
+        return absl::StrCat(request.map_id(), " revision ", r.revision(), ": ", r.inserted(), " inserted, ",
+                            r.merged(), " merged, ", r.replaced(), " replaced; ids ",
+                            absl::StrJoin(r.landmark_ids(), " "), "\n");
+      });
 }
 
 int Show(const Invocation& invocation) {
@@ -105,17 +100,11 @@ int Show(const Invocation& invocation) {
 int Relocalize(const Invocation& invocation) {
   api::RelocalizeRequest request;
   if (absl::Status s = LoadRequest(invocation, "observed", request); !s.ok()) return UsageError(std::string(s.message()));
-  return WithStub<api::RelocalizationService>(invocation, Service::kRelocalization, [&](RelocStub& stub) {
-    api::RelocalizeResponse response;
-    if (auto s = CallUnary(invocation, stub, &RelocStub::Relocalize, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << "relocalized in " << request.map_id() << " (revision " << response.map_revision() << ")\n"
-                << DescribeSolution(response.solution());
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::RelocalizationService>(
+      invocation, Service::kRelocalization, &RelocStub::Relocalize, request, [&](const api::RelocalizeResponse& r) {
+        return absl::StrCat("relocalized in ", request.map_id(), " (revision ", r.map_revision(), ")\n",
+                            DescribeSolution(r.solution()));
+      });
 }
 
 int Delete(const Invocation& invocation) {
@@ -123,18 +112,9 @@ int Delete(const Invocation& invocation) {
   api::DeleteLandmarkMapRequest request;
   request.set_map_id(invocation.Flag("map-id"));
   request.set_request_id(invocation.RequestId());
-  return WithStub<api::RelocalizationService>(invocation, Service::kRelocalization, [&](RelocStub& stub) {
-    api::DeleteLandmarkMapResponse response;
-    if (auto s = CallUnary(invocation, stub, &RelocStub::DeleteLandmarkMap, request, &response); !s.ok()) {
-      return Fail(s);
-    }
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << "deleted " << request.map_id() << std::endl;
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::RelocalizationService>(
+      invocation, Service::kRelocalization, &RelocStub::DeleteLandmarkMap, request,
+      [&](const api::DeleteLandmarkMapResponse&) { return absl::StrCat("deleted ", request.map_id(), "\n"); });
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // scene show: the mapping service's scene graph as tables.
-#include <iostream>
+#include <map>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
@@ -49,20 +49,9 @@ std::string RenderGraph(const api::SceneGraph& graph) {
 }
 
 int Show(const Invocation& invocation) {
-  return WithStub<api::MappingService>(invocation, Service::kMapping, [&](api::MappingService::Stub& stub) {
-    api::GetSceneGraphResponse response;
-    if (auto s = CallUnary(invocation, stub, &api::MappingService::Stub::GetSceneGraph, api::GetSceneGraphRequest(),
-                           &response);
-        !s.ok()) {
-      return Fail(s);
-    }
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << RenderGraph(response.graph());
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  return RunUnary<api::MappingService>(invocation, Service::kMapping, &api::MappingService::Stub::GetSceneGraph,
+                                       api::GetSceneGraphRequest(),
+                                       [](const api::GetSceneGraphResponse& r) { return RenderGraph(r.graph()); });
 }
 
 }  // namespace

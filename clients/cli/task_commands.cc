@@ -75,41 +75,27 @@ int Submit(const Invocation& invocation) {
 }
 
 int Get(const Invocation& invocation) {
-  return WithStub<OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    reasoning_api::GetTaskRequest request;
-    request.set_task_id(invocation.positional()[0]);
-    reasoning_api::GetTaskResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::GetTask, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << DescribeTask(response.task());
-    }
-    return ToInt(ExitCode::kOk);
-  });
+  reasoning_api::GetTaskRequest request;
+  request.set_task_id(invocation.positional()[0]);
+  return RunUnary<OperatorService>(invocation, Service::kGateway, &OperatorStub::GetTask, request,
+                                   [](const reasoning_api::GetTaskResponse& r) { return DescribeTask(r.task()); });
 }
 
 int List(const Invocation& invocation) {
-  return WithStub<OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    reasoning_api::ListTasksRequest request;
-    request.set_robot_id(invocation.Flag("robot"));
-    request.set_unfinished_only(invocation.Has("unfinished"));
-    reasoning_api::ListTasksResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::ListTasks, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-      return ToInt(ExitCode::kOk);
-    }
-    Table table({"TASK", "ROBOT", "STATUS", "PROGRESS", "STEP", "INSTRUCTION"});
-    for (const reasoning_api::TaskSnapshot& task : response.tasks()) {
-      const TaskProgress progress = ToProgress(task);
-      table.AddRow({task.task_id(), task.robot_id(), progress.status,
-                    std::to_string(static_cast<int>(task.progress() * 100.0 + 0.5)), progress.step,
-                    task.instruction()});
-    }
-    std::cout << table.Render();
-    return ToInt(ExitCode::kOk);
-  });
+  reasoning_api::ListTasksRequest request;
+  request.set_robot_id(invocation.Flag("robot"));
+  request.set_unfinished_only(invocation.Has("unfinished"));
+  return RunUnary<OperatorService>(
+      invocation, Service::kGateway, &OperatorStub::ListTasks, request, [](const reasoning_api::ListTasksResponse& r) {
+        Table table({"TASK", "ROBOT", "STATUS", "PROGRESS", "STEP", "INSTRUCTION"});
+        for (const reasoning_api::TaskSnapshot& task : r.tasks()) {
+          const TaskProgress progress = ToProgress(task);
+          table.AddRow({task.task_id(), task.robot_id(), progress.status,
+                        std::to_string(static_cast<int>(task.progress() * 100.0 + 0.5)), progress.step,
+                        task.instruction()});
+        }
+        return table.Render();
+      });
 }
 
 int Watch(const Invocation& invocation) {
@@ -122,20 +108,13 @@ template <typename Request, typename Response>
 int Control(const Invocation& invocation,
             grpc::Status (OperatorStub::*method)(grpc::ClientContext*, const Request&, Response*),
             void (*extra)(const Invocation&, Request&)) {
-  return WithStub<OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
-    Request request;
-    request.set_request_id(invocation.RequestId());
-    request.set_task_id(invocation.positional()[0]);
-    request.set_lease_id(invocation.Flag("lease"));
-    if (extra != nullptr) extra(invocation, request);
-    Response response;
-    if (auto s = CallUnary(invocation, stub, method, request, &response); !s.ok()) return Fail(s);
-    if (invocation.json()) {
-      PrintJson(response);
-    } else {
-      std::cout << FormatProgressLine(ToProgress(response.task())) << std::endl;
-    }
-    return ToInt(ExitCode::kOk);
+  Request request;
+  request.set_request_id(invocation.RequestId());
+  request.set_task_id(invocation.positional()[0]);
+  request.set_lease_id(invocation.Flag("lease"));
+  if (extra != nullptr) extra(invocation, request);
+  return RunUnary<OperatorService>(invocation, Service::kGateway, method, request, [](const Response& r) {
+    return FormatProgressLine(ToProgress(r.task())) + "\n";
   });
 }
 
