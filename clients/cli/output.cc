@@ -35,7 +35,8 @@ int Fail(const absl::Status& status) {
 }
 
 int UsageError(const std::string& message) {
-  std::cerr << "semnavctl: " << message << " (see --help)" << std::endl;
+  const bool hinted = message.find("--help") != std::string::npos;
+  std::cerr << "semnavctl: " << message << (hinted ? "" : " (see --help)") << std::endl;
   return ToInt(ExitCode::kUsage);
 }
 
