@@ -15,27 +15,18 @@ namespace {
 using HealthStub = grpc::health::v1::Health::Stub;
 
 struct Probe {
-  const ServiceInfo* info;
   std::string address;
-  absl::Status call;      // the Check call itself
-  std::string status;     // SERVING, NOT_SERVING, ... or the call's error code
+  absl::Status call;   // the Check call itself
+  std::string status;  // SERVING, NOT_SERVING, ... or the call's error code
 };
 
-Probe Check(const Invocation& invocation, const ServiceInfo& info) {
-  Probe probe{&info, invocation.Address(info.service), absl::OkStatus(), ""};
-  absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = invocation.Channel(info.service);
-  if (!channel.ok()) {
-    probe.call = channel.status();
-  } else {
-    std::unique_ptr<HealthStub> stub = grpc::health::v1::Health::NewStub(*channel);
-    grpc::health::v1::HealthCheckResponse response;
-    probe.call = CallUnary(invocation, *stub, &HealthStub::Check, grpc::health::v1::HealthCheckRequest(), &response);
-    if (probe.call.ok()) {
-      probe.status = grpc::health::v1::HealthCheckResponse::ServingStatus_Name(response.status());
-      return probe;
-    }
-  }
-  probe.status = absl::StatusCodeToString(probe.call.code());
+Probe Check(const Invocation& invocation, const ServiceInfo& info, const std::shared_ptr<grpc::Channel>& channel) {
+  Probe probe{invocation.Address(info.service), absl::OkStatus(), ""};
+  std::unique_ptr<HealthStub> stub = grpc::health::v1::Health::NewStub(channel);
+  grpc::health::v1::HealthCheckResponse response;
+  probe.call = CallUnary(invocation, *stub, &HealthStub::Check, grpc::health::v1::HealthCheckRequest(), &response);
+  probe.status = probe.call.ok() ? grpc::health::v1::HealthCheckResponse::ServingStatus_Name(response.status())
+                                 : absl::StatusCodeToString(probe.call.code());
   return probe;
 }
 
@@ -49,7 +40,10 @@ int Health(const Invocation& invocation) {
   Table table({"SERVICE", "ADDRESS", "STATUS"});
   nlohmann::json services = nlohmann::json::array();
   for (const ServiceInfo* info : selected) {
-    const Probe probe = Check(invocation, *info);
+    // A channel that cannot be made (unreadable TLS file, missing token) is a usage error.
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = invocation.Channel(info->service);
+    if (!channel.ok()) return UsageError(std::string(channel.status().message()));
+    const Probe probe = Check(invocation, *info, *channel);
     table.AddRow({info->name, probe.address, probe.status});
     services.push_back({{"service", info->name}, {"address", probe.address}, {"status", probe.status}});
     if (exit != ExitCode::kOk) continue;

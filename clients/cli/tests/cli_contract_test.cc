@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -306,32 +307,52 @@ TEST_F(CliContractTest, RelocalizeObservedLandmarksInALandmarkMap) {
   EXPECT_EQ(Ctl({"reloc", "relocalize", "--map-id", "nowhere", "--observed", observed_file}).exit_code, 5);
 }
 
+// semnavctl health of one service at `address` with extra flags, without the suite's addresses.
+ProcessResult HealthOf(const std::string& address, const std::vector<std::string>& extra) {
+  std::vector<std::string> args = {"health", "--service", "relocalization", "--relocalization-addr", address};
+  args.insert(args.end(), extra.begin(), extra.end());
+  absl::StatusOr<ProcessResult> result = semnav::testing::RunToCompletion("semnavctl", args);
+  EXPECT_TRUE(result.ok()) << result.status();
+  return result.ok() ? *result : ProcessResult{};
+}
+
+std::unique_ptr<ServiceProcess> StartSecured(const std::string& config_name, const std::string& config) {
+  absl::StatusOr<std::unique_ptr<ServiceProcess>> process = ServiceProcess::Start(
+      "semnav-relocalization", {"--config", WriteFile(config_name, config)}, absl::Seconds(20),
+      /*wait_for_health=*/false);
+  EXPECT_TRUE(process.ok()) << process.status();
+  return process.ok() ? *std::move(process) : nullptr;
+}
+
+TEST_F(CliContractTest, TlsServiceNeedsTheCa) {
+  const std::string key = Folder() + "/server.key";
+  const std::string cert = Folder() + "/server.crt";
+  const std::string command =
+      "openssl req -x509 -newkey rsa:2048 -nodes -days 2 -subj /CN=localhost -addext "
+      "subjectAltName=DNS:localhost,IP:127.0.0.1 -keyout " + key + " -out " + cert + " 2>/dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << "openssl is needed (deploy/install-deps.sh)";
+  std::unique_ptr<ServiceProcess> secured =
+      StartSecured("tls.yaml", "server:\n  tls:\n    cert_file: " + cert + "\n    key_file: " + key + "\n");
+  ASSERT_NE(secured, nullptr);
+  const ProcessResult verified = HealthOf(secured->address(), {"--tls-ca", cert});
+  EXPECT_EQ(verified.exit_code, 0) << verified.output;
+  EXPECT_THAT(verified.output, HasSubstr("SERVING"));
+  EXPECT_EQ(HealthOf(secured->address(), {}).exit_code, 3);  // plaintext to a TLS port
+  EXPECT_EQ(HealthOf(secured->address(), {"--tls-ca", Folder() + "/missing.pem"}).exit_code, 2);
+  EXPECT_EQ(HealthOf(secured->address(), {"--tls-cert", cert}).exit_code, 2);  // without --tls-key
+}
+
 TEST_F(CliContractTest, TokenFromFileOrEnvironmentReachesASecuredService) {
   const std::string tokens = WriteFile("tokens", "cli-token\n");
-  std::unique_ptr<ServiceProcess> secured;
-  {
-    absl::StatusOr<std::unique_ptr<ServiceProcess>> process = ServiceProcess::Start(
-        "semnav-relocalization",
-        {"--config", WriteFile("secured.yaml", "server:\n  auth:\n    token_file: " + tokens + "\n")},
-        absl::Seconds(20), /*wait_for_health=*/false);
-    ASSERT_TRUE(process.ok()) << process.status();
-    secured = *std::move(process);
-  }
-  const std::vector<std::string> health = {"health", "--service", "relocalization", "--relocalization-addr",
-                                           secured->address()};
-  auto run = [&](std::vector<std::string> extra) {
-    std::vector<std::string> args = health;
-    args.insert(args.end(), extra.begin(), extra.end());
-    absl::StatusOr<ProcessResult> result = semnav::testing::RunToCompletion("semnavctl", args);
-    EXPECT_TRUE(result.ok()) << result.status();
-    return result.ok() ? *result : ProcessResult{};
-  };
-  EXPECT_EQ(run({}).exit_code, 8);
-  EXPECT_EQ(run({"--token-file", tokens}).exit_code, 0);
+  std::unique_ptr<ServiceProcess> secured =
+      StartSecured("secured.yaml", "server:\n  auth:\n    token_file: " + tokens + "\n");
+  ASSERT_NE(secured, nullptr);
+  EXPECT_EQ(HealthOf(secured->address(), {}).exit_code, 8);
+  EXPECT_EQ(HealthOf(secured->address(), {"--token-file", tokens}).exit_code, 0);
   ::setenv("CLI_TEST_TOKEN", "cli-token", 1);
-  EXPECT_EQ(run({"--token-env", "CLI_TEST_TOKEN"}).exit_code, 0);
+  EXPECT_EQ(HealthOf(secured->address(), {"--token-env", "CLI_TEST_TOKEN"}).exit_code, 0);
   ::setenv("CLI_TEST_TOKEN", "wrong-token", 1);
-  const ProcessResult wrong = run({"--token-env", "CLI_TEST_TOKEN"});
+  const ProcessResult wrong = HealthOf(secured->address(), {"--token-env", "CLI_TEST_TOKEN"});
   EXPECT_EQ(wrong.exit_code, 8) << wrong.output;
   EXPECT_THAT(wrong.output, HasSubstr("UNAUTHENTICATED"));
 }
