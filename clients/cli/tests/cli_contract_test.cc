@@ -1,6 +1,10 @@
 // Contract test: the semnavctl binary as a subprocess against the five real services on
 // loopback ports; checks its text and --json output and its exit codes.
+#include <poll.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -55,6 +59,48 @@ std::vector<nlohmann::json> JsonLines(const std::string& output) {
     if (!line.empty() && line.front() == '{') objects.push_back(nlohmann::json::parse(std::string(line)));
   }
   return objects;
+}
+
+// Runs semnavctl with its output on a pipe until `ready` appears in it, then sends SIGINT (Ctrl-C)
+// and collects the rest of the output and the exit code.
+ProcessResult InterruptWhenReady(std::vector<std::string> args, const std::string& ready) {
+  const std::string path = semnav::testing::BinaryPath("semnavctl");
+  args.insert(args.begin(), path);
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  int out[2];
+  EXPECT_EQ(::pipe(out), 0);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::dup2(out[1], STDOUT_FILENO);
+    ::dup2(out[1], STDERR_FILENO);
+    ::close(out[0]);
+    ::execv(path.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ::close(out[1]);
+  ProcessResult result;
+  bool interrupted = false;
+  char buffer[4096];
+  for (;;) {
+    pollfd readable{out[0], POLLIN, 0};
+    if (::poll(&readable, 1, 10000) <= 0) break;  // 10 s without output: give up
+    const ssize_t n = ::read(out[0], buffer, sizeof buffer);
+    if (n <= 0) break;
+    result.output.append(buffer, n);
+    if (!interrupted && result.output.find(ready) != std::string::npos) {
+      ::kill(pid, SIGINT);
+      interrupted = true;
+    }
+  }
+  ::close(out[0]);
+  if (!interrupted) ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  EXPECT_TRUE(interrupted) << result.output;
+  return result;
 }
 
 class CliContractTest : public ::testing::Test {
@@ -162,6 +208,22 @@ TEST_F(CliContractTest, SubmittedTaskWaitsForTheRobotAndCanBeListedWatchedAndCan
   const ProcessResult paused = Ctl({"task", "pause", task_id});
   EXPECT_EQ(paused.exit_code, 0) << paused.output;
   EXPECT_THAT(paused.output, HasSubstr(task_id + "  CANCELLED"));
+}
+
+TEST_F(CliContractTest, CtrlCDetachesFromAFollowedTaskWhichGoesOn) {
+  std::vector<std::string> args = {"task", "submit", "wait", "--robot", "detach", "--gateway-addr",
+                                   gateway_->address()};
+  const ProcessResult detached = InterruptWhenReady(args, "PENDING");
+  EXPECT_EQ(detached.exit_code, 0) << detached.output;
+  EXPECT_THAT(detached.output, HasSubstr("detached; the task goes on"));
+  const nlohmann::json listed = CtlJson({"task", "list", "--robot", "detach", "--unfinished"});
+  ASSERT_EQ(listed["tasks"].size(), 1u) << listed;
+  EXPECT_EQ(listed["tasks"][0]["status"], "TASK_STATUS_PENDING");
+  // Ctrl-C ends an event watch cleanly too (a second task makes sure events follow id 1).
+  ASSERT_EQ(Ctl({"task", "submit", "look", "around", "--robot", "detach", "--no-follow"}).exit_code, 0);
+  const ProcessResult stopped = InterruptWhenReady(
+      {"events", "watch", "--gateway-addr", gateway_->address(), "--robot", "detach", "--since", "1"}, "TASK_CREATED");
+  EXPECT_EQ(stopped.exit_code, 0) << stopped.output;
 }
 
 TEST_F(CliContractTest, TypedErrorExitCodes) {
