@@ -5,7 +5,6 @@
 #include "clients/cli/call.h"
 #include "clients/cli/command.h"
 #include "clients/cli/core/args.h"
-#include "clients/cli/core/exit_codes.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 
 namespace semnav::cli {

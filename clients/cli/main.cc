@@ -6,6 +6,7 @@
 #include "clients/cli/core/exit_codes.h"
 #include "clients/cli/interrupt.h"
 #include "clients/cli/output.h"
+#include "services/common/cli/help.h"
 
 namespace semnav::cli {
 namespace {
@@ -66,11 +67,9 @@ int Main(int argc, char** argv) {
     return ToInt(ExitCode::kUsage);
   }
   const int first = found->verb.empty() ? 2 : 3;
-  for (int i = first; i < argc; ++i) {
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::cout << CommandHelp(*found);
-      return ToInt(ExitCode::kOk);
-    }
+  if (HelpRequested(argc, argv)) {
+    std::cout << CommandHelp(*found);
+    return ToInt(ExitCode::kOk);
   }
   absl::StatusOr<Invocation> invocation = Invocation::Parse(argc, argv, first, found->flags, found->service);
   if (!invocation.ok()) return UsageError(std::string(invocation.status().message()));

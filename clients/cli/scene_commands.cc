@@ -5,7 +5,6 @@
 #include "absl/strings/str_join.h"
 #include "clients/cli/call.h"
 #include "clients/cli/command.h"
-#include "clients/cli/core/exit_codes.h"
 #include "clients/cli/core/table.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 
