@@ -248,6 +248,23 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::GetTask(const std::string& task_id
   return Snapshot(**task);
 }
 
+api::ListTasksResponse GatewayHub::ListTasks(const api::ListTasksRequest& request) {
+  absl::MutexLock lock(&mu_);
+  std::vector<const Task*> selected;
+  for (const auto& [id, task] : tasks_) {
+    if (!request.robot_id().empty() && task.robot_id != request.robot_id()) continue;
+    if (request.unfinished_only() && task.executor->finished()) continue;
+    selected.push_back(&task);
+  }
+  // Ids are "task-<n>" with n counting up, so (length, id) is submission order.
+  std::sort(selected.begin(), selected.end(), [](const Task* a, const Task* b) {
+    return std::make_pair(a->task_id.size(), a->task_id) < std::make_pair(b->task_id.size(), b->task_id);
+  });
+  api::ListTasksResponse response;
+  for (const Task* task : selected) *response.add_tasks() = Snapshot(*task);
+  return response;
+}
+
 // Cancel, pause and resume share validation, the lease check and idempotency.
 template <typename Request, typename Action>
 absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, const Request& request, Action action) {

@@ -36,6 +36,7 @@ class GatewayHub {
 
   absl::StatusOr<api::SubmitInstructionResponse> Submit(const api::SubmitInstructionRequest& request);
   absl::StatusOr<api::TaskSnapshot> GetTask(const std::string& task_id);
+  api::ListTasksResponse ListTasks(const api::ListTasksRequest& request);
   absl::StatusOr<api::TaskSnapshot> Cancel(const api::CancelTaskRequest& request);
   absl::StatusOr<api::TaskSnapshot> Pause(const api::PauseTaskRequest& request);
   absl::StatusOr<api::TaskSnapshot> Resume(const api::ResumeTaskRequest& request);

@@ -64,6 +64,13 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::GetTask(grpc::CallbackServerConte
                [&](api::TaskSnapshot task) { *response->mutable_task() = std::move(task); });
 }
 
+grpc::ServerUnaryReactor* OperatorServiceImpl::ListTasks(grpc::CallbackServerContext* context,
+                                                         const api::ListTasksRequest* request,
+                                                         api::ListTasksResponse* response) {
+  *response = hub_->ListTasks(*request);
+  return Reply(context, absl::OkStatus());
+}
+
 grpc::ServerWriteReactor<api::WatchTaskResponse>* OperatorServiceImpl::WatchTask(grpc::CallbackServerContext*,
                                                                                  const api::WatchTaskRequest* request) {
   return new TaskWatchReactor(hub_, *request);

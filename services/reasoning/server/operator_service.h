@@ -17,6 +17,8 @@ class OperatorServiceImpl : public api::OperatorService::CallbackService {
                                               api::SubmitInstructionResponse* response) override;
   grpc::ServerUnaryReactor* GetTask(grpc::CallbackServerContext* context, const api::GetTaskRequest* request,
                                     api::GetTaskResponse* response) override;
+  grpc::ServerUnaryReactor* ListTasks(grpc::CallbackServerContext* context, const api::ListTasksRequest* request,
+                                      api::ListTasksResponse* response) override;
   grpc::ServerWriteReactor<api::WatchTaskResponse>* WatchTask(grpc::CallbackServerContext* context,
                                                               const api::WatchTaskRequest* request) override;
   grpc::ServerUnaryReactor* CancelTask(grpc::CallbackServerContext* context, const api::CancelTaskRequest* request,
