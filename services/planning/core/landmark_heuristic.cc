@@ -1,6 +1,5 @@
 #include "services/planning/core/landmark_heuristic.h"
 
-#include <algorithm>
 #include <limits>
 
 #include "services/planning/core/grid_search_common.h"
@@ -24,58 +23,43 @@ bool CornerLandmark(const LayeredGrid& grid, int corner, Cell* found) {
 
 }  // namespace
 
-void LandmarkHeuristic::Reset(const LayeredGrid& grid, const StepCosts& costs) {
-  cells_.clear();
-  for (int corner = 0; corner < 4; ++corner) {
+LandmarkHeuristic::LandmarkHeuristic(const LayeredGrid& grid, const StepCosts& costs)
+    : costs_(costs) {
+  std::vector<Cell> cells;
+  for (int corner = 0; corner < kMaxLandmarks; ++corner) {
     Cell c;
     const bool found = CornerLandmark(grid, corner, &c);
-    if (found && std::find(cells_.begin(), cells_.end(), c) == cells_.end()) cells_.push_back(c);
+    if (found && std::find(cells.begin(), cells.end(), c) == cells.end()) cells.push_back(c);
   }
-  landmarks_ = static_cast<int>(cells_.size());
-  computed_ = 0;
-  dist_.assign(static_cast<size_t>(grid.size()) * landmarks_,
-               std::numeric_limits<double>::infinity());
-  costs_ = costs;
-  valid_ = true;
-}
-
-bool LandmarkHeuristic::AddLandmark(const LayeredGrid& grid) {
-  if (computed_ == landmarks_) return false;
+  count_ = static_cast<int>(cells.size());
+  dist_.assign(static_cast<size_t>(grid.size()) * count_, std::numeric_limits<double>::infinity());
   SearchWorkspace workspace;
-  workspace.Reset(grid.size());
-  // Dijkstra (no goal, h = 0) over the same unit moves as the search.
-  (void)RunBestFirst(workspace, grid.Index(cells_[computed_]), 0.0, -1, SearchLimits{},
-                     [&](int current) {
-                       ForEachMove(grid, grid.CellAt(current),
-                                   [&](Cell n, MotionMode mode, double cells) {
-                                     const int next = grid.Index(n);
-                                     if (workspace.Closed(next)) return;
-                                     const double g =
-                                         workspace.g(current) + costs_.Of(mode) * cells;
-                                     workspace.Relax(next, g, g, current);
-                                   });
-                     });
-  for (int cell = 0; cell < grid.size(); ++cell) {
-    if (workspace.Reached(cell)) {
-      dist_[static_cast<size_t>(cell) * landmarks_ + computed_] = workspace.g(cell);
+  for (int l = 0; l < count_; ++l) {
+    workspace.Reset(grid.size());
+    // Dijkstra (no goal, h = 0) over the same unit moves as the search.
+    (void)RunBestFirst(workspace, grid.Index(cells[l]), 0.0, -1, SearchLimits{},
+                       [&](int current) {
+                         ForEachMove(grid, grid.CellAt(current),
+                                     [&](Cell n, MotionMode mode, double length) {
+                                       const int next = grid.Index(n);
+                                       if (workspace.Closed(next)) return;
+                                       const double g =
+                                           workspace.g(current) + costs_.Of(mode) * length;
+                                       workspace.Relax(next, g, g, current);
+                                     });
+                       });
+    for (int cell = 0; cell < grid.size(); ++cell) {
+      if (workspace.Reached(cell)) dist_[static_cast<size_t>(cell) * count_ + l] = workspace.g(cell);
     }
   }
-  ++computed_;
-  return true;
 }
 
-void LandmarkHeuristic::Clear() {
-  valid_ = false;
-  cells_.clear();
-  landmarks_ = 0;
-  computed_ = 0;
-  dist_.clear();
-  goal_dist_.clear();
-}
-
-void LandmarkHeuristic::SetGoal(int goal_cell) {
-  const double* d = dist_.data() + static_cast<size_t>(goal_cell) * landmarks_;
-  goal_dist_.assign(d, d + landmarks_);
+LandmarkHeuristic::ToGoal LandmarkHeuristic::Towards(int goal_cell) const {
+  ToGoal bound;
+  bound.dist_ = dist_.data();
+  bound.count_ = count_;
+  std::copy_n(dist_.data() + static_cast<size_t>(goal_cell) * count_, count_, bound.goal_.begin());
+  return bound;
 }
 
 }  // namespace semnav::planning

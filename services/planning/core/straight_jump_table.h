@@ -29,7 +29,6 @@ class StraightJumpTable {
   // Per direction (+x, -x, +y, -y) and cell: > 0, the event cell that many
   // steps away; <= 0, -value open steps and then a blocked cell.
   std::vector<int32_t> runs_[4];
-  std::vector<uint8_t> open_;  // padded scratch for Build
 };
 
 }  // namespace semnav::planning
