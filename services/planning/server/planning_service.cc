@@ -26,14 +26,16 @@ absl::Status Invalid(absl::string_view field, absl::string_view message) {
 
 bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
 
-// The earliest of the call deadline, the request budget and the config cap.
+// The earliest of the call deadline (less the margin for the reply), the
+// request budget and the config cap.
 absl::Time SearchDeadline(const grpc::CallbackServerContext& context, uint32_t request_ms,
-                          int config_ms) {
-  absl::Time deadline = absl::Now() + absl::Milliseconds(config_ms);
+                          const PlanningConfig& config) {
+  absl::Time deadline = absl::Now() + absl::Milliseconds(config.max_planning_time_ms);
   if (request_ms > 0) deadline = std::min(deadline, absl::Now() + absl::Milliseconds(request_ms));
   const auto call = context.deadline();
   if (call != std::chrono::system_clock::time_point::max()) {
-    deadline = std::min(deadline, absl::FromChrono(call));
+    deadline = std::min(deadline,
+                        absl::FromChrono(call) - absl::Milliseconds(config.deadline_margin_ms));
   }
   return deadline;
 }
@@ -91,6 +93,8 @@ PlanningServiceImpl::PlanningServiceImpl(PlanningConfig config,
                                          std::shared_ptr<grpc::Channel> mapping)
     : config_(std::move(config)),
       mapping_(semnav::mapping::v1::MappingService::NewStub(std::move(mapping))),
+      jump_astar_(config_.jump_astar_cached_maps,
+                  [this](std::function<void()> job) { (void)workers_.Submit(std::move(job)); }),
       workers_(config_.worker_threads) {}
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::Serve(grpc::CallbackServerContext* context,
@@ -127,6 +131,12 @@ grpc::ServerUnaryReactor* PlanningServiceImpl::ExtractFrontiers(
                                                            const std::string& field) {
     return ExtractFrontiersOn(grid, field, *request, config_, response);
   });
+}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::ScoreFrontiers(
+    grpc::CallbackServerContext* context, const pb::ScoreFrontiersRequest* request,
+    pb::ScoreFrontiersResponse* response) {
+  return Serve(context, [=, this] { return ScoreFrontiersOn(*request, config_, response); });
 }
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::SelectExplorationGoal(
@@ -186,7 +196,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
 
   SearchLimits limits;
   limits.deadline =
-      SearchDeadline(*context, request.max_planning_time_ms(), config_.max_planning_time_ms);
+      SearchDeadline(*context, request.max_planning_time_ms(), config_);
   limits.is_cancelled = [context] { return context->IsCancelled(); };
 
   absl::Status failure;
@@ -200,8 +210,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     if (options.alpha + options.beta <= 0.0) {
       return Invalid("multimodal.alpha", "alpha and beta must not both be 0");
     }
-    JumpAStarPlanner planner;
-    absl::StatusOr<MultiModalPath> path = planner.Plan(*grid, *start, *goal, options, limits);
+    absl::StatusOr<MultiModalPath> path = jump_astar_.Plan(*grid, *start, *goal, options, limits);
     if (path.ok()) FillResponse(*frame, *path, response);
     failure = path.status();
   } else {

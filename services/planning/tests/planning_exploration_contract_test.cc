@@ -4,7 +4,9 @@
 
 #include <grpcpp/client_context.h>
 
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "semnav/common/v1/errors.pb.h"
@@ -89,6 +91,93 @@ TEST_F(ExplorationContract, ExtractFrontiersClustersAndScores) {
   EXPECT_DOUBLE_EQ(response.frontiers(1).path_distance_m(), 3.0);
   EXPECT_DOUBLE_EQ(response.frontiers(1).score().distance(), 1.0 - 3.0 / 5.0);
   EXPECT_DOUBLE_EQ(response.frontiers(1).score().novelty(), 1.0);
+}
+
+pb::Frontier FrontierAt(double x, double y, double path_distance_m) {
+  pb::Frontier f;
+  f.mutable_centroid()->set_x(x);
+  f.mutable_centroid()->set_y(y);
+  f.set_path_distance_m(path_distance_m);
+  return f;
+}
+
+// Robot at the origin; A (2, 0) 2 m away by path, B (0, 4) 4 m, C (-3, 0)
+// unreachable; a relevant sofa at (0, 5) next to B; visited place (2, 1).
+pb::ScoreFrontiersRequest ScoreRequest() {
+  pb::ScoreFrontiersRequest request;
+  *request.add_frontiers() = FrontierAt(2, 0, 2);
+  *request.add_frontiers() = FrontierAt(0, 4, 4);
+  *request.add_frontiers() = FrontierAt(-3, 0, -1);
+  pb::SemanticObject* sofa = request.mutable_semantics()->add_objects();
+  sofa->mutable_position()->set_y(5.0);
+  sofa->set_relevance(0.8);
+  sofa->set_cooccurrence(0.5);
+  Pose2D visited;
+  visited.set_x(2.0);
+  visited.set_y(1.0);
+  *request.mutable_semantics()->add_visited() = visited;
+  return request;
+}
+
+TEST_F(ExplorationContract, ScoreFrontiersUsesTheConfigOrRequestWeights) {
+  pb::ScoreFrontiersResponse response;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(Stub()->ScoreFrontiers(&context, ScoreRequest(), &response).ok());
+  }
+  ASSERT_EQ(response.scores_size(), 3);
+  // A: distance 1 - 2/4, novelty 1 m / 3 m, sofa 5.4 m away and at 90 deg.
+  EXPECT_DOUBLE_EQ(response.scores(0).distance(), 0.5);
+  EXPECT_DOUBLE_EQ(response.scores(0).novelty(), 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(response.scores(0).language(), 0.0);
+  EXPECT_DOUBLE_EQ(response.scores(0).grounding(), 0.0);
+  EXPECT_NEAR(response.scores(0).total(), 0.2 * 0.5 + 0.3 / 3.0, 1e-12);
+  // B: farthest (0), novel, sofa 1 m away and straight ahead: language 0.8,
+  // grounding (0.8 gradient + 0 relation + 0.5 co-occurrence) / 3.
+  EXPECT_DOUBLE_EQ(response.scores(1).distance(), 0.0);
+  EXPECT_DOUBLE_EQ(response.scores(1).language(), 0.8);
+  EXPECT_NEAR(response.scores(1).grounding(), 1.3 / 3.0, 1e-12);
+  EXPECT_NEAR(response.scores(1).total(), 0.3 + 0.2 * 0.8 + 0.3 * 1.3 / 3.0, 1e-12);
+  // C is unreachable: distance 0, and never the best.
+  EXPECT_DOUBLE_EQ(response.scores(2).distance(), 0.0);
+  EXPECT_EQ(response.best_index(), 1);
+
+  // Distance only: the nearest reachable frontier wins.
+  pb::ScoreFrontiersRequest nearest = ScoreRequest();
+  nearest.mutable_weights()->set_distance(1.0);
+  nearest.mutable_weights()->set_novelty(0.0);
+  nearest.mutable_weights()->set_language(0.0);
+  nearest.mutable_weights()->set_grounding(0.0);
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->ScoreFrontiers(&context, nearest, &response).ok());
+  EXPECT_DOUBLE_EQ(response.scores(0).total(), 0.5);
+  EXPECT_DOUBLE_EQ(response.scores(1).total(), 0.0);
+  EXPECT_EQ(response.best_index(), 0);
+}
+
+TEST_F(ExplorationContract, ScoreFrontiersNamesTheBadField) {
+  pb::ScoreFrontiersRequest bad_weight = ScoreRequest();
+  bad_weight.mutable_weights()->set_grounding(-0.3);
+  pb::ScoreFrontiersRequest bad_distance = ScoreRequest();
+  bad_distance.mutable_frontiers(1)->set_path_distance_m(std::nan(""));
+  for (const auto& [request, field] :
+       {std::pair{bad_weight, "weights.grounding"},
+        std::pair{bad_distance, "frontiers[1].path_distance_m"}}) {
+    pb::ScoreFrontiersResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = Stub()->ScoreFrontiers(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << field;
+    std::optional<semnav::common::v1::ErrorInfo> info =
+        GetDetail<semnav::common::v1::ErrorInfo>(status);
+    ASSERT_TRUE(info.has_value()) << field;
+    EXPECT_EQ(info->field(), field);
+  }
+  // No frontiers: nothing to score, nothing best.
+  pb::ScoreFrontiersResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->ScoreFrontiers(&context, pb::ScoreFrontiersRequest(), &response).ok());
+  EXPECT_EQ(response.scores_size(), 0);
+  EXPECT_EQ(response.best_index(), -1);
 }
 
 TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
