@@ -8,11 +8,13 @@ int DirectionOf(int dx, int dy) {
   return dy > 0 ? 2 : 3;
 }
 
-// run at a cell from `next`, the run at the following cell along the move.
-inline int32_t Extend(bool next_open, bool next_event, int32_t next) {
-  if (!next_open) return 0;
-  if (next_event) return 1;
-  return next > 0 ? next + 1 : next - 1;
+// run at a cell from `next`, the run at the following cell along the move
+// (written for conditional moves rather than branches: the table build is
+// the cold query's largest cost).
+inline int32_t Extend(uint8_t next_open, uint8_t next_event, int32_t next) {
+  const int32_t continued = next > 0 ? next + 1 : next - 1;
+  const int32_t run = next_event != 0 ? 1 : continued;
+  return next_open != 0 ? run : 0;
 }
 
 }  // namespace
@@ -22,7 +24,7 @@ void StraightJumpTable::Build(int width, int height, const std::vector<uint8_t>&
   width_ = width;
   height_ = height;
   // Open cells with a one-cell closed border, so neighbour tests need no
-  // bounds checks; p = padded index, i = grid index.
+  // bounds checks.
   const int pw = width + 2;
   std::vector<uint8_t> open(static_cast<size_t>(pw) * (height + 2), 0);
   for (int y = 0; y < height; ++y) {
@@ -42,11 +44,13 @@ void StraightJumpTable::Build(int width, int height, const std::vector<uint8_t>&
     const uint8_t* s = stop.data() + static_cast<size_t>(y) * width;
     uint8_t* e = events.data() + static_cast<size_t>(y) * width;
     for (int x = 0; x < width; ++x) {
-      const bool east = (up[x] && !up[x - 1]) || (down[x] && !down[x - 1]);
-      const bool west = (up[x] && !up[x + 1]) || (down[x] && !down[x + 1]);
-      const bool north = (o[x + 1] && !down[x + 1]) || (o[x - 1] && !down[x - 1]);
-      const bool south = (o[x + 1] && !up[x + 1]) || (o[x - 1] && !up[x - 1]);
-      e[x] = s[x] != 0 ? 15 : (east | west << 1 | north << 2 | south << 3);
+      // Cells are 0/1, so `a & (b ^ 1)` is "a open and b closed".
+      const int east = (up[x] & (up[x - 1] ^ 1)) | (down[x] & (down[x - 1] ^ 1));
+      const int west = (up[x] & (up[x + 1] ^ 1)) | (down[x] & (down[x + 1] ^ 1));
+      const int north = (o[x + 1] & (down[x + 1] ^ 1)) | (o[x - 1] & (down[x - 1] ^ 1));
+      const int south = (o[x + 1] & (up[x + 1] ^ 1)) | (o[x - 1] & (up[x - 1] ^ 1));
+      e[x] = static_cast<uint8_t>((s[x] != 0 ? 15 : 0) | east | west << 1 | north << 2 |
+                                  south << 3);
     }
   }
   for (std::vector<int32_t>& runs : runs_) runs.resize(static_cast<size_t>(width) * height);
