@@ -23,6 +23,7 @@ void StraightJumpTable::Build(int width, int height, const std::vector<uint8_t>&
                               const std::vector<uint8_t>& stop) {
   width_ = width;
   height_ = height;
+  if (width == 0 || height == 0) return;
   // Open cells with a one-cell closed border, so neighbour tests need no
   // bounds checks.
   const int pw = width + 2;
@@ -53,12 +54,14 @@ void StraightJumpTable::Build(int width, int height, const std::vector<uint8_t>&
                                   south << 3);
     }
   }
-  for (std::vector<int32_t>& runs : runs_) runs.resize(static_cast<size_t>(width) * height);
+  for (std::unique_ptr<int32_t[]>& runs : runs_) {
+    runs = std::make_unique_for_overwrite<int32_t[]>(static_cast<size_t>(width) * height);
+  }
   for (int y = 0; y < height; ++y) {
     const uint8_t* o = open.data() + static_cast<size_t>(y + 1) * pw + 1;
     const uint8_t* e = events.data() + static_cast<size_t>(y) * width;
-    int32_t* east = runs_[0].data() + static_cast<size_t>(y) * width;
-    int32_t* west = runs_[1].data() + static_cast<size_t>(y) * width;
+    int32_t* east = runs_[0].get() + static_cast<size_t>(y) * width;
+    int32_t* west = runs_[1].get() + static_cast<size_t>(y) * width;
     int32_t next = 0;
     for (int x = width - 1; x >= 0; --x) {
       next = east[x] = x + 1 < width ? Extend(o[x + 1], e[x + 1] & 1, next) : 0;
@@ -73,16 +76,16 @@ void StraightJumpTable::Build(int width, int height, const std::vector<uint8_t>&
   for (int y = height - 2; y >= 0; --y) {
     const uint8_t* o = open.data() + static_cast<size_t>(y + 2) * pw + 1;  // row y + 1
     const uint8_t* e = events.data() + static_cast<size_t>(y + 1) * width;
-    const int32_t* next = runs_[2].data() + static_cast<size_t>(y + 1) * width;
-    int32_t* run = runs_[2].data() + static_cast<size_t>(y) * width;
+    const int32_t* next = runs_[2].get() + static_cast<size_t>(y + 1) * width;
+    int32_t* run = runs_[2].get() + static_cast<size_t>(y) * width;
     for (int x = 0; x < width; ++x) run[x] = Extend(o[x], e[x] & 4, next[x]);
   }
   for (int x = 0; x < width; ++x) runs_[3][x] = 0;
   for (int y = 1; y < height; ++y) {
     const uint8_t* o = open.data() + static_cast<size_t>(y) * pw + 1;  // row y - 1
     const uint8_t* e = events.data() + static_cast<size_t>(y - 1) * width;
-    const int32_t* next = runs_[3].data() + static_cast<size_t>(y - 1) * width;
-    int32_t* run = runs_[3].data() + static_cast<size_t>(y) * width;
+    const int32_t* next = runs_[3].get() + static_cast<size_t>(y - 1) * width;
+    int32_t* run = runs_[3].get() + static_cast<size_t>(y) * width;
     for (int x = 0; x < width; ++x) run[x] = Extend(o[x], e[x] & 8, next[x]);
   }
 }
