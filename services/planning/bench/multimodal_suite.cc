@@ -55,11 +55,11 @@ struct ServiceCache {
 
 // The phases of one map under one setting, as the service sees them.
 struct Phases {
-  Series cold;        // 1st query on an unseen map in a running service: tables +
-                      // octile-bound search
-  Series seen;        // 2nd query: tables reused, landmarks not built yet
-  Timed landmarks;    // the background job (4 Dijkstras)
-  Series warm;        // later queries: tables + landmark bound
+  Series cold;          // 1st query on an unseen map in a running service: tables +
+                        // octile-bound search
+  Series seen;          // 2nd query: tables reused, landmarks not built yet
+  Timed landmarks;      // the background job (4 Dijkstras)
+  Series warm;          // later queries: tables + landmark bound
   MultiModalPath path;  // the warm path
 };
 
@@ -106,27 +106,28 @@ nlohmann::json RunMultiModalSuite() {
     MultiModalPath plain_path;
     const Timed plain_time =
         Time([&] { plain_path = *reference.Plan(map.grid, map.start, map.goal, plain); });
-    std::printf("%-5.1f %-5.1f %7.2f (%5.2f) %7.2f (%5.2f) %8.1f (%6.1f) %7.2f (%5.2f) %11.2f %11d\n",
-                options.alpha, beta, p.cold.WallMedian(), p.cold.CpuMedian(), p.seen.WallMedian(),
-                p.seen.CpuMedian(), p.landmarks.wall_ms, p.landmarks.cpu_ms, p.warm.WallMedian(),
-                p.warm.CpuMedian(), plain_time.wall_ms, p.path.expansions);
+    std::printf(
+        "%-5.1f %-5.1f %7.2f (%5.2f) %7.2f (%5.2f) %8.1f (%6.1f) %7.2f (%5.2f) %11.2f %11d\n",
+        options.alpha, beta, p.cold.WallMedian(), p.cold.CpuMedian(), p.seen.WallMedian(),
+        p.seen.CpuMedian(), p.landmarks.wall_ms, p.landmarks.cpu_ms, p.warm.WallMedian(),
+        p.warm.CpuMedian(), plain_time.wall_ms, p.path.expansions);
     const std::string key = beta == 2.5 ? "beta_2.5" : absl::StrCat("beta_", beta);
-    const nlohmann::json row = {{"alpha", options.alpha},
-                                {"beta", beta},
-                                {"fly_m", p.path.fly_m},
-                                {"roll_m", p.path.roll_m},
-                                {"switches", p.path.switches},
-                                {"energy_j", p.path.energy_j},
-                                {"length_m", p.path.length_m},
-                                {"ms_median", p.warm.WallMedian()},
-                                {"cpu_ms_median", p.warm.CpuMedian()},
-                                {"cold_ms", p.cold.WallMedian()},
-                                {"landmark_job_ms", p.landmarks.wall_ms},
-                                {"plain_astar_ms", plain_time.wall_ms},
-                                {"plain_astar_expansions", plain_path.expansions},
-                                {"expansions", p.path.expansions},
-                                {"same_cost_as_plain_astar",
-                                 std::abs(p.path.cost - plain_path.cost) < 1e-9}};
+    const nlohmann::json row = {
+        {"alpha", options.alpha},
+        {"beta", beta},
+        {"fly_m", p.path.fly_m},
+        {"roll_m", p.path.roll_m},
+        {"switches", p.path.switches},
+        {"energy_j", p.path.energy_j},
+        {"length_m", p.path.length_m},
+        {"ms_median", p.warm.WallMedian()},
+        {"cpu_ms_median", p.warm.CpuMedian()},
+        {"cold_ms", p.cold.WallMedian()},
+        {"landmark_job_ms", p.landmarks.wall_ms},
+        {"plain_astar_ms", plain_time.wall_ms},
+        {"plain_astar_expansions", plain_path.expansions},
+        {"expansions", p.path.expansions},
+        {"same_cost_as_plain_astar", std::abs(p.path.cost - plain_path.cost) < 1e-9}};
     out["table2"][key] = row;
     for (const char* figure : {"fly_m", "roll_m", "switches", "energy_j"}) {
       out[absl::StrCat("table2.", key, ".", figure)] = row[figure];

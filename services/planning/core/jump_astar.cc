@@ -69,8 +69,8 @@ void Summarise(const LayeredGrid& grid, const JumpAStarOptions& options, MultiMo
 absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell goal) {
   for (auto [cell, field] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
     if (!grid.Contains(cell)) {
-      return absl::InvalidArgumentError(absl::StrCat(field, " (", cell.x, ", ", cell.y,
-                                                     ") is outside the grid"));
+      return absl::InvalidArgumentError(
+          absl::StrCat(field, " (", cell.x, ", ", cell.y, ") is outside the grid"));
     }
   }
   if (grid.at(start) >= kStructureValue) {
@@ -109,12 +109,9 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Plan(const RegionTables& map,
                 limits);
 }
 
-absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(const LayeredGrid& grid,
-                                                        const RegionTables* regions,
-                                                        const LandmarkHeuristic* landmarks,
-                                                        Cell start, Cell goal,
-                                                        const JumpAStarOptions& options,
-                                                        const SearchLimits& limits) {
+absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
+    const LayeredGrid& grid, const RegionTables* regions, const LandmarkHeuristic* landmarks,
+    Cell start, Cell goal, const JumpAStarOptions& options, const SearchLimits& limits) {
   const StepCosts costs = StepCostsOf(options);
   const bool prune = regions != nullptr;
   const int goal_index = grid.Index(goal);
@@ -147,14 +144,15 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(const LayeredGrid& grid,
     const int parent = workspace_.parent(current);
     if (parent >= 0 && jumps_through(current)) {
       const Cell p = grid.CellAt(parent);
-      ForEachPrunedDirection(RegionSpace{grid, *regions}, c, (c.x > p.x) - (c.x < p.x), (c.y > p.y) - (c.y < p.y),
+      ForEachPrunedDirection(RegionSpace{grid, *regions}, c, (c.x > p.x) - (c.x < p.x),
+                             (c.y > p.y) - (c.y < p.y),
                              [&](int dx, int dy) { try_jump(current, c, dx, dy); });
       return;
     }
     const bool in_obstacle = IsObstacle(grid.at(c));
     ForEachMove(grid, c, [&](Cell n, MotionMode mode, double cells) {
-      const bool same_region = IsObstacle(grid.at(n)) == in_obstacle &&
-                               (mode == MotionMode::kFlying) == in_obstacle;
+      const bool same_region =
+          IsObstacle(grid.at(n)) == in_obstacle && (mode == MotionMode::kFlying) == in_obstacle;
       if (same_region && jumps_through(grid.Index(n))) {
         try_jump(current, c, n.x - c.x, n.y - c.y);
       } else {

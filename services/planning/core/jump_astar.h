@@ -48,8 +48,8 @@ struct MultiModalPath {
   double fly_m = 0.0;
   double roll_m = 0.0;
   double energy_j = 0.0;
-  int switches = 0;    // mode changes along the path
-  double cost = 0.0;   // alpha g + beta e at the goal
+  int switches = 0;   // mode changes along the path
+  double cost = 0.0;  // alpha g + beta e at the goal
   int expansions = 0;
 };
 

@@ -51,10 +51,9 @@ JumpAStarCache::Entry JumpAStarCache::Lookup(size_t hash, const LayeredGrid& gri
     return *e;
   }
   if (static_cast<int>(entries_.size()) >= capacity_) {
-    entries_.erase(std::min_element(entries_.begin(), entries_.end(),
-                                    [](const Entry& a, const Entry& b) {
-                                      return a.last_used < b.last_used;
-                                    }));
+    entries_.erase(
+        std::min_element(entries_.begin(), entries_.end(),
+                         [](const Entry& a, const Entry& b) { return a.last_used < b.last_used; }));
   }
   entries_.push_back({hash, costs, std::move(tables), nullptr, false, ++clock_});
   return entries_.back();
@@ -81,8 +80,8 @@ void JumpAStarCache::ReleasePlanner(std::unique_ptr<JumpAStarPlanner> planner) {
   idle_.push_back(std::move(planner));
 }
 
-absl::StatusOr<MultiModalPath> JumpAStarCache::Plan(const LayeredGrid& grid, Cell start,
-                                                    Cell goal, const JumpAStarOptions& options,
+absl::StatusOr<MultiModalPath> JumpAStarCache::Plan(const LayeredGrid& grid, Cell start, Cell goal,
+                                                    const JumpAStarOptions& options,
                                                     const SearchLimits& limits) {
   std::unique_ptr<JumpAStarPlanner> planner = AcquirePlanner();
   absl::StatusOr<MultiModalPath> path;

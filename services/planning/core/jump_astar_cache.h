@@ -49,8 +49,7 @@ class JumpAStarCache {
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Finds or adds the entry; copies out what the query needs and whether
   // the landmark build should start now.
-  Entry Lookup(size_t hash, const LayeredGrid& grid, const StepCosts& costs,
-               bool* start_landmarks);
+  Entry Lookup(size_t hash, const LayeredGrid& grid, const StepCosts& costs, bool* start_landmarks);
   void BuildLandmarks(std::shared_ptr<const RegionTables> tables, StepCosts costs);
   std::unique_ptr<JumpAStarPlanner> AcquirePlanner();
   void ReleasePlanner(std::unique_ptr<JumpAStarPlanner> planner);

@@ -152,8 +152,10 @@ TEST(JumpAStar, LandmarksForOtherCostsAreIgnored) {
   const RegionTables tables(map.grid);
   const LandmarkHeuristic wrong(map.grid, StepCostsOf(options));
   JumpAStarPlanner planner;
-  absl::StatusOr<MultiModalPath> with = planner.Plan(tables, &wrong, map.start, map.goal, cheap_flight);
-  absl::StatusOr<MultiModalPath> without = planner.Plan(map.grid, map.start, map.goal, cheap_flight);
+  absl::StatusOr<MultiModalPath> with =
+      planner.Plan(tables, &wrong, map.start, map.goal, cheap_flight);
+  absl::StatusOr<MultiModalPath> without =
+      planner.Plan(map.grid, map.start, map.goal, cheap_flight);
   ASSERT_TRUE(with.ok() && without.ok());
   EXPECT_DOUBLE_EQ(with->cost, without->cost);
   EXPECT_EQ(with->expansions, without->expansions);

@@ -37,19 +37,17 @@ LandmarkHeuristic::LandmarkHeuristic(const LayeredGrid& grid, const StepCosts& c
   for (int l = 0; l < count_; ++l) {
     workspace.Reset(grid.size());
     // Dijkstra (no goal, h = 0) over the same unit moves as the search.
-    (void)RunBestFirst(workspace, grid.Index(cells[l]), 0.0, -1, SearchLimits{},
-                       [&](int current) {
-                         ForEachMove(grid, grid.CellAt(current),
-                                     [&](Cell n, MotionMode mode, double length) {
-                                       const int next = grid.Index(n);
-                                       if (workspace.Closed(next)) return;
-                                       const double g =
-                                           workspace.g(current) + costs_.Of(mode) * length;
-                                       workspace.Relax(next, g, g, current);
-                                     });
-                       });
+    (void)RunBestFirst(workspace, grid.Index(cells[l]), 0.0, -1, SearchLimits{}, [&](int current) {
+      ForEachMove(grid, grid.CellAt(current), [&](Cell n, MotionMode mode, double length) {
+        const int next = grid.Index(n);
+        if (workspace.Closed(next)) return;
+        const double g = workspace.g(current) + costs_.Of(mode) * length;
+        workspace.Relax(next, g, g, current);
+      });
+    });
     for (int cell = 0; cell < grid.size(); ++cell) {
-      if (workspace.Reached(cell)) dist_[static_cast<size_t>(cell) * count_ + l] = workspace.g(cell);
+      if (workspace.Reached(cell))
+        dist_[static_cast<size_t>(cell) * count_ + l] = workspace.g(cell);
     }
   }
 }

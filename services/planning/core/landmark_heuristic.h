@@ -50,8 +50,8 @@ class LandmarkHeuristic {
 
  private:
   StepCosts costs_;
-  int count_ = 0;              // landmarks, the per-cell stride of dist_
-  std::vector<double> dist_;   // cell-major, count_ per cell
+  int count_ = 0;             // landmarks, the per-cell stride of dist_
+  std::vector<double> dist_;  // cell-major, count_ per cell
 };
 
 }  // namespace semnav::planning

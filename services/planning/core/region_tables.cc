@@ -35,8 +35,8 @@ RegionTables::RegionTables(LayeredGrid grid) : grid_(std::move(grid)) {
     const uint8_t* down = c - pw;
     uint8_t* b = boundary_.data() + static_cast<size_t>(y) * width;
     for (int x = 0; x < width; ++x) {
-      const uint8_t around = up[x - 1] | up[x] | up[x + 1] | c[x - 1] | c[x + 1] | down[x - 1] |
-                             down[x] | down[x + 1];
+      const uint8_t around =
+          up[x - 1] | up[x] | up[x + 1] | c[x - 1] | c[x + 1] | down[x - 1] | down[x] | down[x + 1];
       b[x] = c[x] != 0 && (around & (c[x] ^ (kFreeClass | kObstacleClass))) != 0;
     }
   }

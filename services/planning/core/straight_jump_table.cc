@@ -50,8 +50,8 @@ void StraightJumpTable::Build(int width, int height, const std::vector<uint8_t>&
       const int west = (up[x] & (up[x + 1] ^ 1)) | (down[x] & (down[x + 1] ^ 1));
       const int north = (o[x + 1] & (down[x + 1] ^ 1)) | (o[x - 1] & (down[x - 1] ^ 1));
       const int south = (o[x + 1] & (up[x + 1] ^ 1)) | (o[x - 1] & (up[x - 1] ^ 1));
-      e[x] = static_cast<uint8_t>((s[x] != 0 ? 15 : 0) | east | west << 1 | north << 2 |
-                                  south << 3);
+      e[x] =
+          static_cast<uint8_t>((s[x] != 0 ? 15 : 0) | east | west << 1 | north << 2 | south << 3);
     }
   }
   for (std::unique_ptr<int32_t[]>& runs : runs_) {

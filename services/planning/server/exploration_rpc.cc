@@ -83,8 +83,8 @@ absl::StatusOr<FrontierScoreConfig> WeightsOf(const pb::FrontierScoreWeights& we
 }
 
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
-                                       const semnav::common::v1::Pose2D& robot,
-                                       uint32_t min_cells, const pb::SemanticContext& semantics,
+                                       const semnav::common::v1::Pose2D& robot, uint32_t min_cells,
+                                       const pb::SemanticContext& semantics,
                                        const PlanningConfig& config) {
   FrontierView view;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
@@ -96,10 +96,12 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   absl::StatusOr<CellGrid<uint8_t>> explored = ToExplored(grid, field);
   if (!explored.ok()) return explored.status();
   view.explored = *std::move(explored);
-  absl::StatusOr<PassabilityGrid> free = ToPassability(grid, {config.occupied_percent, false}, field);
+  absl::StatusOr<PassabilityGrid> free =
+      ToPassability(grid, {config.occupied_percent, false}, field);
   if (!free.ok()) return free.status();
   view.free = *std::move(free);
-  const int min = min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
+  const int min =
+      min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
   view.frontiers = ExtractFrontiers(view.explored, view.free, min);
   const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
   for (const Frontier& f : view.frontiers) {
@@ -111,8 +113,8 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
         {{x, y}, nearest == kUnreachable ? -1.0 : nearest * view.frame.resolution});
   }
   const Point2 robot_m = ToPoint(view.frame.ToPose(view.robot));
-  view.scores = ScoreFrontiers(view.candidates, robot_m, VisitedOf(semantics),
-                               ObjectsOf(semantics), config.exploration.score);
+  view.scores = ScoreFrontiers(view.candidates, robot_m, VisitedOf(semantics), ObjectsOf(semantics),
+                               config.exploration.score);
   return view;
 }
 
@@ -126,8 +128,8 @@ absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
                                 const pb::ExtractFrontiersRequest& request,
                                 const PlanningConfig& config,
                                 pb::ExtractFrontiersResponse* response) {
-  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(), request.min_cells(),
-                                                request.semantics(), config);
+  absl::StatusOr<FrontierView> view =
+      BuildView(grid, field, request.robot(), request.min_cells(), request.semantics(), config);
   if (!view.ok()) return view.status();
   for (size_t i = 0; i < view->frontiers.size(); ++i) {
     pb::Frontier* f = response->add_frontiers();
@@ -143,7 +145,7 @@ absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
 }
 
 absl::Status ScoreFrontiersOn(const pb::ScoreFrontiersRequest& request,
-                             const PlanningConfig& config, pb::ScoreFrontiersResponse* response) {
+                              const PlanningConfig& config, pb::ScoreFrontiersResponse* response) {
   absl::StatusOr<FrontierScoreConfig> weights =
       WeightsOf(request.weights(), config.exploration.score);
   if (!weights.ok()) return weights.status();
@@ -176,9 +178,8 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                           const pb::SelectExplorationGoalRequest& request,
                           const PlanningConfig& config,
                           pb::SelectExplorationGoalResponse* response) {
-  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
-                                                request.min_frontier_cells(), request.semantics(),
-                                                config);
+  absl::StatusOr<FrontierView> view = BuildView(
+      grid, field, request.robot(), request.min_frontier_cells(), request.semantics(), config);
   if (!view.ok()) return view.status();
   const pb::ExplorationStrategy strategy =
       request.strategy() == pb::EXPLORATION_STRATEGY_UNSPECIFIED
@@ -203,7 +204,8 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       int best = -1;
       for (size_t i = 0; i < view->scores.size(); ++i) {
         if (view->candidates[i].path_distance_m < 0) continue;
-        if (best < 0 || view->scores[i].total > view->scores[best].total) best = static_cast<int>(i);
+        if (best < 0 || view->scores[i].total > view->scores[best].total)
+          best = static_cast<int>(i);
       }
       if (best < 0) return NotFound("no reachable frontier");
       *response->mutable_goal() = view->frame.ToPose(view->frontiers[best].anchor);

@@ -1,16 +1,16 @@
 #include "services/planning/server/planning_service.h"
 
+#include <grpcpp/client_context.h>
+
 #include <chrono>
 #include <cmath>
-
-#include <grpcpp/client_context.h>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "services/common/status/grpc_status.h"
 #include "services/planning/core/plan_failure.h"
-#include "services/planning/server/grid_conversion.h"
 #include "services/planning/server/exploration_rpc.h"
+#include "services/planning/server/grid_conversion.h"
 #include "services/planning/server/plan_response.h"
 #include "services/planning/server/trajectory_rpc.h"
 
@@ -34,8 +34,8 @@ absl::Time SearchDeadline(const grpc::CallbackServerContext& context, uint32_t r
   if (request_ms > 0) deadline = std::min(deadline, absl::Now() + absl::Milliseconds(request_ms));
   const auto call = context.deadline();
   if (call != std::chrono::system_clock::time_point::max()) {
-    deadline = std::min(deadline,
-                        absl::FromChrono(call) - absl::Milliseconds(config.deadline_margin_ms));
+    deadline =
+        std::min(deadline, absl::FromChrono(call) - absl::Milliseconds(config.deadline_margin_ms));
   }
   return deadline;
 }
@@ -127,10 +127,10 @@ grpc::ServerUnaryReactor* PlanningServiceImpl::ServeOnGrid(
 grpc::ServerUnaryReactor* PlanningServiceImpl::ExtractFrontiers(
     grpc::CallbackServerContext* context, const pb::ExtractFrontiersRequest* request,
     pb::ExtractFrontiersResponse* response) {
-  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
-                                                           const std::string& field) {
-    return ExtractFrontiersOn(grid, field, *request, config_, response);
-  });
+  return ServeOnGrid(context, request->source(),
+                     [=, this](const GridMap& grid, const std::string& field) {
+                       return ExtractFrontiersOn(grid, field, *request, config_, response);
+                     });
 }
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::ScoreFrontiers(
@@ -142,20 +142,20 @@ grpc::ServerUnaryReactor* PlanningServiceImpl::ScoreFrontiers(
 grpc::ServerUnaryReactor* PlanningServiceImpl::SelectExplorationGoal(
     grpc::CallbackServerContext* context, const pb::SelectExplorationGoalRequest* request,
     pb::SelectExplorationGoalResponse* response) {
-  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
-                                                           const std::string& field) {
-    return SelectGoalOn(grid, field, *request, config_, response);
-  });
+  return ServeOnGrid(context, request->source(),
+                     [=, this](const GridMap& grid, const std::string& field) {
+                       return SelectGoalOn(grid, field, *request, config_, response);
+                     });
 }
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::SmoothTrajectory(
     grpc::CallbackServerContext* context, const pb::SmoothTrajectoryRequest* request,
     pb::SmoothTrajectoryResponse* response) {
-  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
-                                                           const std::string& field) {
-    return SmoothTrajectoryOn(grid, field, *request, config_.trajectory,
-                              config_.occupied_percent, response);
-  });
+  return ServeOnGrid(context, request->source(),
+                     [=, this](const GridMap& grid, const std::string& field) {
+                       return SmoothTrajectoryOn(grid, field, *request, config_.trajectory,
+                                                 config_.occupied_percent, response);
+                     });
 }
 
 absl::StatusOr<const GridMap*> PlanningServiceImpl::ResolveGrid(
@@ -195,8 +195,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
   if (!goal.ok()) return goal.status();
 
   SearchLimits limits;
-  limits.deadline =
-      SearchDeadline(*context, request.max_planning_time_ms(), config_);
+  limits.deadline = SearchDeadline(*context, request.max_planning_time_ms(), config_);
   limits.is_cancelled = [context] { return context->IsCancelled(); };
 
   absl::Status failure;

@@ -1,17 +1,17 @@
 #pragma once
 
+#include <grpcpp/channel.h>
+
 #include <functional>
 #include <memory>
 #include <string>
 
-#include <grpcpp/channel.h>
-
 #include "absl/status/status.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
+#include "services/common/server/worker_pool.h"
 #include "services/planning/core/jump_astar_cache.h"
 #include "services/planning/server/planning_config.h"
-#include "services/common/server/worker_pool.h"
 
 namespace semnav::planning {
 

@@ -1,9 +1,8 @@
 // Contract test: deadlines and cancellation of PlanPath over gRPC, on a
 // real semnav-planning binary with one search worker, so a search that did
 // not stop would visibly hold up the next call.
-#include <gtest/gtest.h>
-
 #include <grpcpp/client_context.h>
+#include <gtest/gtest.h>
 
 #include <chrono>
 #include <fstream>

@@ -1,8 +1,7 @@
 // Contract test: the real semnav-planning binary on a loopback port, called
 // through the generated stubs.
-#include <gtest/gtest.h>
-
 #include <grpcpp/client_context.h>
+#include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
@@ -36,7 +35,8 @@ GridMap MakeGrid(const std::vector<std::string>& rows, double resolution) {
   layer->set_kind(semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL);
   std::string data;
   for (const std::string& row : rows) {
-    for (char c : row) data.push_back(static_cast<char>(c == '.' ? 0 : c == '#' ? 100 : 10 * (c - '0')));
+    for (char c : row)
+      data.push_back(static_cast<char>(c == '.' ? 0 : c == '#' ? 100 : 10 * (c - '0')));
   }
   layer->set_data(data);
   return grid;
@@ -62,11 +62,7 @@ class PlanningContract : public PlanningBinaryTest {
 
 // A wall with a one-cell door at column 3: 0.5 m cells.
 const std::vector<std::string> kDoorRows = {
-    ".......",
-    ".......",
-    "###.###",
-    ".......",
-    ".......",
+    ".......", ".......", "###.###", ".......", ".......",
 };
 
 pb::PlanPathRequest DoorRequest(pb::PlannerKind planner) {

@@ -1,8 +1,7 @@
 // Contract test of the exploration and trajectory RPCs of the real
 // semnav-planning binary.
-#include <gtest/gtest.h>
-
 #include <grpcpp/client_context.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
@@ -24,11 +23,7 @@ using semnav::common::v1::Pose2D;
 // 1 m cells, origin (-1, -2), row 0 lowest: '.' explored free, '#' explored
 // structure, '?' unexplored.
 const std::vector<std::string> kRows = {
-    "......??",
-    "......??",
-    "..##..??",
-    "........",
-    "???.....",
+    "......??", "......??", "..##..??", "........", "???.....",
 };
 
 GridMap ExplorationGrid() {
@@ -160,9 +155,8 @@ TEST_F(ExplorationContract, ScoreFrontiersNamesTheBadField) {
   bad_weight.mutable_weights()->set_grounding(-0.3);
   pb::ScoreFrontiersRequest bad_distance = ScoreRequest();
   bad_distance.mutable_frontiers(1)->set_path_distance_m(std::nan(""));
-  for (const auto& [request, field] :
-       {std::pair{bad_weight, "weights.grounding"},
-        std::pair{bad_distance, "frontiers[1].path_distance_m"}}) {
+  for (const auto& [request, field] : {std::pair{bad_weight, "weights.grounding"},
+                                       std::pair{bad_distance, "frontiers[1].path_distance_m"}}) {
     pb::ScoreFrontiersResponse response;
     grpc::ClientContext context;
     const grpc::Status status = Stub()->ScoreFrontiers(&context, request, &response);
@@ -183,8 +177,10 @@ TEST_F(ExplorationContract, ScoreFrontiersNamesTheBadField) {
 TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
   pb::SelectExplorationGoalResponse response;
   grpc::ClientContext context;
-  ASSERT_TRUE(Stub()->SelectExplorationGoal(
-      &context, GoalRequest(pb::EXPLORATION_STRATEGY_UNSPECIFIED), &response).ok());
+  ASSERT_TRUE(Stub()
+                  ->SelectExplorationGoal(
+                      &context, GoalRequest(pb::EXPLORATION_STRATEGY_UNSPECIFIED), &response)
+                  .ok());
   EXPECT_EQ(response.strategy(), pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
   EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(0, 3).x());
   EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(0, 3).y());
@@ -192,7 +188,8 @@ TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
 }
 
 TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
-  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
+  pb::SelectExplorationGoalRequest request =
+      GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
   pb::SemanticObject* sofa = request.mutable_semantics()->add_objects();
   sofa->set_label("sofa");
   sofa->mutable_position()->set_x(6.0);
@@ -231,9 +228,10 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
 
   // From (0,0) no viewpoint lies within the roadmap's 3 m edges: NOT_FOUND.
   grpc::ClientContext far_context;
-  EXPECT_EQ(Stub()->SelectExplorationGoal(&far_context,
-                                          GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY),
-                                          &response).error_code(),
+  EXPECT_EQ(Stub()
+                ->SelectExplorationGoal(
+                    &far_context, GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY), &response)
+                .error_code(),
             grpc::StatusCode::NOT_FOUND);
 
   pb::SelectExplorationGoalRequest bad = GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY);
@@ -241,7 +239,8 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
   grpc::ClientContext bad_context;
   const grpc::Status status = Stub()->SelectExplorationGoal(&bad_context, bad, &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(status);
+  std::optional<semnav::common::v1::ErrorInfo> info =
+      GetDetail<semnav::common::v1::ErrorInfo>(status);
   ASSERT_TRUE(info.has_value());
   EXPECT_EQ(info->field(), "eroi_semantic_values");
 }
@@ -267,7 +266,8 @@ TEST_F(ExplorationContract, SmoothTrajectoryRespectsTheLimits) {
   grpc::ClientContext bad_context;
   const grpc::Status status = Stub()->SmoothTrajectory(&bad_context, blocked, &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(status);
+  std::optional<semnav::common::v1::ErrorInfo> info =
+      GetDetail<semnav::common::v1::ErrorInfo>(status);
   ASSERT_TRUE(info.has_value());
   EXPECT_EQ(info->field(), "path[1]");
 }
