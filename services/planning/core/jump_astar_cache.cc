@@ -17,8 +17,23 @@ size_t ContentHash(const LayeredGrid& grid) {
 
 }  // namespace
 
-JumpAStarCache::JumpAStarCache(int capacity, RunLater run_later)
-    : capacity_(std::max(1, capacity)), run_later_(std::move(run_later)) {}
+JumpAStarCache::JumpAStarCache(size_t budget_bytes, RunLater run_later)
+    : budget_bytes_(budget_bytes), run_later_(std::move(run_later)) {}
+
+void JumpAStarCache::Evict(uint64_t keep) {
+  while (true) {
+    size_t total = 0;
+    auto oldest = entries_.end();
+    for (auto e = entries_.begin(); e != entries_.end(); ++e) {
+      total += e->bytes();
+      if (e->last_used != keep && (oldest == entries_.end() || e->last_used < oldest->last_used)) {
+        oldest = e;
+      }
+    }
+    if (total <= budget_bytes_ || oldest == entries_.end()) return;
+    entries_.erase(oldest);
+  }
+}
 
 JumpAStarCache::Entry* JumpAStarCache::Find(size_t hash, const LayeredGrid& grid,
                                             const StepCosts& costs) {
@@ -50,20 +65,21 @@ JumpAStarCache::Entry JumpAStarCache::Lookup(size_t hash, const LayeredGrid& gri
     e->last_used = ++clock_;
     return *e;
   }
-  if (static_cast<int>(entries_.size()) >= capacity_) {
-    entries_.erase(
-        std::min_element(entries_.begin(), entries_.end(),
-                         [](const Entry& a, const Entry& b) { return a.last_used < b.last_used; }));
-  }
   entries_.push_back({hash, costs, std::move(tables), nullptr, false, ++clock_});
-  return entries_.back();
+  const Entry added = entries_.back();
+  Evict(added.last_used);
+  return added;
 }
 
 void JumpAStarCache::BuildLandmarks(std::shared_ptr<const RegionTables> tables, StepCosts costs) {
   auto landmarks = std::make_shared<const LandmarkHeuristic>(tables->grid(), costs);
   absl::MutexLock lock(&mu_);
   for (Entry& e : entries_) {
-    if (e.tables == tables && e.costs == costs) e.landmarks = landmarks;
+    if (e.tables == tables && e.costs == costs) {
+      e.landmarks = landmarks;
+      Evict(e.last_used);
+      return;
+    }
   }
 }
 

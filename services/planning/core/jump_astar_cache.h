@@ -21,14 +21,14 @@ namespace semnav::planning {
 //  - later queries: tables + landmark bound (the warm case).
 // Keyed by the grid content (hash, confirmed by a full compare) and the
 // step costs, so inline grids and live maps are treated alike and a changed
-// map is a new entry; least recently used entries beyond `capacity` are
-// dropped. Results are exactly those of JumpAStarPlanner. Thread-safe.
+// map is a new entry; least recently used entries are dropped while the
+// cache holds more than `budget_bytes` (the newest entry always stays). Results are exactly those of JumpAStarPlanner. Thread-safe.
 class JumpAStarCache {
  public:
   using RunLater = std::function<void(std::function<void()>)>;
 
   // run_later must run every job it accepts before the cache is destroyed.
-  JumpAStarCache(int capacity, RunLater run_later);
+  JumpAStarCache(size_t budget_bytes, RunLater run_later);
 
   absl::StatusOr<MultiModalPath> Plan(const LayeredGrid& grid, Cell start, Cell goal,
                                       const JumpAStarOptions& options,
@@ -41,12 +41,16 @@ class JumpAStarCache {
     std::shared_ptr<const RegionTables> tables;
     std::shared_ptr<const LandmarkHeuristic> landmarks;  // null until built
     bool landmarks_requested = false;
-    uint64_t last_used = 0;
+    uint64_t last_used = 0;  // unique: the cache clock at the last use
+    size_t bytes() const { return tables->bytes() + (landmarks ? landmarks->bytes() : 0); }
   };
 
   // The entry for this grid and costs, or null.
   Entry* Find(size_t hash, const LayeredGrid& grid, const StepCosts& costs)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Drops least recently used entries, except the one last used at `keep`,
+  // while over budget.
+  void Evict(uint64_t keep) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Finds or adds the entry; copies out what the query needs and whether
   // the landmark build should start now.
   Entry Lookup(size_t hash, const LayeredGrid& grid, const StepCosts& costs, bool* start_landmarks);
@@ -54,7 +58,7 @@ class JumpAStarCache {
   std::unique_ptr<JumpAStarPlanner> AcquirePlanner();
   void ReleasePlanner(std::unique_ptr<JumpAStarPlanner> planner);
 
-  const int capacity_;
+  const size_t budget_bytes_;
   const RunLater run_later_;
   absl::Mutex mu_;
   std::vector<Entry> entries_ ABSL_GUARDED_BY(mu_);

@@ -23,6 +23,8 @@ struct QueuedJobs {
   }
 };
 
+constexpr size_t kPlenty = size_t{1} << 30;
+
 RandomLayeredMap SmallMap(uint32_t seed) {
   return MakeRandomLayeredMap({.size_m = 12.0, .obstacle_count = 25, .seed = seed});
 }
@@ -30,7 +32,7 @@ RandomLayeredMap SmallMap(uint32_t seed) {
 TEST(JumpAStarCache, LandmarksAreBuiltOffTheQueryFromTheSecondQueryOn) {
   const RandomLayeredMap map = SmallMap(3);
   QueuedJobs queue;
-  JumpAStarCache cache(2, queue.Sink());
+  JumpAStarCache cache(kPlenty, queue.Sink());
   JumpAStarPlanner cold;
   const JumpAStarOptions options;
   absl::StatusOr<MultiModalPath> reference = cold.Plan(map.grid, map.start, map.goal, options);
@@ -59,7 +61,7 @@ TEST(JumpAStarCache, LandmarksAreBuiltOffTheQueryFromTheSecondQueryOn) {
 TEST(JumpAStarCache, ChangedGridOrCostsAreNewEntries) {
   RandomLayeredMap map = SmallMap(3);
   QueuedJobs queue;
-  JumpAStarCache cache(4, queue.Sink());
+  JumpAStarCache cache(kPlenty, queue.Sink());
   const JumpAStarOptions options;
   for (int i = 0; i < 2; ++i) ASSERT_TRUE(cache.Plan(map.grid, map.start, map.goal, options).ok());
   queue.RunAll();
@@ -82,9 +84,9 @@ TEST(JumpAStarCache, ChangedGridOrCostsAreNewEntries) {
   EXPECT_EQ(changed->expansions, expected->expansions);
 }
 
-TEST(JumpAStarCache, LeastRecentlyUsedMapIsDropped) {
+TEST(JumpAStarCache, LeastRecentlyUsedMapIsDroppedOverBudget) {
   QueuedJobs queue;
-  JumpAStarCache cache(1, queue.Sink());
+  JumpAStarCache cache(1, queue.Sink());  // 1 byte: only the newest map stays
   const JumpAStarOptions options;
   const RandomLayeredMap a = SmallMap(1);
   const RandomLayeredMap b = SmallMap(2);
@@ -102,7 +104,7 @@ TEST(JumpAStarCache, NoPathAlsoWithTheLandmarkBound) {
   LayeredGrid grid(7, 3, 0);
   for (int y = 0; y < grid.height(); ++y) grid.at(3, y) = kStructureValue;
   QueuedJobs queue;
-  JumpAStarCache cache(2, queue.Sink());
+  JumpAStarCache cache(kPlenty, queue.Sink());
   const JumpAStarOptions options;
   for (int query = 0; query < 3; ++query) {
     EXPECT_EQ(PlanFailureOf(cache.Plan(grid, {0, 0}, {6, 2}, options).status()),

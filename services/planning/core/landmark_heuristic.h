@@ -23,6 +23,7 @@ class LandmarkHeuristic {
   LandmarkHeuristic(const LayeredGrid& grid, const StepCosts& costs);
 
   const StepCosts& costs() const { return costs_; }
+  size_t bytes() const { return dist_.size() * sizeof(double); }
 
   // The bound towards one goal cell.
   class ToGoal {

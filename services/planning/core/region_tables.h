@@ -21,6 +21,8 @@ class RegionTables {
   // obstacle).
   bool Boundary(int cell) const { return boundary_[cell] != 0; }
   const StraightJumpTable& jumps() const { return jumps_; }
+  // Memory held: grid, boundary marks and 4 int32 runs per cell.
+  size_t bytes() const { return static_cast<size_t>(grid_.size()) * (1 + 1 + 4 * 4); }
 
  private:
   LayeredGrid grid_;

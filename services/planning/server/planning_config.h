@@ -22,10 +22,10 @@ struct PlanningConfig {
   // jump_astar.{alpha, beta, energy_unit_j, rolling_energy_j_per_m,
   // hover_power_w, flight_speed_mps}: seed 003 Table 1 and sec. 4.2.
   JumpAStarOptions jump_astar;
-  // jump_astar.cached_maps: prepared maps (region tables, landmarks) kept
-  // for repeated queries, least recently used dropped first; about 35 MB
-  // each at 800 x 800 cells.
-  int jump_astar_cached_maps = 4;
+  // jump_astar.cache_mb: memory for prepared maps (region tables, landmarks)
+  // kept for repeated queries, least recently used dropped first; 18 bytes
+  // per cell plus 32 once the landmarks exist (32 MB at 800 x 800 cells).
+  int jump_astar_cache_mb = 256;
   // exploration.*: frontier, coverage-max, semantic frontier, EROI settings.
   ExplorationConfig exploration;
   // trajectory.*: smoothing and time-allocation limits.

@@ -93,7 +93,7 @@ PlanningServiceImpl::PlanningServiceImpl(PlanningConfig config,
                                          std::shared_ptr<grpc::Channel> mapping)
     : config_(std::move(config)),
       mapping_(semnav::mapping::v1::MappingService::NewStub(std::move(mapping))),
-      jump_astar_(config_.jump_astar_cached_maps,
+      jump_astar_(static_cast<size_t>(config_.jump_astar_cache_mb) << 20,
                   [this](std::function<void()> job) { (void)workers_.Submit(std::move(job)); }),
       workers_(config_.worker_threads) {}
 
