@@ -98,6 +98,29 @@ TEST(JumpAStarCache, LeastRecentlyUsedMapIsDroppedOverBudget) {
   EXPECT_EQ(queue.jobs.size(), 1u);
 }
 
+// A budget that holds two maps' tables but not landmarks on top: when b's
+// landmarks arrive, a (least recently used) goes, and b keeps them.
+TEST(JumpAStarCache, LandmarksArrivingOverBudgetDropTheOldestMap) {
+  const RandomLayeredMap a = SmallMap(1);
+  const RandomLayeredMap b = SmallMap(2);
+  const size_t two_tables = RegionTables(a.grid).bytes() + RegionTables(b.grid).bytes();
+  QueuedJobs queue;
+  JumpAStarCache cache(two_tables, queue.Sink());
+  const JumpAStarOptions options;
+  JumpAStarPlanner cold;
+  const int a_cold = cold.Plan(a.grid, a.start, a.goal, options)->expansions;
+  const int b_cold = cold.Plan(b.grid, b.start, b.goal, options)->expansions;
+  ASSERT_TRUE(cache.Plan(a.grid, a.start, a.goal, options).ok());
+  ASSERT_TRUE(cache.Plan(b.grid, b.start, b.goal, options).ok());
+  ASSERT_TRUE(cache.Plan(b.grid, b.start, b.goal, options).ok());  // hands off b's landmarks
+  ASSERT_EQ(queue.jobs.size(), 1u);
+  queue.RunAll();
+  EXPECT_LT(cache.Plan(b.grid, b.start, b.goal, options)->expansions, b_cold);  // warm
+  // a was dropped: its next query is a first query again (no landmark job).
+  EXPECT_EQ(cache.Plan(a.grid, a.start, a.goal, options)->expansions, a_cold);
+  EXPECT_TRUE(queue.jobs.empty());
+}
+
 // Structure splits the grid into two rooms: from the third query on the
 // landmark bound between them is infinite, which must still say NO_PATH.
 TEST(JumpAStarCache, NoPathAlsoWithTheLandmarkBound) {
