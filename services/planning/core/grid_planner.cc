@@ -83,8 +83,10 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanOn(const PassabilityGrid& grid,
   result.planned_goal = request.goal;
   absl::StatusOr<GridPath> path = Search(grid, request.start, request.goal, request);
   const std::optional<PlanFailure> failure = PlanFailureOf(path.status());
-  const bool goal_problem = failure == PlanFailure::kGoalOccupied || failure == PlanFailure::kNoPath;
-  if (!path.ok() && goal_problem) {
+  const bool goal_problem =
+      failure == PlanFailure::kGoalOccupied || failure == PlanFailure::kNoPath;
+  const bool may_replace = request.goal_tolerance_m > 0.0 || request.first_sighting.has_value();
+  if (!path.ok() && goal_problem && may_replace) {
     const std::vector<uint8_t> reachable = ReachableFrom(grid, request.start);
     std::optional<Cell> replacement;
     if (request.goal_tolerance_m > 0.0) {

@@ -24,22 +24,6 @@ struct RegionSpace {
   }
 };
 
-absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell goal) {
-  for (auto [cell, field] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
-    if (!grid.Contains(cell)) {
-      return absl::InvalidArgumentError(absl::StrCat(field, " (", cell.x, ", ", cell.y,
-                                                     ") is outside the grid"));
-    }
-  }
-  if (grid.at(start) >= kStructureValue) {
-    return MakePlanFailure(PlanFailure::kStartOccupied, "start is on building structure");
-  }
-  if (grid.at(goal) >= kStructureValue) {
-    return MakePlanFailure(PlanFailure::kGoalOccupied, "goal is on building structure");
-  }
-  return absl::OkStatus();
-}
-
 // Splits the cell path into maximal single-mode segments with their
 // lengths and eq. 10 / eq. 12 energies, and reduces the waypoints to the
 // turning points (heading or mode changes).
@@ -82,36 +66,64 @@ void Summarise(const LayeredGrid& grid, const JumpAStarOptions& options, MultiMo
 
 }  // namespace
 
-void JumpAStarPlanner::UpdateCaches(const LayeredGrid& grid, const StepCosts& costs) {
-  if (regions_.Update(grid)) {
-    queries_on_grid_ = 0;
-    landmarks_.Clear();
+absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell goal) {
+  for (auto [cell, field] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
+    if (!grid.Contains(cell)) {
+      return absl::InvalidArgumentError(
+          absl::StrCat(field, " (", cell.x, ", ", cell.y, ") is outside the grid"));
+    }
   }
-  if (++queries_on_grid_ < 2) return;
-  if (!landmarks_.Matches(costs)) landmarks_.Reset(grid, costs);
-  landmarks_.AddLandmark(grid);
+  if (grid.at(start) >= kStructureValue) {
+    return MakePlanFailure(PlanFailure::kStartOccupied, "start is on building structure");
+  }
+  if (grid.at(goal) >= kStructureValue) {
+    return MakePlanFailure(PlanFailure::kGoalOccupied, "goal is on building structure");
+  }
+  return absl::OkStatus();
+}
+
+StepCosts StepCostsOf(const JumpAStarOptions& options) {
+  const double unit = options.resolution_m / options.energy_unit_j;
+  return {
+      options.alpha * options.resolution_m + options.beta * options.energy.rolling_j_per_m * unit,
+      options.alpha * options.resolution_m + options.beta * options.energy.FlyingJPerM() * unit};
 }
 
 absl::StatusOr<MultiModalPath> JumpAStarPlanner::Plan(const LayeredGrid& grid, Cell start,
                                                       Cell goal, const JumpAStarOptions& options,
                                                       const SearchLimits& limits) {
   if (absl::Status s = CheckMultiModalEndpoints(grid, start, goal); !s.ok()) return s;
-  const double unit = options.resolution_m / options.energy_unit_j;
-  const StepCosts costs{
-      options.alpha * options.resolution_m + options.beta * options.energy.rolling_j_per_m * unit,
-      options.alpha * options.resolution_m + options.beta * options.energy.FlyingJPerM() * unit};
-  const bool prune = options.jump_pruning;
-  if (prune) UpdateCaches(grid, costs);
-  const RegionSpace space{grid, regions_};
-  const bool landmarks = prune && landmarks_.Matches(costs);
+  if (!options.jump_pruning) return Search(grid, nullptr, nullptr, start, goal, options, limits);
+  const RegionTables map(grid);
+  return Search(map.grid(), &map, nullptr, start, goal, options, limits);
+}
+
+absl::StatusOr<MultiModalPath> JumpAStarPlanner::Plan(const RegionTables& map,
+                                                      const LandmarkHeuristic* landmarks,
+                                                      Cell start, Cell goal,
+                                                      const JumpAStarOptions& options,
+                                                      const SearchLimits& limits) {
+  const LayeredGrid& grid = map.grid();
+  if (absl::Status s = CheckMultiModalEndpoints(grid, start, goal); !s.ok()) return s;
+  return Search(grid, options.jump_pruning ? &map : nullptr, landmarks, start, goal, options,
+                limits);
+}
+
+absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
+    const LayeredGrid& grid, const RegionTables* regions, const LandmarkHeuristic* landmarks,
+    Cell start, Cell goal, const JumpAStarOptions& options, const SearchLimits& limits) {
+  const StepCosts costs = StepCostsOf(options);
+  const bool prune = regions != nullptr;
   const int goal_index = grid.Index(goal);
-  if (landmarks) landmarks_.SetGoal(goal_index);
+  const bool use_landmarks = landmarks != nullptr && landmarks->costs() == costs;
+  const LandmarkHeuristic::ToGoal bound =
+      use_landmarks ? landmarks->Towards(goal_index) : LandmarkHeuristic::ToGoal();
   auto heuristic = [&](Cell c) {
     const double octile = costs.roll * OctileDistance(c, goal);
-    return landmarks ? std::max(octile, landmarks_.Bound(grid.Index(c))) : octile;
+    return use_landmarks ? std::max(octile, bound(grid.Index(c))) : octile;
   };
   // Without pruning every cell expands fully (the plain A* reference).
-  auto jumps_through = [&](int cell) { return prune && !regions_.Boundary(cell); };
+  auto jumps_through = [&](int cell) { return prune && !regions->Boundary(cell); };
 
   workspace_.Reset(grid.size());
   auto relax = [&](int from, Cell to, double step_cost) {
@@ -122,7 +134,7 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Plan(const LayeredGrid& grid, C
   };
   // A jump stays in the region of `c`, so every step has the region's cost.
   auto try_jump = [&](int from, Cell c, int dx, int dy) {
-    if (const std::optional<Cell> jump = Jump(space, c, dx, dy, goal)) {
+    if (const std::optional<Cell> jump = Jump(RegionSpace{grid, *regions}, c, dx, dy, goal)) {
       const double step = IsObstacle(grid.at(c)) ? costs.fly : costs.roll;
       relax(from, *jump, step * OctileDistance(c, *jump));
     }
@@ -132,14 +144,15 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Plan(const LayeredGrid& grid, C
     const int parent = workspace_.parent(current);
     if (parent >= 0 && jumps_through(current)) {
       const Cell p = grid.CellAt(parent);
-      ForEachPrunedDirection(space, c, (c.x > p.x) - (c.x < p.x), (c.y > p.y) - (c.y < p.y),
+      ForEachPrunedDirection(RegionSpace{grid, *regions}, c, (c.x > p.x) - (c.x < p.x),
+                             (c.y > p.y) - (c.y < p.y),
                              [&](int dx, int dy) { try_jump(current, c, dx, dy); });
       return;
     }
     const bool in_obstacle = IsObstacle(grid.at(c));
     ForEachMove(grid, c, [&](Cell n, MotionMode mode, double cells) {
-      const bool same_region = IsObstacle(grid.at(n)) == in_obstacle &&
-                               (mode == MotionMode::kFlying) == in_obstacle;
+      const bool same_region =
+          IsObstacle(grid.at(n)) == in_obstacle && (mode == MotionMode::kFlying) == in_obstacle;
       if (same_region && jumps_through(grid.Index(n))) {
         try_jump(current, c, n.x - c.x, n.y - c.y);
       } else {

@@ -48,10 +48,17 @@ struct MultiModalPath {
   double fly_m = 0.0;
   double roll_m = 0.0;
   double energy_j = 0.0;
-  int switches = 0;    // mode changes along the path
-  double cost = 0.0;   // alpha g + beta e at the goal
+  int switches = 0;   // mode changes along the path
+  double cost = 0.0;  // alpha g + beta e at the goal
   int expansions = 0;
 };
+
+// The eq. 14 cost of one cell-length move in each mode under `options`.
+StepCosts StepCostsOf(const JumpAStarOptions& options);
+
+// INVALID_ARGUMENT naming "start"/"goal" outside the grid; the typed
+// START_OCCUPIED / GOAL_OCCUPIED failure on building structure.
+absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell goal);
 
 // Improved Jump A* (seed 003, sec. 3.2): jump-point pruning inside uniform
 // regions, plain A* expansion where the two modes meet. A move is rolling
@@ -65,27 +72,33 @@ struct MultiModalPath {
 // and also inside obstacle interiors (an extension of the seed, whose A*
 // expands them cell by cell; same optimum, measured in docs).
 // h is the larger of (alpha + beta * rolling energy per metre) * octile
-// distance (no metre costs less than rolling) and, from the second pruned
-// query on the same grid and costs, a landmark bound; both are admissible
-// and consistent, so the optimum is unchanged.
-// The planner caches per-grid tables: reuse one planner for many queries on
-// a map. Not thread-safe.
+// distance (no metre costs less than rolling) and, when the caller has one
+// for these costs, a landmark bound; both are admissible and consistent, so
+// the optimum is unchanged.
+// The planner keeps only its search workspace between queries (reuse it to
+// avoid re-allocating); per-map state lives in RegionTables and
+// LandmarkHeuristic, which JumpAStarCache keeps per map. Not thread-safe.
 class JumpAStarPlanner {
  public:
+  // One query on a grid with no prepared state: builds its region tables
+  // first (the cold case).
   absl::StatusOr<MultiModalPath> Plan(const LayeredGrid& grid, Cell start, Cell goal,
                                       const JumpAStarOptions& options,
                                       const SearchLimits& limits = {});
+  // One query on prepared per-map state. `landmarks` may be null; otherwise
+  // it must have been built for StepCostsOf(options) on map.grid().
+  absl::StatusOr<MultiModalPath> Plan(const RegionTables& map, const LandmarkHeuristic* landmarks,
+                                      Cell start, Cell goal, const JumpAStarOptions& options,
+                                      const SearchLimits& limits = {});
 
  private:
-  // Rebuilds the region tables when the grid changes. From the second query
-  // on a grid, adds one landmark per query: a one-off query pays no
-  // whole-grid Dijkstra and no query pays more than one.
-  void UpdateCaches(const LayeredGrid& grid, const StepCosts& costs);
+  // `regions` null: plain A* expansion everywhere.
+  absl::StatusOr<MultiModalPath> Search(const LayeredGrid& grid, const RegionTables* regions,
+                                        const LandmarkHeuristic* landmarks, Cell start, Cell goal,
+                                        const JumpAStarOptions& options,
+                                        const SearchLimits& limits);
 
   SearchWorkspace workspace_;
-  RegionTables regions_;
-  LandmarkHeuristic landmarks_;
-  int queries_on_grid_ = 0;
 };
 
 }  // namespace semnav::planning

@@ -112,16 +112,18 @@ TEST(JumpAStar, JumpPruningKeepsTheOptimalCost) {
   }
 }
 
-// Repeated queries on one grid use the cached tables and the landmark bound;
-// every start/goal pair must still cost exactly what full A* finds.
-TEST(JumpAStar, WarmPlannerKeepsTheOptimalCost) {
+// Queries on prepared tables with the landmark bound must cost exactly what
+// full A* finds, for every start/goal pair.
+TEST(JumpAStar, LandmarkBoundKeepsTheOptimalCost) {
   RandomLayeredMapSpec spec;
   spec.size_m = 12.0;
   spec.obstacle_count = 25;
   const RandomLayeredMap map = MakeRandomLayeredMap(spec);
+  JumpAStarOptions options;
+  const RegionTables tables(map.grid);
+  const LandmarkHeuristic landmarks(map.grid, StepCostsOf(options));
   JumpAStarPlanner warm;
   JumpAStarPlanner reference;
-  JumpAStarOptions options;
   JumpAStarOptions plain = options;
   plain.jump_pruning = false;
   std::mt19937 rng(7);
@@ -130,13 +132,33 @@ TEST(JumpAStar, WarmPlannerKeepsTheOptimalCost) {
   while (compared < 40) {
     const Cell start{coord(rng), coord(rng)};
     const Cell goal{coord(rng), coord(rng)};
-    absl::StatusOr<MultiModalPath> jumped = warm.Plan(map.grid, start, goal, options);
+    absl::StatusOr<MultiModalPath> jumped = warm.Plan(tables, &landmarks, start, goal, options);
     absl::StatusOr<MultiModalPath> full = reference.Plan(map.grid, start, goal, plain);
     ASSERT_EQ(jumped.ok(), full.ok());
     if (!full.ok()) continue;
     EXPECT_NEAR(jumped->cost, full->cost, 1e-9) << start.x << "," << start.y;
+    EXPECT_LE(jumped->expansions, full->expansions);
     ++compared;
   }
+}
+
+// A landmark bound built for other costs is not used (it could overestimate).
+TEST(JumpAStar, LandmarksForOtherCostsAreIgnored) {
+  const RandomLayeredMap map = MakeRandomLayeredMap({.size_m = 12.0, .obstacle_count = 25});
+  JumpAStarOptions cheap_flight;
+  cheap_flight.beta = 0.0;
+  JumpAStarOptions options;
+  options.beta = 5.0;
+  const RegionTables tables(map.grid);
+  const LandmarkHeuristic wrong(map.grid, StepCostsOf(options));
+  JumpAStarPlanner planner;
+  absl::StatusOr<MultiModalPath> with =
+      planner.Plan(tables, &wrong, map.start, map.goal, cheap_flight);
+  absl::StatusOr<MultiModalPath> without =
+      planner.Plan(map.grid, map.start, map.goal, cheap_flight);
+  ASSERT_TRUE(with.ok() && without.ok());
+  EXPECT_DOUBLE_EQ(with->cost, without->cost);
+  EXPECT_EQ(with->expansions, without->expansions);
 }
 
 TEST(JumpAStar, Table2TrendOnTheSeedMap) {

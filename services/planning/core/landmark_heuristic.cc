@@ -1,9 +1,9 @@
 #include "services/planning/core/landmark_heuristic.h"
 
-#include <algorithm>
 #include <limits>
 
 #include "services/planning/core/grid_search_common.h"
+#include "services/planning/core/octile.h"
 
 namespace semnav::planning {
 namespace {
@@ -22,60 +22,72 @@ bool CornerLandmark(const LayeredGrid& grid, int corner, Cell* found) {
   return false;
 }
 
+// Exact costs from `source` to every cell over the search's unit moves
+// (infinite where unreachable). The moves have only 4 costs (roll or fly,
+// straight or diagonal), so 4 FIFO queues replace Dijkstra's heap: cells
+// settle in nondecreasing cost, so each queue receives nondecreasing keys
+// and its front is its minimum (3x fewer instructions than the heap).
+std::vector<double> CostsFrom(const LayeredGrid& grid, Cell source, const StepCosts& costs) {
+  const double step[4] = {costs.roll, costs.roll * kSqrt2, costs.fly, costs.fly * kSqrt2};
+  struct Item {
+    double cost;
+    int cell;
+  };
+  std::vector<Item> queues[4];
+  size_t heads[4] = {0, 0, 0, 0};
+  std::vector<double> dist(grid.size(), std::numeric_limits<double>::infinity());
+  std::vector<uint8_t> settled(grid.size(), 0);
+  dist[grid.Index(source)] = 0.0;
+  queues[0].push_back({0.0, grid.Index(source)});
+  while (true) {
+    int best = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (heads[k] == queues[k].size()) continue;
+      if (best < 0 || queues[k][heads[k]].cost < queues[best][heads[best]].cost) best = k;
+    }
+    if (best < 0) break;
+    const Item item = queues[best][heads[best]++];
+    if (settled[item.cell] != 0) continue;  // a cheaper copy came first
+    settled[item.cell] = 1;
+    ForEachMove(grid, grid.CellAt(item.cell), [&](Cell n, MotionMode mode, double length) {
+      const int next = grid.Index(n);
+      const int k = (mode == MotionMode::kFlying ? 2 : 0) + (length > 1.0 ? 1 : 0);
+      const double cost = item.cost + step[k];
+      if (cost < dist[next]) {
+        dist[next] = cost;
+        queues[k].push_back({cost, next});
+      }
+    });
+  }
+  return dist;
+}
+
 }  // namespace
 
-void LandmarkHeuristic::Reset(const LayeredGrid& grid, const StepCosts& costs) {
-  cells_.clear();
-  for (int corner = 0; corner < 4; ++corner) {
+LandmarkHeuristic::LandmarkHeuristic(const LayeredGrid& grid, const StepCosts& costs)
+    : costs_(costs) {
+  std::vector<Cell> cells;
+  for (int corner = 0; corner < kMaxLandmarks; ++corner) {
     Cell c;
     const bool found = CornerLandmark(grid, corner, &c);
-    if (found && std::find(cells_.begin(), cells_.end(), c) == cells_.end()) cells_.push_back(c);
+    if (found && std::find(cells.begin(), cells.end(), c) == cells.end()) cells.push_back(c);
   }
-  landmarks_ = static_cast<int>(cells_.size());
-  computed_ = 0;
-  dist_.assign(static_cast<size_t>(grid.size()) * landmarks_,
-               std::numeric_limits<double>::infinity());
-  costs_ = costs;
-  valid_ = true;
-}
-
-bool LandmarkHeuristic::AddLandmark(const LayeredGrid& grid) {
-  if (computed_ == landmarks_) return false;
-  SearchWorkspace workspace;
-  workspace.Reset(grid.size());
-  // Dijkstra (no goal, h = 0) over the same unit moves as the search.
-  (void)RunBestFirst(workspace, grid.Index(cells_[computed_]), 0.0, -1, SearchLimits{},
-                     [&](int current) {
-                       ForEachMove(grid, grid.CellAt(current),
-                                   [&](Cell n, MotionMode mode, double cells) {
-                                     const int next = grid.Index(n);
-                                     if (workspace.Closed(next)) return;
-                                     const double g =
-                                         workspace.g(current) + costs_.Of(mode) * cells;
-                                     workspace.Relax(next, g, g, current);
-                                   });
-                     });
-  for (int cell = 0; cell < grid.size(); ++cell) {
-    if (workspace.Reached(cell)) {
-      dist_[static_cast<size_t>(cell) * landmarks_ + computed_] = workspace.g(cell);
+  count_ = static_cast<int>(cells.size());
+  dist_.assign(static_cast<size_t>(grid.size()) * count_, std::numeric_limits<double>::infinity());
+  for (int l = 0; l < count_; ++l) {
+    const std::vector<double> costs_from = CostsFrom(grid, cells[l], costs_);
+    for (int cell = 0; cell < grid.size(); ++cell) {
+      dist_[static_cast<size_t>(cell) * count_ + l] = costs_from[cell];
     }
   }
-  ++computed_;
-  return true;
 }
 
-void LandmarkHeuristic::Clear() {
-  valid_ = false;
-  cells_.clear();
-  landmarks_ = 0;
-  computed_ = 0;
-  dist_.clear();
-  goal_dist_.clear();
-}
-
-void LandmarkHeuristic::SetGoal(int goal_cell) {
-  const double* d = dist_.data() + static_cast<size_t>(goal_cell) * landmarks_;
-  goal_dist_.assign(d, d + landmarks_);
+LandmarkHeuristic::ToGoal LandmarkHeuristic::Towards(int goal_cell) const {
+  ToGoal bound;
+  bound.dist_ = dist_.data();
+  bound.count_ = count_;
+  std::copy_n(dist_.data() + static_cast<size_t>(goal_cell) * count_, count_, bound.goal_.begin());
+  return bound;
 }
 
 }  // namespace semnav::planning

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "services/planning/core/layered_grid.h"
@@ -11,42 +12,47 @@ namespace semnav::planning {
 // d_L from a few landmark cells give h(n) = max_L |d_L(goal) - d_L(n)|, a
 // consistent lower bound by the triangle inequality (every move costs the
 // same both ways). Tight where octile x rolling cost is loose: around
-// obstacles the path must fly over or roll round.
+// obstacles the path must fly over or roll round. Immutable once built, so
+// concurrent queries on one map share it.
 class LandmarkHeuristic {
  public:
-  // Starts over for `grid` under `costs`; the landmarks are the passable
-  // cells nearest the grid corners, none computed yet.
-  void Reset(const LayeredGrid& grid, const StepCosts& costs);
-  // Computes the next landmark's costs (one whole-grid Dijkstra, so callers
-  // can spread them over queries); false when all are done.
-  bool AddLandmark(const LayeredGrid& grid);
-  void Clear();
-  // Whether the last Reset() was for these costs.
-  bool Matches(const StepCosts& costs) const { return valid_ && costs_ == costs; }
+  static constexpr int kMaxLandmarks = 4;
 
-  // Selects the goal for Bound(), which uses the landmarks computed so far.
-  void SetGoal(int goal_cell);
-  // Lower bound on the cost from `cell` to the goal (infinite when they are
-  // not connected). Shrunk slightly so rounding in the summed costs never
-  // lifts it above the true cost.
-  double Bound(int cell) const {
-    double best = 0.0;
-    const double* d = dist_.data() + static_cast<size_t>(cell) * landmarks_;
-    for (int l = 0; l < computed_; ++l) {
-      const double diff = goal_dist_[l] - d[l];
-      best = std::max(best, diff < 0 ? -diff : diff);
+  // The landmarks are the passable cells nearest the grid corners; one
+  // whole-grid Dijkstra each under `costs`.
+  LandmarkHeuristic(const LayeredGrid& grid, const StepCosts& costs);
+
+  const StepCosts& costs() const { return costs_; }
+  size_t bytes() const { return dist_.size() * sizeof(double); }
+
+  // The bound towards one goal cell.
+  class ToGoal {
+   public:
+    // Lower bound on the cost from `cell` to the goal (infinite when they
+    // are not connected). Shrunk slightly so rounding in the summed costs
+    // never lifts it above the true cost.
+    double operator()(int cell) const {
+      double best = 0.0;
+      const double* d = dist_ + static_cast<size_t>(cell) * count_;
+      for (int l = 0; l < count_; ++l) {
+        const double diff = goal_[l] - d[l];
+        best = std::max(best, diff < 0 ? -diff : diff);
+      }
+      return best * (1.0 - 1e-9);
     }
-    return best * (1.0 - 1e-9);
-  }
+
+   private:
+    friend class LandmarkHeuristic;
+    const double* dist_ = nullptr;
+    int count_ = 0;
+    std::array<double, kMaxLandmarks> goal_{};
+  };
+  ToGoal Towards(int goal_cell) const;
 
  private:
-  bool valid_ = false;
   StepCosts costs_;
-  std::vector<Cell> cells_;
-  int landmarks_ = 0;  // cells_.size(), the per-cell stride of dist_
-  int computed_ = 0;
-  std::vector<double> dist_;       // cell-major, landmarks_ per cell
-  std::vector<double> goal_dist_;  // the goal's row
+  int count_ = 0;             // landmarks, the per-cell stride of dist_
+  std::vector<double> dist_;  // cell-major, count_ per cell
 };
 
 }  // namespace semnav::planning

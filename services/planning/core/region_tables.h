@@ -8,24 +8,24 @@
 
 namespace semnav::planning {
 
-// The per-grid preprocessing of the improved Jump A*: boundary marks (the
-// cells where jumps stop) and the straight-jump table. Depends only on the
-// grid content, so it is rebuilt only when that content changes; the
-// service plans many queries on one map.
+// The per-grid preprocessing of the improved Jump A*: the grid with its
+// boundary marks (the cells where jumps stop) and straight-jump table.
+// Depends only on the grid content; immutable once built, so queries on one
+// map (also concurrent ones) share it.
 class RegionTables {
  public:
-  // Rebuilds the tables unless `grid` has the content they were built for;
-  // returns whether it rebuilt.
-  bool Update(const LayeredGrid& grid);
+  explicit RegionTables(LayeredGrid grid);
 
+  const LayeredGrid& grid() const { return grid_; }
   // Passable cells with a passable 8-neighbour of the other class (free vs
   // obstacle).
   bool Boundary(int cell) const { return boundary_[cell] != 0; }
   const StraightJumpTable& jumps() const { return jumps_; }
+  // Memory held: grid, boundary marks and 4 int32 runs per cell.
+  size_t bytes() const { return static_cast<size_t>(grid_.size()) * (1 + 1 + 4 * 4); }
 
  private:
-  LayeredGrid built_for_;
-  std::vector<uint8_t> structure_;
+  LayeredGrid grid_;
   std::vector<uint8_t> boundary_;
   StraightJumpTable jumps_;
 };

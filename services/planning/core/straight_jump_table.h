@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "services/planning/core/cell_grid.h"
@@ -28,8 +29,9 @@ class StraightJumpTable {
   int height_ = 0;
   // Per direction (+x, -x, +y, -y) and cell: > 0, the event cell that many
   // steps away; <= 0, -value open steps and then a blocked cell.
-  std::vector<int32_t> runs_[4];
-  std::vector<uint8_t> open_;  // padded scratch for Build
+  // Allocated without zero-filling: Build writes every entry, and the fill
+  // would double the table's memory traffic.
+  std::unique_ptr<int32_t[]> runs_[4];
 };
 
 }  // namespace semnav::planning

@@ -1,5 +1,6 @@
 #include "services/planning/server/exploration_rpc.h"
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -30,9 +31,60 @@ struct FrontierView {
 
 Point2 ToPoint(const semnav::common::v1::Pose2D& p) { return {p.x(), p.y()}; }
 
+std::vector<Point2> VisitedOf(const pb::SemanticContext& semantics) {
+  std::vector<Point2> visited;
+  for (const auto& v : semantics.visited()) visited.push_back(ToPoint(v));
+  return visited;
+}
+
+std::vector<ScoredObject> ObjectsOf(const pb::SemanticContext& semantics) {
+  std::vector<ScoredObject> objects;
+  for (const auto& o : semantics.objects()) {
+    objects.push_back({ToPoint(o.position()), o.relevance(), o.relation(), o.cooccurrence()});
+  }
+  return objects;
+}
+
+void SetScore(const FrontierScore& s, pb::FrontierScore* score) {
+  score->set_distance(s.distance);
+  score->set_novelty(s.novelty);
+  score->set_language(s.language);
+  score->set_grounding(s.grounding);
+  score->set_total(s.total);
+}
+
+absl::Status Invalid(const std::string& field, absl::string_view message) {
+  return FieldError(absl::StatusCode::kInvalidArgument, field, absl::StrCat(field, " ", message));
+}
+
+// The config weights with the request's overrides; INVALID_ARGUMENT names a
+// weight that is negative or not finite.
+absl::StatusOr<FrontierScoreConfig> WeightsOf(const pb::FrontierScoreWeights& weights,
+                                              FrontierScoreConfig config) {
+  const struct {
+    bool set;
+    double value;
+    const char* name;
+    double* target;
+  } overrides[] = {
+      {weights.has_distance(), weights.distance(), "distance", &config.distance_weight},
+      {weights.has_novelty(), weights.novelty(), "novelty", &config.novelty_weight},
+      {weights.has_language(), weights.language(), "language", &config.language_weight},
+      {weights.has_grounding(), weights.grounding(), "grounding", &config.grounding_weight},
+  };
+  for (const auto& o : overrides) {
+    if (!o.set) continue;
+    if (!std::isfinite(o.value) || o.value < 0) {
+      return Invalid(absl::StrCat("weights.", o.name), "must be a finite value >= 0");
+    }
+    *o.target = o.value;
+  }
+  return config;
+}
+
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
-                                       const semnav::common::v1::Pose2D& robot,
-                                       uint32_t min_cells, const pb::SemanticContext& semantics,
+                                       const semnav::common::v1::Pose2D& robot, uint32_t min_cells,
+                                       const pb::SemanticContext& semantics,
                                        const PlanningConfig& config) {
   FrontierView view;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
@@ -44,10 +96,12 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   absl::StatusOr<CellGrid<uint8_t>> explored = ToExplored(grid, field);
   if (!explored.ok()) return explored.status();
   view.explored = *std::move(explored);
-  absl::StatusOr<PassabilityGrid> free = ToPassability(grid, {config.occupied_percent, false}, field);
+  absl::StatusOr<PassabilityGrid> free =
+      ToPassability(grid, {config.occupied_percent, false}, field);
   if (!free.ok()) return free.status();
   view.free = *std::move(free);
-  const int min = min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
+  const int min =
+      min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
   view.frontiers = ExtractFrontiers(view.explored, view.free, min);
   const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
   for (const Frontier& f : view.frontiers) {
@@ -58,14 +112,9 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
     view.candidates.push_back(
         {{x, y}, nearest == kUnreachable ? -1.0 : nearest * view.frame.resolution});
   }
-  std::vector<Point2> visited;
-  for (const auto& v : semantics.visited()) visited.push_back(ToPoint(v));
-  std::vector<ScoredObject> objects;
-  for (const auto& o : semantics.objects()) {
-    objects.push_back({ToPoint(o.position()), o.relevance(), o.relation(), o.cooccurrence()});
-  }
   const Point2 robot_m = ToPoint(view.frame.ToPose(view.robot));
-  view.scores = ScoreFrontiers(view.candidates, robot_m, visited, objects, config.exploration.score);
+  view.scores = ScoreFrontiers(view.candidates, robot_m, VisitedOf(semantics), ObjectsOf(semantics),
+                               config.exploration.score);
   return view;
 }
 
@@ -79,8 +128,8 @@ absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
                                 const pb::ExtractFrontiersRequest& request,
                                 const PlanningConfig& config,
                                 pb::ExtractFrontiersResponse* response) {
-  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(), request.min_cells(),
-                                                request.semantics(), config);
+  absl::StatusOr<FrontierView> view =
+      BuildView(grid, field, request.robot(), request.min_cells(), request.semantics(), config);
   if (!view.ok()) return view.status();
   for (size_t i = 0; i < view->frontiers.size(); ++i) {
     pb::Frontier* f = response->add_frontiers();
@@ -89,15 +138,39 @@ absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
     *f->mutable_anchor() = view->frame.ToPose(view->frontiers[i].anchor);
     f->set_size_cells(static_cast<uint32_t>(view->frontiers[i].cells.size()));
     f->set_path_distance_m(view->candidates[i].path_distance_m);
-    const FrontierScore& s = view->scores[i];
-    pb::FrontierScore* score = f->mutable_score();
-    score->set_distance(s.distance);
-    score->set_novelty(s.novelty);
-    score->set_language(s.language);
-    score->set_grounding(s.grounding);
-    score->set_total(s.total);
+    SetScore(view->scores[i], f->mutable_score());
   }
   response->set_map_revision(grid.revision());
+  return absl::OkStatus();
+}
+
+absl::Status ScoreFrontiersOn(const pb::ScoreFrontiersRequest& request,
+                              const PlanningConfig& config, pb::ScoreFrontiersResponse* response) {
+  absl::StatusOr<FrontierScoreConfig> weights =
+      WeightsOf(request.weights(), config.exploration.score);
+  if (!weights.ok()) return weights.status();
+  std::vector<FrontierCandidate> candidates;
+  for (int i = 0; i < request.frontiers_size(); ++i) {
+    const pb::Frontier& f = request.frontiers(i);
+    if (!std::isfinite(f.centroid().x()) || !std::isfinite(f.centroid().y())) {
+      return Invalid(absl::StrCat("frontiers[", i, "].centroid"), "must be finite");
+    }
+    if (!std::isfinite(f.path_distance_m())) {
+      return Invalid(absl::StrCat("frontiers[", i, "].path_distance_m"),
+                     "must be finite (< 0 = unreachable)");
+    }
+    candidates.push_back({ToPoint(f.centroid()), f.path_distance_m()});
+  }
+  const std::vector<FrontierScore> scores =
+      ScoreFrontiers(candidates, ToPoint(request.robot()), VisitedOf(request.semantics()),
+                     ObjectsOf(request.semantics()), *weights);
+  int best = -1;
+  for (size_t i = 0; i < scores.size(); ++i) {
+    SetScore(scores[i], response->add_scores());
+    if (candidates[i].path_distance_m < 0) continue;
+    if (best < 0 || scores[i].total > scores[best].total) best = static_cast<int>(i);
+  }
+  response->set_best_index(best);
   return absl::OkStatus();
 }
 
@@ -105,9 +178,8 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                           const pb::SelectExplorationGoalRequest& request,
                           const PlanningConfig& config,
                           pb::SelectExplorationGoalResponse* response) {
-  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
-                                                request.min_frontier_cells(), request.semantics(),
-                                                config);
+  absl::StatusOr<FrontierView> view = BuildView(
+      grid, field, request.robot(), request.min_frontier_cells(), request.semantics(), config);
   if (!view.ok()) return view.status();
   const pb::ExplorationStrategy strategy =
       request.strategy() == pb::EXPLORATION_STRATEGY_UNSPECIFIED
@@ -132,7 +204,8 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       int best = -1;
       for (size_t i = 0; i < view->scores.size(); ++i) {
         if (view->candidates[i].path_distance_m < 0) continue;
-        if (best < 0 || view->scores[i].total > view->scores[best].total) best = static_cast<int>(i);
+        if (best < 0 || view->scores[i].total > view->scores[best].total)
+          best = static_cast<int>(i);
       }
       if (best < 0) return NotFound("no reachable frontier");
       *response->mutable_goal() = view->frame.ToPose(view->frontiers[best].anchor);

@@ -16,6 +16,12 @@ absl::Status ExtractFrontiersOn(const semnav::common::v1::GridMap& grid, const s
                                 const PlanningConfig& config,
                                 semnav::planning::v1::ExtractFrontiersResponse* response);
 
+// ScoreFrontiers: the seed 002 terms of caller-given frontiers under the
+// request's weights (unset = config).
+absl::Status ScoreFrontiersOn(const semnav::planning::v1::ScoreFrontiersRequest& request,
+                              const PlanningConfig& config,
+                              semnav::planning::v1::ScoreFrontiersResponse* response);
+
 // SelectExplorationGoal on a resolved grid.
 absl::Status SelectGoalOn(const semnav::common::v1::GridMap& grid, const std::string& field,
                           const semnav::planning::v1::SelectExplorationGoalRequest& request,

@@ -21,13 +21,16 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section)
       .Read("energy_unit_j", &ja.energy_unit_j)
       .Read("rolling_energy_j_per_m", &ja.energy.rolling_j_per_m)
       .Read("hover_power_w", &ja.energy.hover_power_w)
-      .Read("flight_speed_mps", &ja.energy.flight_speed_mps);
+      .Read("flight_speed_mps", &ja.energy.flight_speed_mps)
+      .Read("cache_mb", &config.jump_astar_cache_mb);
   jump.Check(ja.alpha >= 0 && ja.beta >= 0 && ja.alpha + ja.beta > 0, "alpha",
              "alpha and beta must be >= 0 and not both 0");
   jump.Check(ja.energy_unit_j > 0, "energy_unit_j", "must be > 0");
   jump.Check(ja.energy.rolling_j_per_m > 0, "rolling_energy_j_per_m", "must be > 0");
   jump.Check(ja.energy.hover_power_w > 0, "hover_power_w", "must be > 0");
   jump.Check(ja.energy.flight_speed_mps > 0, "flight_speed_mps", "must be > 0");
+  jump.Check(config.jump_astar_cache_mb >= 0 && config.jump_astar_cache_mb <= 65536, "cache_mb",
+             "must be in 0..65536");
 
   ConfigReader exploration = section.Child("exploration");
   config.exploration.Read(exploration);
@@ -35,8 +38,10 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section)
   config.trajectory.Read(trajectory);
 
   section.Read("max_planning_time_ms", &config.max_planning_time_ms)
+      .Read("deadline_margin_ms", &config.deadline_margin_ms)
       .Read("worker_threads", &config.worker_threads);
   section.Check(config.max_planning_time_ms > 0, "max_planning_time_ms", "must be > 0");
+  section.Check(config.deadline_margin_ms >= 0, "deadline_margin_ms", "must be >= 0");
   section.Check(config.worker_threads >= 1 && config.worker_threads <= 64, "worker_threads",
                 "must be in 1..64");
   ConfigReader mapping = section.Child("mapping");

@@ -22,12 +22,20 @@ struct PlanningConfig {
   // jump_astar.{alpha, beta, energy_unit_j, rolling_energy_j_per_m,
   // hover_power_w, flight_speed_mps}: seed 003 Table 1 and sec. 4.2.
   JumpAStarOptions jump_astar;
+  // jump_astar.cache_mb: memory for prepared maps (region tables, landmarks)
+  // kept for repeated queries, least recently used dropped first; 18 bytes
+  // per cell plus 32 once the landmarks exist (32 MB at 800 x 800 cells).
+  int jump_astar_cache_mb = 256;
   // exploration.*: frontier, coverage-max, semantic frontier, EROI settings.
   ExplorationConfig exploration;
   // trajectory.*: smoothing and time-allocation limits.
   TrajectoryConfig trajectory;
   // max_planning_time_ms: cap on any one search, whatever the deadline.
   int max_planning_time_ms = 5000;
+  // deadline_margin_ms: a search stops this long before the call deadline,
+  // so its typed TIMEOUT reply reaches the caller before gRPC expires the
+  // call (a reply after the deadline is dropped).
+  int deadline_margin_ms = 50;
   // worker_threads: searches run on this many threads, off the gRPC threads.
   int worker_threads = 2;
   // mapping: how to reach the mapping service for live-map requests.

@@ -1,16 +1,16 @@
 #include "services/planning/server/planning_service.h"
 
+#include <grpcpp/client_context.h>
+
 #include <chrono>
 #include <cmath>
-
-#include <grpcpp/client_context.h>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "services/common/status/grpc_status.h"
 #include "services/planning/core/plan_failure.h"
-#include "services/planning/server/grid_conversion.h"
 #include "services/planning/server/exploration_rpc.h"
+#include "services/planning/server/grid_conversion.h"
 #include "services/planning/server/plan_response.h"
 #include "services/planning/server/trajectory_rpc.h"
 
@@ -26,14 +26,16 @@ absl::Status Invalid(absl::string_view field, absl::string_view message) {
 
 bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
 
-// The earliest of the call deadline, the request budget and the config cap.
+// The earliest of the call deadline (less the margin for the reply), the
+// request budget and the config cap.
 absl::Time SearchDeadline(const grpc::CallbackServerContext& context, uint32_t request_ms,
-                          int config_ms) {
-  absl::Time deadline = absl::Now() + absl::Milliseconds(config_ms);
+                          const PlanningConfig& config) {
+  absl::Time deadline = absl::Now() + absl::Milliseconds(config.max_planning_time_ms);
   if (request_ms > 0) deadline = std::min(deadline, absl::Now() + absl::Milliseconds(request_ms));
   const auto call = context.deadline();
   if (call != std::chrono::system_clock::time_point::max()) {
-    deadline = std::min(deadline, absl::FromChrono(call));
+    deadline =
+        std::min(deadline, absl::FromChrono(call) - absl::Milliseconds(config.deadline_margin_ms));
   }
   return deadline;
 }
@@ -91,6 +93,8 @@ PlanningServiceImpl::PlanningServiceImpl(PlanningConfig config,
                                          std::shared_ptr<grpc::Channel> mapping)
     : config_(std::move(config)),
       mapping_(semnav::mapping::v1::MappingService::NewStub(std::move(mapping))),
+      jump_astar_(static_cast<size_t>(config_.jump_astar_cache_mb) << 20,
+                  [this](std::function<void()> job) { (void)workers_.Submit(std::move(job)); }),
       workers_(config_.worker_threads) {}
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::Serve(grpc::CallbackServerContext* context,
@@ -123,29 +127,35 @@ grpc::ServerUnaryReactor* PlanningServiceImpl::ServeOnGrid(
 grpc::ServerUnaryReactor* PlanningServiceImpl::ExtractFrontiers(
     grpc::CallbackServerContext* context, const pb::ExtractFrontiersRequest* request,
     pb::ExtractFrontiersResponse* response) {
-  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
-                                                           const std::string& field) {
-    return ExtractFrontiersOn(grid, field, *request, config_, response);
-  });
+  return ServeOnGrid(context, request->source(),
+                     [=, this](const GridMap& grid, const std::string& field) {
+                       return ExtractFrontiersOn(grid, field, *request, config_, response);
+                     });
+}
+
+grpc::ServerUnaryReactor* PlanningServiceImpl::ScoreFrontiers(
+    grpc::CallbackServerContext* context, const pb::ScoreFrontiersRequest* request,
+    pb::ScoreFrontiersResponse* response) {
+  return Serve(context, [=, this] { return ScoreFrontiersOn(*request, config_, response); });
 }
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::SelectExplorationGoal(
     grpc::CallbackServerContext* context, const pb::SelectExplorationGoalRequest* request,
     pb::SelectExplorationGoalResponse* response) {
-  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
-                                                           const std::string& field) {
-    return SelectGoalOn(grid, field, *request, config_, response);
-  });
+  return ServeOnGrid(context, request->source(),
+                     [=, this](const GridMap& grid, const std::string& field) {
+                       return SelectGoalOn(grid, field, *request, config_, response);
+                     });
 }
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::SmoothTrajectory(
     grpc::CallbackServerContext* context, const pb::SmoothTrajectoryRequest* request,
     pb::SmoothTrajectoryResponse* response) {
-  return ServeOnGrid(context, request->source(), [=, this](const GridMap& grid,
-                                                           const std::string& field) {
-    return SmoothTrajectoryOn(grid, field, *request, config_.trajectory,
-                              config_.occupied_percent, response);
-  });
+  return ServeOnGrid(context, request->source(),
+                     [=, this](const GridMap& grid, const std::string& field) {
+                       return SmoothTrajectoryOn(grid, field, *request, config_.trajectory,
+                                                 config_.occupied_percent, response);
+                     });
 }
 
 absl::StatusOr<const GridMap*> PlanningServiceImpl::ResolveGrid(
@@ -185,8 +195,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
   if (!goal.ok()) return goal.status();
 
   SearchLimits limits;
-  limits.deadline =
-      SearchDeadline(*context, request.max_planning_time_ms(), config_.max_planning_time_ms);
+  limits.deadline = SearchDeadline(*context, request.max_planning_time_ms(), config_);
   limits.is_cancelled = [context] { return context->IsCancelled(); };
 
   absl::Status failure;
@@ -200,8 +209,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     if (options.alpha + options.beta <= 0.0) {
       return Invalid("multimodal.alpha", "alpha and beta must not both be 0");
     }
-    JumpAStarPlanner planner;
-    absl::StatusOr<MultiModalPath> path = planner.Plan(*grid, *start, *goal, options, limits);
+    absl::StatusOr<MultiModalPath> path = jump_astar_.Plan(*grid, *start, *goal, options, limits);
     if (path.ok()) FillResponse(*frame, *path, response);
     failure = path.status();
   } else {

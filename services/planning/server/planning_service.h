@@ -1,16 +1,17 @@
 #pragma once
 
+#include <grpcpp/channel.h>
+
 #include <functional>
 #include <memory>
 #include <string>
 
-#include <grpcpp/channel.h>
-
 #include "absl/status/status.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
-#include "services/planning/server/planning_config.h"
 #include "services/common/server/worker_pool.h"
+#include "services/planning/core/jump_astar_cache.h"
+#include "services/planning/server/planning_config.h"
 
 namespace semnav::planning {
 
@@ -30,6 +31,11 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
       grpc::CallbackServerContext* context,
       const semnav::planning::v1::ExtractFrontiersRequest* request,
       semnav::planning::v1::ExtractFrontiersResponse* response) override;
+
+  grpc::ServerUnaryReactor* ScoreFrontiers(
+      grpc::CallbackServerContext* context,
+      const semnav::planning::v1::ScoreFrontiersRequest* request,
+      semnav::planning::v1::ScoreFrontiersResponse* response) override;
 
   grpc::ServerUnaryReactor* SelectExplorationGoal(
       grpc::CallbackServerContext* context,
@@ -64,6 +70,9 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
 
   const PlanningConfig config_;
   std::unique_ptr<semnav::mapping::v1::MappingService::Stub> mapping_;
+  // Per-map Jump A* state; its landmark builds run on workers_, which is
+  // declared after it so it drains them before the cache goes.
+  JumpAStarCache jump_astar_;
   semnav::WorkerPool workers_;
 };
 

@@ -1,16 +1,18 @@
 // Contract test: the real semnav-planning binary on a loopback port, called
 // through the generated stubs.
+#include <grpcpp/client_context.h>
 #include <gtest/gtest.h>
 
-#include <grpcpp/client_context.h>
-
+#include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "semnav/common/v1/errors.pb.h"
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/common/status/grpc_status.h"
+#include "services/planning/core/random_layered_map.h"
 #include "services/planning/tests/planning_binary_test.h"
 
 namespace semnav::planning {
@@ -33,7 +35,8 @@ GridMap MakeGrid(const std::vector<std::string>& rows, double resolution) {
   layer->set_kind(semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL);
   std::string data;
   for (const std::string& row : rows) {
-    for (char c : row) data.push_back(static_cast<char>(c == '.' ? 0 : c == '#' ? 100 : 10 * (c - '0')));
+    for (char c : row)
+      data.push_back(static_cast<char>(c == '.' ? 0 : c == '#' ? 100 : 10 * (c - '0')));
   }
   layer->set_data(data);
   return grid;
@@ -59,11 +62,7 @@ class PlanningContract : public PlanningBinaryTest {
 
 // A wall with a one-cell door at column 3: 0.5 m cells.
 const std::vector<std::string> kDoorRows = {
-    ".......",
-    ".......",
-    "###.###",
-    ".......",
-    ".......",
+    ".......", ".......", "###.###", ".......", ".......",
 };
 
 pb::PlanPathRequest DoorRequest(pb::PlannerKind planner) {
@@ -172,6 +171,51 @@ TEST_F(PlanningContract, JumpAStarFliesOrRollsByBeta) {
   EXPECT_DOUBLE_EQ(roll.fly_m(), 0.0);
   EXPECT_EQ(roll.mode_switches(), 0u);
   EXPECT_NEAR(roll.roll_m(), 12 + 8 * std::sqrt(2.0), 1e-9);
+}
+
+// The seed 003 map (800 x 800 cells at 5 cm) as an inline HIERARCHICAL grid.
+pb::PlanPathRequest SeedMapRequest(const RandomLayeredMap& map) {
+  GridMap grid;
+  grid.set_resolution(0.05);
+  grid.set_width(static_cast<uint32_t>(map.grid.width()));
+  grid.set_height(static_cast<uint32_t>(map.grid.height()));
+  auto* layer = grid.add_layers();
+  layer->set_kind(semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL);
+  layer->set_data(std::string(map.grid.values().begin(), map.grid.values().end()));
+  pb::PlanPathRequest request;
+  *request.mutable_source()->mutable_grid() = std::move(grid);
+  request.mutable_start()->set_x((map.start.x + 0.5) * 0.05);
+  request.mutable_start()->set_y((map.start.y + 0.5) * 0.05);
+  request.mutable_goal()->set_x((map.goal.x + 0.5) * 0.05);
+  request.mutable_goal()->set_y((map.goal.y + 0.5) * 0.05);
+  request.set_planner(pb::PLANNER_KIND_JUMP_ASTAR);
+  return request;
+}
+
+// The service keeps a map's Jump A* tables and builds its landmark bound
+// off the query path, so repeated queries search far less for the same path.
+TEST_F(PlanningContract, JumpAStarReusesItsPerMapStateWithTheSameResult) {
+  RandomLayeredMap map = MakeRandomLayeredMap({});
+  pb::PlanPathResponse cold;
+  ASSERT_TRUE(Plan(SeedMapRequest(map), &cold).ok());
+  pb::PlanPathResponse warm;
+  for (int attempt = 0; attempt < 200; ++attempt) {  // the landmarks take ~1 s to appear
+    ASSERT_TRUE(Plan(SeedMapRequest(map), &warm).ok());
+    if (warm.expansions() < cold.expansions()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_LT(warm.expansions() * 10, cold.expansions());
+  EXPECT_DOUBLE_EQ(warm.length_m(), cold.length_m());
+  EXPECT_DOUBLE_EQ(warm.fly_m(), cold.fly_m());
+  EXPECT_DOUBLE_EQ(warm.energy_j(), cold.energy_j());
+  EXPECT_EQ(warm.mode_switches(), cold.mode_switches());
+  RecordProperty("cold_planning_ms", std::to_string(cold.planning_time_ms()));
+  RecordProperty("warm_planning_ms", std::to_string(warm.planning_time_ms()));
+  // One changed cell (off the path, in a far corner) is another map: cold again.
+  map.grid.at(map.grid.width() - 5, 4) = 50;
+  pb::PlanPathResponse changed;
+  ASSERT_TRUE(Plan(SeedMapRequest(map), &changed).ok());
+  EXPECT_EQ(changed.expansions(), cold.expansions());
 }
 
 TEST_F(PlanningContract, TimeoutIsDeadlineExceededWithTypedReason) {

@@ -1,10 +1,11 @@
 // Contract test of the exploration and trajectory RPCs of the real
 // semnav-planning binary.
+#include <grpcpp/client_context.h>
 #include <gtest/gtest.h>
 
-#include <grpcpp/client_context.h>
-
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "semnav/common/v1/errors.pb.h"
@@ -22,11 +23,7 @@ using semnav::common::v1::Pose2D;
 // 1 m cells, origin (-1, -2), row 0 lowest: '.' explored free, '#' explored
 // structure, '?' unexplored.
 const std::vector<std::string> kRows = {
-    "......??",
-    "......??",
-    "..##..??",
-    "........",
-    "???.....",
+    "......??", "......??", "..##..??", "........", "???.....",
 };
 
 GridMap ExplorationGrid() {
@@ -91,11 +88,99 @@ TEST_F(ExplorationContract, ExtractFrontiersClustersAndScores) {
   EXPECT_DOUBLE_EQ(response.frontiers(1).score().novelty(), 1.0);
 }
 
+pb::Frontier FrontierAt(double x, double y, double path_distance_m) {
+  pb::Frontier f;
+  f.mutable_centroid()->set_x(x);
+  f.mutable_centroid()->set_y(y);
+  f.set_path_distance_m(path_distance_m);
+  return f;
+}
+
+// Robot at the origin; A (2, 0) 2 m away by path, B (0, 4) 4 m, C (-3, 0)
+// unreachable; a relevant sofa at (0, 5) next to B; visited place (2, 1).
+pb::ScoreFrontiersRequest ScoreRequest() {
+  pb::ScoreFrontiersRequest request;
+  *request.add_frontiers() = FrontierAt(2, 0, 2);
+  *request.add_frontiers() = FrontierAt(0, 4, 4);
+  *request.add_frontiers() = FrontierAt(-3, 0, -1);
+  pb::SemanticObject* sofa = request.mutable_semantics()->add_objects();
+  sofa->mutable_position()->set_y(5.0);
+  sofa->set_relevance(0.8);
+  sofa->set_cooccurrence(0.5);
+  Pose2D visited;
+  visited.set_x(2.0);
+  visited.set_y(1.0);
+  *request.mutable_semantics()->add_visited() = visited;
+  return request;
+}
+
+TEST_F(ExplorationContract, ScoreFrontiersUsesTheConfigOrRequestWeights) {
+  pb::ScoreFrontiersResponse response;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(Stub()->ScoreFrontiers(&context, ScoreRequest(), &response).ok());
+  }
+  ASSERT_EQ(response.scores_size(), 3);
+  // A: distance 1 - 2/4, novelty 1 m / 3 m, sofa 5.4 m away and at 90 deg.
+  EXPECT_DOUBLE_EQ(response.scores(0).distance(), 0.5);
+  EXPECT_DOUBLE_EQ(response.scores(0).novelty(), 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(response.scores(0).language(), 0.0);
+  EXPECT_DOUBLE_EQ(response.scores(0).grounding(), 0.0);
+  EXPECT_NEAR(response.scores(0).total(), 0.2 * 0.5 + 0.3 / 3.0, 1e-12);
+  // B: farthest (0), novel, sofa 1 m away and straight ahead: language 0.8,
+  // grounding (0.8 gradient + 0 relation + 0.5 co-occurrence) / 3.
+  EXPECT_DOUBLE_EQ(response.scores(1).distance(), 0.0);
+  EXPECT_DOUBLE_EQ(response.scores(1).language(), 0.8);
+  EXPECT_NEAR(response.scores(1).grounding(), 1.3 / 3.0, 1e-12);
+  EXPECT_NEAR(response.scores(1).total(), 0.3 + 0.2 * 0.8 + 0.3 * 1.3 / 3.0, 1e-12);
+  // C is unreachable: distance 0, and never the best.
+  EXPECT_DOUBLE_EQ(response.scores(2).distance(), 0.0);
+  EXPECT_EQ(response.best_index(), 1);
+
+  // Distance only: the nearest reachable frontier wins.
+  pb::ScoreFrontiersRequest nearest = ScoreRequest();
+  nearest.mutable_weights()->set_distance(1.0);
+  nearest.mutable_weights()->set_novelty(0.0);
+  nearest.mutable_weights()->set_language(0.0);
+  nearest.mutable_weights()->set_grounding(0.0);
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->ScoreFrontiers(&context, nearest, &response).ok());
+  EXPECT_DOUBLE_EQ(response.scores(0).total(), 0.5);
+  EXPECT_DOUBLE_EQ(response.scores(1).total(), 0.0);
+  EXPECT_EQ(response.best_index(), 0);
+}
+
+TEST_F(ExplorationContract, ScoreFrontiersNamesTheBadField) {
+  pb::ScoreFrontiersRequest bad_weight = ScoreRequest();
+  bad_weight.mutable_weights()->set_grounding(-0.3);
+  pb::ScoreFrontiersRequest bad_distance = ScoreRequest();
+  bad_distance.mutable_frontiers(1)->set_path_distance_m(std::nan(""));
+  for (const auto& [request, field] : {std::pair{bad_weight, "weights.grounding"},
+                                       std::pair{bad_distance, "frontiers[1].path_distance_m"}}) {
+    pb::ScoreFrontiersResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = Stub()->ScoreFrontiers(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << field;
+    std::optional<semnav::common::v1::ErrorInfo> info =
+        GetDetail<semnav::common::v1::ErrorInfo>(status);
+    ASSERT_TRUE(info.has_value()) << field;
+    EXPECT_EQ(info->field(), field);
+  }
+  // No frontiers: nothing to score, nothing best.
+  pb::ScoreFrontiersResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->ScoreFrontiers(&context, pb::ScoreFrontiersRequest(), &response).ok());
+  EXPECT_EQ(response.scores_size(), 0);
+  EXPECT_EQ(response.best_index(), -1);
+}
+
 TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
   pb::SelectExplorationGoalResponse response;
   grpc::ClientContext context;
-  ASSERT_TRUE(Stub()->SelectExplorationGoal(
-      &context, GoalRequest(pb::EXPLORATION_STRATEGY_UNSPECIFIED), &response).ok());
+  ASSERT_TRUE(Stub()
+                  ->SelectExplorationGoal(
+                      &context, GoalRequest(pb::EXPLORATION_STRATEGY_UNSPECIFIED), &response)
+                  .ok());
   EXPECT_EQ(response.strategy(), pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
   EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(0, 3).x());
   EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(0, 3).y());
@@ -103,7 +188,8 @@ TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
 }
 
 TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
-  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
+  pb::SelectExplorationGoalRequest request =
+      GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
   pb::SemanticObject* sofa = request.mutable_semantics()->add_objects();
   sofa->set_label("sofa");
   sofa->mutable_position()->set_x(6.0);
@@ -142,9 +228,10 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
 
   // From (0,0) no viewpoint lies within the roadmap's 3 m edges: NOT_FOUND.
   grpc::ClientContext far_context;
-  EXPECT_EQ(Stub()->SelectExplorationGoal(&far_context,
-                                          GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY),
-                                          &response).error_code(),
+  EXPECT_EQ(Stub()
+                ->SelectExplorationGoal(
+                    &far_context, GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY), &response)
+                .error_code(),
             grpc::StatusCode::NOT_FOUND);
 
   pb::SelectExplorationGoalRequest bad = GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY);
@@ -152,7 +239,8 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
   grpc::ClientContext bad_context;
   const grpc::Status status = Stub()->SelectExplorationGoal(&bad_context, bad, &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(status);
+  std::optional<semnav::common::v1::ErrorInfo> info =
+      GetDetail<semnav::common::v1::ErrorInfo>(status);
   ASSERT_TRUE(info.has_value());
   EXPECT_EQ(info->field(), "eroi_semantic_values");
 }
@@ -178,7 +266,8 @@ TEST_F(ExplorationContract, SmoothTrajectoryRespectsTheLimits) {
   grpc::ClientContext bad_context;
   const grpc::Status status = Stub()->SmoothTrajectory(&bad_context, blocked, &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(status);
+  std::optional<semnav::common::v1::ErrorInfo> info =
+      GetDetail<semnav::common::v1::ErrorInfo>(status);
   ASSERT_TRUE(info.has_value());
   EXPECT_EQ(info->field(), "path[1]");
 }
