@@ -2,6 +2,10 @@
 
 namespace semnav::reasoning {
 
+std::string GatewayConfig::DefaultPriorPath() {
+  return SEMNAV_REASONING_PRIOR_PATH;
+}
+
 GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
   GatewayConfig c;
   ConfigReader decomposer = section.Child("decomposer");
@@ -69,12 +73,27 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
     planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
   }
 
+  if (section.Has("model")) {  // absent: offline default, no slow-path calls
+    ConfigReader model = section.Child("model");
+    c.model.channel = ClientOptions::FromConfig(model, ClientOptions{});
+    model.Read("model_alias", &c.model.model_alias)
+        .Read("embedding_alias", &c.model.embedding_alias)
+        .Read("deadline_ms", &c.model.deadline_ms)
+        .Read("max_in_flight", &c.model.max_in_flight)
+        .Read("embedding_retry_s", &c.model.embedding_retry_s)
+        .Read("text_embeddings", &c.model.text_embeddings);
+    model.Check(c.model.deadline_ms > 0, "deadline_ms", "must be > 0");
+    model.Check(c.model.max_in_flight >= 1 && c.model.max_in_flight <= 16, "max_in_flight", "must be in [1, 16]");
+    model.Check(c.model.embedding_retry_s >= 0.0, "embedding_retry_s", "must be >= 0");
+  }
+
   section.Read("default_lease_ttl_s", &c.default_lease_ttl_s)
       .Read("max_lease_ttl_s", &c.max_lease_ttl_s)
       .Read("retained_events", &c.retained_events)
       .Read("idempotency_entries", &c.idempotency_entries)
       .Read("memory_label_radius_m", &c.memory_label_radius_m)
-      .Read("lexicon_path", &c.lexicon_path);
+      .Read("lexicon_path", &c.lexicon_path)
+      .Read("prior_path", &c.prior_path);
   section.Check(c.default_lease_ttl_s >= 1.0 && c.default_lease_ttl_s <= c.max_lease_ttl_s, "default_lease_ttl_s",
                 "must be in [1, max_lease_ttl_s]");
   section.Check(c.retained_events > 0, "retained_events", "must be > 0");

@@ -12,10 +12,11 @@ namespace semnav::reasoning {
 
 using namespace hub_internal;
 
-GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner)
+GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner, GatewayBackends backends)
     : config_(config),
       lexicon_(lexicon),
       planner_(planner),
+      backends_(backends),
       resolver_(lexicon, config.fast_path),
       matcher_(lexicon, config.fast_path.unknown_colour_factor),
       start_(absl::Now()),
@@ -118,6 +119,11 @@ api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
   out.set_replans(progress.replans);
   out.set_explore_goals(progress.explore_goals);
   out.set_model_requests(progress.model_requests);
+  out.set_model_calls(task.model_calls);
+  if (backends_.explorer != nullptr) {
+    out.set_exploration_strategy(task.planner->strategy().empty() ? config_.planning.exploration_strategy
+                                                                  : task.planner->strategy());
+  }
   *out.mutable_created_at() = ToTimestamp(task.created);
   *out.mutable_updated_at() = ToTimestamp(task.updated);
   return out;
@@ -134,6 +140,7 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
     robot.last_command = response.command();
     robot.session->Send(response);
   }
+  DispatchModelRequest(task);
   api::TaskSnapshot snapshot = Snapshot(task);
   snapshot.clear_revision();
   snapshot.clear_updated_at();
@@ -173,11 +180,15 @@ void GatewayHub::StartIfPossible(Task& task) {
     return;
   }
   task.started = true;
+  SetMobility(task, robot);
+  Apply(task, task.executor->Start(Now(), robot.pose));
+}
+
+void GatewayHub::SetMobility(Task& task, const Robot& robot) {
   const api::Capabilities& caps = robot.capabilities;
   const bool fly_roll = std::find(caps.modes().begin(), caps.modes().end(), api::LOCOMOTION_MODE_FLY_ROLL) !=
                         caps.modes().end();
   task.executor->SetMobility(fly_roll, caps.footprint_radius_m());
-  Apply(task, task.executor->Start(Now(), robot.pose));
 }
 
 absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::SubmitInstructionRequest& request) {
@@ -229,9 +240,20 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.instruction = request.instruction();
   task.source = decomposition.source;
   task.created = task.updated = absl::Now();
+  const std::string strategy = request.exploration_strategy() == api::EXPLORATION_STRATEGY_UNSPECIFIED
+                                   ? ""
+                                   : api::ExplorationStrategy_Name(request.exploration_strategy()).substr(21);
+  task.planner = std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
+                                               [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
+                                                 // Called by the executor, under mu_.
+                                                 return ContextFor(task_id);
+                                               });
+  ExecutorConfig executor = config_.executor;
+  executor.model_available = backends_.model != nullptr;
   task.executor = std::make_unique<TaskExecutor>(request.instruction(), std::move(decomposition.subgoals), &resolver_,
-                                                 planner_, robot.memory.get(), config_.executor);
+                                                 task.planner.get(), robot.memory.get(), executor);
   task.executor->OnSceneGraph(Now(), scene_graph_);
+  RequestTextEmbedding(task);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());
   StartIfPossible(task);
@@ -356,12 +378,16 @@ absl::StatusOr<api::ResolveTargetResponse> GatewayHub::ResolveTarget(const api::
     }
   }
   if (request.allow_slow_path() && !resolution.accepted) {
-    response.set_explanation("slow path not run: no model client is configured in this gateway");
+    response.set_explanation(backends_.model == nullptr
+                                 ? "slow path not run: no model proxy is configured in this gateway"
+                                 : "slow path not run here: tasks ask the model asynchronously while exploring");
   }
   return response;
 }
 
 void GatewayHub::Shutdown() {
+  // Outside the lock: a model answer being delivered waits for mu_.
+  if (backends_.model != nullptr) backends_.model->Stop();
   absl::MutexLock lock(&mu_);
   if (shut_down_) return;
   shut_down_ = true;

@@ -74,16 +74,34 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
 }
 
 absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const RobotPose& pose) {
+  return SelectGoal(pose, "", ExplorationContext{});
+}
+
+absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const RobotPose& pose, const std::string& strategy,
+                                                           const ExplorationContext& context) {
   if (!Ready("SelectExplorationGoal")) return absl::NotFoundError("planning service not connected");
   pb::SelectExplorationGoalRequest request;
   request.mutable_source()->mutable_live_map();
   SetPose(pose.position, request.mutable_robot());
   request.mutable_robot()->set_yaw(pose.yaw);
-  request.set_strategy(strategy_);
-  grpc::ClientContext context;
-  SetDeadline(context, settings_.deadline_ms);
+  pb::ExplorationStrategy chosen = strategy_;
+  if (!strategy.empty() && !pb::ExplorationStrategy_Parse("EXPLORATION_STRATEGY_" + strategy, &chosen)) {
+    return absl::InvalidArgumentError(absl::StrCat("exploration strategy '", strategy, "' is unknown"));
+  }
+  request.set_strategy(chosen);
+  for (const ExplorationHint& hint : context.objects) {
+    pb::SemanticObject* object = request.mutable_semantics()->add_objects();
+    object->set_label(hint.label);
+    SetPose(hint.position, object->mutable_position());
+    object->set_relevance(hint.relevance);
+    object->set_relation(hint.relation);
+    object->set_cooccurrence(hint.cooccurrence);
+  }
+  for (const Eigen::Vector3d& place : context.visited) SetPose(place, request.mutable_semantics()->add_visited());
+  grpc::ClientContext call;
+  SetDeadline(call, settings_.deadline_ms);
   pb::SelectExplorationGoalResponse response;
-  const grpc::Status status = stub_->SelectExplorationGoal(&context, request, &response);
+  const grpc::Status status = stub_->SelectExplorationGoal(&call, request, &response);
   if (!status.ok()) {
     return absl::NotFoundError(absl::StrCat("no exploration goal from planning: ", status.error_message()));
   }

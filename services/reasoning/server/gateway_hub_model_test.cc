@@ -1,0 +1,198 @@
+// The hub's slow path with a scripted model: calls are made without blocking, the robot keeps
+// receiving exploration commands while the answer is pending, and the answer (delivered on
+// another thread, as the proxy client does) is validated and acted on.
+#include <thread>
+#include <vector>
+
+#include "absl/synchronization/mutex.h"
+#include "gtest/gtest.h"
+#include "services/reasoning/server/gateway_hub.h"
+#include "services/reasoning/server/robot_local_planner.h"
+#include "services/reasoning/testing/test_lexicon.h"
+
+namespace semnav::reasoning {
+namespace {
+
+class RecordingSink : public StreamSink<api::ConnectResponse> {
+ public:
+  void Send(const api::ConnectResponse& message) override {
+    absl::MutexLock lock(&mu);
+    messages.push_back(message);
+  }
+  void Close(const grpc::Status&) override {}
+  api::RobotCommand Last() {
+    absl::MutexLock lock(&mu);
+    return messages.back().command();
+  }
+  size_t Count() {
+    absl::MutexLock lock(&mu);
+    return messages.size();
+  }
+  absl::Mutex mu;
+  std::vector<api::ConnectResponse> messages;
+};
+
+// Records calls; the test answers them later from another thread.
+class ScriptedModel : public LanguageModel {
+ public:
+  struct Match {
+    ModelCaller caller;
+    ResolveRequest request;
+    AnswerDone done;
+  };
+  void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override {
+    matches.push_back({caller, request, std::move(done)});
+  }
+  void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) override {
+    embed_texts.push_back(text);
+    embeds.push_back(std::move(done));
+    (void)caller;
+  }
+  void Stop() override { ++stops; }
+  void Answer(std::size_t index, absl::StatusOr<std::string> answer) {
+    std::thread([&] { matches[index].done(std::move(answer)); }).join();
+  }
+
+  std::vector<Match> matches;
+  std::vector<std::string> embed_texts;
+  std::vector<EmbeddingDone> embeds;
+  int stops = 0;
+};
+
+api::RobotState At(double x, double y) {
+  api::RobotState state;
+  state.mutable_pose()->mutable_position()->set_x(x);
+  state.mutable_pose()->mutable_position()->set_y(y);
+  state.mutable_pose()->mutable_orientation()->set_w(1.0);
+  return state;
+}
+
+// A cup without a colour: "red cup" scores label 0.5 (colour unknown), embedding 0.5 (fallback),
+// detector 0.9, spatial 0: fused 0.175 + 0.175 + 0.135 = 0.485 <= 0.75, so the slow path runs.
+SceneGraph CupScene() {
+  SceneGraph graph;
+  graph.revision = 3;
+  SceneObject cup;
+  cup.id = 7;
+  cup.label = "cup";
+  cup.position = Eigen::Vector3d(4.0, 0.0, 0.8);
+  cup.score = 0.9;
+  cup.detection_count = 10;
+  graph.objects.push_back(cup);
+  return graph;
+}
+
+class GatewayHubModelTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    hub_.OnSceneGraph(CupScene());
+    api::SessionHello hello;
+    hello.set_robot_id("r1");
+    ASSERT_TRUE(hub_.OpenSession(hello, &session_).ok());
+    hub_.OnRobotState(&session_, At(0, 0));
+  }
+  std::string SubmitFindRedCup() {
+    api::SubmitInstructionRequest request;
+    request.set_request_id("find-1");
+    request.set_robot_id("r1");
+    request.set_instruction("find the red cup");
+    absl::StatusOr<api::SubmitInstructionResponse> response = hub_.Submit(request);
+    EXPECT_TRUE(response.ok()) << response.status();
+    return response.ok() ? response->task_id() : "";
+  }
+  void Reached(const api::RobotCommand& command) {
+    api::CommandFeedback feedback;
+    feedback.set_command_id(command.command_id());
+    feedback.set_kind(api::FEEDBACK_KIND_GOAL_REACHED);
+    hub_.OnFeedback(&session_, feedback);
+  }
+
+  RobotLocalPlanner planner_;
+  ScriptedModel model_;
+  GatewayHub hub_{GatewayConfig{}, &ShippedLexicon(), &planner_, GatewayBackends{nullptr, &model_, nullptr}};
+  RecordingSink session_;
+};
+
+TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnsweredObject) {
+  const std::string task_id = SubmitFindRedCup();
+  // One match_target call for the grounded cup, one text embedding; neither answered yet.
+  ASSERT_EQ(model_.matches.size(), 1u);
+  EXPECT_EQ(model_.matches[0].caller.task_id, task_id);
+  EXPECT_EQ(model_.matches[0].caller.robot_id, "r1");
+  EXPECT_NE(model_.matches[0].request.task_json.find(R"("id":"7")"), std::string::npos);
+  ASSERT_EQ(model_.embed_texts.size(), 1u);
+  EXPECT_EQ(hub_.GetTask(task_id)->model_calls(), 2);
+  EXPECT_EQ(hub_.GetTask(task_id)->model_requests(), 1);
+
+  // Motion does not wait: exploring now, and on arrival the robot gets the next step at once.
+  const api::RobotCommand explore = session_.Last();
+  ASSERT_TRUE(explore.has_navigate()) << explore.ShortDebugString();
+  EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
+  hub_.OnRobotState(&session_, At(explore.navigate().goal().x(), explore.navigate().goal().y()));
+  Reached(explore);
+  EXPECT_TRUE(session_.Last().has_rotate()) << session_.Last().ShortDebugString();  // scan at the goal
+
+  // The embedding backend is missing (offline default): the fast path keeps its fallback.
+  std::thread([&] { model_.embeds[0](absl::UnavailableError("offline: UNIMPLEMENTED")); }).join();
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+
+  // The answer: cup 7 at 0.8 >= 0.6 -> goal by the slow path; the robot approaches it.
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.8, "ranking": [{"id": "7", "score": 0.8}]})");
+  const api::TaskSnapshot task = *hub_.GetTask(task_id);
+  ASSERT_TRUE(task.has_target());
+  EXPECT_EQ(task.target().object_id(), 7);
+  EXPECT_EQ(task.target().path(), api::RESOLUTION_PATH_SLOW);
+  EXPECT_DOUBLE_EQ(task.target().confidence(), 0.8);
+  const api::RobotCommand approach = session_.Last();
+  ASSERT_TRUE(approach.has_navigate()) << approach.ShortDebugString();
+  EXPECT_DOUBLE_EQ(approach.navigate().max_speed_mps(), 0.15);
+  const Eigen::Vector2d goal(approach.navigate().goal().x(), approach.navigate().goal().y());
+  EXPECT_NEAR((goal - Eigen::Vector2d(4.0, 0.0)).norm(), 0.5, 1e-9);  // APPROACH stops 0.5 m away
+  EXPECT_EQ(task.model_calls(), 2);  // nothing new to ask once the target is known
+}
+
+TEST_F(GatewayHubModelTest, OfflineAnswersAreWeighedLowerAndNotInGraphKeepsExploring) {
+  const std::string task_id = SubmitFindRedCup();
+  // Offline prior 0.7 x 0.75 = 0.525: below 0.6, not below 0.5 -> neither goal nor vision check.
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.7, "ranking": [{"id": "7", "score": 0.7}], "offline": true})");
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+  EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
+
+  // A newer scene graph: the executor asks again; "not in the graph" -> keep exploring.
+  SceneGraph graph = CupScene();
+  graph.revision = 4;
+  hub_.OnSceneGraph(graph);
+  ASSERT_EQ(model_.matches.size(), 2u);
+  model_.Answer(1, R"({"best_id": "", "confidence": 0.0, "ranking": []})");
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(), "model: keep exploring ()");
+  EXPECT_EQ(hub_.GetTask(task_id)->model_calls(), 3);
+}
+
+TEST_F(GatewayHubModelTest, FailedOrMalformedAnswersKeepExploringAndSayWhy) {
+  const std::string task_id = SubmitFindRedCup();
+  model_.Answer(0, absl::DeadlineExceededError("deadline passed during the chain"));
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(),
+            "model: keep exploring (model call failed: deadline passed during the chain)");
+  SceneGraph graph = CupScene();
+  graph.revision = 4;
+  hub_.OnSceneGraph(graph);
+  ASSERT_EQ(model_.matches.size(), 2u);
+  model_.Answer(1, R"({"best_id": "99", "confidence": 0.9, "ranking": []})");  // not a candidate
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(),
+            "model: keep exploring (model answer rejected: best_id: '99' is not a candidate)");
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+}
+
+TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
+  const std::string task_id = SubmitFindRedCup();
+  const std::size_t sent = session_.Count();
+  hub_.Shutdown();
+  EXPECT_EQ(model_.stops, 1);
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.9, "ranking": []})");
+  EXPECT_EQ(session_.Count(), sent);
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
