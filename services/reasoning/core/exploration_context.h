@@ -36,6 +36,12 @@ struct ExplorationHint {
 struct ExplorationContext {
   std::vector<ExplorationHint> objects;        // only objects with some non-zero term
   std::vector<Eigen::Vector3d> visited;        // topological memory nodes
+  // EROI_UTILITY (seed 000): semantic value per EROI column of edge `eroi_edge_m` over the
+  // rectangle [eroi_window_min, eroi_window_max], row-major with x fastest; empty = none.
+  std::vector<double> eroi_values;
+  Eigen::Vector2d eroi_window_min = Eigen::Vector2d::Zero();
+  Eigen::Vector2d eroi_window_max = Eigen::Vector2d::Zero();
+  double eroi_edge_m = 0.0;
 };
 
 // `prior` and `memory` may be null (no co-occurrence / no visited places). A room target gives

@@ -77,6 +77,7 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
     ConfigReader model = section.Child("model");
     c.model.channel = ClientOptions::FromConfig(model, ClientOptions{});
     model.Read("model_alias", &c.model.model_alias)
+        .Read("vision_alias", &c.model.vision_alias)
         .Read("embedding_alias", &c.model.embedding_alias)
         .Read("deadline_ms", &c.model.deadline_ms)
         .Read("max_in_flight", &c.model.max_in_flight)
@@ -85,6 +86,30 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
     model.Check(c.model.deadline_ms > 0, "deadline_ms", "must be > 0");
     model.Check(c.model.max_in_flight >= 1 && c.model.max_in_flight <= 16, "max_in_flight", "must be in [1, 16]");
     model.Check(c.model.embedding_retry_s >= 0.0, "embedding_retry_s", "must be >= 0");
+  }
+
+  if (section.Has("eroi")) {
+    ConfigReader eroi = section.Child("eroi");
+    EroiSearchConfig search;
+    search.grid.delta = 2.0;  // planning's default eroi_size_m (the seed's example uses 3 m)
+    std::vector<double> min{0.0, 0.0, 0.0};
+    eroi.Read("min", &min)
+        .Read("delta", &search.grid.delta)
+        .Read("nx", &search.grid.nx)
+        .Read("ny", &search.grid.ny)
+        .Read("nz", &search.grid.nz)
+        .Read("evidence_radius_m", &search.evidence_radius_m)
+        .Read("region_size", &search.regions.region_size)
+        .Read("theta", &search.regions.theta)
+        .Read("min_distance_m", &search.mapping.min_distance_m)
+        .Read("max_distance_m", &search.mapping.max_distance_m);
+    eroi.Check(min.size() == 3, "min", "must be [x, y, z]");
+    if (min.size() == 3) search.grid.min = Eigen::Vector3d(min[0], min[1], min[2]);
+    eroi.Check(EroiGrid::Create(search.grid).ok(), "delta",
+               "grid must have delta > 0, nx, ny, nz >= 0 and at most 26 letters on x and z");
+    eroi.Check(search.regions.region_size >= 1, "region_size", "must be >= 1");
+    eroi.Check(search.regions.theta >= 1, "theta", "must be >= 1");
+    c.eroi = search;
   }
 
   section.Read("default_lease_ttl_s", &c.default_lease_ttl_s)

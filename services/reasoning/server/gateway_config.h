@@ -1,11 +1,13 @@
 // Settings of semnav-gateway (YAML section "gateway"); every default is the seed's value.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "absl/status/statusor.h"
 #include "services/common/client/channel.h"
 #include "services/common/config/config_reader.h"
+#include "services/reasoning/core/eroi_search.h"
 #include "services/reasoning/core/fast_resolver.h"
 #include "services/reasoning/core/slow_answer.h"
 #include "services/reasoning/core/task_decomposer.h"
@@ -29,6 +31,7 @@ struct PlanningSettings {
 struct ModelSettings {
   ClientOptions channel;          // address empty = no model proxy (127.0.0.1:50054 in the local stack)
   std::string model_alias;        // Complete alias; "" = the proxy's default
+  std::string vision_alias;       // Complete alias for image prompts (a VLM chain); "" = the default
   std::string embedding_alias;    // Embed alias; "" = the proxy's default
   int deadline_ms = 5000;         // per call including the proxy's fallbacks (seed 000 Table 3:
                                   // VLM 1.51 s, LLM 0.35 s mean)
@@ -51,6 +54,9 @@ struct GatewayConfig {
   ClientOptions mapping;              // mapping service; empty address = no scene graph
   PlanningSettings planning;
   ModelSettings model;
+  // Seed-000 search volume for EROI_UTILITY tasks (section "eroi"); absent = those tasks explore
+  // with planning's uniform values. `eroi.delta` must equal planning's exploration.eroi_size_m.
+  std::optional<EroiSearchConfig> eroi;
   // ConceptNet AtLocation prior (co-occurrence for SEMANTIC_FRONTIER); "" = no prior. Default:
   // the shared data folder beside the checkout, as the model proxy reads it.
   std::string prior_path = DefaultPriorPath();

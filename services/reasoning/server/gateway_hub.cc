@@ -53,6 +53,10 @@ void GatewayHub::Tick() {
   }
 }
 
+std::string GatewayHub::StrategyOf(const Task& task) const {
+  return task.planner->strategy().empty() ? config_.planning.exploration_strategy : task.planner->strategy();
+}
+
 double GatewayHub::Now() const { return absl::ToDoubleSeconds(absl::Now() - start_); }
 
 GatewayHub::Robot& GatewayHub::RobotRecord(const std::string& robot_id) {
@@ -120,10 +124,7 @@ api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
   out.set_explore_goals(progress.explore_goals);
   out.set_model_requests(progress.model_requests);
   out.set_model_calls(task.model_calls);
-  if (backends_.explorer != nullptr) {
-    out.set_exploration_strategy(task.planner->strategy().empty() ? config_.planning.exploration_strategy
-                                                                  : task.planner->strategy());
-  }
+  if (backends_.explorer != nullptr) out.set_exploration_strategy(StrategyOf(task));
   *out.mutable_created_at() = ToTimestamp(task.created);
   *out.mutable_updated_at() = ToTimestamp(task.updated);
   return out;
@@ -253,6 +254,12 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.executor = std::make_unique<TaskExecutor>(request.instruction(), std::move(decomposition.subgoals), &resolver_,
                                                  task.planner.get(), robot.memory.get(), executor);
   task.executor->OnSceneGraph(Now(), scene_graph_);
+  const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
+  if (StrategyOf(task) == "EROI_UTILITY" && config_.eroi.has_value() && target != nullptr) {
+    absl::StatusOr<EroiSearch> search =
+        EroiSearch::Create(target->text.empty() ? target->name : target->text, *config_.eroi);
+    if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
+  }
   RequestTextEmbedding(task);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());

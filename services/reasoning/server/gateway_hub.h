@@ -79,6 +79,9 @@ class GatewayHub {
                                                    StreamSink<api::ConnectResponse>* sink);
   void OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state);
   void OnFeedback(StreamSink<api::ConnectResponse>* sink, const api::CommandFeedback& feedback);
+  // A camera frame for the active task's EROI search (seed 000); dropped when the task has none
+  // or its vision call is still running. INVALID_ARGUMENT naming the field for a bad frame.
+  absl::Status OnCameraFrame(StreamSink<api::ConnectResponse>* sink, const api::CameraFrame& frame);
   void CloseSession(StreamSink<api::ConnectResponse>* sink);
 
   // Ends every open stream (server shutdown).
@@ -112,6 +115,8 @@ class GatewayHub {
     std::unique_ptr<TaskPlanner> planner;  // before the executor, which refers to it
     std::unique_ptr<TaskExecutor> executor;
     int model_calls = 0;
+    std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
+    bool vision_busy = false;          // a VLM call of the EROI search is running
     bool started = false;
     bool paused_by_session = false;
     uint64_t revision = 0;
@@ -142,6 +147,11 @@ class GatewayHub {
   void OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding)
       ABSL_LOCKS_EXCLUDED(mu_);
   ExplorationContext ContextFor(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer) ABSL_LOCKS_EXCLUDED(mu_);
+  void OnRegionScore(const std::string& task_id, const RegionDue& region, absl::StatusOr<std::string> answer)
+      ABSL_LOCKS_EXCLUDED(mu_);
+  // The strategy a task explores with: its own, else the configured default.
+  std::string StrategyOf(const Task& task) const;
   void Tick() ABSL_LOCKS_EXCLUDED(mu_);
   api::StreamSlowTelemetryResponse SlowSample(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id, std::string message)

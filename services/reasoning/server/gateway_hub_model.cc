@@ -79,8 +79,15 @@ ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {
   if (task == tasks_.end()) return {};
   const TargetSpec* target = PrimaryTarget(task->second.executor->subgoals());
   const Robot& robot = RobotRecord(task->second.robot_id);
-  return BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, scene_graph_, matcher_,
-                                 backends_.prior, robot.memory.get());
+  ExplorationContext context = BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, scene_graph_,
+                                                       matcher_, backends_.prior, robot.memory.get());
+  if (const EroiSearch* search = task->second.eroi.get(); search != nullptr) {
+    context.eroi_values = search->PlanarValues();
+    context.eroi_window_min = search->WindowMin();
+    context.eroi_window_max = search->WindowMax();
+    context.eroi_edge_m = search->grid().spec().delta;
+  }
+  return context;
 }
 
 }  // namespace semnav::reasoning

@@ -6,6 +6,7 @@
 
 #include "absl/synchronization/mutex.h"
 #include "gtest/gtest.h"
+#include "services/reasoning/server/camera_frame.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/testing/test_lexicon.h"
@@ -43,6 +44,9 @@ class ScriptedModel : public LanguageModel {
   void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override {
     matches.push_back({caller, request, std::move(done)});
   }
+  void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) override {
+    asks.push_back({caller, question, std::move(done)});
+  }
   void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) override {
     embed_texts.push_back(text);
     embeds.push_back(std::move(done));
@@ -53,7 +57,17 @@ class ScriptedModel : public LanguageModel {
     std::thread([&] { matches[index].done(std::move(answer)); }).join();
   }
 
+  struct Question {
+    ModelCaller caller;
+    ModelQuestion question;
+    AnswerDone done;
+  };
+  void Reply(std::size_t index, absl::StatusOr<std::string> answer) {
+    std::thread([&] { asks[index].done(std::move(answer)); }).join();
+  }
+
   std::vector<Match> matches;
+  std::vector<Question> asks;
   std::vector<std::string> embed_texts;
   std::vector<EmbeddingDone> embeds;
   int stops = 0;
@@ -82,6 +96,13 @@ SceneGraph CupScene() {
   return graph;
 }
 
+void Reached(GatewayHub& hub, RecordingSink& session, const api::RobotCommand& command) {
+  api::CommandFeedback feedback;
+  feedback.set_command_id(command.command_id());
+  feedback.set_kind(api::FEEDBACK_KIND_GOAL_REACHED);
+  hub.OnFeedback(&session, feedback);
+}
+
 class GatewayHubModelTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -99,12 +120,6 @@ class GatewayHubModelTest : public ::testing::Test {
     absl::StatusOr<api::SubmitInstructionResponse> response = hub_.Submit(request);
     EXPECT_TRUE(response.ok()) << response.status();
     return response.ok() ? response->task_id() : "";
-  }
-  void Reached(const api::RobotCommand& command) {
-    api::CommandFeedback feedback;
-    feedback.set_command_id(command.command_id());
-    feedback.set_kind(api::FEEDBACK_KIND_GOAL_REACHED);
-    hub_.OnFeedback(&session_, feedback);
   }
 
   RobotLocalPlanner planner_;
@@ -129,7 +144,7 @@ TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnswere
   ASSERT_TRUE(explore.has_navigate()) << explore.ShortDebugString();
   EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
   hub_.OnRobotState(&session_, At(explore.navigate().goal().x(), explore.navigate().goal().y()));
-  Reached(explore);
+  Reached(hub_, session_, explore);
   EXPECT_TRUE(session_.Last().has_rotate()) << session_.Last().ShortDebugString();  // scan at the goal
 
   // The embedding backend is missing (offline default): the fast path keeps its fallback.
@@ -192,6 +207,100 @@ TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
   model_.Answer(0, R"({"best_id": "7", "confidence": 0.9, "ranking": []})");
   EXPECT_EQ(session_.Count(), sent);
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+}
+
+// Records the context of every exploration request; planning has no goal to offer.
+class RecordingExplorer : public ExplorationService {
+ public:
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const RobotPose&, const std::string& strategy,
+                                             const ExplorationContext& context) override {
+    strategies.push_back(strategy);
+    contexts.push_back(context);
+    return absl::NotFoundError("no frontier");
+  }
+  std::vector<std::string> strategies;
+  std::vector<ExplorationContext> contexts;
+};
+
+api::CameraFrame Frame(common::v1::ImageEncoding encoding) {
+  api::CameraFrame frame;
+  const cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(90, 90, 90));
+  frame.mutable_image()->set_encoding(encoding);
+  frame.mutable_image()->set_data(EncodePng(grey));
+  frame.mutable_image()->set_width(160);
+  frame.mutable_image()->set_height(120);
+  frame.mutable_intrinsics()->set_width(160);
+  frame.mutable_intrinsics()->set_height(120);
+  frame.mutable_intrinsics()->set_fx(80);
+  frame.mutable_intrinsics()->set_fy(80);
+  frame.mutable_intrinsics()->set_cx(80);
+  frame.mutable_intrinsics()->set_cy(60);
+  frame.mutable_camera_pose()->mutable_position()->set_x(-4.0);
+  frame.mutable_camera_pose()->mutable_position()->set_y(3.0);
+  frame.mutable_camera_pose()->mutable_orientation()->set_w(1.0);
+  return frame;
+}
+
+// Seed-000 loop through the hub: frames -> VLM with codes drawn -> semantic values -> region
+// score after theta = 3 records -> EROI_UTILITY exploration requests carry the values.
+TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
+  GatewayConfig config;
+  EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0): N = 20, prior 0.05
+  eroi.grid.delta = 2.0;
+  eroi.grid.nx = 4;
+  eroi.grid.ny = 3;
+  config.eroi = eroi;
+  RobotLocalPlanner planner;
+  ScriptedModel model;
+  RecordingExplorer explorer;
+  GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr});
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("uav");
+  ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
+  hub.OnRobotState(&session, At(0, 0));
+  api::SubmitInstructionRequest request;
+  request.set_request_id("eroi-1");
+  request.set_robot_id("uav");
+  request.set_instruction("find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(request);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  EXPECT_EQ(submitted->task().exploration_strategy(), "EROI_UTILITY");
+  ASSERT_EQ(explorer.strategies.size(), 1u);
+  EXPECT_EQ(explorer.strategies[0], "EROI_UTILITY");
+  ASSERT_EQ(explorer.contexts[0].eroi_values.size(), 20u);  // uniform 1/N before any evidence
+  EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_values[7], 0.05);
+  EXPECT_TRUE(explorer.contexts[0].eroi_window_min.isApprox(Eigen::Vector2d(-1, -1)));
+  EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_edge_m, 2.0);
+
+  // Bad frames are refused by field; good ones go to the vision model one at a time.
+  EXPECT_EQ(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_MONO8)).message(),
+            "camera.image.encoding: must be PNG, JPEG or RGB8");
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());  // busy: dropped
+  ASSERT_EQ(model.asks.size(), 1u);
+  EXPECT_FALSE(model.asks[0].question.png.empty());
+  EXPECT_NE(model.asks[0].question.prompt.find("[red backpack]"), std::string::npos);
+
+  // Three answers in region unit (i 2..3, j 0..1): the third asks the region score.
+  model.Reply(0, "Code: C2A, Description: a bag by the bench");
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  model.Reply(1, "Code: C2A, Description: backpack strap");
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  model.Reply(2, "Code: D1A, Description: bench");
+  ASSERT_EQ(model.asks.size(), 4u);
+  EXPECT_TRUE(model.asks[3].question.png.empty());  // the language model scores the region
+  model.Reply(3, "5");
+  EXPECT_EQ(hub.GetTask(submitted->task_id())->model_calls(), 5);  // 3 frames, 1 region, 1 embedding
+
+  // The next exploration request carries the values: (2, 1) got C2A twice (0.392) then the
+  // region score 5 over k = 4 (eq. 22): 0.392 + 0.608 * 5 / 20 = 0.544.
+  const api::RobotCommand explore = session.Last();
+  Reached(hub, session, explore);  // -> scan
+  Reached(hub, session, session.Last());  // -> next exploration goal
+  ASSERT_EQ(explorer.contexts.size(), 2u);
+  EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
 }
 
 }  // namespace

@@ -19,15 +19,23 @@ struct ModelCaller {
   std::string task_id;
 };
 
+// A free-text question, with one PNG image for the vision model when `png` is not empty.
+struct ModelQuestion {
+  std::string prompt;
+  std::string png;  // PNG file bytes; empty = text only
+};
+
 class LanguageModel {
  public:
-  using AnswerDone = std::function<void(absl::StatusOr<std::string> answer_json)>;
+  using AnswerDone = std::function<void(absl::StatusOr<std::string> answer)>;
   using EmbeddingDone = std::function<void(absl::StatusOr<std::vector<float>> embedding)>;
 
   virtual ~LanguageModel() = default;
   // The match_target request; `done` gets the answer object as JSON text (with "offline": true
   // when the proxy's commonsense prior answered) or the call's error.
   virtual void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) = 0;
+  // A free-text answer (the EROI search's VLM and region-score prompts).
+  virtual void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) = 0;
   // The text embedding of `text`; UNAVAILABLE while the proxy offers no embedding backend.
   virtual void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) = 0;
   // Ends pending calls; returns once no `done` runs or will run. Idempotent.

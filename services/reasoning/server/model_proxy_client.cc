@@ -81,6 +81,23 @@ void ModelProxyClient::Work() {
   }
 }
 
+void ModelProxyClient::Complete(const ModelCaller& caller, pb::CompleteRequest call,
+                                std::function<void(absl::StatusOr<pb::CompleteResponse>)> done) {
+  SetTimeout(settings_.deadline_ms, call.mutable_timeout());
+  Enqueue(caller, [this, call = std::move(call), done = std::move(done)](grpc::ClientContext& context) {
+    pb::CompleteResponse response;
+    const grpc::Status status = stub_->Complete(&context, call, &response);
+    if (!status.ok()) {
+      LogInfo("model_call_failed", {{"rpc", "Complete"}, {"alias", call.model_alias()},
+                                    {"code", static_cast<int>(status.error_code())},
+                                    {"message", status.error_message()}});
+      done(FromGrpcStatus(status));
+      return;
+    }
+    done(std::move(response));
+  });
+}
+
 void ModelProxyClient::MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) {
   pb::CompleteRequest call;
   call.set_model_alias(settings_.model_alias);
@@ -90,17 +107,25 @@ void ModelProxyClient::MatchTarget(const ModelCaller& caller, const ResolveReque
   AddText(message, request.task_json);  // last part: the task object the offline backend reads
   call.set_response_format(pb::RESPONSE_FORMAT_JSON_SCHEMA);
   call.set_json_schema(std::string(MatchTargetSchema()));
-  SetTimeout(settings_.deadline_ms, call.mutable_timeout());
-  Enqueue(caller, [this, call = std::move(call), done = std::move(done)](grpc::ClientContext& context) {
-    pb::CompleteResponse response;
-    const grpc::Status status = stub_->Complete(&context, call, &response);
-    if (!status.ok()) {
-      LogInfo("model_call_failed", {{"rpc", "Complete"}, {"code", static_cast<int>(status.error_code())},
-                                    {"message", status.error_message()}});
-      done(FromGrpcStatus(status));
-      return;
-    }
-    done(AnswerJson(response));
+  Complete(caller, std::move(call), [done = std::move(done)](absl::StatusOr<pb::CompleteResponse> response) {
+    done(response.ok() ? AnswerJson(*response) : absl::StatusOr<std::string>(response.status()));
+  });
+}
+
+void ModelProxyClient::Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) {
+  pb::CompleteRequest call;
+  call.set_model_alias(question.png.empty() ? settings_.model_alias : settings_.vision_alias);
+  pb::ChatMessage* message = call.add_messages();
+  message->set_role(pb::ROLE_USER);
+  AddText(message, question.prompt);
+  if (!question.png.empty()) {
+    common::v1::Image* image = message->add_parts()->mutable_image();
+    image->set_encoding(common::v1::IMAGE_ENCODING_PNG);
+    image->set_data(question.png);
+  }
+  call.set_response_format(pb::RESPONSE_FORMAT_TEXT);
+  Complete(caller, std::move(call), [done = std::move(done)](absl::StatusOr<pb::CompleteResponse> response) {
+    done(response.ok() ? absl::StatusOr<std::string>(response->text()) : absl::StatusOr<std::string>(response.status()));
   });
 }
 

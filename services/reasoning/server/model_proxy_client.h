@@ -29,6 +29,7 @@ class ModelProxyClient final : public LanguageModel {
   ~ModelProxyClient() override;
 
   void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override;
+  void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) override;
   void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) override;
   void Stop() override;
 
@@ -36,6 +37,9 @@ class ModelProxyClient final : public LanguageModel {
   // A queued call; runs on a worker with a context carrying deadline and caller metadata.
   using Job = std::function<void(grpc::ClientContext& context)>;
   void Enqueue(const ModelCaller& caller, Job job);
+  // Enqueues a Complete call; `done` gets the response or the call's error.
+  void Complete(const ModelCaller& caller, modelproxy::v1::CompleteRequest call,
+                std::function<void(absl::StatusOr<modelproxy::v1::CompleteResponse>)> done);
   void Work();
 
   std::unique_ptr<modelproxy::v1::ModelProxyService::Stub> stub_;

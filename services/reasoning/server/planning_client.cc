@@ -73,6 +73,13 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   return path;
 }
 
+grpc::Status PlanningClient::Select(const pb::SelectExplorationGoalRequest& request,
+                                    pb::SelectExplorationGoalResponse* response) {
+  grpc::ClientContext call;
+  SetDeadline(call, settings_.deadline_ms);
+  return stub_->SelectExplorationGoal(&call, request, response);
+}
+
 absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const RobotPose& pose) {
   return SelectGoal(pose, "", ExplorationContext{});
 }
@@ -98,10 +105,28 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const RobotPose& pose
     object->set_cooccurrence(hint.cooccurrence);
   }
   for (const Eigen::Vector3d& place : context.visited) SetPose(place, request.mutable_semantics()->add_visited());
-  grpc::ClientContext call;
-  SetDeadline(call, settings_.deadline_ms);
+  const bool eroi_values = chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
+  if (eroi_values) {
+    // The live-map window whose EROIs are the gateway's columns. Mapping includes both corner
+    // cells, so the far corner is pulled in by a quarter edge: ceil(cells / edge) then counts
+    // exactly the gateway's columns whatever the map resolution (edge > 4 cells).
+    pb::LiveMapGrid* live = request.mutable_source()->mutable_live_map();
+    live->mutable_window_min()->set_x(context.eroi_window_min.x());
+    live->mutable_window_min()->set_y(context.eroi_window_min.y());
+    live->mutable_window_max()->set_x(context.eroi_window_max.x() - context.eroi_edge_m / 4.0);
+    live->mutable_window_max()->set_y(context.eroi_window_max.y() - context.eroi_edge_m / 4.0);
+    for (double value : context.eroi_values) request.add_eroi_semantic_values(value);
+  }
   pb::SelectExplorationGoalResponse response;
-  const grpc::Status status = stub_->SelectExplorationGoal(&call, request, &response);
+  grpc::Status status = Select(request, &response);
+  if (eroi_values && status.error_code() == grpc::StatusCode::INVALID_ARGUMENT) {
+    // Our grid and planning's disagree (eroi.delta != planning's eroi_size_m): explore on
+    // planning's uniform values rather than not at all.
+    LogWarning("eroi_values_rejected", {{"message", status.error_message()}, {"fallback", "uniform values"}});
+    request.mutable_source()->mutable_live_map()->Clear();
+    request.clear_eroi_semantic_values();
+    status = Select(request, &response);
+  }
   if (!status.ok()) {
     return absl::NotFoundError(absl::StrCat("no exploration goal from planning: ", status.error_message()));
   }

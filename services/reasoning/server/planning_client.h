@@ -32,6 +32,8 @@ class PlanningClient : public PathPlanner, public ExplorationService {
 
  private:
   bool Ready(const char* call);
+  grpc::Status Select(const planning::v1::SelectExplorationGoalRequest& request,
+                      planning::v1::SelectExplorationGoalResponse* response);
 
   std::shared_ptr<grpc::Channel> channel_;
   std::unique_ptr<planning::v1::PlanningService::Stub> stub_;
