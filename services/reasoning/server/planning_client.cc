@@ -24,6 +24,18 @@ void SetDeadline(grpc::ClientContext& context, int deadline_ms) {
 
 }  // namespace
 
+void AddEroiValues(const ExplorationContext& context, pb::SelectExplorationGoalRequest* request) {
+  // Mapping includes both corner cells of a window, so the far corner is pulled in by a quarter
+  // edge: ceil(cells / edge) then counts exactly the gateway's columns at any map resolution
+  // finer than a quarter edge.
+  pb::LiveMapGrid* live = request->mutable_source()->mutable_live_map();
+  live->mutable_window_min()->set_x(context.eroi_window_min.x());
+  live->mutable_window_min()->set_y(context.eroi_window_min.y());
+  live->mutable_window_max()->set_x(context.eroi_window_max.x() - context.eroi_edge_m / 4.0);
+  live->mutable_window_max()->set_y(context.eroi_window_max.y() - context.eroi_edge_m / 4.0);
+  for (double value : context.eroi_values) request->add_eroi_semantic_values(value);
+}
+
 PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings)
     : channel_(channel), stub_(pb::PlanningService::NewStub(channel)), settings_(std::move(settings)) {
   channel_->GetState(/*try_to_connect=*/true);
@@ -106,17 +118,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const RobotPose& pose
   }
   for (const Eigen::Vector3d& place : context.visited) SetPose(place, request.mutable_semantics()->add_visited());
   const bool eroi_values = chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
-  if (eroi_values) {
-    // The live-map window whose EROIs are the gateway's columns. Mapping includes both corner
-    // cells, so the far corner is pulled in by a quarter edge: ceil(cells / edge) then counts
-    // exactly the gateway's columns whatever the map resolution (edge > 4 cells).
-    pb::LiveMapGrid* live = request.mutable_source()->mutable_live_map();
-    live->mutable_window_min()->set_x(context.eroi_window_min.x());
-    live->mutable_window_min()->set_y(context.eroi_window_min.y());
-    live->mutable_window_max()->set_x(context.eroi_window_max.x() - context.eroi_edge_m / 4.0);
-    live->mutable_window_max()->set_y(context.eroi_window_max.y() - context.eroi_edge_m / 4.0);
-    for (double value : context.eroi_values) request.add_eroi_semantic_values(value);
-  }
+  if (eroi_values) AddEroiValues(context, &request);
   pb::SelectExplorationGoalResponse response;
   grpc::Status status = Select(request, &response);
   if (eroi_values && status.error_code() == grpc::StatusCode::INVALID_ARGUMENT) {

@@ -19,6 +19,9 @@
 
 namespace semnav::reasoning {
 
+// EROI_UTILITY: the live-map window whose EROIs are the context's columns, and their values.
+void AddEroiValues(const ExplorationContext& context, planning::v1::SelectExplorationGoalRequest* request);
+
 // SelectGoal sends the task's SemanticContext (SEMANTIC_FRONTIER's language and grounding inputs);
 // ExplorationGoal without a task asks with the configured strategy and no context.
 class PlanningClient : public PathPlanner, public ExplorationService {

@@ -12,6 +12,9 @@
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 #include "semnav/reasoning/v1/robot_session.grpc.pb.h"
+#include "semnav/planning/v1/planning_service.grpc.pb.h"
+#include "services/reasoning/core/eroi_search.h"
+#include "services/reasoning/server/planning_client.h"
 #include "services/reasoning/testing/operator_calls.h"
 #include "services/reasoning/testing/table_scene_frames.h"
 #include "tests/support/service_process.h"
@@ -156,6 +159,43 @@ TEST_F(GatewayPlanningContractTest, NavigateCarriesAPlannedPathRoundTheTableAndI
   EXPECT_EQ(testing::FetchTask(*operator_, *task_id)->replans(), 1 + fallbacks);
   session->WritesDone();
   session_context.TryCancel();
+}
+
+// The gateway's EROI columns and planning's EROI grid over the window the gateway asks for must
+// coincide (planning refuses a value count that differs from its EROI count).
+TEST_F(GatewayPlanningContractTest, EroiValuesFitPlanningsEroiGridOverTheGatewaysWindow) {
+  ASSERT_TRUE(testing::StreamLabelledFrames(mapping_->channel(), 1, 6, "clock", kClock).ok());
+  auto planning = planning::v1::PlanningService::NewStub(planning_->channel());
+  const auto select = [&](double delta, int nx, int ny) {
+    EroiSearchConfig config;
+    config.grid.delta = delta;
+    config.grid.nx = nx;
+    config.grid.ny = ny;
+    absl::StatusOr<EroiSearch> search = EroiSearch::Create("clock", config);
+    EXPECT_TRUE(search.ok());
+    ExplorationContext context;
+    context.eroi_values = search->PlanarValues();
+    context.eroi_window_min = search->WindowMin();
+    context.eroi_window_max = search->WindowMax();
+    context.eroi_edge_m = delta;
+    planning::v1::SelectExplorationGoalRequest request;
+    request.mutable_robot()->set_x(kStart.x());
+    request.mutable_robot()->set_y(kStart.y());
+    request.set_strategy(planning::v1::EXPLORATION_STRATEGY_EROI_UTILITY);
+    AddEroiValues(context, &request);
+    planning::v1::SelectExplorationGoalResponse response;
+    grpc::ClientContext call;
+    return planning->SelectExplorationGoal(&call, request, &response);
+  };
+  // Planning's default EROI edge is 2 m: 4 x 2 columns from (0, 0) fit at any grid size.
+  for (auto [nx, ny] : std::vector<std::pair<int, int>>{{3, 1}, {4, 2}, {2, 3}}) {
+    const grpc::Status status = select(2.0, nx, ny);
+    EXPECT_NE(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << nx << "x" << ny << ": " << status.error_message();
+  }
+  // A 3 m gateway grid does not match planning's 2 m EROIs: refused by field.
+  const grpc::Status mismatch = select(3.0, 2, 1);
+  EXPECT_EQ(mismatch.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(mismatch.error_message().find("eroi_semantic_values"), std::string::npos) << mismatch.error_message();
 }
 
 }  // namespace
