@@ -4,34 +4,15 @@
 #include <thread>
 #include <vector>
 
-#include "absl/synchronization/mutex.h"
 #include "gtest/gtest.h"
 #include "services/reasoning/server/camera_frame.h"
 #include "services/reasoning/server/gateway_hub.h"
+#include "services/reasoning/server/hub_test_support.h"
 #include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {
 namespace {
-
-class RecordingSink : public StreamSink<api::ConnectResponse> {
- public:
-  void Send(const api::ConnectResponse& message) override {
-    absl::MutexLock lock(&mu);
-    messages.push_back(message);
-  }
-  void Close(const grpc::Status&) override {}
-  api::RobotCommand Last() {
-    absl::MutexLock lock(&mu);
-    return messages.back().command();
-  }
-  size_t Count() {
-    absl::MutexLock lock(&mu);
-    return messages.size();
-  }
-  absl::Mutex mu;
-  std::vector<api::ConnectResponse> messages;
-};
 
 // Records calls; the test answers them later from another thread.
 class ScriptedModel : public LanguageModel {
@@ -72,14 +53,6 @@ class ScriptedModel : public LanguageModel {
   std::vector<EmbeddingDone> embeds;
   int stops = 0;
 };
-
-api::RobotState At(double x, double y) {
-  api::RobotState state;
-  state.mutable_pose()->mutable_position()->set_x(x);
-  state.mutable_pose()->mutable_position()->set_y(y);
-  state.mutable_pose()->mutable_orientation()->set_w(1.0);
-  return state;
-}
 
 // A cup without a colour: "red cup" scores label 0.5 (colour unknown), embedding 0.5 (fallback),
 // detector 0.9, spatial 0: fused 0.175 + 0.175 + 0.135 = 0.485 <= 0.75, so the slow path runs.
@@ -201,11 +174,11 @@ TEST_F(GatewayHubModelTest, FailedOrMalformedAnswersKeepExploringAndSayWhy) {
 
 TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
   const std::string task_id = SubmitFindRedCup();
-  const std::size_t sent = session_.Count();
+  const std::size_t sent = session_.messages().size();
   hub_.Shutdown();
   EXPECT_EQ(model_.stops, 1);
   model_.Answer(0, R"({"best_id": "7", "confidence": 0.9, "ranking": []})");
-  EXPECT_EQ(session_.Count(), sent);
+  EXPECT_EQ(session_.messages().size(), sent);
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
 }
 

@@ -5,8 +5,6 @@
 // the proxy while the robot explores; the offline answer (lexical 0.9 x offline factor 0.75 =
 // 0.675 >= 0.6) makes the clock the goal, and the robot is driven to it until success.
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 
 #include <grpcpp/grpcpp.h>
 
@@ -14,6 +12,7 @@
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 #include "semnav/reasoning/v1/robot_session.grpc.pb.h"
 #include "services/reasoning/testing/operator_calls.h"
+#include "services/reasoning/testing/service_stack.h"
 #include "services/reasoning/testing/table_scene_frames.h"
 #include "tests/support/service_process.h"
 
@@ -27,20 +26,16 @@ const Eigen::Vector3d kClock(6.0, 1.3, 1.0);
 class GatewayModelContractTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string dir = ::testing::TempDir() + "/gateway_model_contract";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/maps\n"
-                                         << "  watch_min_interval_ms: 20\n";
-    auto mapping = semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", dir + "/mapping.yaml"});
+    const std::string dir = testing::FreshDir("gateway_model_contract");
+    auto mapping = testing::StartMapping(dir);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
     auto proxy = semnav::testing::ServiceProcess::Start("semnav-model-proxy");
     ASSERT_TRUE(proxy.ok()) << proxy.status();
     proxy_ = *std::move(proxy);
-    std::ofstream(dir + "/gateway.yaml") << "gateway:\n  mapping:\n    address: " << mapping_->address()
-                                         << "\n  model:\n    address: " << proxy_->address() << "\n";
-    auto gateway = semnav::testing::ServiceProcess::Start("semnav-gateway", {"--config", dir + "/gateway.yaml"});
+    auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
+                                            "gateway:\n  mapping:\n    address: " + mapping_->address() +
+                                                "\n  model:\n    address: " + proxy_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());

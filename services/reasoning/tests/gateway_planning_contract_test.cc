@@ -3,8 +3,6 @@
 // the table crosses the tall box must receive a navigate command whose planned path goes round it.
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include <grpcpp/grpcpp.h>
 
@@ -16,6 +14,7 @@
 #include "services/reasoning/core/eroi_search.h"
 #include "services/reasoning/server/planning_client.h"
 #include "services/reasoning/testing/operator_calls.h"
+#include "services/reasoning/testing/service_stack.h"
 #include "services/reasoning/testing/table_scene_frames.h"
 #include "tests/support/service_process.h"
 
@@ -55,20 +54,17 @@ const Eigen::Vector2d kStart(1.5, 1.3);
 class GatewayPlanningContractTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string dir = ::testing::TempDir() + "/gateway_planning_contract";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/maps\n";
-    auto mapping = semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", dir + "/mapping.yaml"});
+    const std::string dir = testing::FreshDir("gateway_planning_contract");
+    auto mapping = testing::StartMapping(dir);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
-    std::ofstream(dir + "/planning.yaml") << "planning:\n  mapping:\n    address: " << mapping_->address() << "\n";
-    auto planning = semnav::testing::ServiceProcess::Start("semnav-planning", {"--config", dir + "/planning.yaml"});
+    auto planning = testing::StartWithConfig("semnav-planning", dir, "planning.yaml",
+                                             "planning:\n  mapping:\n    address: " + mapping_->address() + "\n");
     ASSERT_TRUE(planning.ok()) << planning.status();
     planning_ = *std::move(planning);
-    std::ofstream(dir + "/gateway.yaml") << "gateway:\n  mapping:\n    address: " << mapping_->address()
-                                         << "\n  planning:\n    address: " << planning_->address() << "\n";
-    auto gateway = semnav::testing::ServiceProcess::Start("semnav-gateway", {"--config", dir + "/gateway.yaml"});
+    auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
+                                            "gateway:\n  mapping:\n    address: " + mapping_->address() +
+                                                "\n  planning:\n    address: " + planning_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
