@@ -384,34 +384,35 @@ absl::StatusOr<api::ResolveTargetResponse> GatewayHub::ResolveTarget(const api::
       resolved->set_label(object->label);
     }
   }
-  if (request.allow_slow_path() && !resolution.accepted) {
-    response.set_explanation(backends_.model == nullptr
-                                 ? "slow path not run: no model proxy is configured in this gateway"
-                                 : "slow path not run here: tasks ask the model asynchronously while exploring");
+  if (request.allow_slow_path() && !resolution.accepted && backends_.model == nullptr) {
+    response.set_explanation("slow path not run: no model proxy is configured in this gateway");
   }
   return response;
 }
 
 void GatewayHub::Shutdown() {
-  // Outside the lock: a model answer being delivered waits for mu_.
+  {
+    absl::MutexLock lock(&mu_);
+    if (!shut_down_) {
+      shut_down_ = true;
+      const grpc::Status status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down");
+      for (auto& [id, task] : tasks_) {
+        for (StreamSink<api::WatchTaskResponse>* watcher : task.watchers) watcher->Close(status);
+        task.watchers.clear();
+      }
+      for (auto& [sink, filter] : event_watchers_) sink->Close(status);
+      event_watchers_.clear();
+      for (auto& [sink, subscription] : fast_watchers_) sink->Close(status);
+      fast_watchers_.clear();
+      for (auto& [sink, subscription] : slow_watchers_) sink->Close(status);
+      slow_watchers_.clear();
+      for (auto& [id, robot] : robots_) {
+        if (robot.session != nullptr) robot.session->Close(status);
+      }
+    }
+  }
+  // Outside the lock: an answer being delivered waits for mu_ (and then finds the hub shut down).
   if (backends_.model != nullptr) backends_.model->Stop();
-  absl::MutexLock lock(&mu_);
-  if (shut_down_) return;
-  shut_down_ = true;
-  const grpc::Status status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down");
-  for (auto& [id, task] : tasks_) {
-    for (StreamSink<api::WatchTaskResponse>* watcher : task.watchers) watcher->Close(status);
-    task.watchers.clear();
-  }
-  for (auto& [sink, filter] : event_watchers_) sink->Close(status);
-  event_watchers_.clear();
-  for (auto& [sink, subscription] : fast_watchers_) sink->Close(status);
-  fast_watchers_.clear();
-  for (auto& [sink, subscription] : slow_watchers_) sink->Close(status);
-  slow_watchers_.clear();
-  for (auto& [id, robot] : robots_) {
-    if (robot.session != nullptr) robot.session->Close(status);
-  }
 }
 
 }  // namespace semnav::reasoning

@@ -56,6 +56,13 @@ class GatewayHub {
   absl::Status ClearEmergencyStop(const api::ClearEmergencyStopRequest& request);
   absl::StatusOr<api::DecomposeInstructionResponse> Decompose(const api::DecomposeInstructionRequest& request);
   absl::StatusOr<api::ResolveTargetResponse> ResolveTarget(const api::ResolveTargetRequest& request);
+  // True when `fast` (ResolveTarget's answer) should go on to the slow path: allow_slow_path, no
+  // fast-path target and a model proxy configured.
+  bool WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const;
+  // The slow path for ResolveTarget: ESCA grounding, the model asked without blocking, `done`
+  // called later (on the model's thread) with `fast` completed by the model's decision.
+  void ResolveSlow(const api::ResolveTargetRequest& request, api::ResolveTargetResponse fast,
+                   std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done) ABSL_LOCKS_EXCLUDED(mu_);
   // A new revision of mapping's scene graph (shared by all robots of this gateway).
   void OnSceneGraph(const SceneGraph& graph);
 

@@ -4,7 +4,9 @@
 
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
+#include "services/reasoning/core/selective_grounding.h"
 #include "services/reasoning/server/hub_internal.h"
+#include "services/reasoning/server/proto_convert.h"
 
 namespace semnav::reasoning {
 
@@ -72,6 +74,57 @@ void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std:
   }
   task->second.executor->SetTextEmbedding(*std::move(embedding));
   Apply(task->second, task->second.executor->OnSceneGraph(Now(), scene_graph_));
+}
+
+bool GatewayHub::WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const {
+  return request.allow_slow_path() && !fast.has_target() && backends_.model != nullptr;
+}
+
+void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request, api::ResolveTargetResponse fast,
+                             std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done) {
+  absl::MutexLock lock(&mu_);
+  if (shut_down_) {
+    done(absl::UnavailableError("gateway shutting down"));
+    return;
+  }
+  const TargetSpec target = FromProto(fast.understood());
+  GroundingConfig grounding;
+  grounding.max_objects = config_.executor.grounding_max_objects;
+  auto grounded = std::make_shared<const SceneGraph>(SelectiveGrounding(target, scene_graph_, matcher_, grounding).graph);
+  fast.set_grounded_objects(static_cast<int>(grounded->objects.size()));
+  if (grounded->objects.empty()) {
+    fast.set_explanation("slow path not run: the scene graph has nothing to ground the target on");
+    done(std::move(fast));
+    return;
+  }
+  ++model_calls_;
+  const ResolveRequest call = BuildResolveRequest(request.text(), target, *grounded);
+  backends_.model->MatchTarget(
+      {request.robot_id(), ""}, call,
+      [this, grounded, fast = std::move(fast), done = std::move(done)](absl::StatusOr<std::string> answer) mutable {
+        if (!answer.ok()) {
+          done(answer.status());
+          return;
+        }
+        const absl::StatusOr<SlowDecision> decision = ParseResolveAnswer(*answer, *grounded, config_.slow_path);
+        if (!decision.ok()) {
+          done(absl::Status(decision.status().code(), absl::StrCat("model answer: ", decision.status().message())));
+          return;
+        }
+        fast.set_explanation(decision->explanation);
+        if (decision->action == SlowAction::kGoal) {
+          const SceneObject* object = grounded->FindObject(decision->object_id);
+          api::ResolvedTarget* resolved = fast.mutable_target();
+          resolved->set_object_id(object->id);
+          resolved->mutable_position()->set_x(object->position.x());
+          resolved->mutable_position()->set_y(object->position.y());
+          resolved->mutable_position()->set_z(object->position.z());
+          resolved->set_confidence(decision->confidence);
+          resolved->set_path(api::RESOLUTION_PATH_SLOW);
+          resolved->set_label(object->label);
+        }
+        done(std::move(fast));
+      });
 }
 
 ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {

@@ -172,6 +172,34 @@ TEST_F(GatewayHubModelTest, FailedOrMalformedAnswersKeepExploringAndSayWhy) {
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
 }
 
+TEST_F(GatewayHubModelTest, ResolveTargetRunsTheSlowPathWithoutBlockingAndReportsTheGrounding) {
+  api::ResolveTargetRequest request;
+  request.set_robot_id("r1");
+  request.set_text("the red cup");
+  request.set_allow_slow_path(true);
+  absl::StatusOr<api::ResolveTargetResponse> fast = hub_.ResolveTarget(request);
+  ASSERT_TRUE(fast.ok()) << fast.status();
+  EXPECT_FALSE(fast->has_target());
+  EXPECT_NEAR(fast->best_candidate().score().fused(), 0.485, 1e-9);
+  ASSERT_TRUE(hub_.WantsSlowPath(request, *fast));
+  std::optional<absl::StatusOr<api::ResolveTargetResponse>> result;
+  hub_.ResolveSlow(request, *fast, [&](absl::StatusOr<api::ResolveTargetResponse> r) { result = std::move(r); });
+  EXPECT_FALSE(result.has_value());  // returned before the model answered
+  ASSERT_EQ(model_.matches.size(), 1u);
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.9, "ranking": [{"id": "7", "score": 0.9, "reason": "a cup"}]})");
+  ASSERT_TRUE(result.has_value() && result->ok());
+  const api::ResolveTargetResponse& slow = **result;
+  EXPECT_EQ(slow.grounded_objects(), 1);
+  EXPECT_EQ(slow.explanation(), "a cup");
+  EXPECT_EQ(slow.target().object_id(), 7);
+  EXPECT_EQ(slow.target().path(), api::RESOLUTION_PATH_SLOW);
+  EXPECT_DOUBLE_EQ(slow.target().confidence(), 0.9);
+  EXPECT_NEAR(slow.best_candidate().score().fused(), 0.485, 1e-9);  // the fast-path scores stay
+
+  request.set_allow_slow_path(false);
+  EXPECT_FALSE(hub_.WantsSlowPath(request, *fast));
+}
+
 TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
   const std::string task_id = SubmitFindRedCup();
   const std::size_t sent = session_.messages().size();

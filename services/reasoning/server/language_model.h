@@ -38,7 +38,8 @@ class LanguageModel {
   virtual void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) = 0;
   // The text embedding of `text`; UNAVAILABLE while the proxy offers no embedding backend.
   virtual void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) = 0;
-  // Ends pending calls; returns once no `done` runs or will run. Idempotent.
+  // Ends pending calls (their `done` runs with CANCELLED); returns once no `done` runs or will
+  // run. Idempotent.
   virtual void Stop() = 0;
 };
 

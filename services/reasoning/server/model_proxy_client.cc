@@ -43,7 +43,6 @@ void ModelProxyClient::Stop() {
   {
     absl::MutexLock lock(&mu_);
     stopping_ = true;
-    queue_.clear();
     for (grpc::ClientContext* context : active_) context->TryCancel();
   }
   for (std::thread& worker : workers_) {
@@ -67,7 +66,10 @@ void ModelProxyClient::Work() {
             return self->stopping_ || !self->queue_.empty();
           },
           this));
-      if (stopping_) return;
+      if (queue_.empty()) return;  // stopping, and every queued call has had its answer
+      // Once stopping, queued calls still run, cancelled before they start, so that every
+      // caller gets its CANCELLED answer.
+      if (stopping_) context.TryCancel();
       context.AddMetadata("x-semnav-robot-id", queue_.front().first.robot_id);
       context.AddMetadata("x-semnav-task-id", queue_.front().first.task_id);
       job = std::move(queue_.front().second);

@@ -3,6 +3,7 @@
 // run on a few worker threads with the configured deadline, so callers (the gateway hub, under
 // its lock) only enqueue. After Embed fails as unavailable (the offline default has no embedding
 // backend) the client answers UNAVAILABLE itself for `embedding_retry_s` instead of asking again.
+// Stop() cancels calls in flight and queued ones: every `done` runs once, with CANCELLED then.
 #pragma once
 
 #include <deque>

@@ -145,6 +145,7 @@ TEST_F(GatewayModelProxyClientTest, ErrorsComeBackAsStatusAndStopCancelsPendingC
     proxy_.release = false;
   }
   settings_.deadline_ms = 60000;
+  settings_.max_in_flight = 1;
   ModelProxyClient slow(channel_, settings_);
   absl::Notification done;
   absl::StatusCode code = absl::StatusCode::kOk;
@@ -152,6 +153,9 @@ TEST_F(GatewayModelProxyClientTest, ErrorsComeBackAsStatusAndStopCancelsPendingC
     code = result.status().code();
     done.Notify();
   });
+  absl::StatusCode queued_code = absl::StatusCode::kOk;  // waits behind the first (one worker)
+  slow.Ask({"r1", "task-1"}, {"region prompt", ""},
+           [&](absl::StatusOr<std::string> result) { queued_code = result.status().code(); });
   for (int i = 0; i < 200; ++i) {  // wait until the call reached the proxy
     absl::MutexLock lock(&proxy_.mu);
     if (proxy_.completes == 2) break;
@@ -163,6 +167,9 @@ TEST_F(GatewayModelProxyClientTest, ErrorsComeBackAsStatusAndStopCancelsPendingC
   EXPECT_LT(absl::Now() - start, absl::Seconds(5));
   ASSERT_TRUE(done.HasBeenNotified());
   EXPECT_EQ(code, absl::StatusCode::kCancelled);
+  EXPECT_EQ(queued_code, absl::StatusCode::kCancelled);  // every caller gets an answer
+  absl::MutexLock lock(&proxy_.mu);
+  EXPECT_EQ(proxy_.completes, 2);  // the queued call never reached the proxy
 }
 
 TEST_F(GatewayModelProxyClientTest, MissingEmbeddingBackendIsNotAskedAgainWithinTheRetryWindow) {

@@ -52,6 +52,19 @@ TEST_F(GatewayModelContractTest, SlowPathThroughTheOfflineProxyDrivesTheRobotToT
   // The clock is in the gateway's graph once the plain name resolves on the fast path.
   ASSERT_TRUE(testing::WaitUntilFastResolvable(*operator_, "r1", "go to the clock", 5000));
 
+  // The operator's ResolveTarget runs the same slow path (its reactor finishes on the answer).
+  api::ResolveTargetRequest resolve;
+  resolve.set_robot_id("r1");
+  resolve.set_text("the red clock");
+  resolve.set_allow_slow_path(true);
+  api::ResolveTargetResponse resolved;
+  grpc::ClientContext resolve_context;
+  ASSERT_TRUE(operator_->ResolveTarget(&resolve_context, resolve, &resolved).ok());
+  EXPECT_EQ(resolved.target().path(), api::RESOLUTION_PATH_SLOW) << resolved.ShortDebugString();
+  EXPECT_NEAR(resolved.target().confidence(), 0.9 * 0.75, 1e-9);
+  EXPECT_EQ(resolved.grounded_objects(), 1);
+  EXPECT_LT(resolved.best_candidate().score().fused(), 0.75);  // not confident on the fast path
+
   auto session_stub = api::RobotSessionService::NewStub(gateway_->channel());
   grpc::ClientContext session_context;
   session_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(30));
