@@ -5,6 +5,7 @@
 
 #include "services/common/server/service_binary.h"
 #include "services/common/client/channel.h"
+#include "services/common/logging/log.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/core/conceptnet_cooccurrence.h"
 #include "services/reasoning/server/mapping_watcher.h"
@@ -39,8 +40,16 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
   }
   if (!config.prior_path.empty()) {
     absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(config.prior_path);
-    if (!prior.ok()) return absl::Status(prior.status().code(), absl::StrCat("prior_path: ", prior.status().message()));
-    backends.prior = new ConceptNetCooccurrence(*std::move(prior));
+    if (prior.ok()) {
+      backends.prior = new ConceptNetCooccurrence(*std::move(prior));
+    } else if (config.prior_path == GatewayConfig::DefaultPriorPath()) {
+      // The build-time default (the source tree's shared data) may not exist where the binary is
+      // installed: explore without co-occurrence rather than not start.
+      semnav::LogWarning("commonsense_prior_unavailable",
+                         {{"prior_path", config.prior_path}, {"message", prior.status().message()}});
+    } else {
+      return absl::Status(prior.status().code(), absl::StrCat("prior_path: ", prior.status().message()));
+    }
   }
   auto hub = std::make_shared<GatewayHub>(config, shared_lexicon, planner, backends);
   host.AddService(std::make_unique<OperatorServiceImpl>(hub), "semnav.reasoning.v1.OperatorService");
