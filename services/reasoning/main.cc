@@ -33,10 +33,10 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
     planner = planning;
     backends.explorer = planning;
   }
-  if (!config.model.channel.address.empty()) {
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.model.channel);
+  if (!config.model_proxy.channel.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.model_proxy.channel);
     if (!channel.ok()) return channel.status();
-    backends.model = new ModelProxyClient(*channel, config.model);
+    backends.model = new ModelProxyClient(*channel, config.model_proxy);
   }
   if (!config.prior_path.empty()) {
     absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(config.prior_path);

@@ -73,19 +73,19 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
     planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
   }
 
-  if (section.Has("model")) {  // absent: offline default, no slow-path calls
-    ConfigReader model = section.Child("model");
-    c.model.channel = ClientOptions::FromConfig(model, ClientOptions{});
-    model.Read("model_alias", &c.model.model_alias)
-        .Read("vision_alias", &c.model.vision_alias)
-        .Read("embedding_alias", &c.model.embedding_alias)
-        .Read("deadline_ms", &c.model.deadline_ms)
-        .Read("max_in_flight", &c.model.max_in_flight)
-        .Read("embedding_retry_s", &c.model.embedding_retry_s)
-        .Read("text_embeddings", &c.model.text_embeddings);
-    model.Check(c.model.deadline_ms > 0, "deadline_ms", "must be > 0");
-    model.Check(c.model.max_in_flight >= 1 && c.model.max_in_flight <= 16, "max_in_flight", "must be in [1, 16]");
-    model.Check(c.model.embedding_retry_s >= 0.0, "embedding_retry_s", "must be >= 0");
+  if (section.Has("model_proxy")) {  // absent: offline default, no slow-path calls
+    ConfigReader model = section.Child("model_proxy");
+    c.model_proxy.channel = ClientOptions::FromConfig(model, ClientOptions{});
+    model.Read("model_alias", &c.model_proxy.model_alias)
+        .Read("vision_alias", &c.model_proxy.vision_alias)
+        .Read("embedding_alias", &c.model_proxy.embedding_alias)
+        .Read("deadline_ms", &c.model_proxy.deadline_ms)
+        .Read("max_in_flight", &c.model_proxy.max_in_flight)
+        .Read("embedding_retry_s", &c.model_proxy.embedding_retry_s)
+        .Read("text_embeddings", &c.model_proxy.text_embeddings);
+    model.Check(c.model_proxy.deadline_ms > 0, "deadline_ms", "must be > 0");
+    model.Check(c.model_proxy.max_in_flight >= 1 && c.model_proxy.max_in_flight <= 16, "max_in_flight", "must be in [1, 16]");
+    model.Check(c.model_proxy.embedding_retry_s >= 0.0, "embedding_retry_s", "must be >= 0");
   }
 
   if (section.Has("eroi")) {

@@ -26,7 +26,7 @@ struct PlanningSettings {
   double goal_tolerance_m = 0.0;  // an occupied goal may move this far; 0 = use the alternative point
 };
 
-// The model proxy (section "model"). No address = offline default: fast path, the commonsense
+// The model proxy (section "model_proxy"). No address = offline default: fast path, the commonsense
 // prior for exploration and plain exploration; no slow-path calls.
 struct ModelSettings {
   ClientOptions channel;          // address empty = no model proxy (127.0.0.1:50054 in the local stack)
@@ -53,7 +53,7 @@ struct GatewayConfig {
   std::string lexicon_path = Lexicon::DefaultPath();  // bilingual lexicon (TSV); default: the source tree's
   ClientOptions mapping;              // mapping service; empty address = no scene graph
   PlanningSettings planning;
-  ModelSettings model;
+  ModelSettings model_proxy;
   // Seed-000 search volume for EROI_UTILITY tasks (section "eroi"); absent = those tasks explore
   // with planning's uniform values. `eroi.delta` must equal planning's exploration.eroi_size_m.
   std::optional<EroiSearchConfig> eroi;

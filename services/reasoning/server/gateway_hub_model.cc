@@ -51,7 +51,7 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, const ModelRequest& r
 }
 
 void GatewayHub::RequestTextEmbedding(Task& task) {
-  if (backends_.model == nullptr || !config_.model.text_embeddings) return;
+  if (backends_.model == nullptr || !config_.model_proxy.text_embeddings) return;
   const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
   if (target == nullptr || target->is_room) return;
   ++task.model_calls;

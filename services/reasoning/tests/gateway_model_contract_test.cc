@@ -35,7 +35,7 @@ class GatewayModelContractTest : public ::testing::Test {
     proxy_ = *std::move(proxy);
     auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
                                             "gateway:\n  mapping:\n    address: " + mapping_->address() +
-                                                "\n  model:\n    address: " + proxy_->address() + "\n");
+                                                "\n  model_proxy:\n    address: " + proxy_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
