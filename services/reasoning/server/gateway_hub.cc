@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/strip.h"
 #include "services/reasoning/core/correction.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
@@ -202,6 +203,10 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   if (request.instruction().size() > kMaxInstructionChars) {
     return FieldError(absl::StatusCode::kInvalidArgument, "instruction", "longer than 1000 characters");
   }
+  if (!api::ExplorationStrategy_IsValid(request.exploration_strategy())) {
+    return FieldError(absl::StatusCode::kInvalidArgument, "exploration_strategy",
+                      absl::StrCat("unknown value ", request.exploration_strategy()));
+  }
   if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
   Robot& robot = RobotRecord(request.robot_id());
   if (robot.emergency_stop) {
@@ -241,9 +246,12 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.instruction = request.instruction();
   task.source = decomposition.source;
   task.created = task.updated = absl::Now();
-  const std::string strategy = request.exploration_strategy() == api::EXPLORATION_STRATEGY_UNSPECIFIED
-                                   ? ""
-                                   : api::ExplorationStrategy_Name(request.exploration_strategy()).substr(21);
+  // "" = the configured default; otherwise planning's name ("EROI_UTILITY").
+  const std::string strategy =
+      request.exploration_strategy() == api::EXPLORATION_STRATEGY_UNSPECIFIED
+          ? ""
+          : std::string(absl::StripPrefix(api::ExplorationStrategy_Name(request.exploration_strategy()),
+                                          "EXPLORATION_STRATEGY_"));
   task.planner = std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
                                                [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
                                                  // Called by the executor, under mu_.

@@ -265,6 +265,9 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   request.set_robot_id("uav");
   request.set_instruction("find the red backpack");
   request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  request.set_exploration_strategy(static_cast<api::ExplorationStrategy>(42));
+  EXPECT_EQ(hub.Submit(request).status().message(), "exploration_strategy: unknown value 42");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
   absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(request);
   ASSERT_TRUE(submitted.ok()) << submitted.status();
   EXPECT_EQ(submitted->task().exploration_strategy(), "EROI_UTILITY");
