@@ -152,7 +152,7 @@ std::vector<RobotCommand> TaskExecutor::NextSubgoal(double now, const std::strin
 bool TaskExecutor::TryResolve() {
   if (progress_.target.has_value() && excluded_.count(progress_.target->object_id) == 0) return true;
   progress_.target.reset();
-  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, {}, excluded_);
+  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, excluded_);
   if (!resolution.accepted) return false;
   const SceneObject* object = graph_.FindObject(resolution.best->object_id);
   progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "fast", 0};

@@ -98,6 +98,10 @@ class TaskExecutor {
     config_.robot_radius_m = robot_radius_m;
   }
 
+  // The target's text embedding from the model proxy (fast path's embedding term); empty = the
+  // seed's fallback (label match).
+  void SetTextEmbedding(std::vector<float> embedding) { text_embedding_ = std::move(embedding); }
+
   // A pending slow-path request, handed out once.
   std::optional<ModelRequest> TakeModelRequest();
   const TaskProgress& progress() const { return progress_; }
@@ -139,6 +143,7 @@ class TaskExecutor {
   RobotPose pose_;
   SceneGraph graph_;
   std::set<int64_t> excluded_;
+  std::vector<float> text_embedding_;
   uint64_t next_command_id_ = 1;
   uint64_t active_command_ = 0;
   double phase_deadline_ = 0.0;

@@ -2,6 +2,10 @@
 
 namespace semnav::reasoning {
 
+std::string GatewayConfig::DefaultPriorPath() {
+  return SEMNAV_REASONING_PRIOR_PATH;
+}
+
 GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
   GatewayConfig c;
   ConfigReader decomposer = section.Child("decomposer");
@@ -69,12 +73,52 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
     planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
   }
 
+  if (section.Has("model_proxy")) {  // absent: offline default, no slow-path calls
+    ConfigReader model = section.Child("model_proxy");
+    c.model_proxy.channel = ClientOptions::FromConfig(model, ClientOptions{});
+    model.Read("model_alias", &c.model_proxy.model_alias)
+        .Read("vision_alias", &c.model_proxy.vision_alias)
+        .Read("embedding_alias", &c.model_proxy.embedding_alias)
+        .Read("deadline_ms", &c.model_proxy.deadline_ms)
+        .Read("max_in_flight", &c.model_proxy.max_in_flight)
+        .Read("embedding_retry_s", &c.model_proxy.embedding_retry_s)
+        .Read("text_embeddings", &c.model_proxy.text_embeddings);
+    model.Check(c.model_proxy.deadline_ms > 0, "deadline_ms", "must be > 0");
+    model.Check(c.model_proxy.max_in_flight >= 1 && c.model_proxy.max_in_flight <= 16, "max_in_flight", "must be in [1, 16]");
+    model.Check(c.model_proxy.embedding_retry_s >= 0.0, "embedding_retry_s", "must be >= 0");
+  }
+
+  if (section.Has("eroi")) {
+    ConfigReader eroi = section.Child("eroi");
+    EroiSearchConfig search;
+    search.grid.delta = 2.0;  // planning's default eroi_size_m (the seed's example uses 3 m)
+    std::vector<double> min{0.0, 0.0, 0.0};
+    eroi.Read("min", &min)
+        .Read("delta", &search.grid.delta)
+        .Read("nx", &search.grid.nx)
+        .Read("ny", &search.grid.ny)
+        .Read("nz", &search.grid.nz)
+        .Read("evidence_radius_m", &search.evidence_radius_m)
+        .Read("region_size", &search.regions.region_size)
+        .Read("theta", &search.regions.theta)
+        .Read("min_distance_m", &search.mapping.min_distance_m)
+        .Read("max_distance_m", &search.mapping.max_distance_m);
+    eroi.Check(min.size() == 3, "min", "must be [x, y, z]");
+    if (min.size() == 3) search.grid.min = Eigen::Vector3d(min[0], min[1], min[2]);
+    eroi.Check(EroiGrid::Create(search.grid).ok(), "delta",
+               "grid must have delta > 0, nx, ny, nz >= 0 and at most 26 letters on x and z");
+    eroi.Check(search.regions.region_size >= 1, "region_size", "must be >= 1");
+    eroi.Check(search.regions.theta >= 1, "theta", "must be >= 1");
+    c.eroi = search;
+  }
+
   section.Read("default_lease_ttl_s", &c.default_lease_ttl_s)
       .Read("max_lease_ttl_s", &c.max_lease_ttl_s)
       .Read("retained_events", &c.retained_events)
       .Read("idempotency_entries", &c.idempotency_entries)
       .Read("memory_label_radius_m", &c.memory_label_radius_m)
-      .Read("lexicon_path", &c.lexicon_path);
+      .Read("lexicon_path", &c.lexicon_path)
+      .Read("prior_path", &c.prior_path);
   section.Check(c.default_lease_ttl_s >= 1.0 && c.default_lease_ttl_s <= c.max_lease_ttl_s, "default_lease_ttl_s",
                 "must be in [1, max_lease_ttl_s]");
   section.Check(c.retained_events > 0, "retained_events", "must be > 0");

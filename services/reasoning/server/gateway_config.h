@@ -1,11 +1,13 @@
 // Settings of semnav-gateway (YAML section "gateway"); every default is the seed's value.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "absl/status/statusor.h"
 #include "services/common/client/channel.h"
 #include "services/common/config/config_reader.h"
+#include "services/reasoning/core/eroi_search.h"
 #include "services/reasoning/core/fast_resolver.h"
 #include "services/reasoning/core/slow_answer.h"
 #include "services/reasoning/core/task_decomposer.h"
@@ -24,6 +26,20 @@ struct PlanningSettings {
   double goal_tolerance_m = 0.0;  // an occupied goal may move this far; 0 = use the alternative point
 };
 
+// The model proxy (section "model_proxy"). No address = offline default: fast path, the commonsense
+// prior for exploration and plain exploration; no slow-path calls.
+struct ModelSettings {
+  ClientOptions channel;          // address empty = no model proxy (127.0.0.1:50054 in the local stack)
+  std::string model_alias;        // Complete alias; "" = the proxy's default
+  std::string vision_alias;       // Complete alias for image prompts (a VLM chain); "" = the default
+  std::string embedding_alias;    // Embed alias; "" = the proxy's default
+  int deadline_ms = 5000;         // per call including the proxy's fallbacks (seed 000 Table 3:
+                                  // VLM 1.51 s, LLM 0.35 s mean)
+  int max_in_flight = 2;          // concurrent calls (worker threads)
+  double embedding_retry_s = 60;  // after Embed is unavailable, answer that locally this long
+  bool text_embeddings = true;    // ask Embed for each task's target text
+};
+
 struct GatewayConfig {
   DecomposerConfig decomposer;
   FastResolverConfig fast_path;
@@ -37,9 +53,17 @@ struct GatewayConfig {
   std::string lexicon_path = Lexicon::DefaultPath();  // bilingual lexicon (TSV); default: the source tree's
   ClientOptions mapping;              // mapping service; empty address = no scene graph
   PlanningSettings planning;
+  ModelSettings model_proxy;
+  // Seed-000 search volume for EROI_UTILITY tasks (section "eroi"); absent = those tasks explore
+  // with planning's uniform values. `eroi.delta` must equal planning's exploration.eroi_size_m.
+  std::optional<EroiSearchConfig> eroi;
+  // ConceptNet AtLocation prior (co-occurrence for SEMANTIC_FRONTIER); "" = no prior. Default:
+  // the shared data folder beside the checkout, as the model proxy reads it.
+  std::string prior_path = DefaultPriorPath();
   double memory_label_radius_m = 3.0;  // scene-graph objects this close count as seen at a memory
                                        // node (no per-frame visibility reaches the gateway)
 
+  static std::string DefaultPriorPath();
   // Reads the keys it knows and records bad values on `section` (reported by Finish()).
   static GatewayConfig FromYaml(ConfigReader& section);
 };

@@ -25,6 +25,38 @@ TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
   EXPECT_TRUE(config.mapping.address.empty());
   EXPECT_TRUE(config.planning.channel.address.empty());  // no planning: the robot plans locally
   EXPECT_EQ(config.planning.exploration_strategy, "SEMANTIC_FRONTIER");
+  EXPECT_TRUE(config.model_proxy.channel.address.empty());  // offline default: no slow-path calls
+  EXPECT_EQ(config.model_proxy.deadline_ms, 5000);
+  EXPECT_EQ(config.model_proxy.max_in_flight, 2);
+  EXPECT_FALSE(config.eroi.has_value());
+  EXPECT_TRUE(absl::EndsWith(config.prior_path, "conceptnet_atlocation_coco80/conceptnet-data.json"));
+}
+
+TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
+  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+      "model_proxy: {address: 127.0.0.1:50054, deadline_ms: 800, vision_alias: vision}\n"
+      "eroi: {min: [-10, -20, 0], nx: 9, ny: 19, nz: 2, theta: 4}\n");
+  ASSERT_TRUE(reader.ok());
+  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  EXPECT_EQ(config.model_proxy.channel.address, "127.0.0.1:50054");
+  EXPECT_EQ(config.model_proxy.deadline_ms, 800);
+  EXPECT_EQ(config.model_proxy.vision_alias, "vision");
+  ASSERT_TRUE(config.eroi.has_value());
+  EXPECT_DOUBLE_EQ(config.eroi->grid.delta, 2.0);  // planning's default EROI edge
+  EXPECT_DOUBLE_EQ(config.eroi->grid.min.y(), -20.0);
+  EXPECT_EQ(config.eroi->grid.nz, 2);
+  EXPECT_EQ(config.eroi->regions.theta, 4);
+
+  for (const char* yaml : {"model_proxy: {address: x, deadline_ms: 0}", "model_proxy: {address: x, max_in_flight: 64}",
+                           "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}"}) {
+    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
+    ASSERT_TRUE(bad.ok());
+    GatewayConfig::FromYaml(*bad);
+    const absl::Status status = bad->Finish();
+    EXPECT_FALSE(status.ok()) << yaml;
+    EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'm' ? "model_proxy." : "eroi.")) << status;
+  }
 }
 
 TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/strip.h"
 #include "services/reasoning/core/correction.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
@@ -12,10 +13,11 @@ namespace semnav::reasoning {
 
 using namespace hub_internal;
 
-GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner)
+GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner, GatewayBackends backends)
     : config_(config),
       lexicon_(lexicon),
       planner_(planner),
+      backends_(backends),
       resolver_(lexicon, config.fast_path),
       matcher_(lexicon, config.fast_path.unknown_colour_factor),
       start_(absl::Now()),
@@ -50,6 +52,10 @@ void GatewayHub::Tick() {
       sink->Send(SlowSample(subscription.robot_id));
     }
   }
+}
+
+std::string GatewayHub::StrategyOf(const Task& task) const {
+  return task.planner->strategy().empty() ? config_.planning.exploration_strategy : task.planner->strategy();
 }
 
 double GatewayHub::Now() const { return absl::ToDoubleSeconds(absl::Now() - start_); }
@@ -118,6 +124,8 @@ api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
   out.set_replans(progress.replans);
   out.set_explore_goals(progress.explore_goals);
   out.set_model_requests(progress.model_requests);
+  out.set_model_calls(task.model_calls);
+  if (backends_.explorer != nullptr) out.set_exploration_strategy(StrategyOf(task));
   *out.mutable_created_at() = ToTimestamp(task.created);
   *out.mutable_updated_at() = ToTimestamp(task.updated);
   return out;
@@ -134,6 +142,7 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
     robot.last_command = response.command();
     robot.session->Send(response);
   }
+  DispatchModelRequest(task);
   api::TaskSnapshot snapshot = Snapshot(task);
   snapshot.clear_revision();
   snapshot.clear_updated_at();
@@ -173,11 +182,15 @@ void GatewayHub::StartIfPossible(Task& task) {
     return;
   }
   task.started = true;
+  SetMobility(task, robot);
+  Apply(task, task.executor->Start(Now(), robot.pose));
+}
+
+void GatewayHub::SetMobility(Task& task, const Robot& robot) {
   const api::Capabilities& caps = robot.capabilities;
   const bool fly_roll = std::find(caps.modes().begin(), caps.modes().end(), api::LOCOMOTION_MODE_FLY_ROLL) !=
                         caps.modes().end();
   task.executor->SetMobility(fly_roll, caps.footprint_radius_m());
-  Apply(task, task.executor->Start(Now(), robot.pose));
 }
 
 absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::SubmitInstructionRequest& request) {
@@ -189,6 +202,10 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   if (absl::Status s = Required(request.instruction(), "instruction"); !s.ok()) return s;
   if (request.instruction().size() > kMaxInstructionChars) {
     return FieldError(absl::StatusCode::kInvalidArgument, "instruction", "longer than 1000 characters");
+  }
+  if (!api::ExplorationStrategy_IsValid(request.exploration_strategy())) {
+    return FieldError(absl::StatusCode::kInvalidArgument, "exploration_strategy",
+                      absl::StrCat("unknown value ", request.exploration_strategy()));
   }
   if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
   Robot& robot = RobotRecord(request.robot_id());
@@ -229,9 +246,29 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.instruction = request.instruction();
   task.source = decomposition.source;
   task.created = task.updated = absl::Now();
+  // "" = the configured default; otherwise planning's name ("EROI_UTILITY").
+  const std::string strategy =
+      request.exploration_strategy() == api::EXPLORATION_STRATEGY_UNSPECIFIED
+          ? ""
+          : std::string(absl::StripPrefix(api::ExplorationStrategy_Name(request.exploration_strategy()),
+                                          "EXPLORATION_STRATEGY_"));
+  task.planner = std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
+                                               [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
+                                                 // Called by the executor, under mu_.
+                                                 return ContextFor(task_id);
+                                               });
+  ExecutorConfig executor = config_.executor;
+  executor.model_available = backends_.model != nullptr;
   task.executor = std::make_unique<TaskExecutor>(request.instruction(), std::move(decomposition.subgoals), &resolver_,
-                                                 planner_, robot.memory.get(), config_.executor);
+                                                 task.planner.get(), robot.memory.get(), executor);
   task.executor->OnSceneGraph(Now(), scene_graph_);
+  const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
+  if (StrategyOf(task) == "EROI_UTILITY" && config_.eroi.has_value() && target != nullptr) {
+    absl::StatusOr<EroiSearch> search =
+        EroiSearch::Create(target->text.empty() ? target->name : target->text, *config_.eroi);
+    if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
+  }
+  RequestTextEmbedding(task);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());
   StartIfPossible(task);
@@ -372,30 +409,35 @@ absl::StatusOr<api::ResolveTargetResponse> GatewayHub::ResolveTarget(const api::
       resolved->set_label(object->label);
     }
   }
-  if (request.allow_slow_path() && !resolution.accepted) {
-    response.set_explanation("slow path not run: no model client is configured in this gateway");
+  if (request.allow_slow_path() && !resolution.accepted && backends_.model == nullptr) {
+    response.set_explanation("slow path not run: no model proxy is configured in this gateway");
   }
   return response;
 }
 
 void GatewayHub::Shutdown() {
-  absl::MutexLock lock(&mu_);
-  if (shut_down_) return;
-  shut_down_ = true;
-  const grpc::Status status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down");
-  for (auto& [id, task] : tasks_) {
-    for (StreamSink<api::WatchTaskResponse>* watcher : task.watchers) watcher->Close(status);
-    task.watchers.clear();
+  {
+    absl::MutexLock lock(&mu_);
+    if (!shut_down_) {
+      shut_down_ = true;
+      const grpc::Status status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down");
+      for (auto& [id, task] : tasks_) {
+        for (StreamSink<api::WatchTaskResponse>* watcher : task.watchers) watcher->Close(status);
+        task.watchers.clear();
+      }
+      for (auto& [sink, filter] : event_watchers_) sink->Close(status);
+      event_watchers_.clear();
+      for (auto& [sink, subscription] : fast_watchers_) sink->Close(status);
+      fast_watchers_.clear();
+      for (auto& [sink, subscription] : slow_watchers_) sink->Close(status);
+      slow_watchers_.clear();
+      for (auto& [id, robot] : robots_) {
+        if (robot.session != nullptr) robot.session->Close(status);
+      }
+    }
   }
-  for (auto& [sink, filter] : event_watchers_) sink->Close(status);
-  event_watchers_.clear();
-  for (auto& [sink, subscription] : fast_watchers_) sink->Close(status);
-  fast_watchers_.clear();
-  for (auto& [sink, subscription] : slow_watchers_) sink->Close(status);
-  slow_watchers_.clear();
-  for (auto& [id, robot] : robots_) {
-    if (robot.session != nullptr) robot.session->Close(status);
-  }
+  // Outside the lock: an answer being delivered waits for mu_ (and then finds the hub shut down).
+  if (backends_.model != nullptr) backends_.model->Stop();
 }
 
 }  // namespace semnav::reasoning

@@ -20,18 +20,28 @@
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
 #include "services/reasoning/core/topological_memory.h"
+#include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/server/gateway_config.h"
+#include "services/reasoning/server/language_model.h"
 #include "services/reasoning/server/stream_sink.h"
+#include "services/reasoning/server/task_planner.h"
 
 namespace semnav::reasoning {
 
 namespace api = ::semnav::reasoning::v1;
 
+// Optional services of the hub; each must outlive it. Null = not configured.
+struct GatewayBackends {
+  ExplorationService* explorer = nullptr;  // planning's SelectExplorationGoal with task context
+  LanguageModel* model = nullptr;          // model proxy: slow path and text embeddings
+  const CooccurrencePrior* prior = nullptr;  // commonsense co-occurrence for exploration
+};
+
 class GatewayHub {
  public:
   // `lexicon` and `planner` must outlive the hub. Starts the 10 Hz ticker that drives executor
-  // timeouts and slow telemetry; Shutdown() stops it.
-  GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner);
+  // timeouts and slow telemetry; Shutdown() stops it (and the model's pending calls).
+  GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner, GatewayBackends backends = {});
   ~GatewayHub();
 
   absl::StatusOr<api::SubmitInstructionResponse> Submit(const api::SubmitInstructionRequest& request);
@@ -47,6 +57,13 @@ class GatewayHub {
   absl::Status ClearEmergencyStop(const api::ClearEmergencyStopRequest& request);
   absl::StatusOr<api::DecomposeInstructionResponse> Decompose(const api::DecomposeInstructionRequest& request);
   absl::StatusOr<api::ResolveTargetResponse> ResolveTarget(const api::ResolveTargetRequest& request);
+  // True when `fast` (ResolveTarget's answer) should go on to the slow path: allow_slow_path, no
+  // fast-path target and a model proxy configured.
+  bool WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const;
+  // The slow path for ResolveTarget: ESCA grounding, the model asked without blocking, `done`
+  // called later (on the model's thread) with `fast` completed by the model's decision.
+  void ResolveSlow(const api::ResolveTargetRequest& request, api::ResolveTargetResponse fast,
+                   std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done) ABSL_LOCKS_EXCLUDED(mu_);
   // A new revision of mapping's scene graph (shared by all robots of this gateway).
   void OnSceneGraph(const SceneGraph& graph);
 
@@ -70,6 +87,9 @@ class GatewayHub {
                                                    StreamSink<api::ConnectResponse>* sink);
   void OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state);
   void OnFeedback(StreamSink<api::ConnectResponse>* sink, const api::CommandFeedback& feedback);
+  // A camera frame for the active task's EROI search (seed 000); dropped when the task has none
+  // or its vision call is still running. INVALID_ARGUMENT naming the field for a bad frame.
+  absl::Status OnCameraFrame(StreamSink<api::ConnectResponse>* sink, const api::CameraFrame& frame);
   void CloseSession(StreamSink<api::ConnectResponse>* sink);
 
   // Ends every open stream (server shutdown).
@@ -100,7 +120,11 @@ class GatewayHub {
     std::string robot_id;
     std::string instruction;
     std::string source;
+    std::unique_ptr<TaskPlanner> planner;  // before the executor, which refers to it
     std::unique_ptr<TaskExecutor> executor;
+    int model_calls = 0;
+    std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
+    bool vision_busy = false;          // a VLM call of the EROI search is running
     bool started = false;
     bool paused_by_session = false;
     uint64_t revision = 0;
@@ -120,6 +144,22 @@ class GatewayHub {
   // Sends the executor's commands to the robot, bumps the revision and notifies watchers.
   void Apply(Task& task, const std::vector<RobotCommand>& commands) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The executor's modality and footprint from the robot's latest hello.
+  void SetMobility(Task& task, const Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Runs the executor's pending slow-path request on the model, without waiting for it.
+  void DispatchModelRequest(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void RequestTextEmbedding(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Model answers, on the model's threads.
+  void OnModelAnswer(const std::string& task_id, const ModelRequest& request, absl::StatusOr<std::string> answer)
+      ABSL_LOCKS_EXCLUDED(mu_);
+  void OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding)
+      ABSL_LOCKS_EXCLUDED(mu_);
+  ExplorationContext ContextFor(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer) ABSL_LOCKS_EXCLUDED(mu_);
+  void OnRegionScore(const std::string& task_id, const RegionDue& region, absl::StatusOr<std::string> answer)
+      ABSL_LOCKS_EXCLUDED(mu_);
+  // The strategy a task explores with: its own, else the configured default.
+  std::string StrategyOf(const Task& task) const;
   void Tick() ABSL_LOCKS_EXCLUDED(mu_);
   api::StreamSlowTelemetryResponse SlowSample(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id, std::string message)
@@ -130,6 +170,7 @@ class GatewayHub {
   const GatewayConfig config_;
   const Lexicon* lexicon_;
   PathPlanner* planner_;
+  const GatewayBackends backends_;
   const FastResolver resolver_;
   const LabelMatcher matcher_;
   const absl::Time start_;
@@ -149,6 +190,7 @@ class GatewayHub {
   SceneGraph scene_graph_ ABSL_GUARDED_BY(mu_);
   uint64_t fast_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
+  uint64_t model_calls_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t next_task_ ABSL_GUARDED_BY(mu_) = 1;
   bool shut_down_ ABSL_GUARDED_BY(mu_) = false;
   std::thread ticker_;

@@ -33,6 +33,7 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   if (task != tasks_.end() && !task->second.executor->finished()) {
     if (task->second.paused_by_session) {
       task->second.paused_by_session = false;
+      SetMobility(task->second, robot);  // the robot may come back with other capabilities
       Apply(task->second, task->second.executor->Resume(Now()));
     } else {
       StartIfPossible(task->second);

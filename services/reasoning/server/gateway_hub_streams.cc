@@ -68,7 +68,7 @@ api::StreamSlowTelemetryResponse GatewayHub::SlowSample(const std::string& robot
   out.set_task_id(robot.active_task);
   out.set_fast_path_resolutions(fast_resolutions_);
   out.set_slow_path_resolutions(slow_resolutions_);
-  out.set_model_calls(0);  // no model client is wired into the server yet
+  out.set_model_calls(model_calls_);
   out.set_scene_graph_revision(scene_graph_.revision);
   out.set_topological_nodes(static_cast<uint32_t>(robot.memory->nodes().size()));
   *out.mutable_stamp() = ToTimestamp(absl::Now());

@@ -1,30 +1,13 @@
 // The hub without gRPC: a fake session sink records the robot commands.
 #include "services/reasoning/server/gateway_hub.h"
 
-#include <vector>
-
 #include "gtest/gtest.h"
+#include "services/reasoning/server/hub_test_support.h"
 #include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {
 namespace {
-
-class RecordingSink : public StreamSink<api::ConnectResponse> {
- public:
-  void Send(const api::ConnectResponse& message) override { messages.push_back(message); }
-  void Close(const grpc::Status& status) override { closed = status; }
-  std::vector<api::ConnectResponse> messages;
-  std::optional<grpc::Status> closed;
-};
-
-api::RobotState At(double x, double y) {
-  api::RobotState state;
-  state.mutable_pose()->mutable_position()->set_x(x);
-  state.mutable_pose()->mutable_position()->set_y(y);
-  state.mutable_pose()->mutable_orientation()->set_w(1.0);
-  return state;
-}
 
 TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   RobotLocalPlanner planner;
@@ -54,15 +37,15 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   absl::StatusOr<api::SubmitInstructionResponse> response = hub.Submit(request);
   ASSERT_TRUE(response.ok()) << response.status();
   ASSERT_EQ(response->task().subgoals(0).type(), api::SUBGOAL_TYPE_BACKTRACK);
-  ASSERT_GE(session.messages.size(), 2u);  // accepted + navigate
-  const api::RobotCommand& command = session.messages.back().command();
+  ASSERT_GE(session.messages().size(), 2u);  // accepted + navigate
+  const api::RobotCommand command = session.Last();
   ASSERT_TRUE(command.has_navigate()) << command.ShortDebugString();
   EXPECT_DOUBLE_EQ(command.navigate().goal().x(), 0.0);
   EXPECT_DOUBLE_EQ(command.navigate().goal().y(), 0.0);
   EXPECT_EQ(command.navigate().path_size(), 0);  // no planning service: robot plans locally
   hub.Shutdown();
-  ASSERT_TRUE(session.closed.has_value());
-  EXPECT_EQ(session.closed->error_code(), grpc::StatusCode::UNAVAILABLE);
+  ASSERT_TRUE(session.closed().has_value());
+  EXPECT_EQ(session.closed()->error_code(), grpc::StatusCode::UNAVAILABLE);
 }
 
 }  // namespace

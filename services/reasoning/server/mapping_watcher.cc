@@ -35,7 +35,9 @@ void MappingWatcher::Run() {
     mapping::v1::WatchSceneGraphRequest request;
     request.set_since_revision(mirror.revision());
     auto reader = stub->WatchSceneGraph(&context, request);
+    bool delivered = false;
     for (mapping::v1::WatchSceneGraphResponse update; reader->Read(&update);) {
+      delivered = true;
       if (!mirror.Apply(update)) {
         context.TryCancel();  // gap: restart from a snapshot
         mirror = SceneGraphMirror();
@@ -47,7 +49,12 @@ void MappingWatcher::Run() {
     absl::MutexLock lock(&mu_);
     active_ = nullptr;
     if (stopping_) return;
-    LogWarning("mapping_watch_ended", {{"code", static_cast<int>(status.error_code())}, {"message", status.error_message()}});
+    // Mapping not (yet) up is normal at start-up and while it restarts: retry quietly. A stream
+    // that had delivered and then broke, or any other error, is worth a warning.
+    const bool not_up = status.error_code() == grpc::StatusCode::UNAVAILABLE && !delivered;
+    (not_up ? LogDebug : LogWarning)("mapping_watch_ended", {{"code", static_cast<int>(status.error_code())},
+                                                             {"message", status.error_message()},
+                                                             {"retry_s", 1}});
     mu_.AwaitWithTimeout(absl::Condition(&stopping_), absl::Seconds(1));
   }
 }

@@ -158,7 +158,17 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::DecomposeInstruction(grpc::Callba
 grpc::ServerUnaryReactor* OperatorServiceImpl::ResolveTarget(grpc::CallbackServerContext* context,
                                                              const api::ResolveTargetRequest* request,
                                                              api::ResolveTargetResponse* response) {
-  return Reply(context, hub_->ResolveTarget(*request), [&](api::ResolveTargetResponse r) { *response = std::move(r); });
+  absl::StatusOr<api::ResolveTargetResponse> fast = hub_->ResolveTarget(*request);
+  if (!fast.ok() || !hub_->WantsSlowPath(*request, *fast)) {
+    return Reply(context, std::move(fast), [&](api::ResolveTargetResponse r) { *response = std::move(r); });
+  }
+  // The model answers later on another thread; the reactor finishes then (no thread waits).
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  hub_->ResolveSlow(*request, *std::move(fast), [reactor, response](absl::StatusOr<api::ResolveTargetResponse> r) {
+    if (r.ok()) *response = *std::move(r);
+    reactor->Finish(ToGrpcStatus(r.status()));
+  });
+  return reactor;
 }
 
 }  // namespace semnav::reasoning

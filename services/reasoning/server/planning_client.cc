@@ -24,6 +24,18 @@ void SetDeadline(grpc::ClientContext& context, int deadline_ms) {
 
 }  // namespace
 
+void AddEroiValues(const ExplorationContext& context, pb::SelectExplorationGoalRequest* request) {
+  // Mapping includes both corner cells of a window, so the far corner is pulled in by a quarter
+  // edge: ceil(cells / edge) then counts exactly the gateway's columns at any map resolution
+  // finer than a quarter edge.
+  pb::LiveMapGrid* live = request->mutable_source()->mutable_live_map();
+  live->mutable_window_min()->set_x(context.eroi_window_min.x());
+  live->mutable_window_min()->set_y(context.eroi_window_min.y());
+  live->mutable_window_max()->set_x(context.eroi_window_max.x() - context.eroi_edge_m / 4.0);
+  live->mutable_window_max()->set_y(context.eroi_window_max.y() - context.eroi_edge_m / 4.0);
+  for (double value : context.eroi_values) request->add_eroi_semantic_values(value);
+}
+
 PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings)
     : channel_(channel), stub_(pb::PlanningService::NewStub(channel)), settings_(std::move(settings)) {
   channel_->GetState(/*try_to_connect=*/true);
@@ -73,17 +85,50 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   return path;
 }
 
+grpc::Status PlanningClient::Select(const pb::SelectExplorationGoalRequest& request,
+                                    pb::SelectExplorationGoalResponse* response) {
+  grpc::ClientContext call;
+  SetDeadline(call, settings_.deadline_ms);
+  return stub_->SelectExplorationGoal(&call, request, response);
+}
+
 absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const RobotPose& pose) {
+  return SelectGoal(pose, "", ExplorationContext{});
+}
+
+absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const RobotPose& pose, const std::string& strategy,
+                                                           const ExplorationContext& context) {
   if (!Ready("SelectExplorationGoal")) return absl::NotFoundError("planning service not connected");
   pb::SelectExplorationGoalRequest request;
   request.mutable_source()->mutable_live_map();
   SetPose(pose.position, request.mutable_robot());
   request.mutable_robot()->set_yaw(pose.yaw);
-  request.set_strategy(strategy_);
-  grpc::ClientContext context;
-  SetDeadline(context, settings_.deadline_ms);
+  pb::ExplorationStrategy chosen = strategy_;
+  if (!strategy.empty() && !pb::ExplorationStrategy_Parse("EXPLORATION_STRATEGY_" + strategy, &chosen)) {
+    return absl::InvalidArgumentError(absl::StrCat("exploration strategy '", strategy, "' is unknown"));
+  }
+  request.set_strategy(chosen);
+  for (const ExplorationHint& hint : context.objects) {
+    pb::SemanticObject* object = request.mutable_semantics()->add_objects();
+    object->set_label(hint.label);
+    SetPose(hint.position, object->mutable_position());
+    object->set_relevance(hint.relevance);
+    object->set_relation(hint.relation);
+    object->set_cooccurrence(hint.cooccurrence);
+  }
+  for (const Eigen::Vector3d& place : context.visited) SetPose(place, request.mutable_semantics()->add_visited());
+  const bool eroi_values = chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
+  if (eroi_values) AddEroiValues(context, &request);
   pb::SelectExplorationGoalResponse response;
-  const grpc::Status status = stub_->SelectExplorationGoal(&context, request, &response);
+  grpc::Status status = Select(request, &response);
+  if (eroi_values && status.error_code() == grpc::StatusCode::INVALID_ARGUMENT) {
+    // Our grid and planning's disagree (eroi.delta != planning's eroi_size_m): explore on
+    // planning's uniform values rather than not at all.
+    LogWarning("eroi_values_rejected", {{"message", status.error_message()}, {"fallback", "uniform values"}});
+    request.mutable_source()->mutable_live_map()->Clear();
+    request.clear_eroi_semantic_values();
+    status = Select(request, &response);
+  }
   if (!status.ok()) {
     return absl::NotFoundError(absl::StrCat("no exploration goal from planning: ", status.error_message()));
   }

@@ -15,18 +15,28 @@
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/reasoning/core/navigation_interfaces.h"
 #include "services/reasoning/server/gateway_config.h"
+#include "services/reasoning/server/task_planner.h"
 
 namespace semnav::reasoning {
 
-class PlanningClient : public PathPlanner {
+// EROI_UTILITY: the live-map window whose EROIs are the context's columns, and their values.
+void AddEroiValues(const ExplorationContext& context, planning::v1::SelectExplorationGoalRequest* request);
+
+// SelectGoal sends the task's SemanticContext (SEMANTIC_FRONTIER's language and grounding inputs);
+// ExplorationGoal without a task asks with the configured strategy and no context.
+class PlanningClient : public PathPlanner, public ExplorationService {
  public:
   PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings);
 
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override;
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose& pose) override;
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const RobotPose& pose, const std::string& strategy,
+                                             const ExplorationContext& context) override;
 
  private:
   bool Ready(const char* call);
+  grpc::Status Select(const planning::v1::SelectExplorationGoalRequest& request,
+                      planning::v1::SelectExplorationGoalResponse* response);
 
   std::shared_ptr<grpc::Channel> channel_;
   std::unique_ptr<planning::v1::PlanningService::Stub> stub_;

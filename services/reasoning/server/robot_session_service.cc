@@ -1,12 +1,13 @@
 #include "services/reasoning/server/robot_session_service.h"
 
+#include "services/common/logging/log.h"
 #include "services/common/status/grpc_status.h"
 #include "services/reasoning/server/queued_writer.h"
 
 namespace semnav::reasoning {
 namespace {
 
-// Reads hello, then states and feedback; the hub writes commands through the queued writer.
+// Reads hello, then states, feedback and camera frames; the hub writes commands through the queued writer.
 class SessionReactor
     : public QueuedWriter<grpc::ServerBidiReactor<api::ConnectRequest, api::ConnectResponse>, api::ConnectResponse> {
  public:
@@ -48,6 +49,12 @@ class SessionReactor
         return absl::OkStatus();
       case api::ConnectRequest::kFeedback:
         hub_->OnFeedback(this, request_.feedback());
+        return absl::OkStatus();
+      case api::ConnectRequest::kCamera:
+        if (absl::Status status = hub_->OnCameraFrame(this, request_.camera()); !status.ok()) {
+          // A bad frame is the camera's problem, not the session's: log it and keep the stream.
+          LogWarning("camera_frame_rejected", {{"message", status.message()}});
+        }
         return absl::OkStatus();
       case api::ConnectRequest::kHello:
         return FieldError(absl::StatusCode::kInvalidArgument, "hello", "only the first message may be a hello");

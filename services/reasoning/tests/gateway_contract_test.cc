@@ -2,6 +2,7 @@
 // session stream and an operator through the generated stubs.
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <memory>
 #include <thread>
 
@@ -383,6 +384,19 @@ TEST_F(GatewayContractTest, SessionMustStartWithHello) {
   grpc::Status status = stream->Finish();
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(status)->field(), "hello");
+}
+
+// A configured commonsense prior that cannot be read stops the binary with the key named.
+TEST(GatewayBinaryTest, UnreadablePriorPathIsAConfigError) {
+  const std::string config = ::testing::TempDir() + "/gateway_bad_prior.yaml";
+  std::ofstream(config) << "gateway:\n  prior_path: /nonexistent/conceptnet-data.json\n";
+  absl::StatusOr<semnav::testing::ProcessResult> run =
+      semnav::testing::RunToCompletion("semnav-gateway", {"--config", config, "--listen", "127.0.0.1:0"});
+  ASSERT_TRUE(run.ok()) << run.status();
+  EXPECT_EQ(run->exit_code, 2) << run->output;
+  EXPECT_NE(run->output.find("prior_path: offline prior file /nonexistent/conceptnet-data.json cannot be read"),
+            std::string::npos)
+      << run->output;
 }
 
 }  // namespace

@@ -3,8 +3,6 @@
 // stream. "go to the table" must run NAVIGATE -> APPROACH -> VERIFY (confirmed by new detections)
 // and end with a STOP within 1 m of the table.
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <thread>
 
 #include <grpcpp/grpcpp.h>
@@ -13,6 +11,7 @@
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 #include "semnav/reasoning/v1/robot_session.grpc.pb.h"
 #include "services/reasoning/testing/operator_calls.h"
+#include "services/reasoning/testing/service_stack.h"
 #include "services/reasoning/testing/table_scene_frames.h"
 #include "tests/support/service_process.h"
 
@@ -29,16 +28,12 @@ std::chrono::system_clock::time_point Deadline() {
 class GatewayMappingContractTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string dir = ::testing::TempDir() + "/gateway_mapping_contract";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/maps\n"
-                                         << "  watch_min_interval_ms: 20\n";
-    auto mapping = semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", dir + "/mapping.yaml"});
+    const std::string dir = testing::FreshDir("gateway_mapping_contract");
+    auto mapping = testing::StartMapping(dir);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
-    std::ofstream(dir + "/gateway.yaml") << "gateway:\n  mapping:\n    address: " << mapping_->address() << "\n";
-    auto gateway = semnav::testing::ServiceProcess::Start("semnav-gateway", {"--config", dir + "/gateway.yaml"});
+    auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
+                                            "gateway:\n  mapping:\n    address: " + mapping_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());

@@ -3,8 +3,6 @@
 // the table crosses the tall box must receive a navigate command whose planned path goes round it.
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include <grpcpp/grpcpp.h>
 
@@ -12,7 +10,11 @@
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 #include "semnav/reasoning/v1/robot_session.grpc.pb.h"
+#include "semnav/planning/v1/planning_service.grpc.pb.h"
+#include "services/reasoning/core/eroi_search.h"
+#include "services/reasoning/server/planning_client.h"
 #include "services/reasoning/testing/operator_calls.h"
+#include "services/reasoning/testing/service_stack.h"
 #include "services/reasoning/testing/table_scene_frames.h"
 #include "tests/support/service_process.h"
 
@@ -52,20 +54,17 @@ const Eigen::Vector2d kStart(1.5, 1.3);
 class GatewayPlanningContractTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string dir = ::testing::TempDir() + "/gateway_planning_contract";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/maps\n";
-    auto mapping = semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", dir + "/mapping.yaml"});
+    const std::string dir = testing::FreshDir("gateway_planning_contract");
+    auto mapping = testing::StartMapping(dir);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
-    std::ofstream(dir + "/planning.yaml") << "planning:\n  mapping:\n    address: " << mapping_->address() << "\n";
-    auto planning = semnav::testing::ServiceProcess::Start("semnav-planning", {"--config", dir + "/planning.yaml"});
+    auto planning = testing::StartWithConfig("semnav-planning", dir, "planning.yaml",
+                                             "planning:\n  mapping:\n    address: " + mapping_->address() + "\n");
     ASSERT_TRUE(planning.ok()) << planning.status();
     planning_ = *std::move(planning);
-    std::ofstream(dir + "/gateway.yaml") << "gateway:\n  mapping:\n    address: " << mapping_->address()
-                                         << "\n  planning:\n    address: " << planning_->address() << "\n";
-    auto gateway = semnav::testing::ServiceProcess::Start("semnav-gateway", {"--config", dir + "/gateway.yaml"});
+    auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
+                                            "gateway:\n  mapping:\n    address: " + mapping_->address() +
+                                                "\n  planning:\n    address: " + planning_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
@@ -156,6 +155,43 @@ TEST_F(GatewayPlanningContractTest, NavigateCarriesAPlannedPathRoundTheTableAndI
   EXPECT_EQ(testing::FetchTask(*operator_, *task_id)->replans(), 1 + fallbacks);
   session->WritesDone();
   session_context.TryCancel();
+}
+
+// The gateway's EROI columns and planning's EROI grid over the window the gateway asks for must
+// coincide (planning refuses a value count that differs from its EROI count).
+TEST_F(GatewayPlanningContractTest, EroiValuesFitPlanningsEroiGridOverTheGatewaysWindow) {
+  ASSERT_TRUE(testing::StreamLabelledFrames(mapping_->channel(), 1, 6, "clock", kClock).ok());
+  auto planning = planning::v1::PlanningService::NewStub(planning_->channel());
+  const auto select = [&](double delta, int nx, int ny) {
+    EroiSearchConfig config;
+    config.grid.delta = delta;
+    config.grid.nx = nx;
+    config.grid.ny = ny;
+    absl::StatusOr<EroiSearch> search = EroiSearch::Create("clock", config);
+    EXPECT_TRUE(search.ok());
+    ExplorationContext context;
+    context.eroi_values = search->PlanarValues();
+    context.eroi_window_min = search->WindowMin();
+    context.eroi_window_max = search->WindowMax();
+    context.eroi_edge_m = delta;
+    planning::v1::SelectExplorationGoalRequest request;
+    request.mutable_robot()->set_x(kStart.x());
+    request.mutable_robot()->set_y(kStart.y());
+    request.set_strategy(planning::v1::EXPLORATION_STRATEGY_EROI_UTILITY);
+    AddEroiValues(context, &request);
+    planning::v1::SelectExplorationGoalResponse response;
+    grpc::ClientContext call;
+    return planning->SelectExplorationGoal(&call, request, &response);
+  };
+  // Planning's default EROI edge is 2 m: 4 x 2 columns from (0, 0) fit at any grid size.
+  for (auto [nx, ny] : std::vector<std::pair<int, int>>{{3, 1}, {4, 2}, {2, 3}}) {
+    const grpc::Status status = select(2.0, nx, ny);
+    EXPECT_NE(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << nx << "x" << ny << ": " << status.error_message();
+  }
+  // A 3 m gateway grid does not match planning's 2 m EROIs: refused by field.
+  const grpc::Status mismatch = select(3.0, 2, 1);
+  EXPECT_EQ(mismatch.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(mismatch.error_message().find("eroi_semantic_values"), std::string::npos) << mismatch.error_message();
 }
 
 }  // namespace

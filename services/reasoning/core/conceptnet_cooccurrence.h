@@ -1,0 +1,28 @@
+// CooccurrencePrior over the model proxy's ConceptNet AtLocation prior (shared/data, CC BY-SA
+// 4.0; the same file and loader the proxy's offline backend uses): two objects co-occur as much
+// as their place distributions overlap (PlacePrior::Relatedness, cosine in [0, 1]; fork ~ knife
+// > 0.6, fork ~ toilet = 0). Names go through the proxy's canonical terms ("sofa" -> "couch").
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "absl/status/statusor.h"
+#include "services/modelproxy/core/offline/place_prior.h"
+#include "services/reasoning/core/exploration_context.h"
+
+namespace semnav::reasoning {
+
+class ConceptNetCooccurrence final : public CooccurrencePrior {
+ public:
+  // `json_path`: conceptnet-data.json. NOT_FOUND / INVALID_ARGUMENT from the loader.
+  static absl::StatusOr<ConceptNetCooccurrence> Load(const std::string& json_path);
+
+  double Cooccurrence(std::string_view target, std::string_view label) const override;
+
+ private:
+  explicit ConceptNetCooccurrence(modelproxy::offline::PlacePrior prior) : prior_(std::move(prior)) {}
+  modelproxy::offline::PlacePrior prior_;
+};
+
+}  // namespace semnav::reasoning

@@ -1,0 +1,79 @@
+#include "services/reasoning/core/eroi_search.h"
+
+#include <algorithm>
+
+#include "services/reasoning/core/search_prompts.h"
+#include "services/reasoning/core/vlm_answer.h"
+
+namespace semnav::reasoning {
+
+absl::StatusOr<EroiSearch> EroiSearch::Create(std::string target, const EroiSearchConfig& config) {
+  if (target.empty()) return absl::InvalidArgumentError("target: is required for the EROI search");
+  absl::StatusOr<EroiGrid> grid = EroiGrid::Create(config.grid);
+  if (!grid.ok()) return grid.status();
+  return EroiSearch(std::move(target), *std::move(grid), config);
+}
+
+EroiSearch::EroiSearch(std::string target, EroiGrid grid, const EroiSearchConfig& config)
+    : target_(std::move(target)),
+      grid_(std::make_unique<const EroiGrid>(std::move(grid))),
+      evidence_radius_m_(config.evidence_radius_m > 0.0 ? config.evidence_radius_m : config.grid.delta),
+      mapping_config_(config.mapping),
+      regions_(grid_.get(), config.regions),
+      values_(grid_->size()) {}
+
+EroiObservation EroiSearch::Annotate(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                                     const PinholeCamera& camera, cv::Mat& image) const {
+  const InverseMapper mapper(grid_.get(), mapping_config_);
+  EroiObservation observation;
+  observation.labels = InverseMapper::Cull(mapper.Project(position, orientation, camera));
+  mapper.Draw(observation.labels, image);
+  observation.prompt = BuildSearchPrompt(target_);
+  return observation;
+}
+
+EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
+  EroiEvidence evidence;
+  for (const CodeDescription& pair : ParseCodeDescriptions(answer)) {
+    absl::StatusOr<Eigen::Vector3d> centre = grid_->Decode(pair.code);
+    if (!centre.ok()) continue;  // a code the VLM invented or misread
+    ++evidence.codes_used;
+    values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
+    absl::StatusOr<std::optional<RegionDue>> due = regions_.Add(*centre, pair.description);
+    if (due.ok() && due->has_value()) evidence.due.push_back(**due);
+  }
+  return evidence;
+}
+
+std::string EroiSearch::RegionPrompt(const RegionDue& region) const {
+  return BuildRegionScorePrompt(target_, region.descriptions);
+}
+
+absl::Status EroiSearch::OnRegionAnswer(const RegionDue& region, std::string_view answer) {
+  absl::StatusOr<int> score = ParseRegionScore(answer);
+  if (!score.ok()) return score.status();
+  values_.ApplyRegionScore(region.erois, *score);
+  return absl::OkStatus();
+}
+
+std::vector<double> EroiSearch::PlanarValues() const {
+  const EroiGridSpec& spec = grid_->spec();
+  std::vector<double> planar(static_cast<std::size_t>((spec.nx + 1) * (spec.ny + 1)), 0.0);
+  for (int flat = 0; flat < grid_->size(); ++flat) {
+    const EroiIndex index = grid_->Unflatten(flat);
+    double& column = planar[static_cast<std::size_t>(index.j * (spec.nx + 1) + index.i)];
+    column = std::max(column, values_.value(flat));
+  }
+  return planar;
+}
+
+Eigen::Vector2d EroiSearch::WindowMin() const {
+  return grid_->spec().min.head<2>() - Eigen::Vector2d::Constant(grid_->spec().delta / 2.0);
+}
+
+Eigen::Vector2d EroiSearch::WindowMax() const {
+  const EroiGridSpec& spec = grid_->spec();
+  return WindowMin() + spec.delta * Eigen::Vector2d(spec.nx + 1, spec.ny + 1);
+}
+
+}  // namespace semnav::reasoning

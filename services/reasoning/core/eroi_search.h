@@ -1,0 +1,80 @@
+// The seed-000 open-space search loop for one task (2.1-2.2, Algorithms 1-2): each camera frame
+// gets the visible EROI codes drawn in (inverse mapping) and goes to the VLM with the
+// recognition-evaluation-transfer prompt; each `Code: G5A, Description: ...` answer is strong
+// evidence for the EROIs within r of the decoded centre (eq. 17-20) and a <position, description>
+// record of the region map; every theta = 3 records of a region unit trigger an LLM region score
+// (eq. 21-23). The values feed planning's EROI_UTILITY strategy on the same grid.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "services/reasoning/core/eroi_grid.h"
+#include "services/reasoning/core/inverse_mapping.h"
+#include "services/reasoning/core/region_map.h"
+#include "services/reasoning/core/semantic_values.h"
+
+namespace semnav::reasoning {
+
+struct EroiSearchConfig {
+  EroiGridSpec grid;               // the search volume (map frame)
+  InverseMappingConfig mapping;    // code label window and drawing
+  RegionMapConfig regions;         // region units and theta
+  double evidence_radius_m = 0.0;  // r of N_r (eq. 18); 0 = one EROI edge (the seed gives no value)
+};
+
+// A camera frame ready for the VLM: the prompt and the codes drawn into the image.
+struct EroiObservation {
+  std::string prompt;
+  std::vector<CodeLabel> labels;  // after occlusion culling (eq. 10)
+};
+
+// What a VLM answer changed.
+struct EroiEvidence {
+  int codes_used = 0;             // pairs whose code decoded inside the grid
+  std::vector<RegionDue> due;     // region units now due for an LLM score
+};
+
+class EroiSearch {
+ public:
+  // INVALID_ARGUMENT for a bad grid (see EroiGrid::Create) or an empty target.
+  static absl::StatusOr<EroiSearch> Create(std::string target, const EroiSearchConfig& config);
+
+  // Projects and culls the codes for a camera at `position` with orientation `orientation`
+  // (body frame x forward, z up; eq. 5-10) and draws them into `image`.
+  EroiObservation Annotate(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                           const PinholeCamera& camera, cv::Mat& image) const;
+  // Applies the VLM's answer (eq. 13 pairs; codes off the grid are skipped).
+  EroiEvidence OnVlmAnswer(std::string_view answer);
+  // Algorithm 2 step 3a prompt for a due region unit.
+  std::string RegionPrompt(const RegionDue& region) const;
+  // Eq. 21-23 with the LLM's score; INVALID_ARGUMENT (values unchanged) for an unusable answer.
+  absl::Status OnRegionAnswer(const RegionDue& region, std::string_view answer);
+
+  // Values per x-y column (the best over z), row-major with x fastest: the order of planning's
+  // eroi_semantic_values over the window PlanningWindow() describes.
+  std::vector<double> PlanarValues() const;
+  // The map-frame rectangle whose EROIs (edge delta, from its lower-left corner) are this grid's
+  // x-y columns: centres at min + delta * (i, j), so the window starts half an edge lower.
+  Eigen::Vector2d WindowMin() const;
+  Eigen::Vector2d WindowMax() const;
+
+  const EroiGrid& grid() const { return *grid_; }
+  const SemanticValues& values() const { return values_; }
+  const std::string& target() const { return target_; }
+
+ private:
+  EroiSearch(std::string target, EroiGrid grid, const EroiSearchConfig& config);
+
+  std::string target_;
+  std::unique_ptr<const EroiGrid> grid_;  // stable address: the region map refers to it
+  double evidence_radius_m_;
+  InverseMappingConfig mapping_config_;
+  RegionMap regions_;
+  SemanticValues values_;
+};
+
+}  // namespace semnav::reasoning

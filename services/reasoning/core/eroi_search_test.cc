@@ -1,0 +1,96 @@
+#include "services/reasoning/core/eroi_search.h"
+
+#include "gtest/gtest.h"
+
+namespace semnav::reasoning {
+namespace {
+
+// 5 x 4 x 1 EROIs of 2 m, centres (0..8, 0..6, 0): N = 20, prior 1/20.
+EroiSearchConfig Config() {
+  EroiSearchConfig config;
+  config.grid.min = Eigen::Vector3d(0, 0, 0);
+  config.grid.delta = 2.0;
+  config.grid.nx = 4;
+  config.grid.ny = 3;
+  config.grid.nz = 0;
+  return config;
+}
+
+int Flat(const EroiSearch& search, int i, int j) { return search.grid().Flatten({i, j, 0}); }
+
+TEST(GatewayEroiSearchTest, VlmCodesAreStrongEvidenceWithinOneEdgeByHand) {
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", Config());
+  ASSERT_TRUE(search.ok()) << search.status();
+  EXPECT_DOUBLE_EQ(search->values().prior(), 0.05);
+  // C2A = (i 2, j 1, k 0) = centre (4, 2, 0); r = delta = 2 m covers it and its 4 side
+  // neighbours (m = 5): s = (1 - 1/5) 0.05 + 1/5 = 0.24 (eq. 20).
+  const EroiEvidence evidence = search->OnVlmAnswer("Code: C2A, Description: a mug on the kitchen shelf\nnoise");
+  EXPECT_EQ(evidence.codes_used, 1);
+  EXPECT_TRUE(evidence.due.empty());  // 1 of theta = 3
+  for (auto [i, j] : std::vector<std::pair<int, int>>{{2, 1}, {1, 1}, {3, 1}, {2, 0}, {2, 2}}) {
+    EXPECT_NEAR(search->values().value(Flat(*search, i, j)), 0.24, 1e-12) << i << "," << j;
+  }
+  EXPECT_NEAR(search->values().value(Flat(*search, 3, 0)), 0.05, 1e-12);  // 2.83 m away
+  EXPECT_EQ(search->OnVlmAnswer("Code: Z9Z, Description: off the grid").codes_used, 0);
+}
+
+TEST(GatewayEroiSearchTest, ThirdRecordInARegionUnitTriggersTheRegionScoreByHand) {
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", Config());
+  ASSERT_TRUE(search.ok());
+  search->OnVlmAnswer("Code: C2A, Description: shelf");
+  search->OnVlmAnswer("Code: C2A, Description: counter");
+  const EroiEvidence third = search->OnVlmAnswer("Code: D1A, Description: sink");  // (3, 0): same 2x2 unit
+  ASSERT_EQ(third.due.size(), 1u);
+  const RegionDue& region = third.due[0];
+  ASSERT_EQ(region.erois.size(), 4u);  // i 2..3, j 0..1
+  EXPECT_EQ(region.descriptions.size(), 3u);
+  EXPECT_NE(search->RegionPrompt(region).find("[red mug]"), std::string::npos);
+
+  // (2, 1): evidence from C2A twice (0.05 -> 0.24 -> 0.392) and from D1A at (6, 0), 2.83 m
+  // away: not in its N_r. Region score 4 over k = 4 EROIs (eq. 22): s + (1 - s) 4 / 20.
+  const double before = search->values().value(Flat(*search, 2, 1));
+  EXPECT_NEAR(before, 0.392, 1e-12);
+  EXPECT_EQ(search->OnRegionAnswer(region, "maybe").code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NEAR(search->values().value(Flat(*search, 2, 1)), before, 1e-15);  // unchanged
+  ASSERT_TRUE(search->OnRegionAnswer(region, "Score: 4").ok());
+  EXPECT_NEAR(search->values().value(Flat(*search, 2, 1)), 0.392 + 0.608 * 0.2, 1e-12);
+}
+
+TEST(GatewayEroiSearchTest, PlanarValuesAndWindowMatchPlanningsRowMajorEroiGrid) {
+  EroiSearchConfig config = Config();
+  config.grid.nz = 1;  // two layers: a column's value is the better of the two
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", config);
+  ASSERT_TRUE(search.ok());
+  search->OnVlmAnswer("Code: A1B, Description: up high");  // (0, 0, 1) = (0, 0, 2)
+  const std::vector<double> planar = search->PlanarValues();
+  ASSERT_EQ(planar.size(), 20u);
+  // N = 40, prior 0.025; N_r of (0, 0, 2) with r = 2: itself, (2, 0, 2), (0, 2, 2), (0, 0, 0): m = 4.
+  EXPECT_NEAR(planar[0], 0.75 * 0.025 + 0.25, 1e-12);  // column (0, 0): max of both layers
+  EXPECT_NEAR(planar[1], 0.75 * 0.025 + 0.25, 1e-12);  // x fastest: (1, 0)
+  EXPECT_NEAR(planar[5], 0.75 * 0.025 + 0.25, 1e-12);  // (0, 1)
+  EXPECT_NEAR(planar[6], 0.025, 1e-12);
+  EXPECT_TRUE(search->WindowMin().isApprox(Eigen::Vector2d(-1, -1)));
+  EXPECT_TRUE(search->WindowMax().isApprox(Eigen::Vector2d(9, 7)));
+}
+
+TEST(GatewayEroiSearchTest, AnnotateDrawsDecodableCodesAndThePromptNamesTheTarget) {
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", Config());
+  ASSERT_TRUE(search.ok());
+  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
+  const cv::Mat blank = image.clone();
+  // Camera 4 m before the grid looking along +x: centres 4..10 m ahead are inside the 3-12 m window.
+  const EroiObservation observation = search->Annotate(Eigen::Vector3d(-4, 3, 0), Eigen::Quaterniond::Identity(),
+                                                       PinholeCamera{320, 320, 320, 240, 640, 480}, image);
+  ASSERT_FALSE(observation.labels.empty());
+  for (const CodeLabel& label : observation.labels) {
+    ASSERT_TRUE(search->grid().Decode(label.code).ok()) << label.code;
+    EXPECT_GT(label.distance_m, 3.0);
+    EXPECT_LT(label.distance_m, 12.0);
+  }
+  EXPECT_GT(cv::norm(image, blank, cv::NORM_L1), 0.0);  // codes drawn
+  EXPECT_NE(observation.prompt.find("[red mug]"), std::string::npos);
+  EXPECT_EQ(EroiSearch::Create("", Config()).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning

@@ -1,0 +1,92 @@
+#include "services/reasoning/core/exploration_context.h"
+
+#include <map>
+
+#include "gtest/gtest.h"
+#include "services/reasoning/core/conceptnet_cooccurrence.h"
+#include "services/reasoning/testing/test_lexicon.h"
+
+namespace semnav::reasoning {
+namespace {
+
+// A prior with fixed pairs, so the context's terms can be checked by hand.
+class TablePrior final : public CooccurrencePrior {
+ public:
+  explicit TablePrior(std::map<std::pair<std::string, std::string>, double> table) : table_(std::move(table)) {}
+  double Cooccurrence(std::string_view target, std::string_view label) const override {
+    auto it = table_.find({std::string(target), std::string(label)});
+    return it == table_.end() ? 0.0 : it->second;
+  }
+
+ private:
+  std::map<std::pair<std::string, std::string>, double> table_;
+};
+
+SceneObject Object(int64_t id, const char* label, double x) {
+  SceneObject object;
+  object.id = id;
+  object.label = label;
+  object.position = Eigen::Vector3d(x, 0.0, 0.0);
+  return object;
+}
+
+class GatewayExplorationContextTest : public ::testing::Test {
+ protected:
+  LabelMatcher matcher_{&ShippedLexicon(), 0.5};
+};
+
+TEST_F(GatewayExplorationContextTest, RelevanceRelationAndCooccurrenceByHand) {
+  SceneGraph graph;
+  graph.objects = {Object(1, "coffee cup", 1.0), Object(2, "table", 2.0), Object(3, "sink", 3.0),
+                   Object(4, "toilet", 4.0)};
+  TargetSpec target;
+  target.name = "cup";
+  target.relation = "on";
+  target.anchor = "table";
+  // The prior is asked with canonical lexicon names: "table" is the COCO "dining table".
+  const TablePrior prior({{{"cup", "sink"}, 0.4}, {{"cup", "dining table"}, 0.3}});
+  const ExplorationContext context = BuildExplorationContext(target, graph, matcher_, &prior, nullptr);
+  ASSERT_EQ(context.objects.size(), 3u);  // the toilet has no term: left out
+  EXPECT_EQ(context.objects[0].label, "coffee cup");
+  EXPECT_DOUBLE_EQ(context.objects[0].relevance, 0.5);  // Jaccard {coffee, cup} vs {cup}
+  EXPECT_DOUBLE_EQ(context.objects[0].relation, 0.0);
+  EXPECT_EQ(context.objects[1].label, "table");
+  EXPECT_DOUBLE_EQ(context.objects[1].relevance, 0.0);
+  EXPECT_DOUBLE_EQ(context.objects[1].relation, 1.0);  // anchor of "cup on table"
+  EXPECT_DOUBLE_EQ(context.objects[1].cooccurrence, 0.3);
+  EXPECT_EQ(context.objects[2].label, "sink");
+  EXPECT_DOUBLE_EQ(context.objects[2].cooccurrence, 0.4);
+  EXPECT_DOUBLE_EQ(context.objects[2].position.x(), 3.0);
+  EXPECT_TRUE(context.visited.empty());
+}
+
+TEST_F(GatewayExplorationContextTest, VisitedPlacesComeFromMemoryAndRoomsGiveNoObjects) {
+  TopologicalMemory memory(&matcher_, TopologicalMemoryConfig{});
+  memory.Update(Eigen::Vector3d(0, 0, 0), {}, {});
+  memory.Update(Eigen::Vector3d(3, 0, 0), {}, {});  // >= 2 m: a second node
+  SceneGraph graph;
+  graph.objects = {Object(1, "sink", 1.0)};
+  TargetSpec kitchen;
+  kitchen.name = "kitchen";
+  kitchen.is_room = true;
+  const TablePrior prior({{{"kitchen", "sink"}, 0.9}});
+  const ExplorationContext context = BuildExplorationContext(kitchen, graph, matcher_, &prior, &memory);
+  EXPECT_TRUE(context.objects.empty());
+  ASSERT_EQ(context.visited.size(), 2u);
+  EXPECT_DOUBLE_EQ(context.visited[1].x(), 3.0);
+}
+
+// The shipped ConceptNet prior (shared/data): objects found in the same places co-occur.
+TEST(GatewayConceptNetCooccurrenceTest, SharedPriorRelatesKitchenwareNotBathroomware) {
+  absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(SEMNAV_PRIOR_JSON);
+  ASSERT_TRUE(prior.ok()) << prior.status();
+  EXPECT_GT(prior->Cooccurrence("fork", "knife"), 0.6);  // the proxy's own test: > 0.6
+  EXPECT_EQ(prior->Cooccurrence("fork", "toilet"), 0.0);
+  EXPECT_NEAR(prior->Cooccurrence("sofa", "couch"), 1.0, 1e-12);  // canonical terms: sofa = couch
+  EXPECT_EQ(prior->Cooccurrence("fire extinguisher", "knife"), 0.0);  // unknown to the prior
+  EXPECT_EQ(ConceptNetCooccurrence::Load("/nonexistent/conceptnet.json").status().code(),
+            absl::StatusCode::kNotFound);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning

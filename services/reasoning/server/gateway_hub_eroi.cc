@@ -1,0 +1,73 @@
+// GatewayHub: the seed-000 open-space search loop of EROI_UTILITY tasks. Camera frames get the
+// EROI codes drawn in and go to the vision model (one call per task at a time; frames meanwhile
+// are dropped, motion never waits); answers update the semantic values, and region units that
+// collected theta descriptions are scored by the language model. Planning's EROI_UTILITY gets the
+// values with every exploration request (ContextFor).
+#include "services/reasoning/server/gateway_hub.h"
+
+#include "absl/strings/str_cat.h"
+#include "services/common/logging/log.h"
+#include "services/reasoning/server/camera_frame.h"
+#include "services/reasoning/server/hub_internal.h"
+
+namespace semnav::reasoning {
+
+using namespace hub_internal;
+
+absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, const api::CameraFrame& frame) {
+  absl::MutexLock lock(&mu_);
+  std::string robot_id;
+  Robot* robot = RobotOfSink(sink, &robot_id);
+  if (robot == nullptr || backends_.model == nullptr || shut_down_) return absl::OkStatus();
+  auto task = tasks_.find(robot->active_task);
+  if (task == tasks_.end() || task->second.eroi == nullptr || task->second.vision_busy ||
+      task->second.executor->progress().state != TaskState::kRunning) {
+    return absl::OkStatus();
+  }
+  absl::StatusOr<DecodedCameraFrame> decoded = DecodeCameraFrame(frame);
+  if (!decoded.ok()) return decoded.status();
+  const EroiObservation observation =
+      task->second.eroi->Annotate(decoded->position, decoded->orientation, decoded->camera, decoded->image);
+  task->second.vision_busy = true;
+  ++task->second.model_calls;
+  ++model_calls_;
+  const std::string task_id = task->first;
+  backends_.model->Ask({robot_id, task_id}, {observation.prompt, EncodePng(decoded->image)},
+                       [this, task_id](absl::StatusOr<std::string> answer) { OnVisionAnswer(task_id, std::move(answer)); });
+  return absl::OkStatus();
+}
+
+void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer) {
+  absl::MutexLock lock(&mu_);
+  auto task = tasks_.find(task_id);
+  if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
+  Task& t = task->second;
+  t.vision_busy = false;
+  if (!answer.ok()) {
+    LogDebug("eroi_vision_failed", {{"task", task_id}, {"message", answer.status().message()}});
+    return;
+  }
+  const EroiEvidence evidence = t.eroi->OnVlmAnswer(*answer);
+  LogDebug("eroi_vision_answer", {{"task", task_id}, {"codes", evidence.codes_used}, {"regions_due", evidence.due.size()}});
+  for (const RegionDue& region : evidence.due) {
+    ++t.model_calls;
+    ++model_calls_;
+    backends_.model->Ask({t.robot_id, task_id}, {t.eroi->RegionPrompt(region), ""},
+                         [this, task_id, region](absl::StatusOr<std::string> score) {
+                           OnRegionScore(task_id, region, std::move(score));
+                         });
+  }
+}
+
+void GatewayHub::OnRegionScore(const std::string& task_id, const RegionDue& region,
+                               absl::StatusOr<std::string> answer) {
+  absl::MutexLock lock(&mu_);
+  auto task = tasks_.find(task_id);
+  if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
+  const absl::Status applied = answer.ok() ? task->second.eroi->OnRegionAnswer(region, *answer) : answer.status();
+  if (!applied.ok()) {
+    LogDebug("eroi_region_score_unused", {{"task", task_id}, {"region", region.region}, {"message", applied.message()}});
+  }
+}
+
+}  // namespace semnav::reasoning

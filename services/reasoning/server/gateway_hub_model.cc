@@ -1,0 +1,146 @@
+// GatewayHub: the slow path over the model proxy (asynchronous: the robot keeps exploring while
+// the model thinks, seed 000 3.5), target text embeddings, and the exploration context.
+#include "services/reasoning/server/gateway_hub.h"
+
+#include "absl/strings/str_cat.h"
+#include "services/common/logging/log.h"
+#include "services/reasoning/core/selective_grounding.h"
+#include "services/reasoning/server/hub_internal.h"
+#include "services/reasoning/server/proto_convert.h"
+
+namespace semnav::reasoning {
+
+using namespace hub_internal;
+
+void GatewayHub::DispatchModelRequest(Task& task) {
+  if (backends_.model == nullptr || shut_down_) return;
+  std::optional<ModelRequest> request = task.executor->TakeModelRequest();
+  if (!request.has_value()) return;
+  ++task.model_calls;
+  ++model_calls_;
+  const std::string task_id = task.task_id;
+  auto shared = std::make_shared<const ModelRequest>(*std::move(request));
+  backends_.model->MatchTarget({task.robot_id, task_id}, shared->request,
+                               [this, task_id, shared](absl::StatusOr<std::string> answer) {
+                                 OnModelAnswer(task_id, *shared, std::move(answer));
+                               });
+}
+
+void GatewayHub::OnModelAnswer(const std::string& task_id, const ModelRequest& request,
+                               absl::StatusOr<std::string> answer) {
+  absl::MutexLock lock(&mu_);
+  auto task = tasks_.find(task_id);
+  if (shut_down_ || task == tasks_.end()) return;
+  SlowDecision decision;  // failures keep exploring (the executor re-asks on a newer graph)
+  if (!answer.ok()) {
+    decision.explanation = absl::StrCat("model call failed: ", answer.status().message());
+  } else if (absl::StatusOr<SlowDecision> parsed = ParseResolveAnswer(*answer, request.grounded, config_.slow_path);
+             parsed.ok()) {
+    decision = *std::move(parsed);
+  } else {
+    decision.explanation = absl::StrCat("model answer rejected: ", parsed.status().message());
+  }
+  LogDebug("slow_path_answer", {{"task", task_id},
+                                {"action", decision.action == SlowAction::kGoal           ? "goal"
+                                           : decision.action == SlowAction::kVisionVerify ? "verify"
+                                                                                          : "explore"},
+                                {"object", decision.object_id},
+                                {"confidence", decision.confidence},
+                                {"explanation", decision.explanation}});
+  Apply(task->second, task->second.executor->OnSlowDecision(Now(), request.graph_revision, decision));
+}
+
+void GatewayHub::RequestTextEmbedding(Task& task) {
+  if (backends_.model == nullptr || !config_.model_proxy.text_embeddings) return;
+  const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
+  if (target == nullptr || target->is_room) return;
+  ++task.model_calls;
+  ++model_calls_;
+  const std::string task_id = task.task_id;
+  backends_.model->EmbedText({task.robot_id, task_id}, target->text.empty() ? target->name : target->text,
+                             [this, task_id](absl::StatusOr<std::vector<float>> embedding) {
+                               OnTextEmbedding(task_id, std::move(embedding));
+                             });
+}
+
+void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding) {
+  absl::MutexLock lock(&mu_);
+  auto task = tasks_.find(task_id);
+  if (shut_down_ || task == tasks_.end()) return;
+  if (!embedding.ok()) {
+    // The seed's fallback stays: the label match stands in for the embedding term.
+    LogDebug("text_embedding_unavailable", {{"task", task_id}, {"message", embedding.status().message()}});
+    return;
+  }
+  task->second.executor->SetTextEmbedding(*std::move(embedding));
+  Apply(task->second, task->second.executor->OnSceneGraph(Now(), scene_graph_));
+}
+
+bool GatewayHub::WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const {
+  return request.allow_slow_path() && !fast.has_target() && backends_.model != nullptr;
+}
+
+void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request, api::ResolveTargetResponse fast,
+                             std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done) {
+  absl::MutexLock lock(&mu_);
+  if (shut_down_) {
+    done(absl::UnavailableError("gateway shutting down"));
+    return;
+  }
+  const TargetSpec target = FromProto(fast.understood());
+  GroundingConfig grounding;
+  grounding.max_objects = config_.executor.grounding_max_objects;
+  auto grounded = std::make_shared<const SceneGraph>(SelectiveGrounding(target, scene_graph_, matcher_, grounding).graph);
+  fast.set_grounded_objects(static_cast<int>(grounded->objects.size()));
+  if (grounded->objects.empty()) {
+    fast.set_explanation("slow path not run: the scene graph has nothing to ground the target on");
+    done(std::move(fast));
+    return;
+  }
+  ++model_calls_;
+  const ResolveRequest call = BuildResolveRequest(request.text(), target, *grounded);
+  backends_.model->MatchTarget(
+      {request.robot_id(), ""}, call,
+      [this, grounded, fast = std::move(fast), done = std::move(done)](absl::StatusOr<std::string> answer) mutable {
+        if (!answer.ok()) {
+          done(answer.status());
+          return;
+        }
+        const absl::StatusOr<SlowDecision> decision = ParseResolveAnswer(*answer, *grounded, config_.slow_path);
+        if (!decision.ok()) {
+          done(absl::Status(decision.status().code(), absl::StrCat("model answer: ", decision.status().message())));
+          return;
+        }
+        fast.set_explanation(decision->explanation);
+        if (decision->action == SlowAction::kGoal) {
+          const SceneObject* object = grounded->FindObject(decision->object_id);
+          api::ResolvedTarget* resolved = fast.mutable_target();
+          resolved->set_object_id(object->id);
+          resolved->mutable_position()->set_x(object->position.x());
+          resolved->mutable_position()->set_y(object->position.y());
+          resolved->mutable_position()->set_z(object->position.z());
+          resolved->set_confidence(decision->confidence);
+          resolved->set_path(api::RESOLUTION_PATH_SLOW);
+          resolved->set_label(object->label);
+        }
+        done(std::move(fast));
+      });
+}
+
+ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {
+  auto task = tasks_.find(task_id);
+  if (task == tasks_.end()) return {};
+  const TargetSpec* target = PrimaryTarget(task->second.executor->subgoals());
+  const Robot& robot = RobotRecord(task->second.robot_id);
+  ExplorationContext context = BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, scene_graph_,
+                                                       matcher_, backends_.prior, robot.memory.get());
+  if (const EroiSearch* search = task->second.eroi.get(); search != nullptr) {
+    context.eroi_values = search->PlanarValues();
+    context.eroi_window_min = search->WindowMin();
+    context.eroi_window_max = search->WindowMax();
+    context.eroi_edge_m = search->grid().spec().delta;
+  }
+  return context;
+}
+
+}  // namespace semnav::reasoning

@@ -1,0 +1,311 @@
+// The hub's slow path with a scripted model: calls are made without blocking, the robot keeps
+// receiving exploration commands while the answer is pending, and the answer (delivered on
+// another thread, as the proxy client does) is validated and acted on.
+#include <thread>
+#include <vector>
+
+#include "gtest/gtest.h"
+#include "services/reasoning/server/camera_frame.h"
+#include "services/reasoning/server/gateway_hub.h"
+#include "services/reasoning/server/hub_test_support.h"
+#include "services/reasoning/server/robot_local_planner.h"
+#include "services/reasoning/testing/test_lexicon.h"
+
+namespace semnav::reasoning {
+namespace {
+
+// Records calls; the test answers them later from another thread.
+class ScriptedModel : public LanguageModel {
+ public:
+  struct Match {
+    ModelCaller caller;
+    ResolveRequest request;
+    AnswerDone done;
+  };
+  void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override {
+    matches.push_back({caller, request, std::move(done)});
+  }
+  void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) override {
+    asks.push_back({caller, question, std::move(done)});
+  }
+  void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) override {
+    embed_texts.push_back(text);
+    embeds.push_back(std::move(done));
+    (void)caller;
+  }
+  void Stop() override { ++stops; }
+  void Answer(std::size_t index, absl::StatusOr<std::string> answer) {
+    std::thread([&] { matches[index].done(std::move(answer)); }).join();
+  }
+
+  struct Question {
+    ModelCaller caller;
+    ModelQuestion question;
+    AnswerDone done;
+  };
+  void Reply(std::size_t index, absl::StatusOr<std::string> answer) {
+    std::thread([&] { asks[index].done(std::move(answer)); }).join();
+  }
+
+  std::vector<Match> matches;
+  std::vector<Question> asks;
+  std::vector<std::string> embed_texts;
+  std::vector<EmbeddingDone> embeds;
+  int stops = 0;
+};
+
+// A cup without a colour: "red cup" scores label 0.5 (colour unknown), embedding 0.5 (fallback),
+// detector 0.9, spatial 0: fused 0.175 + 0.175 + 0.135 = 0.485 <= 0.75, so the slow path runs.
+SceneGraph CupScene() {
+  SceneGraph graph;
+  graph.revision = 3;
+  SceneObject cup;
+  cup.id = 7;
+  cup.label = "cup";
+  cup.position = Eigen::Vector3d(4.0, 0.0, 0.8);
+  cup.score = 0.9;
+  cup.detection_count = 10;
+  graph.objects.push_back(cup);
+  return graph;
+}
+
+void Reached(GatewayHub& hub, RecordingSink& session, const api::RobotCommand& command) {
+  api::CommandFeedback feedback;
+  feedback.set_command_id(command.command_id());
+  feedback.set_kind(api::FEEDBACK_KIND_GOAL_REACHED);
+  hub.OnFeedback(&session, feedback);
+}
+
+class GatewayHubModelTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    hub_.OnSceneGraph(CupScene());
+    api::SessionHello hello;
+    hello.set_robot_id("r1");
+    ASSERT_TRUE(hub_.OpenSession(hello, &session_).ok());
+    hub_.OnRobotState(&session_, At(0, 0));
+  }
+  std::string SubmitFindRedCup() {
+    api::SubmitInstructionRequest request;
+    request.set_request_id("find-1");
+    request.set_robot_id("r1");
+    request.set_instruction("find the red cup");
+    absl::StatusOr<api::SubmitInstructionResponse> response = hub_.Submit(request);
+    EXPECT_TRUE(response.ok()) << response.status();
+    return response.ok() ? response->task_id() : "";
+  }
+
+  RobotLocalPlanner planner_;
+  ScriptedModel model_;
+  GatewayHub hub_{GatewayConfig{}, &ShippedLexicon(), &planner_, GatewayBackends{nullptr, &model_, nullptr}};
+  RecordingSink session_;
+};
+
+TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnsweredObject) {
+  const std::string task_id = SubmitFindRedCup();
+  // One match_target call for the grounded cup, one text embedding; neither answered yet.
+  ASSERT_EQ(model_.matches.size(), 1u);
+  EXPECT_EQ(model_.matches[0].caller.task_id, task_id);
+  EXPECT_EQ(model_.matches[0].caller.robot_id, "r1");
+  EXPECT_NE(model_.matches[0].request.task_json.find(R"("id":"7")"), std::string::npos);
+  ASSERT_EQ(model_.embed_texts.size(), 1u);
+  EXPECT_EQ(hub_.GetTask(task_id)->model_calls(), 2);
+  EXPECT_EQ(hub_.GetTask(task_id)->model_requests(), 1);
+
+  // Motion does not wait: exploring now, and on arrival the robot gets the next step at once.
+  const api::RobotCommand explore = session_.Last();
+  ASSERT_TRUE(explore.has_navigate()) << explore.ShortDebugString();
+  EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
+  hub_.OnRobotState(&session_, At(explore.navigate().goal().x(), explore.navigate().goal().y()));
+  Reached(hub_, session_, explore);
+  EXPECT_TRUE(session_.Last().has_rotate()) << session_.Last().ShortDebugString();  // scan at the goal
+
+  // The embedding backend is missing (offline default): the fast path keeps its fallback.
+  std::thread([&] { model_.embeds[0](absl::UnavailableError("offline: UNIMPLEMENTED")); }).join();
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+
+  // The answer: cup 7 at 0.8 >= 0.6 -> goal by the slow path; the robot approaches it.
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.8, "ranking": [{"id": "7", "score": 0.8}]})");
+  const api::TaskSnapshot task = *hub_.GetTask(task_id);
+  ASSERT_TRUE(task.has_target());
+  EXPECT_EQ(task.target().object_id(), 7);
+  EXPECT_EQ(task.target().path(), api::RESOLUTION_PATH_SLOW);
+  EXPECT_DOUBLE_EQ(task.target().confidence(), 0.8);
+  const api::RobotCommand approach = session_.Last();
+  ASSERT_TRUE(approach.has_navigate()) << approach.ShortDebugString();
+  EXPECT_DOUBLE_EQ(approach.navigate().max_speed_mps(), 0.15);
+  const Eigen::Vector2d goal(approach.navigate().goal().x(), approach.navigate().goal().y());
+  EXPECT_NEAR((goal - Eigen::Vector2d(4.0, 0.0)).norm(), 0.5, 1e-9);  // APPROACH stops 0.5 m away
+  EXPECT_EQ(task.model_calls(), 2);  // nothing new to ask once the target is known
+}
+
+TEST_F(GatewayHubModelTest, OfflineAnswersAreWeighedLowerAndNotInGraphKeepsExploring) {
+  const std::string task_id = SubmitFindRedCup();
+  // Offline prior 0.7 x 0.75 = 0.525: below 0.6, not below 0.5 -> neither goal nor vision check.
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.7, "ranking": [{"id": "7", "score": 0.7}], "offline": true})");
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+  EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
+
+  // A newer scene graph: the executor asks again; "not in the graph" -> keep exploring.
+  SceneGraph graph = CupScene();
+  graph.revision = 4;
+  hub_.OnSceneGraph(graph);
+  ASSERT_EQ(model_.matches.size(), 2u);
+  model_.Answer(1, R"({"best_id": "", "confidence": 0.0, "ranking": []})");
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(), "model: keep exploring ()");
+  EXPECT_EQ(hub_.GetTask(task_id)->model_calls(), 3);
+}
+
+TEST_F(GatewayHubModelTest, FailedOrMalformedAnswersKeepExploringAndSayWhy) {
+  const std::string task_id = SubmitFindRedCup();
+  model_.Answer(0, absl::DeadlineExceededError("deadline passed during the chain"));
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(),
+            "model: keep exploring (model call failed: deadline passed during the chain)");
+  SceneGraph graph = CupScene();
+  graph.revision = 4;
+  hub_.OnSceneGraph(graph);
+  ASSERT_EQ(model_.matches.size(), 2u);
+  model_.Answer(1, R"({"best_id": "99", "confidence": 0.9, "ranking": []})");  // not a candidate
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(),
+            "model: keep exploring (model answer rejected: best_id: '99' is not a candidate)");
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+}
+
+TEST_F(GatewayHubModelTest, ResolveTargetRunsTheSlowPathWithoutBlockingAndReportsTheGrounding) {
+  api::ResolveTargetRequest request;
+  request.set_robot_id("r1");
+  request.set_text("the red cup");
+  request.set_allow_slow_path(true);
+  absl::StatusOr<api::ResolveTargetResponse> fast = hub_.ResolveTarget(request);
+  ASSERT_TRUE(fast.ok()) << fast.status();
+  EXPECT_FALSE(fast->has_target());
+  EXPECT_NEAR(fast->best_candidate().score().fused(), 0.485, 1e-9);
+  ASSERT_TRUE(hub_.WantsSlowPath(request, *fast));
+  std::optional<absl::StatusOr<api::ResolveTargetResponse>> result;
+  hub_.ResolveSlow(request, *fast, [&](absl::StatusOr<api::ResolveTargetResponse> r) { result = std::move(r); });
+  EXPECT_FALSE(result.has_value());  // returned before the model answered
+  ASSERT_EQ(model_.matches.size(), 1u);
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.9, "ranking": [{"id": "7", "score": 0.9, "reason": "a cup"}]})");
+  ASSERT_TRUE(result.has_value() && result->ok());
+  const api::ResolveTargetResponse& slow = **result;
+  EXPECT_EQ(slow.grounded_objects(), 1);
+  EXPECT_EQ(slow.explanation(), "a cup");
+  EXPECT_EQ(slow.target().object_id(), 7);
+  EXPECT_EQ(slow.target().path(), api::RESOLUTION_PATH_SLOW);
+  EXPECT_DOUBLE_EQ(slow.target().confidence(), 0.9);
+  EXPECT_NEAR(slow.best_candidate().score().fused(), 0.485, 1e-9);  // the fast-path scores stay
+
+  request.set_allow_slow_path(false);
+  EXPECT_FALSE(hub_.WantsSlowPath(request, *fast));
+}
+
+TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
+  const std::string task_id = SubmitFindRedCup();
+  const std::size_t sent = session_.messages().size();
+  hub_.Shutdown();
+  EXPECT_EQ(model_.stops, 1);
+  model_.Answer(0, R"({"best_id": "7", "confidence": 0.9, "ranking": []})");
+  EXPECT_EQ(session_.messages().size(), sent);
+  EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+}
+
+// Records the context of every exploration request; planning has no goal to offer.
+class RecordingExplorer : public ExplorationService {
+ public:
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const RobotPose&, const std::string& strategy,
+                                             const ExplorationContext& context) override {
+    strategies.push_back(strategy);
+    contexts.push_back(context);
+    return absl::NotFoundError("no frontier");
+  }
+  std::vector<std::string> strategies;
+  std::vector<ExplorationContext> contexts;
+};
+
+api::CameraFrame Frame(common::v1::ImageEncoding encoding) {
+  api::CameraFrame frame;
+  const cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(90, 90, 90));
+  frame.mutable_image()->set_encoding(encoding);
+  frame.mutable_image()->set_data(EncodePng(grey));
+  frame.mutable_image()->set_width(160);
+  frame.mutable_image()->set_height(120);
+  frame.mutable_intrinsics()->set_width(160);
+  frame.mutable_intrinsics()->set_height(120);
+  frame.mutable_intrinsics()->set_fx(80);
+  frame.mutable_intrinsics()->set_fy(80);
+  frame.mutable_intrinsics()->set_cx(80);
+  frame.mutable_intrinsics()->set_cy(60);
+  frame.mutable_camera_pose()->mutable_position()->set_x(-4.0);
+  frame.mutable_camera_pose()->mutable_position()->set_y(3.0);
+  frame.mutable_camera_pose()->mutable_orientation()->set_w(1.0);
+  return frame;
+}
+
+// Seed-000 loop through the hub: frames -> VLM with codes drawn -> semantic values -> region
+// score after theta = 3 records -> EROI_UTILITY exploration requests carry the values.
+TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
+  GatewayConfig config;
+  EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0): N = 20, prior 0.05
+  eroi.grid.delta = 2.0;
+  eroi.grid.nx = 4;
+  eroi.grid.ny = 3;
+  config.eroi = eroi;
+  RobotLocalPlanner planner;
+  ScriptedModel model;
+  RecordingExplorer explorer;
+  GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr});
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("uav");
+  ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
+  hub.OnRobotState(&session, At(0, 0));
+  api::SubmitInstructionRequest request;
+  request.set_request_id("eroi-1");
+  request.set_robot_id("uav");
+  request.set_instruction("find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  request.set_exploration_strategy(static_cast<api::ExplorationStrategy>(42));
+  EXPECT_EQ(hub.Submit(request).status().message(), "exploration_strategy: unknown value 42");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(request);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  EXPECT_EQ(submitted->task().exploration_strategy(), "EROI_UTILITY");
+  ASSERT_EQ(explorer.strategies.size(), 1u);
+  EXPECT_EQ(explorer.strategies[0], "EROI_UTILITY");
+  ASSERT_EQ(explorer.contexts[0].eroi_values.size(), 20u);  // uniform 1/N before any evidence
+  EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_values[7], 0.05);
+  EXPECT_TRUE(explorer.contexts[0].eroi_window_min.isApprox(Eigen::Vector2d(-1, -1)));
+  EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_edge_m, 2.0);
+
+  // Bad frames are refused by field; good ones go to the vision model one at a time.
+  EXPECT_EQ(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_MONO8)).message(),
+            "camera.image.encoding: must be PNG, JPEG or RGB8");
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());  // busy: dropped
+  ASSERT_EQ(model.asks.size(), 1u);
+  EXPECT_FALSE(model.asks[0].question.png.empty());
+  EXPECT_NE(model.asks[0].question.prompt.find("[red backpack]"), std::string::npos);
+
+  // Three answers in region unit (i 2..3, j 0..1): the third asks the region score.
+  model.Reply(0, "Code: C2A, Description: a bag by the bench");
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  model.Reply(1, "Code: C2A, Description: backpack strap");
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  model.Reply(2, "Code: D1A, Description: bench");
+  ASSERT_EQ(model.asks.size(), 4u);
+  EXPECT_TRUE(model.asks[3].question.png.empty());  // the language model scores the region
+  model.Reply(3, "5");
+  EXPECT_EQ(hub.GetTask(submitted->task_id())->model_calls(), 5);  // 3 frames, 1 region, 1 embedding
+
+  // The next exploration request carries the values: (2, 1) got C2A twice (0.392) then the
+  // region score 5 over k = 4 (eq. 22): 0.392 + 0.608 * 5 / 20 = 0.544.
+  const api::RobotCommand explore = session.Last();
+  Reached(hub, session, explore);  // -> scan
+  Reached(hub, session, session.Last());  // -> next exploration goal
+  ASSERT_EQ(explorer.contexts.size(), 2u);
+  EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning

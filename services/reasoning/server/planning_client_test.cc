@@ -1,0 +1,106 @@
+// PlanningClient's exploration requests against an in-process PlanningService that records them:
+// the task's strategy and semantic context arrive as planning's SemanticContext, EROI values come
+// with their live-map window, and a refused value grid is retried with uniform values.
+#include "services/reasoning/server/planning_client.h"
+
+#include <grpcpp/grpcpp.h>
+
+#include "absl/synchronization/mutex.h"
+#include "gtest/gtest.h"
+
+namespace semnav::reasoning {
+namespace {
+
+namespace pb = ::semnav::planning::v1;
+
+class RecordingPlanning final : public pb::PlanningService::Service {
+ public:
+  grpc::Status SelectExplorationGoal(grpc::ServerContext*, const pb::SelectExplorationGoalRequest* request,
+                                     pb::SelectExplorationGoalResponse* response) override {
+    absl::MutexLock lock(&mu);
+    requests.push_back(*request);
+    if (refuse_values && request->eroi_semantic_values_size() > 0) {
+      return grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, "eroi_semantic_values has 2 values; this grid has 6");
+    }
+    response->mutable_goal()->set_x(4.0);
+    response->mutable_goal()->set_y(-1.0);
+    return grpc::Status::OK;
+  }
+  absl::Mutex mu;
+  bool refuse_values = false;
+  std::vector<pb::SelectExplorationGoalRequest> requests;
+};
+
+class GatewayPlanningClientTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    grpc::ServerBuilder builder;
+    int port = 0;
+    builder.AddListeningPort("127.0.0.1:0", grpc::InsecureServerCredentials(), &port);
+    builder.RegisterService(&planning_);
+    server_ = builder.BuildAndStart();
+    auto channel = grpc::CreateChannel("127.0.0.1:" + std::to_string(port), grpc::InsecureChannelCredentials());
+    ASSERT_TRUE(channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(5)));
+    const PlanningSettings settings;  // SEMANTIC_FRONTIER by default, 2 s deadline
+    client_ = std::make_unique<PlanningClient>(channel, settings);
+  }
+  void TearDown() override { server_->Shutdown(); }
+
+  RecordingPlanning planning_;
+  std::unique_ptr<grpc::Server> server_;
+  std::unique_ptr<PlanningClient> client_;
+};
+
+TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
+  ExplorationContext context;
+  context.objects.push_back({"sink", Eigen::Vector3d(2.0, 3.0, 0.9), 0.0, 0.0, 0.42});
+  context.objects.push_back({"dining table", Eigen::Vector3d(-1.0, 0.5, 0.7), 0.5, 1.0, 0.0});
+  context.visited.push_back(Eigen::Vector3d(0.0, 0.0, 0.0));
+  RobotPose pose;
+  pose.position = Eigen::Vector3d(1.0, 2.0, 0.3);
+  absl::StatusOr<Eigen::Vector3d> goal = client_->SelectGoal(pose, "COVERAGE_MAX", context);
+  ASSERT_TRUE(goal.ok()) << goal.status();
+  EXPECT_TRUE(goal->isApprox(Eigen::Vector3d(4.0, -1.0, 0.3)));  // z stays the robot's
+
+  absl::MutexLock lock(&planning_.mu);
+  ASSERT_EQ(planning_.requests.size(), 1u);
+  const pb::SelectExplorationGoalRequest& request = planning_.requests[0];
+  EXPECT_EQ(request.strategy(), pb::EXPLORATION_STRATEGY_COVERAGE_MAX);
+  ASSERT_EQ(request.semantics().objects_size(), 2);
+  EXPECT_EQ(request.semantics().objects(0).label(), "sink");
+  EXPECT_DOUBLE_EQ(request.semantics().objects(0).position().y(), 3.0);
+  EXPECT_DOUBLE_EQ(request.semantics().objects(0).cooccurrence(), 0.42);
+  EXPECT_DOUBLE_EQ(request.semantics().objects(1).relevance(), 0.5);
+  EXPECT_DOUBLE_EQ(request.semantics().objects(1).relation(), 1.0);
+  ASSERT_EQ(request.semantics().visited_size(), 1);
+  EXPECT_FALSE(request.source().live_map().has_window_min());  // the whole live map
+  EXPECT_EQ(request.eroi_semantic_values_size(), 0);           // values only for EROI_UTILITY
+}
+
+TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIsRetriedUniform) {
+  ExplorationContext context;
+  context.eroi_values = {0.25, 0.75};
+  context.eroi_window_min = Eigen::Vector2d(-1.0, -1.0);
+  context.eroi_window_max = Eigen::Vector2d(3.0, 1.0);
+  context.eroi_edge_m = 2.0;
+  ASSERT_TRUE(client_->SelectGoal(RobotPose{}, "EROI_UTILITY", context).ok());
+  {
+    absl::MutexLock lock(&planning_.mu);
+    const pb::SelectExplorationGoalRequest& request = planning_.requests.back();
+    ASSERT_EQ(request.eroi_semantic_values_size(), 2);
+    EXPECT_DOUBLE_EQ(request.eroi_semantic_values(1), 0.75);
+    EXPECT_DOUBLE_EQ(request.source().live_map().window_min().x(), -1.0);
+    EXPECT_DOUBLE_EQ(request.source().live_map().window_max().x(), 2.5);  // pulled in by edge / 4
+    EXPECT_DOUBLE_EQ(request.source().live_map().window_max().y(), 0.5);
+    planning_.refuse_values = true;
+  }
+  ASSERT_TRUE(client_->SelectGoal(RobotPose{}, "EROI_UTILITY", context).ok());
+  absl::MutexLock lock(&planning_.mu);
+  ASSERT_EQ(planning_.requests.size(), 3u);  // refused, then asked again without values
+  EXPECT_EQ(planning_.requests[2].eroi_semantic_values_size(), 0);
+  EXPECT_FALSE(planning_.requests[2].source().live_map().has_window_min());
+  EXPECT_EQ(client_->SelectGoal(RobotPose{}, "RANDOM", context).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
