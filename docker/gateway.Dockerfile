@@ -1,8 +1,8 @@
 # semnav-gateway: instructions -> subgoals -> goals -> robot commands; operator API (port 50050).
 # Build from the checkout root (docs/operations.md):
-#   docker build -f docker/gateway.Dockerfile -t semnav-gateway:0.1.0 .
+#   docker build -f docker/gateway.Dockerfile --build-context shared-data=../shared/data -t semnav-gateway:0.1.0 .
 # Debian packages only; the build stage compiles from source, the runtime stage has the runtime
-# libraries, the binary, `semnav` (for `semnav probe`, the health check) and its default config.
+# libraries, the binary, `semnav` (for `semnav probe`, the health check), its default config and data.
 FROM debian:bookworm AS build
 RUN apt-get update \
  && apt-get install -y --no-install-recommends \
@@ -34,6 +34,9 @@ RUN apt-get update \
 COPY --from=build /src/build/release/bin/semnav-gateway /src/build/release/bin/semnav /usr/local/bin/
 COPY deploy/k8s/config/gateway.yaml /etc/semnav/gateway.yaml
 COPY services/reasoning/data/lexicon.tsv /usr/local/share/semnav/lexicon.tsv
+# The commonsense prior of SEMANTIC_FRONTIER exploration (ConceptNet /r/AtLocation, CC BY-SA 4.0),
+# the same folder as in the model-proxy image; gateway.prior_path points into it.
+COPY --from=shared-data object-priors/conceptnet_atlocation_coco80 /usr/local/share/semnav/object-priors/conceptnet_atlocation_coco80
 USER semnav
 WORKDIR /var/lib/semnav
 EXPOSE 50050

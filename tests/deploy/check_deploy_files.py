@@ -23,6 +23,8 @@ import yaml
 SOURCE, BIN, SHARED = (os.path.abspath(p) for p in sys.argv[1:4])
 DEPLOY = os.path.join(SOURCE, "deploy")
 SERVICES = ["gateway", "mapping", "planning", "relocalization", "model-proxy"]
+# The gateway's client sections and the service each one dials.
+GATEWAY_PEERS = {"mapping": "mapping", "planning": "planning", "model_proxy": "model-proxy"}
 
 
 def binary_of(service):
@@ -41,6 +43,10 @@ def load_yaml(path):
 
 def listen_port(config_path):
     return int(load_yaml(config_path)[0]["server"]["listen"].rsplit(":", 1)[1])
+
+
+def gateway_section(config_path):
+    return load_yaml(config_path)[0]["gateway"]
 
 
 def install_deps_packages():
@@ -74,6 +80,15 @@ class Dockerfile:
     def runtime_one(self, keyword):
         (value,) = self.runtime_all(keyword)
         return value
+
+
+def shipped_from_shared_data(dockerfile, path):
+    """The file under SHARED that `path` in the image is copied from, or None."""
+    for args in dockerfile.runtime_all("COPY"):
+        parts = args.split()
+        if parts[0] == "--from=shared-data" and path.startswith(parts[-1].rstrip("/") + "/"):
+            return os.path.join(SHARED, parts[1], path[len(parts[-1].rstrip("/")) + 1:])
+    return None
 
 
 def apt_packages(run_args):
@@ -328,6 +343,57 @@ class DeployFilesTest(unittest.TestCase):
         config = load_yaml(os.path.join(DEPLOY, "k8s/config/model-proxy.yaml"))[0]
         key_envs = {b["api_key_env"] for b in config["modelproxy"]["backends"].values() if "api_key_env" in b}
         self.assertEqual(set(secret["stringData"]), key_envs)
+
+    # --- the gateway's peers (model proxy included) and its commonsense prior ---------------
+
+    def test_cluster_gateway_dials_each_peer_service_on_its_listen_port(self):
+        services = {d["metadata"]["name"]: d for docs in self.k8s_docs.values() for d in docs
+                    if d and d.get("kind") == "Service"}
+        gateway = gateway_section(os.path.join(DEPLOY, "k8s/config/gateway.yaml"))
+        for section, peer in GATEWAY_PEERS.items():
+            with self.subTest(section=section):
+                host, port = gateway[section]["address"].rsplit(":", 1)
+                self.assertEqual(host, peer, "not the peer's Service name")
+                self.assertEqual(services[host]["spec"]["selector"], {"app.kubernetes.io/name": peer})
+                self.assertEqual(services[host]["spec"]["ports"][0]["port"], int(port))
+                self.assertEqual(listen_port(os.path.join(DEPLOY, "k8s/config", peer + ".yaml")), int(port))
+
+    def test_host_gateway_dials_each_peer_with_the_certificate_and_token_it_requires(self):
+        # systemd and compose share these configs; the model proxy is the cloud host's.
+        hosts = {"mapping": "robot", "planning": "ground-station", "model_proxy": "cloud"}
+        etc = os.path.join(DEPLOY, "systemd/etc/semnav")
+        gateway = gateway_section(os.path.join(etc, "gateway.yaml"))
+        compose_configs = {s["image"].split(":")[0]: s["command"][1] for s in self.compose["services"].values()}
+        for section, peer in GATEWAY_PEERS.items():
+            with self.subTest(section=section):
+                client = gateway[section]
+                host, port = client["address"].rsplit(":", 1)
+                self.assertEqual(host, hosts[section])
+                self.assertEqual(listen_port(os.path.join(etc, peer + ".yaml")), int(port))
+                server = load_yaml(os.path.join(etc, peer + ".yaml"))[0]["server"]
+                if "client_ca_file" in server.get("tls", {}):
+                    self.assertEqual(set(client["tls"]), {"ca_file", "cert_file", "key_file"}, "mTLS client")
+                if "auth" in server:
+                    self.assertEqual(client["auth"], {"token_file": "/etc/semnav/tokens/client.token"})
+                if binary_of(peer) in compose_configs:  # compose runs the peer from the same config
+                    self.assertEqual(compose_configs[binary_of(peer)], f"/etc/semnav/{peer}.yaml")
+
+    def test_gateway_prior_is_the_model_proxy_data_shipped_beside_it(self):
+        image = self.dockerfiles["gateway"]
+        copies = dict(reversed(c.split()) for c in image.runtime_all("COPY") if c.startswith("deploy/"))
+        image_config = os.path.join(SOURCE, copies[yaml.safe_load(image.runtime_one("CMD"))[1]])
+        layouts = {"image and cluster": (image_config, os.path.join(DEPLOY, "k8s/config/model-proxy.yaml")),
+                   "hosts": (os.path.join(DEPLOY, "systemd/etc/semnav/gateway.yaml"),
+                             os.path.join(DEPLOY, "systemd/etc/semnav/model-proxy.yaml"))}
+        for layout, (gateway_config, proxy_config) in layouts.items():
+            with self.subTest(layout=layout):
+                prior = gateway_section(gateway_config)["prior_path"]
+                data_dir = load_yaml(proxy_config)[0]["modelproxy"]["offline"]["data_dir"]
+                self.assertEqual(os.path.dirname(prior), data_dir, "not the model proxy's offline data")
+                self.assertTrue(os.path.isfile(self.pki.localize(prior)), prior)
+        image_prior = gateway_section(image_config)["prior_path"]
+        source = shipped_from_shared_data(image, image_prior)
+        self.assertTrue(source and os.path.isfile(source), f"{image_prior} is not copied into the gateway image")
 
     # --- deploy/compose.yaml and deploy/systemd (same configs under /etc/semnav) ------------
 

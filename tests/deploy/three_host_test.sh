@@ -4,10 +4,13 @@
 #   robot   10.77.1.1            semnav-mapping, and the simulator as the robot's software
 #   ground  10.77.1.2 10.77.2.2  semnav-gateway, semnav-planning, semnav-relocalization
 #   cloud   10.77.2.3            semnav-model-proxy
-# A short simulated mission runs from the robot through the ground station; then clients without
-# a certificate, with a certificate of another CA, without TLS, without a token or with a wrong
-# token are refused with the expected gRPC codes. Exit 77 (ctest SKIP) where namespaces cannot be
-# made (not root, no iproute2, no CAP_SYS_ADMIN in a container).
+# A short simulated mission runs from the robot through the ground station; then the gateway's
+# slow path crosses the ground -> cloud link (ResolveTarget answered by the cloud's model proxy,
+# witnessed by the proxy's usage records), a second gateway with a token the cloud does not accept
+# gets its model calls refused and keeps serving, and clients without a certificate, with a
+# certificate of another CA, without TLS, without a token or with a wrong token are refused with
+# the expected gRPC codes. Exit 77 (ctest SKIP) where namespaces cannot be made (not root, no
+# iproute2, no CAP_SYS_ADMIN in a container).
 # Usage: three_host_test.sh SOURCE_DIR BIN_DIR SHARED_DATA_DIR
 set -euo pipefail
 source_dir=$(cd "$1" && pwd)
@@ -20,6 +23,7 @@ skip() {
 [[ $(id -u) -eq 0 ]] || skip "needs root to create network namespaces (ip netns)"
 command -v ip >/dev/null || skip "iproute2 (ip) is not installed"
 command -v openssl >/dev/null || skip "openssl is not installed"
+command -v node >/dev/null || skip "node is not installed (the ResolveTarget / GetUsage client)"
 
 tag=$$
 declare -A ns=([robot]=semnav-robot-$tag [ground]=semnav-ground-$tag [cloud]=semnav-cloud-$tag)
@@ -160,18 +164,84 @@ grep '^SUCCESS' "$work/mission.out"
 # The target was matched on the scene graph the gateway watches on the robot's mapping.
 grep -q 'fast path yes' "$work/mission.out" || { echo "FAIL: no scene graph reached the ground station"; exit 1; }
 
-# --- refusals -------------------------------------------------------------------------------------
+# --- ground -> cloud: the gateway's slow path through the cloud's model proxy --------------------
+ground_etc=$work/ground/etc/semnav
+call() {  # address proto-file service method request-json: a unary call from the ground station
+  in_ns ground env NODE_PATH="$source_dir/node_modules" node "$source_dir/tests/deploy/grpc_call.js" \
+    "$source_dir/protos" "$2" "$3" "$4" "$5" "$1" "$ground_etc/tls/ca.crt" "$ground_etc/tls/host.crt" \
+    "$ground_etc/tls/host.key" "$ground_etc/tokens/client.token"
+}
+resolve() {  # gateway-address robot-id: resolve a target the scene graph lacks, beside an object it has
+  call "$1" semnav/reasoning/v1/operator.proto semnav.reasoning.v1.OperatorService ResolveTarget \
+    "{\"robot_id\": \"$2\", \"text\": \"the purple umbrella near the $mission_target\", \"allow_slow_path\": true}"
+}
+resolve_grounded() {  # gateway-address robot-id: resolve once the gateway has the robot's scene graph
+  local output
+  for _ in $(seq 1 20); do
+    if output=$(resolve "$1" "$2" 2>&1) && [[ $output == *'nothing to ground'* ]]; then
+      sleep 0.5  # the gateway's mapping watch has not delivered a graph yet
+      continue
+    fi
+    printf '%s\n' "$output"
+    [[ $output == '{'* ]]
+    return
+  done
+  printf '%s\n' "$output"
+  return 1
+}
 failures=0
+fail() {
+  echo "FAIL: $*"
+  failures=$((failures + 1))
+}
+mission_target=$(sed -n 's/.*instruction "find a \(.*\)" (gateway.*/\1/p' "$work/mission.out")
+# The fast path finds no umbrella (no label match), so the slow path asks the cloud.
+if answer=$(resolve_grounded ground-station:50050 three-host-operator) &&
+  [[ $answer =~ \"grounded_objects\":([1-9][0-9]*) ]]; then
+  echo "ok: slow path over ground -> cloud answered (${BASH_REMATCH[1]} grounded objects): $answer"
+else
+  fail "the gateway's slow path did not get an answer from the cloud: $answer"
+fi
+# The cloud's own record: the call came from the gateway (its robot id metadata) and was answered.
+usage=$(call cloud:50054 semnav/modelproxy/v1/modelproxy.proto semnav.modelproxy.v1.ModelProxyService GetUsage \
+  '{"robot_id": "three-host-operator"}' 2>&1) || true
+if [[ $usage =~ \"backend\":\"offline\",\"calls\":([1-9][0-9]*) ]]; then
+  echo "ok: the cloud's model proxy answered ${BASH_REMATCH[1]} call(s) of the ground station's gateway"
+else
+  fail "the cloud's usage shows no answered gateway call: $usage"
+fi
+
+# A second gateway presents a token the cloud does not accept (the robot's): refused, still serving.
+sed '/^  model_proxy:/,/^  [a-z_]*:/ s|tokens/client.token|tokens/cloud-wrong.token|' \
+  "$ground_etc/gateway.yaml" >"$ground_etc/gateway-wrong-cloud-token.yaml"
+[[ $(grep -c cloud-wrong.token "$ground_etc/gateway-wrong-cloud-token.yaml") == 1 ]] ||
+  { echo "FAIL: no model_proxy token_file in gateway.yaml"; exit 1; }
+secret_file "$ground_etc/tokens/cloud-wrong.token" "$robot_token"
+in_ns ground "$bin_dir/semnav-gateway" --config "$ground_etc/gateway-wrong-cloud-token.yaml" \
+  --listen 10.77.1.2:50060 >"$work/ground/gateway-wrong.out" 2>"$work/ground/gateway-wrong.err" &
+wrong_gateway=$!
+pids+=("$wrong_gateway")
+wait_serving ground ground-station:50060 semnav.reasoning.v1.OperatorService
+if refusal=$(resolve_grounded ground-station:50060 three-host-wrong-token 2>&1); then
+  fail "a gateway with a wrong cloud token got a model answer: $refusal"
+elif [[ $refusal != UNAUTHENTICATED:* ]]; then
+  fail "a gateway with a wrong cloud token: expected UNAUTHENTICATED from the cloud, got: $refusal"
+elif ! kill -0 "$wrong_gateway" 2>/dev/null || ! probe ground ground-station:50060 \
+  semnav.reasoning.v1.OperatorService >/dev/null; then
+  fail "the gateway with a wrong cloud token stopped serving after the refusal"
+else
+  echo "ok: gateway with a wrong cloud token -> its model call refused ($refusal), gateway still SERVING"
+fi
+
+# --- refusals -------------------------------------------------------------------------------------
 expect_refused() {  # code description probe-args...
   local code=$1 what=$2
   shift 2
   local output
   if output=$(probe "$@" 2>&1); then
-    echo "FAIL: $what was admitted: $output"
-    failures=$((failures + 1))
+    fail "$what was admitted: $output"
   elif [[ $output != *"semnav probe: $code:"* ]]; then
-    echo "FAIL: $what: expected $code, got: $output"
-    failures=$((failures + 1))
+    fail "$what: expected $code, got: $output"
   else
     echo "ok: $what -> $code"
   fi
@@ -194,4 +264,5 @@ done
 expect_refused UNAUTHENTICATED "cloud token list without the robot's token" ground cloud:50054 \
   semnav.modelproxy.v1.ModelProxyService --token_file "$work/robot/etc/semnav/tokens/client.token"
 ((failures == 0)) || exit 1
-echo "PASS: mission across three hosts with mTLS and tokens; 16 unauthorized clients refused"
+echo "PASS: mission across three hosts with mTLS and tokens; the gateway's model calls answered by the cloud"
+echo "      and refused with a wrong token; 16 unauthorized clients refused"
