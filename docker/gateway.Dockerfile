@@ -28,6 +28,7 @@ FROM debian:bookworm
 RUN apt-get update \
  && apt-get install -y --no-install-recommends \
       libabsl20220623 libgrpc++1.51 libgrpc29 libprotobuf32 libyaml-cpp0.7 libicu72 \
+      libopencv-core406 libopencv-imgproc406 libopencv-imgcodecs406 \
  && rm -rf /var/lib/apt/lists/* \
  && useradd --system --uid 10001 --user-group --home-dir /var/lib/semnav --create-home \
       --shell /usr/sbin/nologin semnav

@@ -161,8 +161,6 @@ if ! in_ns robot timeout 90 "$bin_dir/semnav-sim-demo" --remote "$work/robot/rem
   exit 1
 fi
 grep '^SUCCESS' "$work/mission.out"
-# The target was matched on the scene graph the gateway watches on the robot's mapping.
-grep -q 'fast path yes' "$work/mission.out" || { echo "FAIL: no scene graph reached the ground station"; exit 1; }
 
 # --- ground -> cloud: the gateway's slow path through the cloud's model proxy --------------------
 ground_etc=$work/ground/etc/semnav
@@ -195,7 +193,9 @@ fail() {
   failures=$((failures + 1))
 }
 mission_target=$(sed -n 's/.*instruction "find a \(.*\)" (gateway.*/\1/p' "$work/mission.out")
-# The fast path finds no umbrella (no label match), so the slow path asks the cloud.
+# The fast path finds no umbrella (no label match), so the slow path asks the cloud about the
+# objects near the mission's target: grounded objects prove the robot's scene graph reached the
+# ground station, the answer that the cloud answered the gateway.
 if answer=$(resolve_grounded ground-station:50050 three-host-operator) &&
   [[ $answer =~ \"grounded_objects\":([1-9][0-9]*) ]]; then
   echo "ok: slow path over ground -> cloud answered (${BASH_REMATCH[1]} grounded objects): $answer"
