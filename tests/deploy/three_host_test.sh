@@ -211,6 +211,16 @@ else
   fail "the cloud's usage shows no answered gateway call: $usage"
 fi
 
+# The mission's task counted its model calls (text embedding, slow path) at the gateway.
+tasks=$(in_ns ground "$bin_dir/semnavctl" task list --json --gateway-addr ground-station:50050 \
+  --tls-ca "$ground_etc/tls/ca.crt" --tls-cert "$ground_etc/tls/host.crt" --tls-key "$ground_etc/tls/host.key" \
+  --token-file "$ground_etc/tokens/client.token" 2>&1) || true
+if [[ $tasks =~ \"model_calls\":([1-9][0-9]*) ]]; then
+  echo "ok: semnavctl task list: the mission's task made ${BASH_REMATCH[1]} model call(s)"
+else
+  fail "the mission's task made no model calls: $tasks"
+fi
+
 # A second gateway presents a token the cloud does not accept (the robot's): refused, still serving.
 sed '/^  model_proxy:/,/^  [a-z_]*:/ s|tokens/client.token|tokens/cloud-wrong.token|' \
   "$ground_etc/gateway.yaml" >"$ground_etc/gateway-wrong-cloud-token.yaml"
