@@ -16,14 +16,8 @@ if (args.length !== 10) {
 }
 const [protoDir, protoFile, serviceName, method, requestJson, address, ca, cert, key, tokenFile] = args;
 
-const definition = protoLoader.loadSync(protoFile, {
-  includeDirs: [protoDir],
-  keepCase: true,
-  longs: Number,
-  enums: String,
-  defaults: true,
-  oneofs: true,
-});
+// Field names as in the .proto (and in REQUEST_JSON); unset fields are left out of the output.
+const definition = protoLoader.loadSync(protoFile, { includeDirs: [protoDir], keepCase: true, longs: Number, enums: String });
 const Service = serviceName.split(".").reduce((node, part) => node[part], grpc.loadPackageDefinition(definition));
 const credentials = grpc.credentials.createSsl(fs.readFileSync(ca), fs.readFileSync(key), fs.readFileSync(cert));
 const client = new Service(address, credentials);
