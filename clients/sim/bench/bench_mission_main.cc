@@ -121,8 +121,10 @@ int main(int argc, char** argv) {
                                    result->record.shortest_path_m, result->final_reason);
       sim::RasterOptions raster;
       const sim::GroundTruthGrid grid = sim::RasterizeOccupancy(spec.world, raster);
-      const std::string png = absl::StrFormat("%s/%s_episode_%02d_%s.png", out_dir, strategy, i,
-                                              spec.world.name);
+      const std::string stem = absl::StrFormat("%s/%s_episode_%02d_%s", out_dir, strategy, i, spec.world.name);
+      std::ofstream log(stem + ".log");
+      for (const std::string& line : result->timeline) log << line << "\n";
+      const std::string png = stem + ".png";
       if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, grid, spec.target,
                                                                 *result, png);
           !s.ok()) {

@@ -52,6 +52,10 @@ struct EpisodeResult {
   int steps = 0;
   int collisions = 0;
   std::vector<Eigen::Vector2d> trajectory;  // true xy per step, for plots
+  std::vector<Eigen::Vector2d> goals;       // distinct navigate goals the gateway sent, for plots
+  // What the gateway decided and the robot answered, one line per change ("t=12.5s ..."),
+  // so a failed episode can be read back.
+  std::vector<std::string> timeline;
 };
 
 }  // namespace semnav::sim::loop

@@ -1,5 +1,6 @@
 #include "services/planning/server/exploration_rpc.h"
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -30,10 +31,29 @@ struct FrontierView {
 
 Point2 ToPoint(const semnav::common::v1::Pose2D& p) { return {p.x(), p.y()}; }
 
+// Goals the caller could not reach; a goal within `radius` of one is skipped.
+struct Exclusions {
+  std::vector<Point2> goals;
+  double radius = 1.0;
+  bool Covers(const Point2& p) const {
+    for (const Point2& g : goals) {
+      if (std::hypot(p.x - g.x, p.y - g.y) <= radius) return true;
+    }
+    return false;
+  }
+};
+
+Exclusions ReadExclusions(const pb::SelectExplorationGoalRequest& request) {
+  Exclusions out;
+  for (const auto& g : request.excluded_goals()) out.goals.push_back(ToPoint(g));
+  if (request.excluded_radius_m() > 0) out.radius = request.excluded_radius_m();
+  return out;
+}
+
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
                                        const semnav::common::v1::Pose2D& robot,
                                        uint32_t min_cells, const pb::SemanticContext& semantics,
-                                       const PlanningConfig& config) {
+                                       const PlanningConfig& config, const Exclusions& exclusions = {}) {
   FrontierView view;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
   if (!frame.ok()) return frame.status();
@@ -49,6 +69,9 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   view.free = *std::move(free);
   const int min = min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
   view.frontiers = ExtractFrontiers(view.explored, view.free, min);
+  std::erase_if(view.frontiers, [&](const Frontier& f) {
+    return exclusions.Covers(ToPoint(view.frame.ToPose(f.anchor)));
+  });
   const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
   for (const Frontier& f : view.frontiers) {
     double nearest = kUnreachable;
@@ -105,9 +128,14 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                           const pb::SelectExplorationGoalRequest& request,
                           const PlanningConfig& config,
                           pb::SelectExplorationGoalResponse* response) {
+  if (request.excluded_radius_m() < 0) {
+    return FieldError(absl::StatusCode::kInvalidArgument, "excluded_radius_m",
+                      "excluded_radius_m must be >= 0");
+  }
+  const Exclusions exclusions = ReadExclusions(request);
   absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
                                                 request.min_frontier_cells(), request.semantics(),
-                                                config);
+                                                config, exclusions);
   if (!view.ok()) return view.status();
   const pb::ExplorationStrategy strategy =
       request.strategy() == pb::EXPLORATION_STRATEGY_UNSPECIFIED
@@ -121,6 +149,12 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       PassabilityGrid open = view->free;
       for (int i = 0; i < open.size(); ++i) {
         if (view->explored.values()[i] == 0) open.values()[i] = 1;
+      }
+      // Excluded goals: their surroundings cannot hold the long-term goal.
+      for (int y = 0; y < open.height(); ++y) {
+        for (int x = 0; x < open.width(); ++x) {
+          if (exclusions.Covers(ToPoint(view->frame.ToPose(Cell{x, y})))) open.at(x, y) = 0;
+        }
       }
       const std::optional<Cell> goal =
           CoverageMaxGoal(open, view->robot, request.robot().yaw(), config.exploration.coverage);

@@ -24,6 +24,16 @@ struct PathQuery {
   std::optional<Eigen::Vector3d> alternative_from;
 };
 
+// One exploration request: where the robot is and which goals are spent (it failed to reach
+// them, or reached and scanned them already). Planning skips frontiers within
+// `excluded_radius_m` of an excluded goal, as explore_lite blacklists frontiers it could not
+// reach, so exploration moves on.
+struct ExplorationQuery {
+  RobotPose pose;
+  std::vector<Eigen::Vector3d> excluded_goals;  // map frame, metres
+  double excluded_radius_m = 0.0;
+};
+
 class PathPlanner {
  public:
   virtual ~PathPlanner() = default;
@@ -32,8 +42,8 @@ class PathPlanner {
   // alternative_from), NOT_FOUND = no path (explore instead); any other error is transient.
   virtual absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) = 0;
   // Next exploration goal (the planner's configured strategy, frontier based); NOT_FOUND when the
-  // map has no frontier left.
-  virtual absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose& pose) = 0;
+  // map has no frontier left that is not excluded.
+  virtual absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) = 0;
 };
 
 }  // namespace semnav::reasoning

@@ -73,13 +73,16 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   return path;
 }
 
-absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const RobotPose& pose) {
+absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const ExplorationQuery& query) {
   if (!Ready("SelectExplorationGoal")) return absl::NotFoundError("planning service not connected");
+  const RobotPose& pose = query.pose;
   pb::SelectExplorationGoalRequest request;
   request.mutable_source()->mutable_live_map();
   SetPose(pose.position, request.mutable_robot());
   request.mutable_robot()->set_yaw(pose.yaw);
   request.set_strategy(strategy_);
+  for (const Eigen::Vector3d& goal : query.excluded_goals) SetPose(goal, request.add_excluded_goals());
+  request.set_excluded_radius_m(query.excluded_radius_m);
   grpc::ClientContext context;
   SetDeadline(context, settings_.deadline_ms);
   pb::SelectExplorationGoalResponse response;

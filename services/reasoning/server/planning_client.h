@@ -23,7 +23,7 @@ class PlanningClient : public PathPlanner {
   PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings);
 
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override;
-  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose& pose) override;
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override;
 
  private:
   bool Ready(const char* call);
