@@ -324,6 +324,12 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
 std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
   const double distance = (progress_.target->position - pose_.position).head<2>().norm();
   if (distance <= config_.success_radius_m) return NextSubgoal(now, "target verified within the success radius");
+  constexpr double kSameSpotM = 0.25;
+  if (too_far_at_.has_value() && (*too_far_at_ - pose_.position).head<2>().norm() <= kSameSpotM) {
+    too_far_at_.reset();
+    return SetTargetAside(now, "the approach cannot get within the success radius");
+  }
+  too_far_at_ = pose_.position;
   for (int i = progress_.subgoal_index; i >= 0; --i) {
     if (subgoals_[static_cast<std::size_t>(i)].type == SubgoalType::kApproach) {
       progress_.subgoal_index = i;

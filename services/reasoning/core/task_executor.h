@@ -148,6 +148,9 @@ class TaskExecutor {
   // Targets the robot failed to reach; retried once it reached another exploration goal.
   std::set<int64_t> set_aside_;
   std::optional<Eigen::Vector3d> explore_goal_;     // the active exploration goal from planning
+  // Where the robot stood when a verified target was last found too far away: a second verdict
+  // from the same spot means the approach cannot get closer.
+  std::optional<Eigen::Vector3d> too_far_at_;
   // Exploration goals the robot failed to reach or already scanned from: not offered again (a
   // frontier that survives a visit and a full turn cannot be cleared from there).
   std::vector<Eigen::Vector3d> spent_explore_goals_;

@@ -222,6 +222,34 @@ TEST_F(GatewayTaskExecutorTest, UnreachableTargetIsSetAsideAndSearchGoesOn) {
   EXPECT_EQ(task.progress().target->object_id, 7);
 }
 
+TEST_F(GatewayTaskExecutorTest, ApproachThatCannotGetCloserSetsTheTargetAside) {
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  int detections = 15;
+  // The robot gets stuck 3 m short of the target on every approach (say, behind a counter).
+  const auto verify_from_here = [&](double now) {
+    task.OnPose(now, At(2));
+    out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // navigate / approach "done"
+    if (task.progress().phase != "verifying") out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
+    EXPECT_EQ(task.progress().phase, "verifying");
+    task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // facing the target
+    task.OnSceneGraph(now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+    out = task.OnSceneGraph(now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+  };
+  verify_from_here(1);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);  // too far: approach once more
+  verify_from_here(2);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_FALSE(task.progress().target.has_value());
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "cannot get within the success radius"));
+}
+
 TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGoesOn) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(-10, 0, 0),
                         Eigen::Vector3d(0, -10, 0), Eigen::Vector3d(5, 5, 0)};
