@@ -51,6 +51,7 @@ struct EpisodeRecord {
   int model_calls = 0;
   int goals_resolved = 0;   // goal resolutions the gateway made
   int goals_fast_path = 0;  // of which on the fast path
+  std::string group;        // the report section: indoor, outdoor or flyroll (by modality)
 };
 
 struct StrategySummary {

@@ -69,13 +69,19 @@ std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d
     return Explore(now);
   }
   if (!path.ok()) return Replan(now, absl::StrCat("no path: ", path.status().message()));
+  return Navigate(now, goal, *std::move(path), yaw, speed, phase, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector3d& goal,
+                                                 std::vector<Eigen::Vector3d> path, double yaw, double speed,
+                                                 Phase phase, const std::string& reason) {
   RobotCommand command = NewCommand(CommandKind::kNavigate, reason);
   command.goal = goal;
-  if (!path->empty()) command.goal.head<2>() = path->back().head<2>();  // alternative point or adjusted goal
+  if (!path.empty()) command.goal.head<2>() = path.back().head<2>();  // alternative point or adjusted goal
   command.goal_yaw = yaw;
   command.max_speed = speed;
-  command.path = *path;
-  progress_.path = *std::move(path);
+  command.path = path;
+  progress_.path = std::move(path);
   progress_.phase = phase == Phase::kExploring ? "exploring" : phase == Phase::kVerifying ? "verifying" : "navigating";
   progress_.reason = reason;
   phase_ = phase;
@@ -229,18 +235,25 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
     return Fail(absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
   }
   ++progress_.explore_goals;
-  absl::StatusOr<Eigen::Vector3d> goal =
-      planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
-  Eigen::Vector3d target;
-  if (goal.ok()) {
-    target = *goal;
-    explore_goal_ = target;
-  } else {
-    explore_goal_.reset();
-    // No frontier from planning: step toward the least-explored sector of the topological memory.
-    const double yaw = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
-    target = pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
+  // Frontiers behind furniture or in unseen corners can be approached no closer than where the
+  // robot stands (the alternative point is here): spend them and ask planning for the next.
+  constexpr int kGoalsPerStep = 10;
+  for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
+    const absl::StatusOr<Eigen::Vector3d> goal =
+        planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
+    if (!goal.ok()) break;
+    explore_goal_ = *goal;
+    absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
+    const bool moves = path.ok() && (path->empty() || (path->back() - pose_.position).head<2>().norm() >=
+                                                          config_.min_explore_step_m);
+    if (moves) return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring, "exploring for the target");
+    spent_explore_goals_.push_back(*goal);
   }
+  // No usable frontier from planning: step toward the least-explored sector of the topological memory.
+  explore_goal_.reset();
+  const double yaw = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
+  const Eigen::Vector3d target =
+      pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
   return MoveTo(now, target, YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
 }
 

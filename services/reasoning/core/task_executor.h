@@ -38,6 +38,7 @@ struct ExecutorConfig {
   double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
   int max_explore_goals = 30;            // exploration goals per search before giving up
   double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
+  double min_explore_step_m = 0.5;       // an exploration goal whose path ends closer is spent unvisited
   bool model_available = false;          // offer slow-path model requests
   int grounding_max_objects = 15;        // ESCA budget of a slow-path request
   bool multi_modal = false;              // the robot can fly-roll: plan multi-modal paths
@@ -124,6 +125,8 @@ class TaskExecutor {
   std::vector<RobotCommand> Explore(double now);
   std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
                                    Phase phase, const std::string& reason);
+  std::vector<RobotCommand> Navigate(double now, const Eigen::Vector3d& goal, std::vector<Eigen::Vector3d> path,
+                                     double yaw, double speed, Phase phase, const std::string& reason);
   std::vector<RobotCommand> Rotate(double now, double rate, double duration, Phase phase, const std::string& reason);
   std::vector<RobotCommand> Hold(double now, double duration, const std::string& reason);
   std::vector<RobotCommand> CheckSuccessOrApproach(double now);

@@ -250,6 +250,20 @@ TEST_F(GatewayTaskExecutorTest, ApproachThatCannotGetCloserSetsTheTargetAside) {
   EXPECT_TRUE(absl::StrContains(task.progress().reason, "cannot get within the success radius"));
 }
 
+TEST_F(GatewayTaskExecutorTest, FrontierThatCannotBeApproachedIsSpentWithoutMoving) {
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};
+  planner_.alternative_point = Eigen::Vector3d(0.1, 0, 0);  // behind furniture: no closer than here
+  planner_.frontiers = {Eigen::Vector3d(0, 3, 0), Eigen::Vector3d(5, 0, 0)};
+  TaskExecutor task = Make(FindTarget());
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(5, 0, 0)));
+  ASSERT_EQ(planner_.exploration_queries.size(), 2u);
+  ASSERT_EQ(planner_.exploration_queries[1].excluded_goals.size(), 1u);
+  EXPECT_TRUE(planner_.exploration_queries[1].excluded_goals[0].isApprox(Eigen::Vector3d(0, 3, 0)));
+  EXPECT_EQ(task.progress().explore_goals, 1);
+}
+
 TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGoesOn) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(-10, 0, 0),
                         Eigen::Vector3d(0, -10, 0), Eigen::Vector3d(5, 5, 0)};

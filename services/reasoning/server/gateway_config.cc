@@ -41,6 +41,7 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("max_explore_goals", &c.executor.max_explore_goals)
       .Read("explore_exclusion_radius_m", &c.executor.explore_exclusion_radius_m)
       .Read("path_clearance_m", &c.executor.path_clearance_m)
+      .Read("min_explore_step_m", &c.executor.min_explore_step_m)
       .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
       .Read("grounding_max_objects", &c.executor.grounding_max_objects);
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
