@@ -134,8 +134,11 @@ int main(int argc, char** argv) {
   const auto started = std::chrono::steady_clock::now();
   const size_t total = plan.size() * strategies.size();
   for (const std::string& strategy : strategies) {
-    loop::SimStackOptions options{bin_dir, out_dir + "/stack_" + strategy, true, strategy,
-                                  flags.contains("--model-config") ? flags["--model-config"] : ""};
+    loop::SimStackOptions options;
+    options.bin_dir = bin_dir;
+    options.work_dir = out_dir + "/stack_" + strategy;
+    options.exploration_strategy = strategy;
+    if (flags.contains("--model-config")) options.model_proxy_config = flags["--model-config"];
     absl::StatusOr<std::unique_ptr<loop::SimStack>> stack = loop::SimStack::Start(options);
     if (!stack.ok()) {
       std::cerr << "semnav-bench-mission: cannot start the stack for " << strategy << ": " << stack.status() << "\n";

@@ -48,8 +48,11 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(out_dir);
   const std::string bin_dir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
   std::cout << "starting mapping, planning and gateway from " << bin_dir << " ..." << std::endl;
-  absl::StatusOr<std::unique_ptr<loop::SimStack>> stack = loop::SimStack::Start(
-      {bin_dir, out_dir + "/stack", free_ports, "SEMANTIC_FRONTIER"});
+  loop::SimStackOptions options;
+  options.bin_dir = bin_dir;
+  options.work_dir = out_dir + "/stack";
+  options.free_ports = free_ports;
+  absl::StatusOr<std::unique_ptr<loop::SimStack>> stack = loop::SimStack::Start(options);
   if (!stack.ok()) {
     std::cerr << "semnav-sim-demo: cannot start the stack: " << stack.status() << "\n";
     return 1;

@@ -16,7 +16,7 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   ASSERT_TRUE(spec.ok()) << spec.status();
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
       SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, "SEMANTIC_FRONTIER"});
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, "SEMANTIC_FRONTIER", ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
 
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
@@ -42,7 +42,7 @@ TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameSink) {
   spec->target_label = "sink";
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
       SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, "SEMANTIC_FRONTIER"});
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, "SEMANTIC_FRONTIER", ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();

@@ -237,7 +237,7 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   ++progress_.explore_goals;
   // Frontiers behind furniture or in unseen corners can be approached no closer than where the
   // robot stands (the alternative point is here): spend them and ask planning for the next.
-  constexpr int kGoalsPerStep = 10;
+  constexpr int kGoalsPerStep = 3;  // planning calls run under the gateway lock: keep them few
   for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
     const absl::StatusOr<Eigen::Vector3d> goal =
         planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
