@@ -1,5 +1,6 @@
 #include "services/planning/server/exploration_rpc.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -50,6 +51,29 @@ Exclusions ReadExclusions(const pb::SelectExplorationGoalRequest& request) {
   return out;
 }
 
+// Drops the frontier cells near excluded goals (the part the robot could not clear), then
+// clusters left smaller than min_cells; centroid and anchor are those of the cells kept.
+std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers, const GridFrame& frame,
+                                           const Exclusions& exclusions, int min_cells) {
+  std::vector<Frontier> kept;
+  for (Frontier& f : frontiers) {
+    std::erase_if(f.cells, [&](const Cell& c) { return exclusions.Covers(ToPoint(frame.ToPose(c))); });
+    if (f.cells.empty() || static_cast<int>(f.cells.size()) < min_cells) continue;
+    double sx = 0.0, sy = 0.0;
+    for (const Cell& c : f.cells) {
+      sx += c.x;
+      sy += c.y;
+    }
+    f.centroid_x = sx / f.cells.size();
+    f.centroid_y = sy / f.cells.size();
+    f.anchor = *std::min_element(f.cells.begin(), f.cells.end(), [&](const Cell& a, const Cell& b) {
+      return std::hypot(a.x - f.centroid_x, a.y - f.centroid_y) < std::hypot(b.x - f.centroid_x, b.y - f.centroid_y);
+    });
+    kept.push_back(std::move(f));
+  }
+  return kept;
+}
+
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
                                        const semnav::common::v1::Pose2D& robot,
                                        uint32_t min_cells, const pb::SemanticContext& semantics,
@@ -69,9 +93,7 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   view.free = *std::move(free);
   const int min = min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
   view.frontiers = ExtractFrontiers(view.explored, view.free, min);
-  std::erase_if(view.frontiers, [&](const Frontier& f) {
-    return exclusions.Covers(ToPoint(view.frame.ToPose(f.anchor)));
-  });
+  if (!exclusions.goals.empty()) view.frontiers = WithoutExcludedCells(std::move(view.frontiers), view.frame, exclusions, min);
   const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
   for (const Frontier& f : view.frontiers) {
     double nearest = kUnreachable;
