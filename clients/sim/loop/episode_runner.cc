@@ -230,9 +230,12 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     RecordTask(*task, robot, result);
   }
 
-  const StopOutcome outcome = ScoreStop(spec.world, label, robot.pose().position.head<2>(),
-                                        executor.stop_issued(), spec.success_radius);
-  result.stop_issued = executor.stop_issued();
+  // The stop action is the agent declaring it has arrived: the STOP a task sends when it gives
+  // up (FAILED) halts the robot but declares nothing, even if it happens near a target.
+  const bool declared = executor.stop_issued() && result.final_status == api::TASK_STATUS_SUCCEEDED;
+  const StopOutcome outcome =
+      ScoreStop(spec.world, label, robot.pose().position.head<2>(), declared, spec.success_radius);
+  result.stop_issued = declared;
   result.collisions = static_cast<int>(robot.collisions().size());
   result.record.success = outcome.success;
   result.record.distance_to_goal_m = outcome.distance_to_goal_m;

@@ -48,7 +48,7 @@ struct EpisodeResult {
   std::string task_id;
   semnav::reasoning::v1::TaskStatus final_status = semnav::reasoning::v1::TASK_STATUS_UNSPECIFIED;
   std::string final_reason;
-  bool stop_issued = false;
+  bool stop_issued = false;  // the agent declared arrival: STOP at the end of a SUCCEEDED task
   int steps = 0;
   int collisions = 0;
   std::vector<Eigen::Vector2d> trajectory;  // true xy per step, for plots
