@@ -58,7 +58,12 @@ std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d
                                                Phase phase, const std::string& reason) {
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
   if (!path.ok() && phase == Phase::kExploring) {
-    return ExplorationFailed(now, absl::StrCat("no path to the exploration goal: ", path.status().message()));
+    const std::string why = absl::StrCat("no path to the exploration goal: ", path.status().message());
+    if (explore_goal_.has_value()) return ExplorationFailed(now, why);
+    // Not even the fallback step has a path: look around here (the map grows) rather than chain
+    // more planning calls under the hub lock; the scan's end asks for a goal again.
+    return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
+                  absl::StrCat(why, "; looking around"));
   }
   if (absl::IsNotFound(path.status())) {
     // No path to a known place: explore (the map grows) and try again when the target is seen.

@@ -264,6 +264,17 @@ TEST_F(GatewayTaskExecutorTest, FrontierThatCannotBeApproachedIsSpentWithoutMovi
   EXPECT_EQ(task.progress().explore_goals, 1);
 }
 
+TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFailing) {
+  planner_.unreachable = true;  // no frontier, and the fallback step has no path either
+  TaskExecutor task = Make(FindTarget());
+  const std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  EXPECT_EQ(task.progress().explore_goals, 1);  // one exploration step, not the whole budget
+  EXPECT_EQ(planner_.queries.size(), 1u);
+}
+
 TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGoesOn) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(-10, 0, 0),
                         Eigen::Vector3d(0, -10, 0), Eigen::Vector3d(5, 5, 0)};
