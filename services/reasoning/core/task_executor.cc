@@ -164,7 +164,12 @@ std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& re
 // Exploration is not the task: a goal that cannot be reached is blacklisted and the search goes
 // on (explore_lite's frontier blacklist); the exploration budget bounds the search.
 std::vector<RobotCommand> TaskExecutor::ExplorationFailed(double now, const std::string& reason) {
-  if (explore_goal_.has_value()) spent_explore_goals_.push_back(*explore_goal_);
+  if (explore_goal_.has_value()) {
+    spent_explore_goals_.push_back(*explore_goal_);
+    // A goal never reached explored nothing: it does not use the budget (the spent list bounds
+    // the retries, since planning never offers it again).
+    --progress_.explore_goals;
+  }
   explore_goal_.reset();
   std::vector<RobotCommand> out = Explore(now);
   if (progress_.state == TaskState::kRunning) progress_.reason = absl::StrCat(progress_.reason, " (", reason, ")");

@@ -36,7 +36,7 @@ struct ExecutorConfig {
   double success_radius_m = 1.0;         // seed 004: success within 1 m of the target
   int max_replans = 3;                   // failures to reach one target before it is set aside
   double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
-  int max_explore_goals = 30;            // exploration goals per search before giving up
+  int max_explore_goals = 30;            // exploration goals per search before giving up (failed ones do not count)
   double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
   double min_explore_step_m = 0.5;       // an exploration goal whose path ends closer is spent unvisited
   bool model_available = false;          // offer slow-path model requests

@@ -295,6 +295,7 @@ TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGo
   EXPECT_TRUE(last.excluded_goals[3].isApprox(Eigen::Vector3d(0, -10, 0)));
   EXPECT_DOUBLE_EQ(last.excluded_radius_m, 1.5);
   EXPECT_EQ(task.progress().replans, 0);
+  EXPECT_EQ(task.progress().explore_goals, 1);  // goals never reached do not use the budget
 }
 
 TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetIsRejectedAndSearchResumes) {
