@@ -58,12 +58,9 @@ std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d
                                                Phase phase, const std::string& reason) {
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
   if (!path.ok() && phase == Phase::kExploring) {
-    const std::string why = absl::StrCat("no path to the exploration goal: ", path.status().message());
-    if (explore_goal_.has_value()) return ExplorationFailed(now, why);
-    // Not even the fallback step has a path: look around here (the map grows) rather than chain
-    // more planning calls under the hub lock; the scan's end asks for a goal again.
-    return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
-                  absl::StrCat(why, "; looking around"));
+    // Without a frontier goal this was the fallback step: ExplorationFailed looks around rather
+    // than chain more planning calls under the hub lock; the scan's end asks for a goal again.
+    return ExplorationFailed(now, absl::StrCat("no path to the exploration goal: ", path.status().message()));
   }
   if (absl::IsNotFound(path.status())) {
     // No path to a known place: explore (the map grows) and try again when the target is seen.
@@ -164,12 +161,15 @@ std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& re
 // Exploration is not the task: a goal that cannot be reached is blacklisted and the search goes
 // on (explore_lite's frontier blacklist); the exploration budget bounds the search.
 std::vector<RobotCommand> TaskExecutor::ExplorationFailed(double now, const std::string& reason) {
-  if (explore_goal_.has_value()) {
-    spent_explore_goals_.push_back(*explore_goal_);
-    // A goal never reached explored nothing: it does not use the budget (the spent list bounds
-    // the retries, since planning never offers it again).
-    --progress_.explore_goals;
+  if (!explore_goal_.has_value()) {
+    // The fallback step failed: the same step would be chosen again, so look around first.
+    return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
+                  absl::StrCat(reason, "; looking around"));
   }
+  spent_explore_goals_.push_back(*explore_goal_);
+  // A goal never reached explored nothing: it does not use the budget (the spent list bounds
+  // the retries, since planning never offers it again).
+  --progress_.explore_goals;
   explore_goal_.reset();
   std::vector<RobotCommand> out = Explore(now);
   if (progress_.state == TaskState::kRunning) progress_.reason = absl::StrCat(progress_.reason, " (", reason, ")");

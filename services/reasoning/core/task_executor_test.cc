@@ -273,6 +273,16 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
   EXPECT_EQ(task.progress().explore_goals, 1);  // one exploration step, not the whole budget
   EXPECT_EQ(planner_.queries.size(), 1u);
+  // After the scan the fallback step has a path; when the robot fails on it, it looks around
+  // again instead of being sent on the same step.
+  planner_.unreachable = false;
+  std::vector<RobotCommand> next = task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].kind, CommandKind::kNavigate);
+  next = task.OnFeedback(13, next[0].id, RobotFeedback::kFailed);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].kind, CommandKind::kRotate);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
 }
 
 TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGoesOn) {
