@@ -34,12 +34,12 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   EXPECT_LE(spl, 1.0);
 }
 
-TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameVase) {
+TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameBed) {
   absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
   ASSERT_TRUE(spec.ok()) << spec.status();
-  ASSERT_EQ(spec->target, "vase");  // world seed 7's in-sight object
-  spec->target = "花瓶";             // instruction "找花瓶"
-  spec->target_label = "vase";
+  ASSERT_EQ(spec->target, "bed");  // world seed 7's in-sight object
+  spec->target = "床";              // instruction "找床"
+  spec->target_label = "bed";
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
       SimStack::Start(
           {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, "SEMANTIC_FRONTIER", ""});
