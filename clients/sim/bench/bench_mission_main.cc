@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
       loop::EpisodeSpec spec = plan[i];
       spec.strategy = strategy;
       spec.max_steps = std::atoi(flags["--max-steps"].c_str());
-      const std::string group = semnav::sim::bench::GroupOf(spec.world.starts[spec.start_index].modality);
+      const std::string group = sim::ReportGroup(spec.world.starts[spec.start_index].modality);
       std::cout << absl::StrFormat("[%d/%d] %s %s start %d: find %s ... ", records.size() + 1, total, group,
                                    spec.world.name, spec.start_index, spec.target)
                 << std::flush;
@@ -161,7 +161,6 @@ int main(int argc, char** argv) {
         std::cerr << "\nsemnav-bench-mission: episode failed to run: " << result.status() << "\n";
         return 1;
       }
-      result->record.group = group;
       records.push_back(result->record);
       const auto now = std::chrono::steady_clock::now();
       const double wall_s = std::chrono::duration<double>(now - episode_started).count();

@@ -25,7 +25,7 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
     if (!StartsOf(world, modality).empty() && !world.objects.empty()) usable.push_back(&world);
   }
   if (usable.empty()) return;
-  const std::string group = GroupOf(modality);
+  const std::string group = ReportGroup(modality);
   const int count = static_cast<int>(usable.size());
   for (int i = 0; i < episodes; ++i) {
     const World& world = *usable[i % count];
@@ -50,15 +50,6 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
 }
 
 }  // namespace
-
-std::string GroupOf(Modality modality) {
-  switch (modality) {
-    case Modality::kGround: return "indoor";
-    case Modality::kUav: return "outdoor";
-    case Modality::kFlyRoll: return "flyroll";
-  }
-  return "indoor";
-}
 
 std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
                                             uint64_t seed) {

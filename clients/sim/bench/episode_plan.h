@@ -10,16 +10,13 @@
 
 namespace semnav::sim::bench {
 
-// Episodes per report group. A group's episodes use the worlds that have a start of its
-// modality: ground = indoor, uav = outdoor, fly_roll = flyroll.
+// Episodes per report group (ReportGroup): a group's episodes use the worlds that have a start
+// of its modality: ground = indoor, uav = outdoor, fly_roll = flyroll.
 struct EpisodeCounts {
   int indoor = 4;
   int outdoor = 0;
   int flyroll = 0;
 };
-
-// "indoor", "outdoor" or "flyroll".
-std::string GroupOf(Modality modality);
 
 // Per group, episode i uses world i mod W (of the worlds with a start of the group's modality and
 // objects), that world's start (i / W) mod S of the modality, and one of the world's object

@@ -54,6 +54,10 @@ struct EpisodeRecord {
   std::string group;        // the report section: indoor, outdoor or flyroll (by modality)
 };
 
+// The report section of an episode by the robot's modality: ground = "indoor", uav = "outdoor",
+// fly_roll = "flyroll".
+std::string ReportGroup(Modality modality);
+
 struct StrategySummary {
   std::string strategy;
   int episodes = 0;

@@ -188,6 +188,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.strategy = spec.strategy;
   result.record.world = spec.world.name;
   result.record.target = spec.target;
+  result.record.group = ReportGroup(start.modality);
   // The gateway must know where the robot is and what it sees before it plans.
   if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
   if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(robot.Capture(), spec.robot_id));
