@@ -19,6 +19,9 @@ struct PathQuery {
   Eigen::Vector3d goal = Eigen::Vector3d::Zero();   // map frame, metres
   bool multi_modal = false;                         // fly-roll robot
   double robot_radius_m = 0.0;                      // footprint inflation; 0 = point robot
+  // Extra inflation the path should keep beyond the footprint when the robot's own position
+  // allows it (Nav2 inflates past the inscribed radius); dropped when it would inflate the start.
+  double clearance_m = 0.0;
   // Seed 004 alternative point: when the goal is in or behind an obstacle, plan to the free point
   // nearest it on the line from here to the goal. Unset = the goal must be reachable as given.
   std::optional<Eigen::Vector3d> alternative_from;

@@ -93,8 +93,8 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
 
 absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal) {
   if ((goal - pose_.position).head<2>().norm() < 1e-6) return std::vector<Eigen::Vector3d>{};  // turn in place
-  const double radius = config_.robot_radius_m > 0.0 ? config_.robot_radius_m + config_.path_clearance_m : 0.0;
-  PathQuery query{pose_.position, goal, config_.multi_modal, radius, std::nullopt};
+  const double clearance = config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0;
+  PathQuery query{pose_.position, goal, config_.multi_modal, config_.robot_radius_m, clearance, std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
   if (absl::IsFailedPrecondition(path.status())) {
     // Seed 004: the goal lies in an obstacle; go to the free point nearest it seen from here.

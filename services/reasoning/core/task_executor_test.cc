@@ -382,7 +382,8 @@ TEST_F(GatewayTaskExecutorTest, NavigateCarriesThePlannedPathAndTheRobotsModalit
   ASSERT_EQ(planner_.queries.size(), 1u);
   const PathQuery& query = planner_.queries[0];
   EXPECT_TRUE(query.multi_modal);
-  EXPECT_DOUBLE_EQ(query.robot_radius_m, 0.35);  // footprint + clearance
+  EXPECT_DOUBLE_EQ(query.robot_radius_m, 0.3);
+  EXPECT_DOUBLE_EQ(query.clearance_m, 0.05);
   EXPECT_TRUE(query.start.isApprox(Eigen::Vector3d(0, 1, 0)));
   // Target (5, 0) from (0, 1): distance sqrt(26), 1 m stand-off along the line.
   const Eigen::Vector3d stop = Eigen::Vector3d(5, 0, 0) - Eigen::Vector3d(5, -1, 0) / std::sqrt(26.0);
