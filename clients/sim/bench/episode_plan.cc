@@ -4,41 +4,59 @@
 #include <string>
 
 #include "absl/strings/str_cat.h"
+#include "clients/sim/bench/target_names.h"
 #include "clients/sim/core/rng.h"
 
 namespace semnav::sim::bench {
+namespace {
 
-std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, int episodes, uint64_t seed) {
+std::vector<int> StartsOf(const World& world, Modality modality) {
+  std::vector<int> starts;
+  for (int s = 0; s < static_cast<int>(world.starts.size()); ++s) {
+    if (world.starts[s].modality == modality) starts.push_back(s);
+  }
+  return starts;
+}
+
+void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes, uint64_t seed,
+               std::vector<loop::EpisodeSpec>& plan) {
   std::vector<const World*> usable;
   for (const World& world : worlds) {
-    bool ground = false;
-    for (const StartPose& s : world.starts) ground |= s.modality == Modality::kGround;
-    if (ground && !world.objects.empty()) usable.push_back(&world);
+    if (!StartsOf(world, modality).empty() && !world.objects.empty()) usable.push_back(&world);
   }
-  std::vector<loop::EpisodeSpec> plan;
-  if (usable.empty()) return plan;
+  if (usable.empty()) return;
+  const std::string group = ReportGroup(modality);
   const int count = static_cast<int>(usable.size());
   for (int i = 0; i < episodes; ++i) {
     const World& world = *usable[i % count];
-    std::vector<int> starts;
-    for (int s = 0; s < static_cast<int>(world.starts.size()); ++s) {
-      if (world.starts[s].modality == Modality::kGround) starts.push_back(s);
-    }
-    const std::set<std::string> label_set = [&] {
-      std::set<std::string> labels;
-      for (const ObjectInstance& o : world.objects) labels.insert(o.label);
-      return labels;
-    }();
+    const std::vector<int> starts = StartsOf(world, modality);
+    std::set<std::string> label_set;
+    for (const ObjectInstance& o : world.objects) label_set.insert(o.label);
     const std::vector<std::string> labels(label_set.begin(), label_set.end());
-    Rng rng(MixSeed(seed, static_cast<uint64_t>(i)));
+    // The indoor group keeps the draw it always had, so earlier indoor numbers stay comparable.
+    Rng rng(modality == Modality::kGround ? MixSeed(seed, static_cast<uint64_t>(i))
+                                          : MixSeed(MixSeed(seed, static_cast<uint64_t>(modality) + 100),
+                                                    static_cast<uint64_t>(i)));
     loop::EpisodeSpec spec;
     spec.world = world;
     spec.start_index = starts[(i / count) % starts.size()];
-    spec.target = labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];
-    spec.robot_id = absl::StrCat("sim-", i);
+    spec.target_label = labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];
+    const std::optional<std::string> chinese = ChineseName(spec.target_label);
+    spec.target = i % 4 == 3 && chinese.has_value() ? *chinese : spec.target_label;
+    spec.robot_id = absl::StrCat("sim-", group, "-", i);
     spec.seed = seed + static_cast<uint64_t>(i);
     plan.push_back(std::move(spec));
   }
+}
+
+}  // namespace
+
+std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
+                                            uint64_t seed) {
+  std::vector<loop::EpisodeSpec> plan;
+  PlanGroup(worlds, Modality::kGround, counts.indoor, seed, plan);
+  PlanGroup(worlds, Modality::kUav, counts.outdoor, seed, plan);
+  PlanGroup(worlds, Modality::kFlyRoll, counts.flyroll, seed, plan);
   return plan;
 }
 

@@ -3,14 +3,26 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "clients/sim/loop/episode_spec.h"
 
 namespace semnav::sim::bench {
 
-// Episode i uses world i mod W, that world's ground-robot start (i / W) mod S, and one of the
-// world's object labels chosen by (seed, i). Worlds without ground starts or objects are skipped.
-std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, int episodes, uint64_t seed);
+// Episodes per report group (ReportGroup): a group's episodes use the worlds that have a start
+// of its modality: ground = indoor, uav = outdoor, fly_roll = flyroll.
+struct EpisodeCounts {
+  int indoor = 4;
+  int outdoor = 0;
+  int flyroll = 0;
+};
+
+// Per group, episode i uses world i mod W (of the worlds with a start of the group's modality and
+// objects), that world's start (i / W) mod S of the modality, and one of the world's object
+// labels chosen by (seed, group, i). Every fourth episode (i mod 4 = 3) names its target in
+// Chinese when the label has a name in ChineseName. Groups come in the order indoor, outdoor, flyroll.
+std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
+                                            uint64_t seed);
 
 }  // namespace semnav::sim::bench

@@ -47,6 +47,9 @@ absl::Status WriteEpisodePlot(const World& world, const GroundTruthGrid& grid, c
     cv::line(canvas.image, canvas.ToPixel(result.trajectory[i - 1]), canvas.ToPixel(result.trajectory[i]),
              cv::Scalar(200, 100, 0), 2, cv::LINE_AA);
   }
+  for (const Eigen::Vector2d& goal : result.goals) {  // the frontiers and targets the gateway sent it to
+    cv::drawMarker(canvas.image, canvas.ToPixel(goal), cv::Scalar(0, 140, 255), cv::MARKER_DIAMOND, 9, 2);
+  }
   if (!result.trajectory.empty()) {
     cv::circle(canvas.image, canvas.ToPixel(result.trajectory.front()), 6, cv::Scalar(0, 160, 0), cv::FILLED);
     cv::drawMarker(canvas.image, canvas.ToPixel(result.trajectory.back()), cv::Scalar(0, 0, 0), cv::MARKER_CROSS, 14, 2);

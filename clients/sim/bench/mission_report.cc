@@ -2,29 +2,72 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 
 namespace semnav::sim::bench {
+namespace {
+
+constexpr const char* kGroups[] = {"indoor", "outdoor", "flyroll"};
+
+std::vector<EpisodeRecord> InGroup(const std::vector<EpisodeRecord>& records, const std::string& group) {
+  std::vector<EpisodeRecord> out;
+  for (const EpisodeRecord& r : records) {
+    if (r.group == group) out.push_back(r);
+  }
+  return out;
+}
+
+// Mean path of `strategy` over mean path of the exploration-only baseline on the same episodes.
+std::optional<double> PathVsExplorationOnly(const std::vector<StrategySummary>& summaries,
+                                            const StrategySummary& s) {
+  for (const StrategySummary& base : summaries) {
+    if (base.strategy == kExplorationOnly && base.path_m > 0) return s.path_m / base.path_m;
+  }
+  return std::nullopt;
+}
+
+nlohmann::json StrategyJson(const StrategySummary& s) {
+  return {{"sr", s.sr},
+          {"spl", s.spl},
+          {"dtg", s.dtg_m},
+          {"path_m", s.path_m},
+          {"time_s", s.time_s},
+          {"model_calls", s.model_calls},
+          {"fast_path_share", s.fast_path_share},
+          {"episodes", s.episodes}};
+}
+
+}  // namespace
 
 absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double success_radius,
-                              const std::string& path) {
+                              const NotRun& not_run, const std::string& path) {
   nlohmann::json out;
   out["success_radius_m"] = success_radius;
-  nlohmann::json strategies = nlohmann::json::object();
-  for (const StrategySummary& s : SummariseByStrategy(records)) {
-    strategies[s.strategy] = {{"sr", s.sr},           {"spl", s.spl},
-                              {"dtg", s.dtg_m},       {"path_m", s.path_m},
-                              {"time_s", s.time_s},   {"energy_j", s.energy_j},
-                              {"model_calls", s.model_calls}, {"fast_path_share", s.fast_path_share},
-                              {"episodes", s.episodes}};
+  out["strategies"] = nlohmann::json::object();
+  out["groups"] = nlohmann::json::object();
+  for (const char* group : kGroups) {
+    const std::vector<StrategySummary> summaries = SummariseByStrategy(InGroup(records, group));
+    if (summaries.empty()) continue;
+    nlohmann::json strategies = nlohmann::json::object();
+    nlohmann::json energy = nlohmann::json::object();
+    nlohmann::json ratio = nlohmann::json::object();
+    for (const StrategySummary& s : summaries) {
+      strategies[s.strategy] = StrategyJson(s);
+      energy[s.strategy] = s.energy_j;
+      if (const std::optional<double> r = PathVsExplorationOnly(summaries, s)) ratio[s.strategy] = *r;
+    }
+    out["groups"][group] = {{"strategies", strategies}, {"energy_j", energy}, {"path_vs_exploration_only", ratio}};
+    if (std::string(group) == "indoor") out["strategies"] = strategies;
   }
-  out["strategies"] = strategies;
+  out["not_run"] = nlohmann::json::object();
+  for (const auto& [strategy, reason] : not_run) out["not_run"][strategy] = reason;
   nlohmann::json rows = nlohmann::json::array();
   for (const EpisodeRecord& r : records) {
-    rows.push_back({{"strategy", r.strategy}, {"world", r.world}, {"target", r.target}, {"success", r.success},
-                    {"shortest_path_m", r.shortest_path_m}, {"path_m", r.path_m},
+    rows.push_back({{"strategy", r.strategy}, {"group", r.group}, {"world", r.world}, {"target", r.target},
+                    {"success", r.success}, {"shortest_path_m", r.shortest_path_m}, {"path_m", r.path_m},
                     {"dtg_m", r.distance_to_goal_m}, {"time_s", r.time_s}, {"energy_j", r.energy_j},
                     {"model_calls", r.model_calls}, {"fast_path", r.goals_fast_path}});
   }
@@ -35,16 +78,23 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
   return absl::OkStatus();
 }
 
-std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius) {
-  std::string table = absl::StrFormat("Success radius %.2f m\n\n", success_radius);
-  absl::StrAppend(&table,
-                  "| strategy | episodes | SR | SPL | DTG (m) | path (m) | time (s) | energy (J) | model calls | "
-                  "fast-path share |\n|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const StrategySummary& s : SummariseByStrategy(records)) {
-    absl::StrAppend(&table, absl::StrFormat("| %s | %d | %.3f | %.3f | %.2f | %.2f | %.1f | %.0f | %.2f | %.2f |\n",
-                                            s.strategy, s.episodes, s.sr, s.spl, s.dtg_m, s.path_m, s.time_s,
-                                            s.energy_j, s.model_calls, s.fast_path_share));
+std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius, const NotRun& not_run) {
+  std::string table = absl::StrFormat("Success radius %.2f m\n", success_radius);
+  for (const char* group : kGroups) {
+    const std::vector<StrategySummary> summaries = SummariseByStrategy(InGroup(records, group));
+    if (summaries.empty()) continue;
+    absl::StrAppend(&table, "\n### ", group, "\n\n",
+                    "| strategy | episodes | SR | SPL | DTG (m) | path (m) | path / exploration-only | time (s) | "
+                    "energy (J) | model calls | fast-path share |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const StrategySummary& s : summaries) {
+      const std::optional<double> ratio = PathVsExplorationOnly(summaries, s);
+      absl::StrAppend(&table, absl::StrFormat("| %s | %d | %.3f | %.3f | %.2f | %.2f | %s | %.1f | %.0f | %.2f | %.2f |\n",
+                                              s.strategy, s.episodes, s.sr, s.spl, s.dtg_m, s.path_m,
+                                              ratio.has_value() ? absl::StrFormat("%.2f", *ratio) : "-",
+                                              s.time_s, s.energy_j, s.model_calls, s.fast_path_share));
+    }
   }
+  for (const auto& [strategy, reason] : not_run) absl::StrAppend(&table, "\n", strategy, " not run: ", reason, "\n");
   return table;
 }
 

@@ -1,6 +1,7 @@
 // Mission benchmark outputs: JSON per strategy, a Markdown table, a console table.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -9,11 +10,22 @@
 
 namespace semnav::sim::bench {
 
-// {"success_radius_m": r, "strategies": {NAME: {sr, spl, dtg, path_m, time_s, energy_j,
-// model_calls, fast_path_share, episodes}}, "episodes": [per-episode rows]}.
+// The exploration-only baseline outdoor path lengths are compared against (seed 000).
+inline constexpr char kExplorationOnly[] = "NEAREST_FRONTIER";
+
+// Strategies asked for but not run, with the reason (e.g. EROI_UTILITY without a model).
+using NotRun = std::map<std::string, std::string>;
+
+// {"success_radius_m": r,
+//  "strategies": {NAME: {sr, spl, dtg, path_m, time_s, model_calls, fast_path_share, episodes}},
+//      (the indoor group, the headline)
+//  "groups": {GROUP: {"strategies": {NAME: {the same keys}}, "energy_j": {NAME: mean},
+//             "path_vs_exploration_only": {NAME: mean path / NEAREST_FRONTIER's mean path}}},
+//  "not_run": {NAME: reason}, "episodes": [per-episode rows]}.
 absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double success_radius,
-                              const std::string& path);
-// The per-strategy table (Markdown, also printed to the console).
-std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius);
+                              const NotRun& not_run, const std::string& path);
+// One table per group (Markdown, also printed to the console), then the strategies not run.
+std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius,
+                         const NotRun& not_run = {});
 
 }  // namespace semnav::sim::bench

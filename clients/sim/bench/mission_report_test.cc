@@ -8,17 +8,23 @@
 namespace semnav::sim::bench {
 namespace {
 
-std::vector<EpisodeRecord> TwoEpisodes() {
-  EpisodeRecord hit{"NEAREST_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 1600.0, 1, 1, 1};
-  EpisodeRecord miss{"NEAREST_FRONTIER", "home_2", "tv", false, 3.0, 6.0, 2.5, 40.0, 2400.0, 3, 1, 0};
-  return {hit, miss};
+std::vector<EpisodeRecord> Episodes() {
+  EpisodeRecord hit{"NEAREST_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 1600.0, 1, 1, 1, "indoor"};
+  EpisodeRecord miss{"NEAREST_FRONTIER", "home_2", "tv", false, 3.0, 6.0, 2.5, 40.0, 2400.0, 3, 1, 0, "indoor"};
+  EpisodeRecord uav_base{"NEAREST_FRONTIER", "outdoor_road_vehicles", "car", true, 10.0, 40.0, 0.8, 50.0, 0.0, 0, 1, 1,
+                         "outdoor"};
+  EpisodeRecord uav{"SEMANTIC_FRONTIER", "outdoor_road_vehicles", "car", true, 10.0, 20.0, 0.6, 30.0, 0.0, 0, 1, 1,
+                    "outdoor"};
+  return {hit, miss, uav_base, uav};
 }
 
-TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategy) {
+TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   const std::string path = ::testing::TempDir() + "/mission_report_test.json";
-  ASSERT_TRUE(WriteMissionJson(TwoEpisodes(), 1.0, path).ok());
+  ASSERT_TRUE(WriteMissionJson(Episodes(), 1.0, {{"EROI_UTILITY", "no model configured"}}, path).ok());
   const nlohmann::json json = nlohmann::json::parse(std::ifstream(path));
+  // The headline is the indoor group, with exactly the keys.
   const nlohmann::json& s = json["strategies"]["NEAREST_FRONTIER"];
+  EXPECT_EQ(s.size(), 8u);
   EXPECT_EQ(s["episodes"], 2);
   EXPECT_DOUBLE_EQ(s["sr"], 0.5);
   EXPECT_DOUBLE_EQ(s["spl"], 0.25);  // (2 / max(4, 2) + 0) / 2
@@ -27,14 +33,26 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategy) {
   EXPECT_DOUBLE_EQ(s["time_s"], 30.0);
   EXPECT_DOUBLE_EQ(s["model_calls"], 2.0);
   EXPECT_DOUBLE_EQ(s["fast_path_share"], 0.5);
+  EXPECT_FALSE(json["strategies"].contains("SEMANTIC_FRONTIER"));  // outdoor only
+  EXPECT_DOUBLE_EQ(json["groups"]["indoor"]["energy_j"]["NEAREST_FRONTIER"], 2000.0);
+  const nlohmann::json& outdoor = json["groups"]["outdoor"];
+  EXPECT_DOUBLE_EQ(outdoor["strategies"]["SEMANTIC_FRONTIER"]["spl"], 0.5);  // 10 / max(20, 10)
+  EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only"]["SEMANTIC_FRONTIER"], 0.5);  // 20 m / 40 m
+  EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only"]["NEAREST_FRONTIER"], 1.0);
+  EXPECT_EQ(json["not_run"]["EROI_UTILITY"], "no model configured");
   EXPECT_DOUBLE_EQ(json["success_radius_m"], 1.0);
-  EXPECT_EQ(json["episodes"].size(), 2u);
+  EXPECT_EQ(json["episodes"].size(), 4u);
+  EXPECT_EQ(json["episodes"][2]["group"], "outdoor");
 }
 
-TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategy) {
-  const std::string table = MissionTable(TwoEpisodes(), 1.0);
+TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategyAndGroup) {
+  const std::string table = MissionTable(Episodes(), 1.0, {{"EROI_UTILITY", "no model configured"}});
   EXPECT_NE(table.find("Success radius 1.00 m"), std::string::npos);
-  EXPECT_NE(table.find("| NEAREST_FRONTIER | 2 | 0.500 | 0.250 | 1.50 |"), std::string::npos);
+  EXPECT_NE(table.find("### indoor"), std::string::npos);
+  EXPECT_NE(table.find("| NEAREST_FRONTIER | 2 | 0.500 | 0.250 | 1.50 | 5.00 | 1.00 |"), std::string::npos);
+  EXPECT_NE(table.find("### outdoor"), std::string::npos);
+  EXPECT_NE(table.find("| SEMANTIC_FRONTIER | 1 | 1.000 | 0.500 | 0.60 | 20.00 | 0.50 |"), std::string::npos);
+  EXPECT_NE(table.find("EROI_UTILITY not run: no model configured"), std::string::npos);
 }
 
 }  // namespace

@@ -68,4 +68,13 @@ std::vector<StrategySummary> SummariseByStrategy(const std::vector<EpisodeRecord
   return summaries;
 }
 
+std::string ReportGroup(Modality modality) {
+  switch (modality) {
+    case Modality::kGround: return "indoor";
+    case Modality::kUav: return "outdoor";
+    case Modality::kFlyRoll: return "flyroll";
+  }
+  return "indoor";
+}
+
 }  // namespace semnav::sim

@@ -51,7 +51,12 @@ struct EpisodeRecord {
   int model_calls = 0;
   int goals_resolved = 0;   // goal resolutions the gateway made
   int goals_fast_path = 0;  // of which on the fast path
+  std::string group;        // the report section: indoor, outdoor or flyroll (by modality)
 };
+
+// The report section of an episode by the robot's modality: ground = "indoor", uav = "outdoor",
+// fly_roll = "flyroll".
+std::string ReportGroup(Modality modality);
 
 struct StrategySummary {
   std::string strategy;

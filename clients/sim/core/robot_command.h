@@ -14,6 +14,8 @@ struct Waypoint {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // world frame; z = base altitude
   // How the segment ending here is travelled; segments touching the air are always flown.
   MotionMode mode = MotionMode::kRoll;
+  // Driven backwards, keeping the heading (a recovery back-up, as Nav2's BackUp behaviour).
+  bool reverse = false;
 };
 
 // Drive through the waypoints in order at the modality's speed, turning in place first

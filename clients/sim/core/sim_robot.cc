@@ -87,7 +87,8 @@ double SimRobot::Advance(double budget, StepReport& report) {
   const Eigen::Vector3d delta = target.position - pose_.position;
   const Eigen::Vector2d horizontal = delta.head<2>();
   if (horizontal.norm() > kEpsilon) {
-    const double heading = std::atan2(horizontal.y(), horizontal.x());
+    const Eigen::Vector2d facing = target.reverse ? Eigen::Vector2d(-horizontal) : horizontal;
+    const double heading = std::atan2(facing.y(), facing.x());
     if (std::abs(WrapAngle(heading - pose_.yaw)) > robot_.heading_tolerance) {
       report.activity = RobotActivity::kTurning;
       return std::max(Turn(heading, budget), kEpsilon);

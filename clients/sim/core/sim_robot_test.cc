@@ -73,6 +73,18 @@ TEST_F(SimRobotTest, CollisionIsReportedAndNotPassedThrough) {
   EXPECT_EQ(robot.pose().position.x(), halted);
 }
 
+TEST_F(SimRobotTest, ReverseWaypointBacksUpKeepingTheHeading) {
+  SimRobot robot = MakeRobot(Modality::kGround);
+  Waypoint back = At(-1.0, 0.0);
+  back.reverse = true;
+  ASSERT_TRUE(robot.Apply(FollowPath{{back}}).ok());
+  const StepReport report = robot.Step(2.0);  // 1 m at 0.5 m/s, no turn first
+  EXPECT_TRUE(report.arrived);
+  EXPECT_NEAR(robot.pose().position.x(), -1.0, 1e-9);
+  EXPECT_NEAR(robot.pose().yaw, 0.0, 1e-12);
+  EXPECT_NEAR(robot.path_length_m(), 1.0, 1e-9);
+}
+
 TEST_F(SimRobotTest, ObjectsAreSolidToo) {
   SimRobot robot = MakeRobot(Modality::kGround);
   ASSERT_TRUE(robot.Apply(FollowPath{{At(-5.0, 0.0)}}).ok());

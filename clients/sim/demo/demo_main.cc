@@ -60,8 +60,11 @@ int main(int argc, char** argv) {
   } else {
     const std::string bin_dir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
     std::cout << "starting mapping, planning and gateway from " << bin_dir << " ..." << std::endl;
-    absl::StatusOr<std::unique_ptr<loop::SimStack>> started =
-        loop::SimStack::Start({bin_dir, out_dir + "/stack", free_ports, "SEMANTIC_FRONTIER"});
+    loop::SimStackOptions options;
+    options.bin_dir = bin_dir;
+    options.work_dir = out_dir + "/stack";
+    options.free_ports = free_ports;
+    absl::StatusOr<std::unique_ptr<loop::SimStack>> started = loop::SimStack::Start(options);
     if (started.ok()) {
       stack = *std::move(started);
       endpoints = stack->endpoints();

@@ -12,6 +12,10 @@ namespace api = semnav::reasoning::v1;
 
 constexpr double kFacingTolerance = 0.05;  // rad, as RobotConfig::heading_tolerance
 constexpr double kReplanPeriodS = 1.0;     // simulated seconds between local re-plans
+// Nav2's recovery: after a collision back up this far and plan again, at most this often per
+// navigate command, before reporting BLOCKED to the gateway.
+constexpr double kBackUpM = 0.25;
+constexpr int kMaxRecoveries = 2;
 
 MotionMode ToMotionMode(api::LocomotionMode mode, Modality modality) {
   if (mode == api::LOCOMOTION_MODE_AIR) return MotionMode::kFly;
@@ -21,8 +25,8 @@ MotionMode ToMotionMode(api::LocomotionMode mode, Modality modality) {
 
 }  // namespace
 
-absl::StatusOr<FollowPath> CommandExecutor::PlanLocally(const Eigen::Vector3d& goal) const {
-  absl::StatusOr<std::vector<Eigen::Vector2d>> path = local_planner_(robot_.pose().position.head<2>(), goal.head<2>());
+absl::StatusOr<FollowPath> CommandExecutor::PlanLocally(const Eigen::Vector3d& from, const Eigen::Vector3d& goal) const {
+  absl::StatusOr<std::vector<Eigen::Vector2d>> path = local_planner_(from.head<2>(), goal.head<2>());
   if (!path.ok()) return path.status();
   FollowPath follow;
   const MotionMode mode = ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality());
@@ -51,7 +55,27 @@ absl::StatusOr<FollowPath> CommandExecutor::ToFollowPath(const api::NavigateActi
   }
   local_goal_ = goal;
   since_plan_s_ = 0.0;
-  return PlanLocally(goal);
+  return PlanLocally(here, goal);
+}
+
+bool CommandExecutor::Recover() {
+  if (recoveries_ >= kMaxRecoveries) return false;
+  ++recoveries_;
+  const Pose& pose = robot_.pose();
+  const Eigen::Vector3d back =
+      pose.position - kBackUpM * Eigen::Vector3d(std::cos(pose.yaw), std::sin(pose.yaw), 0.0);
+  FollowPath follow;
+  follow.waypoints.push_back(Waypoint{back, ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality()), true});
+  // Ground robots plan around what the map now shows; the others keep the gateway's path.
+  if (local_planner_ && robot_.modality() == Modality::kGround) {
+    absl::StatusOr<FollowPath> path = PlanLocally(back, navigate_goal_);
+    if (path.ok()) follow.waypoints.insert(follow.waypoints.end(), path->waypoints.begin(), path->waypoints.end());
+  }
+  if (follow.waypoints.size() == 1) {
+    follow.waypoints.push_back(Waypoint{navigate_goal_, ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality())});
+  }
+  since_plan_s_ = 0.0;
+  return robot_.Apply(follow).ok();
 }
 
 Feedback CommandExecutor::Done(api::FeedbackKind kind, std::string detail) {
@@ -65,7 +89,13 @@ Feedback CommandExecutor::Start(const api::RobotCommand& command) {
   switch (command.action_case()) {
     case api::RobotCommand::kNavigate: {
       goal_yaw_ = command.navigate().goal_yaw();
+      recoveries_ = 0;
       absl::StatusOr<FollowPath> follow = ToFollowPath(command.navigate());
+      if (follow.ok()) {
+        const auto& g = command.navigate().goal();
+        navigate_goal_ = follow->waypoints.empty() ? Eigen::Vector3d(g.x(), g.y(), g.z())
+                                                   : follow->waypoints.back().position;
+      }
       if (!follow.ok()) return Done(api::FEEDBACK_KIND_FAILED, std::string(follow.status().message()));
       if (follow->waypoints.empty()) {  // already there: only face goal_yaw
         status = robot_.Apply(Rotate{goal_yaw_});
@@ -109,11 +139,12 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
   // Re-plan a local path as the map grows: unknown space it crossed may turn out blocked.
   if (phase_ == Phase::kDriving && local_goal_.has_value() && (since_plan_s_ += dt) >= kReplanPeriodS) {
     since_plan_s_ = 0.0;
-    absl::StatusOr<FollowPath> follow = PlanLocally(*local_goal_);
+    absl::StatusOr<FollowPath> follow = PlanLocally(robot_.pose().position, *local_goal_);
     if (follow.ok() && !follow->waypoints.empty()) robot_.Apply(*follow).IgnoreError();
   }
   const StepReport report = robot_.Step(dt);
   if (report.collision.has_value()) {
+    if (phase_ == Phase::kDriving && Recover()) return std::nullopt;
     return Done(api::FEEDBACK_KIND_BLOCKED, absl::StrCat("collision with ", report.collision->kind));
   }
   switch (phase_) {

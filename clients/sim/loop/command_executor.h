@@ -30,7 +30,7 @@ class CommandExecutor {
   Feedback Start(const semnav::reasoning::v1::RobotCommand& command);
   // Advances the robot by dt seconds; returns the command's outcome when it ends this step:
   // GOAL_REACHED (navigate arrived and faced goal_yaw, rotation/hold duration elapsed),
-  // BLOCKED (collision).
+  // BLOCKED (collision that backing up and re-planning could not get past).
   std::optional<Feedback> Step(double dt);
   // True once a (non-emergency) STOP was executed: the episode's stop action.
   bool stop_issued() const { return robot_.stopped(); }
@@ -39,7 +39,9 @@ class CommandExecutor {
   enum class Phase { kIdle, kDriving, kFacing, kRotating, kHolding };
   Feedback Done(semnav::reasoning::v1::FeedbackKind kind, std::string detail);
   absl::StatusOr<FollowPath> ToFollowPath(const semnav::reasoning::v1::NavigateAction& navigate);
-  absl::StatusOr<FollowPath> PlanLocally(const Eigen::Vector3d& goal) const;
+  absl::StatusOr<FollowPath> PlanLocally(const Eigen::Vector3d& from, const Eigen::Vector3d& goal) const;
+  // After a collision: back up and re-plan to the navigate goal; false when the recoveries are used up.
+  bool Recover();
 
   SimRobot& robot_;
   LocalPlanFn local_planner_;
@@ -49,6 +51,8 @@ class CommandExecutor {
   double rate_rps_ = 0.0;
   double remaining_s_ = 0.0;  // < 0: until the next command
   std::optional<Eigen::Vector3d> local_goal_;  // set while driving a locally planned path
+  Eigen::Vector3d navigate_goal_ = Eigen::Vector3d::Zero();  // where the current navigate ends
+  int recoveries_ = 0;                         // back-up and re-plan attempts of this command
   double since_plan_s_ = 0.0;
 };
 

@@ -65,11 +65,14 @@ TEST_F(CommandExecutorTest, NavigateArrivesThenFacesGoalYaw) {
   EXPECT_NEAR(robot_.pose().yaw, 0.0, 0.05);
 }
 
-TEST_F(CommandExecutorTest, EmptyPathDrivesStraightAndReportsBlockedAtTheWall) {
+TEST_F(CommandExecutorTest, EmptyPathDrivesStraightBacksUpTwiceThenReportsBlockedAtTheWall) {
   ASSERT_EQ(executor_.Start(Navigate(1, 4.5, 0.0, 0.0, false)).kind, api::FEEDBACK_KIND_ACCEPTED);
   const std::optional<Feedback> outcome = RunUntilOutcome(40);
   ASSERT_TRUE(outcome.has_value());
   EXPECT_EQ(outcome->kind, api::FEEDBACK_KIND_BLOCKED);
+  // Two recoveries (back up 0.25 m facing the wall, try again), then the third contact is reported.
+  EXPECT_EQ(robot_.collisions().size(), 3u);
+  EXPECT_NEAR(robot_.pose().yaw, 0.0, 1e-9);  // backed up without turning round
   // Halted before the wall face at x = 2.95 minus the 0.25 m radius.
   EXPECT_LT(robot_.pose().position.x(), 2.71);
   EXPECT_GT(robot_.pose().position.x(), 2.5);

@@ -2,7 +2,9 @@
 
 #include <chrono>
 
+#include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
 #include "clients/sim/core/occupancy_raster.h"
 #include "clients/sim/core/scene.h"
 #include "clients/sim/core/sim_robot.h"
@@ -69,13 +71,49 @@ absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping, const Episo
   return absl::OkStatus();
 }
 
-void RecordTask(const api::TaskSnapshot& task, EpisodeResult& result) {
+std::string Stamp(const SimRobot& robot) { return absl::StrFormat("t=%.1fs ", robot.time_s()); }
+
+void RecordTask(const api::TaskSnapshot& task, const SimRobot& robot, EpisodeResult& result) {
+  const std::string line = absl::StrCat(api::TaskStatus_Name(task.status()), " ", task.phase(), ": ", task.reason(),
+                                        " (replans ", task.replans(), ", explore goals ", task.explore_goals(), ")");
+  if (result.timeline.empty() || !absl::EndsWith(result.timeline.back(), line)) {
+    result.timeline.push_back(Stamp(robot) + line);
+  }
   result.final_status = task.status();
   result.final_reason = task.reason();
   result.record.model_calls = task.model_requests();
   const bool resolved = task.has_target() && task.target().path() != api::RESOLUTION_PATH_UNSPECIFIED;
   result.record.goals_resolved = resolved ? 1 : 0;
   result.record.goals_fast_path = resolved && task.target().path() == api::RESOLUTION_PATH_FAST ? 1 : 0;
+}
+
+std::string Describe(const api::RobotCommand& command) {
+  switch (command.action_case()) {
+    case api::RobotCommand::kNavigate: {
+      const auto& goal = command.navigate().goal();
+      return absl::StrFormat("navigate to (%.2f, %.2f) along %d waypoints", goal.x(), goal.y(),
+                             command.navigate().path_size());
+    }
+    case api::RobotCommand::kRotate: return absl::StrFormat("rotate %.2f rad/s", command.rotate().angular_speed_rps());
+    case api::RobotCommand::kHold: return "hold";
+    case api::RobotCommand::kStop: return command.stop().emergency() ? "emergency stop" : "stop";
+    default: return "command without an action";
+  }
+}
+
+// Executes the gateway's pending commands and answers each with its feedback.
+absl::Status ExecuteCommands(RobotSession& session, CommandExecutor& executor, const SimRobot& robot,
+                             EpisodeResult& result) {
+  for (const api::RobotCommand& command : session.TakeCommands(kCommandWait)) {
+    const Feedback feedback = executor.Start(command);
+    result.timeline.push_back(absl::StrCat(Stamp(robot), "command ", command.command_id(), ": ", Describe(command),
+                                           " -> ", api::FeedbackKind_Name(feedback.kind), " ", feedback.detail));
+    if (command.action_case() == api::RobotCommand::kNavigate) {
+      result.goals.emplace_back(command.navigate().goal().x(), command.navigate().goal().y());
+    }
+    if (absl::Status s = session.Send(FeedbackMessage(feedback)); !s.ok()) return s;
+  }
+  return absl::OkStatus();
 }
 
 }  // namespace
@@ -104,6 +142,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.strategy = spec.strategy;
   result.record.world = spec.world.name;
   result.record.target = spec.target;
+  result.record.group = ReportGroup(start.modality);
   // The gateway must know where the robot is and what it sees before it plans.
   if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
   if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(robot.Capture(), spec.robot_id));
@@ -113,17 +152,17 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   absl::StatusOr<api::TaskSnapshot> task = Submit(*op, spec);
   if (!task.ok()) return task.status();
   result.task_id = task->task_id();
-  RecordTask(*task, result);
+  RecordTask(*task, robot, result);
 
   for (int step = 0; step < spec.max_steps && !Terminal(result.final_status); ++step) {
-    for (const api::RobotCommand& command : (*session)->TakeCommands(kCommandWait)) {
-      if (absl::Status s = (*session)->Send(FeedbackMessage(executor.Start(command))); !s.ok()) return s;
-    }
+    if (absl::Status s = ExecuteCommands(**session, executor, robot, result); !s.ok()) return s;
     if (executor.stop_issued()) break;  // the agent's stop action ends the episode
     const std::optional<Feedback> outcome = executor.Step(spec.step_s);
     result.steps = step + 1;
     result.trajectory.push_back(robot.pose().position.head<2>());
     if (outcome.has_value()) {
+      result.timeline.push_back(absl::StrCat(Stamp(robot), "robot: ", api::FeedbackKind_Name(outcome->kind), " ",
+                                             outcome->detail));
       if (absl::Status s = (*session)->Send(FeedbackMessage(*outcome)); !s.ok()) return s;
     }
     if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
@@ -133,32 +172,37 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     }
     task = GetTask(*op, result.task_id);
     if (!task.ok()) return task.status();
-    RecordTask(*task, result);
+    RecordTask(*task, robot, result);
     if (observer) observer(step, result);
   }
   // The task's final STOP and its terminal state race each other: execute the commands that
   // are still on the way, and give a stopped robot's task a moment to publish its end.
   for (int i = 0; i < 20 && !(executor.stop_issued() && Terminal(result.final_status)); ++i) {
-    for (const api::RobotCommand& command : (*session)->TakeCommands(kCommandWait)) {
-      if (absl::Status s = (*session)->Send(FeedbackMessage(executor.Start(command))); !s.ok()) return s;
-    }
+    if (absl::Status s = ExecuteCommands(**session, executor, robot, result); !s.ok()) return s;
     if (!executor.stop_issued() && Terminal(result.final_status) && i >= 10) break;  // ended without a stop
     task = GetTask(*op, result.task_id);
     if (!task.ok()) return task.status();
-    RecordTask(*task, result);
+    RecordTask(*task, robot, result);
   }
 
-  const StopOutcome outcome = ScoreStop(spec.world, label, robot.pose().position.head<2>(),
-                                        executor.stop_issued(), spec.success_radius);
-  result.stop_issued = executor.stop_issued();
+  // The stop action is the agent declaring it has arrived: the STOP a task sends when it gives
+  // up (FAILED) halts the robot but declares nothing, even if it happens near a target.
+  const bool declared = executor.stop_issued() && result.final_status == api::TASK_STATUS_SUCCEEDED;
+  const StopOutcome outcome =
+      ScoreStop(spec.world, label, robot.pose().position.head<2>(), declared, spec.success_radius);
+  result.stop_issued = declared;
   result.collisions = static_cast<int>(robot.collisions().size());
   result.record.success = outcome.success;
   result.record.distance_to_goal_m = outcome.distance_to_goal_m;
   result.record.path_m = robot.path_length_m();
   result.record.time_s = robot.time_s();
   result.record.energy_j = robot.energy_j();
+  // l_i on the true map the robot's body meets: its radius and height band at the start's altitude
+  // (a UAV passes over low obstacles; a fly-roll robot's l_i is its rolling path, an upper bound).
   RasterOptions raster;
   raster.robot_radius = robot_config.radius;
+  raster.z_min = start.position.z() + robot_config.ground_clearance;
+  raster.z_max = start.position.z() + robot_config.body_height;
   const GroundTruthGrid grid = RasterizeOccupancy(spec.world, raster);
   auto planning = semnav::planning::v1::PlanningService::NewStub(endpoints.planning);
   absl::StatusOr<double> shortest =

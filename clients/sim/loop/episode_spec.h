@@ -48,10 +48,14 @@ struct EpisodeResult {
   std::string task_id;
   semnav::reasoning::v1::TaskStatus final_status = semnav::reasoning::v1::TASK_STATUS_UNSPECIFIED;
   std::string final_reason;
-  bool stop_issued = false;
+  bool stop_issued = false;  // the agent declared arrival: STOP at the end of a SUCCEEDED task
   int steps = 0;
   int collisions = 0;
   std::vector<Eigen::Vector2d> trajectory;  // true xy per step, for plots
+  std::vector<Eigen::Vector2d> goals;       // distinct navigate goals the gateway sent, for plots
+  // What the gateway decided and the robot answered, one line per change ("t=12.5s ..."),
+  // so a failed episode can be read back.
+  std::vector<std::string> timeline;
 };
 
 }  // namespace semnav::sim::loop

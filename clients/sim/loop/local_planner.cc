@@ -15,6 +15,8 @@ namespace planning = semnav::planning::v1;
 constexpr double kWindowMargin = 4.0;
 // Goals of exploration may sit in a wall the robot has just seen; move them this far at most.
 constexpr double kGoalTolerance = 1.0;
+// Beyond the footprint radius, metres (the gateway's executor.path_clearance_m default).
+constexpr double kClearance = 0.1;
 
 LocalPlanFn LiveMapPlanner(const std::shared_ptr<grpc::Channel>& channel, double robot_radius) {
   std::shared_ptr<planning::PlanningService::Stub> stub = planning::PlanningService::NewStub(channel);
@@ -34,10 +36,10 @@ LocalPlanFn LiveMapPlanner(const std::shared_ptr<grpc::Channel>& channel, double
     request.set_goal_tolerance_m(kGoalTolerance);
     planning::PlanPathResponse response;
     grpc::Status status;
-    // After a halt next to an obstacle the inflated start is occupied; a point-robot plan then
-    // gets it out (the simulator still reports any real contact). A half-radius step between
-    // the two changed nothing on the 8-episode benchmark.
-    for (double radius : {robot_radius, 0.0}) {
+    // Paths keep a clearance beyond the footprint, as the gateway's do (mapped walls are off by
+    // a cell or two). Next to an obstacle the inflated start is occupied: plan with the bare
+    // footprint, then as a point robot to get out (the simulator still reports any contact).
+    for (double radius : {robot_radius + kClearance, robot_radius, 0.0}) {
       request.set_robot_radius_m(radius);
       grpc::ClientContext context;
       context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));

@@ -53,12 +53,19 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
                                          // The robot's local planner treats unexplored space as free.
                                          absl::StrCat("planning:\n  grid:\n    unknown_is_free: true\n"
                                                       "  mapping:\n    address: ", *mapping, "\n"))});
+  std::string model_proxy_section;
+  if (!options.model_proxy_config.empty()) {
+    absl::StatusOr<std::string> model_proxy = Address(options.free_ports, 50054);
+    if (!model_proxy.ok()) return model_proxy.status();
+    config.services.push_back({"modelproxy", "semnav-model-proxy", *model_proxy, options.model_proxy_config});
+    model_proxy_section = absl::StrCat("  model_proxy:\n    address: ", *model_proxy, "\n");
+  }
   config.services.push_back({"gateway", "semnav-gateway", *gateway,
                              WriteConfig(options.work_dir, "gateway",
                                          absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
                                                       "\n  planning:\n    address: ", *planning,
                                                       "\n    exploration_strategy: ",
-                                                      options.exploration_strategy, "\n"))});
+                                                      options.exploration_strategy, "\n", model_proxy_section))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
   return stack;

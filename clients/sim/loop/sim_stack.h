@@ -18,6 +18,9 @@ struct SimStackOptions {
   // The gateway's exploration strategy (planning's SelectExplorationGoal): NEAREST_FRONTIER,
   // COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY.
   std::string exploration_strategy = "SEMANTIC_FRONTIER";
+  // A semnav-model-proxy config (YAML) to run a model proxy in the stack and point the gateway
+  // at it (gateway.model_proxy.address); empty = no model, the gateway resolves on its fast path only.
+  std::string model_proxy_config;
 };
 
 class SimStack {

@@ -16,7 +16,7 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   ASSERT_TRUE(spec.ok()) << spec.status();
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
       SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, "SEMANTIC_FRONTIER"});
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, "SEMANTIC_FRONTIER", ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
 
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
@@ -34,15 +34,15 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   EXPECT_LE(spl, 1.0);
 }
 
-TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameSink) {
+TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameBed) {
   absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
   ASSERT_TRUE(spec.ok()) << spec.status();
-  ASSERT_EQ(spec->target, "sink");  // world seed 7's in-sight object
-  spec->target = "水槽";             // instruction "找水槽"
-  spec->target_label = "sink";
+  ASSERT_EQ(spec->target, "bed");  // world seed 7's in-sight object
+  spec->target = "床";              // instruction "找床"
+  spec->target_label = "bed";
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
       SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, "SEMANTIC_FRONTIER"});
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, "SEMANTIC_FRONTIER", ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();

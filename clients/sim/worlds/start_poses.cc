@@ -63,11 +63,21 @@ std::vector<StartPose> ChooseStarts(const World& world, Modality modality, doubl
                                     int count, Rng& rng) {
   const GroundTruthGrid grid = ModalityGrid(world, modality, altitude);
   const std::vector<uint8_t> region = LargestFreeRegion(grid);
+  // A start keeps one cell of margin inside the region: a cell centre is free of the dilated
+  // solids, but the body there can still graze one (the raster is 0.1 m), and a robot that
+  // starts in contact cannot move at all.
+  const auto inside = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < grid.width && y < grid.height &&
+           region[static_cast<size_t>(y) * grid.width + x] != 0;
+  };
   std::vector<Eigen::Vector2d> cells;
-  for (size_t c = 0; c < region.size(); ++c) {
-    if (region[c] != 0) {
-      cells.push_back(
-          CellCentre(grid, static_cast<int>(c % grid.width), static_cast<int>(c / grid.width)));
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      bool clear = true;
+      for (int dy = -1; dy <= 1 && clear; ++dy) {
+        for (int dx = -1; dx <= 1 && clear; ++dx) clear = inside(x + dx, y + dy);
+      }
+      if (clear) cells.push_back(CellCentre(grid, x, y));
     }
   }
   std::vector<StartPose> starts;

@@ -1,5 +1,6 @@
 #include "services/planning/server/exploration_rpc.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -82,10 +83,52 @@ absl::StatusOr<FrontierScoreConfig> WeightsOf(const pb::FrontierScoreWeights& we
   return config;
 }
 
+// Goals the caller could not reach; a goal within `radius` of one is skipped.
+struct Exclusions {
+  std::vector<Point2> goals;
+  double radius = 1.0;
+  bool Covers(const Point2& p) const {
+    for (const Point2& g : goals) {
+      if (std::hypot(p.x - g.x, p.y - g.y) <= radius) return true;
+    }
+    return false;
+  }
+};
+
+Exclusions ReadExclusions(const pb::SelectExplorationGoalRequest& request) {
+  Exclusions out;
+  for (const auto& g : request.excluded_goals()) out.goals.push_back(ToPoint(g));
+  if (request.excluded_radius_m() > 0) out.radius = request.excluded_radius_m();
+  return out;
+}
+
+// Drops the frontier cells near excluded goals (the part the robot could not clear), then
+// clusters left smaller than min_cells; centroid and anchor are those of the cells kept.
+std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers, const GridFrame& frame,
+                                           const Exclusions& exclusions, int min_cells) {
+  std::vector<Frontier> kept;
+  for (Frontier& f : frontiers) {
+    std::erase_if(f.cells, [&](const Cell& c) { return exclusions.Covers(ToPoint(frame.ToPose(c))); });
+    if (f.cells.empty() || static_cast<int>(f.cells.size()) < min_cells) continue;
+    double sx = 0.0, sy = 0.0;
+    for (const Cell& c : f.cells) {
+      sx += c.x;
+      sy += c.y;
+    }
+    f.centroid_x = sx / f.cells.size();
+    f.centroid_y = sy / f.cells.size();
+    f.anchor = *std::min_element(f.cells.begin(), f.cells.end(), [&](const Cell& a, const Cell& b) {
+      return std::hypot(a.x - f.centroid_x, a.y - f.centroid_y) < std::hypot(b.x - f.centroid_x, b.y - f.centroid_y);
+    });
+    kept.push_back(std::move(f));
+  }
+  return kept;
+}
+
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
-                                       const semnav::common::v1::Pose2D& robot, uint32_t min_cells,
-                                       const pb::SemanticContext& semantics,
-                                       const PlanningConfig& config) {
+                                       const semnav::common::v1::Pose2D& robot,
+                                       uint32_t min_cells, const pb::SemanticContext& semantics,
+                                       const PlanningConfig& config, const Exclusions& exclusions = {}) {
   FrontierView view;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
   if (!frame.ok()) return frame.status();
@@ -103,6 +146,7 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   const int min =
       min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
   view.frontiers = ExtractFrontiers(view.explored, view.free, min);
+  if (!exclusions.goals.empty()) view.frontiers = WithoutExcludedCells(std::move(view.frontiers), view.frame, exclusions, min);
   const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
   for (const Frontier& f : view.frontiers) {
     double nearest = kUnreachable;
@@ -178,8 +222,14 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                           const pb::SelectExplorationGoalRequest& request,
                           const PlanningConfig& config,
                           pb::SelectExplorationGoalResponse* response) {
-  absl::StatusOr<FrontierView> view = BuildView(
-      grid, field, request.robot(), request.min_frontier_cells(), request.semantics(), config);
+  if (request.excluded_radius_m() < 0) {
+    return FieldError(absl::StatusCode::kInvalidArgument, "excluded_radius_m",
+                      "excluded_radius_m must be >= 0");
+  }
+  const Exclusions exclusions = ReadExclusions(request);
+  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
+                                                request.min_frontier_cells(), request.semantics(),
+                                                config, exclusions);
   if (!view.ok()) return view.status();
   const pb::ExplorationStrategy strategy =
       request.strategy() == pb::EXPLORATION_STRATEGY_UNSPECIFIED
@@ -193,6 +243,12 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       PassabilityGrid open = view->free;
       for (int i = 0; i < open.size(); ++i) {
         if (view->explored.values()[i] == 0) open.values()[i] = 1;
+      }
+      // Excluded goals: their surroundings cannot hold the long-term goal.
+      for (int y = 0; y < open.height(); ++y) {
+        for (int x = 0; x < open.width(); ++x) {
+          if (exclusions.Covers(ToPoint(view->frame.ToPose(Cell{x, y})))) open.at(x, y) = 0;
+        }
       }
       const std::optional<Cell> goal =
           CoverageMaxGoal(open, view->robot, request.robot().yaw(), config.exploration.coverage);

@@ -187,6 +187,32 @@ TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
   EXPECT_DOUBLE_EQ(response.score(), 3.0);
 }
 
+TEST_F(ExplorationContract, ExcludedGoalsRemoveTheirFrontierCells) {
+  // The left cluster's nearest cell (0,3) was spent; a 1.2 m radius removes (0,3) and (1,3).
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
+  *request.add_excluded_goals() = CellCentre(0, 3);
+  request.set_excluded_radius_m(1.2);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(2, 3).x());  // what is left of the cluster
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(2, 3).y());
+  // Both clusters spent: nothing left to explore.
+  *request.add_excluded_goals() = CellCentre(2, 3);
+  *request.add_excluded_goals() = CellCentre(3, 4);
+  *request.add_excluded_goals() = CellCentre(5, 1);
+  *request.add_excluded_goals() = CellCentre(6, 3);
+  grpc::ClientContext context2;
+  const grpc::Status none = Stub()->SelectExplorationGoal(&context2, request, &response);
+  EXPECT_EQ(none.error_code(), grpc::StatusCode::NOT_FOUND);
+  // A negative radius names the field.
+  request.set_excluded_radius_m(-1.0);
+  grpc::ClientContext context3;
+  const grpc::Status bad = Stub()->SelectExplorationGoal(&context3, request, &response);
+  EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(bad.error_message().find("excluded_radius_m"), std::string::npos);
+}
+
 TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
   pb::SelectExplorationGoalRequest request =
       GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);

@@ -84,7 +84,7 @@ class DirectPlanner : public PathPlanner {
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
     return std::vector<Eigen::Vector3d>{query.start, query.goal};
   }
-  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose&) override {
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery&) override {
     return absl::NotFoundError("not used");
   }
 };

@@ -19,9 +19,22 @@ struct PathQuery {
   Eigen::Vector3d goal = Eigen::Vector3d::Zero();   // map frame, metres
   bool multi_modal = false;                         // fly-roll robot
   double robot_radius_m = 0.0;                      // footprint inflation; 0 = point robot
+  // Extra inflation the path should keep beyond the footprint when the robot's own position
+  // allows it (Nav2 inflates past the inscribed radius); dropped when it would inflate the start.
+  double clearance_m = 0.0;
   // Seed 004 alternative point: when the goal is in or behind an obstacle, plan to the free point
   // nearest it on the line from here to the goal. Unset = the goal must be reachable as given.
   std::optional<Eigen::Vector3d> alternative_from;
+};
+
+// One exploration request: where the robot is and which goals are spent (it failed to reach
+// them, or reached and scanned them already). Planning skips frontiers within
+// `excluded_radius_m` of an excluded goal, as explore_lite blacklists frontiers it could not
+// reach, so exploration moves on.
+struct ExplorationQuery {
+  RobotPose pose;
+  std::vector<Eigen::Vector3d> excluded_goals;  // map frame, metres
+  double excluded_radius_m = 0.0;
 };
 
 class PathPlanner {
@@ -32,8 +45,8 @@ class PathPlanner {
   // alternative_from), NOT_FOUND = no path (explore instead); any other error is transient.
   virtual absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) = 0;
   // Next exploration goal (the planner's configured strategy, frontier based); NOT_FOUND when the
-  // map has no frontier left.
-  virtual absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose& pose) = 0;
+  // map has no frontier left that is not excluded.
+  virtual absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) = 0;
 };
 
 }  // namespace semnav::reasoning

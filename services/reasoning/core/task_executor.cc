@@ -57,22 +57,33 @@ std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose)
 std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
                                                Phase phase, const std::string& reason) {
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
-  if (absl::IsNotFound(path.status()) && phase != Phase::kExploring) {
+  if (!path.ok() && phase == Phase::kExploring) {
+    // Without a frontier goal this was the fallback step: ExplorationFailed looks around rather
+    // than chain more planning calls under the hub lock; the scan's end asks for a goal again.
+    return ExplorationFailed(now, absl::StrCat("no path to the exploration goal: ", path.status().message()));
+  }
+  if (absl::IsNotFound(path.status())) {
     // No path to a known place: explore (the map grows) and try again when the target is seen.
     if (++progress_.replans > config_.max_replans) {
-      return Fail(absl::StrCat("gave up after ", config_.max_replans, " re-plans: no path"));
+      return SetTargetAside(now, absl::StrCat("no path after ", config_.max_replans, " re-plans"));
     }
     progress_.reason = absl::StrCat("no path: ", path.status().message(), "; exploring");
     return Explore(now);
   }
   if (!path.ok()) return Replan(now, absl::StrCat("no path: ", path.status().message()));
+  return Navigate(now, goal, *std::move(path), yaw, speed, phase, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector3d& goal,
+                                                 std::vector<Eigen::Vector3d> path, double yaw, double speed,
+                                                 Phase phase, const std::string& reason) {
   RobotCommand command = NewCommand(CommandKind::kNavigate, reason);
   command.goal = goal;
-  if (!path->empty()) command.goal.head<2>() = path->back().head<2>();  // alternative point or adjusted goal
+  if (!path.empty()) command.goal.head<2>() = path.back().head<2>();  // alternative point or adjusted goal
   command.goal_yaw = yaw;
   command.max_speed = speed;
-  command.path = *path;
-  progress_.path = *std::move(path);
+  command.path = path;
+  progress_.path = std::move(path);
   progress_.phase = phase == Phase::kExploring ? "exploring" : phase == Phase::kVerifying ? "verifying" : "navigating";
   progress_.reason = reason;
   phase_ = phase;
@@ -82,7 +93,8 @@ std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d
 
 absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal) {
   if ((goal - pose_.position).head<2>().norm() < 1e-6) return std::vector<Eigen::Vector3d>{};  // turn in place
-  PathQuery query{pose_.position, goal, config_.multi_modal, config_.robot_radius_m, std::nullopt};
+  const double clearance = config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0;
+  PathQuery query{pose_.position, goal, config_.multi_modal, config_.robot_radius_m, clearance, std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
   if (absl::IsFailedPrecondition(path.status())) {
     // Seed 004: the goal lies in an obstacle; go to the free point nearest it seen from here.
@@ -135,11 +147,54 @@ std::vector<RobotCommand> TaskExecutor::Fail(const std::string& reason) {
 }
 
 std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& reason) {
+  if (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) return ExplorationFailed(now, reason);
   if (++progress_.replans > config_.max_replans) {
+    if (progress_.target.has_value()) {
+      return SetTargetAside(now, absl::StrCat("could not reach it after ", config_.max_replans, " re-plans: ", reason));
+    }
     return Fail(absl::StrCat("gave up after ", config_.max_replans, " re-plans: ", reason));
   }
   progress_.reason = reason;
-  return phase_ == Phase::kExploring ? Explore(now) : EnterSubgoal(now);
+  return EnterSubgoal(now);
+}
+
+// Exploration is not the task: a goal that cannot be reached is blacklisted and the search goes
+// on (explore_lite's frontier blacklist); the exploration budget bounds the search.
+std::vector<RobotCommand> TaskExecutor::ExplorationFailed(double now, const std::string& reason) {
+  if (!explore_goal_.has_value()) {
+    // The fallback step failed: the same step would be chosen again, so look around first.
+    return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
+                  absl::StrCat(reason, "; looking around"));
+  }
+  spent_explore_goals_.push_back(*explore_goal_);
+  // A goal never reached explored nothing: it does not use the budget (the spent list bounds
+  // the retries, since planning never offers it again).
+  --progress_.explore_goals;
+  explore_goal_.reset();
+  std::vector<RobotCommand> out = Explore(now);
+  if (progress_.state == TaskState::kRunning) progress_.reason = absl::StrCat(progress_.reason, " (", reason, ")");
+  return out;
+}
+
+// A located target the robot cannot reach (blocked approach, no path) is set aside while the
+// search goes on elsewhere; it is tried again from the next exploration goal, often from another side.
+std::vector<RobotCommand> TaskExecutor::SetTargetAside(double now, const std::string& reason) {
+  const int64_t id = progress_.target.has_value() ? progress_.target->object_id : -1;
+  if (id >= 0) set_aside_.insert(id);
+  progress_.target.reset();
+  progress_.replans = 0;
+  for (int i = 0; i < static_cast<int>(subgoals_.size()); ++i) {
+    const Subgoal& goal = subgoals_[static_cast<std::size_t>(i)];
+    if (goal.type == SubgoalType::kFind || (goal.type == SubgoalType::kNavigate && !goal.target.is_room)) {
+      progress_.subgoal_index = std::min(progress_.subgoal_index, i);
+      break;
+    }
+  }
+  std::vector<RobotCommand> out = Explore(now);
+  if (progress_.state == TaskState::kRunning) {
+    progress_.reason = absl::StrCat(progress_.reason, " (object ", id, " set aside: ", reason, ")");
+  }
+  return out;
 }
 
 std::vector<RobotCommand> TaskExecutor::NextSubgoal(double now, const std::string& reason) {
@@ -152,7 +207,9 @@ std::vector<RobotCommand> TaskExecutor::NextSubgoal(double now, const std::strin
 bool TaskExecutor::TryResolve() {
   if (progress_.target.has_value() && excluded_.count(progress_.target->object_id) == 0) return true;
   progress_.target.reset();
-  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, excluded_);
+  std::set<int64_t> skip = excluded_;
+  skip.insert(set_aside_.begin(), set_aside_.end());
+  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
   if (!resolution.accepted) return false;
   const SceneObject* object = graph_.FindObject(resolution.best->object_id);
   progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "fast", 0};
@@ -188,15 +245,25 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
     return Fail(absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
   }
   ++progress_.explore_goals;
-  absl::StatusOr<Eigen::Vector3d> goal = planner_->ExplorationGoal(pose_);
-  Eigen::Vector3d target;
-  if (goal.ok()) {
-    target = *goal;
-  } else {
-    // No frontier from planning: step toward the least-explored sector of the topological memory.
-    const double yaw = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
-    target = pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
+  // Frontiers behind furniture or in unseen corners can be approached no closer than where the
+  // robot stands (the alternative point is here): spend them and ask planning for the next.
+  constexpr int kGoalsPerStep = 3;  // planning calls run under the gateway lock: keep them few
+  for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
+    const absl::StatusOr<Eigen::Vector3d> goal =
+        planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
+    if (!goal.ok()) break;
+    explore_goal_ = *goal;
+    absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
+    const bool moves = path.ok() && (path->empty() || (path->back() - pose_.position).head<2>().norm() >=
+                                                          config_.min_explore_step_m);
+    if (moves) return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring, "exploring for the target");
+    spent_explore_goals_.push_back(*goal);
   }
+  // No usable frontier from planning: step toward the least-explored sector of the topological memory.
+  explore_goal_.reset();
+  const double yaw = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
+  const Eigen::Vector3d target =
+      pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
   return MoveTo(now, target, YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
 }
 
@@ -280,6 +347,12 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
 std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
   const double distance = (progress_.target->position - pose_.position).head<2>().norm();
   if (distance <= config_.success_radius_m) return NextSubgoal(now, "target verified within the success radius");
+  constexpr double kSameSpotM = 0.25;
+  if (too_far_at_.has_value() && (*too_far_at_ - pose_.position).head<2>().norm() <= kSameSpotM) {
+    too_far_at_.reset();
+    return SetTargetAside(now, "the approach cannot get within the success radius");
+  }
+  too_far_at_ = pose_.position;
   for (int i = progress_.subgoal_index; i >= 0; --i) {
     if (subgoals_[static_cast<std::size_t>(i)].type == SubgoalType::kApproach) {
       progress_.subgoal_index = i;
@@ -299,10 +372,12 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
   }
   switch (phase_) {
     case Phase::kExploring:
+      set_aside_.clear();  // a new vantage point: targets set aside may be reachable from here
       if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration goal reached");
       return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
                     "scanning at the exploration goal");
     case Phase::kExploreScan:
+      if (explore_goal_.has_value()) spent_explore_goals_.push_back(*explore_goal_);
       return Explore(now);
     case Phase::kVerifying:
       return {};  // facing the target; confirmation comes from detections or the vision model

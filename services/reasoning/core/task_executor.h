@@ -34,13 +34,18 @@ struct ExecutorConfig {
   int verify_detections = 2;             // new detections of the target that confirm it
   double wait_duration_s = 5.0;          // WAIT default
   double success_radius_m = 1.0;         // seed 004: success within 1 m of the target
-  int max_replans = 3;                   // failures of one subgoal before the task fails
-  int max_explore_goals = 30;            // exploration goals per search before giving up
+  int max_replans = 3;                   // failures to reach one target before it is set aside
+  double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
+  int max_explore_goals = 30;            // exploration goals per search before giving up (failed ones do not count)
   double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
+  double min_explore_step_m = 0.5;       // an exploration goal whose path ends closer is spent unvisited
   bool model_available = false;          // offer slow-path model requests
   int grounding_max_objects = 15;        // ESCA budget of a slow-path request
   bool multi_modal = false;              // the robot can fly-roll: plan multi-modal paths
   double robot_radius_m = 0.0;           // the robot's footprint radius for path planning
+  // Paths keep this much more than the footprint from mapped obstacles (Nav2 inflates beyond the
+  // inscribed radius too): mapped walls are off by a cell or two, and paths hug inflated edges.
+  double path_clearance_m = 0.1;
 };
 
 enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
@@ -117,11 +122,15 @@ class TaskExecutor {
   std::vector<RobotCommand> Halt(TaskState state, CommandKind kind, const std::string& reason);
   std::vector<RobotCommand> Fail(const std::string& reason);
   std::vector<RobotCommand> Replan(double now, const std::string& reason);
+  std::vector<RobotCommand> ExplorationFailed(double now, const std::string& reason);
+  std::vector<RobotCommand> SetTargetAside(double now, const std::string& reason);
   std::vector<RobotCommand> Search(double now);
   absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(const Eigen::Vector3d& goal);
   std::vector<RobotCommand> Explore(double now);
   std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
                                    Phase phase, const std::string& reason);
+  std::vector<RobotCommand> Navigate(double now, const Eigen::Vector3d& goal, std::vector<Eigen::Vector3d> path,
+                                     double yaw, double speed, Phase phase, const std::string& reason);
   std::vector<RobotCommand> Rotate(double now, double rate, double duration, Phase phase, const std::string& reason);
   std::vector<RobotCommand> Hold(double now, double duration, const std::string& reason);
   std::vector<RobotCommand> CheckSuccessOrApproach(double now);
@@ -144,6 +153,15 @@ class TaskExecutor {
   SceneGraph graph_;
   std::set<int64_t> excluded_;
   std::vector<float> text_embedding_;
+  // Targets the robot failed to reach; retried once it reached another exploration goal.
+  std::set<int64_t> set_aside_;
+  std::optional<Eigen::Vector3d> explore_goal_;     // the active exploration goal from planning
+  // Where the robot stood when a verified target was last found too far away: a second verdict
+  // from the same spot means the approach cannot get closer.
+  std::optional<Eigen::Vector3d> too_far_at_;
+  // Exploration goals the robot failed to reach or already scanned from: not offered again (a
+  // frontier that survives a visit and a full turn cannot be cleared from there).
+  std::vector<Eigen::Vector3d> spent_explore_goals_;
   uint64_t next_command_id_ = 1;
   uint64_t active_command_ = 0;
   double phase_deadline_ = 0.0;

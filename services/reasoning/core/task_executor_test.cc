@@ -27,13 +27,15 @@ class ScriptedPlanner : public PathPlanner {
   std::vector<PathQuery> queries;
   std::deque<absl::Status> failures;
   Eigen::Vector3d alternative_point = Eigen::Vector3d::Zero();
-  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose&) override {
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
+    exploration_queries.push_back(query);
     if (frontiers.empty()) return absl::NotFoundError("no frontier");
     Eigen::Vector3d goal = frontiers.front();
     frontiers.pop_front();
     return goal;
   }
   std::deque<Eigen::Vector3d> frontiers;
+  std::vector<ExplorationQuery> exploration_queries;
   bool unreachable = false;
 };
 
@@ -160,6 +162,9 @@ TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppea
   out = task.OnPose(32, At(10));  // 12 s elapsed: next exploration goal
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  // The scanned goal is not offered again.
+  ASSERT_EQ(planner_.exploration_queries.back().excluded_goals.size(), 1u);
+  EXPECT_TRUE(planner_.exploration_queries.back().excluded_goals[0].isApprox(Eigen::Vector3d(10, 0, 0)));
 
   out = task.OnSceneGraph(33, GraphWith({chair, Extinguisher(12)}, 2));
   ASSERT_EQ(out.size(), 1u);  // FIND done, LOOK_AROUND skipped, APPROACH issued
@@ -186,7 +191,8 @@ TEST_F(GatewayTaskExecutorTest, SlowPathAnswerProvidesTheGoal) {
   EXPECT_EQ(task.progress().target->path, "slow");
 }
 
-TEST_F(GatewayTaskExecutorTest, FailuresReplanThenFail) {
+TEST_F(GatewayTaskExecutorTest, UnreachableTargetIsSetAsideAndSearchGoesOn) {
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
   TaskExecutor task = Make(GoToTarget());
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   std::vector<RobotCommand> out = task.Start(0, At(0));
@@ -197,11 +203,109 @@ TEST_F(GatewayTaskExecutorTest, FailuresReplanThenFail) {
   out = task.OnFeedback(122, out[0].id, RobotFeedback::kBlocked);
   out = task.OnFeedback(123, out[0].id, RobotFeedback::kFailed);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  EXPECT_TRUE(task.progress().target.has_value());
+  // The fourth failure sets object 7 aside: the robot explores instead of giving up.
   out = task.OnFeedback(124, out[0].id, RobotFeedback::kBlocked);
   ASSERT_EQ(out.size(), 1u);
-  EXPECT_EQ(out[0].kind, CommandKind::kStop);
-  EXPECT_EQ(task.progress().state, TaskState::kFailed);
-  EXPECT_TRUE(absl::StrContains(task.progress().reason, "gave up after 3 re-plans"));
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_FALSE(task.progress().target.has_value());
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "object 7 set aside"));
+  EXPECT_TRUE(task.OnSceneGraph(125, GraphWith({Extinguisher(16)}, 2)).empty());  // still set aside
+  // Once the robot reached the next exploration goal, object 7 is tried again.
+  task.OnFeedback(130, out[0].id, RobotFeedback::kGoalReached);
+  out = task.OnSceneGraph(131, GraphWith({Extinguisher(17)}, 3));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "navigating");
+  EXPECT_EQ(task.progress().target->object_id, 7);
+}
+
+TEST_F(GatewayTaskExecutorTest, ApproachThatCannotGetCloserSetsTheTargetAside) {
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  int detections = 15;
+  // The robot gets stuck 3 m short of the target on every approach (say, behind a counter).
+  const auto verify_from_here = [&](double now) {
+    task.OnPose(now, At(2));
+    out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // navigate / approach "done"
+    if (task.progress().phase != "verifying") out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
+    EXPECT_EQ(task.progress().phase, "verifying");
+    task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // facing the target
+    task.OnSceneGraph(now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+    out = task.OnSceneGraph(now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+  };
+  verify_from_here(1);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);  // too far: approach once more
+  verify_from_here(2);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_FALSE(task.progress().target.has_value());
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "cannot get within the success radius"));
+}
+
+TEST_F(GatewayTaskExecutorTest, FrontierThatCannotBeApproachedIsSpentWithoutMoving) {
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};
+  planner_.alternative_point = Eigen::Vector3d(0.1, 0, 0);  // behind furniture: no closer than here
+  planner_.frontiers = {Eigen::Vector3d(0, 3, 0), Eigen::Vector3d(5, 0, 0)};
+  TaskExecutor task = Make(FindTarget());
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(5, 0, 0)));
+  ASSERT_EQ(planner_.exploration_queries.size(), 2u);
+  ASSERT_EQ(planner_.exploration_queries[1].excluded_goals.size(), 1u);
+  EXPECT_TRUE(planner_.exploration_queries[1].excluded_goals[0].isApprox(Eigen::Vector3d(0, 3, 0)));
+  EXPECT_EQ(task.progress().explore_goals, 1);
+}
+
+TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFailing) {
+  planner_.unreachable = true;  // no frontier, and the fallback step has no path either
+  TaskExecutor task = Make(FindTarget());
+  const std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  EXPECT_EQ(task.progress().explore_goals, 1);  // one exploration step, not the whole budget
+  EXPECT_EQ(planner_.queries.size(), 1u);
+  // After the scan the fallback step has a path; when the robot fails on it, it looks around
+  // again instead of being sent on the same step.
+  planner_.unreachable = false;
+  std::vector<RobotCommand> next = task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].kind, CommandKind::kNavigate);
+  next = task.OnFeedback(13, next[0].id, RobotFeedback::kFailed);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].kind, CommandKind::kRotate);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+}
+
+TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGoesOn) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(-10, 0, 0),
+                        Eigen::Vector3d(0, -10, 0), Eigen::Vector3d(5, 5, 0)};
+  ExecutorConfig config;
+  config.explore_exclusion_radius_m = 1.5;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  // Blocked four times in a row: more than max_replans, but exploring never fails the task.
+  for (int i = 0; i < 4; ++i) out = task.OnFeedback(1 + i, out[0].id, RobotFeedback::kBlocked);
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(5, 5, 0)));
+  ASSERT_EQ(planner_.exploration_queries.size(), 5u);
+  EXPECT_TRUE(planner_.exploration_queries[0].excluded_goals.empty());
+  const ExplorationQuery& last = planner_.exploration_queries.back();
+  ASSERT_EQ(last.excluded_goals.size(), 4u);  // every goal it failed to reach
+  EXPECT_TRUE(last.excluded_goals[0].isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_TRUE(last.excluded_goals[3].isApprox(Eigen::Vector3d(0, -10, 0)));
+  EXPECT_DOUBLE_EQ(last.excluded_radius_m, 1.5);
+  EXPECT_EQ(task.progress().replans, 0);
+  EXPECT_EQ(task.progress().explore_goals, 1);  // goals never reached do not use the budget
 }
 
 TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetIsRejectedAndSearchResumes) {
@@ -271,6 +375,7 @@ TEST_F(GatewayTaskExecutorTest, NavigateCarriesThePlannedPathAndTheRobotsModalit
   ExecutorConfig config;
   config.multi_modal = true;
   config.robot_radius_m = 0.3;
+  config.path_clearance_m = 0.05;
   TaskExecutor task = Make(GoToTarget(), config);
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   std::vector<RobotCommand> out = task.Start(0, At(0, 1));
@@ -278,6 +383,7 @@ TEST_F(GatewayTaskExecutorTest, NavigateCarriesThePlannedPathAndTheRobotsModalit
   const PathQuery& query = planner_.queries[0];
   EXPECT_TRUE(query.multi_modal);
   EXPECT_DOUBLE_EQ(query.robot_radius_m, 0.3);
+  EXPECT_DOUBLE_EQ(query.clearance_m, 0.05);
   EXPECT_TRUE(query.start.isApprox(Eigen::Vector3d(0, 1, 0)));
   // Target (5, 0) from (0, 1): distance sqrt(26), 1 m stand-off along the line.
   const Eigen::Vector3d stop = Eigen::Vector3d(5, 0, 0) - Eigen::Vector3d(5, -1, 0) / std::sqrt(26.0);

@@ -43,10 +43,15 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("success_radius_m", &c.executor.success_radius_m)
       .Read("max_replans", &c.executor.max_replans)
       .Read("max_explore_goals", &c.executor.max_explore_goals)
+      .Read("explore_exclusion_radius_m", &c.executor.explore_exclusion_radius_m)
+      .Read("path_clearance_m", &c.executor.path_clearance_m)
+      .Read("min_explore_step_m", &c.executor.min_explore_step_m)
       .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
       .Read("grounding_max_objects", &c.executor.grounding_max_objects);
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
+  executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m", "must be >= 0");
+  executor.Check(c.executor.path_clearance_m >= 0.0, "path_clearance_m", "must be >= 0");
 
   ConfigReader memory = section.Child("memory");
   memory.Read("node_spacing_m", &c.memory.node_spacing_m)

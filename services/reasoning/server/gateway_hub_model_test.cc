@@ -213,7 +213,7 @@ TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
 // Records the context of every exploration request; planning has no goal to offer.
 class RecordingExplorer : public ExplorationService {
  public:
-  absl::StatusOr<Eigen::Vector3d> SelectGoal(const RobotPose&, const std::string& strategy,
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery&, const std::string& strategy,
                                              const ExplorationContext& context) override {
     strategies.push_back(strategy);
     contexts.push_back(context);

@@ -56,20 +56,28 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   SetPose(query.start, request.mutable_start());
   SetPose(query.goal, request.mutable_goal());
   request.set_planner(query.multi_modal ? pb::PLANNER_KIND_JUMP_ASTAR : pb::PLANNER_KIND_JPS);
-  request.set_robot_radius_m(query.robot_radius_m);
   request.set_goal_tolerance_m(settings_.goal_tolerance_m);
   if (query.alternative_from.has_value()) {
     request.set_allow_alternative_point(true);
     SetPose(*query.alternative_from, request.mutable_first_sighting());
   }
-  grpc::ClientContext context;
-  SetDeadline(context, settings_.deadline_ms);
   const auto started = std::chrono::steady_clock::now();
   pb::PlanPathResponse response;
-  const grpc::Status status = stub_->PlanPath(&context, request, &response);
+  grpc::Status status;
+  pb::PlanFailureReason reason = pb::PLAN_FAILURE_REASON_UNSPECIFIED;
+  // With the clearance first; when that inflates the robot's own position (it stands near a
+  // wall), with the bare footprint.
+  for (const double radius : {query.robot_radius_m + query.clearance_m, query.robot_radius_m}) {
+    request.set_robot_radius_m(radius);
+    grpc::ClientContext context;
+    SetDeadline(context, settings_.deadline_ms);
+    status = stub_->PlanPath(&context, request, &response);
+    const std::optional<pb::PlanFailureDetail> detail =
+        status.ok() ? std::nullopt : GetDetail<pb::PlanFailureDetail>(status);
+    reason = detail.has_value() ? detail->reason() : pb::PLAN_FAILURE_REASON_UNSPECIFIED;
+    if (reason != pb::PLAN_FAILURE_REASON_START_OCCUPIED || query.clearance_m <= 0.0) break;
+  }
   if (!status.ok()) {
-    const std::optional<pb::PlanFailureDetail> detail = GetDetail<pb::PlanFailureDetail>(status);
-    const pb::PlanFailureReason reason = detail.has_value() ? detail->reason() : pb::PLAN_FAILURE_REASON_UNSPECIFIED;
     if (reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED) return absl::FailedPreconditionError(status.error_message());
     if (reason == pb::PLAN_FAILURE_REASON_NO_PATH) return absl::NotFoundError(status.error_message());
     LogWarning("planning_unavailable", {{"code", static_cast<int>(status.error_code())},
@@ -92,13 +100,14 @@ grpc::Status PlanningClient::Select(const pb::SelectExplorationGoalRequest& requ
   return stub_->SelectExplorationGoal(&call, request, response);
 }
 
-absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const RobotPose& pose) {
-  return SelectGoal(pose, "", ExplorationContext{});
+absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const ExplorationQuery& query) {
+  return SelectGoal(query, "", ExplorationContext{});
 }
 
-absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const RobotPose& pose, const std::string& strategy,
+absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuery& query, const std::string& strategy,
                                                            const ExplorationContext& context) {
   if (!Ready("SelectExplorationGoal")) return absl::NotFoundError("planning service not connected");
+  const RobotPose& pose = query.pose;
   pb::SelectExplorationGoalRequest request;
   request.mutable_source()->mutable_live_map();
   SetPose(pose.position, request.mutable_robot());
@@ -119,6 +128,8 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const RobotPose& pose
   for (const Eigen::Vector3d& place : context.visited) SetPose(place, request.mutable_semantics()->add_visited());
   const bool eroi_values = chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
   if (eroi_values) AddEroiValues(context, &request);
+  for (const Eigen::Vector3d& goal : query.excluded_goals) SetPose(goal, request.add_excluded_goals());
+  request.set_excluded_radius_m(query.excluded_radius_m);
   pb::SelectExplorationGoalResponse response;
   grpc::Status status = Select(request, &response);
   if (eroi_values && status.error_code() == grpc::StatusCode::INVALID_ARGUMENT) {

@@ -29,8 +29,8 @@ class PlanningClient : public PathPlanner, public ExplorationService {
   PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings);
 
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override;
-  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose& pose) override;
-  absl::StatusOr<Eigen::Vector3d> SelectGoal(const RobotPose& pose, const std::string& strategy,
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override;
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query, const std::string& strategy,
                                              const ExplorationContext& context) override;
 
  private:

@@ -58,7 +58,8 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   context.visited.push_back(Eigen::Vector3d(0.0, 0.0, 0.0));
   RobotPose pose;
   pose.position = Eigen::Vector3d(1.0, 2.0, 0.3);
-  absl::StatusOr<Eigen::Vector3d> goal = client_->SelectGoal(pose, "COVERAGE_MAX", context);
+  const ExplorationQuery query{pose, {Eigen::Vector3d(5.0, 6.0, 0.3)}, 1.5};
+  absl::StatusOr<Eigen::Vector3d> goal = client_->SelectGoal(query, "COVERAGE_MAX", context);
   ASSERT_TRUE(goal.ok()) << goal.status();
   EXPECT_TRUE(goal->isApprox(Eigen::Vector3d(4.0, -1.0, 0.3)));  // z stays the robot's
 
@@ -66,6 +67,10 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   ASSERT_EQ(planning_.requests.size(), 1u);
   const pb::SelectExplorationGoalRequest& request = planning_.requests[0];
   EXPECT_EQ(request.strategy(), pb::EXPLORATION_STRATEGY_COVERAGE_MAX);
+  ASSERT_EQ(request.excluded_goals_size(), 1);  // spent goals reach planning with the task's context
+  EXPECT_EQ(request.excluded_goals(0).x(), 5.0);
+  EXPECT_EQ(request.excluded_goals(0).y(), 6.0);
+  EXPECT_EQ(request.excluded_radius_m(), 1.5);
   ASSERT_EQ(request.semantics().objects_size(), 2);
   EXPECT_EQ(request.semantics().objects(0).label(), "sink");
   EXPECT_DOUBLE_EQ(request.semantics().objects(0).position().y(), 3.0);
@@ -83,7 +88,7 @@ TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIs
   context.eroi_window_min = Eigen::Vector2d(-1.0, -1.0);
   context.eroi_window_max = Eigen::Vector2d(3.0, 1.0);
   context.eroi_edge_m = 2.0;
-  ASSERT_TRUE(client_->SelectGoal(RobotPose{}, "EROI_UTILITY", context).ok());
+  ASSERT_TRUE(client_->SelectGoal({}, "EROI_UTILITY", context).ok());
   {
     absl::MutexLock lock(&planning_.mu);
     const pb::SelectExplorationGoalRequest& request = planning_.requests.back();
@@ -94,12 +99,12 @@ TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIs
     EXPECT_DOUBLE_EQ(request.source().live_map().window_max().y(), 0.5);
     planning_.refuse_values = true;
   }
-  ASSERT_TRUE(client_->SelectGoal(RobotPose{}, "EROI_UTILITY", context).ok());
+  ASSERT_TRUE(client_->SelectGoal({}, "EROI_UTILITY", context).ok());
   absl::MutexLock lock(&planning_.mu);
   ASSERT_EQ(planning_.requests.size(), 3u);  // refused, then asked again without values
   EXPECT_EQ(planning_.requests[2].eroi_semantic_values_size(), 0);
   EXPECT_FALSE(planning_.requests[2].source().live_map().has_window_min());
-  EXPECT_EQ(client_->SelectGoal(RobotPose{}, "RANDOM", context).status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(client_->SelectGoal({}, "RANDOM", context).status().code(), absl::StatusCode::kInvalidArgument);
 }
 
 }  // namespace

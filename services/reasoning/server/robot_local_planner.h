@@ -13,7 +13,7 @@ class RobotLocalPlanner : public PathPlanner {
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery&) override {
     return std::vector<Eigen::Vector3d>{};
   }
-  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose&) override {
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery&) override {
     return absl::NotFoundError("no planning service configured");
   }
 };

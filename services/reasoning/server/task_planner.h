@@ -17,7 +17,7 @@ class ExplorationService {
   virtual ~ExplorationService() = default;
   // `strategy`: NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY; "" = the
   // configured default. NOT_FOUND when planning has no goal.
-  virtual absl::StatusOr<Eigen::Vector3d> SelectGoal(const RobotPose& pose, const std::string& strategy,
+  virtual absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query, const std::string& strategy,
                                                      const ExplorationContext& context) = 0;
 };
 
@@ -30,9 +30,9 @@ class TaskPlanner final : public PathPlanner {
       : paths_(paths), explorer_(explorer), strategy_(std::move(strategy)), context_(std::move(context)) {}
 
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override { return paths_->Plan(query); }
-  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const RobotPose& pose) override {
-    if (explorer_ == nullptr) return paths_->ExplorationGoal(pose);
-    return explorer_->SelectGoal(pose, strategy_, context_());
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
+    if (explorer_ == nullptr) return paths_->ExplorationGoal(query);
+    return explorer_->SelectGoal(query, strategy_, context_());
   }
   const std::string& strategy() const { return strategy_; }
 

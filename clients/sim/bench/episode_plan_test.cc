@@ -1,0 +1,49 @@
+#include "clients/sim/bench/episode_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "clients/sim/core/test_worlds.h"
+
+namespace semnav::sim::bench {
+namespace {
+
+World WithObject(const std::string& name, Modality modality, const std::string& label) {
+  World world = testing::OpenWorld();
+  world.name = name;
+  world.starts[0].modality = modality;
+  world.objects.push_back(testing::Object(label + "_1", label, testing::Box(3.0, 3.0, 0.5, 0.5, 0.8)));
+  return world;
+}
+
+TEST(SimBenchEpisodePlanTest, GroupsByModalityAndAsksEveryFourthTargetInChinese) {
+  const std::vector<World> worlds = {WithObject("home", Modality::kGround, "sink"),
+                                     WithObject("field", Modality::kUav, "car"),
+                                     WithObject("hall", Modality::kFlyRoll, "suitcase")};
+  const std::vector<loop::EpisodeSpec> plan = PlanEpisodes(worlds, {4, 2, 1}, 1);
+  ASSERT_EQ(plan.size(), 7u);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(plan[i].world.name, "home");
+    EXPECT_EQ(plan[i].target_label, "sink");
+  }
+  EXPECT_EQ(plan[0].target, "sink");
+  EXPECT_EQ(plan[3].target, "水槽");  // i mod 4 = 3: the Chinese name, scored on the English label
+  EXPECT_EQ(plan[4].world.name, "field");
+  EXPECT_EQ(plan[4].world.starts[plan[4].start_index].modality, Modality::kUav);
+  EXPECT_EQ(plan[5].target, "car");
+  EXPECT_EQ(plan[6].world.name, "hall");
+  // The same seed gives the same plan.
+  const std::vector<loop::EpisodeSpec> again = PlanEpisodes(worlds, {4, 2, 1}, 1);
+  for (size_t i = 0; i < plan.size(); ++i) {
+    EXPECT_EQ(again[i].target, plan[i].target);
+    EXPECT_EQ(again[i].start_index, plan[i].start_index);
+    EXPECT_EQ(again[i].seed, plan[i].seed);
+  }
+}
+
+TEST(SimBenchEpisodePlanTest, GroupWithoutWorldsPlansNothing) {
+  const std::vector<World> worlds = {WithObject("home", Modality::kGround, "sink")};
+  EXPECT_EQ(PlanEpisodes(worlds, {0, 15, 10}, 1).size(), 0u);
+}
+
+}  // namespace
+}  // namespace semnav::sim::bench
