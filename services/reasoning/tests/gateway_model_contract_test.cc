@@ -125,5 +125,50 @@ TEST_F(GatewayModelContractTest, SlowPathThroughTheOfflineProxyDrivesTheRobotToT
   session_context.TryCancel();
 }
 
+// A complex instruction goes to the model path; the offline proxy has no decompose task, so the
+// task keeps running on its rule subgoals and the event log says why.
+TEST_F(GatewayModelContractTest, ComplexInstructionKeepsTheRulesWhenTheOfflineProxyCannotDecompose) {
+  grpc::ClientContext events_context;
+  events_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(20));
+  api::StreamEventsRequest watch;
+  watch.set_robot_id("r2");
+  auto events = operator_->StreamEvents(&events_context, watch);
+  api::StreamEventsResponse event;
+  // A lease taken and released: its event proves the watch is live before the task exists.
+  api::AcquireLeaseRequest acquire;
+  acquire.set_request_id("lease-1");
+  acquire.set_robot_id("r2");
+  acquire.set_holder("test");
+  api::AcquireLeaseResponse lease;
+  grpc::ClientContext acquire_context;
+  ASSERT_TRUE(operator_->AcquireLease(&acquire_context, acquire, &lease).ok());
+  ASSERT_TRUE(events->Read(&event));
+  EXPECT_EQ(event.event().kind(), api::EVENT_KIND_LEASE);
+  api::ReleaseLeaseRequest release;
+  release.set_lease_id(lease.lease().lease_id());
+  api::ReleaseLeaseResponse released;
+  grpc::ClientContext release_context;
+  ASSERT_TRUE(operator_->ReleaseLease(&release_context, release, &released).ok());
+
+  const absl::StatusOr<std::string> task_id =
+      testing::Submit(*operator_, "complex-1", "r2", "go to the kitchen and then find the clock");
+  ASSERT_TRUE(task_id.ok()) << task_id.status();
+  std::string decomposition;
+  while (decomposition.empty() && events->Read(&event)) {
+    if (event.event().kind() == api::EVENT_KIND_DECOMPOSITION) decomposition = event.event().message();
+  }
+  EXPECT_EQ(event.event().task_id(), *task_id);
+  EXPECT_EQ(decomposition.rfind("rules kept: model call failed: ", 0), 0u) << decomposition;
+  EXPECT_NE(decomposition.find("offline: INVALID_ARGUMENT"), std::string::npos) << decomposition;
+
+  const absl::StatusOr<api::TaskSnapshot> task = testing::FetchTask(*operator_, *task_id);
+  ASSERT_TRUE(task.ok()) << task.status();
+  EXPECT_EQ(task->decomposition_source(), "rules");
+  ASSERT_GE(task->subgoals_size(), 2);
+  EXPECT_EQ(task->subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);  // kitchen, from the rules
+  EXPECT_GE(task->model_calls(), 1);  // the decompose call is counted
+  events_context.TryCancel();
+}
+
 }  // namespace
 }  // namespace semnav::reasoning
