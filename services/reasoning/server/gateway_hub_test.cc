@@ -10,6 +10,15 @@
 namespace semnav::reasoning {
 namespace {
 
+api::SubmitInstructionRequest SubmitRequest(const std::string& request_id, const std::string& robot_id,
+                                            const std::string& instruction) {
+  api::SubmitInstructionRequest request;
+  request.set_request_id(request_id);
+  request.set_robot_id(robot_id);
+  request.set_instruction(instruction);
+  return request;
+}
+
 TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   RobotLocalPlanner planner;
   const GatewayConfig config;
@@ -31,11 +40,7 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   hub.OnRobotState(&session, At(6, 0));   // node 2, 5 m from the sofa: not seen
   hub.OnRobotState(&session, At(12, 0));  // node 3
 
-  api::SubmitInstructionRequest request;
-  request.set_request_id("back-1");
-  request.set_robot_id("r1");
-  request.set_instruction("回到沙发那里");
-  absl::StatusOr<api::SubmitInstructionResponse> response = hub.Submit(request);
+  absl::StatusOr<api::SubmitInstructionResponse> response = hub.Submit(SubmitRequest("back-1", "r1", "回到沙发那里"));
   ASSERT_TRUE(response.ok()) << response.status();
   ASSERT_EQ(response->task().subgoals(0).type(), api::SUBGOAL_TYPE_BACKTRACK);
   ASSERT_GE(session.messages().size(), 2u);  // accepted + navigate
@@ -54,11 +59,7 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
 TEST(GatewayHubTest, ControlOfAFinishedTaskIsRefusedButARetryGetsTheFirstAnswer) {
   RobotLocalPlanner planner;
   GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner);
-  api::SubmitInstructionRequest submit;
-  submit.set_request_id("s-1");
-  submit.set_robot_id("r1");
-  submit.set_instruction("wait");
-  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(submit);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(SubmitRequest("s-1", "r1", "wait"));
   ASSERT_TRUE(submitted.ok()) << submitted.status();
   api::CancelTaskRequest cancel;
   cancel.set_request_id("c-1");
@@ -99,11 +100,7 @@ TEST(GatewayHubTest, LeaseErrorsNameTheFieldOnce) {
   EXPECT_EQ(held.code(), absl::StatusCode::kFailedPrecondition);
   EXPECT_TRUE(absl::StartsWith(held.message(), "robot_id: lease of r2 is held by alice until ")) << held.message();
 
-  api::SubmitInstructionRequest submit;
-  submit.set_request_id("s-1");
-  submit.set_robot_id("r2");
-  submit.set_instruction("wait");
-  const absl::Status refused = hub.Submit(submit).status();
+  const absl::Status refused = hub.Submit(SubmitRequest("s-1", "r2", "wait")).status();
   EXPECT_EQ(refused.message(), "lease_id: robot r2 is leased by alice");
 }
 
