@@ -275,6 +275,23 @@ TEST_F(GatewayHubModelTest, RejectedOrFailedModelPlansKeepTheRulesAndSayWhy) {
   }
 }
 
+TEST_F(GatewayHubModelTest, AValidModelPlanForAPausedTaskKeepsTheRules) {
+  DecompositionEvents events;
+  hub_.WatchEvents({}, &events);
+  const std::string task_id = Submit(kComplex);
+  api::PauseTaskRequest pause;
+  pause.set_request_id("pause-1");
+  pause.set_task_id(task_id);
+  ASSERT_TRUE(hub_.Pause(pause).ok());
+  ASSERT_EQ(model_.decomposes.size(), 1u);
+  model_.AnswerDecompose(0, R"({"subgoals": [{"type": "FIND", "target": "cup"}]})");
+  const api::TaskSnapshot task = *hub_.GetTask(task_id);
+  EXPECT_EQ(task.status(), api::TASK_STATUS_PAUSED);
+  EXPECT_EQ(task.decomposition_source(), "rules");
+  EXPECT_EQ(task.subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);
+  EXPECT_EQ(events.messages(), std::vector<std::string>{"rules kept: the model's plan came when the task was PAUSED"});
+}
+
 TEST_F(GatewayHubModelTest, ResolveTargetRunsTheSlowPathWithoutBlockingAndReportsTheGrounding) {
   api::ResolveTargetRequest request;
   request.set_robot_id("r1");
