@@ -204,10 +204,10 @@ TEST_F(CliContractTest, SubmittedTaskWaitsForTheRobotAndCanBeListedWatchedAndCan
   const ProcessResult rewatched = Ctl({"task", "watch", task_id});
   EXPECT_EQ(rewatched.exit_code, 11) << rewatched.output;
   EXPECT_THAT(rewatched.output, HasSubstr("CANCELLED"));
-  // The gateway answers control calls on a finished task with its final snapshot.
+  // Control calls on a finished task are refused as a failed precondition naming the task.
   const ProcessResult paused = Ctl({"task", "pause", task_id});
-  EXPECT_EQ(paused.exit_code, 0) << paused.output;
-  EXPECT_THAT(paused.output, HasSubstr(task_id + "  CANCELLED"));
+  EXPECT_EQ(paused.exit_code, 7) << paused.output;
+  EXPECT_THAT(paused.output, HasSubstr("FAILED_PRECONDITION: task_id: task " + task_id + " already finished"));
 }
 
 TEST_F(CliContractTest, CtrlCDetachesFromAFollowedTaskWhichGoesOn) {

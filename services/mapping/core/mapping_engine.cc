@@ -163,10 +163,11 @@ uint64_t MappingEngine::revision() const {
   return revision_;
 }
 
-GridLayers MappingEngine::Grid(const std::optional<GridWindow>& window, uint64_t* revision) const {
+GridLayers MappingEngine::Grid(const std::optional<GridWindow>& window, uint64_t* revision,
+                               bool with_semantic) const {
   absl::MutexLock lock(&mu_);
   GridLayers layers = RenderLayers(state_->grid, window.value_or(FullWindow(state_->grid)), config_.layers);
-  state_->semantic.Render(layers);
+  if (with_semantic) state_->semantic.Render(layers);
   if (revision != nullptr) *revision = revision_;
   return layers;
 }

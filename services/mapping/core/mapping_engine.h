@@ -63,8 +63,10 @@ class MappingEngine {
   absl::StatusOr<FrameResult> AddFrame(const SensorFrame& frame);
 
   uint64_t revision() const;
-  // Layers of `window` (nullopt = every explored cell) with the semantic layer; sets *revision.
-  GridLayers Grid(const std::optional<GridWindow>& window, uint64_t* revision) const;
+  // Layers of `window` (nullopt = every explored cell), with the semantic layer unless
+  // `with_semantic` is false (its radius filter is most of the cost; planning never reads it);
+  // sets *revision.
+  GridLayers Grid(const std::optional<GridWindow>& window, uint64_t* revision, bool with_semantic = true) const;
   // Bounding window of grid cells changed after `since`; nullopt when too old (send a snapshot),
   // an empty window (width 0) when nothing changed.
   std::optional<GridWindow> GridChangesSince(uint64_t since) const;

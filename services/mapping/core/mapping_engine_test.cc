@@ -111,6 +111,12 @@ TEST(MappingEngineTest, DetectionBecomesObjectAndSemanticCells) {
   int labelled = 0;
   for (uint8_t v : layers.semantic) labelled += v == 1 ? 1 : 0;
   EXPECT_GT(labelled, 0);
+  // Without the semantic layer (planning's fetch) the other layers are the same.
+  const GridLayers plain = engine.Grid(engine.WindowOf(2.8, 0.9, 3.7, 1.7), nullptr, /*with_semantic=*/false);
+  EXPECT_TRUE(plain.semantic_labels.empty());
+  EXPECT_EQ(std::count(plain.semantic.begin(), plain.semantic.end(), uint8_t{1}), 0);
+  EXPECT_EQ(plain.occupancy, layers.occupancy);
+  EXPECT_EQ(plain.hierarchical, layers.hierarchical);
 
   const absl::StatusOr<std::vector<ObjectHit>> hits = engine.QueryObjects({{"TABLE"}, {}, 0.0, std::nullopt, 0.0, 0});
   ASSERT_TRUE(hits.ok());

@@ -157,7 +157,11 @@ grpc::ServerUnaryReactor* MappingServiceImpl::GetGridMap(grpc::CallbackServerCon
     window = engine_.WindowOf(w.min().x(), w.min().y(), w.max().x(), w.max().y());
   }
   uint64_t revision = 0;
-  const GridLayers layers = engine_.Grid(window, &revision);
+  const bool with_semantic =
+      request->layers().empty() ||
+      std::find(request->layers().begin(), request->layers().end(), semnav::common::v1::GRID_LAYER_KIND_SEMANTIC) !=
+          request->layers().end();
+  const GridLayers layers = engine_.Grid(window, &revision, with_semantic);
   *response->mutable_grid() = GridToProto(layers, revision, Kinds(request->layers()));
   return Reply(context, grpc::Status::OK);
 }

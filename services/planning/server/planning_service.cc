@@ -64,6 +64,13 @@ absl::Status FetchLiveGrid(semnav::mapping::v1::MappingService::Stub& mapping,
                            grpc::CallbackServerContext* context, const pb::LiveMapGrid& live,
                            GridMap* grid) {
   semnav::mapping::v1::GetGridMapRequest fetch;
+  // Only the layers grid_conversion reads: mapping then skips the semantic layer, most of a
+  // GetGridMap's cost (callgrind, docs/performance/gateway.md).
+  for (const semnav::common::v1::GridLayerKind kind :
+       {semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL, semnav::common::v1::GRID_LAYER_KIND_OCCUPANCY,
+        semnav::common::v1::GRID_LAYER_KIND_OBSTACLE_PROBABILITY, semnav::common::v1::GRID_LAYER_KIND_EXPLORED}) {
+    fetch.add_layers(kind);
+  }
   if (live.has_window_min() || live.has_window_max()) {
     fetch.mutable_window()->mutable_min()->set_x(live.window_min().x());
     fetch.mutable_window()->mutable_min()->set_y(live.window_min().y());

@@ -17,7 +17,7 @@ absl::StatusOr<LeaseInfo> LeaseTable::Acquire(const std::string& robot_id, const
                                               absl::Duration ttl, absl::Time now) {
   std::optional<LeaseInfo> current = Current(robot_id, now);
   if (current.has_value() && current->holder != holder) {
-    return absl::FailedPreconditionError(absl::StrCat("robot_id: lease of ", robot_id, " is held by ",
+    return absl::FailedPreconditionError(absl::StrCat("lease of ", robot_id, " is held by ",
                                                       current->holder, " until ", absl::FormatTime(current->expires_at)));
   }
   LeaseInfo lease = current.has_value() ? *current : LeaseInfo{absl::StrFormat("%016x", random_()), robot_id, holder, now};
@@ -33,7 +33,7 @@ absl::StatusOr<LeaseInfo> LeaseTable::Renew(const std::string& lease_id, absl::D
     lease.expires_at = now + ttl;
     return lease;
   }
-  return absl::NotFoundError("lease_id: unknown or expired lease");
+  return absl::NotFoundError("unknown or expired lease");
 }
 
 void LeaseTable::Release(const std::string& lease_id) {
@@ -50,7 +50,7 @@ absl::Status LeaseTable::CheckControl(const std::string& robot_id, const std::st
   std::optional<LeaseInfo> current = Current(robot_id, now);
   if (!current.has_value() || current->lease_id == lease_id) return absl::OkStatus();
   return absl::FailedPreconditionError(
-      absl::StrCat("lease_id: robot ", robot_id, " is leased by ", current->holder));
+      absl::StrCat("robot ", robot_id, " is leased by ", current->holder));
 }
 
 }  // namespace semnav::reasoning

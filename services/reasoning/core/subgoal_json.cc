@@ -72,6 +72,29 @@ absl::StatusOr<Subgoal> ParseOne(const json& item, const std::string& path) {
 
 }  // namespace
 
+DecomposeRequest BuildDecomposeRequest(std::string_view instruction) {
+  DecomposeRequest request;
+  request.prose = absl::StrCat(
+      "A ground robot received this instruction (English or Chinese): \"", std::string(instruction),
+      "\"\nSplit it into subgoals, in order. Types: NAVIGATE (go to a room or object), FIND (search "
+      "for an object), APPROACH (close in, distance_m), VERIFY (confirm the object up close), LOOK_AROUND, "
+      "EXPLORE, BACKTRACK (return to where an object was last seen), WAIT (duration_s). NAVIGATE, FIND, "
+      "APPROACH and VERIFY need a target (an object or room name); give colours, and a relation "
+      "(near, left_of, right_of, on, in) with its anchor object when the instruction names one.\n"
+      "Answer with JSON only: {\"subgoals\": [{\"type\": \"FIND\", \"target\": \"cup\", "
+      "\"colours\": [\"red\"], \"relation\": \"near\", \"anchor\": \"door\", \"reason\": \"...\"}]}");
+  request.task_json = json{{"task", "decompose"}, {"instruction", std::string(instruction)}}.dump();
+  return request;
+}
+
+std::string_view SubgoalsSchema() {
+  return R"({"type": "object", "required": ["subgoals"], "properties": {"subgoals": {"type": "array",)"
+         R"( "items": {"type": "object", "required": ["type"], "properties": {"type": {"type": "string"},)"
+         R"( "target": {"type": "string"}, "colours": {"type": "array", "items": {"type": "string"}},)"
+         R"( "relation": {"type": "string"}, "anchor": {"type": "string"}, "distance_m": {"type": "number"},)"
+         R"( "duration_s": {"type": "number"}, "reason": {"type": "string"}}}}}})";
+}
+
 absl::StatusOr<std::vector<Subgoal>> ParseModelSubgoals(std::string_view json_text) {
   const json root = json::parse(json_text, nullptr, /*allow_exceptions=*/false);
   if (root.is_discarded()) return Invalid("subgoals", "answer is not valid JSON");

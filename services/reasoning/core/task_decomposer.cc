@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "absl/strings/str_cat.h"
+
 #include "services/reasoning/core/subgoal_json.h"
 
 namespace semnav::reasoning {
@@ -80,7 +82,10 @@ Decomposition TaskDecomposer::Decompose(std::string_view instruction) {
 
 Decomposition TaskDecomposer::WithModelAnswer(Decomposition rules, std::string_view model_json) const {
   absl::StatusOr<std::vector<Subgoal>> model = ParseModelSubgoals(model_json);
-  if (!model.ok()) return rules;
+  if (!model.ok()) {
+    rules.rejection = absl::StrCat("model answer rejected: ", model.status().message());
+    return rules;
+  }
   Decomposition result;
   result.subgoals = *std::move(model);
   result.complex = rules.complex;

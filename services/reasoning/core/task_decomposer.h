@@ -22,6 +22,7 @@ struct Decomposition {
   bool complex = false;           // the rules recommend the model path (several clauses/targets
                                   // or words the lexicon does not know).
   std::string source = "rules";   // "rules" or "model".
+  std::string rejection;          // why the model's answer was not used; empty otherwise.
 };
 
 class TaskDecomposer {
@@ -31,7 +32,8 @@ class TaskDecomposer {
   Decomposition Decompose(std::string_view instruction);
   // Subgoals for an already parsed clause list (used by correction and tests).
   std::vector<Subgoal> FromClauses(const std::vector<Clause>& clauses) const;
-  // Prefers `model_json` when it validates (see subgoal_json.h), else keeps the rule result.
+  // Prefers `model_json` when it validates (see subgoal_json.h), else keeps the rule result and
+  // says why in `rejection`.
   Decomposition WithModelAnswer(Decomposition rules, std::string_view model_json) const;
 
   InstructionParser& parser() { return parser_; }

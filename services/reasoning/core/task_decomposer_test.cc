@@ -1,6 +1,7 @@
 #include "services/reasoning/core/task_decomposer.h"
 
 #include "gtest/gtest.h"
+#include "services/reasoning/core/subgoal_json.h"
 #include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {
@@ -78,6 +79,49 @@ TEST(GatewayDecomposerTest, ValidModelAnswerReplacesRulesInvalidOneIsIgnored) {
       decomposer.WithModelAnswer(rules, R"({"subgoals": [{"type": "TELEPORT", "target": "cup"}]})");
   EXPECT_EQ(rejected.source, "rules");
   EXPECT_EQ(rejected.subgoals, rules.subgoals);
+}
+
+// Hand-written model answers for a complex instruction: only the valid one replaces the rules;
+// every rejection names the field that failed.
+TEST(GatewayDecomposerTest, ModelAnswersAreValidatedBeforeTheyReplaceTheRules) {
+  TaskDecomposer decomposer = MakeDecomposer();
+  const Decomposition rules = decomposer.Decompose("go to the kitchen and then find the red cup near the sink");
+  ASSERT_TRUE(rules.complex);
+  struct Case {
+    const char* answer;
+    const char* source;
+    const char* rejection;
+  };
+  const Case cases[] = {
+      {R"({"subgoals": [{"type": "NAVIGATE", "target": "kitchen"},)"
+       R"( {"type": "FIND", "target": "cup", "colours": ["red"], "relation": "near", "anchor": "sink"}]})",
+       "model", ""},
+      {R"({"subgoals": [{"type": "NAVIGATE", "target": "kitchen"}, {"type": "FLY", "target": "cup"}]})", "rules",
+       "model answer rejected: subgoals[1].type: unknown subgoal type 'FLY'"},
+      {R"({"subgoals": [{"type": "APPROACH", "distance_m": 0.5}]})", "rules",
+       "model answer rejected: subgoals[0].target: APPROACH needs a target"},
+      {R"({"subgoals": [{"type": "FIND", "target": "cup"})", "rules",
+       "model answer rejected: subgoals: answer is not valid JSON"},
+  };
+  for (const Case& c : cases) {
+    const Decomposition result = decomposer.WithModelAnswer(rules, c.answer);
+    EXPECT_EQ(result.source, c.source) << c.answer;
+    EXPECT_EQ(result.rejection, c.rejection) << c.answer;
+    if (result.source == "rules") {
+      EXPECT_EQ(result.subgoals, rules.subgoals) << c.answer;
+    }
+  }
+  const Decomposition valid = decomposer.WithModelAnswer(rules, cases[0].answer);
+  EXPECT_EQ(DescribeSubgoals(valid.subgoals), "NAVIGATE(kitchen) FIND(red cup near sink)");
+  EXPECT_EQ(valid.subgoals[1].target.colours, std::vector<std::string>{"red"});
+  EXPECT_EQ(valid.subgoals[1].target.anchor, "sink");
+}
+
+TEST(GatewayDecomposerTest, DecomposeRequestCarriesTheTaskObjectAndTheContract) {
+  const DecomposeRequest request = BuildDecomposeRequest("去厨房，然后找红色杯子");
+  EXPECT_EQ(request.task_json, R"({"instruction":"去厨房，然后找红色杯子","task":"decompose"})");
+  EXPECT_NE(request.prose.find("去厨房，然后找红色杯子"), std::string::npos);
+  EXPECT_NE(request.prose.find("{\"subgoals\""), std::string::npos);
 }
 
 }  // namespace

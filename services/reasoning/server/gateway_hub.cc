@@ -186,6 +186,23 @@ void GatewayHub::StartIfPossible(Task& task) {
   Apply(task, task.executor->Start(Now(), robot.pose));
 }
 
+void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
+  ExecutorConfig executor = config_.executor;
+  executor.model_available = backends_.model != nullptr;
+  ++task.executor_generation;
+  task.executor = std::make_unique<TaskExecutor>(task.instruction, std::move(subgoals), &resolver_,
+                                                 task.planner.get(), RobotRecord(task.robot_id).memory.get(), executor);
+  task.executor->OnSceneGraph(Now(), scene_graph_);
+  const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
+  task.eroi.reset();
+  if (StrategyOf(task) == "EROI_UTILITY" && config_.eroi.has_value() && target != nullptr) {
+    absl::StatusOr<EroiSearch> search =
+        EroiSearch::Create(target->text.empty() ? target->name : target->text, *config_.eroi);
+    if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
+  }
+  RequestTextEmbedding(task);
+}
+
 void GatewayHub::SetMobility(Task& task, const Robot& robot) {
   const api::Capabilities& caps = robot.capabilities;
   const bool fly_roll = std::find(caps.modes().begin(), caps.modes().end(), api::LOCOMOTION_MODE_FLY_ROLL) !=
@@ -257,20 +274,10 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
                                                  // Called by the executor, under mu_.
                                                  return ContextFor(task_id);
                                                });
-  ExecutorConfig executor = config_.executor;
-  executor.model_available = backends_.model != nullptr;
-  task.executor = std::make_unique<TaskExecutor>(request.instruction(), std::move(decomposition.subgoals), &resolver_,
-                                                 task.planner.get(), robot.memory.get(), executor);
-  task.executor->OnSceneGraph(Now(), scene_graph_);
-  const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
-  if (StrategyOf(task) == "EROI_UTILITY" && config_.eroi.has_value() && target != nullptr) {
-    absl::StatusOr<EroiSearch> search =
-        EroiSearch::Create(target->text.empty() ? target->name : target->text, *config_.eroi);
-    if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
-  }
-  RequestTextEmbedding(task);
+  InstallExecutor(task, decomposition.subgoals);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());
+  if (decomposition.complex && backends_.model != nullptr) RequestDecomposition(task, std::move(decomposition));
   StartIfPossible(task);
   response.set_task_id(task_id);
   *response.mutable_task() = Snapshot(task);
@@ -312,6 +319,13 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, co
   absl::StatusOr<Task*> found = FindTask(request.task_id());
   if (!found.ok()) return found.status();
   Task& task = **found;
+  if (task.executor->finished()) {
+    // A retry of the call that ended the task was answered from the cache above.
+    return FieldError(absl::StatusCode::kFailedPrecondition, "task_id",
+                      absl::StrCat("task ", task.task_id, " already finished (",
+                                   api::TaskStatus_Name(Snapshot(task).status()), ")"),
+                      "TASK_FINISHED");
+  }
   if (absl::Status s = CheckControl(task.robot_id, request.lease_id()); !s.ok()) return s;
   action(task);
   api::TaskSnapshot snapshot = Snapshot(task);

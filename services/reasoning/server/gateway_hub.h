@@ -122,6 +122,7 @@ class GatewayHub {
     std::string source;
     std::unique_ptr<TaskPlanner> planner;  // before the executor, which refers to it
     std::unique_ptr<TaskExecutor> executor;
+    uint64_t executor_generation = 0;  // bumped when the model's plan replaces the executor
     int model_calls = 0;
     std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
     bool vision_busy = false;          // a VLM call of the EROI search is running
@@ -146,12 +147,19 @@ class GatewayHub {
   void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The executor's modality and footprint from the robot's latest hello.
   void SetMobility(Task& task, const Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // A new executor for `subgoals` (with the scene graph, the EROI search and the target's text
+  // embedding asked for); the task's robot is not commanded yet.
+  void InstallExecutor(Task& task, std::vector<Subgoal> subgoals) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Asks the model to decompose a complex instruction; the task runs the rule subgoals meanwhile.
+  void RequestDecomposition(Task& task, Decomposition rules) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void OnDecomposition(const std::string& task_id, const Decomposition& rules, absl::StatusOr<std::string> answer)
+      ABSL_LOCKS_EXCLUDED(mu_);
   // Runs the executor's pending slow-path request on the model, without waiting for it.
   void DispatchModelRequest(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void RequestTextEmbedding(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Model answers, on the model's threads.
-  void OnModelAnswer(const std::string& task_id, const ModelRequest& request, absl::StatusOr<std::string> answer)
-      ABSL_LOCKS_EXCLUDED(mu_);
+  void OnModelAnswer(const std::string& task_id, uint64_t generation, const ModelRequest& request,
+                     absl::StatusOr<std::string> answer) ABSL_LOCKS_EXCLUDED(mu_);
   void OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding)
       ABSL_LOCKS_EXCLUDED(mu_);
   ExplorationContext ContextFor(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);

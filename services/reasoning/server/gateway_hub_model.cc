@@ -19,18 +19,20 @@ void GatewayHub::DispatchModelRequest(Task& task) {
   ++task.model_calls;
   ++model_calls_;
   const std::string task_id = task.task_id;
+  const uint64_t generation = task.executor_generation;
   auto shared = std::make_shared<const ModelRequest>(*std::move(request));
   backends_.model->MatchTarget({task.robot_id, task_id}, shared->request,
-                               [this, task_id, shared](absl::StatusOr<std::string> answer) {
-                                 OnModelAnswer(task_id, *shared, std::move(answer));
+                               [this, task_id, generation, shared](absl::StatusOr<std::string> answer) {
+                                 OnModelAnswer(task_id, generation, *shared, std::move(answer));
                                });
 }
 
-void GatewayHub::OnModelAnswer(const std::string& task_id, const ModelRequest& request,
+void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, const ModelRequest& request,
                                absl::StatusOr<std::string> answer) {
   absl::MutexLock lock(&mu_);
   auto task = tasks_.find(task_id);
-  if (shut_down_ || task == tasks_.end()) return;
+  // An answer for the rule plan's executor after the model's plan replaced it is not for this one.
+  if (shut_down_ || task == tasks_.end() || task->second.executor_generation != generation) return;
   SlowDecision decision;  // failures keep exploring (the executor re-asks on a newer graph)
   if (!answer.ok()) {
     decision.explanation = absl::StrCat("model call failed: ", answer.status().message());
@@ -48,6 +50,51 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, const ModelRequest& r
                                 {"confidence", decision.confidence},
                                 {"explanation", decision.explanation}});
   Apply(task->second, task->second.executor->OnSlowDecision(Now(), request.graph_revision, decision));
+}
+
+// Seed 000 3.5 / the issue: the model never blocks motion. The task starts on the rule subgoals
+// at once; a valid model plan that arrives while the task is still running replaces them (the
+// call's deadline bounds how much rule progress that discards; the robot gets the new plan's
+// first command), anything else keeps the rules.
+void GatewayHub::RequestDecomposition(Task& task, Decomposition rules) {
+  ++task.model_calls;
+  ++model_calls_;
+  const std::string task_id = task.task_id;
+  auto shared = std::make_shared<const Decomposition>(std::move(rules));
+  backends_.model->Decompose({task.robot_id, task_id}, BuildDecomposeRequest(task.instruction),
+                             [this, task_id, shared](absl::StatusOr<std::string> answer) {
+                               OnDecomposition(task_id, *shared, std::move(answer));
+                             });
+}
+
+void GatewayHub::OnDecomposition(const std::string& task_id, const Decomposition& rules,
+                                 absl::StatusOr<std::string> answer) {
+  absl::MutexLock lock(&mu_);
+  auto found = tasks_.find(task_id);
+  if (shut_down_ || found == tasks_.end()) return;
+  Task& task = found->second;
+  Decomposition chosen = rules;
+  if (answer.ok()) {
+    chosen = decomposer_->WithModelAnswer(rules, *answer);
+  } else {
+    chosen.rejection = absl::StrCat("model call failed: ", answer.status().message());
+  }
+  const TaskState state = task.executor->progress().state;
+  if (chosen.source == "model" && state != TaskState::kRunning) {
+    chosen = rules;
+    chosen.rejection = absl::StrCat("the model's plan came when the task was ", std::string(TaskStateName(state)));
+  }
+  LogDebug("decomposition", {{"task", task_id}, {"source", chosen.source}, {"rejection", chosen.rejection}});
+  if (chosen.source != "model") {
+    Log(api::EVENT_KIND_DECOMPOSITION, task.robot_id, task_id, absl::StrCat("rules kept: ", chosen.rejection));
+    return;
+  }
+  Log(api::EVENT_KIND_DECOMPOSITION, task.robot_id, task_id,
+      absl::StrCat("model subgoals used: ", DescribeSubgoals(chosen.subgoals)));
+  task.source = chosen.source;
+  InstallExecutor(task, std::move(chosen.subgoals));
+  task.started = false;
+  StartIfPossible(task);
 }
 
 void GatewayHub::RequestTextEmbedding(Task& task) {

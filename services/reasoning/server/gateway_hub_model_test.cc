@@ -4,6 +4,7 @@
 #include <thread>
 #include <vector>
 
+#include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
 #include "services/reasoning/server/camera_frame.h"
 #include "services/reasoning/server/gateway_hub.h"
@@ -24,6 +25,9 @@ class ScriptedModel : public LanguageModel {
   };
   void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override {
     matches.push_back({caller, request, std::move(done)});
+  }
+  void Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) override {
+    decomposes.push_back({caller, request, std::move(done)});
   }
   void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) override {
     asks.push_back({caller, question, std::move(done)});
@@ -47,7 +51,17 @@ class ScriptedModel : public LanguageModel {
     std::thread([&] { asks[index].done(std::move(answer)); }).join();
   }
 
+  struct Decomposition {
+    ModelCaller caller;
+    DecomposeRequest request;
+    AnswerDone done;
+  };
+  void AnswerDecompose(std::size_t index, absl::StatusOr<std::string> answer) {
+    std::thread([&] { decomposes[index].done(std::move(answer)); }).join();
+  }
+
   std::vector<Match> matches;
+  std::vector<Decomposition> decomposes;
   std::vector<Question> asks;
   std::vector<std::string> embed_texts;
   std::vector<EmbeddingDone> embeds;
@@ -69,6 +83,24 @@ SceneGraph CupScene() {
   return graph;
 }
 
+// The DECOMPOSITION events the hub logs.
+class DecompositionEvents : public StreamSink<api::StreamEventsResponse> {
+ public:
+  void Send(const api::StreamEventsResponse& message) override {
+    absl::MutexLock lock(&mu_);
+    if (message.event().kind() == api::EVENT_KIND_DECOMPOSITION) messages_.push_back(message.event().message());
+  }
+  void Close(const grpc::Status&) override {}
+  std::vector<std::string> messages() {
+    absl::MutexLock lock(&mu_);
+    return messages_;
+  }
+
+ private:
+  absl::Mutex mu_;
+  std::vector<std::string> messages_;
+};
+
 void Reached(GatewayHub& hub, RecordingSink& session, const api::RobotCommand& command) {
   api::CommandFeedback feedback;
   feedback.set_command_id(command.command_id());
@@ -85,11 +117,12 @@ class GatewayHubModelTest : public ::testing::Test {
     ASSERT_TRUE(hub_.OpenSession(hello, &session_).ok());
     hub_.OnRobotState(&session_, At(0, 0));
   }
-  std::string SubmitFindRedCup() {
+  std::string SubmitFindRedCup() { return Submit("find the red cup"); }
+  std::string Submit(const std::string& instruction) {
     api::SubmitInstructionRequest request;
-    request.set_request_id("find-1");
+    request.set_request_id(instruction);
     request.set_robot_id("r1");
-    request.set_instruction("find the red cup");
+    request.set_instruction(instruction);
     absl::StatusOr<api::SubmitInstructionResponse> response = hub_.Submit(request);
     EXPECT_TRUE(response.ok()) << response.status();
     return response.ok() ? response->task_id() : "";
@@ -109,6 +142,7 @@ TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnswere
   EXPECT_EQ(model_.matches[0].caller.robot_id, "r1");
   EXPECT_NE(model_.matches[0].request.task_json.find(R"("id":"7")"), std::string::npos);
   ASSERT_EQ(model_.embed_texts.size(), 1u);
+  EXPECT_TRUE(model_.decomposes.empty());  // a simple instruction: the rules alone decompose it
   EXPECT_EQ(hub_.GetTask(task_id)->model_calls(), 2);
   EXPECT_EQ(hub_.GetTask(task_id)->model_requests(), 1);
 
@@ -170,6 +204,92 @@ TEST_F(GatewayHubModelTest, FailedOrMalformedAnswersKeepExploringAndSayWhy) {
   EXPECT_EQ(hub_.GetTask(task_id)->reason(),
             "model: keep exploring (model answer rejected: best_id: '99' is not a candidate)");
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+}
+
+constexpr char kComplex[] = "go to the kitchen and then find the red cup";
+
+TEST_F(GatewayHubModelTest, ComplexInstructionStartsOnRulesAndAValidModelPlanReplacesThem) {
+  DecompositionEvents events;
+  hub_.WatchEvents({}, &events);
+  const std::string task_id = Submit(kComplex);
+  // The model is asked with the decompose task; the robot is already moving on the rule plan.
+  ASSERT_EQ(model_.decomposes.size(), 1u);
+  EXPECT_EQ(model_.decomposes[0].caller.task_id, task_id);
+  EXPECT_EQ(model_.decomposes[0].request.task_json, BuildDecomposeRequest(kComplex).task_json);
+  const api::TaskSnapshot rules = *hub_.GetTask(task_id);
+  EXPECT_EQ(rules.decomposition_source(), "rules");
+  EXPECT_EQ(rules.subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);  // NAVIGATE(kitchen) first
+  const std::size_t commands_before = session_.messages().size();
+  ASSERT_GT(commands_before, 0u);
+  const int calls_before = rules.model_calls();
+  EXPECT_EQ(calls_before, static_cast<int>(model_.decomposes.size() + model_.matches.size() + model_.embeds.size()));
+
+  model_.AnswerDecompose(0, R"({"subgoals": [{"type": "FIND", "target": "cup", "colours": ["red"]},)"
+                            R"( {"type": "APPROACH", "target": "cup", "distance_m": 0.5},)"
+                            R"( {"type": "VERIFY", "target": "cup"}]})");
+  const api::TaskSnapshot model = *hub_.GetTask(task_id);
+  EXPECT_EQ(model.decomposition_source(), "model");
+  ASSERT_EQ(model.subgoals_size(), 3);
+  EXPECT_EQ(model.subgoals(0).type(), api::SUBGOAL_TYPE_FIND);
+  EXPECT_EQ(model.current_subgoal(), 0);
+  EXPECT_GT(session_.messages().size(), commands_before);  // the new plan's first command went out
+  EXPECT_EQ(events.messages(),
+            std::vector<std::string>{"model subgoals used: FIND(red cup) APPROACH(cup) VERIFY(cup)"});
+  // The new plan asks for its own target's embedding (and the slow path for the red cup).
+  EXPECT_GT(model.model_calls(), calls_before);
+  EXPECT_EQ(model.model_calls(),
+            static_cast<int>(model_.decomposes.size() + model_.matches.size() + model_.embeds.size()));
+}
+
+TEST_F(GatewayHubModelTest, RejectedOrFailedModelPlansKeepTheRulesAndSayWhy) {
+  struct Case {
+    absl::StatusOr<std::string> answer;
+    const char* event;
+  };
+  const Case cases[] = {
+      {R"({"subgoals": [{"type": "TELEPORT", "target": "kitchen"}]})",
+       "rules kept: model answer rejected: subgoals[0].type: unknown subgoal type 'TELEPORT'"},
+      {R"({"subgoals": [{"type": "NAVIGATE", "target": "kitchen"}, {"type": "FIND"}]})",
+       "rules kept: model answer rejected: subgoals[1].target: FIND needs a target"},
+      {R"(subgoals: FIND cup)", "rules kept: model answer rejected: subgoals: answer is not valid JSON"},
+      // What the proxy's offline backend answers: it has no decompose task.
+      {absl::InvalidArgumentError("model_alias 'default': offline: INVALID_ARGUMENT: target must be a non-empty string"),
+       "rules kept: model call failed: model_alias 'default': offline: INVALID_ARGUMENT: target must be a "
+       "non-empty string"},
+  };
+  for (std::size_t i = 0; i < std::size(cases); ++i) {
+    DecompositionEvents events;
+    hub_.WatchEvents({}, &events);
+    const std::string task_id = Submit(absl::StrCat(kComplex, " ", i));
+    const api::TaskSnapshot before = *hub_.GetTask(task_id);
+    ASSERT_EQ(model_.decomposes.size(), i + 1);
+    model_.AnswerDecompose(i, cases[i].answer);
+    const api::TaskSnapshot after = *hub_.GetTask(task_id);
+    EXPECT_EQ(after.decomposition_source(), "rules") << cases[i].event;
+    ASSERT_EQ(after.subgoals_size(), before.subgoals_size());
+    for (int k = 0; k < after.subgoals_size(); ++k) {
+      EXPECT_EQ(after.subgoals(k).SerializeAsString(), before.subgoals(k).SerializeAsString());
+    }
+    EXPECT_EQ(events.messages(), std::vector<std::string>{cases[i].event});
+    hub_.UnwatchEvents(&events);
+  }
+}
+
+TEST_F(GatewayHubModelTest, AValidModelPlanForAPausedTaskKeepsTheRules) {
+  DecompositionEvents events;
+  hub_.WatchEvents({}, &events);
+  const std::string task_id = Submit(kComplex);
+  api::PauseTaskRequest pause;
+  pause.set_request_id("pause-1");
+  pause.set_task_id(task_id);
+  ASSERT_TRUE(hub_.Pause(pause).ok());
+  ASSERT_EQ(model_.decomposes.size(), 1u);
+  model_.AnswerDecompose(0, R"({"subgoals": [{"type": "FIND", "target": "cup"}]})");
+  const api::TaskSnapshot task = *hub_.GetTask(task_id);
+  EXPECT_EQ(task.status(), api::TASK_STATUS_PAUSED);
+  EXPECT_EQ(task.decomposition_source(), "rules");
+  EXPECT_EQ(task.subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);
+  EXPECT_EQ(events.messages(), std::vector<std::string>{"rules kept: the model's plan came when the task was PAUSED"});
 }
 
 TEST_F(GatewayHubModelTest, ResolveTargetRunsTheSlowPathWithoutBlockingAndReportsTheGrounding) {

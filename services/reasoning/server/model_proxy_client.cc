@@ -100,18 +100,27 @@ void ModelProxyClient::Complete(const ModelCaller& caller, pb::CompleteRequest c
   });
 }
 
-void ModelProxyClient::MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) {
+void ModelProxyClient::CompleteTask(const ModelCaller& caller, const std::string& prose,
+                                    const std::string& task_json, std::string_view schema, AnswerDone done) {
   pb::CompleteRequest call;
   call.set_model_alias(settings_.model_alias);
   pb::ChatMessage* message = call.add_messages();
   message->set_role(pb::ROLE_USER);
-  AddText(message, request.prose);
-  AddText(message, request.task_json);  // last part: the task object the offline backend reads
+  AddText(message, prose);
+  AddText(message, task_json);  // last part: the task object the offline backend reads
   call.set_response_format(pb::RESPONSE_FORMAT_JSON_SCHEMA);
-  call.set_json_schema(std::string(MatchTargetSchema()));
+  call.set_json_schema(std::string(schema));
   Complete(caller, std::move(call), [done = std::move(done)](absl::StatusOr<pb::CompleteResponse> response) {
     done(response.ok() ? AnswerJson(*response) : absl::StatusOr<std::string>(response.status()));
   });
+}
+
+void ModelProxyClient::MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) {
+  CompleteTask(caller, request.prose, request.task_json, MatchTargetSchema(), std::move(done));
+}
+
+void ModelProxyClient::Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) {
+  CompleteTask(caller, request.prose, request.task_json, SubgoalsSchema(), std::move(done));
 }
 
 void ModelProxyClient::Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) {

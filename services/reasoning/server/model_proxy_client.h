@@ -1,5 +1,5 @@
 // LanguageModel over semnav-model-proxy (semnav.modelproxy.v1): Complete with the match_target
-// task and JSON schema (docs/algorithms/modelproxy.md), Embed for target text embeddings. Calls
+// and decompose tasks and their JSON schemas (docs/algorithms/modelproxy.md), Embed for target text embeddings. Calls
 // run on a few worker threads with the configured deadline, so callers (the gateway hub, under
 // its lock) only enqueue. After Embed fails as unavailable (the offline default has no embedding
 // backend) the client answers UNAVAILABLE itself for `embedding_retry_s` instead of asking again.
@@ -30,6 +30,7 @@ class ModelProxyClient final : public LanguageModel {
   ~ModelProxyClient() override;
 
   void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override;
+  void Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) override;
   void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) override;
   void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) override;
   void Stop() override;
@@ -41,6 +42,10 @@ class ModelProxyClient final : public LanguageModel {
   // Enqueues a Complete call; `done` gets the response or the call's error.
   void Complete(const ModelCaller& caller, modelproxy::v1::CompleteRequest call,
                 std::function<void(absl::StatusOr<modelproxy::v1::CompleteResponse>)> done);
+  // Complete with prose, the task object as the last part and a JSON schema; `done` gets the
+  // answer object as JSON text.
+  void CompleteTask(const ModelCaller& caller, const std::string& prose, const std::string& task_json,
+                    std::string_view schema, AnswerDone done);
   void Work();
 
   std::unique_ptr<modelproxy::v1::ModelProxyService::Stub> stub_;

@@ -111,6 +111,31 @@ TEST_F(GatewayModelProxyClientTest, MatchTargetFollowsTheProxyContractAndMarksOf
   EXPECT_EQ(proxy_.robot_id, "r1");
 }
 
+TEST_F(GatewayModelProxyClientTest, DecomposeSendsTheDecomposeTaskWithTheSubgoalsSchema) {
+  proxy_.answer.set_json(R"({"subgoals":[{"type":"FIND","target":"cup"}]})");
+  ModelProxyClient client(channel_, settings_);
+  const DecomposeRequest call = BuildDecomposeRequest("go to the kitchen and find the cup");
+  absl::Notification done;
+  absl::StatusOr<std::string> answer;
+  client.Decompose({"r1", "task-3"}, call, [&](absl::StatusOr<std::string> result) {
+    answer = std::move(result);
+    done.Notify();
+  });
+  ASSERT_TRUE(done.WaitForNotificationWithTimeout(absl::Seconds(10)));
+  ASSERT_TRUE(answer.ok()) << answer.status();
+  EXPECT_EQ(*answer, R"({"subgoals":[{"type":"FIND","target":"cup"}]})");
+
+  absl::MutexLock lock(&proxy_.mu);
+  const pb::CompleteRequest& request = proxy_.last_complete;
+  ASSERT_EQ(request.messages_size(), 1);
+  ASSERT_EQ(request.messages(0).parts_size(), 2);
+  EXPECT_EQ(request.messages(0).parts(0).text(), call.prose);
+  EXPECT_EQ(request.messages(0).parts(1).text(),
+            R"({"instruction":"go to the kitchen and find the cup","task":"decompose"})");
+  EXPECT_EQ(request.response_format(), pb::RESPONSE_FORMAT_JSON_SCHEMA);
+  EXPECT_EQ(request.json_schema(), std::string(SubgoalsSchema()));
+}
+
 TEST_F(GatewayModelProxyClientTest, CallsReturnAtOnceAndTheDeadlineEndsASlowModel) {
   {
     absl::MutexLock lock(&proxy_.mu);

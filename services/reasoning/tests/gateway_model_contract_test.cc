@@ -125,5 +125,37 @@ TEST_F(GatewayModelContractTest, SlowPathThroughTheOfflineProxyDrivesTheRobotToT
   session_context.TryCancel();
 }
 
+// A complex instruction goes to the model path; the offline proxy has no decompose task, so the
+// task keeps running on its rule subgoals and the event log says why.
+TEST_F(GatewayModelContractTest, ComplexInstructionKeepsTheRulesWhenTheOfflineProxyCannotDecompose) {
+  const absl::StatusOr<std::string> task_id =
+      testing::Submit(*operator_, "complex-1", "r2", "go to the kitchen and then find the clock");
+  ASSERT_TRUE(task_id.ok()) << task_id.status();
+  // Replay from event 1: TASK_CREATED is at least event 1, so the decomposition event comes after
+  // it whether it is already logged (replayed) or not yet (live).
+  grpc::ClientContext events_context;
+  events_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(20));
+  api::StreamEventsRequest watch;
+  watch.set_robot_id("r2");
+  watch.set_last_event_id(1);
+  auto events = operator_->StreamEvents(&events_context, watch);
+  api::StreamEventsResponse event;
+  std::string decomposition;
+  while (decomposition.empty() && events->Read(&event)) {
+    if (event.event().kind() == api::EVENT_KIND_DECOMPOSITION) decomposition = event.event().message();
+  }
+  EXPECT_EQ(event.event().task_id(), *task_id);
+  EXPECT_EQ(decomposition.rfind("rules kept: model call failed: ", 0), 0u) << decomposition;
+  EXPECT_NE(decomposition.find("offline: INVALID_ARGUMENT"), std::string::npos) << decomposition;
+
+  const absl::StatusOr<api::TaskSnapshot> task = testing::FetchTask(*operator_, *task_id);
+  ASSERT_TRUE(task.ok()) << task.status();
+  EXPECT_EQ(task->decomposition_source(), "rules");
+  ASSERT_GE(task->subgoals_size(), 2);
+  EXPECT_EQ(task->subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);  // kitchen, from the rules
+  EXPECT_GE(task->model_calls(), 1);  // the decompose call is counted
+  events_context.TryCancel();
+}
+
 }  // namespace
 }  // namespace semnav::reasoning
