@@ -96,8 +96,10 @@ int main(int argc, char** argv) {
     const std::string bin_dir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
     const std::string work_dir =
         std::filesystem::absolute(flags->Get("work-dir").value_or("semnav_dashboard_stack")).string();
-    absl::StatusOr<std::unique_ptr<loop::SimStack>> started =
-        loop::SimStack::Start({bin_dir, work_dir, true, "SEMANTIC_FRONTIER"});
+    loop::SimStackOptions options;
+    options.bin_dir = bin_dir;
+    options.work_dir = work_dir;
+    absl::StatusOr<std::unique_ptr<loop::SimStack>> started = loop::SimStack::Start(options);
     if (!started.ok()) return Fail(started.status());
     stack = std::move(*started);
     gateway = stack->gateway_address();
