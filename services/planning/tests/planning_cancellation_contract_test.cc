@@ -29,7 +29,7 @@ class PlanningCancellation : public ::testing::Test {
   static void SetUpTestSuite() {
     const std::string config = ::testing::TempDir() + "/planning_cancellation.yaml";
     std::ofstream(config) << "planning:\n  worker_threads: 1\n  max_planning_time_ms: 600000\n"
-                             "  deadline_margin_ms: 600\n";
+                             "  deadline_margin_ms: 500\n";
     absl::StatusOr<std::unique_ptr<testing::ServiceProcess>> started =
         testing::ServiceProcess::Start("semnav-planning", {"--config", config});
     ASSERT_TRUE(started.ok()) << started.status();
@@ -103,7 +103,7 @@ double QuickCallMs(pb::PlanningService::Stub& stub) {
 TEST_F(PlanningCancellation, CallDeadlineGivesTypedTimeoutAndFreesTheWorker) {
   auto stub = Stub();
   grpc::ClientContext context;
-  context.set_deadline(std::chrono::system_clock::now() + std::chrono::milliseconds(2500));
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::milliseconds(1200));
   pb::PlanPathResponse response;
   const Clock::time_point t0 = Clock::now();
   const grpc::Status status = stub->PlanPath(&context, HopelessRequest(), &response);
@@ -113,7 +113,7 @@ TEST_F(PlanningCancellation, CallDeadlineGivesTypedTimeoutAndFreesTheWorker) {
   std::optional<pb::PlanFailureDetail> detail = GetDetail<pb::PlanFailureDetail>(status);
   ASSERT_TRUE(detail.has_value()) << "no typed detail after " << elapsed_ms << " ms: " << status.error_message();
   EXPECT_EQ(detail->reason(), pb::PLAN_FAILURE_REASON_TIMEOUT);
-  EXPECT_LT(elapsed_ms, 2500.0);
+  EXPECT_LT(elapsed_ms, 1200.0);
   // The only worker is free again at once.
   EXPECT_LT(QuickCallMs(*stub), 1000.0);
 }
