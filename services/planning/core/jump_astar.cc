@@ -18,7 +18,7 @@ struct RegionSpace {
   const LayeredGrid& grid;
   const RegionTables& tables;
   bool Free(int x, int y) const { return Passable(grid, x, y); }
-  bool Stop(Cell c) const { return tables.Boundary(grid.Index(c)); }
+  bool Stop(Cell c) const { return tables.Boundary(c); }
   bool JumpStraight(Cell from, int dx, int dy, Cell goal, Cell* found) const {
     return tables.jumps().Jump(from, dx, dy, goal, found);
   }
@@ -123,7 +123,7 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
     return use_landmarks ? std::max(octile, bound(grid.Index(c))) : octile;
   };
   // Without pruning every cell expands fully (the plain A* reference).
-  auto jumps_through = [&](int cell) { return prune && !regions->Boundary(cell); };
+  auto jumps_through = [&](Cell cell) { return prune && !regions->Boundary(cell); };
 
   workspace_.Reset(grid.size());
   auto relax = [&](int from, Cell to, double step_cost) {
@@ -142,7 +142,7 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
   auto expand = [&](int current) {
     const Cell c = grid.CellAt(current);
     const int parent = workspace_.parent(current);
-    if (parent >= 0 && jumps_through(current)) {
+    if (parent >= 0 && jumps_through(c)) {
       const Cell p = grid.CellAt(parent);
       ForEachPrunedDirection(RegionSpace{grid, *regions}, c, (c.x > p.x) - (c.x < p.x),
                              (c.y > p.y) - (c.y < p.y),
@@ -153,7 +153,7 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
     ForEachMove(grid, c, [&](Cell n, MotionMode mode, double cells) {
       const bool same_region =
           IsObstacle(grid.at(n)) == in_obstacle && (mode == MotionMode::kFlying) == in_obstacle;
-      if (same_region && jumps_through(grid.Index(n))) {
+      if (same_region && jumps_through(n)) {
         try_jump(current, c, n.x - c.x, n.y - c.y);
       } else {
         relax(current, n, costs.Of(mode) * cells);
