@@ -38,28 +38,6 @@ void StraightJumpTable::Build(const BitRows& open, const BitRows& stop) {
   columns_.Build(open.Transposed(), stop.Transposed());
 }
 
-bool StraightJumpTable::Jump(Cell from, int dx, int dy, Cell goal, Cell* found) const {
-  const bool along_x = dy == 0;
-  const Lines& lines = along_x ? rows_ : columns_;
-  const int line = along_x ? from.y : from.x;
-  const int at = along_x ? from.x : from.y;
-  const int step = dx + dy;
-  const int end = step > 0 ? lines.ends_forward.NextSetAfter(line, at)
-                           : lines.ends_backward.PreviousSetBefore(line, at);
-  const bool event = end >= 0 && end < lines.open.columns() && lines.open.Get(line, end);
-  const int distance = step > 0 ? end - at : at - end;
-  const int reach = event ? distance : distance - 1;  // open steps that reach cells
-  const int to_goal = along_x ? (goal.x - from.x) * dx : (goal.y - from.y) * dy;
-  const bool goal_on_line = along_x ? goal.y == from.y : goal.x == from.x;
-  if (goal_on_line && to_goal > 0 && to_goal <= reach) {
-    *found = goal;
-    return true;
-  }
-  if (!event) return false;
-  *found = {from.x + dx * distance, from.y + dy * distance};
-  return true;
-}
-
 size_t StraightJumpTable::bytes() const {
   size_t total = 0;
   for (const Lines* lines : {&rows_, &columns_}) {

@@ -20,7 +20,8 @@ class StraightJumpTable {
   void Build(const BitRows& open, const BitRows& stop);
 
   // Jump from `from` along (dx, dy) (one of them zero). True with the event
-  // cell, or `goal` if the run reaches it first, in *found.
+  // cell, or `goal` if the run reaches it first, in *found. Inline: the
+  // diagonal jumps call it twice per step.
   bool Jump(Cell from, int dx, int dy, Cell goal, Cell* found) const;
 
   size_t bytes() const;
@@ -37,5 +38,27 @@ class StraightJumpTable {
   Lines rows_;     // line y, position x
   Lines columns_;  // line x, position y
 };
+
+inline bool StraightJumpTable::Jump(Cell from, int dx, int dy, Cell goal, Cell* found) const {
+  const bool along_x = dy == 0;
+  const Lines& lines = along_x ? rows_ : columns_;
+  const int line = along_x ? from.y : from.x;
+  const int at = along_x ? from.x : from.y;
+  const int step = dx + dy;
+  const int end = step > 0 ? lines.ends_forward.NextSetAfter(line, at)
+                           : lines.ends_backward.PreviousSetBefore(line, at);
+  const bool event = end >= 0 && end < lines.open.columns() && lines.open.Get(line, end);
+  const int distance = step > 0 ? end - at : at - end;
+  const int reach = event ? distance : distance - 1;  // open steps that reach cells
+  const int to_goal = along_x ? (goal.x - from.x) * dx : (goal.y - from.y) * dy;
+  const bool goal_on_line = along_x ? goal.y == from.y : goal.x == from.x;
+  if (goal_on_line && to_goal > 0 && to_goal <= reach) {
+    *found = goal;
+    return true;
+  }
+  if (!event) return false;
+  *found = {from.x + dx * distance, from.y + dy * distance};
+  return true;
+}
 
 }  // namespace semnav::planning
