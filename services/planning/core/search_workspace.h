@@ -10,13 +10,13 @@ namespace semnav::planning {
 // so a query allocates nothing once the workspace has grown to the map size.
 // A generation counter marks which cells the current query has touched, so
 // resetting is O(1) instead of clearing every array. A cell's state is one
-// record, so touching a cell costs one cache line rather than four.
+// 16-byte record, so touching a cell costs one cache line rather than four.
 class SearchWorkspace {
  public:
   // Prepares for a new query over `cell_count` cells.
   void Reset(int cell_count) {
-    if (static_cast<int>(cells_.size()) < cell_count) {
-      cells_.assign(cell_count, CellState{});
+    if (static_cast<int>(cells_.size()) < cell_count || generation_ == kLastGeneration) {
+      cells_.assign(std::max<size_t>(cells_.size(), cell_count), CellState{});
       generation_ = 0;
     }
     ++generation_;
@@ -24,8 +24,8 @@ class SearchWorkspace {
     expansions_ = 0;
   }
 
-  bool Reached(int cell) const { return cells_[cell].reached == generation_; }
-  bool Closed(int cell) const { return cells_[cell].closed == generation_; }
+  bool Reached(int cell) const { return cells_[cell].mark >= 2 * generation_; }
+  bool Closed(int cell) const { return cells_[cell].mark == 2 * generation_ + 1; }
   double g(int cell) const { return cells_[cell].g; }
   int parent(int cell) const { return cells_[cell].parent; }
 
@@ -33,8 +33,8 @@ class SearchWorkspace {
   // improves on what the cell had; returns whether it did.
   bool Relax(int cell, double g, double f, int parent) {
     CellState& state = cells_[cell];
-    if (state.reached == generation_ && g >= state.g) return false;
-    state.reached = generation_;
+    if (state.mark >= 2 * generation_ && g >= state.g) return false;
+    state.mark = 2 * generation_;
     state.g = g;
     state.parent = parent;
     heap_.push_back({f, g, cell});
@@ -50,8 +50,8 @@ class SearchWorkspace {
       const Entry top = heap_.back();
       heap_.pop_back();
       CellState& state = cells_[top.cell];
-      if (state.closed == generation_ || top.g > state.g) continue;
-      state.closed = generation_;
+      if (state.mark == 2 * generation_ + 1 || top.g > state.g) continue;
+      state.mark = 2 * generation_ + 1;
       ++expansions_;
       *cell = top.cell;
       return true;
@@ -76,11 +76,13 @@ class SearchWorkspace {
   static constexpr WorseEntry Worse{};
 
   struct CellState {
-    uint32_t reached = 0;  // generation that last reached / closed the cell
-    uint32_t closed = 0;
-    double g = 0.0;
+    // 2 x generation: reached (open) in that query; + 1: closed. Older
+    // values mean untouched by the current query.
+    uint32_t mark = 0;
     int parent = -1;
+    double g = 0.0;
   };
+  static constexpr uint32_t kLastGeneration = (UINT32_MAX - 1) / 2;
 
   std::vector<CellState> cells_;
   std::vector<Entry> heap_;
