@@ -167,9 +167,9 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
       const bool hit_x = space.JumpStraight(at, dx, 0, goal, &along_x);
       const bool hit_y = space.JumpStraight(at, 0, dy, goal, &along_y);
       if (!hit_x && !hit_y) continue;
-      const bool bypass = (!hit_x || expands_fully(along_x)) && (!hit_y || expands_fully(along_y)) &&
-                          workspace_.g(from) + step * OctileDistance(c, at) + heuristic(at) <=
-                              f_from + kSameF;
+      const bool bypass =
+          (!hit_x || expands_fully(along_x)) && (!hit_y || expands_fully(along_y)) &&
+          workspace_.g(from) + step * OctileDistance(c, at) + heuristic(at) <= f_from + kSameF;
       if (!bypass) return relax_jump(at);
       if (hit_x) relax_jump(along_x);
       if (hit_y) relax_jump(along_y);

@@ -143,15 +143,16 @@ TEST(JumpAStar, LandmarkBoundKeepsTheOptimalCost) {
 }
 
 // Cold queries (tables built per query, octile bound) between random cells
-// on maps with obstacles and structure walls cost exactly what full A* finds, and the returned cells -- including the
-// runs through skipped diagonal jump points -- add up to that cost.
+// on maps with obstacles and structure walls cost exactly what full A* finds, and the returned
+// cells -- including the runs through skipped diagonal jump points -- add up to that cost.
 TEST(JumpAStar, ColdQueriesBetweenRandomCellsMatchPlainAStar) {
   JumpAStarPlanner jumped_planner;
   JumpAStarPlanner reference;
   std::mt19937 rng(3);
   int compared = 0;
   for (uint32_t seed = 1; seed <= 12; ++seed) {
-    RandomLayeredMap map = MakeRandomLayeredMap({.size_m = 6.0, .obstacle_count = 20, .seed = seed});
+    RandomLayeredMap map =
+        MakeRandomLayeredMap({.size_m = 6.0, .obstacle_count = 20, .seed = seed});
     std::uniform_int_distribution<int> coord(1, map.grid.width() - 2);
     // Short structure walls inside the map too, so jumps meet forced
     // neighbours (the random map has structure only at its border).

@@ -92,8 +92,8 @@ RegionTables::RegionTables(LayeredGrid grid) : grid_(std::move(grid)) {
   BitRows open(height, width);
   for (int y = 0; y < height; ++y) {
     for (int w = 0; w < free.words_per_row(); ++w) {
-      boundary_.row(y)[w] = (free.row(y)[w] & near_obstacle.row(y)[w]) |
-                            (obstacle.row(y)[w] & near_free.row(y)[w]);
+      boundary_.row(y)[w] =
+          (free.row(y)[w] & near_obstacle.row(y)[w]) | (obstacle.row(y)[w] & near_free.row(y)[w]);
       open.row(y)[w] = free.row(y)[w] | obstacle.row(y)[w];
     }
   }

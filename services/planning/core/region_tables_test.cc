@@ -16,7 +16,9 @@ LayeredGrid Layered(const std::vector<std::string>& rows) {
   for (int y = 0; y < grid.height(); ++y) {
     for (int x = 0; x < grid.width(); ++x) {
       const char c = rows[y][x];
-      grid.at(x, y) = c == '.' ? 0 : c == '#' ? kStructureValue : static_cast<uint8_t>(10 * (c - '0'));
+      grid.at(x, y) = c == '.'   ? 0
+                      : c == '#' ? kStructureValue
+                                 : static_cast<uint8_t>(10 * (c - '0'));
     }
   }
   return grid;
@@ -46,10 +48,7 @@ TEST(RegionTables, BoundaryIsWhereFreeAndObstacleCellsTouch) {
       "......99#",
   }));
   EXPECT_EQ(BoundaryMap(tables), (std::vector<std::string>{
-                                     "--BBB----",
-                                     "--BBB----",
-                                     "--BBBBBB-",
-                                     "-----BBB-",
+                                     "--BBB----", "--BBB----", "--BBBBBB-", "-----BBB-",
                                      "-----BB--",  // (7,4) touches no free cell
                                  }));
 }
