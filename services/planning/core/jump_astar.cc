@@ -12,13 +12,17 @@
 namespace semnav::planning {
 namespace {
 
+// Two f values this close count as equal when deciding whether a diagonal
+// jump point can be skipped (only the amount of work depends on it).
+constexpr double kSameF = 1e-9;
+
 // One uniform region for the jump rules: structure blocks, boundary cells
 // stop jumps, straight jumps come from the precomputed table.
 struct RegionSpace {
   const LayeredGrid& grid;
   const RegionTables& tables;
   bool Free(int x, int y) const { return Passable(grid, x, y); }
-  bool Stop(Cell c) const { return tables.Boundary(grid.Index(c)); }
+  bool Stop(Cell c) const { return tables.Boundary(c); }
   bool JumpStraight(Cell from, int dx, int dy, Cell goal, Cell* found) const {
     return tables.jumps().Jump(from, dx, dy, goal, found);
   }
@@ -123,7 +127,7 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
     return use_landmarks ? std::max(octile, bound(grid.Index(c))) : octile;
   };
   // Without pruning every cell expands fully (the plain A* reference).
-  auto jumps_through = [&](int cell) { return prune && !regions->Boundary(cell); };
+  auto jumps_through = [&](Cell cell) { return prune && !regions->Boundary(cell); };
 
   workspace_.Reset(grid.size());
   auto relax = [&](int from, Cell to, double step_cost) {
@@ -132,17 +136,49 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
     const double g = workspace_.g(from) + step_cost;
     workspace_.Relax(next, g, g + heuristic(to), from);
   };
-  // A jump stays in the region of `c`, so every step has the region's cost.
+  // Cells whose own expansion ignores the direction they were reached from.
+  auto expands_fully = [&](Cell cell) { return cell == goal || regions->Boundary(cell); };
+  // Jumps from the expanded cell `c` (index `from`). A jump stays in the
+  // region of `c`, so every step has the region's cost.
   auto try_jump = [&](int from, Cell c, int dx, int dy) {
-    if (const std::optional<Cell> jump = Jump(RegionSpace{grid, *regions}, c, dx, dy, goal)) {
-      const double step = IsObstacle(grid.at(c)) ? costs.fly : costs.roll;
-      relax(from, *jump, step * OctileDistance(c, *jump));
+    const RegionSpace space{grid, *regions};
+    const double step = IsObstacle(grid.at(c)) ? costs.fly : costs.roll;
+    auto relax_jump = [&](Cell to) { relax(from, to, step * OctileDistance(c, to)); };
+    Cell found;
+    if (dx == 0 || dy == 0) {
+      if (space.JumpStraight(c, dx, dy, goal, &found)) relax_jump(found);
+      return;
+    }
+    // The diagonal jump of jump_scan.h, with one shortcut: a diagonal jump
+    // point `at` whose straight jumps only reach fully expanded cells, and
+    // whose f equals f(c) (it would be popped next anyway), is not queued;
+    // its straight successors are relaxed from `c` directly (their path
+    // c -> at -> successor is the diagonal-first run ExpandWaypoints
+    // draws) and the diagonal goes on. Expanding `at` would relax the same
+    // cells at the same cost, so the optimum is unchanged.
+    const double f_from = workspace_.g(from) + heuristic(c);
+    Cell at = c;
+    while (CanStepDiagonal(space, at, dx, dy)) {
+      at.x += dx;
+      at.y += dy;
+      if (at == goal || space.Stop(at)) return relax_jump(at);
+      Cell along_x;
+      Cell along_y;
+      const bool hit_x = space.JumpStraight(at, dx, 0, goal, &along_x);
+      const bool hit_y = space.JumpStraight(at, 0, dy, goal, &along_y);
+      if (!hit_x && !hit_y) continue;
+      const bool bypass =
+          (!hit_x || expands_fully(along_x)) && (!hit_y || expands_fully(along_y)) &&
+          workspace_.g(from) + step * OctileDistance(c, at) + heuristic(at) <= f_from + kSameF;
+      if (!bypass) return relax_jump(at);
+      if (hit_x) relax_jump(along_x);
+      if (hit_y) relax_jump(along_y);
     }
   };
   auto expand = [&](int current) {
     const Cell c = grid.CellAt(current);
     const int parent = workspace_.parent(current);
-    if (parent >= 0 && jumps_through(current)) {
+    if (parent >= 0 && jumps_through(c)) {
       const Cell p = grid.CellAt(parent);
       ForEachPrunedDirection(RegionSpace{grid, *regions}, c, (c.x > p.x) - (c.x < p.x),
                              (c.y > p.y) - (c.y < p.y),
@@ -153,7 +189,7 @@ absl::StatusOr<MultiModalPath> JumpAStarPlanner::Search(
     ForEachMove(grid, c, [&](Cell n, MotionMode mode, double cells) {
       const bool same_region =
           IsObstacle(grid.at(n)) == in_obstacle && (mode == MotionMode::kFlying) == in_obstacle;
-      if (same_region && jumps_through(grid.Index(n))) {
+      if (same_region && jumps_through(n)) {
         try_jump(current, c, n.x - c.x, n.y - c.y);
       } else {
         relax(current, n, costs.Of(mode) * cells);

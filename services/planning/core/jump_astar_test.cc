@@ -142,6 +142,53 @@ TEST(JumpAStar, LandmarkBoundKeepsTheOptimalCost) {
   }
 }
 
+// Cold queries (tables built per query, octile bound) between random cells
+// on maps with obstacles and structure walls cost exactly what full A* finds, and the returned
+// cells -- including the runs through skipped diagonal jump points -- add up to that cost.
+TEST(JumpAStar, ColdQueriesBetweenRandomCellsMatchPlainAStar) {
+  JumpAStarPlanner jumped_planner;
+  JumpAStarPlanner reference;
+  std::mt19937 rng(3);
+  int compared = 0;
+  for (uint32_t seed = 1; seed <= 12; ++seed) {
+    RandomLayeredMap map =
+        MakeRandomLayeredMap({.size_m = 6.0, .obstacle_count = 20, .seed = seed});
+    std::uniform_int_distribution<int> coord(1, map.grid.width() - 2);
+    // Short structure walls inside the map too, so jumps meet forced
+    // neighbours (the random map has structure only at its border).
+    for (int wall = 0; wall < 30; ++wall) {
+      const Cell from{coord(rng), coord(rng)};
+      const bool along_x = wall % 2 == 0;
+      for (int k = 0; k < 15; ++k) {
+        const Cell c{from.x + (along_x ? k : 0), from.y + (along_x ? 0 : k)};
+        if (map.grid.Contains(c)) map.grid.at(c) = kStructureValue;
+      }
+    }
+    for (double beta : {0.0, 1.0, 5.0}) {
+      JumpAStarOptions options;
+      options.beta = beta;
+      JumpAStarOptions plain = options;
+      plain.jump_pruning = false;
+      for (int query = 0; query < 30; ++query) {
+        const Cell start{coord(rng), coord(rng)};
+        const Cell goal{coord(rng), coord(rng)};
+        absl::StatusOr<MultiModalPath> jumped = jumped_planner.Plan(map.grid, start, goal, options);
+        absl::StatusOr<MultiModalPath> full = reference.Plan(map.grid, start, goal, plain);
+        ASSERT_EQ(jumped.ok(), full.ok());
+        if (!full.ok()) continue;
+        EXPECT_NEAR(jumped->cost, full->cost, 1e-9) << "seed " << seed << " beta " << beta;
+        // Eq. 14 recomputed from the summarised cells: alpha g + beta e.
+        EXPECT_NEAR(options.alpha * jumped->length_m +
+                        options.beta * jumped->energy_j / options.energy_unit_j,
+                    jumped->cost, 1e-9);
+        EXPECT_LE(jumped->expansions, full->expansions);
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 700);
+}
+
 // A landmark bound built for other costs is not used (it could overestimate).
 TEST(JumpAStar, LandmarksForOtherCostsAreIgnored) {
   const RandomLayeredMap map = MakeRandomLayeredMap({.size_m = 12.0, .obstacle_count = 25});

@@ -23,8 +23,8 @@ struct PlanningConfig {
   // hover_power_w, flight_speed_mps}: seed 003 Table 1 and sec. 4.2.
   JumpAStarOptions jump_astar;
   // jump_astar.cache_mb: memory for prepared maps (region tables, landmarks)
-  // kept for repeated queries, least recently used dropped first; 18 bytes
-  // per cell plus 32 once the landmarks exist (32 MB at 800 x 800 cells).
+  // kept for repeated queries, least recently used dropped first; ~1.9 bytes
+  // per cell plus 32 once the landmarks exist (~22 MB at 800 x 800 cells).
   int jump_astar_cache_mb = 256;
   // exploration.*: frontier, coverage-max, semantic frontier, EROI settings.
   ExplorationConfig exploration;
