@@ -102,13 +102,43 @@ Exclusions ReadExclusions(const pb::SelectExplorationGoalRequest& request) {
   return out;
 }
 
-// Drops the frontier cells near excluded goals (the part the robot could not clear), then
-// clusters left smaller than min_cells; centroid and anchor are those of the cells kept.
+// The operator's search area; unset = no bound.
+struct SearchBounds {
+  std::optional<pb::SearchArea> area;
+  bool Outside(const Point2& p) const {
+    return area.has_value() &&
+           (p.x < area->min_x() || p.x > area->max_x() || p.y < area->min_y() || p.y > area->max_y());
+  }
+};
+
+absl::StatusOr<SearchBounds> ReadSearchBounds(const pb::SelectExplorationGoalRequest& request) {
+  if (!request.has_search_area()) return SearchBounds{};
+  const pb::SearchArea& a = request.search_area();
+  for (double v : {a.min_x(), a.min_y(), a.max_x(), a.max_y()}) {
+    if (!std::isfinite(v)) return Invalid("search_area", "coordinates must be finite");
+  }
+  if (a.min_x() >= a.max_x() || a.min_y() >= a.max_y()) {
+    return Invalid("search_area", "min_x must be < max_x and min_y < max_y");
+  }
+  return SearchBounds{a};
+}
+
+// Frontier cells a goal must not be chosen from: near an excluded goal or outside the area.
+struct GoalFilter {
+  Exclusions exclusions;
+  SearchBounds bounds;
+  bool Drops(const Point2& p) const { return exclusions.Covers(p) || bounds.Outside(p); }
+  bool empty() const { return exclusions.goals.empty() && !bounds.area.has_value(); }
+};
+
+// Drops the frontier cells the filter rejects (near excluded goals: the part the robot could not
+// clear; outside the search area), then clusters left smaller than min_cells; centroid and anchor
+// are those of the cells kept.
 std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers, const GridFrame& frame,
-                                           const Exclusions& exclusions, int min_cells) {
+                                           const GoalFilter& filter, int min_cells) {
   std::vector<Frontier> kept;
   for (Frontier& f : frontiers) {
-    std::erase_if(f.cells, [&](const Cell& c) { return exclusions.Covers(ToPoint(frame.ToPose(c))); });
+    std::erase_if(f.cells, [&](const Cell& c) { return filter.Drops(ToPoint(frame.ToPose(c))); });
     if (f.cells.empty() || static_cast<int>(f.cells.size()) < min_cells) continue;
     double sx = 0.0, sy = 0.0;
     for (const Cell& c : f.cells) {
@@ -128,7 +158,7 @@ std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers, cons
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
                                        const semnav::common::v1::Pose2D& robot,
                                        uint32_t min_cells, const pb::SemanticContext& semantics,
-                                       const PlanningConfig& config, const Exclusions& exclusions = {}) {
+                                       const PlanningConfig& config, const GoalFilter& filter = {}) {
   FrontierView view;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
   if (!frame.ok()) return frame.status();
@@ -146,7 +176,7 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   const int min =
       min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
   view.frontiers = ExtractFrontiers(view.explored, view.free, min);
-  if (!exclusions.goals.empty()) view.frontiers = WithoutExcludedCells(std::move(view.frontiers), view.frame, exclusions, min);
+  if (!filter.empty()) view.frontiers = WithoutExcludedCells(std::move(view.frontiers), view.frame, filter, min);
   const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
   for (const Frontier& f : view.frontiers) {
     double nearest = kUnreachable;
@@ -226,10 +256,12 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
     return FieldError(absl::StatusCode::kInvalidArgument, "excluded_radius_m",
                       "excluded_radius_m must be >= 0");
   }
-  const Exclusions exclusions = ReadExclusions(request);
+  absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
+  if (!bounds.ok()) return bounds.status();
+  const GoalFilter filter{ReadExclusions(request), *bounds};
   absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
                                                 request.min_frontier_cells(), request.semantics(),
-                                                config, exclusions);
+                                                config, filter);
   if (!view.ok()) return view.status();
   const pb::ExplorationStrategy strategy =
       request.strategy() == pb::EXPLORATION_STRATEGY_UNSPECIFIED
@@ -244,10 +276,10 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       for (int i = 0; i < open.size(); ++i) {
         if (view->explored.values()[i] == 0) open.values()[i] = 1;
       }
-      // Excluded goals: their surroundings cannot hold the long-term goal.
+      // Excluded goals' surroundings and cells outside the search area cannot hold the goal.
       for (int y = 0; y < open.height(); ++y) {
         for (int x = 0; x < open.width(); ++x) {
-          if (exclusions.Covers(ToPoint(view->frame.ToPose(Cell{x, y})))) open.at(x, y) = 0;
+          if (filter.Drops(ToPoint(view->frame.ToPose(Cell{x, y})))) open.at(x, y) = 0;
         }
       }
       const std::optional<Cell> goal =
@@ -278,8 +310,15 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                           absl::StrCat("eroi_semantic_values has ", values.size(),
                                        " values; this grid has ", count, " EROIs"));
       }
+      // Outside the search area counts as explored: no information to gain there.
+      CellGrid<uint8_t> explored = view->explored;
+      for (int y = 0; y < explored.height(); ++y) {
+        for (int x = 0; x < explored.width(); ++x) {
+          if (filter.bounds.Outside(ToPoint(view->frame.ToPose(Cell{x, y})))) explored.at(x, y) = 1;
+        }
+      }
       const std::optional<EroiChoice> choice =
-          SelectEroiGoal({view->explored, view->free}, view->robot, values, eroi);
+          SelectEroiGoal({explored, view->free}, view->robot, values, eroi);
       if (!choice) return NotFound("no reachable EROI viewpoint");
       *response->mutable_goal() = view->frame.ToPose(choice->viewpoint);
       response->set_score(choice->utility);

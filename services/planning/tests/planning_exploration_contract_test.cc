@@ -213,6 +213,73 @@ TEST_F(ExplorationContract, ExcludedGoalsRemoveTheirFrontierCells) {
   EXPECT_NE(bad.error_message().find("excluded_radius_m"), std::string::npos);
 }
 
+pb::SearchArea Area(double min_x, double min_y, double max_x, double max_y) {
+  pb::SearchArea area;
+  area.set_min_x(min_x);
+  area.set_min_y(min_y);
+  area.set_max_x(max_x);
+  area.set_max_y(max_y);
+  return area;
+}
+
+TEST_F(ExplorationContract, SearchAreaDropsFrontierCellsOutsideIt) {
+  // Area x in [3, 7] = columns 4..7: the left cluster (columns 0..3) is outside, so the nearest
+  // frontier is the right cluster's (5,0), 5 m by path, not (0,3) at 3 m.
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
+  *request.mutable_search_area() = Area(3.0, -2.0, 7.0, 3.0);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 0).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 0).y());
+  EXPECT_DOUBLE_EQ(response.score(), 5.0);
+  // An area holding no frontier cell: nothing to explore.
+  *request.mutable_search_area() = Area(-1.0, -2.0, 2.0, 0.0);
+  grpc::ClientContext context2;
+  EXPECT_EQ(Stub()->SelectExplorationGoal(&context2, request, &response).error_code(),
+            grpc::StatusCode::NOT_FOUND);
+}
+
+TEST_F(ExplorationContract, SearchAreaBoundsEveryStrategy) {
+  // Semantic pull toward the left cluster; the area x in [3, 7] keeps only the right one (and
+  // counts the left EROIs as explored). From (5,3), where EROI's 3 m roadmap reaches viewpoints.
+  for (pb::ExplorationStrategy strategy :
+       {pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER, pb::EXPLORATION_STRATEGY_EROI_UTILITY}) {
+    pb::SelectExplorationGoalRequest request = GoalRequest(strategy);
+    *request.mutable_robot() = CellCentre(5, 3);
+    pb::SemanticObject* sofa = request.mutable_semantics()->add_objects();
+    sofa->set_label("sofa");
+    sofa->mutable_position()->set_x(0.0);
+    sofa->mutable_position()->set_y(2.5);
+    sofa->set_relevance(1.0);
+    *request.mutable_search_area() = Area(3.0, -2.0, 7.0, 3.0);
+    pb::SelectExplorationGoalResponse response;
+    grpc::ClientContext context;
+    ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok()) << strategy;
+    EXPECT_GE(response.goal().x(), 3.0) << strategy;
+  }
+  // COVERAGE_MAX heads +x to (6,0) on the whole map; the area x <= 5 keeps it at column 5 or less.
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_COVERAGE_MAX);
+  *request.mutable_search_area() = Area(-1.0, -2.0, 5.0, 3.0);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
+  EXPECT_LE(response.goal().x(), 5.0);
+}
+
+TEST_F(ExplorationContract, InvalidSearchAreaNamesTheField) {
+  for (const pb::SearchArea& area : {Area(1.0, 0.0, 1.0, 2.0), Area(0.0, 3.0, 2.0, 1.0),
+                                     Area(std::nan(""), 0.0, 2.0, 2.0), pb::SearchArea()}) {
+    pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
+    *request.mutable_search_area() = area;
+    pb::SelectExplorationGoalResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = Stub()->SelectExplorationGoal(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << area.ShortDebugString();
+    EXPECT_NE(status.error_message().find("search_area"), std::string::npos);
+  }
+}
+
 TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
   pb::SelectExplorationGoalRequest request =
       GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
