@@ -5,6 +5,7 @@
 // AtLocation prior, item 9), plus the places the robot already visited (topological memory).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,12 @@ struct ExplorationHint {
   double cooccurrence = 0.0;  // commonsense co-occurrence with the target, [0, 1]
 };
 
+// The operator's axis-aligned search area, map frame, metres: exploration stays inside it.
+struct SearchArea {
+  Eigen::Vector2d min = Eigen::Vector2d::Zero();
+  Eigen::Vector2d max = Eigen::Vector2d::Zero();
+};
+
 struct ExplorationContext {
   std::vector<ExplorationHint> objects;        // only objects with some non-zero term
   std::vector<Eigen::Vector3d> visited;        // topological memory nodes
@@ -42,6 +49,7 @@ struct ExplorationContext {
   Eigen::Vector2d eroi_window_min = Eigen::Vector2d::Zero();
   Eigen::Vector2d eroi_window_max = Eigen::Vector2d::Zero();
   double eroi_edge_m = 0.0;
+  std::optional<SearchArea> search_area;  // unset = the whole map
 };
 
 // `prior` and `memory` may be null (no co-occurrence / no visited places). A room target gives

@@ -126,6 +126,7 @@ api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
   out.set_model_requests(progress.model_requests);
   out.set_model_calls(task.model_calls);
   if (backends_.explorer != nullptr) out.set_exploration_strategy(StrategyOf(task));
+  if (task.search_area.has_value()) *out.mutable_search_area() = ToProto(*task.search_area);
   *out.mutable_created_at() = ToTimestamp(task.created);
   *out.mutable_updated_at() = ToTimestamp(task.updated);
   return out;
@@ -224,6 +225,12 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
     return FieldError(absl::StatusCode::kInvalidArgument, "exploration_strategy",
                       absl::StrCat("unknown value ", request.exploration_strategy()));
   }
+  std::optional<SearchArea> search_area;
+  if (request.has_search_area()) {
+    absl::StatusOr<SearchArea> area = FromProto(request.search_area());
+    if (!area.ok()) return area.status();
+    search_area = *area;
+  }
   if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
   Robot& robot = RobotRecord(request.robot_id());
   if (robot.emergency_stop) {
@@ -262,6 +269,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.robot_id = request.robot_id();
   task.instruction = request.instruction();
   task.source = decomposition.source;
+  task.search_area = search_area;
   task.created = task.updated = absl::Now();
   // "" = the configured default; otherwise planning's name ("EROI_UTILITY").
   const std::string strategy =

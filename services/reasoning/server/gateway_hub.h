@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -125,6 +126,7 @@ class GatewayHub {
     uint64_t executor_generation = 0;  // bumped when the model's plan replaces the executor
     int model_calls = 0;
     std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
+    std::optional<SearchArea> search_area;  // the operator's; unset = the whole map
     bool vision_busy = false;          // a VLM call of the EROI search is running
     bool started = false;
     bool paused_by_session = false;

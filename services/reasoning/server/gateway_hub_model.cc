@@ -187,6 +187,7 @@ ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {
     context.eroi_window_max = search->WindowMax();
     context.eroi_edge_m = search->grid().spec().delta;
   }
+  context.search_area = task->second.search_area;
   return context;
 }
 

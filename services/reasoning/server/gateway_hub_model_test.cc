@@ -427,5 +427,41 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
 }
 
+// The operator's search area is checked by field, echoed in the snapshot and sent with every
+// exploration request.
+TEST(GatewayHubSearchAreaTest, SearchAreaReachesPlanning) {
+  GatewayConfig config;
+  RobotLocalPlanner planner;
+  RecordingExplorer explorer;
+  GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, nullptr, nullptr});
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("uav");
+  ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
+  hub.OnRobotState(&session, At(0, 0));
+  api::SubmitInstructionRequest request;
+  request.set_request_id("area-1");
+  request.set_robot_id("uav");
+  request.set_instruction("find the boat");
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-2.0);
+  area->set_min_y(-3.0);
+  area->set_max_x(-2.0);  // empty
+  area->set_max_y(40.0);
+  EXPECT_EQ(hub.Submit(request).status().message(), "search_area: min_x must be < max_x and min_y < max_y");
+  area->set_max_x(std::nan(""));
+  EXPECT_EQ(hub.Submit(request).status().message(), "search_area: coordinates must be finite");
+  EXPECT_TRUE(explorer.contexts.empty());  // refused tasks never explore
+  area->set_max_x(45.0);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(request);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  EXPECT_EQ(submitted->task().search_area().max_x(), 45.0);
+  EXPECT_EQ(submitted->task().search_area().min_y(), -3.0);
+  ASSERT_EQ(explorer.contexts.size(), 1u);
+  ASSERT_TRUE(explorer.contexts[0].search_area.has_value());
+  EXPECT_TRUE(explorer.contexts[0].search_area->min.isApprox(Eigen::Vector2d(-2.0, -3.0)));
+  EXPECT_TRUE(explorer.contexts[0].search_area->max.isApprox(Eigen::Vector2d(45.0, 40.0)));
+}
+
 }  // namespace
 }  // namespace semnav::reasoning

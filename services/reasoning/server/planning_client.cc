@@ -130,6 +130,13 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuer
   if (eroi_values) AddEroiValues(context, &request);
   for (const Eigen::Vector3d& goal : query.excluded_goals) SetPose(goal, request.add_excluded_goals());
   request.set_excluded_radius_m(query.excluded_radius_m);
+  if (context.search_area.has_value()) {
+    pb::SearchArea* area = request.mutable_search_area();
+    area->set_min_x(context.search_area->min.x());
+    area->set_min_y(context.search_area->min.y());
+    area->set_max_x(context.search_area->max.x());
+    area->set_max_y(context.search_area->max.y());
+  }
   pb::SelectExplorationGoalResponse response;
   grpc::Status status = Select(request, &response);
   if (eroi_values && status.error_code() == grpc::StatusCode::INVALID_ARGUMENT) {

@@ -80,6 +80,20 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   ASSERT_EQ(request.semantics().visited_size(), 1);
   EXPECT_FALSE(request.source().live_map().has_window_min());  // the whole live map
   EXPECT_EQ(request.eroi_semantic_values_size(), 0);           // values only for EROI_UTILITY
+  EXPECT_FALSE(request.has_search_area());                     // none given: the whole map
+}
+
+TEST_F(GatewayPlanningClientTest, SearchAreaReachesPlanning) {
+  ExplorationContext context;
+  context.search_area = SearchArea{Eigen::Vector2d(-1.0, -2.0), Eigen::Vector2d(44.0, 46.0)};
+  ASSERT_TRUE(client_->SelectGoal(ExplorationQuery{}, "", context).ok());
+  absl::MutexLock lock(&planning_.mu);
+  ASSERT_EQ(planning_.requests.size(), 1u);
+  const pb::SearchArea& area = planning_.requests[0].search_area();
+  EXPECT_EQ(area.min_x(), -1.0);
+  EXPECT_EQ(area.min_y(), -2.0);
+  EXPECT_EQ(area.max_x(), 44.0);
+  EXPECT_EQ(area.max_y(), 46.0);
 }
 
 TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIsRetriedUniform) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "google/protobuf/util/time_util.h"
+#include "services/common/status/grpc_status.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -105,6 +106,27 @@ RobotPose FromProto(const api::RobotState& state) {
   const common::v1::Quaternion& q = p.orientation();
   pose.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
   return pose;
+}
+
+absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area) {
+  for (double v : {area.min_x(), area.min_y(), area.max_x(), area.max_y()}) {
+    if (!std::isfinite(v)) {
+      return FieldError(absl::StatusCode::kInvalidArgument, "search_area", "coordinates must be finite");
+    }
+  }
+  if (area.min_x() >= area.max_x() || area.min_y() >= area.max_y()) {
+    return FieldError(absl::StatusCode::kInvalidArgument, "search_area", "min_x must be < max_x and min_y < max_y");
+  }
+  return SearchArea{Eigen::Vector2d(area.min_x(), area.min_y()), Eigen::Vector2d(area.max_x(), area.max_y())};
+}
+
+api::SearchArea ToProto(const SearchArea& area) {
+  api::SearchArea out;
+  out.set_min_x(area.min.x());
+  out.set_min_y(area.min.y());
+  out.set_max_x(area.max.x());
+  out.set_max_y(area.max.y());
+  return out;
 }
 
 std::optional<RobotFeedback> FromProto(api::FeedbackKind kind) {

@@ -7,7 +7,9 @@
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "semnav/reasoning/v1/robot_session.pb.h"
 #include "semnav/reasoning/v1/task.pb.h"
+#include "absl/status/statusor.h"
 #include "services/reasoning/core/event_log.h"
+#include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/robot_types.h"
 #include "services/reasoning/core/subgoal.h"
 #include "services/reasoning/core/task_executor.h"
@@ -24,6 +26,9 @@ api::Event ToProto(const LoggedEvent& event);
 api::TaskStatus ToProto(TaskState state);
 // Pose and yaw (about z) from the robot's state message.
 RobotPose FromProto(const api::RobotState& state);
+// INVALID_ARGUMENT naming `search_area` when a coordinate is not finite or min >= max.
+absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area);
+api::SearchArea ToProto(const SearchArea& area);
 // nullopt for ACCEPTED and UNSPECIFIED, which need no reaction.
 std::optional<RobotFeedback> FromProto(api::FeedbackKind kind);
 
