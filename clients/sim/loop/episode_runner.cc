@@ -50,6 +50,7 @@ absl::StatusOr<api::TaskSnapshot> Submit(api::OperatorService::Stub& op, const E
                                       std::chrono::steady_clock::now().time_since_epoch().count()));
   request.set_robot_id(spec.robot_id);
   request.set_instruction(SearchInstruction(spec.target));
+  *request.mutable_search_area() = SearchAreaOf(spec.world);
   api::SubmitInstructionResponse response;
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(30));

@@ -9,4 +9,13 @@ std::string SearchInstruction(const std::string& target) {
   return ascii ? "find a " + target : "找" + target;
 }
 
+semnav::reasoning::v1::SearchArea SearchAreaOf(const World& world) {
+  semnav::reasoning::v1::SearchArea area;
+  area.set_min_x(world.bounds_min.x());
+  area.set_min_y(world.bounds_min.y());
+  area.set_max_x(world.bounds_max.x());
+  area.set_max_y(world.bounds_max.y());
+  return area;
+}
+
 }  // namespace semnav::sim::loop
