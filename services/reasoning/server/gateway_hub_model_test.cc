@@ -343,6 +343,22 @@ class RecordingExplorer : public ExplorationService {
   std::vector<ExplorationContext> contexts;
 };
 
+// A robot "uav" on the session, at the origin.
+void OpenUavSession(GatewayHub& hub, RecordingSink* session) {
+  api::SessionHello hello;
+  hello.set_robot_id("uav");
+  ASSERT_TRUE(hub.OpenSession(hello, session).ok());
+  hub.OnRobotState(session, At(0, 0));
+}
+
+api::SubmitInstructionRequest UavSearch(const std::string& request_id, const std::string& instruction) {
+  api::SubmitInstructionRequest request;
+  request.set_request_id(request_id);
+  request.set_robot_id("uav");
+  request.set_instruction(instruction);
+  return request;
+}
+
 api::CameraFrame Frame(common::v1::ImageEncoding encoding) {
   api::CameraFrame frame;
   const cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(90, 90, 90));
@@ -376,14 +392,8 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   RecordingExplorer explorer;
   GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr});
   RecordingSink session;
-  api::SessionHello hello;
-  hello.set_robot_id("uav");
-  ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
-  hub.OnRobotState(&session, At(0, 0));
-  api::SubmitInstructionRequest request;
-  request.set_request_id("eroi-1");
-  request.set_robot_id("uav");
-  request.set_instruction("find the red backpack");
+  OpenUavSession(hub, &session);
+  api::SubmitInstructionRequest request = UavSearch("eroi-1", "find the red backpack");
   request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
   request.set_exploration_strategy(static_cast<api::ExplorationStrategy>(42));
   EXPECT_EQ(hub.Submit(request).status().message(), "exploration_strategy: unknown value 42");
@@ -435,14 +445,8 @@ TEST(GatewayHubSearchAreaTest, SearchAreaReachesPlanning) {
   RecordingExplorer explorer;
   GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, nullptr, nullptr});
   RecordingSink session;
-  api::SessionHello hello;
-  hello.set_robot_id("uav");
-  ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
-  hub.OnRobotState(&session, At(0, 0));
-  api::SubmitInstructionRequest request;
-  request.set_request_id("area-1");
-  request.set_robot_id("uav");
-  request.set_instruction("find the boat");
+  OpenUavSession(hub, &session);
+  api::SubmitInstructionRequest request = UavSearch("area-1", "find the boat");
   api::SearchArea* area = request.mutable_search_area();
   area->set_min_x(-2.0);
   area->set_min_y(-3.0);
