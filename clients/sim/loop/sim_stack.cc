@@ -43,11 +43,12 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
   stack->planning_ = *planning;
 
   semnav::launcher::StackConfig config;
-  // Mapping publishes scene-graph deltas every 20 ms so the gateway sees detections promptly.
+  // Mapping publishes a scene-graph delta after every frame (a step takes more than the 10 ms
+  // floor) so the gateway sees detections without waiting out a rate limit.
   config.services.push_back({"mapping", "semnav-mapping", *mapping,
                              WriteConfig(options.work_dir, "mapping",
                                          absl::StrCat("mapping:\n  store_directory: ", options.work_dir,
-                                                      "/maps\n  watch_min_interval_ms: 20\n"))});
+                                                      "/maps\n  watch_min_interval_ms: 10\n"))});
   config.services.push_back({"planning", "semnav-planning", *planning,
                              WriteConfig(options.work_dir, "planning",
                                          // The robot's local planner treats unexplored space as free.

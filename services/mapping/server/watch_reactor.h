@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -74,7 +75,11 @@ class WatchReactor : public grpc::ServerWriteReactor<Response> {
       if (!revision.has_value()) continue;
       if (!WriteAndWait()) break;
       last_sent_ = *revision;
-      for (absl::Time until = absl::Now() + interval_; absl::Now() < until && !Ending();) absl::SleepFor(kPoll / 4);
+      // Slices of at most kPoll / 4 (to notice cancellation) that end at `until`: an interval
+      // below 25 ms is honoured, not rounded up to a whole slice.
+      for (absl::Time until = absl::Now() + interval_; absl::Now() < until && !Ending();) {
+        absl::SleepFor(std::min(kPoll / 4, until - absl::Now()));
+      }
     }
     // Finish is the last touch of `this`: OnDone may delete it right after.
     this->Finish(stopping_.load() && !Cancelled() ? grpc::Status(grpc::StatusCode::UNAVAILABLE, "server shutting down")
