@@ -33,6 +33,7 @@ TEST(GatewayLexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
   EXPECT_EQ(lexicon.CanonicalObject("fire_extinguisher"), "fire extinguisher");
   EXPECT_EQ(lexicon.CanonicalObject("灭火器"), "fire extinguisher");
   EXPECT_EQ(lexicon.CanonicalObject("厨房"), "kitchen");
+  EXPECT_EQ(lexicon.CanonicalObject("桥"), "bridge");  // outdoor UAV scenes (seed 000's river)
   EXPECT_EQ(lexicon.CanonicalObject("flux capacitor"), "flux capacitor");
   ASSERT_NE(lexicon.Find("红色", TermKind::kColour), nullptr);
   EXPECT_EQ(lexicon.Find("红色", TermKind::kColour)->canonical, "red");
