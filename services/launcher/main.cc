@@ -7,6 +7,7 @@
 #include <set>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/cli/executable_dir.h"
 #include "services/common/cli/flags.h"
 #include "services/launcher/health_probe.h"
 #include "services/launcher/stack_runner.h"
@@ -35,7 +36,6 @@ Without --config the embedded localhost stack (same as deploy/local.yaml) is use
 keys, no network, the offline reasoner.
 )";
 
-std::string BinDir() { return std::filesystem::canonical("/proc/self/exe").parent_path().string(); }
 
 absl::StatusOr<StackConfig> StackFromFlags(int argc, char** argv) {
   static const std::vector<semnav::FlagSpec> specs = {{"config", "FILE", "stack YAML"}};
@@ -55,7 +55,7 @@ int Up(const StackConfig& stack) {
   sigaddset(&signals, SIGTERM);
   sigaddset(&signals, SIGCHLD);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  semnav::launcher::StackRunner runner(stack, BinDir());
+  semnav::launcher::StackRunner runner(stack, semnav::ExecutableDir());
   if (absl::Status started = runner.Start(); !started.ok()) {
     std::cerr << "semnav up: " << started.message() << "\n";
     return 1;
@@ -82,7 +82,7 @@ int Up(const StackConfig& stack) {
 
 // Replaces this process by a sibling binary, passing argv[first..].
 int ExecSibling(const std::string& binary, int argc, char** argv, int first) {
-  const std::string path = absl::StrCat(BinDir(), "/", binary);
+  const std::string path = absl::StrCat(semnav::ExecutableDir(), "/", binary);
   std::vector<char*> args = {const_cast<char*>(path.c_str())};
   for (int i = first; i < argc; ++i) args.push_back(argv[i]);
   args.push_back(nullptr);
@@ -98,9 +98,9 @@ int Bench(int argc, char** argv) {
   }
   const std::string area = argv[2];
   const std::string binary = "semnav-bench-" + area;
-  if (::access(absl::StrCat(BinDir(), "/", binary).c_str(), X_OK) != 0) {
+  if (::access(absl::StrCat(semnav::ExecutableDir(), "/", binary).c_str(), X_OK) != 0) {
     std::set<std::string> areas;
-    for (const auto& entry : std::filesystem::directory_iterator(BinDir())) {
+    for (const auto& entry : std::filesystem::directory_iterator(semnav::ExecutableDir())) {
       const std::string name = entry.path().filename().string();
       if (name.starts_with("semnav-bench-")) areas.insert(name.substr(13));
     }

@@ -21,6 +21,7 @@
 #include "clients/sim/loop/episode_runner.h"
 #include "clients/sim/loop/sim_stack.h"
 #include "clients/sim/worlds/indoor_generator.h"
+#include "services/common/cli/executable_dir.h"
 
 namespace {
 
@@ -49,10 +50,6 @@ constexpr char kUsage[] =
 // Compared side by side on the same episodes, each with its own stack whose gateway explores
 // by that strategy. EROI_UTILITY needs a vision model, so it joins only on request.
 constexpr char kDefaultStrategies[] = "NEAREST_FRONTIER,COVERAGE_MAX,SEMANTIC_FRONTIER";
-
-std::string ProgramDir() {
-  return std::filesystem::canonical("/proc/self/exe").parent_path().string();
-}
 
 // The worlds of --suite: its YAML files, and those of each sub-folder (sorted by name).
 absl::StatusOr<std::vector<sim::World>> Worlds(const std::map<std::string, std::string>& flags, uint64_t seed) {
@@ -118,7 +115,7 @@ int main(int argc, char** argv) {
   }
   const std::string out_dir = flags["--out"];
   std::filesystem::create_directories(out_dir);
-  const std::string bin_dir = flags.contains("--bin-dir") ? flags["--bin-dir"] : ProgramDir();
+  const std::string bin_dir = flags.contains("--bin-dir") ? flags["--bin-dir"] : semnav::ExecutableDir();
   std::vector<sim::EpisodeRecord> records;
   semnav::sim::bench::NotRun not_run;
   std::vector<std::string> strategies;

@@ -13,6 +13,7 @@
 #include "clients/sim/loop/remote_endpoints.h"
 #include "clients/sim/loop/sim_stack.h"
 #include "clients/sim/loop/smoke_episode.h"
+#include "services/common/cli/executable_dir.h"
 
 namespace {
 
@@ -58,7 +59,7 @@ int main(int argc, char** argv) {
   if (!remote_file.empty()) {
     endpoints = loop::LoadRemoteEndpoints(remote_file);
   } else {
-    const std::string bin_dir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
+    const std::string bin_dir = semnav::ExecutableDir();
     std::cout << "starting mapping, planning and gateway from " << bin_dir << " ..." << std::endl;
     loop::SimStackOptions options;
     options.bin_dir = bin_dir;

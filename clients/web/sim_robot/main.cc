@@ -22,6 +22,7 @@
 #include "clients/sim/loop/robot_session.h"
 #include "clients/sim/loop/sim_stack.h"
 #include "clients/sim/loop/smoke_episode.h"
+#include "services/common/cli/executable_dir.h"
 #include "services/common/cli/flags.h"
 
 namespace {
@@ -93,7 +94,7 @@ int main(int argc, char** argv) {
   std::string mapping = flags->Get("mapping").value_or("127.0.0.1:50051");
   std::string planning = flags->Get("planning").value_or("127.0.0.1:50052");
   if (flags->Has("start-stack")) {
-    const std::string bin_dir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
+    const std::string bin_dir = semnav::ExecutableDir();
     const std::string work_dir =
         std::filesystem::absolute(flags->Get("work-dir").value_or("semnav_dashboard_stack")).string();
     loop::SimStackOptions options;
