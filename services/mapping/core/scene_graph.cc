@@ -75,6 +75,12 @@ void SceneGraph::Merge(SceneObject& object, const ObjectObservation& observation
       Normalize(object.embedding);
     }
   }
+  // An instance loaded from a map file has no votes yet: its label stands for all its detections.
+  if (object.label_scores.empty()) object.label_scores[object.label] = object.score * object.detection_count;
+  object.label_scores[observation.label] += observation.score;
+  const auto best = std::max_element(object.label_scores.begin(), object.label_scores.end(),
+                                     [](const auto& a, const auto& b) { return a.second < b.second; });
+  if (best->second > object.label_scores.at(object.label)) object.label = best->first;  // ties keep it
   object.score = (object.score * object.detection_count + observation.score) / (object.detection_count + 1);
   ++object.detection_count;
   object.last_seen_ns = std::max(object.last_seen_ns, observation.stamp_ns);
@@ -89,6 +95,7 @@ void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, i
       SceneObject fresh;
       fresh.id = next_id_++;
       fresh.label = observation.label;
+      fresh.label_scores[observation.label] = observation.score;
       fresh.position = observation.position;
       fresh.size = observation.size;
       fresh.embedding = observation.embedding;

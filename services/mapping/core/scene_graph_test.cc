@@ -59,6 +59,32 @@ TEST(SceneGraphTest, EmbeddingMatchWinsOverNearestSameLabel) {
   EXPECT_EQ(graph.objects()[1].detection_count, 3);
 }
 
+TEST(SceneGraphTest, LabelIsTheBestScoredOfTheMergedDetections) {
+  SceneGraph graph{SceneGraphConfig{}};
+  // The first detection was a confusion (couch seen as "oven"); the embedding is the couch's.
+  graph.Integrate({Obs("oven", {0, 0, 0}, 0.7, {1, 0, 0})}, 0);
+  EXPECT_EQ(graph.objects()[0].label, "oven");
+  graph.Integrate({Obs("couch", {0, 0, 0}, 0.6, {1, 0, 0})}, 0);
+  EXPECT_EQ(graph.objects()[0].label, "oven");  // 0.7 vs 0.6
+  const uint64_t before = graph.revision();
+  graph.Integrate({Obs("couch", {0, 0, 0}, 0.6, {1, 0, 0})}, 0);
+  ASSERT_EQ(graph.objects().size(), 1u);
+  EXPECT_EQ(graph.objects()[0].label, "couch");  // 1.2 vs 0.7
+  EXPECT_GT(graph.revision(), before);            // watchers see the new name
+  // A loaded instance (no votes) keeps its label against one weaker contrary detection:
+  // its own votes are score x count = 0.8 x 3.
+  SceneObject loaded;
+  loaded.id = 7;
+  loaded.label = "chair";
+  loaded.score = 0.8;
+  loaded.detection_count = 3;
+  loaded.embedding = {0, 1, 0};
+  graph.Replace({loaded}, 8);
+  graph.Integrate({Obs("table", {0, 0, 0}, 0.9, {0, 1, 0})}, 0);
+  EXPECT_EQ(graph.objects()[0].label, "chair");
+  EXPECT_EQ(graph.objects()[0].detection_count, 4);
+}
+
 TEST(SceneGraphTest, PrunesInstancesSeenOnceAndReportsRemoval) {
   SceneGraph graph{SceneGraphConfig{}};
   graph.Integrate({Obs("ghost", {5, 5, 0}, 0.4, {}, 0), Obs("sofa", {0, 0, 0}, 0.9, {}, 0)}, 0);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct SceneObject {
   double score = 0.0;  // mean detector score over all detections
   int detection_count = 0;
   std::vector<float> embedding;  // EMA of the detections' unit embeddings, renormalised
+  // Summed detector score per label the instance was detected as; `label` is the best of them,
+  // so one confused first detection does not name the instance for good (ConceptGraphs).
+  std::map<std::string, double> label_scores;
   int64_t first_seen_ns = 0;
   int64_t last_seen_ns = 0;
   int region_id = -1;
