@@ -17,21 +17,33 @@ struct VisibleObject {
   Eigen::Vector4i box{1 << 30, 1 << 30, -1, -1};
 };
 
-// Pixels per object, in object order so the random draws are reproducible.
-std::map<int, VisibleObject> CollectVisible(const RenderedView& view, const Scene& scene) {
-  std::map<int, VisibleObject> visible;
+void AddPixel(VisibleObject& v, size_t i, int w, float depth) {
+  const int u = static_cast<int>(i % w), row = static_cast<int>(i / w);
+  v.pixels.push_back(i);
+  v.depths.push_back(depth);
+  v.box = Eigen::Vector4i(std::min(v.box[0], u), std::min(v.box[1], row), std::max(v.box[2], u),
+                          std::max(v.box[3], row));
+}
+
+struct VisibleRegions {
+  std::map<int, VisibleObject> things;         // per object index
+  std::map<std::string, VisibleObject> stuff;  // per stuff kind: one segment per class
+};
+
+// Pixels per object and per stuff kind, in a fixed order so the random draws are reproducible.
+VisibleRegions CollectVisible(const RenderedView& view, const Scene& scene,
+                              const std::set<std::string>& stuff_kinds) {
+  VisibleRegions visible;
   const int w = view.intrinsics.width;
   for (size_t i = 0; i < view.PixelCount(); ++i) {
     const int32_t s = view.surface[i];
     if (s < 0) continue;
-    const int object = scene.solids()[s].object_index;
-    if (object < 0) continue;
-    VisibleObject& v = visible[object];
-    const int u = static_cast<int>(i % w), row = static_cast<int>(i / w);
-    v.pixels.push_back(i);
-    v.depths.push_back(view.depth[i]);
-    v.box = Eigen::Vector4i(std::min(v.box[0], u), std::min(v.box[1], row), std::max(v.box[2], u),
-                            std::max(v.box[3], row));
+    const SceneSolid& solid = scene.solids()[s];
+    if (solid.object_index >= 0) {
+      AddPixel(visible.things[solid.object_index], i, w, view.depth[i]);
+    } else if (stuff_kinds.contains(solid.kind)) {
+      AddPixel(visible.stuff[solid.kind], i, w, view.depth[i]);
+    }
   }
   return visible;
 }
@@ -82,13 +94,13 @@ DetectionFrame DetectObjects(const RenderedView& view, const Scene& scene, const
   frame.mask.assign(view.PixelCount(), 0);
   const std::vector<std::string> pool = LabelPool(world, config);
   const CameraIntrinsics& k = view.intrinsics;
-  for (auto& [object, visible] : CollectVisible(view, scene)) {
-    if (static_cast<int>(visible.pixels.size()) < config.min_pixels) continue;
+  // Reports one visible region as `truth` (object -1 for stuff), after the miss and range tests.
+  auto report = [&](VisibleObject& visible, const std::string& truth, int object) {
+    if (static_cast<int>(visible.pixels.size()) < config.min_pixels) return;
     auto mid = visible.depths.begin() + visible.depths.size() / 2;
     std::nth_element(visible.depths.begin(), mid, visible.depths.end());
     const double median = *mid;
-    if (median > config.max_range || rng.Bernoulli(config.miss_rate)) continue;
-    const std::string& truth = world.objects[object].label;
+    if (median > config.max_range || rng.Bernoulli(config.miss_rate)) return;
     Detection d;
     const bool confused = rng.Bernoulli(config.confusion_rate);
     d.label = confused ? OtherLabel(pool, truth, rng) : truth;
@@ -106,7 +118,11 @@ DetectionFrame DetectObjects(const RenderedView& view, const Scene& scene, const
     frame.detections.push_back(std::move(d));
     const auto tag = static_cast<uint16_t>(std::min<size_t>(frame.detections.size(), 65535));
     for (size_t i : visible.pixels) frame.mask[i] = tag;
-  }
+  };
+  const std::set<std::string> stuff_kinds(config.stuff_kinds.begin(), config.stuff_kinds.end());
+  VisibleRegions visible = CollectVisible(view, scene, stuff_kinds);
+  for (auto& [object, region] : visible.things) report(region, world.objects[object].label, object);
+  for (auto& [kind, region] : visible.stuff) report(region, kind, -1);
   const int false_positives = Poisson(config.false_positive_rate, rng);
   for (int f = 0; f < false_positives; ++f) {
     // Boxes of 30-150 px on a 640 x 480 image, scaled with the image width.

@@ -28,6 +28,9 @@ struct DetectorConfig {
   // Labels false positives and confusions draw from, in addition to the world's labels.
   std::vector<std::string> distractor_labels = {"chair", "potted plant", "tv",     "bed",
                                                 "couch", "toilet",       "bottle", "car"};
+  // Obstacle kinds reported as "stuff" (COCO-Stuff's road, river), the way a panoptic detector
+  // or seed 000's VLM names the surroundings: one segment per kind per frame, never a target.
+  std::vector<std::string> stuff_kinds = {"road", "river"};
 };
 
 struct Detection {
@@ -38,7 +41,7 @@ struct Detection {
   Eigen::Vector3d position_camera = Eigen::Vector3d::Zero();  // optical frame, metres
   std::vector<float> embedding;  // unit vector; appearance of the TRUE class
   int pixel_count = 0;
-  int object_index = -1;  // ground truth: World::objects index, -1 = false positive
+  int object_index = -1;  // ground truth: World::objects index, -1 = false positive or stuff
 };
 
 struct DetectionFrame {

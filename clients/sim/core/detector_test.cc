@@ -56,6 +56,26 @@ TEST_F(SimDetectorTest, VisibleObjectProjectsWhereThePinholeSays) {
   EXPECT_EQ(frame.mask[0], 0);
 }
 
+TEST_F(SimDetectorTest, StuffKindsAreOneSegmentPerClassAndNeverAnObject) {
+  // Two 2 cm road strips crossing the view 1.5-2.0 m and 3.5-4.5 m ahead; a wall is not stuff.
+  world_.obstacles.push_back(Obstacle{"road", Rgb{}, Box(1.75, 0.0, 0.5, 4.0, 0.02)});
+  world_.obstacles.push_back(Obstacle{"road", Rgb{}, Box(4.0, 0.0, 1.0, 4.0, 0.02)});
+  world_.obstacles.push_back(Obstacle{"wall", Rgb{}, Box(6.0, 0.0, 0.1, 8.0, 2.5)});
+  const DetectionFrame frame = Detect(Exact());
+  ASSERT_EQ(frame.detections.size(), 2u);
+  EXPECT_EQ(frame.detections[0].label, "chair");
+  const Detection& road = frame.detections[1];
+  EXPECT_EQ(road.label, "road");
+  EXPECT_EQ(road.object_index, -1);
+  // One box over both strips: from the far strip's top edge (row of the 4.5 m ground point,
+  // hidden partly behind the chair's sides) down to the near strip's nearest row at 1.5 m.
+  EXPECT_NEAR(road.box[3], 239.5 + 525 * 0.5 / 1.5, 2.0);
+  EXPECT_NEAR(road.box[1], 239.5 + 525 * 0.48 / 4.5, 2.0);
+  DetectorConfig no_stuff = Exact();
+  no_stuff.stuff_kinds.clear();
+  EXPECT_EQ(Detect(no_stuff).detections.size(), 1u);
+}
+
 TEST_F(SimDetectorTest, OccludedOrTinyObjectsAreNotDetected) {
   world_.obstacles.push_back(Obstacle{"wall", Rgb{}, Box(1.5, 0.0, 0.1, 3.0, 2.5)});
   EXPECT_TRUE(Detect(Exact()).detections.empty());

@@ -12,8 +12,12 @@ absl::StatusOr<ConceptNetCooccurrence> ConceptNetCooccurrence::Load(const std::s
 
 double ConceptNetCooccurrence::Cooccurrence(std::string_view target, std::string_view label) const {
   using modelproxy::offline::CanonicalTerm;
-  return prior_.Relatedness(CanonicalTerm(absl::string_view(target.data(), target.size())),
-                            CanonicalTerm(absl::string_view(label.data(), label.size())));
+  const std::string target_term = CanonicalTerm(absl::string_view(target.data(), target.size()));
+  const std::string label_term = CanonicalTerm(absl::string_view(label.data(), label.size()));
+  if (prior_.Knows(label_term)) return prior_.Relatedness(target_term, label_term);
+  // A label that is no object of the prior may be a place the target is found at ("road" for
+  // a car, "river" for a boat: stuff a segmenter reports).
+  return prior_.Affinity(target_term, label_term);
 }
 
 }  // namespace semnav::reasoning

@@ -1,7 +1,9 @@
 // CooccurrencePrior over the model proxy's ConceptNet AtLocation prior (shared/data, CC BY-SA
 // 4.0; the same file and loader the proxy's offline backend uses): two objects co-occur as much
 // as their place distributions overlap (PlacePrior::Relatedness, cosine in [0, 1]; fork ~ knife
-// > 0.6, fork ~ toilet = 0). Names go through the proxy's canonical terms ("sofa" -> "couch").
+// > 0.6, fork ~ toilet = 0). A label the prior has no object for is read as a place: the
+// target's AtLocation affinity to it (car ~ road 0.6, boat ~ river 0.34). Names go through the
+// proxy's canonical terms ("sofa" -> "couch").
 #pragma once
 
 #include <string>

@@ -84,6 +84,11 @@ TEST(GatewayConceptNetCooccurrenceTest, SharedPriorRelatesKitchenwareNotBathroom
   EXPECT_EQ(prior->Cooccurrence("fork", "toilet"), 0.0);
   EXPECT_NEAR(prior->Cooccurrence("sofa", "couch"), 1.0, 1e-12);  // canonical terms: sofa = couch
   EXPECT_EQ(prior->Cooccurrence("fire extinguisher", "knife"), 0.0);  // unknown to the prior
+  // Places the prior has no object for: the target's AtLocation weight over its strongest place
+  // (car: road 4.47 / city 7.48; boat: river 2.83 / water 8.25).
+  EXPECT_NEAR(prior->Cooccurrence("car", "road"), 4.47213595499958 / 7.483314773547882, 1e-9);
+  EXPECT_NEAR(prior->Cooccurrence("boat", "river"), 2.82842712474619 / 8.246211251235321, 1e-9);
+  EXPECT_EQ(prior->Cooccurrence("boat", "road"), 0.0);
   EXPECT_EQ(ConceptNetCooccurrence::Load("/nonexistent/conceptnet.json").status().code(),
             absl::StatusCode::kNotFound);
 }
