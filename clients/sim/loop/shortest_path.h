@@ -1,5 +1,5 @@
 // l_i of SPL: the planning service's A* on the world's ground-truth occupancy grid, from the
-// start to the nearest reachable point within the success radius of any target instance.
+// start to the point within the success radius of any target instance that is nearest by path.
 #pragma once
 
 #include <string>

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "clients/sim/core/episode_metrics.h"
+
 namespace semnav::sim::loop {
 namespace {
 
@@ -23,6 +25,7 @@ std::optional<TargetChoice> PickInSightTarget(const World& world, const GroundTr
     const Eigen::Vector2d offset = object.box.center - start;
     const double distance = offset.norm();
     if (distance < min_m || distance > max_m || (best && distance >= best->distance_m)) continue;
+    if (DistanceToNearestInstance(world, object.label, start) < min_m) continue;
     // Walk the corridor up to the standoff point in front of the footprint's bounding circle.
     const double reach = distance - object.box.size.head<2>().norm() / 2.0 - standoff_m;
     bool free = reach > 0.0;

@@ -18,7 +18,9 @@ struct TargetChoice {
 };
 
 // Objects between min_m and max_m (centre distance) whose corridor to within `standoff_m` of
-// the footprint is free in `grid` (inflated by the robot radius); the nearest one.
+// the footprint is free in `grid` (inflated by the robot radius); the nearest one. Every
+// footprint of the label must be at least min_m from the start too: an episode that starts in
+// its success region has l_i = 0, which seed 004's SPL cannot score.
 std::optional<TargetChoice> PickInSightTarget(const World& world, const GroundTruthGrid& grid,
                                               const Eigen::Vector2d& start, double min_m, double max_m,
                                               double standoff_m);

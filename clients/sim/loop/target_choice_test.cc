@@ -24,6 +24,11 @@ TEST(SimLoopTargetChoiceTest, SkipsTargetsBehindWallsAndTakesTheNearestFreeOne) 
   EXPECT_EQ(choice->object_index, 1);
   EXPECT_NEAR(choice->distance_m, 3.0, 1e-9);
   EXPECT_NEAR(choice->yaw_to_target, M_PI / 2, 1e-9);
+  // A second bottle's footprint 0.94 m from the start (under min_m): no bottle episode.
+  world.objects.push_back(testing::Object("bottle_2", "bottle", testing::Box(0.9, -0.6, 0.2, 0.2, 0.3)));
+  EXPECT_FALSE(PickInSightTarget(world, RasterizeOccupancy(world, raster), Eigen::Vector2d::Zero(), 1.5, 3.5, 1.0)
+                   .has_value());
+  world.objects.pop_back();
   // Without the bottle nothing qualifies.
   world.objects.erase(world.objects.begin() + 1);
   EXPECT_FALSE(PickInSightTarget(world, RasterizeOccupancy(world, raster), Eigen::Vector2d::Zero(), 1.5, 3.5, 1.0)

@@ -1,0 +1,48 @@
+#include "clients/sim/core/nearest_goal_search.h"
+
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace semnav::sim {
+
+std::optional<NearestGoal> NearestReachableGoal(const GroundTruthGrid& grid, const Eigen::Vector2d& start,
+                                                const std::function<bool(const Eigen::Vector2d&)>& is_goal) {
+  const Eigen::Vector2d local = (start - grid.origin) / grid.resolution;
+  const int sx = static_cast<int>(std::floor(local.x())), sy = static_cast<int>(std::floor(local.y()));
+  if (sx < 0 || sy < 0 || sx >= grid.width || sy >= grid.height || grid.at(sx, sy) != 0) return std::nullopt;
+  auto centre = [&](int x, int y) {
+    return Eigen::Vector2d(grid.origin.x() + (x + 0.5) * grid.resolution,
+                           grid.origin.y() + (y + 0.5) * grid.resolution);
+  };
+  auto free = [&](int x, int y) { return x >= 0 && y >= 0 && x < grid.width && y < grid.height && grid.at(x, y) == 0; };
+  std::vector<double> cost(static_cast<size_t>(grid.width) * grid.height, std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;  // cost in cells, cell index
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  cost[static_cast<size_t>(sy) * grid.width + sx] = 0.0;
+  open.push({0.0, sy * grid.width + sx});
+  while (!open.empty()) {
+    const auto [c, index] = open.top();
+    open.pop();
+    if (c > cost[index]) continue;
+    const int x = index % grid.width, y = index / grid.width;
+    if (is_goal(centre(x, y))) return NearestGoal{centre(x, y), c * grid.resolution};
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if ((dx == 0 && dy == 0) || !free(x + dx, y + dy)) continue;
+        if (dx != 0 && dy != 0 && !(free(x + dx, y) && free(x, y + dy))) continue;
+        const double next = c + (dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
+        const int n = (y + dy) * grid.width + x + dx;
+        if (next < cost[n]) {
+          cost[n] = next;
+          open.push({next, n});
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace semnav::sim
