@@ -9,9 +9,12 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
+#include <thread>
 
 #include "absl/strings/str_format.h"
+#include "absl/synchronization/mutex.h"
 #include "absl/strings/str_split.h"
 #include "clients/sim/bench/episode_plan.h"
 #include "clients/sim/bench/mission_plot.h"
@@ -21,6 +24,7 @@
 #include "clients/sim/loop/episode_runner.h"
 #include "clients/sim/loop/sim_stack.h"
 #include "clients/sim/worlds/indoor_generator.h"
+#include "semnav/reasoning/v1/operator.pb.h"
 #include "services/common/cli/executable_dir.h"
 
 namespace {
@@ -31,7 +35,7 @@ namespace sim = semnav::sim;
 constexpr char kUsage[] =
     "usage: semnav-bench-mission [--suite DIR] [--episodes N] [--outdoor-episodes N] [--flyroll-episodes N]\n"
     "                            [--json FILE] [--out DIR] [--seed N] [--max-steps N] [--strategies LIST]\n"
-    "                            [--model-config FILE] [--bin-dir DIR]\n"
+    "                            [--model-config FILE] [--bin-dir DIR] [--jobs N]\n"
     "  --suite DIR            folder of world YAML files, or of suite folders (semnav-sim-worlds --out DIR\n"
     "                         writes indoor, outdoor, flyroll, houseexpo, fr079); default: 4 generated homes\n"
     "  --episodes N           indoor (ground robot) episodes per strategy (default 4)\n"
@@ -45,10 +49,12 @@ constexpr char kUsage[] =
     "  --strategies L         comma list of exploration strategies (default NEAREST_FRONTIER,\n"
     "                         COVERAGE_MAX,SEMANTIC_FRONTIER; EROI_UTILITY needs --model-config)\n"
     "  --model-config FILE    semnav-model-proxy config: run a model proxy in the stack\n"
-    "  --bin-dir DIR          folder with the service binaries (default: this program's folder)\n";
+    "  --bin-dir DIR          folder with the service binaries (default: this program's folder)\n"
+    "  --jobs N               episodes run at once, each on its own stack of services (default 2, one\n"
+    "                         per core of the reference machine; 1 = one after another)\n";
 
-// Compared side by side on the same episodes, each with its own stack whose gateway explores
-// by that strategy. EROI_UTILITY needs a vision model, so it joins only on request.
+// Compared side by side on the same episodes. EROI_UTILITY needs a vision model, so it joins
+// only on request.
 constexpr char kDefaultStrategies[] = "NEAREST_FRONTIER,COVERAGE_MAX,SEMANTIC_FRONTIER";
 
 // The worlds of --suite: its YAML files, and those of each sub-folder (sorted by name).
@@ -85,7 +91,8 @@ int main(int argc, char** argv) {
                                               {"--out", "mission_report"},
                                               {"--seed", "1"},
                                               {"--max-steps", "500"},
-                                              {"--strategies", kDefaultStrategies}};
+                                              {"--strategies", kDefaultStrategies},
+                                              {"--jobs", "2"}};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -116,11 +123,16 @@ int main(int argc, char** argv) {
   const std::string out_dir = flags["--out"];
   std::filesystem::create_directories(out_dir);
   const std::string bin_dir = flags.contains("--bin-dir") ? flags["--bin-dir"] : semnav::ExecutableDir();
-  std::vector<sim::EpisodeRecord> records;
   semnav::sim::bench::NotRun not_run;
   std::vector<std::string> strategies;
   const std::vector<std::string> requested = absl::StrSplit(flags["--strategies"], ',', absl::SkipEmpty());
   for (const std::string& strategy : requested) {
+    semnav::reasoning::v1::ExplorationStrategy parsed;
+    if (!semnav::reasoning::v1::ExplorationStrategy_Parse(absl::StrCat("EXPLORATION_STRATEGY_", strategy), &parsed) ||
+        parsed == semnav::reasoning::v1::EXPLORATION_STRATEGY_UNSPECIFIED) {
+      std::cerr << "semnav-bench-mission: --strategies: unknown strategy " << strategy << "\n" << kUsage;
+      return 2;
+    }
     if (strategy == "EROI_UTILITY" && !flags.contains("--model-config")) {
       not_run[strategy] = "no model configured (--model-config): EROI_UTILITY's semantic values come from the "
                           "vision model (seed 000)";
@@ -128,57 +140,98 @@ int main(int argc, char** argv) {
     }
     strategies.push_back(strategy);
   }
-  const auto started = std::chrono::steady_clock::now();
-  const size_t total = plan.size() * strategies.size();
+  // Every (strategy, episode) pair is one job; `--jobs` stacks take jobs from one queue. Each
+  // task asks for its own strategy, so any stack runs any job, and the records keep plan order.
+  struct Job {
+    std::string strategy;
+    size_t episode;
+  };
+  std::vector<Job> jobs;
   for (const std::string& strategy : strategies) {
+    for (size_t i = 0; i < plan.size(); ++i) jobs.push_back({strategy, i});
+  }
+  const int workers = std::clamp(std::atoi(flags["--jobs"].c_str()), 1, std::max<int>(1, jobs.size()));
+  std::vector<std::unique_ptr<loop::SimStack>> stacks;
+  for (int w = 0; w < workers; ++w) {
     loop::SimStackOptions options;
     options.bin_dir = bin_dir;
-    options.work_dir = out_dir + "/stack_" + strategy;
-    options.exploration_strategy = strategy;
+    options.work_dir = absl::StrCat(out_dir, "/stack_", w);
     if (flags.contains("--model-config")) options.model_proxy_config = flags["--model-config"];
     absl::StatusOr<std::unique_ptr<loop::SimStack>> stack = loop::SimStack::Start(options);
     if (!stack.ok()) {
-      std::cerr << "semnav-bench-mission: cannot start the stack for " << strategy << ": " << stack.status() << "\n";
-      not_run[strategy] = absl::StrCat("the stack did not start: ", stack.status().message());
-      continue;
+      std::cerr << "semnav-bench-mission: cannot start stack " << w << ": " << stack.status() << "\n";
+      return 1;
     }
-    std::cout << "strategy " << strategy << " (the gateway explores with planning's "
-              << "SelectExplorationGoal)\n";
-    for (size_t i = 0; i < plan.size(); ++i) {
-      loop::EpisodeSpec spec = plan[i];
-      spec.strategy = strategy;
-      spec.max_steps = std::atoi(flags["--max-steps"].c_str());
-      const std::string group = sim::ReportGroup(spec.world.starts[spec.start_index].modality);
-      std::cout << absl::StrFormat("[%d/%d] %s %s start %d: find %s ... ", records.size() + 1, total, group,
-                                   spec.world.name, spec.start_index, spec.target)
-                << std::flush;
-      const auto episode_started = std::chrono::steady_clock::now();
-      absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, (*stack)->endpoints());
-      if (!result.ok()) {
-        std::cerr << "\nsemnav-bench-mission: episode failed to run: " << result.status() << "\n";
-        return 1;
+    stacks.push_back(*std::move(stack));
+  }
+  std::cout << absl::StrFormat("%d episodes x %d strategies on %d stacks (each task asks planning's "
+                               "SelectExplorationGoal for its strategy)\n",
+                               plan.size(), strategies.size(), workers);
+  const int max_steps = std::atoi(flags["--max-steps"].c_str());
+  const auto started = std::chrono::steady_clock::now();
+  std::vector<std::optional<sim::EpisodeRecord>> slots(jobs.size());
+  absl::Mutex mutex;
+  size_t next_job = 0, done = 0;
+  absl::Status failure;
+  auto work = [&](loop::SimStack& stack) {
+    for (;;) {
+      size_t j;
+      {
+        absl::MutexLock lock(&mutex);
+        if (next_job == jobs.size() || !failure.ok()) return;
+        j = next_job++;
       }
-      records.push_back(result->record);
-      const auto now = std::chrono::steady_clock::now();
-      const double wall_s = std::chrono::duration<double>(now - episode_started).count();
-      const double eta_s = std::chrono::duration<double>(now - started).count() / records.size() *
-                           static_cast<double>(total - records.size());
-      std::cout << absl::StrFormat("%s in %d steps, DTG %.2f m, path %.1f m, l %.1f m (%s) [%.0f s wall, %.0f s left]\n",
-                                   result->record.success ? "SUCCESS" : "fail", result->steps,
-                                   result->record.distance_to_goal_m, result->record.path_m,
-                                   result->record.shortest_path_m, result->final_reason, wall_s, eta_s);
-      const std::string stem = absl::StrFormat("%s/%s_episode_%02d_%s", out_dir, strategy, i, spec.world.name);
+      loop::EpisodeSpec spec = plan[jobs[j].episode];
+      spec.strategy = jobs[j].strategy;
+      spec.robot_id = absl::StrCat(spec.robot_id, "-", spec.strategy);
+      spec.max_steps = max_steps;
+      const auto episode_started = std::chrono::steady_clock::now();
+      absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, stack.endpoints());
+      if (!result.ok()) {
+        absl::MutexLock lock(&mutex);
+        failure = result.status();
+        return;
+      }
+      const std::string stem =
+          absl::StrFormat("%s/%s_episode_%02d_%s", out_dir, spec.strategy, jobs[j].episode, spec.world.name);
       std::ofstream log(stem + ".log");
       for (const std::string& line : result->timeline) log << line << "\n";
-      sim::RasterOptions raster;
-      const sim::GroundTruthGrid grid = sim::RasterizeOccupancy(spec.world, raster);
+      const sim::GroundTruthGrid grid = sim::RasterizeOccupancy(spec.world, sim::RasterOptions{});
       if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, grid, spec.target_label, *result,
                                                                 stem + ".png");
           !s.ok()) {
         std::cerr << "semnav-bench-mission: " << s << "\n";
       }
+      absl::MutexLock lock(&mutex);
+      slots[j] = result->record;
+      ++done;
+      const auto now = std::chrono::steady_clock::now();
+      const double wall_s = std::chrono::duration<double>(now - episode_started).count();
+      const double eta_s = std::chrono::duration<double>(now - started).count() / done *
+                           static_cast<double>(jobs.size() - done);
+      std::cout << absl::StrFormat(
+          "[%d/%d] %s %s %s start %d: find %s: %s in %d steps, DTG %.2f m, path %.1f m, l %.1f m (%s) "
+          "[%.0f s wall, %.0f s left]\n",
+          done, jobs.size(), spec.strategy, sim::ReportGroup(spec.world.starts[spec.start_index].modality),
+          spec.world.name, spec.start_index, spec.target, result->record.success ? "SUCCESS" : "fail",
+          result->steps, result->record.distance_to_goal_m, result->record.path_m, result->record.shortest_path_m,
+          result->final_reason, wall_s, eta_s)
+                << std::flush;
     }
+  };
+  {
+    std::vector<std::thread> threads;
+    for (auto& stack : stacks) threads.emplace_back(work, std::ref(*stack));
+    for (std::thread& t : threads) t.join();
   }
+  if (!failure.ok()) {
+    std::cerr << "semnav-bench-mission: episode failed to run: " << failure << "\n";
+    return 1;
+  }
+  std::vector<sim::EpisodeRecord> records;
+  for (const std::optional<sim::EpisodeRecord>& r : slots) records.push_back(*r);
+  std::cout << absl::StrFormat("%d episodes in %.0f s wall\n", records.size(),
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   const std::string table = semnav::sim::bench::MissionTable(records, sim::kDefaultSuccessRadius, not_run);
   std::cout << "\n" << table;
   std::ofstream(out_dir + "/mission.md") << "# Mission benchmark\n\n" << table;

@@ -1,5 +1,6 @@
 #include "clients/sim/bench/mission_report.h"
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -29,6 +30,33 @@ std::optional<double> PathVsExplorationOnly(const std::vector<StrategySummary>& 
   return std::nullopt;
 }
 
+// Seed 000 compares paths of searches that all found the target. Sum of `strategy`'s paths over
+// the baseline's on the episodes both succeeded; records pair by order within the group (every
+// strategy runs the same episode plan). nullopt when no episode qualifies.
+struct PairedRatio {
+  double ratio = 0.0;
+  int episodes = 0;
+};
+std::optional<PairedRatio> PathVsExplorationOnlyBothFound(const std::vector<EpisodeRecord>& group,
+                                                          const std::string& strategy) {
+  std::vector<const EpisodeRecord*> base, mine;
+  for (const EpisodeRecord& r : group) {
+    if (r.strategy == kExplorationOnly) base.push_back(&r);
+    if (r.strategy == strategy) mine.push_back(&r);
+  }
+  PairedRatio paired;
+  double base_sum = 0.0, mine_sum = 0.0;
+  for (size_t i = 0; i < std::min(base.size(), mine.size()); ++i) {
+    if (!base[i]->success || !mine[i]->success) continue;
+    base_sum += base[i]->path_m;
+    mine_sum += mine[i]->path_m;
+    ++paired.episodes;
+  }
+  if (paired.episodes == 0 || base_sum <= 0.0) return std::nullopt;
+  paired.ratio = mine_sum / base_sum;
+  return paired;
+}
+
 nlohmann::json StrategyJson(const StrategySummary& s) {
   return {{"sr", s.sr},
           {"spl", s.spl},
@@ -54,12 +82,20 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
     nlohmann::json strategies = nlohmann::json::object();
     nlohmann::json energy = nlohmann::json::object();
     nlohmann::json ratio = nlohmann::json::object();
+    nlohmann::json both_found = nlohmann::json::object();
+    const std::vector<EpisodeRecord> in_group = InGroup(records, group);
     for (const StrategySummary& s : summaries) {
       strategies[s.strategy] = StrategyJson(s);
       energy[s.strategy] = s.energy_j;
       if (const std::optional<double> r = PathVsExplorationOnly(summaries, s)) ratio[s.strategy] = *r;
+      if (const std::optional<PairedRatio> p = PathVsExplorationOnlyBothFound(in_group, s.strategy)) {
+        both_found[s.strategy] = {{"ratio", p->ratio}, {"episodes", p->episodes}};
+      }
     }
-    out["groups"][group] = {{"strategies", strategies}, {"energy_j", energy}, {"path_vs_exploration_only", ratio}};
+    out["groups"][group] = {{"strategies", strategies},
+                            {"energy_j", energy},
+                            {"path_vs_exploration_only", ratio},
+                            {"path_vs_exploration_only_both_found", both_found}};
     if (std::string(group) == "indoor") out["strategies"] = strategies;
   }
   out["not_run"] = nlohmann::json::object();
@@ -81,16 +117,22 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
 std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius, const NotRun& not_run) {
   std::string table = absl::StrFormat("Success radius %.2f m\n", success_radius);
   for (const char* group : kGroups) {
-    const std::vector<StrategySummary> summaries = SummariseByStrategy(InGroup(records, group));
+    const std::vector<EpisodeRecord> in_group = InGroup(records, group);
+    const std::vector<StrategySummary> summaries = SummariseByStrategy(in_group);
     if (summaries.empty()) continue;
     absl::StrAppend(&table, "\n### ", group, "\n\n",
-                    "| strategy | episodes | SR | SPL | DTG (m) | path (m) | path / exploration-only | time (s) | "
-                    "energy (J) | model calls | fast-path share |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+                    "| strategy | episodes | SR | SPL | DTG (m) | path (m) | path / exploration-only | "
+                    "same, both found (episodes) | time (s) | energy (J) | model calls | fast-path share |\n"
+                    "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const StrategySummary& s : summaries) {
       const std::optional<double> ratio = PathVsExplorationOnly(summaries, s);
-      absl::StrAppend(&table, absl::StrFormat("| %s | %d | %.3f | %.3f | %.2f | %.2f | %s | %.1f | %.0f | %.2f | %.2f |\n",
+      const std::optional<PairedRatio> paired = PathVsExplorationOnlyBothFound(in_group, s.strategy);
+      absl::StrAppend(&table, absl::StrFormat("| %s | %d | %.3f | %.3f | %.2f | %.2f | %s | %s | %.1f | %.0f | %.2f | %.2f |\n",
                                               s.strategy, s.episodes, s.sr, s.spl, s.dtg_m, s.path_m,
                                               ratio.has_value() ? absl::StrFormat("%.2f", *ratio) : "-",
+                                              paired.has_value()
+                                                  ? absl::StrFormat("%.2f (%d)", paired->ratio, paired->episodes)
+                                                  : "-",
                                               s.time_s, s.energy_j, s.model_calls, s.fast_path_share));
     }
   }

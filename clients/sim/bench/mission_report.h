@@ -20,7 +20,9 @@ using NotRun = std::map<std::string, std::string>;
 //  "strategies": {NAME: {sr, spl, dtg, path_m, time_s, model_calls, fast_path_share, episodes}},
 //      (the indoor group, the headline)
 //  "groups": {GROUP: {"strategies": {NAME: {the same keys}}, "energy_j": {NAME: mean},
-//             "path_vs_exploration_only": {NAME: mean path / NEAREST_FRONTIER's mean path}}},
+//             "path_vs_exploration_only": {NAME: mean path / NEAREST_FRONTIER's mean path},
+//             "path_vs_exploration_only_both_found": {NAME: {ratio, episodes}}: path sums over the
+//             episodes both found the target (seed 000's comparison: all its methods succeeded)}},
 //  "not_run": {NAME: reason}, "episodes": [per-episode rows]}.
 absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double success_radius,
                               const NotRun& not_run, const std::string& path);

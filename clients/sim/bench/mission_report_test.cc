@@ -15,7 +15,12 @@ std::vector<EpisodeRecord> Episodes() {
                          "outdoor"};
   EpisodeRecord uav{"SEMANTIC_FRONTIER", "outdoor_road_vehicles", "car", true, 10.0, 20.0, 0.6, 30.0, 0.0, 0, 1, 1,
                     "outdoor"};
-  return {hit, miss, uav_base, uav};
+  // The baseline gave up after 80 m here: only the first outdoor pair counts as "both found".
+  EpisodeRecord uav_base_miss{"NEAREST_FRONTIER", "outdoor_river_bridge", "boat", false, 10.0, 80.0, 9.0, 250.0, 0.0,
+                              0, 0, 0, "outdoor"};
+  EpisodeRecord uav_hit{"SEMANTIC_FRONTIER", "outdoor_river_bridge", "boat", true, 10.0, 10.0, 0.4, 20.0, 0.0, 0, 1, 1,
+                        "outdoor"};
+  return {hit, miss, uav_base, uav_base_miss, uav, uav_hit};
 }
 
 TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
@@ -36,12 +41,14 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   EXPECT_FALSE(json["strategies"].contains("SEMANTIC_FRONTIER"));  // outdoor only
   EXPECT_DOUBLE_EQ(json["groups"]["indoor"]["energy_j"]["NEAREST_FRONTIER"], 2000.0);
   const nlohmann::json& outdoor = json["groups"]["outdoor"];
-  EXPECT_DOUBLE_EQ(outdoor["strategies"]["SEMANTIC_FRONTIER"]["spl"], 0.5);  // 10 / max(20, 10)
-  EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only"]["SEMANTIC_FRONTIER"], 0.5);  // 20 m / 40 m
+  EXPECT_DOUBLE_EQ(outdoor["strategies"]["SEMANTIC_FRONTIER"]["spl"], 0.75);  // (10 / 20 + 10 / 10) / 2
+  EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only"]["SEMANTIC_FRONTIER"], 0.25);  // 15 m / 60 m
   EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only"]["NEAREST_FRONTIER"], 1.0);
+  EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only_both_found"]["SEMANTIC_FRONTIER"]["ratio"], 0.5);  // 20 / 40
+  EXPECT_EQ(outdoor["path_vs_exploration_only_both_found"]["SEMANTIC_FRONTIER"]["episodes"], 1);
   EXPECT_EQ(json["not_run"]["EROI_UTILITY"], "no model configured");
   EXPECT_DOUBLE_EQ(json["success_radius_m"], 1.0);
-  EXPECT_EQ(json["episodes"].size(), 4u);
+  EXPECT_EQ(json["episodes"].size(), 6u);
   EXPECT_EQ(json["episodes"][2]["group"], "outdoor");
 }
 
@@ -49,9 +56,10 @@ TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategyAndGroup
   const std::string table = MissionTable(Episodes(), 1.0, {{"EROI_UTILITY", "no model configured"}});
   EXPECT_NE(table.find("Success radius 1.00 m"), std::string::npos);
   EXPECT_NE(table.find("### indoor"), std::string::npos);
-  EXPECT_NE(table.find("| NEAREST_FRONTIER | 2 | 0.500 | 0.250 | 1.50 | 5.00 | 1.00 |"), std::string::npos);
+  EXPECT_NE(table.find("| NEAREST_FRONTIER | 2 | 0.500 | 0.250 | 1.50 | 5.00 | 1.00 | 1.00 (1) |"), std::string::npos);
   EXPECT_NE(table.find("### outdoor"), std::string::npos);
-  EXPECT_NE(table.find("| SEMANTIC_FRONTIER | 1 | 1.000 | 0.500 | 0.60 | 20.00 | 0.50 |"), std::string::npos);
+  EXPECT_NE(table.find("| SEMANTIC_FRONTIER | 2 | 1.000 | 0.750 | 0.50 | 15.00 | 0.25 | 0.50 (1) |"),
+            std::string::npos);
   EXPECT_NE(table.find("EROI_UTILITY not run: no model configured"), std::string::npos);
 }
 

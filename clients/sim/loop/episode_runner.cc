@@ -17,6 +17,7 @@
 #include "clients/sim/loop/robot_session.h"
 #include "clients/sim/loop/shortest_path.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
+#include "services/common/status/grpc_status.h"
 
 namespace semnav::sim::loop {
 namespace {
@@ -53,13 +54,31 @@ absl::StatusOr<api::TaskSnapshot> Submit(api::OperatorService::Stub& op, const E
                                       std::chrono::steady_clock::now().time_since_epoch().count()));
   request.set_robot_id(spec.robot_id);
   request.set_instruction(SearchInstruction(spec.target));
+  api::ExplorationStrategy strategy;
+  if (api::ExplorationStrategy_Parse(absl::StrCat("EXPLORATION_STRATEGY_", spec.strategy), &strategy)) {
+    request.set_exploration_strategy(strategy);
+  }
   *request.mutable_search_area() = SearchAreaOf(spec.world);
   api::SubmitInstructionResponse response;
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(30));
   const grpc::Status status = op.SubmitInstruction(&context, request, &response);
-  if (!status.ok()) return absl::UnavailableError(absl::StrCat("SubmitInstruction: ", status.error_message()));
+  if (!status.ok()) return FromGrpcStatus(status);
   return response.task();
+}
+
+// An episode that ran out of budget leaves its task running: the operator calls it off, so the
+// robot's next session does not resume it. A task that ended meanwhile is FAILED_PRECONDITION.
+absl::Status CancelUnfinished(api::OperatorService::Stub& op, const std::string& task_id) {
+  api::CancelTaskRequest request;
+  request.set_request_id(absl::StrCat("cancel-", task_id));
+  request.set_task_id(task_id);
+  request.set_reason("episode budget spent");
+  api::CancelTaskResponse response;
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  const absl::Status status = FromGrpcStatus(op.CancelTask(&context, request, &response));
+  return absl::IsFailedPrecondition(status) ? absl::OkStatus() : status;
 }
 
 // Every episode starts from an empty map: earlier episodes' objects must not leak into this one.
@@ -73,6 +92,12 @@ absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping, const Episo
   const grpc::Status status = stub->ResetMap(&context, request, &response);
   if (!status.ok()) return absl::UnavailableError(absl::StrCat("ResetMap: ", status.error_message()));
   return absl::OkStatus();
+}
+
+// The gateway answered and said no (a target it cannot parse, a robot it does not know): the
+// episode is a failure to score, not a broken benchmark. Transport errors still stop the run.
+bool Refused(const absl::Status& status) {
+  return absl::IsInvalidArgument(status) || absl::IsFailedPrecondition(status) || absl::IsNotFound(status);
 }
 
 std::string Stamp(const SimRobot& robot) { return absl::StrFormat("t=%.1fs ", robot.time_s()); }
@@ -154,9 +179,17 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     return ack.status();
   }
   absl::StatusOr<api::TaskSnapshot> task = Submit(*op, spec);
-  if (!task.ok()) return task.status();
-  result.task_id = task->task_id();
-  RecordTask(*task, robot, result);
+  if (!task.ok() && !Refused(task.status())) {
+    return absl::UnavailableError(absl::StrCat("SubmitInstruction: ", task.status().message()));
+  }
+  if (task.ok()) {
+    result.task_id = task->task_id();
+    RecordTask(*task, robot, result);
+  } else {
+    result.final_status = api::TASK_STATUS_FAILED;
+    result.final_reason = absl::StrCat("instruction refused: ", task.status().ToString());
+    result.timeline.push_back(Stamp(robot) + result.final_reason);
+  }
 
   for (int step = 0; step < spec.max_steps && !Terminal(result.final_status); ++step) {
     if (absl::Status s = ExecuteCommands(**session, executor, robot, result); !s.ok()) return s;
@@ -181,12 +214,17 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   }
   // The task's final STOP and its terminal state race each other: execute the commands that
   // are still on the way, and give a stopped robot's task a moment to publish its end.
-  for (int i = 0; i < 20 && !(executor.stop_issued() && Terminal(result.final_status)); ++i) {
+  for (int i = 0; task.ok() && i < 20 && !(executor.stop_issued() && Terminal(result.final_status)); ++i) {
     if (absl::Status s = ExecuteCommands(**session, executor, robot, result); !s.ok()) return s;
     if (!executor.stop_issued() && Terminal(result.final_status) && i >= 10) break;  // ended without a stop
     task = GetTask(*op, result.task_id);
     if (!task.ok()) return task.status();
     RecordTask(*task, robot, result);
+  }
+
+  if (task.ok() && !Terminal(result.final_status)) {
+    if (absl::Status s = CancelUnfinished(*op, result.task_id); !s.ok()) return s;
+    result.timeline.push_back(Stamp(robot) + "budget spent: task cancelled");
   }
 
   // The stop action is the agent declaring it has arrived: the STOP a task sends when it gives

@@ -25,7 +25,10 @@ struct EpisodeSpec {
   int start_index = 0;
   std::string target;        // as the operator says it: English or Chinese
   std::string target_label;  // the world's English label, for scoring; empty = target
-  std::string strategy;      // label for the records (the gateway's config chooses the strategy)
+  // The exploration strategy the task asks for (NEAREST_FRONTIER, COVERAGE_MAX,
+  // SEMANTIC_FRONTIER, EROI_UTILITY) and the records' label; another name ("smoke") leaves the
+  // gateway's configured default.
+  std::string strategy;
   std::string robot_id = "sim-robot";
   int max_steps = 500;       // seed 004's episode budget
   double step_s = 0.5;       // simulated seconds per step (one frame per step)

@@ -64,9 +64,8 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
   config.services.push_back({"gateway", "semnav-gateway", *gateway,
                              WriteConfig(options.work_dir, "gateway",
                                          absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
-                                                      "\n  planning:\n    address: ", *planning,
-                                                      "\n    exploration_strategy: ",
-                                                      options.exploration_strategy, "\n", model_proxy_section))});
+                                                      "\n  planning:\n    address: ", *planning, "\n",
+                                                      model_proxy_section))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
   return stack;

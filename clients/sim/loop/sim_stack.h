@@ -15,9 +15,6 @@ struct SimStackOptions {
   std::string bin_dir;   // folder holding semnav-mapping, semnav-planning, semnav-gateway
   std::string work_dir;  // configs and the mapping store go here (created)
   bool free_ports = true;  // false: the deploy/local.yaml ports (gateway 50050, ...)
-  // The gateway's exploration strategy (planning's SelectExplorationGoal): NEAREST_FRONTIER,
-  // COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY.
-  std::string exploration_strategy = "SEMANTIC_FRONTIER";
   // A semnav-model-proxy config (YAML) to run a model proxy in the stack and point the gateway
   // at it (gateway.model_proxy.address); empty = no model, the gateway resolves on its fast path only.
   std::string model_proxy_config;

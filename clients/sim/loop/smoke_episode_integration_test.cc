@@ -2,6 +2,7 @@
 // robot finds an in-sight object in a generated home through the public contracts only.
 #include <gtest/gtest.h>
 
+#include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 
 #include "clients/sim/loop/episode_runner.h"
@@ -16,7 +17,7 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   ASSERT_TRUE(spec.ok()) << spec.status();
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
       SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, "SEMANTIC_FRONTIER", ""});
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
 
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
@@ -34,21 +35,33 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   EXPECT_LE(spl, 1.0);
 }
 
-TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameBed) {
+TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameTable) {
   absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
   ASSERT_TRUE(spec.ok()) << spec.status();
-  ASSERT_EQ(spec->target, "bed");  // world seed 7's in-sight object
-  spec->target = "床";              // instruction "找床"
-  spec->target_label = "bed";
+  ASSERT_EQ(spec->target, "dining table");  // world seed 7's in-sight object
+  spec->target = "餐桌";                     // instruction "找餐桌"
+  spec->target_label = "dining table";
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
       SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, "SEMANTIC_FRONTIER", ""});
+          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_EQ(result->final_status, semnav::reasoning::v1::TASK_STATUS_SUCCEEDED) << result->final_reason;
   EXPECT_TRUE(result->record.success);
   EXPECT_EQ(result->record.goals_fast_path, 1);
+
+  // A target the gateway cannot parse (no model to ask) is a failed episode, scored from where
+  // the robot stands, not a broken run; the stack keeps serving.
+  spec->target = "zqxwv";
+  absl::StatusOr<EpisodeResult> refused = RunEpisode(*spec, (*stack)->endpoints());
+  ASSERT_TRUE(refused.ok()) << refused.status();
+  EXPECT_EQ(refused->final_status, semnav::reasoning::v1::TASK_STATUS_FAILED);
+  EXPECT_TRUE(absl::StartsWith(refused->final_reason, "instruction refused: INVALID_ARGUMENT")) << refused->final_reason;
+  EXPECT_FALSE(refused->record.success);
+  EXPECT_EQ(refused->steps, 0);
+  EXPECT_EQ(refused->record.path_m, 0.0);
+  EXPECT_GE(refused->record.distance_to_goal_m, 1.5);  // taken at the start, >= 1.5 m from any table
 }
 
 }  // namespace
