@@ -5,10 +5,22 @@
 
 #include "absl/strings/str_cat.h"
 #include "clients/sim/bench/target_names.h"
+#include "clients/sim/core/episode_metrics.h"
+#include "clients/sim/core/occupancy_raster.h"
 #include "clients/sim/core/rng.h"
+#include "clients/sim/loop/shortest_path.h"
 
 namespace semnav::sim::bench {
 namespace {
+
+// A target an episode can score: reachable from the start on the body's true raster (l_i
+// exists) and not already within the success radius there (l_i > 0). Object-navigation
+// datasets drop the other draws the same way.
+bool Scorable(const World& world, const GroundTruthGrid& grid, const StartPose& start, const std::string& label) {
+  const Eigen::Vector2d at = start.position.head<2>();
+  return DistanceToNearestInstance(world, label, at) > kDefaultSuccessRadius &&
+         loop::NearestSuccessPoint(world, grid, at, label, kDefaultSuccessRadius).has_value();
+}
 
 std::vector<int> StartsOf(const World& world, Modality modality) {
   std::vector<int> starts;
@@ -40,7 +52,14 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
     loop::EpisodeSpec spec;
     spec.world = world;
     spec.start_index = starts[(i / count) % starts.size()];
-    spec.target_label = labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];
+    const StartPose& start = world.starts[spec.start_index];
+    const GroundTruthGrid grid =
+        RasterizeOccupancy(world, loop::BodyRaster(start, RobotConfig::ForModality(start.modality)));
+    // Draw again while the label cannot be scored; a scorable first draw is what it always was.
+    for (size_t attempt = 0; attempt < 4 * labels.size(); ++attempt) {
+      spec.target_label = labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];
+      if (Scorable(world, grid, start, spec.target_label)) break;
+    }
     const std::optional<std::string> chinese = ChineseName(spec.target_label);
     spec.target = i % 4 == 3 && chinese.has_value() ? *chinese : spec.target_label;
     spec.robot_id = absl::StrCat("sim-", group, "-", i);

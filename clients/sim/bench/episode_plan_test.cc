@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <vector>
+
 #include "clients/sim/core/test_worlds.h"
 
 namespace semnav::sim::bench {
@@ -38,6 +41,19 @@ TEST(SimBenchEpisodePlanTest, GroupsByModalityAndAsksEveryFourthTargetInChinese)
     EXPECT_EQ(again[i].start_index, plan[i].start_index);
     EXPECT_EQ(again[i].seed, plan[i].seed);
   }
+}
+
+TEST(SimBenchEpisodePlanTest, TargetsAreReachableAndNotAtTheStart) {
+  // OpenWorld's start is at the origin. A chair walled in on all sides, a bottle 0.5 m from the
+  // start: only the sink can be an episode's target.
+  World world = WithObject("home", Modality::kGround, "sink");
+  world.objects.push_back(testing::Object("chair_1", "chair", testing::Box(-3.0, 3.0, 0.5, 0.5, 0.8)));
+  for (const auto& [x, y, sx, sy] : std::vector<std::array<double, 4>>{
+           {-3.0, 4.0, 2.1, 0.1}, {-3.0, 2.0, 2.1, 0.1}, {-4.0, 3.0, 0.1, 2.1}, {-2.0, 3.0, 0.1, 2.1}}) {
+    world.obstacles.push_back(Obstacle{"wall", Rgb{}, testing::Box(x, y, sx, sy, 2.0)});
+  }
+  world.objects.push_back(testing::Object("bottle_1", "bottle", testing::Box(0.6, 0.0, 0.2, 0.2, 0.3)));
+  for (const loop::EpisodeSpec& spec : PlanEpisodes({world}, {12, 0, 0}, 3)) EXPECT_EQ(spec.target_label, "sink");
 }
 
 TEST(SimBenchEpisodePlanTest, GroupWithoutWorldsPlansNothing) {

@@ -95,8 +95,11 @@ int main(int argc, char** argv) {
       r.success ? "SUCCESS" : "FAILURE", result->steps, r.time_s, r.distance_to_goal_m, sim::kDefaultSuccessRadius,
       r.path_m, r.shortest_path_m, sim::SuccessWeightedPathLength(r.success, r.shortest_path_m, r.path_m),
       r.energy_j, r.model_calls, r.goals_fast_path > 0 ? "yes" : "no");
-  std::ofstream(out_dir + "/demo.md") << "# semnav demo episode\n\n"
-                                      << semnav::sim::bench::MissionTable({r}, sim::kDefaultSuccessRadius);
+  std::ofstream report(out_dir + "/demo.md");
+  report << "# semnav demo episode\n\n" << semnav::sim::bench::MissionTable({r}, sim::kDefaultSuccessRadius)
+         << "\n## Timeline (simulated time: the task's phases, every command and the robot's answer)\n\n```\n";
+  for (const std::string& line : result->timeline) report << line << "\n";
+  report << "```\n";
   const sim::GroundTruthGrid grid = sim::RasterizeOccupancy(spec->world, sim::RasterOptions{});
   if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec->world, grid, spec->target, *result,
                                                             out_dir + "/demo.png");

@@ -239,13 +239,9 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.path_m = robot.path_length_m();
   result.record.time_s = robot.time_s();
   result.record.energy_j = robot.energy_j();
-  // l_i on the true map the robot's body meets: its radius and height band at the start's altitude
-  // (a UAV passes over low obstacles; a fly-roll robot's l_i is its rolling path, an upper bound).
-  RasterOptions raster;
-  raster.robot_radius = robot_config.radius;
-  raster.z_min = start.position.z() + robot_config.ground_clearance;
-  raster.z_max = start.position.z() + robot_config.body_height;
-  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, raster);
+  // l_i on the true map the robot's body meets (a fly-roll robot's l_i is its rolling path, an
+  // upper bound).
+  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(start, robot_config));
   auto planning = semnav::planning::v1::PlanningService::NewStub(endpoints.planning);
   absl::StatusOr<double> shortest =
       ShortestPathToTarget(*planning, spec.world, grid, start.position.head<2>(), label, spec.success_radius);

@@ -7,7 +7,6 @@
 
 #include "absl/strings/str_cat.h"
 #include "clients/sim/core/episode_metrics.h"
-#include "clients/sim/core/nearest_goal_search.h"
 
 namespace semnav::sim::loop {
 
@@ -27,14 +26,28 @@ common::GridMap ToGridMap(const GroundTruthGrid& grid) {
   return out;
 }
 
+RasterOptions BodyRaster(const StartPose& start, const RobotConfig& robot) {
+  RasterOptions raster;
+  raster.robot_radius = robot.radius;
+  raster.z_min = start.position.z() + robot.ground_clearance;
+  raster.z_max = start.position.z() + robot.body_height;
+  return raster;
+}
+
+std::optional<NearestGoal> NearestSuccessPoint(const World& world, const GroundTruthGrid& grid,
+                                               const Eigen::Vector2d& start, const std::string& label,
+                                               double success_radius) {
+  return NearestReachableGoal(grid, start, [&](const Eigen::Vector2d& p) {
+    return DistanceToNearestInstance(world, label, p) <= success_radius;
+  });
+}
+
 absl::StatusOr<double> ShortestPathToTarget(planning::PlanningService::Stub& stub, const World& world,
                                             const GroundTruthGrid& grid, const Eigen::Vector2d& start,
                                             const std::string& label, double success_radius) {
   // Which point of the success region is nearest by path: a region cell, not the free cell
   // nearest an instance's centre, which can lie on the far side of a long counter or a wall.
-  const std::optional<NearestGoal> nearest = NearestReachableGoal(grid, start, [&](const Eigen::Vector2d& p) {
-    return DistanceToNearestInstance(world, label, p) <= success_radius;
-  });
+  const std::optional<NearestGoal> nearest = NearestSuccessPoint(world, grid, start, label, success_radius);
   if (!nearest.has_value()) {
     return absl::NotFoundError(absl::StrCat("no reachable instance of \"", label, "\""));
   }
