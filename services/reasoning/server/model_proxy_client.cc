@@ -146,12 +146,16 @@ void ModelProxyClient::EmbedText(const ModelCaller& caller, const std::string& t
   call.add_texts(text);
   SetTimeout(settings_.deadline_ms, call.mutable_timeout());
   Enqueue(caller, [this, call = std::move(call), done = std::move(done)](grpc::ClientContext& context) {
+    bool recently_unavailable;
     {
       absl::MutexLock lock(&mu_);
-      if (absl::Now() < embeddings_unavailable_until_) {
-        done(absl::UnavailableError("the model proxy offers no text embeddings (recently checked)"));
-        return;
-      }
+      recently_unavailable = absl::Now() < embeddings_unavailable_until_;
+    }
+    // Answers never run under mu_: the caller's answer takes the caller's lock, which it holds
+    // while it enqueues (that is, while it takes mu_).
+    if (recently_unavailable) {
+      done(absl::UnavailableError("the model proxy offers no text embeddings (recently checked)"));
+      return;
     }
     pb::EmbedResponse response;
     const grpc::Status status = stub_->Embed(&context, call, &response);

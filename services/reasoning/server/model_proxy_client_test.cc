@@ -199,13 +199,20 @@ TEST_F(GatewayModelProxyClientTest, ErrorsComeBackAsStatusAndStopCancelsPendingC
 
 TEST_F(GatewayModelProxyClientTest, MissingEmbeddingBackendIsNotAskedAgainWithinTheRetryWindow) {
   ModelProxyClient client(channel_, settings_);
+  // The hub asks under its own lock and its answers take that lock. An answer given while the
+  // client held its mutex (the cached "unavailable" one did) orders the two locks both ways:
+  // the gateway died of that ("potential deadlock") when a second task started in the window.
+  absl::Mutex hub;
   for (int i = 0; i < 2; ++i) {
     absl::Notification done;
     absl::StatusCode code = absl::StatusCode::kOk;
+    hub.Lock();
     client.EmbedText({"r1", "task-1"}, "red cup", [&](absl::StatusOr<std::vector<float>> embedding) {
+      absl::MutexLock answering(&hub);
       code = embedding.status().code();
       done.Notify();
     });
+    hub.Unlock();
     ASSERT_TRUE(done.WaitForNotificationWithTimeout(absl::Seconds(10)));
     EXPECT_EQ(code, absl::StatusCode::kUnavailable);
   }
