@@ -72,6 +72,30 @@ int FloorLayer(const VoxelGrid& grid) {
   return best;
 }
 
+// Columns whose floor voxel the scan saw, widened by `widen` voxels to bridge holes: the
+// building's inside. The rest of the map's bounds was never scanned (empty in the OctoMap, not
+// known free): starts and objects there put the robot outside the building.
+PlaceFilter SeenFloor(const VoxelGrid& grid, int floor, int widen) {
+  const int w = grid.dims.x(), h = grid.dims.y();
+  auto seen = std::make_shared<std::vector<uint8_t>>(static_cast<size_t>(w) * h, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!grid.At(x, y, floor)) continue;
+      for (int dy = -widen; dy <= widen; ++dy)
+        for (int dx = -widen; dx <= widen; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u >= 0 && v >= 0 && u < w && v < h) (*seen)[static_cast<size_t>(v) * w + u] = 1;
+        }
+    }
+  const Eigen::Vector2d origin = grid.origin.head<2>();
+  const double r = grid.resolution;
+  return [seen, origin, r, w, h](const Eigen::Vector2d& p) {
+    const int x = static_cast<int>(std::floor((p.x() - origin.x()) / r));
+    const int y = static_cast<int>(std::floor((p.y() - origin.y()) / r));
+    return x >= 0 && y >= 0 && x < w && y < h && (*seen)[static_cast<size_t>(y) * w + x] != 0;
+  };
+}
+
 // Greedy merge: grow each unvisited voxel into the largest box along x, then y, then z.
 std::vector<BoxShape> MergeBoxes(VoxelGrid& grid, int z_begin, double z_shift) {
   std::vector<BoxShape> boxes;
@@ -106,7 +130,7 @@ std::vector<BoxShape> MergeBoxes(VoxelGrid& grid, int z_begin, double z_shift) {
   return boxes;
 }
 
-void AddObjectsNearWalls(World& world, Rng& rng) {
+void AddObjectsNearWalls(World& world, Rng& rng, const PlaceFilter& inside) {
   const Scene scene = Scene::Build(world);
   const std::vector<std::pair<std::string, Eigen::Vector3d>> items = {
       {"chair", {0.5, 0.5, 0.9}},
@@ -119,14 +143,15 @@ void AddObjectsNearWalls(World& world, Rng& rng) {
       {"bench", {1.5, 0.5, 0.45}},
       {"trash can", {0.4, 0.4, 0.7}},
       {"suitcase", {0.5, 0.3, 0.7}}};
-  // Candidate spots: cells of the robot's largest free region, so every object is reachable.
+  // Candidate spots: cells of the robot's largest free region inside the scanned building, so
+  // every object is reachable.
   const GroundTruthGrid grid = ModalityGrid(world, Modality::kGround, 0.0);
   const std::vector<uint8_t> region = LargestFreeRegion(grid);
   std::vector<Eigen::Vector2d> spots;
   for (size_t c = 0; c < region.size(); ++c) {
-    if (region[c] == 0) continue;
-    spots.push_back(grid.origin +
-                    grid.resolution * Eigen::Vector2d(c % grid.width + 0.5, c / grid.width + 0.5));
+    const Eigen::Vector2d spot =
+        grid.origin + grid.resolution * Eigen::Vector2d(c % grid.width + 0.5, c / grid.width + 0.5);
+    if (region[c] != 0 && inside(spot)) spots.push_back(spot);
   }
   if (spots.empty()) return;
   for (const auto& [label, size] : items) {
@@ -159,6 +184,7 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
   VoxelGrid grid = Rasterize(*tree);
   const int floor = FloorLayer(grid);
   const double floor_top = grid.origin.z() + (floor + 1) * grid.resolution;
+  const PlaceFilter inside = SeenFloor(grid, floor, 3);
   int occupied = 0;
   for (int z = floor + 1; z < grid.dims.z(); ++z)
     for (int y = 0; y < grid.dims.y(); ++y)
@@ -179,9 +205,9 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
            "corridor",
            {{lo.x(), lo.y()}, {hi.x(), lo.y()}, {hi.x(), hi.y()}, {lo.x(), hi.y()}}});
   Rng rng(seed);
-  AddObjectsNearWalls(world, rng);
+  AddObjectsNearWalls(world, rng, inside);
   RemoveUnreachableObjects(world, Modality::kGround, 0.0);
-  world.starts = ChooseStarts(world, Modality::kGround, 0.0, 5, rng);
+  world.starts = ChooseStarts(world, Modality::kGround, 0.0, 5, rng, inside);
   if (stats != nullptr) {
     *stats = OctomapImport{static_cast<int>(world.obstacles.size()), occupied, floor_top};
   }

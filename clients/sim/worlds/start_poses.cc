@@ -60,7 +60,7 @@ std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid) {
 }
 
 std::vector<StartPose> ChooseStarts(const World& world, Modality modality, double altitude,
-                                    int count, Rng& rng) {
+                                    int count, Rng& rng, const PlaceFilter& allowed) {
   const GroundTruthGrid grid = ModalityGrid(world, modality, altitude);
   const std::vector<uint8_t> region = LargestFreeRegion(grid);
   // A start keeps one cell of margin inside the region: a cell centre is free of the dilated
@@ -77,7 +77,7 @@ std::vector<StartPose> ChooseStarts(const World& world, Modality modality, doubl
       for (int dy = -1; dy <= 1 && clear; ++dy) {
         for (int dx = -1; dx <= 1 && clear; ++dx) clear = inside(x + dx, y + dy);
       }
-      if (clear) cells.push_back(CellCentre(grid, x, y));
+      if (clear && (!allowed || allowed(CellCentre(grid, x, y)))) cells.push_back(CellCentre(grid, x, y));
     }
   }
   std::vector<StartPose> starts;

@@ -1,6 +1,7 @@
 #ifndef SEMNAV_CLIENTS_SIM_WORLDS_START_POSES_H_
 #define SEMNAV_CLIENTS_SIM_WORLDS_START_POSES_H_
 
+#include <functional>
 #include <vector>
 
 #include "clients/sim/core/occupancy_raster.h"
@@ -17,9 +18,10 @@ GroundTruthGrid ModalityGrid(const World& world, Modality modality, double altit
 std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid);
 
 // Random start poses in the largest free region, at least 1.5 m from each other when
-// possible, with random headings.
+// possible, with random headings; only where `allowed` (when given) says yes.
+using PlaceFilter = std::function<bool(const Eigen::Vector2d&)>;
 std::vector<StartPose> ChooseStarts(const World& world, Modality modality, double altitude,
-                                    int count, Rng& rng);
+                                    int count, Rng& rng, const PlaceFilter& allowed = nullptr);
 
 // Removes objects the robot cannot get within `radius` of (the success radius), so every
 // target has a finite shortest path; returns how many were removed.
