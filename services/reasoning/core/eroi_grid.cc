@@ -1,5 +1,6 @@
 #include "services/reasoning/core/eroi_grid.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -12,6 +13,16 @@ namespace {
 int FloorIndex(double offset, double delta) { return static_cast<int>(std::floor(offset / delta + 1e-9)); }
 
 }  // namespace
+
+EroiGridSpec GridOverArea(const EroiGridSpec& base, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  EroiGridSpec spec = base;
+  const Eigen::Vector2d extent = hi - lo;
+  spec.delta = std::max(base.delta, extent.x() / 26.0);
+  spec.min = Eigen::Vector3d(lo.x() + spec.delta / 2, lo.y() + spec.delta / 2, base.min.z());
+  spec.nx = std::max(0, static_cast<int>(std::ceil(extent.x() / spec.delta - 1e-9)) - 1);
+  spec.ny = std::max(0, static_cast<int>(std::ceil(extent.y() / spec.delta - 1e-9)) - 1);
+  return spec;
+}
 
 absl::StatusOr<EroiGrid> EroiGrid::Create(const EroiGridSpec& spec) {
   if (!(spec.delta > 0.0)) return absl::InvalidArgumentError("eroi.delta: must be > 0");

@@ -23,6 +23,11 @@ struct EroiIndex {
   bool operator==(const EroiIndex&) const = default;
 };
 
+// `base` laid over the rectangle [lo, hi] of the map: centres from lo + delta / 2, enough of
+// them to cover it, the edge widened when the area needs more than the 26 letters on x
+// (delta >= width / 26); z (min, nz) stays as in `base`.
+EroiGridSpec GridOverArea(const EroiGridSpec& base, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
+
 class EroiGrid {
  public:
   // INVALID_ARGUMENT for delta <= 0, negative counts or more than 26 letters on x or z.

@@ -54,6 +54,26 @@ TEST(GatewayEroiGridTest, NeighbourhoodOfRadiusDeltaIsTheCentreAndItsFaces) {
   EXPECT_EQ(grid.size(), 16 * 16 * 3);
 }
 
+TEST(GatewayEroiGridTest, GridOverAreaCoversItWithinTheLetters) {
+  EroiGridSpec base;
+  base.delta = 2.0;
+  base.min.z() = 1.0;
+  base.nz = 1;
+  // 10 x 8 m from (0, 0): centres 1, 3, ..., 9 and 1, ..., 7 -> nx 4, ny 3; z untouched.
+  const EroiGridSpec small = GridOverArea(base, {0, 0}, {10, 8});
+  EXPECT_DOUBLE_EQ(small.delta, 2.0);
+  EXPECT_TRUE(small.min.isApprox(Eigen::Vector3d(1, 1, 1)));
+  EXPECT_EQ(small.nx, 4);
+  EXPECT_EQ(small.ny, 3);
+  EXPECT_EQ(small.nz, 1);
+  // 65 m (seed 000's river scene) needs 33 edges of 2 m: the edge widens to 65 / 26 = 2.5 m.
+  const EroiGridSpec wide = GridOverArea(base, {0, 0}, {65, 47});
+  EXPECT_DOUBLE_EQ(wide.delta, 2.5);
+  EXPECT_EQ(wide.nx, 25);
+  EXPECT_EQ(wide.ny, 18);  // ceil(47 / 2.5) = 19 centres
+  EXPECT_TRUE(EroiGrid::Create(wide).ok());
+}
+
 TEST(GatewayEroiGridTest, CreateValidatesTheSpec) {
   EroiGridSpec spec;
   spec.delta = 0.0;

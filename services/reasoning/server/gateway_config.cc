@@ -6,6 +6,12 @@ std::string GatewayConfig::DefaultPriorPath() {
   return SEMNAV_REASONING_PRIOR_PATH;
 }
 
+EroiSearchConfig DefaultEroiSearch() {
+  EroiSearchConfig search;
+  search.grid.delta = 2.0;
+  return search;
+}
+
 GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
   GatewayConfig c;
   ConfigReader decomposer = section.Child("decomposer");
@@ -95,8 +101,7 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
 
   if (section.Has("eroi")) {
     ConfigReader eroi = section.Child("eroi");
-    EroiSearchConfig search;
-    search.grid.delta = 2.0;  // planning's default eroi_size_m (the seed's example uses 3 m)
+    EroiSearchConfig search = DefaultEroiSearch();
     std::vector<double> min{0.0, 0.0, 0.0};
     eroi.Read("min", &min)
         .Read("delta", &search.grid.delta)

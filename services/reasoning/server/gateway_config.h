@@ -40,6 +40,10 @@ struct ModelSettings {
   bool text_embeddings = true;    // ask Embed for each task's target text
 };
 
+// The EROI search a volume starts from: 2 m edges, planning's default eroi_size_m (the seed's
+// example uses 3 m), everything else as EroiSearchConfig has it.
+EroiSearchConfig DefaultEroiSearch();
+
 struct GatewayConfig {
   DecomposerConfig decomposer;
   FastResolverConfig fast_path;
@@ -54,8 +58,9 @@ struct GatewayConfig {
   ClientOptions mapping;              // mapping service; empty address = no scene graph
   PlanningSettings planning;
   ModelSettings model_proxy;
-  // Seed-000 search volume for EROI_UTILITY tasks (section "eroi"); absent = those tasks explore
-  // with planning's uniform values. `eroi.delta` must equal planning's exploration.eroi_size_m.
+  // Seed-000 search volume for EROI_UTILITY tasks (section "eroi"); a task's search area replaces
+  // its x / y extent. Absent and no search area = those tasks explore with planning's uniform
+  // values. `eroi.delta` must equal planning's exploration.eroi_size_m.
   std::optional<EroiSearchConfig> eroi;
   // ConceptNet AtLocation prior (co-occurrence for SEMANTIC_FRONTIER); "" = no prior. Default:
   // the shared data folder beside the checkout, as the model proxy reads it.

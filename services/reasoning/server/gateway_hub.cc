@@ -196,9 +196,17 @@ void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
   task.executor->OnSceneGraph(Now(), scene_graph_);
   const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
   task.eroi.reset();
-  if (StrategyOf(task) == "EROI_UTILITY" && config_.eroi.has_value() && target != nullptr) {
+  // The operator's search area is the EROI volume when it is given (the configured one's edge,
+  // z layers and drawing kept); otherwise the configured volume, if any.
+  std::optional<EroiSearchConfig> eroi = config_.eroi;
+  if (task.search_area.has_value()) {
+    EroiSearchConfig fitted = eroi.value_or(DefaultEroiSearch());
+    fitted.grid = GridOverArea(fitted.grid, task.search_area->min, task.search_area->max);
+    eroi = fitted;
+  }
+  if (StrategyOf(task) == "EROI_UTILITY" && eroi.has_value() && target != nullptr) {
     absl::StatusOr<EroiSearch> search =
-        EroiSearch::Create(target->text.empty() ? target->name : target->text, *config_.eroi);
+        EroiSearch::Create(target->text.empty() ? target->name : target->text, *eroi);
     if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
   }
   RequestTextEmbedding(task);

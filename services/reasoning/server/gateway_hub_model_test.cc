@@ -437,6 +437,32 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
 }
 
+// With no configured volume, an EROI_UTILITY task's search area becomes its EROI grid (2 m
+// edges): a simulated episode or an operator's box is enough for the seed-000 loop to run.
+TEST(GatewayHubEroiTest, SearchAreaIsTheVolumeWhenNoneIsConfigured) {
+  GatewayConfig config;  // no eroi section
+  RobotLocalPlanner planner;
+  ScriptedModel model;
+  RecordingExplorer explorer;
+  GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr});
+  RecordingSink session;
+  OpenUavSession(hub, &session);
+  api::SubmitInstructionRequest request = UavSearch("eroi-area", "find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-6.0);
+  area->set_min_y(0.0);
+  area->set_max_x(4.0);
+  area->set_max_y(8.0);
+  ASSERT_TRUE(hub.Submit(request).ok());
+  ASSERT_EQ(explorer.contexts.size(), 1u);
+  ASSERT_EQ(explorer.contexts[0].eroi_values.size(), 20u);  // 5 x 4 centres cover 10 x 8 m
+  EXPECT_TRUE(explorer.contexts[0].eroi_window_min.isApprox(Eigen::Vector2d(-6, 0)));
+  EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_edge_m, 2.0);
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  EXPECT_EQ(model.asks.size(), 1u);  // the frame went to the vision model
+}
+
 // The operator's search area is checked by field, echoed in the snapshot and sent with every
 // exploration request.
 TEST(GatewayHubSearchAreaTest, SearchAreaReachesPlanning) {
