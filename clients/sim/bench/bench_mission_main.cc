@@ -184,6 +184,7 @@ int main(int argc, char** argv) {
       loop::EpisodeSpec spec = plan[jobs[j].episode];
       spec.strategy = jobs[j].strategy;
       spec.robot_id = absl::StrCat(spec.robot_id, "-", spec.strategy);
+      spec.camera_frames = spec.strategy == "EROI_UTILITY";  // the VLM's input (seed 000)
       spec.max_steps = max_steps;
       const auto episode_started = std::chrono::steady_clock::now();
       absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, stack.endpoints());

@@ -110,7 +110,7 @@ void RecordTask(const api::TaskSnapshot& task, const SimRobot& robot, EpisodeRes
   }
   result.final_status = task.status();
   result.final_reason = task.reason();
-  result.record.model_calls = task.model_requests();
+  result.record.model_calls = task.model_calls();  // every proxy call: slow path, vision, region scores
   const bool resolved = task.has_target() && task.target().path() != api::RESOLUTION_PATH_UNSPECIFIED;
   result.record.goals_resolved = resolved ? 1 : 0;
   result.record.goals_fast_path = resolved && task.target().path() == api::RESOLUTION_PATH_FAST ? 1 : 0;
@@ -157,7 +157,9 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   const Scene scene = Scene::Build(spec.world);
   RobotConfig robot_config = RobotConfig::ForModality(start.modality);
   if (start.modality == Modality::kGround) robot_config.camera_pitch = spec.ground_camera_pitch;
-  SimRobot robot(spec.world, scene, start, robot_config, spec.sensors, spec.seed);
+  SensorConfig sensors = spec.sensors;
+  sensors.rgb = sensors.rgb || spec.camera_frames;
+  SimRobot robot(spec.world, scene, start, robot_config, sensors, spec.seed);
   CommandExecutor executor(robot, LiveMapPlanner(endpoints.planning, robot_config.radius));
 
   if (absl::Status s = ResetMap(endpoints.mapping, spec); !s.ok()) return s;
@@ -172,12 +174,21 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.world = spec.world.name;
   result.record.target = spec.target;
   result.record.group = ReportGroup(start.modality);
+  // One capture per step: depth and detections to mapping (acknowledged), the colour image to
+  // the gateway when asked for.
+  auto send_frame = [&]() -> absl::Status {
+    const SensorFrame captured = robot.Capture();
+    if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(captured, spec.robot_id));
+        !ack.ok()) {
+      return ack.status();
+    }
+    if (!spec.camera_frames) return absl::OkStatus();
+    absl::StatusOr<api::ConnectRequest> camera = EncodeCameraFrame(captured);
+    return camera.ok() ? (*session)->Send(*camera) : camera.status();
+  };
   // The gateway must know where the robot is and what it sees before it plans.
   if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
-  if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(robot.Capture(), spec.robot_id));
-      !ack.ok()) {
-    return ack.status();
-  }
+  if (absl::Status s = send_frame(); !s.ok()) return s;
   absl::StatusOr<api::TaskSnapshot> task = Submit(*op, spec);
   if (!task.ok() && !Refused(task.status())) {
     return absl::UnavailableError(absl::StrCat("SubmitInstruction: ", task.status().message()));
@@ -203,10 +214,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
       if (absl::Status s = (*session)->Send(FeedbackMessage(*outcome)); !s.ok()) return s;
     }
     if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
-    if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(robot.Capture(), spec.robot_id));
-        !ack.ok()) {
-      return ack.status();
-    }
+    if (absl::Status s = send_frame(); !s.ok()) return s;
     task = GetTask(*op, result.task_id);
     if (!task.ok()) return task.status();
     RecordTask(*task, robot, result);

@@ -35,6 +35,9 @@ struct EpisodeSpec {
   double success_radius = kDefaultSuccessRadius;
   uint64_t seed = 1;
   SensorConfig sensors = LoopSensorConfig();
+  // Send the colour image on the robot session every step (CameraFrame), for EROI_UTILITY's
+  // vision-model loop (seed 000); turns the RGB render on.
+  bool camera_frames = false;
   // Ground robots look down this much (rad) so low furniture in front of them reaches the map;
   // level (the Habitat agent's 0) leaves everything under 0.88 m unseen within ~1.9 m.
   double ground_camera_pitch = 0.35;

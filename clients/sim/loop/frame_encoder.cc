@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <opencv2/imgproc.hpp>
+
 #include "clients/sim/loop/proto_geometry.h"
 
 namespace semnav::sim::loop {
@@ -22,6 +24,15 @@ void EncodeDetection(const Detection& d, const CameraIntrinsics& k, mapping::Det
   out->mutable_embedding()->Assign(d.embedding.begin(), d.embedding.end());
 }
 
+void EncodeIntrinsics(const CameraIntrinsics& k, semnav::common::v1::CameraIntrinsics* out) {
+  out->set_width(k.width);
+  out->set_height(k.height);
+  out->set_fx(k.fx);
+  out->set_fy(k.fy);
+  out->set_cx(k.cx);
+  out->set_cy(k.cy);
+}
+
 }  // namespace
 
 mapping::SensorFrame EncodeFrame(const SensorFrame& frame, const std::string& robot_id) {
@@ -30,13 +41,7 @@ mapping::SensorFrame EncodeFrame(const SensorFrame& frame, const std::string& ro
   out.mutable_header()->set_robot_id(robot_id);
   out.mutable_header()->set_frame_id("camera");
   const CameraIntrinsics& k = frame.intrinsics;
-  auto* intrinsics = out.mutable_intrinsics();
-  intrinsics->set_width(k.width);
-  intrinsics->set_height(k.height);
-  intrinsics->set_fx(k.fx);
-  intrinsics->set_fy(k.fy);
-  intrinsics->set_cx(k.cx);
-  intrinsics->set_cy(k.cy);
+  EncodeIntrinsics(k, out.mutable_intrinsics());
   auto* depth = out.mutable_depth();
   depth->set_width(k.width);
   depth->set_height(k.height);
@@ -48,6 +53,31 @@ mapping::SensorFrame EncodeFrame(const SensorFrame& frame, const std::string& ro
   *out.mutable_camera_pose() = ToProtoPose(frame.odom_from_camera);
   for (const Detection& d : frame.detections.detections) EncodeDetection(d, k, out.add_detections());
   return out;
+}
+
+absl::StatusOr<semnav::reasoning::v1::ConnectRequest> EncodeCameraFrame(const SensorFrame& frame) {
+  if (!frame.rgb.has_value() || frame.rgb->empty()) {
+    return absl::FailedPreconditionError("frame has no colour image (SensorConfig::rgb is off)");
+  }
+  semnav::reasoning::v1::ConnectRequest request;
+  semnav::reasoning::v1::CameraFrame* camera = request.mutable_camera();
+  cv::Mat rgb;
+  cv::cvtColor(*frame.rgb, rgb, cv::COLOR_BGR2RGB);
+  semnav::common::v1::Image* image = camera->mutable_image();
+  image->set_width(rgb.cols);
+  image->set_height(rgb.rows);
+  image->set_encoding(semnav::common::v1::IMAGE_ENCODING_RGB8);
+  image->set_data(std::string(reinterpret_cast<const char*>(rgb.data), rgb.total() * rgb.elemSize()));
+  EncodeIntrinsics(frame.intrinsics, camera->mutable_intrinsics());
+  // Optical axes (z forward, x right, y down) -> body axes (x forward, y left, z up).
+  Eigen::Matrix3d optical_from_body;
+  optical_from_body << 0, -1, 0,  //
+      0, 0, -1,                   //
+      1, 0, 0;
+  Eigen::Isometry3d odom_from_body = frame.odom_from_camera;
+  odom_from_body.linear() = frame.odom_from_camera.linear() * optical_from_body;
+  *camera->mutable_camera_pose() = ToProtoPose(odom_from_body);
+  return request;
 }
 
 }  // namespace semnav::sim::loop

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "clients/sim/loop/instruction.h"
@@ -54,6 +55,33 @@ TEST(SimLoopFrameEncoderTest, NoisyBoxesAreClampedIntoTheImage) {
   EXPECT_EQ(out.detections(0).box().y_min(), 0.0);
   EXPECT_EQ(out.detections(0).box().x_max(), 4.0);
   EXPECT_EQ(out.detections(0).box().y_max(), 2.0);
+}
+
+TEST(SimLoopFrameEncoderTest, CameraFrameIsRgbWithTheBodyPose) {
+  SensorFrame frame = SmallFrame();
+  EXPECT_EQ(EncodeCameraFrame(frame).status().code(), absl::StatusCode::kFailedPrecondition);  // no colour
+  frame.rgb = cv::Mat(2, 4, CV_8UC3, cv::Scalar(255, 0, 0));  // BGR: blue
+  // A level optical frame looking along map +y: optical x (right) = +x, y (down) = -z, z = +y.
+  Eigen::Matrix3d map_from_optical;
+  map_from_optical << 1, 0, 0,  //
+      0, 0, 1,                  //
+      0, -1, 0;
+  frame.odom_from_camera.linear() = map_from_optical;
+  const absl::StatusOr<semnav::reasoning::v1::ConnectRequest> out = EncodeCameraFrame(frame);
+  ASSERT_TRUE(out.ok()) << out.status();
+  const semnav::reasoning::v1::CameraFrame& camera = out->camera();
+  EXPECT_EQ(camera.image().encoding(), semnav::common::v1::IMAGE_ENCODING_RGB8);
+  ASSERT_EQ(camera.image().data().size(), 4u * 2u * 3u);
+  EXPECT_EQ(static_cast<uint8_t>(camera.image().data()[0]), 0);    // R
+  EXPECT_EQ(static_cast<uint8_t>(camera.image().data()[2]), 255);  // B
+  EXPECT_EQ(camera.intrinsics().width(), 4u);
+  EXPECT_DOUBLE_EQ(camera.intrinsics().fx(), 2.0);
+  EXPECT_DOUBLE_EQ(camera.camera_pose().position().z(), 0.88);
+  // Body x forward = map +y: a 90 degree yaw, (w, z) = (cos 45, sin 45).
+  EXPECT_NEAR(camera.camera_pose().orientation().w(), std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(camera.camera_pose().orientation().z(), std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(camera.camera_pose().orientation().x(), 0.0, 1e-12);
+  EXPECT_NEAR(camera.camera_pose().orientation().y(), 0.0, 1e-12);
 }
 
 TEST(SimLoopInstructionTest, LanguageFollowsTheTargetName) {

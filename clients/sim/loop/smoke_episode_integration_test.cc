@@ -2,6 +2,9 @@
 // robot finds an in-sight object in a generated home through the public contracts only.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 
@@ -62,6 +65,34 @@ TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameTable) {
   EXPECT_EQ(refused->steps, 0);
   EXPECT_EQ(refused->record.path_m, 0.0);
   EXPECT_GE(refused->record.distance_to_goal_m, 1.5);  // taken at the start, >= 1.5 m from any table
+}
+
+// EROI_UTILITY's input (seed 000): with camera frames on the robot session, the gateway asks the
+// vision model about them. The stack's model proxy is the offline default, which cannot read
+// images, so the calls fail, but each is made and counted; without frames there are none.
+TEST(SimLoopIntegrationTest, EroiEpisodeSendsCameraFramesToTheVisionModel) {
+  absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  spec->target = "fire extinguisher";  // no home has one: the robot keeps exploring
+  spec->strategy = "EROI_UTILITY";
+  spec->max_steps = 30;
+  const std::string dir = ::testing::TempDir() + "/sim_loop_eroi";
+  std::filesystem::create_directories(dir);
+  const std::string proxy_config = dir + "/modelproxy.yaml";
+  std::ofstream(proxy_config) << "modelproxy: {}\n";
+  absl::StatusOr<std::unique_ptr<SimStack>> stack = SimStack::Start({SEMNAV_BIN_DIR, dir, true, proxy_config});
+  ASSERT_TRUE(stack.ok()) << stack.status();
+
+  absl::StatusOr<EpisodeResult> blind = RunEpisode(*spec, (*stack)->endpoints());
+  ASSERT_TRUE(blind.ok()) << blind.status();
+  spec->camera_frames = true;
+  spec->robot_id = "sim-robot-camera";
+  absl::StatusOr<EpisodeResult> seeing = RunEpisode(*spec, (*stack)->endpoints());
+  ASSERT_TRUE(seeing.ok()) << seeing.status();
+  EXPECT_FALSE(seeing->record.success);
+  // Frames are dropped while a vision call is in flight, so not one call per step; but many.
+  EXPECT_GE(seeing->record.model_calls, blind->record.model_calls + 5)
+      << "without frames " << blind->record.model_calls << ", with frames " << seeing->record.model_calls;
 }
 
 }  // namespace
