@@ -378,6 +378,19 @@ api::CameraFrame Frame(common::v1::ImageEncoding encoding) {
   return frame;
 }
 
+// A hub with a scripted vision model and a recording explorer, a UAV session open at (0, 0).
+struct EroiHub {
+  explicit EroiHub(const GatewayConfig& config)
+      : hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr}) {
+    OpenUavSession(hub, &session);
+  }
+  RobotLocalPlanner planner;
+  ScriptedModel model;
+  RecordingExplorer explorer;
+  GatewayHub hub;
+  RecordingSink session;
+};
+
 // Seed-000 loop through the hub: frames -> VLM with codes drawn -> semantic values -> region
 // score after theta = 3 records -> EROI_UTILITY exploration requests carry the values.
 TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
@@ -387,12 +400,11 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   eroi.grid.nx = 4;
   eroi.grid.ny = 3;
   config.eroi = eroi;
-  RobotLocalPlanner planner;
-  ScriptedModel model;
-  RecordingExplorer explorer;
-  GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr});
-  RecordingSink session;
-  OpenUavSession(hub, &session);
+  EroiHub fixture(config);
+  GatewayHub& hub = fixture.hub;
+  ScriptedModel& model = fixture.model;
+  RecordingExplorer& explorer = fixture.explorer;
+  RecordingSink& session = fixture.session;
   api::SubmitInstructionRequest request = UavSearch("eroi-1", "find the red backpack");
   request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
   request.set_exploration_strategy(static_cast<api::ExplorationStrategy>(42));
@@ -440,13 +452,8 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
 // With no configured volume, an EROI_UTILITY task's search area becomes its EROI grid (2 m
 // edges): a simulated episode or an operator's box is enough for the seed-000 loop to run.
 TEST(GatewayHubEroiTest, SearchAreaIsTheVolumeWhenNoneIsConfigured) {
-  GatewayConfig config;  // no eroi section
-  RobotLocalPlanner planner;
-  ScriptedModel model;
-  RecordingExplorer explorer;
-  GatewayHub hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr});
-  RecordingSink session;
-  OpenUavSession(hub, &session);
+  EroiHub fixture(GatewayConfig{});  // no eroi section
+  RecordingExplorer& explorer = fixture.explorer;
   api::SubmitInstructionRequest request = UavSearch("eroi-area", "find the red backpack");
   request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
   api::SearchArea* area = request.mutable_search_area();
@@ -454,13 +461,13 @@ TEST(GatewayHubEroiTest, SearchAreaIsTheVolumeWhenNoneIsConfigured) {
   area->set_min_y(0.0);
   area->set_max_x(4.0);
   area->set_max_y(8.0);
-  ASSERT_TRUE(hub.Submit(request).ok());
+  ASSERT_TRUE(fixture.hub.Submit(request).ok());
   ASSERT_EQ(explorer.contexts.size(), 1u);
   ASSERT_EQ(explorer.contexts[0].eroi_values.size(), 20u);  // 5 x 4 centres cover 10 x 8 m
   EXPECT_TRUE(explorer.contexts[0].eroi_window_min.isApprox(Eigen::Vector2d(-6, 0)));
   EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_edge_m, 2.0);
-  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
-  EXPECT_EQ(model.asks.size(), 1u);  // the frame went to the vision model
+  ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  EXPECT_EQ(fixture.model.asks.size(), 1u);  // the frame went to the vision model
 }
 
 // The operator's search area is checked by field, echoed in the snapshot and sent with every
