@@ -67,9 +67,11 @@ TEST(SimWorldYamlTest, ErrorsNameTheField) {
 }
 
 TEST(SimWorldYamlTest, WriterRoundTrips) {
-  const absl::StatusOr<World> world = ParseWorldYaml(kWorld);
+  absl::StatusOr<World> world = ParseWorldYaml(kWorld);
   ASSERT_TRUE(world.ok());
+  world->starts[0].position.x() = 28.9504;  // written to the millimetre
   const std::string text = WorldToYaml(*world);
+  EXPECT_NE(text.find("[28.95, "), std::string::npos) << text;
   const absl::StatusOr<World> again = ParseWorldYaml(text);
   ASSERT_TRUE(again.ok()) << again.status() << "\n" << text;
   EXPECT_EQ(WorldToYaml(*again), text);
