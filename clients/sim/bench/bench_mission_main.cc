@@ -167,6 +167,14 @@ int main(int argc, char** argv) {
   std::cout << absl::StrFormat("%d episodes x %d strategies on %d stacks (each task asks planning's "
                                "SelectExplorationGoal for its strategy)\n",
                                plan.size(), strategies.size(), workers);
+  // The plots draw each world's true occupancy: rasterised once per world, not per episode
+  // (FR-079 has 24,671 boxes); read-only once the workers start.
+  std::map<std::string, sim::GroundTruthGrid> plot_grids;
+  for (const loop::EpisodeSpec& spec : plan) {
+    if (!plot_grids.contains(spec.world.name)) {
+      plot_grids.emplace(spec.world.name, sim::RasterizeOccupancy(spec.world, sim::RasterOptions{}));
+    }
+  }
   const int max_steps = std::atoi(flags["--max-steps"].c_str());
   const auto started = std::chrono::steady_clock::now();
   std::vector<std::optional<sim::EpisodeRecord>> slots(jobs.size());
@@ -197,8 +205,8 @@ int main(int argc, char** argv) {
           absl::StrFormat("%s/%s_episode_%02d_%s", out_dir, spec.strategy, jobs[j].episode, spec.world.name);
       std::ofstream log(stem + ".log");
       for (const std::string& line : result->timeline) log << line << "\n";
-      const sim::GroundTruthGrid grid = sim::RasterizeOccupancy(spec.world, sim::RasterOptions{});
-      if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, grid, spec.target_label, *result,
+      if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, plot_grids.at(spec.world.name),
+                                                                spec.target_label, *result,
                                                                 stem + ".png");
           !s.ok()) {
         std::cerr << "semnav-bench-mission: " << s << "\n";

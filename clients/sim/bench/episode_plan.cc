@@ -54,7 +54,7 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
     spec.start_index = starts[(i / count) % starts.size()];
     const StartPose& start = world.starts[spec.start_index];
     const GroundTruthGrid grid =
-        RasterizeOccupancy(world, loop::BodyRaster(start, RobotConfig::ForModality(start.modality)));
+        RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
     // Draw again while the label cannot be scored; a scorable first draw is what it always was.
     for (size_t attempt = 0; attempt < 4 * labels.size(); ++attempt) {
       spec.target_label = labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];

@@ -80,6 +80,14 @@ void Dilate(GroundTruthGrid& grid, double radius) {
 
 }  // namespace
 
+RasterOptions BodyRaster(const RobotConfig& robot, double altitude) {
+  RasterOptions raster;
+  raster.robot_radius = robot.radius;
+  raster.z_min = altitude + robot.ground_clearance;
+  raster.z_max = altitude + robot.body_height;
+  return raster;
+}
+
 GroundTruthGrid RasterizeOccupancy(const World& world, const RasterOptions& options) {
   GroundTruthGrid grid = EmptyGrid(world, options.resolution);
   ForEachSolid(world, [&](const Shape& shape, const std::string&) {

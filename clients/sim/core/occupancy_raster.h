@@ -2,9 +2,12 @@
 #define SEMNAV_CLIENTS_SIM_CORE_OCCUPANCY_RASTER_H_
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "clients/sim/core/robot_config.h"
 #include "clients/sim/core/world.h"
 
 // Ground-truth 2D grids of a world, for the planner's shortest path l_i in SPL.
@@ -17,6 +20,14 @@ struct GroundTruthGrid {
   int height = 0;                                    // cells along y
   std::vector<uint8_t> cells;                        // row-major, y rows
   uint8_t at(int x, int y) const { return cells[static_cast<size_t>(y) * width + x]; }
+  Eigen::Vector2d CellCentre(int x, int y) const { return origin + resolution * Eigen::Vector2d(x + 0.5, y + 0.5); }
+  // The cell holding world point `p`; nullopt off the grid.
+  std::optional<Eigen::Vector2i> CellOf(const Eigen::Vector2d& p) const {
+    const Eigen::Vector2d local = (p - origin) / resolution;
+    const Eigen::Vector2i cell(static_cast<int>(std::floor(local.x())), static_cast<int>(std::floor(local.y())));
+    if (cell.x() < 0 || cell.y() < 0 || cell.x() >= width || cell.y() >= height) return std::nullopt;
+    return cell;
+  }
 };
 
 struct RasterOptions {
@@ -25,6 +36,10 @@ struct RasterOptions {
   double z_min = 0.05;         // height band the robot body sweeps; solids outside it are
   double z_max = 1.5;          // passable (rugs below, overhangs above)
 };
+
+// The raster a robot's body meets at `altitude`: dilated by its radius, over the height band it
+// sweeps there (a UAV passes over low obstacles; a fly-roll robot's is its rolling band).
+RasterOptions BodyRaster(const RobotConfig& robot, double altitude);
 
 // Occupancy: 100 where a solid overlapping [z_min, z_max] comes within half a cell of the cell
 // centre, or within robot_radius of such a cell; else 0. Covers the world bounds.

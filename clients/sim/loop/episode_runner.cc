@@ -249,7 +249,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.energy_j = robot.energy_j();
   // l_i on the true map the robot's body meets (a fly-roll robot's l_i is its rolling path, an
   // upper bound).
-  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(start, robot_config));
+  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(robot_config, start.position.z()));
   auto planning = semnav::planning::v1::PlanningService::NewStub(endpoints.planning);
   absl::StatusOr<double> shortest =
       ShortestPathToTarget(*planning, spec.world, grid, start.position.head<2>(), label, spec.success_radius);

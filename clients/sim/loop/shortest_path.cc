@@ -26,14 +26,6 @@ common::GridMap ToGridMap(const GroundTruthGrid& grid) {
   return out;
 }
 
-RasterOptions BodyRaster(const StartPose& start, const RobotConfig& robot) {
-  RasterOptions raster;
-  raster.robot_radius = robot.radius;
-  raster.z_min = start.position.z() + robot.ground_clearance;
-  raster.z_max = start.position.z() + robot.body_height;
-  return raster;
-}
-
 std::optional<NearestGoal> NearestSuccessPoint(const World& world, const GroundTruthGrid& grid,
                                                const Eigen::Vector2d& start, const std::string& label,
                                                double success_radius) {

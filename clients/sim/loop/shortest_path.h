@@ -8,16 +8,11 @@
 #include "absl/status/statusor.h"
 #include "clients/sim/core/nearest_goal_search.h"
 #include "clients/sim/core/occupancy_raster.h"
-#include "clients/sim/core/robot_config.h"
 #include "clients/sim/core/world.h"
 #include "semnav/common/v1/grid.pb.h"
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 
 namespace semnav::sim::loop {
-
-// The ground-truth raster the robot's body meets: its radius and height band at the start's
-// altitude (a UAV passes over low obstacles; a fly-roll robot's is its rolling map).
-RasterOptions BodyRaster(const StartPose& start, const RobotConfig& robot);
 
 // The point of the success region (within `success_radius` of an instance of `label`) nearest
 // by path on `grid`; nullopt when none is reachable from `start`.

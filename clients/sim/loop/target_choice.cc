@@ -8,10 +8,8 @@ namespace semnav::sim::loop {
 namespace {
 
 bool FreeAt(const GroundTruthGrid& grid, const Eigen::Vector2d& p) {
-  const int x = static_cast<int>(std::floor((p.x() - grid.origin.x()) / grid.resolution));
-  const int y = static_cast<int>(std::floor((p.y() - grid.origin.y()) / grid.resolution));
-  if (x < 0 || y < 0 || x >= grid.width || y >= grid.height) return false;
-  return grid.at(x, y) == 0;
+  const std::optional<Eigen::Vector2i> cell = grid.CellOf(p);
+  return cell.has_value() && grid.at(cell->x(), cell->y()) == 0;
 }
 
 }  // namespace

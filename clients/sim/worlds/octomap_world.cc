@@ -149,8 +149,7 @@ void AddObjectsNearWalls(World& world, Rng& rng, const PlaceFilter& inside) {
   const std::vector<uint8_t> region = LargestFreeRegion(grid);
   std::vector<Eigen::Vector2d> spots;
   for (size_t c = 0; c < region.size(); ++c) {
-    const Eigen::Vector2d spot =
-        grid.origin + grid.resolution * Eigen::Vector2d(c % grid.width + 0.5, c / grid.width + 0.5);
+    const Eigen::Vector2d spot = grid.CellCentre(static_cast<int>(c % grid.width), static_cast<int>(c / grid.width));
     if (region[c] != 0 && inside(spot)) spots.push_back(spot);
   }
   if (spots.empty()) return;

@@ -8,21 +8,9 @@
 #include "clients/sim/core/robot_config.h"
 
 namespace semnav::sim {
-namespace {
-
-Eigen::Vector2d CellCentre(const GroundTruthGrid& grid, int x, int y) {
-  return grid.origin + grid.resolution * Eigen::Vector2d(x + 0.5, y + 0.5);
-}
-
-}  // namespace
-
 GroundTruthGrid ModalityGrid(const World& world, Modality modality, double altitude) {
-  const RobotConfig robot = RobotConfig::ForModality(modality);
-  RasterOptions options;
+  RasterOptions options = BodyRaster(RobotConfig::ForModality(modality), altitude);
   options.resolution = 0.1;
-  options.robot_radius = robot.radius;
-  options.z_min = altitude + robot.ground_clearance;
-  options.z_max = altitude + robot.body_height;
   return RasterizeOccupancy(world, options);
 }
 
@@ -77,7 +65,7 @@ std::vector<StartPose> ChooseStarts(const World& world, Modality modality, doubl
       for (int dy = -1; dy <= 1 && clear; ++dy) {
         for (int dx = -1; dx <= 1 && clear; ++dx) clear = inside(x + dx, y + dy);
       }
-      if (clear && (!allowed || allowed(CellCentre(grid, x, y)))) cells.push_back(CellCentre(grid, x, y));
+      if (clear && (!allowed || allowed(grid.CellCentre(x, y)))) cells.push_back(grid.CellCentre(x, y));
     }
   }
   std::vector<StartPose> starts;
@@ -117,7 +105,7 @@ int RemoveUnreachableObjects(World& world, Modality modality, double altitude, d
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         if (region[static_cast<size_t>(y) * grid.width + x] != 0 &&
-            DistanceToBoxFootprint(o.box, CellCentre(grid, x, y)) <= radius) {
+            DistanceToBoxFootprint(o.box, grid.CellCentre(x, y)) <= radius) {
           return false;
         }
       }
