@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include <curl/curl.h>
 #include <grpcpp/client_context.h>
 
 #include "absl/strings/numbers.h"
@@ -25,6 +26,22 @@ absl::StatusOr<std::string> ProbeHealth(const ClientOptions& client, const std::
   // grpc::StatusCode and absl::StatusCode share their numbering.
   if (!status.ok()) return absl::Status(static_cast<absl::StatusCode>(status.error_code()), status.error_message());
   return grpc::health::v1::HealthCheckResponse::ServingStatus_Name(response.status());
+}
+
+absl::Status ProbeHttp(const std::string& url, absl::Duration timeout) {
+  CURL* curl = curl_easy_init();
+  if (curl == nullptr) return absl::InternalError("curl_easy_init failed");
+  curl_easy_setopt(curl, CURLOPT_URL, url.c_str());
+  curl_easy_setopt(curl, CURLOPT_TIMEOUT_MS, static_cast<long>(absl::ToInt64Milliseconds(timeout)));
+  curl_easy_setopt(curl, CURLOPT_NOSIGNAL, 1L);
+  curl_easy_setopt(curl, CURLOPT_WRITEFUNCTION, +[](char*, size_t size, size_t count, void*) { return size * count; });
+  const CURLcode code = curl_easy_perform(curl);
+  long http_status = 0;
+  curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &http_status);
+  curl_easy_cleanup(curl);
+  if (code != CURLE_OK) return absl::UnavailableError(curl_easy_strerror(code));
+  if (http_status < 200 || http_status >= 300) return absl::UnavailableError(absl::StrCat("HTTP ", http_status));
+  return absl::OkStatus();
 }
 
 const std::vector<FlagSpec>& ProbeFlags() {

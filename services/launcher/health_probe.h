@@ -18,6 +18,9 @@ namespace semnav::launcher {
 absl::StatusOr<std::string> ProbeHealth(const ClientOptions& client, const std::string& service,
                                         absl::Duration timeout);
 
+// OK when GET `url` answers 2xx within `timeout` (the dashboard proxy's health check).
+absl::Status ProbeHttp(const std::string& url, absl::Duration timeout);
+
 // `semnav probe`: flags, run, print; exit 0 when SERVING, 1 otherwise, 2 on bad flags.
 const std::vector<FlagSpec>& ProbeFlags();
 int RunProbe(int argc, char** argv, int first);

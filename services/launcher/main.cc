@@ -19,9 +19,15 @@ using semnav::launcher::StackConfig;
 constexpr char kUsage[] = R"(Usage: semnav <command> [flags]
 
 Commands:
-  up [--config FILE]        start every service on localhost, wait until all are SERVING,
-                            print the endpoints, stop them all on Ctrl-C / SIGTERM
-  status [--config FILE]    health of every service of the stack (exit 1 if any is down)
+  up [--config FILE] [--sim-robot]
+                            start every service on localhost, wait until all are SERVING,
+                            then the browser dashboard; print the endpoints and the dashboard
+                            URL; restart a service that dies (with back-off); stop them all on
+                            Ctrl-C / SIGTERM. --sim-robot adds a simulated robot in a generated
+                            home that carries out instructions typed in the dashboard or given
+                            to semnavctl
+  status [--config FILE]    health of every service of the stack and the restarts `semnav up`
+                            made (exit 1 if any is down)
   probe --addr HOST:PORT    health of one service, with TLS/mTLS and token flags (see
                             `semnav probe --help`); exit 0 when SERVING: for container and
                             orchestrator health checks
@@ -37,27 +43,42 @@ keys, no network, the offline reasoner.
 )";
 
 
-absl::StatusOr<StackConfig> StackFromFlags(int argc, char** argv) {
-  static const std::vector<semnav::FlagSpec> specs = {{"config", "FILE", "stack YAML"}};
+struct StackCommand {
+  StackConfig stack;
+  semnav::launcher::RunnerOptions options;
+};
+
+absl::StatusOr<StackCommand> StackFromFlags(const std::string& command, int argc, char** argv) {
+  std::vector<semnav::FlagSpec> specs = {{"config", "FILE", "stack YAML"}};
+  if (command == "up") specs.push_back({"sim-robot", "", "also run a simulated robot in a generated home"});
   absl::StatusOr<semnav::ParsedFlags> flags = semnav::ParseFlags(argc, argv, 2, specs);
   if (!flags.ok()) return flags.status();
   if (!flags->positional.empty()) {
     return absl::InvalidArgumentError("unexpected argument '" + flags->positional[0] + "'");
   }
-  if (auto path = flags->Get("config")) return semnav::launcher::LoadStackConfig(*path);
-  return semnav::launcher::DefaultStackConfig();
+  StackCommand result;
+  result.options.sim_robot = flags->Has("sim-robot");
+  if (auto path = flags->Get("config")) {
+    absl::StatusOr<StackConfig> loaded = semnav::launcher::LoadStackConfig(*path);
+    if (!loaded.ok()) return loaded.status();
+    result.stack = *std::move(loaded);
+  } else {
+    result.stack = semnav::launcher::DefaultStackConfig();
+  }
+  return result;
 }
 
-int Up(const StackConfig& stack) {
+int Up(const StackConfig& stack, const semnav::launcher::RunnerOptions& options) {
   sigset_t signals;
   sigemptyset(&signals);
   sigaddset(&signals, SIGINT);
   sigaddset(&signals, SIGTERM);
   sigaddset(&signals, SIGCHLD);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  semnav::launcher::StackRunner runner(stack, semnav::ExecutableDir());
+  semnav::launcher::StackRunner runner(stack, semnav::ExecutableDir(), options);
   if (absl::Status started = runner.Start(); !started.ok()) {
     std::cerr << "semnav up: " << started.message() << "\n";
+    (void)runner.Stop();
     return 1;
   }
   std::cout << "semnav stack is up:\n";
@@ -65,13 +86,15 @@ int Up(const StackConfig& stack) {
     std::cout << "  " << service.name << std::string(16 - std::min<std::size_t>(15, service.name.size()), ' ')
               << service.listen << "\n";
   }
-  std::cout << "Ctrl-C stops every service." << std::endl;
-  absl::Status waited = runner.WaitForStopRequest();
-  absl::Status stopped = runner.Stop();
-  if (!waited.ok()) {
-    std::cerr << "semnav up: " << waited.message() << "\n";
-    return 1;
+  if (options.sim_robot) {
+    std::cout << "  sim-robot       robot id '" << stack.sim_robot.robot_id << "' in a generated home (seed "
+              << stack.sim_robot.world_seed << ")\n";
   }
+  for (const std::string& note : runner.notes()) std::cout << note << "\n";
+  if (runner.dashboard_url()) std::cout << "dashboard: " << *runner.dashboard_url() << "\n";
+  std::cout << "Ctrl-C stops every service." << std::endl;
+  (void)runner.Supervise();
+  absl::Status stopped = runner.Stop();
   if (!stopped.ok()) {
     std::cerr << "semnav up: " << stopped.message() << "\n";
     return 1;
@@ -130,13 +153,13 @@ int main(int argc, char** argv) {
   }
   if (command == "demo") return ExecSibling("semnav-sim-demo", argc, argv, 2);
   if (command == "up" || command == "status") {
-    absl::StatusOr<StackConfig> stack = StackFromFlags(argc, argv);
-    if (!stack.ok()) {
-      std::cerr << "semnav " << command << ": " << stack.status().message() << "\n";
+    absl::StatusOr<StackCommand> parsed = StackFromFlags(command, argc, argv);
+    if (!parsed.ok()) {
+      std::cerr << "semnav " << command << ": " << parsed.status().message() << "\n" << kUsage;
       return 2;
     }
-    if (command == "up") return Up(*stack);
-    absl::Status status = semnav::launcher::PrintStatus(*stack);
+    if (command == "up") return Up(parsed->stack, parsed->options);
+    absl::Status status = semnav::launcher::PrintStatus(parsed->stack);
     return status.ok() ? 0 : 1;
   }
   std::cerr << "semnav: unknown command '" << command << "'\n" << kUsage;

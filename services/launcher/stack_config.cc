@@ -37,6 +37,29 @@ absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem
       .Read("stop_timeout_s", &stack.stop_timeout_s);
   root.Check(stack.startup_timeout_s > 0, "startup_timeout_s", "must be > 0");
   root.Check(stack.stop_timeout_s > 0, "stop_timeout_s", "must be > 0");
+  ConfigReader restart = root.Child("restart");
+  restart.Read("initial_backoff_s", &stack.restart.initial_backoff_s)
+      .Read("max_backoff_s", &stack.restart.max_backoff_s)
+      .Read("stable_after_s", &stack.restart.stable_after_s);
+  restart.Check(stack.restart.initial_backoff_s > 0, "initial_backoff_s", "must be > 0");
+  restart.Check(stack.restart.max_backoff_s >= stack.restart.initial_backoff_s, "max_backoff_s",
+                "must be >= initial_backoff_s");
+  restart.Check(stack.restart.stable_after_s > 0, "stable_after_s", "must be > 0");
+  if (root.Has("dashboard")) {
+    ConfigReader dashboard = root.Child("dashboard");
+    stack.dashboard.enabled = true;
+    dashboard.Read("enabled", &stack.dashboard.enabled)
+        .Read("listen", &stack.dashboard.listen)
+        .Read("robot_id", &stack.dashboard.robot_id);
+    dashboard.Check(!stack.dashboard.listen.empty(), "listen", "is required (host:port)");
+  }
+  ConfigReader sim_robot = root.Child("sim_robot");
+  sim_robot.Read("robot_id", &stack.sim_robot.robot_id)
+      .Read("world_seed", &stack.sim_robot.world_seed)
+      .Read("speed", &stack.sim_robot.speed);
+  sim_robot.Check(!stack.sim_robot.robot_id.empty(), "robot_id", "must not be empty");
+  sim_robot.Check(stack.sim_robot.world_seed >= 0, "world_seed", "must be >= 0");
+  sim_robot.Check(stack.sim_robot.speed > 0 && stack.sim_robot.speed <= 100, "speed", "must be in (0, 100]");
   ConfigReader services = root.Child("services");
   for (const std::string& name : services.Keys()) {
     ConfigReader entry = services.Child(name);
@@ -64,6 +87,13 @@ absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem
 }
 
 }  // namespace
+
+std::string StackConfig::AddressOf(const std::string& name) const {
+  for (const StackService& service : services) {
+    if (service.name == name) return service.listen;
+  }
+  return "";
+}
 
 absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path) {
   absl::StatusOr<ConfigReader> root = ConfigReader::FromFile(path);

@@ -1,5 +1,6 @@
 // `semnav up` brings the five real services to SERVING, `semnav status` sees them, SIGTERM
-// stops them all cleanly.
+// stops them all cleanly; a killed service comes back while the others keep running, a second
+// stack on the same ports refuses to start, and no child outlives the launcher.
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,12 +14,15 @@
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "services/launcher/free_port.h"
+#include "services/launcher/stack_config.h"
+#include "services/launcher/stack_state.h"
 #include "tests/support/service_process.h"
 
 namespace semnav::testing {
 namespace {
 
 using ::testing::HasSubstr;
+using semnav::launcher::StackState;
 
 std::string WriteStack() {
   const auto path = std::filesystem::temp_directory_path() /
@@ -79,6 +83,138 @@ TEST(LauncherTest, UpBringsAllFiveToServingQuicklyAndStopsThemOnSigterm) {
   absl::StatusOr<ProcessResult> after = RunToCompletion("semnav", {"status", "--config", stack});
   ASSERT_TRUE(after.ok());
   EXPECT_EQ(after->exit_code, 1);
+}
+
+// A running `semnav up --config stack`: its pid and what it printed up to "Ctrl-C".
+struct RunningStack {
+  pid_t pid = -1;
+  int output_fd = -1;
+  std::string printed;
+};
+
+RunningStack StartUp(const std::string& stack) {
+  RunningStack running;
+  int out[2];
+  if (::pipe(out) != 0) return running;
+  running.pid = ::fork();
+  if (running.pid == 0) {
+    ::dup2(out[1], STDOUT_FILENO);
+    const std::string path = BinaryPath("semnav");
+    ::execl(path.c_str(), path.c_str(), "up", "--config", stack.c_str(), nullptr);
+    ::_exit(127);
+  }
+  ::close(out[1]);
+  running.output_fd = out[0];
+  char buffer[1024];
+  while (running.printed.find("Ctrl-C") == std::string::npos) {
+    const ssize_t n = ::read(out[0], buffer, sizeof(buffer));
+    if (n <= 0) break;
+    running.printed.append(buffer, static_cast<std::size_t>(n));
+  }
+  return running;
+}
+
+int StopUp(RunningStack& running, int signal_number = SIGTERM) {
+  ::kill(running.pid, signal_number);
+  int code = 0;
+  ::waitpid(running.pid, &code, 0);
+  ::close(running.output_fd);
+  return code;
+}
+
+// Running or sleeping; a zombie (exited, not yet reaped by whoever adopted it) counts as gone.
+bool Alive(pid_t pid) {
+  if (pid <= 0 || ::kill(pid, 0) != 0) return false;
+  std::ifstream stat(absl::StrCat("/proc/", pid, "/stat"));
+  std::string line;
+  std::getline(stat, line);
+  const size_t paren = line.rfind(')');
+  return paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] != 'Z';
+}
+
+StackState LiveState(const std::string& stack) {
+  absl::StatusOr<semnav::launcher::StackConfig> config = semnav::launcher::LoadStackConfig(stack);
+  if (!config.ok()) return {};
+  absl::StatusOr<StackState> state = semnav::launcher::ReadLiveStackState(semnav::launcher::StackStatePath(*config));
+  return state.ok() ? *state : StackState{};
+}
+
+TEST(LauncherTest, KilledServiceIsRestartedAndTheOthersKeepRunning) {
+  const std::string stack = WriteStack();
+  RunningStack running = StartUp(stack);
+  ASSERT_THAT(running.printed, HasSubstr("semnav stack is up"));
+  const StackState before = LiveState(stack);
+  ASSERT_EQ(before.children.size(), 5u);
+  const pid_t mapping = before.children.at("mapping").pid;
+  ASSERT_TRUE(Alive(mapping));
+  ::kill(mapping, SIGKILL);
+
+  // Back-off 0.5 s, then the new mapping must reach SERVING.
+  absl::StatusOr<ProcessResult> status;
+  const absl::Time deadline = absl::Now() + absl::Seconds(20);
+  do {
+    absl::SleepFor(absl::Milliseconds(200));
+    status = RunToCompletion("semnav", {"status", "--config", stack});
+    ASSERT_TRUE(status.ok()) << status.status();
+  } while (status->exit_code != 0 && absl::Now() < deadline);
+  EXPECT_EQ(status->exit_code, 0) << status->output;
+  EXPECT_THAT(status->output, HasSubstr("restarts 1 (last: killed by signal 9"));
+
+  const StackState after = LiveState(stack);
+  EXPECT_EQ(after.children.at("mapping").restarts, 1);
+  EXPECT_NE(after.children.at("mapping").pid, mapping);
+  for (const char* name : {"gateway", "planning", "relocalization", "model-proxy"}) {
+    EXPECT_EQ(after.children.at(name).pid, before.children.at(name).pid) << name;
+    EXPECT_EQ(after.children.at(name).restarts, 0) << name;
+  }
+  const int code = StopUp(running);
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
+}
+
+TEST(LauncherTest, SecondStackOnTheSamePortsRefusesToStart) {
+  const std::string stack = WriteStack();
+  RunningStack running = StartUp(stack);
+  ASSERT_THAT(running.printed, HasSubstr("semnav stack is up"));
+
+  absl::StatusOr<ProcessResult> same = RunToCompletion("semnav", {"up", "--config", stack});
+  ASSERT_TRUE(same.ok());
+  EXPECT_EQ(same->exit_code, 1);
+  EXPECT_THAT(same->output, HasSubstr("already runs this stack"));
+
+  // Another stack file that reuses one port: refused by the port check, naming the service.
+  absl::StatusOr<semnav::launcher::StackConfig> config = semnav::launcher::LoadStackConfig(stack);
+  ASSERT_TRUE(config.ok());
+  const auto other = std::filesystem::temp_directory_path() / absl::StrCat("semnav_stack_other_", ::getpid(), ".yaml");
+  std::ofstream(other) << "services:\n  planning: {binary: semnav-planning, listen: '"
+                       << config->AddressOf("planning") << "'}\n";
+  absl::StatusOr<ProcessResult> overlap = RunToCompletion("semnav", {"up", "--config", other.string()});
+  ASSERT_TRUE(overlap.ok());
+  EXPECT_EQ(overlap->exit_code, 1);
+  EXPECT_THAT(overlap->output, HasSubstr("planning: " + config->AddressOf("planning") + " is already in use"));
+
+  // A service binary started by hand on a taken port fails instead of sharing it.
+  absl::StatusOr<ProcessResult> twin =
+      RunToCompletion("semnav-planning", {"--listen", config->AddressOf("planning")}, absl::Seconds(10));
+  ASSERT_TRUE(twin.ok());
+  EXPECT_NE(twin->exit_code, 0);
+  EXPECT_THAT(twin->output, HasSubstr("cannot bind"));
+
+  const int code = StopUp(running);
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
+}
+
+TEST(LauncherTest, NoServiceOutlivesAKilledLauncher) {
+  const std::string stack = WriteStack();
+  RunningStack running = StartUp(stack);
+  ASSERT_THAT(running.printed, HasSubstr("semnav stack is up"));
+  const StackState state = LiveState(stack);
+  ASSERT_EQ(state.children.size(), 5u);
+  StopUp(running, SIGKILL);
+  const absl::Time deadline = absl::Now() + absl::Seconds(15);
+  for (const auto& [name, child] : state.children) {
+    while (Alive(child.pid) && absl::Now() < deadline) absl::SleepFor(absl::Milliseconds(50));
+    EXPECT_FALSE(Alive(child.pid)) << name << " outlived its launcher";
+  }
 }
 
 TEST(LauncherTest, UnknownBenchAreaListsTheBuiltOnes) {

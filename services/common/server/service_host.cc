@@ -84,6 +84,9 @@ absl::Status ServiceHost::Start() {
   grpc::reflection::InitProtoReflectionServerBuilderPlugin();
   grpc::ServerBuilder builder;
   builder.AddListeningPort(options_.listen, *credentials, &port_);
+  // gRPC enables SO_REUSEPORT by default: a second server on the same port would start and split
+  // the clients between two different maps. Binding must fail instead.
+  builder.AddChannelArgument(GRPC_ARG_ALLOW_REUSEPORT, 0);
   builder.SetMaxReceiveMessageSize(options_.max_receive_message_mb * 1024 * 1024);
   builder.SetMaxSendMessageSize(options_.max_send_message_mb * 1024 * 1024);
   builder.AddChannelArgument(GRPC_ARG_KEEPALIVE_TIME_MS, options_.keepalive_time_s * 1000);

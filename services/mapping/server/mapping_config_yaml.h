@@ -4,6 +4,7 @@
 
 #include "services/common/config/config_reader.h"
 #include "services/mapping/core/mapping_config.h"
+#include "services/mapping/core/window_validation.h"
 
 namespace semnav::mapping {
 
@@ -15,6 +16,7 @@ struct MappingServiceConfig {
   double query_min_cosine = 0.2;             // QueryObjects default when the request says 0
   size_t idempotency_cache_size = 1024;      // remembered request_ids
   int occupancy_chunk_bytes = 1 << 20;       // GetOccupancy DataChunk size (protocol max 1 MiB)
+  WindowLimits window_limits;                // GetGridMap / WatchGridMap window bounds
 };
 
 // Reads the "mapping" YAML section. Keys (defaults in brackets):
@@ -31,6 +33,7 @@ struct MappingServiceConfig {
 //                 direction_margin_m [0.2], on_tolerance_m [0.15], region_radius_m [3]}
 //   synonyms: {label: [other names]}   store_directory   watch_min_interval_ms   query_min_cosine
 //   occupancy_chunk_bytes [1048576, in 1024..1048576]
+//   max_window_cells [16777216]   max_abs_coordinate_m [100000]: grid-window request bounds
 // Errors are recorded on `section` (reported with their key path by the caller's Finish()).
 MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section);
 

@@ -10,6 +10,7 @@
 #include "services/mapping/server/frame_stream_reactor.h"
 #include "services/mapping/server/proto_convert.h"
 #include "services/mapping/server/watch_reactor.h"
+#include "services/mapping/core/window_validation.h"
 
 namespace semnav::mapping {
 namespace {
@@ -34,10 +35,9 @@ std::vector<semnav::common::v1::GridLayerKind> Kinds(const google::protobuf::Rep
   return out;
 }
 
-grpc::Status CheckWindow(const v1::Window& window) {
-  if (!(window.max().x() > window.min().x())) return Invalid("window.max.x", "must be > window.min.x");
-  if (!(window.max().y() > window.min().y())) return Invalid("window.max.y", "must be > window.min.y");
-  return grpc::Status::OK;
+grpc::Status CheckWindow(const v1::Window& window, const MappingServiceConfig& config) {
+  return FromCore(ValidateWindow(window.min().x(), window.min().y(), window.max().x(), window.max().y(),
+                                 config.core.grid.resolution_m, config.window_limits));
 }
 
 GridWindow Intersect(const GridWindow& a, const GridWindow& b) {
@@ -152,7 +152,7 @@ grpc::ServerUnaryReactor* MappingServiceImpl::GetGridMap(grpc::CallbackServerCon
   if (absl::Status s = CheckLayerKinds(request->layers(), "layers"); !s.ok()) return Reply(context, FromCore(s));
   std::optional<GridWindow> window;
   if (request->has_window()) {
-    if (grpc::Status s = CheckWindow(request->window()); !s.ok()) return Reply(context, s);
+    if (grpc::Status s = CheckWindow(request->window(), config_); !s.ok()) return Reply(context, s);
     const auto& w = request->window();
     window = engine_.WindowOf(w.min().x(), w.min().y(), w.max().x(), w.max().y());
   }
@@ -173,7 +173,7 @@ grpc::ServerWriteReactor<v1::WatchGridMapResponse>* MappingServiceImpl::WatchGri
   }
   std::optional<GridWindow> watched;
   if (request->has_window()) {
-    if (grpc::Status s = CheckWindow(request->window()); !s.ok()) return FailStream<v1::WatchGridMapResponse>(s);
+    if (grpc::Status s = CheckWindow(request->window(), config_); !s.ok()) return FailStream<v1::WatchGridMapResponse>(s);
     const auto& w = request->window();
     watched = engine_.WindowOf(w.min().x(), w.min().y(), w.max().x(), w.max().y());
   }

@@ -1,5 +1,7 @@
 // Contract test: the real semnav-mapping binary on a loopback port, called through generated stubs.
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
@@ -218,6 +220,54 @@ TEST_F(MappingContractTest, BadRequestsNameTheFieldAndKeepState) {
     EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "max.z");
   }
   EXPECT_EQ(Grid().SerializeAsString(), before);
+}
+
+// Regression: on an empty map, WatchGridMap without since_revision and a window edge at +-inf
+// or 1e300 aborted the process (std::length_error), and GetGridMap with max.x = 1e6 grew it to
+// 6 GB. Each is now INVALID_ARGUMENT naming the field, and the service keeps serving.
+TEST_F(MappingContractTest, UnboundedWindowsAreRejectedAndTheServiceSurvives) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const struct {
+    double min_x, max_x, max_y;
+    const char* field;
+  } cases[] = {{0.0, inf, 1.0, "window.max.x"},
+               {-inf, 1.0, 1.0, "window.min.x"},
+               {0.0, 1e300, 1.0, "window.max.x"},
+               {0.0, std::nan(""), 1.0, "window.max.x"},
+               {0.0, 1e6, 1.0, "window.max.x"},
+               {-5000.0, 5000.0, 5000.0, "window"}};
+  for (const auto& c : cases) {
+    v1::Window window;
+    window.mutable_min()->set_x(c.min_x);
+    window.mutable_max()->set_x(c.max_x);
+    window.mutable_max()->set_y(c.max_y);
+    {
+      grpc::ClientContext context;
+      context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(5));
+      v1::WatchGridMapRequest request;
+      *request.mutable_window() = window;
+      auto reader = stub_->WatchGridMap(&context, request);
+      v1::WatchGridMapResponse response;
+      EXPECT_FALSE(reader->Read(&response));
+      const grpc::Status status = reader->Finish();
+      EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << c.field << " " << status.error_message();
+      ASSERT_TRUE(GetDetail<ErrorInfo>(status).has_value()) << c.field;
+      EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), c.field);
+      EXPECT_LT(status.error_message().size(), 200u);
+    }
+    {
+      grpc::ClientContext context;
+      context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(5));
+      v1::GetGridMapRequest request;
+      *request.mutable_window() = window;
+      v1::GetGridMapResponse response;
+      const grpc::Status status = stub_->GetGridMap(&context, request, &response);
+      EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << c.field;
+      EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), c.field);
+    }
+  }
+  // Still alive and answering.
+  EXPECT_EQ(Grid().grid().width(), 0);
 }
 
 TEST_F(MappingContractTest, SaveLoadAndCorruptFileIsDataLossWithLiveMapUntouched) {

@@ -1,0 +1,45 @@
+#include "services/mapping/core/window_validation.h"
+
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+
+namespace semnav::mapping {
+namespace {
+
+absl::Status Invalid(absl::string_view field, absl::string_view why) {
+  return absl::InvalidArgumentError(absl::StrCat(field, ": ", why));
+}
+
+absl::Status CheckCoordinate(double value, absl::string_view field, const WindowLimits& limits) {
+  if (!std::isfinite(value)) return Invalid(field, "must be finite");
+  if (std::abs(value) > limits.max_abs_coordinate_m) {
+    return Invalid(field, absl::StrCat("must be within +-", limits.max_abs_coordinate_m, " m"));
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max_y, double resolution_m,
+                            const WindowLimits& limits) {
+  const struct {
+    double value;
+    const char* field;
+  } corners[] = {{min_x, "window.min.x"}, {min_y, "window.min.y"}, {max_x, "window.max.x"}, {max_y, "window.max.y"}};
+  for (const auto& corner : corners) {
+    if (absl::Status s = CheckCoordinate(corner.value, corner.field, limits); !s.ok()) return s;
+  }
+  if (!(max_x > min_x)) return Invalid("window.max.x", "must be > window.min.x");
+  if (!(max_y > min_y)) return Invalid("window.max.y", "must be > window.min.y");
+  // Both extents are finite and bounded here, so the product cannot overflow a double.
+  const double cells = (std::floor(max_x / resolution_m) - std::floor(min_x / resolution_m) + 1) *
+                       (std::floor(max_y / resolution_m) - std::floor(min_y / resolution_m) + 1);
+  if (cells > static_cast<double>(limits.max_cells)) {
+    return Invalid("window", absl::StrCat("covers more than ", limits.max_cells, " cells of ", resolution_m,
+                                          " m; ask for a smaller window"));
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace semnav::mapping
