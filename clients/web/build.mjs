@@ -1,5 +1,5 @@
 // Builds the dashboard into OUT: semnav-dashboard.js (the Node proxy, dependencies bundled),
-// static/ (page bundle, HTML, CSS) and the tests dashboard_e2e.js (Playwright) and proxy_test.js. The page's proto
+// static/ (page bundle, HTML, CSS) and the tests dashboard_e2e.js and stack_e2e.js (Playwright) and proxy_test.js. The page's proto
 // types are generated first (src/generated/protos.ts). Usage: node build.mjs [--out DIR]
 import * as fs from "node:fs";
 import * as path from "node:path";
@@ -29,7 +29,8 @@ await Promise.all([
   }),
   esbuild.build({
     ...node,
-    entryPoints: [path.join(here, "src/test/dashboard_e2e.ts"), path.join(here, "src/test/proxy_test.ts")],
+    entryPoints: [path.join(here, "src/test/dashboard_e2e.ts"), path.join(here, "src/test/proxy_test.ts"),
+                  path.join(here, "src/test/stack_e2e.ts")],
     outdir: out,
     external: ["playwright-core"],
     define: { DEFAULT_PROTO_DIR: JSON.stringify(protoDir), NODE_MODULES_DIR: JSON.stringify(path.resolve(here, "../../node_modules")) },

@@ -224,6 +224,9 @@ void TaskExecutor::MaybeRequestModel() {
   GroundingConfig grounding;
   grounding.max_objects = config_.grounding_max_objects;
   GroundedGraph grounded = SelectiveGrounding(ActiveTarget(), graph_, resolver_->matcher(), grounding);
+  // No candidate could be named: the proxy refuses an empty list, and asking again on every new
+  // revision made a call (and a warning) every 200 ms while the robot explored.
+  if (grounded.graph.objects.empty()) return;
   ModelRequest request;
   request.graph_revision = requested_revision_ = graph_.revision;
   request.request = BuildResolveRequest(instruction_, ActiveTarget(), grounded.graph);
@@ -432,6 +435,11 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
   if (progress_.state != TaskState::kRunning || progress_.target.has_value()) return {};
   if (decision.action == SlowAction::kExplore || excluded_.count(decision.object_id) > 0) {
     progress_.reason = absl::StrCat("model: keep exploring (", decision.explanation, ")");
+    return {};
+  }
+  // Set aside as unreachable from here: taking it again would fail again at once.
+  if (set_aside_.count(decision.object_id) > 0) {
+    progress_.reason = absl::StrCat("model names object ", decision.object_id, ", set aside until the next vantage point");
     return {};
   }
   const SceneObject* object = graph_.FindObject(decision.object_id);

@@ -141,7 +141,7 @@ TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppea
   SceneObject chair;
   chair.id = 1;
   chair.label = "chair";
-  task.OnSceneGraph(0, GraphWith({chair}, 1));
+  task.OnSceneGraph(0, GraphWith({chair, Extinguisher(1)}, 1));  // one unsure candidate
   std::vector<RobotCommand> out = task.Start(0, At(0));
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
@@ -189,6 +189,65 @@ TEST_F(GatewayTaskExecutorTest, SlowPathAnswerProvidesTheGoal) {
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4, 0, 0)));
   EXPECT_EQ(task.progress().target->path, "slow");
+}
+
+// Regression (dashboard, "find a bed"): the model named the object that had just been set aside
+// as unreachable; the executor took it again at once, failed again at once, and so spent all 30
+// exploration goals in 8 s without moving. A set-aside object waits for a new vantage point.
+TEST_F(GatewayTaskExecutorTest, SlowAnswerNamingASetAsideObjectKeepsExploring) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.model_available = true;
+  TaskExecutor task = Make(GoToTarget(), config);
+  task.OnSceneGraph(0, GraphWith({Extinguisher(1)}, 1));  // too unsure for the fast path
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_TRUE(task.TakeModelRequest().has_value());
+  SlowDecision decision;
+  decision.action = SlowAction::kGoal;
+  decision.object_id = 7;
+  decision.confidence = 0.8;
+  out = task.OnSlowDecision(1, 1, decision);
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_TRUE(task.progress().target.has_value());
+  for (int failure = 0; failure <= config.max_replans; ++failure) {
+    out = task.OnFeedback(2 + failure, out[0].id, RobotFeedback::kBlocked);
+    ASSERT_EQ(out.size(), 1u);
+  }
+  ASSERT_FALSE(task.progress().target.has_value());  // set aside, exploring toward (0, 10)
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  const int explore_goals = task.progress().explore_goals;
+
+  EXPECT_TRUE(task.OnSceneGraph(10, GraphWith({Extinguisher(2)}, 2)).empty());
+  ASSERT_TRUE(task.TakeModelRequest().has_value());
+  EXPECT_TRUE(task.OnSlowDecision(11, 2, decision).empty());
+  EXPECT_FALSE(task.progress().target.has_value());
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_EQ(task.progress().explore_goals, explore_goals);
+
+  // From the next exploration goal the object may be reachable: the model's answer counts again.
+  out = task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);  // scan at the goal
+  task.OnSceneGraph(13, GraphWith({Extinguisher(3)}, 3));
+  ASSERT_TRUE(task.TakeModelRequest().has_value());
+  EXPECT_FALSE(task.OnSlowDecision(14, 3, decision).empty());
+  EXPECT_TRUE(task.progress().target.has_value());
+}
+
+// Regression: with nothing in the map that grounding could offer as a candidate, every scene
+// graph revision sent the model an empty candidate list, which the proxy rejects.
+TEST_F(GatewayTaskExecutorTest, NoCandidateForTheModelMeansNoModelCall) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0)};
+  ExecutorConfig config;
+  config.model_available = true;
+  TaskExecutor task = Make(GoToTarget(), config);
+  SceneObject sofa = Extinguisher(5);
+  sofa.label = "sofa";
+  sofa.attributes.clear();
+  task.OnSceneGraph(0, GraphWith({sofa}, 1));
+  task.Start(0, At(0));
+  EXPECT_FALSE(task.TakeModelRequest().has_value());
+  EXPECT_EQ(task.progress().model_requests, 0);
+  task.OnSceneGraph(1, GraphWith({Extinguisher(1)}, 2));  // a candidate appears: now ask
+  EXPECT_TRUE(task.TakeModelRequest().has_value());
 }
 
 TEST_F(GatewayTaskExecutorTest, UnreachableTargetIsSetAsideAndSearchGoesOn) {
