@@ -20,6 +20,7 @@ absl::StatusOr<std::string> ProbeHealth(const ClientOptions& client, const std::
 
 // `semnav probe`: flags, run, print; exit 0 when SERVING, 1 otherwise, 2 on bad flags.
 const std::vector<FlagSpec>& ProbeFlags();
+std::string ProbeUsage();
 int RunProbe(int argc, char** argv, int first);
 
 }  // namespace semnav::launcher
