@@ -63,6 +63,7 @@ for binary in "${binaries[@]}"; do
     continue
   fi
   refuses "$bin_dir/$binary"
+  expect 2 stderr usage "$bin_dir/$binary" --no-such-flag
   helps "$bin_dir/$binary"
 done
 
@@ -89,6 +90,7 @@ if [[ -x $bin_dir/semnavctl ]]; then
 fi
 
 refuses "$node" "$dashboard_js"
+expect 2 stderr usage "$node" "$dashboard_js" --no-such-flag
 helps "$node" "$dashboard_js"
 
 echo "$checks checks, $failures failed"
