@@ -12,10 +12,12 @@ function(semnav_library name)
   semnav_strict(${name})
 endfunction()
 
-# semnav_executable(NAME SOURCES ... DEPS ...)
+# semnav_executable(NAME SOURCES ... DEPS ...); the global property SEMNAV_EXECUTABLES lists them
+# all (tests/cli checks each one's command line).
 function(semnav_executable name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
+  set_property(GLOBAL APPEND PROPERTY SEMNAV_EXECUTABLES ${name})
   target_include_directories(${name} PRIVATE ${CMAKE_SOURCE_DIR})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS})
   semnav_strict(${name})

@@ -71,12 +71,19 @@ int Main(int argc, char** argv) {
     std::cout << CommandHelp(*found);
     return ToInt(ExitCode::kOk);
   }
+  // A malformed command line gets the reason, then the command's usage.
+  auto usage_error = [&](const std::string& reason) {
+    const int code = UsageError(reason);
+    std::cerr << "\n" << CommandHelp(*found);
+    return code;
+  };
   absl::StatusOr<Invocation> invocation = Invocation::Parse(argc, argv, first, found->flags, found->service);
-  if (!invocation.ok()) return UsageError(std::string(invocation.status().message()));
+  if (!invocation.ok()) return usage_error(std::string(invocation.status().message()));
   const std::size_t given = invocation->positional().size();
   if (given < found->positional_count || (!found->variadic && given > found->positional_count)) {
-    return UsageError(absl::StrCat(Name(*found), " takes ", found->variadic ? "at least " : "",
-                                   found->positional_count, " argument(s): ", found->args.empty() ? "none" : found->args));
+    return usage_error(absl::StrCat(Name(*found), " takes ", found->variadic ? "at least " : "",
+                                    found->positional_count,
+                                    " argument(s): ", found->args.empty() ? "none" : found->args));
   }
   return found->run(*invocation);
 }

@@ -59,15 +59,23 @@ const std::vector<FlagSpec>& ProbeFlags() {
   return flags;
 }
 
+std::string ProbeUsage() {
+  return absl::StrCat("Usage: semnav probe --addr HOST:PORT [flags]\n\nFlags:\n",
+                      FlagsHelp(ProbeFlags()));
+}
+
 int RunProbe(int argc, char** argv, int first) {
   absl::StatusOr<ParsedFlags> flags = ParseFlags(argc, argv, first, ProbeFlags());
   double timeout_s = 3;
   if (flags.ok() && flags->Has("timeout_s") && !absl::SimpleAtod(*flags->Get("timeout_s"), &timeout_s)) {
     flags = absl::InvalidArgumentError("--timeout_s: not a number");
   }
+  if (flags.ok() && !flags->positional.empty()) {
+    flags = absl::InvalidArgumentError("unexpected argument '" + flags->positional.front() + "'");
+  }
   if (flags.ok() && !flags->Has("addr")) flags = absl::InvalidArgumentError("--addr is required");
   if (!flags.ok()) {
-    std::cerr << "semnav probe: " << flags.status().message() << "\n";
+    std::cerr << "semnav probe: " << flags.status().message() << "\n" << ProbeUsage();
     return 2;
   }
   ClientOptions client;

@@ -23,6 +23,7 @@ absl::Status ProbeHttp(const std::string& url, absl::Duration timeout);
 
 // `semnav probe`: flags, run, print; exit 0 when SERVING, 1 otherwise, 2 on bad flags.
 const std::vector<FlagSpec>& ProbeFlags();
+std::string ProbeUsage();
 int RunProbe(int argc, char** argv, int first);
 
 }  // namespace semnav::launcher

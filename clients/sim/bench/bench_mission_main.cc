@@ -26,6 +26,7 @@
 #include "clients/sim/worlds/indoor_generator.h"
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "services/common/cli/executable_dir.h"
+#include "services/common/cli/flags.h"
 
 namespace {
 
@@ -52,6 +53,20 @@ constexpr char kUsage[] =
     "  --bin-dir DIR          folder with the service binaries (default: this program's folder)\n"
     "  --jobs N               episodes run at once, each on its own stack of services (default 2, one\n"
     "                         per core of the reference machine; 1 = one after another)\n";
+
+// Every flag of kUsage takes a value.
+const std::vector<semnav::FlagSpec> kFlags = {{"suite", "DIR", ""},
+                                              {"episodes", "N", ""},
+                                              {"outdoor-episodes", "N", ""},
+                                              {"flyroll-episodes", "N", ""},
+                                              {"json", "FILE", ""},
+                                              {"out", "DIR", ""},
+                                              {"seed", "N", ""},
+                                              {"max-steps", "N", ""},
+                                              {"strategies", "LIST", ""},
+                                              {"model-config", "FILE", ""},
+                                              {"bin-dir", "DIR", ""},
+                                              {"jobs", "N", ""}};
 
 // Compared side by side on the same episodes. EROI_UTILITY needs a vision model, so it joins
 // only on request.
@@ -93,19 +108,9 @@ int main(int argc, char** argv) {
                                               {"--max-steps", "500"},
                                               {"--strategies", kDefaultStrategies},
                                               {"--jobs", "2"}};
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return 0;
-    }
-    if (arg.rfind("--", 0) == 0 && i + 1 < argc) {
-      flags[arg] = argv[++i];
-    } else {
-      std::cerr << "semnav-bench-mission: bad argument " << arg << "\n" << kUsage;
-      return 2;
-    }
-  }
+  const semnav::ParsedFlags given =
+      semnav::ParseFlagsOrExit(argc, argv, kFlags, "semnav-bench-mission", kUsage);
+  for (const auto& [name, value] : given.values) flags["--" + name] = value;
   const uint64_t seed = std::strtoull(flags["--seed"].c_str(), nullptr, 10);
   absl::StatusOr<std::vector<sim::World>> worlds = Worlds(flags, seed);
   if (!worlds.ok()) {

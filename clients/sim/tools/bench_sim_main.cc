@@ -1,10 +1,10 @@
 // semnav-bench-sim: simulator sensor timings on the benchmark worlds (Google Benchmark).
-// `--json FILE` writes the named figures as a flat JSON object; other flags go to the library.
+// `--json FILE` writes the named figures as a flat JSON object; --benchmark_* flags go to the
+// library.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -18,6 +18,7 @@
 #include "clients/sim/core/view_renderer.h"
 #include "clients/sim/core/world_yaml.h"
 #include "clients/sim/worlds/benchmark_suite.h"
+#include "services/common/cli/flags.h"
 #include "services/common/cli/help.h"
 
 namespace semnav::sim {
@@ -110,21 +111,19 @@ class FigureReporter : public benchmark::ConsoleReporter {
 }  // namespace semnav::sim
 
 int main(int argc, char** argv) {
+  constexpr char kUsage[] =
+      "usage: semnav-bench-sim [--json FILE] [--benchmark_* flags]\n"
+      "Depth render and full sensor frame time per world source.\n";
+  // Before benchmark::Initialize, which would answer --help with its own text.
   if (semnav::HelpRequested(argc, argv)) {
-    std::printf("usage: semnav-bench-sim [--json FILE] [--benchmark_* flags]\n"
-                "Depth render and full sensor frame time per world source.\n");
+    std::printf("%s", kUsage);
     return 0;
   }
   using namespace semnav::sim;
-  std::string json_path;
-  std::vector<char*> args;
-  for (int i = 0; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--json") == 0 && i + 1 < argc) {
-      json_path = argv[++i];
-    } else {
-      args.push_back(argv[i]);
-    }
-  }
+  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
+  const semnav::ParsedFlags flags =
+      semnav::ParseFlagsOrExit(argc, argv, {{"json", "FILE", ""}}, "semnav-bench-sim", kUsage);
+  const std::string json_path = flags.Get("json").value_or("");
   for (const Case& c : Cases()) {
     benchmark::RegisterBenchmark(("render_depth_640x480/" + c.name).c_str(), BM_RenderDepth, &c)
         ->Unit(benchmark::kMillisecond);
@@ -135,8 +134,6 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("parse_world_yaml/" + c.name).c_str(), BM_LoadWorldYaml, &c)
         ->Unit(benchmark::kMillisecond);
   }
-  int count = static_cast<int>(args.size());
-  benchmark::Initialize(&count, args.data());
   FigureReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   if (!json_path.empty()) {

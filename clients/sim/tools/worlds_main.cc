@@ -2,10 +2,10 @@
 // (indoor, outdoor, flyroll, houseexpo, fr079) of world YAML files.
 #include <cstdlib>
 #include <iostream>
-#include <map>
 #include <string>
 
 #include "clients/sim/worlds/benchmark_suite.h"
+#include "services/common/cli/flags.h"
 
 namespace {
 
@@ -19,36 +19,28 @@ constexpr char kUsage[] =
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::map<std::string, std::string> flags = {{"--seed", "1"}, {"--data", SEMNAV_SHARED_DATA_DIR}};
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return 0;
-    }
-    if ((arg == "--out" || arg == "--seed" || arg == "--data") && i + 1 < argc) {
-      flags[arg] = argv[++i];
-    } else {
-      std::cerr << "semnav-sim-worlds: unknown or incomplete argument " << arg << "\n" << kUsage;
-      return 2;
-    }
-  }
-  if (!flags.contains("--out")) {
+  const semnav::ParsedFlags flags = semnav::ParseFlagsOrExit(
+      argc, argv, {{"out", "DIR", ""}, {"seed", "N", ""}, {"data", "DIR", ""}}, "semnav-sim-worlds",
+      kUsage);
+  const std::string seed_text = flags.Get("seed").value_or("1");
+  const std::string data_dir = flags.Get("data").value_or(SEMNAV_SHARED_DATA_DIR);
+  const std::string out_dir = flags.Get("out").value_or("");
+  if (!flags.Has("out")) {
     std::cerr << "semnav-sim-worlds: --out is required\n" << kUsage;
     return 2;
   }
   char* end = nullptr;
-  const unsigned long long seed = std::strtoull(flags["--seed"].c_str(), &end, 10);
-  if (end == nullptr || *end != '\0' || flags["--seed"].empty()) {
+  const unsigned long long seed = std::strtoull(seed_text.c_str(), &end, 10);
+  if (end == nullptr || *end != '\0' || seed_text.empty()) {
     std::cerr << "semnav-sim-worlds: --seed must be a non-negative integer\n";
     return 2;
   }
-  const auto worlds = semnav::sim::BuildBenchmarkSuite(seed, flags["--data"]);
+  const auto worlds = semnav::sim::BuildBenchmarkSuite(seed, data_dir);
   if (!worlds.ok()) {
     std::cerr << "semnav-sim-worlds: " << worlds.status() << "\n";
     return 1;
   }
-  const absl::Status written = semnav::sim::WriteBenchmarkSuite(*worlds, flags["--out"]);
+  const absl::Status written = semnav::sim::WriteBenchmarkSuite(*worlds, out_dir);
   if (!written.ok()) {
     std::cerr << "semnav-sim-worlds: " << written << "\n";
     return 1;
@@ -58,6 +50,6 @@ int main(int argc, char** argv) {
               << " objects, " << w.world.obstacles.size() << " obstacles, " << w.world.rooms.size()
               << " rooms, " << w.world.starts.size() << " starts\n";
   }
-  std::cout << "wrote " << worlds->size() << " worlds under " << flags["--out"] << "\n";
+  std::cout << "wrote " << worlds->size() << " worlds under " << out_dir << "\n";
   return 0;
 }

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "absl/strings/numbers.h"
+#include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "clients/sim/core/scene.h"
 #include "clients/sim/core/sim_robot.h"
@@ -64,24 +65,20 @@ int Fail(const absl::Status& status) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  absl::StatusOr<semnav::ParsedFlags> flags = semnav::ParseFlags(argc, argv, 1, kFlags);
-  if (!flags.ok() || flags->Has("help")) {
-    if (!flags.ok()) std::cerr << flags.status().message() << "\n";
-    (flags.ok() ? std::cout : std::cerr) << "usage: semnav-dashboard-sim-robot [flags]\n"
-                                         << semnav::FlagsHelp(kFlags)
-                                         << "Prints one JSON line with the endpoints, robot id and the "
-                                            "world's nearest object, then runs until SIGINT/SIGTERM.\n";
-    return flags.ok() ? 0 : 2;
-  }
+  const semnav::ParsedFlags flags = semnav::ParseFlagsOrExit(
+      argc, argv, kFlags, "semnav-dashboard-sim-robot",
+      absl::StrCat("usage: semnav-dashboard-sim-robot [flags]\n", semnav::FlagsHelp(kFlags),
+                   "Prints one JSON line with the endpoints, robot id and the world's nearest "
+                   "object, then runs until SIGINT/SIGTERM.\n"));
   uint64_t world_seed = 7;
   double speed = 1.0;
-  if (auto v = flags->Get("world-seed"); v && !absl::SimpleAtoi(*v, &world_seed)) {
+  if (auto v = flags.Get("world-seed"); v && !absl::SimpleAtoi(*v, &world_seed)) {
     return Fail(absl::InvalidArgumentError("--world-seed: not a number"));
   }
-  if (auto v = flags->Get("speed"); v && (!absl::SimpleAtod(*v, &speed) || speed <= 0)) {
+  if (auto v = flags.Get("speed"); v && (!absl::SimpleAtod(*v, &speed) || speed <= 0)) {
     return Fail(absl::InvalidArgumentError("--speed: must be a number > 0"));
   }
-  const std::string robot_id = flags->Get("robot-id").value_or("sim-robot");
+  const std::string robot_id = flags.Get("robot-id").value_or("sim-robot");
   // A test harness that dies must not leave the robot (and its stack) behind.
   prctl(PR_SET_PDEATHSIG, SIGTERM);
   signal(SIGINT, [](int) { stop_requested = true; });
@@ -90,13 +87,14 @@ int main(int argc, char** argv) {
   absl::StatusOr<loop::EpisodeSpec> spec = loop::SmokeEpisode(world_seed);
   if (!spec.ok()) return Fail(spec.status());
   std::unique_ptr<loop::SimStack> stack;
-  std::string gateway = flags->Get("gateway").value_or("127.0.0.1:50050");
-  std::string mapping = flags->Get("mapping").value_or("127.0.0.1:50051");
-  std::string planning = flags->Get("planning").value_or("127.0.0.1:50052");
-  if (flags->Has("start-stack")) {
+  std::string gateway = flags.Get("gateway").value_or("127.0.0.1:50050");
+  std::string mapping = flags.Get("mapping").value_or("127.0.0.1:50051");
+  std::string planning = flags.Get("planning").value_or("127.0.0.1:50052");
+  if (flags.Has("start-stack")) {
     const std::string bin_dir = semnav::ExecutableDir();
     const std::string work_dir =
-        std::filesystem::absolute(flags->Get("work-dir").value_or("semnav_dashboard_stack")).string();
+        std::filesystem::absolute(flags.Get("work-dir").value_or("semnav_dashboard_stack"))
+            .string();
     loop::SimStackOptions options;
     options.bin_dir = bin_dir;
     options.work_dir = work_dir;

@@ -1,9 +1,12 @@
 #include "services/common/cli/flags.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <iostream>
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
+#include "services/common/cli/help.h"
 
 namespace semnav {
 
@@ -48,6 +51,25 @@ absl::StatusOr<ParsedFlags> ParseFlags(int argc, char** argv, int first,
     }
   }
   return parsed;
+}
+
+ParsedFlags ParseFlagsOrExit(int argc, char** argv, const std::vector<FlagSpec>& specs,
+                             std::string_view program, std::string_view usage) {
+  if (HelpRequested(argc, argv)) {
+    std::cout << usage << std::flush;
+    std::exit(0);
+  }
+  absl::StatusOr<ParsedFlags> parsed = ParseFlags(argc, argv, 1, specs);
+  absl::Status error = parsed.status();
+  if (parsed.ok() && !parsed->positional.empty()) {
+    error = absl::InvalidArgumentError(
+        absl::StrCat("unexpected argument '", parsed->positional.front(), "'"));
+  }
+  if (!error.ok()) {
+    std::cerr << program << ": " << error.message() << "\n" << usage << std::flush;
+    std::exit(2);
+  }
+  return *std::move(parsed);
 }
 
 std::string FlagsHelp(const std::vector<FlagSpec>& specs) {

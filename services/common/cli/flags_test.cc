@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 namespace semnav {
 namespace {
 
@@ -34,6 +36,31 @@ TEST(FlagsTest, HelpListsEveryFlag) {
   const std::string help = FlagsHelp(kSpecs);
   EXPECT_NE(help.find("--config FILE"), std::string::npos);
   EXPECT_NE(help.find("show help"), std::string::npos);
+}
+
+// Each program's main() calls ParseFlagsOrExit first, so these run it in a child process.
+void ParseOrExit(std::vector<std::string> args) {
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  ParseFlagsOrExit(static_cast<int>(argv.size()), argv.data(), kSpecs, "bin",
+                   "usage: bin [flags]\n");
+  std::exit(7);  // parsed: main() carries on
+}
+
+TEST(FlagsDeathTest, UnknownFlagsMissingValuesAndArgumentsExitTwoWithUsage) {
+  EXPECT_EXIT(ParseOrExit({"bin", "--colour"}), testing::ExitedWithCode(2),
+              "bin: unknown flag --colour .*\nusage: bin \\[flags\\]");
+  EXPECT_EXIT(ParseOrExit({"bin", "--listen"}), testing::ExitedWithCode(2),
+              "bin: flag --listen needs a value ADDR\nusage: bin");
+  EXPECT_EXIT(ParseOrExit({"bin", "stray"}), testing::ExitedWithCode(2),
+              "bin: unexpected argument 'stray'\nusage: bin");
+}
+
+TEST(FlagsDeathTest, HelpExitsZeroAndKnownFlagsReturn) {
+  EXPECT_EXIT(ParseOrExit({"bin", "--help"}), testing::ExitedWithCode(0), "");
+  EXPECT_EXIT(ParseOrExit({"bin", "--listen", ":1", "-h"}), testing::ExitedWithCode(0), "");
+  EXPECT_EXIT(ParseOrExit({"bin", "--listen", ":1", "--config=a.yaml"}), testing::ExitedWithCode(7),
+              "");
 }
 
 }  // namespace

@@ -40,23 +40,15 @@ int Fail(const ServiceBinarySpec& spec, const absl::Status& status, int code) {
 
 int RunServiceBinary(int argc, char** argv, const ServiceBinarySpec& spec) {
   SetLogComponent(spec.binary);
-  absl::StatusOr<ParsedFlags> flags = ParseFlags(argc, argv, 1, Flags());
-  if (!flags.ok()) return Fail(spec, flags.status(), 2);
-  if (flags->Has("help")) {
-    std::cout << Usage(spec);
-    return 0;
-  }
-  if (!flags->positional.empty()) {
-    return Fail(spec, absl::InvalidArgumentError("unexpected argument '" + flags->positional[0] + "'"), 2);
-  }
+  const ParsedFlags flags = ParseFlagsOrExit(argc, argv, Flags(), spec.binary, Usage(spec));
 
   absl::StatusOr<ConfigReader> config =
-      flags->Has("config") ? ConfigReader::FromFile(*flags->Get("config")) : ConfigReader::Empty();
+      flags.Has("config") ? ConfigReader::FromFile(*flags.Get("config")) : ConfigReader::Empty();
   if (!config.ok()) return Fail(spec, config.status(), 2);
 
   std::string level_name = "warning";
   config->Read("log_level", &level_name);
-  if (auto flag_level = flags->Get("log_level")) level_name = *flag_level;
+  if (auto flag_level = flags.Get("log_level")) level_name = *flag_level;
   absl::StatusOr<LogLevel> level = ParseLogLevel(level_name);
   if (!level.ok()) return Fail(spec, level.status(), 2);
   SetLogLevel(*level);
@@ -65,7 +57,7 @@ int RunServiceBinary(int argc, char** argv, const ServiceBinarySpec& spec) {
   defaults.listen = spec.default_listen;
   ConfigReader server_section = config->Child("server");
   ServerOptions options = ServerOptions::FromConfig(server_section, defaults);
-  if (auto listen = flags->Get("listen")) options.listen = *listen;
+  if (auto listen = flags.Get("listen")) options.listen = *listen;
 
   // Signals are taken synchronously by this thread; block them before gRPC starts its threads.
   sigset_t stop_signals;

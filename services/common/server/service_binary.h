@@ -20,9 +20,10 @@ struct ServiceBinarySpec {
   std::function<absl::Status(ConfigReader& section, ServiceHost& host)> setup;
 };
 
-// The whole main(): --help/--config/--listen/--log_level, config loading (unknown keys and bad
-// values fail with their path, exit 2), serving, and a graceful stop on SIGTERM/SIGINT
-// (exit 0). Prints "<binary> serving on <host>:<port>" on stdout once healthy.
+// The whole main(): --help/--config/--listen/--log_level (ParseFlagsOrExit: unknown flags exit 2
+// with the usage), config loading (unknown keys and bad values fail with their path, exit 2),
+// serving, and a graceful stop on SIGTERM/SIGINT (exit 0). Prints "<binary> serving on
+// <host>:<port>" on stdout once healthy.
 int RunServiceBinary(int argc, char** argv, const ServiceBinarySpec& spec);
 
 }  // namespace semnav

@@ -2,7 +2,6 @@
 // Usage: semnav-bench-mapping [--json FILE] [--png FILE] [--benchmark_* flags]
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <random>
@@ -13,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "services/common/cli/flags.h"
 #include "services/common/cli/help.h"
 #include "services/mapping/bench/figures.h"
 #include "services/mapping/bench/grid_image.h"
@@ -204,26 +204,20 @@ void MeasureAgreement() {
 }  // namespace semnav::mapping::bench
 
 int main(int argc, char** argv) {
+  constexpr char kUsage[] =
+      "usage: semnav-bench-mapping [--json FILE] [--png FILE] [--benchmark_* flags]\n"
+      "Frame integration vs plain OctoMap, agreement, FR-079 grid, scene-graph update.\n";
+  // Before benchmark::Initialize, which would answer --help with its own text.
   if (semnav::HelpRequested(argc, argv)) {
-    std::printf("usage: semnav-bench-mapping [--json FILE] [--png FILE] [--benchmark_* flags]\n"
-                "Frame integration vs plain OctoMap, agreement, FR-079 grid, scene-graph update.\n");
+    std::printf("%s", kUsage);
     return 0;
   }
   using namespace semnav::mapping::bench;
-  std::string json_path;
-  std::vector<char*> args{argv[0]};
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--json") == 0 && i + 1 < argc) {
-      json_path = argv[++i];
-    } else if (std::strcmp(argv[i], "--png") == 0 && i + 1 < argc) {
-      g_png_path = argv[++i];
-    } else {
-      args.push_back(argv[i]);
-    }
-  }
-  int bench_argc = static_cast<int>(args.size());
-  benchmark::Initialize(&bench_argc, args.data());
-  if (benchmark::ReportUnrecognizedArguments(bench_argc, args.data())) return 2;
+  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
+  const semnav::ParsedFlags flags = semnav::ParseFlagsOrExit(
+      argc, argv, {{"json", "FILE", ""}, {"png", "FILE", ""}}, "semnav-bench-mapping", kUsage);
+  const std::string json_path = flags.Get("json").value_or("");
+  if (auto png = flags.Get("png")) g_png_path = *png;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   MeasureAgreement();

@@ -26,7 +26,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "nlohmann/json.hpp"
-#include "services/common/cli/help.h"
+#include "services/common/cli/flags.h"
 #include "services/modelproxy/core/http_backend.h"
 #include "services/modelproxy/core/model_proxy.h"
 #include "services/modelproxy/core/openai_wire.h"
@@ -43,30 +43,32 @@ struct Flags {
 };
 
 constexpr char kUsage[] =
-    "usage: semnav-bench-modelproxy [--json FILE] [--calls N] [--callers N] [--seconds S]\n";
+    "usage: semnav-bench-modelproxy [--json FILE] [--calls N] [--callers N] [--seconds S]\n"
+    "Proxy overhead per call beyond the backend's own time, throughput with concurrent\n"
+    "callers, and fallback switch time, against a local OpenAI-format test server.\n";
 
-// nullopt (after printing the usage) for unknown flags, missing or out-of-range values.
-std::optional<Flags> ParseFlags(int argc, char** argv) {
+// Exits (ParseFlagsOrExit) on unknown flags and missing values; nullopt after printing the
+// reason and the usage for out-of-range values.
+std::optional<Flags> ReadFlags(int argc, char** argv) {
+  const ParsedFlags parsed = ParseFlagsOrExit(
+      argc, argv,
+      {{"json", "FILE", ""}, {"calls", "N", ""}, {"callers", "N", ""}, {"seconds", "S", ""}},
+      "semnav-bench-modelproxy", kUsage);
   Flags f;
-  for (int i = 1; i < argc; i += 2) {
-    const std::string name = argv[i];
-    const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
-    bool ok = value != nullptr;
-    if (ok && name == "--json") {
-      f.json_path = value;
-    } else if (ok && name == "--calls") {
-      ok = absl::SimpleAtoi(value, &f.calls) && f.calls >= 3;
-    } else if (ok && name == "--callers") {
-      ok = absl::SimpleAtoi(value, &f.callers) && f.callers >= 1;
-    } else if (ok && name == "--seconds") {
-      ok = absl::SimpleAtod(value, &f.seconds) && f.seconds > 0;
-    } else {
-      ok = false;
-    }
-    if (!ok) {
-      std::cerr << kUsage;
-      return std::nullopt;
-    }
+  f.json_path = parsed.Get("json").value_or(f.json_path);
+  std::string bad;
+  if (auto v = parsed.Get("calls"); v && !(absl::SimpleAtoi(*v, &f.calls) && f.calls >= 3)) {
+    bad = "--calls: expected an integer >= 3";
+  } else if (auto v = parsed.Get("callers");
+             v && !(absl::SimpleAtoi(*v, &f.callers) && f.callers >= 1)) {
+    bad = "--callers: expected an integer >= 1";
+  } else if (auto v = parsed.Get("seconds");
+             v && !(absl::SimpleAtod(*v, &f.seconds) && f.seconds > 0)) {
+    bad = "--seconds: expected a number > 0";
+  }
+  if (!bad.empty()) {
+    std::cerr << "semnav-bench-modelproxy: " << bad << "\n" << kUsage;
+    return std::nullopt;
   }
   return f;
 }
@@ -196,13 +198,7 @@ std::vector<double> MeasureFallback(const std::string& primary_url,
 }  // namespace
 
 int Main(int argc, char** argv) {
-  if (HelpRequested(argc, argv)) {
-    std::cout << kUsage
-              << "Proxy overhead per call beyond the backend's own time, throughput with concurrent\n"
-                 "callers, and fallback switch time, against a local OpenAI-format test server.\n";
-    return 0;
-  }
-  const std::optional<Flags> parsed = ParseFlags(argc, argv);
+  const std::optional<Flags> parsed = ReadFlags(argc, argv);
   if (!parsed) return 2;
   const Flags& flags = *parsed;
   testing::FakeVendorServer vendor;

@@ -18,6 +18,8 @@
 
 #include "benchmark/benchmark.h"
 #include "nlohmann/json.hpp"
+#include "services/common/cli/flags.h"
+#include "services/common/cli/help.h"
 #include "services/reasoning/bench/loopback_latency.h"
 #include "services/reasoning/core/fast_resolver.h"
 #include "services/reasoning/core/scene_graph_json.h"
@@ -168,20 +170,18 @@ nlohmann::json Figures() {
 }  // namespace semnav::reasoning
 
 int main(int argc, char** argv) {
-  std::string json_path;
-  std::vector<char*> args;
-  for (int i = 0; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--json" && i + 1 < argc) {
-      json_path = argv[++i];
-    } else if (arg.rfind("--json=", 0) == 0) {
-      json_path = arg.substr(7);
-    } else {
-      args.push_back(argv[i]);
-    }
+  constexpr char kUsage[] =
+      "usage: semnav-bench-gateway [--json FILE] [--benchmark_* flags]\n"
+      "Fast-path resolve, ESCA grounding and instruction-to-command latency of the gateway.\n";
+  // Before benchmark::Initialize, which would answer --help with its own text.
+  if (semnav::HelpRequested(argc, argv)) {
+    std::printf("%s", kUsage);
+    return 0;
   }
-  int bench_argc = static_cast<int>(args.size());
-  benchmark::Initialize(&bench_argc, args.data());
+  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
+  const semnav::ParsedFlags flags =
+      semnav::ParseFlagsOrExit(argc, argv, {{"json", "FILE", ""}}, "semnav-bench-gateway", kUsage);
+  const std::string json_path = flags.Get("json").value_or("");
   benchmark::RunSpecifiedBenchmarks();
   const nlohmann::json figures = semnav::reasoning::Figures();
   std::printf("\n%-40s %s\n", "figure", "value");

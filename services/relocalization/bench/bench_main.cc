@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include "services/common/cli/flags.h"
 #include "services/common/cli/help.h"
 #include "services/relocalization/bench/evaluation.h"
 #include "services/relocalization/core/hungarian.h"
@@ -26,28 +27,22 @@ struct Options {
   uint32_t seed = 1;
 };
 
-// Takes our flags out of argv; the rest goes to Google Benchmark.
-Options ParseOptions(int* argc, char** argv) {
+constexpr char kUsage[] =
+    "usage: semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S]"
+    " [--benchmark_* flags]\n"
+    "Seed 001 relocalization vs the RANSAC + Umeyama baseline on seeded scenarios.\n";
+
+// Our flags, once benchmark::Initialize has taken its own out of argv.
+Options ParseOptions(int argc, char** argv) {
+  const ParsedFlags flags = ParseFlagsOrExit(
+      argc, argv, {{"json", "FILE", ""}, {"keyframes", "N", ""}, {"seed", "S", ""}},
+      "semnav-bench-relocalization", kUsage);
   Options o;
-  int out = 1;
-  for (int i = 1; i < *argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&](const std::string& name) -> const char* {
-      if (arg == name && i + 1 < *argc) return argv[++i];
-      if (arg.rfind(name + "=", 0) == 0) return argv[i] + name.size() + 1;
-      return nullptr;
-    };
-    if (const char* v = value("--json")) {
-      o.json_path = v;
-    } else if (const char* v = value("--keyframes")) {
-      o.keyframes = std::strtoul(v, nullptr, 10);
-    } else if (const char* v = value("--seed")) {
-      o.seed = static_cast<uint32_t>(std::strtoul(v, nullptr, 10));
-    } else {
-      argv[out++] = argv[i];
-    }
+  o.json_path = flags.Get("json").value_or(o.json_path);
+  if (auto v = flags.Get("keyframes")) o.keyframes = std::strtoul(v->c_str(), nullptr, 10);
+  if (auto v = flags.Get("seed")) {
+    o.seed = static_cast<uint32_t>(std::strtoul(v->c_str(), nullptr, 10));
   }
-  *argc = out;
   return o;
 }
 
@@ -115,13 +110,13 @@ void BM_Hungarian8x8(benchmark::State& state) {
 BENCHMARK(BM_Hungarian8x8);
 
 int Main(int argc, char** argv) {
+  // Before benchmark::Initialize, which would answer --help with its own text.
   if (HelpRequested(argc, argv)) {
-    std::cout << "usage: semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S]"
-                 " [--benchmark_* flags]\n"
-                 "Seed 001 relocalization vs the RANSAC + Umeyama baseline on seeded scenarios.\n";
+    std::cout << kUsage;
     return 0;
   }
-  const Options options = ParseOptions(&argc, argv);
+  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
+  const Options options = ParseOptions(argc, argv);
   const RelocalizationParams params;
   const eval::BaselineParams baseline;
   const eval::SuccessBounds bounds;
@@ -163,7 +158,6 @@ int Main(int argc, char** argv) {
       return 1;
     }
   }
-  benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
