@@ -9,6 +9,7 @@
 #include "absl/strings/str_cat.h"
 #include "services/common/cli/executable_dir.h"
 #include "services/common/cli/flags.h"
+#include "services/common/cli/help.h"
 #include "services/launcher/health_probe.h"
 #include "services/launcher/stack_runner.h"
 
@@ -153,6 +154,10 @@ int main(int argc, char** argv) {
   }
   if (command == "demo") return ExecSibling("semnav-sim-demo", argc, argv, 2);
   if (command == "up" || command == "status") {
+    if (semnav::HelpRequested(argc, argv)) {
+      std::cout << kUsage;
+      return 0;
+    }
     absl::StatusOr<StackCommand> parsed = StackFromFlags(command, argc, argv);
     if (!parsed.ok()) {
       std::cerr << "semnav " << command << ": " << parsed.status().message() << "\n" << kUsage;

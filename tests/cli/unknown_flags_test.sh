@@ -73,7 +73,10 @@ done
 
 if [[ -x $bin_dir/semnav ]]; then
   refuses "$bin_dir/semnav" up
+  refuses "$bin_dir/semnav" up --sim-robot
   refuses "$bin_dir/semnav" status
+  helps "$bin_dir/semnav" up
+  helps "$bin_dir/semnav" status
   refuses "$bin_dir/semnav" demo
   refuses "$bin_dir/semnav" probe --addr 127.0.0.1:1
   # `semnav bench AREA` execs semnav-bench-AREA with the rest of the line.
