@@ -35,9 +35,7 @@ const std::vector<semnav::FlagSpec> kFlags = {
     {"out", "DIR", "report folder (default semnav_demo_report)"},
     {"default-ports", "", "start the services on deploy/local.yaml's ports instead of free ones"},
     {"remote", "FILE",
-     "start nothing: use the gateway, mapping and planning of FILE's client sections (address, "
-     "tls.*, "
-     "auth.*; see docs/operations.md)"},
+     "start nothing: use FILE's gateway, mapping and planning (docs/operations.md)"},
     {"world-seed", "N", "seed of the generated home (default 11, demo_home_11)"},
     {"help", "", "this text"},
 };
@@ -238,7 +236,12 @@ int main(int argc, char** argv) {
       sim::SuccessWeightedPathLength(r.success, r.shortest_path_m, r.path_m), r.path_m,
       r.shortest_path_m, r.distance_to_goal_m, spec->success_radius, r.model_calls,
       r.goals_fast_path > 0 ? "yes" : "no", r.energy_j);
-  if (!r.success) std::cout << "  the task ended " << result->final_reason << "\n";
+  if (!r.success && result->steps >= spec->max_steps) {
+    std::cout << absl::StrFormat("  the step budget (%d steps) ran out while %s: %s\n",
+                                 spec->max_steps, result->phase, result->final_reason);
+  } else if (!r.success) {
+    std::cout << absl::StrFormat("  the task ended %s: %s\n", result->phase, result->final_reason);
+  }
 
   std::ofstream report(out_dir + "/demo.md");
   report
