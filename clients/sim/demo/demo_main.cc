@@ -43,9 +43,9 @@ const std::vector<semnav::FlagSpec> kFlags = {
 void PrintUsage(std::ostream& out) {
   out << "usage: semnav-sim-demo [--out DIR] [--default-ports | --remote FILE] [--world-seed N]\n"
       << semnav::FlagsHelp(kFlags)
-      << "Runs one search episode: a generated home, a target out of sight from the start. Exit 0 "
-         "when\n"
-         "the robot finds it, 3 when it does not, 1 when the episode cannot run, 2 on bad flags.\n";
+      << "Runs one search episode: a generated home, a target out of sight from the start.\n"
+         "Exit 0 when the robot finds it, 3 when it does not, 1 when the episode cannot run,\n"
+         "2 on bad flags.\n";
 }
 
 // Simulated seconds between progress lines; phase changes and the first sight of the target
@@ -187,10 +187,9 @@ int main(int argc, char** argv) {
   std::cout << absl::StrFormat("world %s, start %d, instruction \"find a %s\" (gateway %s)\n",
                                spec->world.name, spec->start_index, spec->target, gateway_address)
             << absl::StrFormat(
-                   "  a generated home the robot has never seen (its map starts empty); no %s is "
-                   "in sight from\n"
-                   "  the start at (%.1f, %.1f); the nearest is %.1f m away by the shortest path. "
-                   "Strategy %s.\n",
+                   "  a generated home the robot has never seen (its map starts empty); no %s\n"
+                   "  is in sight from the start at (%.1f, %.1f); the nearest is %.1f m away by\n"
+                   "  the shortest path. Strategy %s.\n",
                    spec->target, start.position.x(), start.position.y(),
                    nearest ? nearest->length_m : 0.0, spec->strategy)
             << std::flush;
@@ -229,9 +228,9 @@ int main(int argc, char** argv) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   const sim::EpisodeRecord& r = result->record;
   std::cout << absl::StrFormat(
-      "%s after %d steps (%.1f s simulated, %.1f s wall): SR %d, SPL %.3f, path %.2f m, shortest "
-      "%.2f m, "
-      "DTG %.2f m (success radius %.1f m), model calls %d, fast path %s, energy %.0f J\n",
+      "%s after %d steps (%.1f s simulated, %.1f s wall): SR %d, SPL %.3f, path %.2f m, "
+      "shortest %.2f m, DTG %.2f m (success radius %.1f m), model calls %d, fast path %s, "
+      "energy %.0f J\n",
       r.success ? "SUCCESS" : "FAILURE", result->steps, r.time_s, wall_s, r.success ? 1 : 0,
       sim::SuccessWeightedPathLength(r.success, r.shortest_path_m, r.path_m), r.path_m,
       r.shortest_path_m, r.distance_to_goal_m, spec->success_radius, r.model_calls,
@@ -250,8 +249,8 @@ int main(int argc, char** argv) {
              "%s, start %d: find a %s, out of sight from the start (shortest path %.2f m), %s.\n\n",
              spec->world.name, spec->start_index, spec->target, r.shortest_path_m, spec->strategy)
       << semnav::sim::bench::MissionTable({r}, spec->success_radius)
-      << "\n## Timeline (simulated time: the task's phases, every command and the robot's "
-         "answer)\n\n```\n";
+      << "\n## Timeline (simulated time: the task's phases, every command and the robot's"
+         " answer)\n\n```\n";
   for (const std::string& line : result->timeline) report << line << "\n";
   report << "```\n";
   // The plot shows walls and furniture as they are, not grown by the robot's radius.
