@@ -41,8 +41,8 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
 }
 
 // The demo's episode: the couch is out of sight from the start (search_episode_test.cc), so the
-// robot must explore with SEMANTIC_FRONTIER before it can see and reach it. Succeeded 16 times in
-// 16 (8 with the other core busy) at 127-149 steps.
+// robot must explore with SEMANTIC_FRONTIER before it can see and reach it. Succeeded 26 times in
+// 26 (13 with the other core busy) at 127-149 steps.
 TEST(SimLoopIntegrationTest, SearchEpisodeFindsTheCouchOutOfSight) {
   absl::StatusOr<EpisodeSpec> spec = SearchEpisode();
   ASSERT_TRUE(spec.ok()) << spec.status();
