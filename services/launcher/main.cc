@@ -35,8 +35,9 @@ Commands:
   bench <area> [args...]    run the benchmark of an area (e.g. mapping, planning,
                             relocalization, modelproxy, gateway, mission); `--json FILE` writes
                             its figures
-  demo [args...]            start the stack, run one short simulated indoor mission, print the
-                            result and where the report is
+  demo [args...]            start the stack, run one simulated search mission (a target out of
+                            sight in a generated home), print its progress, the result and where
+                            the report is (`semnav demo --help`)
   help                      this text
 
 Without --config the embedded localhost stack (same as deploy/local.yaml) is used: no model

@@ -110,6 +110,7 @@ void RecordTask(const api::TaskSnapshot& task, const SimRobot& robot, EpisodeRes
   }
   result.final_status = task.status();
   result.final_reason = task.reason();
+  result.phase = task.phase();
   result.record.model_calls = task.model_calls();  // every proxy call: slow path, vision, region scores
   const bool resolved = task.has_target() && task.target().path() != api::RESOLUTION_PATH_UNSPECIFIED;
   result.record.goals_resolved = resolved ? 1 : 0;
@@ -178,6 +179,9 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   // the gateway when asked for.
   auto send_frame = [&]() -> absl::Status {
     const SensorFrame captured = robot.Capture();
+    for (const Detection& d : captured.detections.detections) {
+      if (d.object_index >= 0) result.seen_objects.insert(d.object_index);
+    }
     if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(captured, spec.robot_id));
         !ack.ok()) {
       return ack.status();

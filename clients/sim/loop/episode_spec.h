@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct EpisodeResult {
   int collisions = 0;
   std::vector<Eigen::Vector2d> trajectory;  // true xy per step, for plots
   std::vector<Eigen::Vector2d> goals;       // distinct navigate goals the gateway sent, for plots
+  std::string phase;                        // the task's latest phase, for progress displays
+  // World::objects indices the robot's detector reported so far (true identity), for progress
+  // displays and plots.
+  std::set<int> seen_objects;
   // What the gateway decided and the robot answered, one line per change ("t=12.5s ..."),
   // so a failed episode can be read back.
   std::vector<std::string> timeline;

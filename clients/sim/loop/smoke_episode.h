@@ -1,5 +1,6 @@
 // A short indoor episode whose target is in sight: a generated home, the first start, turned to
-// face the nearest object with a free straight approach. Shared by the smoke test and the demo.
+// face the nearest object with a free straight approach. Shared by the smoke tests and the
+// dashboard's simulated robot; the demo searches instead (search_episode.h).
 #pragma once
 
 #include <cstdint>
