@@ -92,7 +92,7 @@ struct RunningStack {
   std::string printed;
 };
 
-RunningStack StartUp(const std::string& stack) {
+RunningStack StartUp(const std::string& stack, const char* path_env = nullptr) {
   RunningStack running;
   int out[2];
   if (::pipe(out) != 0) return running;
@@ -100,6 +100,7 @@ RunningStack StartUp(const std::string& stack) {
   if (running.pid == 0) {
     ::dup2(out[1], STDOUT_FILENO);
     const std::string path = BinaryPath("semnav");
+    if (path_env != nullptr) ::setenv("PATH", path_env, 1);
     ::execl(path.c_str(), path.c_str(), "up", "--config", stack.c_str(), nullptr);
     ::_exit(127);
   }
@@ -215,6 +216,31 @@ TEST(LauncherTest, NoServiceOutlivesAKilledLauncher) {
     while (Alive(child.pid) && absl::Now() < deadline) absl::SleepFor(absl::Milliseconds(50));
     EXPECT_FALSE(Alive(child.pid)) << name << " outlived its launcher";
   }
+}
+
+TEST(LauncherTest, WithoutNodeTheStackStartsAndSaysWhyThereIsNoDashboard) {
+  const std::string stack = WriteStack();
+  std::ofstream(stack, std::ios::app) << "dashboard: {listen: '127.0.0.1:" << *semnav::launcher::FreeLoopbackPort()
+                                      << "'}\n";
+  RunningStack running = StartUp(stack, "/nonexistent");
+  EXPECT_THAT(running.printed, HasSubstr("semnav stack is up"));
+  EXPECT_THAT(running.printed, HasSubstr("dashboard: not started: Node.js (`node`) is not on PATH"));
+  EXPECT_THAT(running.printed, ::testing::Not(HasSubstr("dashboard: http")));
+  const int code = StopUp(running);
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
+}
+
+TEST(LauncherTest, DashboardIsServedAndItsUrlPrinted) {
+  const std::string stack = WriteStack();
+  const int port = *semnav::launcher::FreeLoopbackPort();
+  std::ofstream(stack, std::ios::app) << "dashboard: {listen: '127.0.0.1:" << port << "'}\n";
+  RunningStack running = StartUp(stack);
+  EXPECT_THAT(running.printed, HasSubstr(absl::StrCat("dashboard: http://127.0.0.1:", port, "/")));
+  absl::StatusOr<ProcessResult> status = RunToCompletion("semnav", {"status", "--config", stack});
+  ASSERT_TRUE(status.ok());
+  EXPECT_THAT(status->output, HasSubstr(absl::StrCat("SERVING http://127.0.0.1:", port, "/")));
+  const int code = StopUp(running);
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
 }
 
 TEST(LauncherTest, UnknownBenchAreaListsTheBuiltOnes) {
