@@ -3,12 +3,14 @@
 #include <google/protobuf/any.pb.h>
 
 #include "absl/strings/match.h"
+#include "services/common/status/field_error.h"
 #include "absl/strings/str_cat.h"
 
 namespace semnav {
 namespace {
 
 constexpr absl::string_view kTypeUrlPrefix = "type.googleapis.com/";
+constexpr size_t kMaxStatusMessageBytes = 1024;
 
 }  // namespace
 
@@ -16,17 +18,31 @@ grpc::Status ToGrpcStatus(const absl::Status& status) {
   if (status.ok()) return grpc::Status::OK;
   // absl and gRPC share the canonical code numbering (0-16).
   const auto code = static_cast<grpc::StatusCode>(status.code());
-  const std::string message(status.message());
+  // Messages stay short whatever a request carried: clients have an 8 KB metadata limit.
+  std::string message(status.message().substr(0, kMaxStatusMessageBytes));
+  if (status.message().size() > kMaxStatusMessageBytes) message += "...";
   semnav::common::v1::RichStatus rich;
   rich.set_code(static_cast<int>(status.code()));
   rich.set_message(message);
-  status.ForEachPayload([&rich](absl::string_view type_url, const absl::Cord& payload) {
+  const std::string error_info_url =
+      absl::StrCat(kTypeUrlPrefix, semnav::common::v1::ErrorInfo::descriptor()->full_name());
+  bool has_error_info = false;
+  status.ForEachPayload([&](absl::string_view type_url, const absl::Cord& payload) {
     if (!absl::StartsWith(type_url, kTypeUrlPrefix)) return;
+    has_error_info |= type_url == error_info_url;
     google::protobuf::Any* any = rich.add_details();
     any->set_type_url(std::string(type_url));
     any->set_value(std::string(payload));
   });
-  if (rich.details_size() == 0) return grpc::Status(code, message);
+  // Every error carries an ErrorInfo: the field and reason core named, or the code's name.
+  if (!has_error_info) {
+    semnav::common::v1::ErrorInfo info;
+    info.set_reason(ErrorReason(status).value_or(absl::StatusCodeToString(status.code())));
+    info.set_field(ErrorField(status).value_or(""));
+    google::protobuf::Any* any = rich.add_details();
+    any->set_type_url(error_info_url);
+    any->set_value(info.SerializeAsString());
+  }
   return grpc::Status(code, message, rich.SerializeAsString());
 }
 

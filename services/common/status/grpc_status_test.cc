@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "services/common/status/field_error.h"
+
 namespace semnav {
 namespace {
 
@@ -13,7 +15,11 @@ TEST(GrpcStatusTest, CodesAndMessagesSurvive) {
   const grpc::Status s = ToGrpcStatus(absl::NotFoundError("map 'lab' not found"));
   EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
   EXPECT_EQ(s.error_message(), "map 'lab' not found");
-  EXPECT_TRUE(s.error_details().empty());
+  // An error about no field still carries an ErrorInfo: its reason is the code's name.
+  std::optional<ErrorInfo> info = GetDetail<ErrorInfo>(s);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->reason(), "NOT_FOUND");
+  EXPECT_EQ(info->field(), "");
   EXPECT_EQ(ToGrpcStatus(absl::DeadlineExceededError("x")).error_code(),
             grpc::StatusCode::DEADLINE_EXCEEDED);
   EXPECT_EQ(ToGrpcStatus(absl::DataLossError("x")).error_code(), grpc::StatusCode::DATA_LOSS);
@@ -57,7 +63,26 @@ TEST(GrpcStatusTest, AttachDetailReplacesSameTypeAndIgnoresOk) {
 TEST(GrpcStatusTest, NonProtoPayloadsStayLocal) {
   absl::Status status = absl::InternalError("boom");
   status.SetPayload("local/trace", absl::Cord("secret-ish"));
-  EXPECT_TRUE(ToGrpcStatus(status).error_details().empty());
+  const grpc::Status wire = ToGrpcStatus(status);
+  EXPECT_EQ(wire.error_details().find("secret-ish"), std::string::npos);
+  EXPECT_EQ(GetDetail<ErrorInfo>(wire)->reason(), "INTERNAL");
+}
+
+TEST(GrpcStatusTest, CoreFieldStatusBecomesErrorInfoWithoutStringParsing) {
+  const grpc::Status wire = ToGrpcStatus(FieldStatus(absl::StatusCode::kNotFound, "map_id", "no such map", "MAP_NOT_FOUND"));
+  EXPECT_EQ(wire.error_code(), grpc::StatusCode::NOT_FOUND);
+  std::optional<ErrorInfo> info = GetDetail<ErrorInfo>(wire);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "map_id");
+  EXPECT_EQ(info->reason(), "MAP_NOT_FOUND");
+  // The local payloads are not sent as such.
+  EXPECT_EQ(wire.error_details().find("semnav.dev/"), std::string::npos);
+}
+
+TEST(GrpcStatusTest, HugeMessagesAreCutShort) {
+  const grpc::Status wire = ToGrpcStatus(absl::InvalidArgumentError(std::string(1 << 20, 'x')));
+  EXPECT_LE(wire.error_message().size(), 1100u);
+  EXPECT_LT(wire.error_details().size(), 1200u);
 }
 
 }  // namespace

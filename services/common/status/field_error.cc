@@ -1,0 +1,39 @@
+#include "services/common/status/field_error.h"
+
+#include "absl/strings/cord.h"
+#include "absl/strings/escaping.h"
+#include "absl/strings/str_cat.h"
+
+namespace semnav {
+
+absl::Status FieldStatus(absl::StatusCode code, absl::string_view field, absl::string_view why,
+                         absl::string_view reason) {
+  absl::Status status(code, absl::StrCat(field, ": ", why));
+  status.SetPayload(kFieldPayloadUrl, absl::Cord(field));
+  status.SetPayload(kReasonPayloadUrl, absl::Cord(reason));
+  return status;
+}
+
+absl::Status InvalidField(absl::string_view field, absl::string_view why) {
+  return FieldStatus(absl::StatusCode::kInvalidArgument, field, why);
+}
+
+std::optional<std::string> ErrorField(const absl::Status& status) {
+  absl::optional<absl::Cord> payload = status.GetPayload(kFieldPayloadUrl);
+  if (!payload) return std::nullopt;
+  return std::string(*payload);
+}
+
+std::optional<std::string> ErrorReason(const absl::Status& status) {
+  absl::optional<absl::Cord> payload = status.GetPayload(kReasonPayloadUrl);
+  if (!payload) return std::nullopt;
+  return std::string(*payload);
+}
+
+std::string Preview(absl::string_view value, size_t max_chars) {
+  // Escaped: a bad value may hold any bytes, a message is for people and logs.
+  if (value.size() <= max_chars) return absl::CEscape(value);
+  return absl::StrCat(absl::CEscape(value.substr(0, max_chars)), "... (", value.size(), " bytes)");
+}
+
+}  // namespace semnav
