@@ -2,9 +2,14 @@
 
 #include <iostream>
 
-#include <curl/curl.h>
+#include <netdb.h>
+#include <sys/socket.h>
+#include <sys/time.h>
+#include <unistd.h>
+
 #include <grpcpp/client_context.h>
 
+#include "absl/strings/match.h"
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -29,18 +34,49 @@ absl::StatusOr<std::string> ProbeHealth(const ClientOptions& client, const std::
 }
 
 absl::Status ProbeHttp(const std::string& url, absl::Duration timeout) {
-  CURL* curl = curl_easy_init();
-  if (curl == nullptr) return absl::InternalError("curl_easy_init failed");
-  curl_easy_setopt(curl, CURLOPT_URL, url.c_str());
-  curl_easy_setopt(curl, CURLOPT_TIMEOUT_MS, static_cast<long>(absl::ToInt64Milliseconds(timeout)));
-  curl_easy_setopt(curl, CURLOPT_NOSIGNAL, 1L);
-  curl_easy_setopt(curl, CURLOPT_WRITEFUNCTION, +[](char*, size_t size, size_t count, void*) { return size * count; });
-  const CURLcode code = curl_easy_perform(curl);
-  long http_status = 0;
-  curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &http_status);
-  curl_easy_cleanup(curl);
-  if (code != CURLE_OK) return absl::UnavailableError(curl_easy_strerror(code));
-  if (http_status < 200 || http_status >= 300) return absl::UnavailableError(absl::StrCat("HTTP ", http_status));
+  // A plain HTTP/1.0 GET over a socket: the service images carry `semnav` for health checks and
+  // should not need libcurl for it. Only http://HOST:PORT/PATH is understood.
+  constexpr absl::string_view kScheme = "http://";
+  if (!absl::StartsWith(url, kScheme)) return absl::InvalidArgumentError("only http:// URLs");
+  const std::string rest = url.substr(kScheme.size());
+  const size_t slash = rest.find('/');
+  const std::string authority = rest.substr(0, slash);
+  const std::string path = slash == std::string::npos ? "/" : rest.substr(slash);
+  const size_t colon = authority.rfind(':');
+  if (colon == std::string::npos) return absl::InvalidArgumentError("URL without a port");
+  std::string host = authority.substr(0, colon);
+  if (host.size() >= 2 && host.front() == '[') host = host.substr(1, host.size() - 2);
+  addrinfo hints{};
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* found = nullptr;
+  if (::getaddrinfo(host.c_str(), authority.substr(colon + 1).c_str(), &hints, &found) != 0) {
+    return absl::UnavailableError(absl::StrCat("cannot resolve ", host));
+  }
+  const int fd = ::socket(found->ai_family, found->ai_socktype, found->ai_protocol);
+  timeval limit = absl::ToTimeval(timeout);
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof(limit));
+  ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &limit, sizeof(limit));
+  const bool connected = fd >= 0 && ::connect(fd, found->ai_addr, found->ai_addrlen) == 0;
+  ::freeaddrinfo(found);
+  if (!connected) {
+    if (fd >= 0) ::close(fd);
+    return absl::UnavailableError("connection refused");
+  }
+  const std::string request = absl::StrCat("GET ", path, " HTTP/1.0\r\nHost: ", authority, "\r\n\r\n");
+  std::string reply;
+  if (::send(fd, request.data(), request.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(request.size())) {
+    char buffer[256];
+    ssize_t n;
+    while (reply.size() < 64 && (n = ::recv(fd, buffer, sizeof(buffer), 0)) > 0) reply.append(buffer, static_cast<size_t>(n));
+  }
+  ::close(fd);
+  // "HTTP/1.1 200 OK"
+  const size_t space = reply.find(' ');
+  int status = 0;
+  if (space == std::string::npos || !absl::SimpleAtoi(reply.substr(space + 1, 3), &status)) {
+    return absl::UnavailableError("no HTTP answer");
+  }
+  if (status < 200 || status >= 300) return absl::UnavailableError(absl::StrCat("HTTP ", status));
   return absl::OkStatus();
 }
 

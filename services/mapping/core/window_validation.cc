@@ -3,18 +3,15 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::mapping {
 namespace {
 
-absl::Status Invalid(absl::string_view field, absl::string_view why) {
-  return absl::InvalidArgumentError(absl::StrCat(field, ": ", why));
-}
-
 absl::Status CheckCoordinate(double value, absl::string_view field, const WindowLimits& limits) {
-  if (!std::isfinite(value)) return Invalid(field, "must be finite");
+  if (!std::isfinite(value)) return InvalidField(field, "must be finite");
   if (std::abs(value) > limits.max_abs_coordinate_m) {
-    return Invalid(field, absl::StrCat("must be within +-", limits.max_abs_coordinate_m, " m"));
+    return InvalidField(field, absl::StrCat("must be within +-", limits.max_abs_coordinate_m, " m"));
   }
   return absl::OkStatus();
 }
@@ -30,13 +27,13 @@ absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max
   for (const auto& corner : corners) {
     if (absl::Status s = CheckCoordinate(corner.value, corner.field, limits); !s.ok()) return s;
   }
-  if (!(max_x > min_x)) return Invalid("window.max.x", "must be > window.min.x");
-  if (!(max_y > min_y)) return Invalid("window.max.y", "must be > window.min.y");
+  if (!(max_x > min_x)) return InvalidField("window.max.x", "must be > window.min.x");
+  if (!(max_y > min_y)) return InvalidField("window.max.y", "must be > window.min.y");
   // Both extents are finite and bounded here, so the product cannot overflow a double.
   const double cells = (std::floor(max_x / resolution_m) - std::floor(min_x / resolution_m) + 1) *
                        (std::floor(max_y / resolution_m) - std::floor(min_y / resolution_m) + 1);
   if (cells > static_cast<double>(limits.max_cells)) {
-    return Invalid("window", absl::StrCat("covers more than ", limits.max_cells, " cells of ", resolution_m,
+    return InvalidField("window", absl::StrCat("covers more than ", limits.max_cells, " cells of ", resolution_m,
                                           " m; ask for a smaller window"));
   }
   return absl::OkStatus();

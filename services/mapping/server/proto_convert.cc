@@ -1,5 +1,7 @@
 #include "services/mapping/server/proto_convert.h"
 
+#include "services/common/status/field_error.h"
+
 #include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
 #include "services/common/status/grpc_status.h"
@@ -186,7 +188,7 @@ void SceneToProto(const SceneSnapshot& scene, v1::SceneGraph* proto) {
 }
 
 absl::Status WithFieldDetail(absl::Status status) {
-  if (status.ok()) return status;
+  if (status.ok() || ErrorField(status).has_value()) return status;  // core named the field itself
   const absl::string_view message = status.message();
   const size_t colon = message.find(':');
   if (colon == absl::string_view::npos) return status;
