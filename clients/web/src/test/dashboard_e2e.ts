@@ -193,6 +193,10 @@ async function run(args: Args): Promise<void> {
     }, finishedId, { timeout: 10000 });
     check((await text(fresh, "#task-instruction")).includes(findInstruction) && (await fresh.locator("#task-subgoals li").count()) >= 1,
           `a fresh page shows the ended task ${finishedId} "${findInstruction}" as succeeded with its subgoals`);
+    // The events come after the card (a second call); the check below says what arrived.
+    await fresh.waitForFunction((id) => [...document.querySelectorAll<HTMLElement>(`#events li[data-task-id="${id}"]`)]
+      .some((item) => item.dataset.kind === "EVENT_KIND_TASK_STATUS" && item.textContent?.includes("TASK_STATUS_SUCCEEDED")),
+                                finishedId, { timeout: 5000 }).catch(() => undefined);
     const loggedKinds = await fresh.evaluate((id) => [...document.querySelectorAll<HTMLElement>(`#events li[data-task-id="${id}"]`)]
       .map((item) => `${item.dataset.kind}: ${item.textContent ?? ""}`), finishedId);
     check(loggedKinds.some((line) => line.startsWith("EVENT_KIND_TASK_CREATED:") && line.includes(findInstruction)) &&
