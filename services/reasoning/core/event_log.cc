@@ -9,11 +9,15 @@ const LoggedEvent& EventLog::Append(int kind, std::string robot_id, std::string 
   return events_.back();
 }
 
-std::vector<LoggedEvent> EventLog::After(uint64_t last_id, const std::string& robot_id, bool* truncated) const {
+std::vector<LoggedEvent> EventLog::After(uint64_t last_id, const std::string& robot_id, const std::string& task_id,
+                                         bool* truncated) const {
   *truncated = !events_.empty() && events_.front().id > last_id + 1;
   std::vector<LoggedEvent> out;
   for (const LoggedEvent& event : events_) {
-    if (event.id > last_id && (robot_id.empty() || event.robot_id == robot_id)) out.push_back(event);
+    if (event.id > last_id && (robot_id.empty() || event.robot_id == robot_id) &&
+        (task_id.empty() || event.task_id == task_id)) {
+      out.push_back(event);
+    }
   }
   return out;
 }

@@ -42,7 +42,7 @@ void GatewayHub::WatchEvents(const api::StreamEventsRequest& request, StreamSink
   }
   if (request.last_event_id() > 0) {
     bool truncated = false;
-    std::vector<LoggedEvent> replay = events_.After(request.last_event_id(), request.robot_id(), &truncated);
+    std::vector<LoggedEvent> replay = events_.After(request.last_event_id(), request.robot_id(), "", &truncated);
     for (std::size_t i = 0; i < replay.size(); ++i) {
       api::StreamEventsResponse response;
       *response.mutable_event() = ToProto(replay[i]);
@@ -56,6 +56,22 @@ void GatewayHub::WatchEvents(const api::StreamEventsRequest& request, StreamSink
 void GatewayHub::UnwatchEvents(StreamSink<api::StreamEventsResponse>* sink) {
   absl::MutexLock lock(&mu_);
   event_watchers_.erase(sink);
+}
+
+api::ListEventsResponse GatewayHub::ListEvents(const api::ListEventsRequest& request) {
+  absl::MutexLock lock(&mu_);
+  api::ListEventsResponse response;
+  bool truncated = false;
+  for (const LoggedEvent& event : events_.After(request.after_event_id(), request.robot_id(), request.task_id(), &truncated)) {
+    *response.add_events() = ToProto(event);
+  }
+  // The log drops its oldest events first, so a task whose creation is still listed lost none.
+  const bool whole_task = !request.task_id().empty() && response.events_size() > 0 &&
+                          response.events(0).kind() == api::EVENT_KIND_TASK_CREATED;
+  response.set_truncated(truncated && !whole_task);
+  // Under the same lock as the listing, so StreamEvents from here misses nothing.
+  response.set_last_event_id(events_.last_id());
+  return response;
 }
 
 api::StreamSlowTelemetryResponse GatewayHub::SlowSample(const std::string& robot_id) {

@@ -2,6 +2,7 @@
 #include "services/reasoning/server/gateway_hub.h"
 
 #include "absl/strings/match.h"
+#include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
 #include "services/reasoning/server/hub_test_support.h"
 #include "services/reasoning/server/robot_local_planner.h"
@@ -102,6 +103,80 @@ TEST(GatewayHubTest, LeaseErrorsNameTheFieldOnce) {
 
   const absl::Status refused = hub.Submit(SubmitRequest("s-1", "r2", "wait")).status();
   EXPECT_EQ(refused.message(), "lease_id: robot r2 is leased by alice");
+}
+
+// operator.proto ListEvents: a finished task's recorded events from its first (event 1, which
+// StreamEvents cannot replay) without other tasks', and the log's newest id to stream on from.
+TEST(GatewayHubTest, ListEventsGivesAFinishedTasksEventsAndTheNewestId) {
+  RobotLocalPlanner planner;
+  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner);
+  absl::StatusOr<api::SubmitInstructionResponse> first = hub.Submit(SubmitRequest("s-1", "r1", "wait"));
+  ASSERT_TRUE(first.ok()) << first.status();
+  api::CancelTaskRequest cancel;
+  cancel.set_request_id("c-1");
+  cancel.set_task_id(first->task_id());
+  cancel.set_reason("changed my mind");
+  ASSERT_TRUE(hub.Cancel(cancel).ok());
+  absl::StatusOr<api::SubmitInstructionResponse> second = hub.Submit(SubmitRequest("s-2", "r2", "wait"));
+  ASSERT_TRUE(second.ok()) << second.status();
+
+  api::ListEventsRequest request;
+  request.set_task_id(first->task_id());
+  const api::ListEventsResponse listed = hub.ListEvents(request);
+  ASSERT_GE(listed.events_size(), 2) << listed.DebugString();
+  EXPECT_FALSE(listed.truncated());
+  EXPECT_EQ(listed.events(0).event_id(), 1u);
+  EXPECT_EQ(listed.events(0).kind(), api::EVENT_KIND_TASK_CREATED);
+  EXPECT_EQ(listed.events(0).message(), "wait");
+  const api::Event& last = listed.events(listed.events_size() - 1);
+  EXPECT_EQ(last.kind(), api::EVENT_KIND_TASK_STATUS);
+  EXPECT_EQ(last.message(), "TASK_STATUS_CANCELLED: changed my mind");
+  for (const api::Event& event : listed.events()) EXPECT_EQ(event.task_id(), first->task_id());
+
+  const api::ListEventsResponse everything = hub.ListEvents(api::ListEventsRequest{});
+  ASSERT_GT(everything.events_size(), listed.events_size());
+  const api::Event& newest = everything.events(everything.events_size() - 1);
+  EXPECT_EQ(newest.task_id(), second->task_id());
+  EXPECT_EQ(listed.last_event_id(), newest.event_id());  // the whole log's, not the task's
+  EXPECT_EQ(everything.last_event_id(), newest.event_id());
+
+  request.set_task_id("");
+  request.set_robot_id("r2");
+  request.set_after_event_id(0);
+  const api::ListEventsResponse of_r2 = hub.ListEvents(request);
+  ASSERT_GT(of_r2.events_size(), 0);
+  for (const api::Event& event : of_r2.events()) EXPECT_EQ(event.task_id(), second->task_id());
+  request.set_robot_id("");
+  request.set_after_event_id(newest.event_id());
+  EXPECT_EQ(hub.ListEvents(request).events_size(), 0);
+}
+
+// A task whose creation is still retained lost no events, however much older ones were dropped.
+TEST(GatewayHubTest, ListEventsIsTruncatedOnlyWhenTheTasksOwnEventsWereDropped) {
+  RobotLocalPlanner planner;
+  GatewayConfig config;
+  config.retained_events = 3;
+  GatewayHub hub(config, &ShippedLexicon(), &planner);
+  std::vector<std::string> task_ids;
+  for (const char* robot : {"r1", "r2", "r3"}) {
+    absl::StatusOr<api::SubmitInstructionResponse> submitted =
+        hub.Submit(SubmitRequest(absl::StrCat("s-", robot), robot, "wait"));
+    ASSERT_TRUE(submitted.ok()) << submitted.status();
+    task_ids.push_back(submitted->task_id());
+    api::CancelTaskRequest cancel;
+    cancel.set_request_id(absl::StrCat("c-", robot));
+    cancel.set_task_id(submitted->task_id());
+    ASSERT_TRUE(hub.Cancel(cancel).ok());
+  }
+  EXPECT_TRUE(hub.ListEvents(api::ListEventsRequest{}).truncated());
+  api::ListEventsRequest request;
+  request.set_task_id(task_ids.front());
+  EXPECT_TRUE(hub.ListEvents(request).truncated());
+  request.set_task_id(task_ids.back());
+  const api::ListEventsResponse last = hub.ListEvents(request);
+  EXPECT_FALSE(last.truncated()) << last.DebugString();
+  ASSERT_GE(last.events_size(), 2);
+  EXPECT_EQ(last.events(0).kind(), api::EVENT_KIND_TASK_CREATED);
 }
 
 }  // namespace

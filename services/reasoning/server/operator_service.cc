@@ -148,6 +148,13 @@ grpc::ServerWriteReactor<api::StreamEventsResponse>* OperatorServiceImpl::Stream
   return new EventReactor(hub_, *request);
 }
 
+grpc::ServerUnaryReactor* OperatorServiceImpl::ListEvents(grpc::CallbackServerContext* context,
+                                                          const api::ListEventsRequest* request,
+                                                          api::ListEventsResponse* response) {
+  *response = hub_->ListEvents(*request);
+  return Reply(context, absl::OkStatus());
+}
+
 grpc::ServerUnaryReactor* OperatorServiceImpl::DecomposeInstruction(grpc::CallbackServerContext* context,
                                                                     const api::DecomposeInstructionRequest* request,
                                                                     api::DecomposeInstructionResponse* response) {

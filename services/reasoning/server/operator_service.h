@@ -47,6 +47,8 @@ class OperatorServiceImpl : public api::OperatorService::CallbackService {
       grpc::CallbackServerContext* context, const api::StreamSlowTelemetryRequest* request) override;
   grpc::ServerWriteReactor<api::StreamEventsResponse>* StreamEvents(
       grpc::CallbackServerContext* context, const api::StreamEventsRequest* request) override;
+  grpc::ServerUnaryReactor* ListEvents(grpc::CallbackServerContext* context, const api::ListEventsRequest* request,
+                                       api::ListEventsResponse* response) override;
   grpc::ServerUnaryReactor* DecomposeInstruction(grpc::CallbackServerContext* context,
                                                  const api::DecomposeInstructionRequest* request,
                                                  api::DecomposeInstructionResponse* response) override;

@@ -2,7 +2,7 @@
 import type { semnav } from "../generated/protos";
 import { call, CallError, requestId, StreamHub } from "./api";
 import { MapView } from "./map_view";
-import { appendEvent, renderFrontiers, renderPlan, renderSceneGraph, renderTask } from "./panels";
+import { appendEvent, appendNote, renderFrontiers, renderPlan, renderSceneGraph, renderTask } from "./panels";
 import { DashboardState, type Point } from "./state";
 
 
@@ -82,7 +82,10 @@ function watchRobot(): void {
     },
     onStatus: link("gateway"),
   });
-  let lastEvent = "0";
+}
+
+// The live event log, after event `lastEvent` ("0": only what happens from now on).
+function watchEvents(lastEvent: string, onStatus: (connected: boolean) => void): void {
   streams.subscribe<semnav.reasoning.v1.StreamEventsResponse>("events", {
     service: "operator", method: "StreamEvents",
     request: () => ({ robot_id: "", last_event_id: lastEvent }),
@@ -91,7 +94,7 @@ function watchRobot(): void {
       lastEvent = message.event.event_id;
       appendEvent(message.event);
     },
-    onStatus: link("events"),
+    onStatus,
   });
 }
 
@@ -112,6 +115,44 @@ function watchTask(taskId: string): void {
       redraw();
     },
   });
+}
+
+// What happened before the page opened: the robot's latest task, running or ended, goes on the
+// card and its recorded events into the log, as if the page had been open during it; the live
+// log then continues from the gateway's newest event. Resolves with that event's id.
+async function loadLatestTask(): Promise<string> {
+  const { tasks } = await call<semnav.reasoning.v1.ListTasksResponse>("operator", "ListTasks", { robot_id: state.robotId });
+  const latest = tasks[tasks.length - 1];
+  if (latest === undefined) return "0";
+  // A task the page already follows (submitted or reported by telemetry meanwhile) is newer.
+  if (watchedTask === "") {
+    state.task = latest;
+    renderTask(state);
+    watchTask(latest.task_id);
+  }
+  const log = await call<semnav.reasoning.v1.ListEventsResponse>("operator", "ListEvents", { task_id: latest.task_id });
+  if (log.truncated) appendNote("earlier events of this task were dropped from the gateway's log");
+  for (const event of log.events) appendEvent(event);
+  return log.last_event_id;
+}
+
+// Until the gateway answers (it may start after the page), the log waits: live events before
+// the replayed ones would be out of order.
+async function showHistoryThenLiveEvents(): Promise<void> {
+  const status = link("events");
+  for (let retryMs = 500; ; retryMs = Math.min(retryMs * 2, 5000)) {
+    try {
+      watchEvents(await loadLatestTask(), status);
+      return;
+    } catch (error) {
+      // A gateway without ListEvents (older than the page) still streams live events.
+      if (error instanceof CallError && error.body.code === "UNIMPLEMENTED") {
+        watchEvents("0", status);
+        return;
+      }
+      await new Promise((resolve) => setTimeout(resolve, retryMs));
+    }
+  }
 }
 
 async function refreshFrontiers(): Promise<void> {
@@ -230,6 +271,7 @@ async function start(): Promise<void> {
   wireControls();
   watchMap();
   watchRobot();
+  void showHistoryThenLiveEvents();
   setInterval(() => void refreshFrontiers(), 2000);
   renderTask(state);
   renderPlan(state);

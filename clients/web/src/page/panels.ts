@@ -123,13 +123,23 @@ export function renderSceneGraph(state: DashboardState): void {
 }
 
 export function appendEvent(event: semnav.reasoning.v1.Event): void {
-  const list = $("events");
   const item = document.createElement("li");
   const seconds = Number(event.time?.seconds ?? 0);
   const time = document.createElement("time");
   time.textContent = new Date(seconds * 1000).toLocaleTimeString();
   item.append(time, document.createTextNode(event.message));
   item.dataset.kind = event.kind;
+  if (event.task_id !== "") item.dataset.taskId = event.task_id;
+  prependToLog(item);
+}
+
+// A line of the page's own in the event log (e.g. that the replay is incomplete).
+export function appendNote(text: string): void {
+  prependToLog(element("li", text, "muted"));
+}
+
+function prependToLog(item: HTMLElement): void {
+  const list = $("events");
   list.prepend(item);
   while (list.children.length > 200) list.lastElementChild!.remove();
 }

@@ -2,7 +2,8 @@
 // with mapping, planning and the gateway on free loopback ports (semnav-dashboard-sim-robot
 // --start-stack), the proxy, and the page. Checks that the map from the stack is drawn, that a
 // typed instruction makes a task whose progress shows, that two clicks plan a path, and that
-// the e-stop button stops the task and the robot. --screenshot-dir also saves screenshots.
+// the e-stop button stops the task and the robot, and that a page opened after a task ended shows
+// that task and its events. --screenshot-dir also saves screenshots.
 // Usage: node dashboard_e2e.js --bin-dir DIR --web-dir DIR [--screenshot-dir DIR [--screenshot-delay-ms MS]]
 //        [--viewport WxH] [--chromium PATH] [--speed X  simulated seconds per wall second, default 1]
 import { type ChildProcess, spawn } from "node:child_process";
@@ -169,6 +170,38 @@ async function run(args: Args): Promise<void> {
     check(/length\d+\.\d+ m/.test(figures) && /energy\d+ J/.test(figures) && /mode switches\d+/.test(figures),
           `two clicks plan a path: ${figures.replace(/\s+/g, " ")}`);
     if (args.screenshotDir !== undefined) await page.screenshot({ path: path.join(args.screenshotDir, "dashboard-plan.png") });
+
+    // A task run to its end, then a fresh page: it shows that task, ended, with its events.
+    await page.click("#clear-estop");
+    await page.waitForFunction(() => document.getElementById("task-card")?.dataset.status === "cancelled", null, { timeout: 5000 });
+    const findInstruction = `find a ${stack.nearest_object}`;
+    await page.fill("#instruction", findInstruction);
+    await page.click("#instruction-form button[type=submit]");
+    await page.waitForFunction((previous) => document.getElementById("task-card")?.dataset.taskId !== previous, taskId, { timeout: 5000 });
+    const finishedId = (await page.getAttribute("#task-card", "data-task-id"))!;
+    await page.waitForFunction(() => ["succeeded", "failed", "cancelled"].includes(document.getElementById("task-card")?.dataset.status ?? ""),
+                               null, { timeout: 30000 });
+    const ended = await page.getAttribute("#task-card", "data-status");
+    check(ended === "succeeded", `"${findInstruction}" runs to its end: ${ended} (${await text(page, "#task-reason")})`);
+    const fresh = await context.newPage();
+    fresh.on("pageerror", (error) => pageErrors.push(error.message));
+    await page.close();
+    await fresh.goto(`http://${proxy.listen}/`);
+    await fresh.waitForFunction((id) => {
+      const card = document.getElementById("task-card");
+      return card?.dataset.taskId === id && card.dataset.status === "succeeded";
+    }, finishedId, { timeout: 10000 });
+    check((await text(fresh, "#task-instruction")).includes(findInstruction) && (await fresh.locator("#task-subgoals li").count()) >= 1,
+          `a fresh page shows the ended task ${finishedId} "${findInstruction}" as succeeded with its subgoals`);
+    // The events come after the card (a second call); the check below says what arrived.
+    await fresh.waitForFunction((id) => [...document.querySelectorAll<HTMLElement>(`#events li[data-task-id="${id}"]`)]
+      .some((item) => item.dataset.kind === "EVENT_KIND_TASK_STATUS" && item.textContent?.includes("TASK_STATUS_SUCCEEDED")),
+                                finishedId, { timeout: 5000 }).catch(() => undefined);
+    const loggedKinds = await fresh.evaluate((id) => [...document.querySelectorAll<HTMLElement>(`#events li[data-task-id="${id}"]`)]
+      .map((item) => `${item.dataset.kind}: ${item.textContent ?? ""}`), finishedId);
+    check(loggedKinds.some((line) => line.startsWith("EVENT_KIND_TASK_CREATED:") && line.includes(findInstruction)) &&
+          loggedKinds.some((line) => line.startsWith("EVENT_KIND_TASK_STATUS:") && line.includes("TASK_STATUS_SUCCEEDED")),
+          `and its ${loggedKinds.length} recorded events, from creation to success`);
 
     check(pageErrors.length === 0, `no page errors${pageErrors.length ? `: ${pageErrors.join("; ")}` : ""}`);
     console.log(`passed in ${((Date.now() - started) / 1000).toFixed(1)} s`);
