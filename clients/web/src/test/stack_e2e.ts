@@ -26,7 +26,7 @@ function parseArgs(argv: string[]): Args {
   };
   const binDir = get("bin-dir");
   if (binDir === undefined) throw new Error("usage: stack_e2e.js --bin-dir DIR [--chromium PATH] [--speed X] [--screenshot FILE]");
-  return { binDir, chromium: get("chromium") ?? "/usr/bin/chromium", speed: get("speed") ?? "2", screenshot: get("screenshot") };
+  return { binDir, chromium: get("chromium") ?? "/usr/bin/chromium", speed: get("speed") ?? "1", screenshot: get("screenshot") };
 }
 
 function freePort(): Promise<number> {
@@ -69,6 +69,8 @@ services:
   planning:
     binary: semnav-planning
     listen: "127.0.0.1:${planning}"
+    settings:
+      planning: {mapping: {address: "127.0.0.1:${mapping}"}}
   relocalization:
     binary: semnav-relocalization
     listen: "127.0.0.1:${relocalization}"
