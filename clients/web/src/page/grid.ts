@@ -80,7 +80,8 @@ export class LiveGrid {
   render(kind: LayerKind): ImageData | null {
     const grid = this.grid;
     const cells = this.layers.get(kind);
-    if (grid === null || cells === undefined) return null;
+    // A stack whose robot has sent no frame yet has an empty map: nothing to draw (ImageData throws on 0).
+    if (grid === null || cells === undefined || grid.width <= 0 || grid.height <= 0) return null;
     const image = new ImageData(grid.width, grid.height);
     const colour = COLOURS[kind];
     for (let row = 0; row < grid.height; ++row) {
