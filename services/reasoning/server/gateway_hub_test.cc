@@ -36,9 +36,9 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   api::SessionHello hello;
   hello.set_robot_id("r1");
   ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
-  hub.OnRobotState(&session, At(0, 0));   // node 1 sees the sofa (1.1 m away)
-  hub.OnRobotState(&session, At(6, 0));   // node 2, 5 m from the sofa: not seen
-  hub.OnRobotState(&session, At(12, 0));  // node 3
+  ASSERT_TRUE(hub.OnRobotState(&session, At(0, 0)).ok());   // node 1 sees the sofa (1.1 m away)
+  ASSERT_TRUE(hub.OnRobotState(&session, At(6, 0)).ok());   // node 2, 5 m from the sofa: not seen
+  ASSERT_TRUE(hub.OnRobotState(&session, At(12, 0)).ok());  // node 3
 
   absl::StatusOr<api::SubmitInstructionResponse> response = hub.Submit(SubmitRequest("back-1", "r1", "回到沙发那里"));
   ASSERT_TRUE(response.ok()) << response.status();
