@@ -20,9 +20,9 @@ absl::Status CheckInstruction(absl::string_view text, absl::string_view field) {
   if (text.size() <= kMaxInstructionChars) return absl::OkStatus();
   const std::size_t chars = Utf8Chars(text);
   if (chars <= kMaxInstructionChars) return absl::OkStatus();
-  return InvalidField(field, absl::StrCat("is ", chars, " characters, more than the limit of ",
-                                          kMaxInstructionChars, " (starts '", Preview(text, 16),
-                                          "')"));
+  return InvalidField(field,
+                      absl::StrCat("is ", chars, " characters, more than the limit of ",
+                                   kMaxInstructionChars, " (starts '", Preview(text, 16), "')"));
 }
 
 absl::Status CheckPosition(const Eigen::Vector3d& position, absl::string_view field) {
@@ -95,8 +95,8 @@ absl::Status CheckCommand(const RobotCommand& command) {
       return absl::OkStatus();
     }
     case CommandKind::kRotate:
-      if (absl::Status s = CheckMagnitude(command.angular_speed, "angular_speed_rps",
-                                          kMaxAngularSpeedRps);
+      if (absl::Status s =
+              CheckMagnitude(command.angular_speed, "angular_speed_rps", kMaxAngularSpeedRps);
           !s.ok()) {
         return s;
       }

@@ -4,9 +4,9 @@
 #pragma once
 
 #include <cstddef>
-#include "absl/strings/string_view.h"
 
 #include "absl/status/status.h"
+#include "absl/strings/string_view.h"
 #include "services/common/status/value_checks.h"
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/robot_types.h"

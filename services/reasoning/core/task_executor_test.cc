@@ -564,7 +564,8 @@ TEST_F(GatewayTaskExecutorTest, NonFinitePoseIsIgnoredAndNeverBecomesAGoal) {
 class NanPathPlanner : public PathPlanner {
  public:
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
-    return std::vector<Eigen::Vector3d>{query.start, Eigen::Vector3d(std::nan(""), 0, 0), query.goal};
+    const Eigen::Vector3d lost(std::nan(""), 0, 0);
+    return std::vector<Eigen::Vector3d>{query.start, lost, query.goal};
   }
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery&) override {
     return absl::NotFoundError("no frontier");

@@ -72,8 +72,8 @@ GatewayHub::Robot& GatewayHub::RobotRecord(const std::string& robot_id) {
 absl::StatusOr<GatewayHub::Task*> GatewayHub::FindTask(const std::string& task_id) {
   auto it = tasks_.find(task_id);
   if (it == tasks_.end()) {
-    return FieldError(absl::StatusCode::kNotFound, "task_id", absl::StrCat("no task '", Preview(task_id), "'"),
-                      "NOT_FOUND");
+    return FieldError(absl::StatusCode::kNotFound, "task_id",
+                      absl::StrCat("no task '", Preview(task_id), "'"), "NOT_FOUND");
   }
   return &it->second;
 }

@@ -89,7 +89,8 @@ class GatewayHub {
   // INVALID_ARGUMENT naming the field for a bad state (non-finite or absurd pose, velocity,
   // battery): the robot keeps its last good pose and nothing moves on it.
   absl::Status OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state);
-  absl::Status OnFeedback(StreamSink<api::ConnectResponse>* sink, const api::CommandFeedback& feedback);
+  absl::Status OnFeedback(StreamSink<api::ConnectResponse>* sink,
+                          const api::CommandFeedback& feedback);
   // A camera frame for the active task's EROI search (seed 000); dropped when the task has none
   // or its vision call is still running. INVALID_ARGUMENT naming the field for a bad frame.
   absl::Status OnCameraFrame(StreamSink<api::ConnectResponse>* sink, const api::CameraFrame& frame);

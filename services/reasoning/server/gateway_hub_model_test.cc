@@ -151,7 +151,8 @@ TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnswere
   const api::RobotCommand explore = session_.Last();
   ASSERT_TRUE(explore.has_navigate()) << explore.ShortDebugString();
   EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
-  ASSERT_TRUE(hub_.OnRobotState(&session_, At(explore.navigate().goal().x(), explore.navigate().goal().y())).ok());
+  const api::RobotState there = At(explore.navigate().goal().x(), explore.navigate().goal().y());
+  ASSERT_TRUE(hub_.OnRobotState(&session_, there).ok());
   Reached(hub_, session_, explore);
   EXPECT_TRUE(session_.Last().has_rotate()) << session_.Last().ShortDebugString();  // scan at the goal
 

@@ -51,7 +51,8 @@ GatewayHub::Robot* GatewayHub::RobotOfSink(StreamSink<api::ConnectResponse>* sin
   return nullptr;
 }
 
-absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state) {
+absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink,
+                                      const api::RobotState& state) {
   // Checked before anything is stored: the last good pose stays and no command is built.
   absl::StatusOr<RobotPose> pose = ValidatedPose(state);
   if (!pose.ok()) return pose.status();
@@ -83,15 +84,15 @@ absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink, co
   return absl::OkStatus();
 }
 
-absl::Status GatewayHub::OnFeedback(StreamSink<api::ConnectResponse>* sink, const api::CommandFeedback& feedback) {
+absl::Status GatewayHub::OnFeedback(StreamSink<api::ConnectResponse>* sink,
+                                    const api::CommandFeedback& feedback) {
   if (absl::Status s = Validate(feedback); !s.ok()) return s;
   absl::MutexLock lock(&mu_);
   std::string robot_id;
   Robot* robot = RobotOfSink(sink, &robot_id);
   const std::optional<RobotFeedback> kind = FromProto(feedback.kind());
-  if (robot == nullptr || !kind.has_value() || feedback.command_id() != robot->last_session_command) {
-    return absl::OkStatus();
-  }
+  const bool current = robot != nullptr && feedback.command_id() == robot->last_session_command;
+  if (!current || !kind.has_value()) return absl::OkStatus();
   auto task = tasks_.find(robot->active_task);
   if (task == tasks_.end() || !task->second.started) return absl::OkStatus();
   Apply(task->second, task->second.executor->OnFeedback(Now(), robot->last_executor_command, *kind));

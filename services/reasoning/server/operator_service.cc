@@ -67,7 +67,8 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::GetTask(grpc::CallbackServerConte
 grpc::ServerUnaryReactor* OperatorServiceImpl::ListTasks(grpc::CallbackServerContext* context,
                                                          const api::ListTasksRequest* request,
                                                          api::ListTasksResponse* response) {
-  return Reply(context, hub_->ListTasks(*request), [&](api::ListTasksResponse r) { *response = std::move(r); });
+  return Reply(context, hub_->ListTasks(*request),
+               [&](api::ListTasksResponse r) { *response = std::move(r); });
 }
 
 grpc::ServerWriteReactor<api::WatchTaskResponse>* OperatorServiceImpl::WatchTask(grpc::CallbackServerContext*,

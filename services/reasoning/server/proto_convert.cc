@@ -110,7 +110,8 @@ RobotPose FromProto(const api::RobotState& state) {
 }
 
 absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area) {
-  const SearchArea out{Eigen::Vector2d(area.min_x(), area.min_y()), Eigen::Vector2d(area.max_x(), area.max_y())};
+  const SearchArea out{Eigen::Vector2d(area.min_x(), area.min_y()),
+                       Eigen::Vector2d(area.max_x(), area.max_y())};
   if (absl::Status status = CheckSearchArea(out, "search_area"); !status.ok()) return status;
   return out;
 }

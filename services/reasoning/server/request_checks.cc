@@ -28,7 +28,8 @@ absl::Status CheckIds(std::initializer_list<IdField> ids) {
 absl::Status CheckVector(const common::v1::Vector3& v, absl::string_view field, double max_abs) {
   const std::pair<double, const char*> axes[] = {{v.x(), ".x"}, {v.y(), ".y"}, {v.z(), ".z"}};
   for (const auto& [value, axis] : axes) {
-    if (absl::Status s = CheckMagnitude(value, absl::StrCat(field, axis), max_abs); !s.ok()) return s;
+    if (absl::Status s = CheckMagnitude(value, absl::StrCat(field, axis), max_abs); !s.ok())
+      return s;
   }
   return absl::OkStatus();
 }
@@ -49,7 +50,8 @@ absl::Status CheckOrientation(const common::v1::Quaternion& q, absl::string_view
 }
 
 absl::Status CheckPose(const common::v1::Pose& pose, absl::string_view field) {
-  if (absl::Status s = CheckVector(pose.position(), absl::StrCat(field, ".position"), kMaxCoordinateM);
+  if (absl::Status s =
+          CheckVector(pose.position(), absl::StrCat(field, ".position"), kMaxCoordinateM);
       !s.ok()) {
     return s;
   }
@@ -131,7 +133,8 @@ absl::Status Validate(const api::ReleaseLeaseRequest& request) {
 }
 
 absl::Status Validate(const api::EmergencyStopRequest& request) {
-  if (absl::Status s = CheckIds({{&request.request_id(), "request_id"}, {&request.robot_id(), "robot_id"}});
+  if (absl::Status s =
+          CheckIds({{&request.request_id(), "request_id"}, {&request.robot_id(), "robot_id"}});
       !s.ok()) {
     return s;
   }
@@ -150,7 +153,8 @@ absl::Status Validate(const api::StreamFastTelemetryRequest& request) {
 
 absl::Status Validate(const api::StreamSlowTelemetryRequest& request) {
   if (absl::Status s = CheckIds({{&request.robot_id(), "robot_id"}}); !s.ok()) return s;
-  return request.has_period() ? DurationSeconds(request.period(), "period").status() : absl::OkStatus();
+  return request.has_period() ? DurationSeconds(request.period(), "period").status()
+                              : absl::OkStatus();
 }
 
 absl::Status Validate(const api::StreamEventsRequest& request) {
@@ -166,7 +170,8 @@ absl::Status Validate(const api::ResolveTargetRequest& request) {
   if (absl::Status s = CheckInstruction(request.text(), "text"); !s.ok()) return s;
   if (!request.has_target()) return absl::OkStatus();
   // Counted before the copy into the core type, so a million colours are never copied.
-  if (absl::Status s = CheckCount(request.target().colours_size(), "target.colours", kMaxTargetColours);
+  if (absl::Status s =
+          CheckCount(request.target().colours_size(), "target.colours", kMaxTargetColours);
       !s.ok()) {
     return s;
   }
@@ -175,13 +180,15 @@ absl::Status Validate(const api::ResolveTargetRequest& request) {
 
 absl::Status Validate(const api::SessionHello& hello) {
   if (hello.robot_id().empty()) return InvalidField("hello.robot_id", "is required");
-  if (absl::Status s = CheckLength(hello.robot_id(), "hello.robot_id", kMaxRobotIdBytes); !s.ok()) return s;
+  if (absl::Status s = CheckLength(hello.robot_id(), "hello.robot_id", kMaxRobotIdBytes); !s.ok())
+    return s;
   if (absl::Status s = CheckLength(hello.software_version(), "hello.software_version", kMaxIdBytes);
       !s.ok()) {
     return s;
   }
   const api::Capabilities& caps = hello.capabilities();
-  if (absl::Status s = CheckCount(caps.modes_size(), "hello.capabilities.modes", kMaxLocomotionModes);
+  if (absl::Status s =
+          CheckCount(caps.modes_size(), "hello.capabilities.modes", kMaxLocomotionModes);
       !s.ok()) {
     return s;
   }
@@ -193,7 +200,8 @@ absl::Status Validate(const api::SessionHello& hello) {
   }
   const std::tuple<double, const char*, double> limits[] = {
       {caps.max_linear_speed_mps(), "hello.capabilities.max_linear_speed_mps", kMaxSpeedMps},
-      {caps.max_angular_speed_rps(), "hello.capabilities.max_angular_speed_rps", kMaxAngularSpeedRps},
+      {caps.max_angular_speed_rps(), "hello.capabilities.max_angular_speed_rps",
+       kMaxAngularSpeedRps},
       {caps.max_vertical_speed_mps(), "hello.capabilities.max_vertical_speed_mps", kMaxSpeedMps},
       {caps.footprint_radius_m(), "hello.capabilities.footprint_radius_m", kMaxFootprintRadiusM}};
   for (const auto& [value, field, max] : limits) {
@@ -210,7 +218,8 @@ absl::Status Validate(const api::CommandFeedback& feedback) {
 absl::Status Validate(const api::CameraFrame& frame) {
   const common::v1::CameraIntrinsics& k = frame.intrinsics();
   if (k.width() > kMaxCameraSide || k.height() > kMaxCameraSide) {
-    return InvalidField("camera.intrinsics.width", absl::StrCat("sides must be <= ", kMaxCameraSide));
+    return InvalidField("camera.intrinsics.width",
+                        absl::StrCat("sides must be <= ", kMaxCameraSide));
   }
   if (frame.image().width() > kMaxCameraSide || frame.image().height() > kMaxCameraSide) {
     return InvalidField("camera.image.width", absl::StrCat("sides must be <= ", kMaxCameraSide));
@@ -235,7 +244,8 @@ absl::StatusOr<RobotPose> ValidatedPose(const api::RobotState& state) {
     return s;
   }
   if (absl::Status s = CheckPose(state.pose(), "state.pose"); !s.ok()) return s;
-  if (absl::Status s = CheckVector(state.velocity(), "state.velocity", kMaxSpeedMps); !s.ok()) return s;
+  if (absl::Status s = CheckVector(state.velocity(), "state.velocity", kMaxSpeedMps); !s.ok())
+    return s;
   if (!api::LocomotionMode_IsValid(state.mode())) {
     return InvalidField("state.mode", absl::StrCat("unknown mode ", state.mode()));
   }

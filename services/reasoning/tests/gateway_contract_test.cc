@@ -411,7 +411,8 @@ bool AllFinite(const api::RobotCommand& command) {
     return ok;
   }
   if (command.has_rotate()) {
-    return std::isfinite(command.rotate().angular_speed_rps()) && std::isfinite(command.rotate().duration_s());
+    const api::RotateAction& rotate = command.rotate();
+    return std::isfinite(rotate.angular_speed_rps()) && std::isfinite(rotate.duration_s());
   }
   if (command.has_hold()) return std::isfinite(command.hold().duration_s());
   return true;
@@ -513,13 +514,14 @@ TEST_F(GatewayContractTest, HugeRobotIdIsRefusedAndNothingIsKept) {
     ASSERT_TRUE(operator_->ListTasks(&context, list, &tasks).ok());
   }
   EXPECT_EQ(tasks.tasks_size(), 0);
-  // The stop was never stored either: clearing it finds no such robot.
+  // Clearing it is refused the same way (the old gateway had stored the robot and cleared it).
   api::ClearEmergencyStopRequest clear;
   clear.set_request_id("clear-big");
   clear.set_robot_id(huge_id + "0");
   api::ClearEmergencyStopResponse cleared;
   grpc::ClientContext context;
-  EXPECT_EQ(operator_->ClearEmergencyStop(&context, clear, &cleared).error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(operator_->ClearEmergencyStop(&context, clear, &cleared).error_code(),
+            grpc::StatusCode::INVALID_ARGUMENT);
 }
 
 // EmergencyStop{robot_id: ""} stops every connected robot: r1 is sent a stop and listed, its task
