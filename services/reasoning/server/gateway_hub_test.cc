@@ -171,6 +171,29 @@ TEST_F(GatewayHubValidationTest, BadFieldsAreNamedAndNothingIsStored) {
   EXPECT_EQ(hub_.ListTasks({})->tasks_size(), 0);
 }
 
+// A hello with a NaN capability opens no session; a camera frame with a NaN pose is refused
+// (the session logs and skips it) before anything reads it.
+TEST_F(GatewayHubValidationTest, HelloAndCameraFramesAreChecked) {
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("r1");
+  hello.mutable_capabilities()->set_max_linear_speed_mps(std::nan(""));
+  EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()),
+            "hello.capabilities.max_linear_speed_mps");
+  EXPECT_TRUE(session.messages().empty());  // not accepted
+  hello.mutable_capabilities()->set_max_linear_speed_mps(1.0);
+  hello.mutable_capabilities()->add_modes(static_cast<api::LocomotionMode>(42));
+  EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()),
+            "hello.capabilities.modes[0]");
+  hello.mutable_capabilities()->clear_modes();
+  ASSERT_TRUE(hub_.OpenSession(hello, &session).ok());
+
+  api::CameraFrame frame;
+  frame.mutable_camera_pose()->mutable_position()->set_x(std::nan(""));
+  EXPECT_EQ(ErrorField(hub_.OnCameraFrame(&session, frame)), "camera.camera_pose.position.x");
+  hub_.CloseSession(&session);
+}
+
 // A NaN robot state is refused naming the coordinate; the pose stays the last good one, so the
 // task's first step is planned from it.
 TEST_F(GatewayHubValidationTest, NonFiniteRobotStateIsRefusedAndThePoseKept) {
