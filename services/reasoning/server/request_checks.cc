@@ -70,7 +70,7 @@ absl::Status CheckTaskControl(const Request& request) {
 
 absl::StatusOr<double> DurationSeconds(const google::protobuf::Duration& duration,
                                        absl::string_view field) {
-  if (std::abs(duration.nanos()) >= 1000000000) {
+  if (std::abs(static_cast<int64_t>(duration.nanos())) >= 1000000000) {
     return InvalidField(field, "nanos must be within +-999,999,999");
   }
   const double seconds = static_cast<double>(duration.seconds()) + duration.nanos() * 1e-9;
