@@ -3,6 +3,7 @@
 #include <string>
 
 #include "absl/strings/str_cat.h"
+#include "services/reasoning/core/input_limits.h"
 #include "nlohmann/json.hpp"
 
 namespace semnav::reasoning {
@@ -20,10 +21,16 @@ absl::StatusOr<std::string> OptionalString(const json& item, const std::string& 
   return item[key].get<std::string>();
 }
 
-absl::StatusOr<double> OptionalNonNegative(const json& item, const std::string& path, const char* key) {
+// In [0, max]: a model's 1e300 s wait or 1e9 m stand-off is refused here,
+// not turned into a command.
+absl::StatusOr<double> OptionalNonNegative(const json& item, const std::string& path,
+                                           const char* key, double max) {
   if (!item.contains(key)) return 0.0;
-  if (!item[key].is_number() || item[key].get<double>() < 0.0) {
-    return Invalid(absl::StrCat(path, ".", key), "must be a non-negative number");
+  const bool in_range = item[key].is_number() && item[key].get<double>() >= 0.0 &&
+                        item[key].get<double>() <= max;
+  if (!in_range) {
+    return Invalid(absl::StrCat(path, ".", key),
+                   absl::StrCat("must be a number in [0, ", max, "]"));
   }
   return item[key].get<double>();
 }
@@ -61,9 +68,10 @@ absl::StatusOr<Subgoal> ParseOne(const json& item, const std::string& path) {
       goal.target.colours.push_back(colour.get<std::string>());
     }
   }
-  absl::StatusOr<double> distance = OptionalNonNegative(item, path, "distance_m");
+  absl::StatusOr<double> distance = OptionalNonNegative(item, path, "distance_m", kMaxCoordinateM);
   if (!distance.ok()) return distance.status();
-  absl::StatusOr<double> duration = OptionalNonNegative(item, path, "duration_s");
+  absl::StatusOr<double> duration =
+      OptionalNonNegative(item, path, "duration_s", kMaxCommandDurationS);
   if (!duration.ok()) return duration.status();
   goal.distance_m = *distance;
   goal.duration_s = *duration;

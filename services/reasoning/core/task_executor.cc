@@ -4,6 +4,7 @@
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
+#include "services/reasoning/core/input_limits.h"
 
 namespace semnav::reasoning {
 
@@ -50,7 +51,7 @@ double TaskExecutor::YawTo(const Eigen::Vector3d& point) const {
 }
 
 std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose) {
-  pose_ = pose;
+  if (CheckRobotPose(pose, "pose").ok()) pose_ = pose;  // a bad pose never becomes a goal
   return EnterSubgoal(now);
 }
 
@@ -83,6 +84,7 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
   command.goal_yaw = yaw;
   command.max_speed = speed;
   command.path = path;
+  if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.path = std::move(path);
   progress_.phase = phase == Phase::kExploring ? "exploring" : phase == Phase::kVerifying ? "verifying" : "navigating";
   progress_.reason = reason;
@@ -110,6 +112,7 @@ std::vector<RobotCommand> TaskExecutor::Rotate(double now, double rate, double d
   RobotCommand command = NewCommand(CommandKind::kRotate, reason);
   command.angular_speed = rate;
   command.duration_s = duration;
+  if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.phase = "looking_around";
   progress_.reason = reason;
   phase_ = phase;
@@ -120,6 +123,7 @@ std::vector<RobotCommand> TaskExecutor::Rotate(double now, double rate, double d
 std::vector<RobotCommand> TaskExecutor::Hold(double now, double duration, const std::string& reason) {
   RobotCommand command = NewCommand(CommandKind::kHold, reason);
   command.duration_s = duration;
+  if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.phase = "waiting";
   progress_.reason = reason;
   phase_ = Phase::kWaiting;
@@ -144,6 +148,12 @@ std::vector<RobotCommand> TaskExecutor::Halt(TaskState state, CommandKind kind, 
 
 std::vector<RobotCommand> TaskExecutor::Fail(const std::string& reason) {
   return Halt(TaskState::kFailed, CommandKind::kStop, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::Refuse(const absl::Status& refused) {
+  // Whatever produced it (a planner's path, a model's duration, a bad pose), a non-finite or
+  // absurd number must not reach the robot: the task ends and the robot stops.
+  return Fail(absl::StrCat("refused to send the robot a command: ", refused.message()));
 }
 
 std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& reason) {
@@ -395,7 +405,7 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
 }
 
 std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose) {
-  pose_ = pose;
+  if (CheckRobotPose(pose, "pose").ok()) pose_ = pose;  // keep the last good pose
   if (progress_.state != TaskState::kRunning || phase_ == Phase::kIdle || now < phase_deadline_) return {};
   switch (phase_) {
     case Phase::kRotating:

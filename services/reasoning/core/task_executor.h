@@ -121,6 +121,8 @@ class TaskExecutor {
   RobotCommand NewCommand(CommandKind kind, const std::string& reason);
   std::vector<RobotCommand> Halt(TaskState state, CommandKind kind, const std::string& reason);
   std::vector<RobotCommand> Fail(const std::string& reason);
+  // Fails the task instead of sending a command that CheckCommand refused.
+  std::vector<RobotCommand> Refuse(const absl::Status& refused);
   std::vector<RobotCommand> Replan(double now, const std::string& reason);
   std::vector<RobotCommand> ExplorationFailed(double now, const std::string& reason);
   std::vector<RobotCommand> SetTargetAside(double now, const std::string& reason);

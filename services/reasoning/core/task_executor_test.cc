@@ -516,3 +516,83 @@ TEST_F(GatewayTaskExecutorTest, BlockedFeedbackPlansAgainFromTheCurrentPose) {
 
 }  // namespace
 }  // namespace semnav::reasoning
+
+namespace semnav::reasoning {
+namespace {
+
+RobotPose NanPose() {
+  RobotPose pose;
+  pose.position = Eigen::Vector3d::Constant(std::nan(""));
+  pose.yaw = std::nan("");
+  return pose;
+}
+
+bool AllFinite(const RobotCommand& command) {
+  bool finite = command.goal.allFinite() && std::isfinite(command.goal_yaw) &&
+                std::isfinite(command.max_speed) && std::isfinite(command.angular_speed) &&
+                std::isfinite(command.duration_s);
+  for (const Eigen::Vector3d& point : command.path) finite = finite && point.allFinite();
+  return finite;
+}
+
+// No frontier and no memory: the fallback step is 3 m along the robot's yaw from its last good
+// pose, never from a NaN one.
+TEST_F(GatewayTaskExecutorTest, NonFinitePoseIsIgnoredAndNeverBecomesAGoal) {
+  TaskExecutor task = Make(FindTarget());
+  std::vector<RobotCommand> out = task.Start(0, NanPose());
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(AllFinite(out[0]));
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(3, 0, 0)));  // from the default pose
+
+  task.OnPose(1, At(1));
+  // The step times out (120 s) on a NaN report: the robot looks around, then steps again from
+  // x = 1, the last good pose.
+  out = task.OnPose(200, NanPose());
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kRotate);
+  out = task.OnPose(213, NanPose());
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(AllFinite(out[0]));
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4, 0, 0)));
+  EXPECT_TRUE(planner_.queries.back().start.isApprox(Eigen::Vector3d(1, 0, 0)));
+}
+
+// A planner that answers with a NaN waypoint: the task fails with the field named and the robot
+// gets a stop, not the path.
+class NanPathPlanner : public PathPlanner {
+ public:
+  absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
+    const Eigen::Vector3d lost(std::nan(""), 0, 0);
+    return std::vector<Eigen::Vector3d>{query.start, lost, query.goal};
+  }
+  absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery&) override {
+    return absl::NotFoundError("no frontier");
+  }
+};
+
+TEST_F(GatewayTaskExecutorTest, CommandWithANonFiniteNumberFailsTheTaskInstead) {
+  NanPathPlanner planner;
+  TaskExecutor task("instruction", FindTarget(), &resolver_, &planner, nullptr, ExecutorConfig{});
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kFailed);
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "path[1].x")) << task.progress().reason;
+}
+
+TEST_F(GatewayTaskExecutorTest, AbsurdWaitDurationFailsTheTaskInstead) {
+  std::vector<Subgoal> goals(1);
+  goals[0].type = SubgoalType::kWait;
+  goals[0].duration_s = 1e300;  // e.g. from a model's plan
+  TaskExecutor task = Make(goals);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kFailed);
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "duration_s")) << task.progress().reason;
+}
+
+}  // namespace
+}  // namespace semnav::reasoning

@@ -30,6 +30,7 @@ void TopologicalMemory::Link(int64_t a, int64_t b) {
 
 int64_t TopologicalMemory::Update(const Eigen::Vector3d& position, const std::vector<std::string>& labels,
                                   const std::vector<float>& embedding) {
+  if (!position.allFinite()) return -1;
   ++clock_;
   TopoNode* nearest = nullptr;
   double best = std::numeric_limits<double>::infinity();
@@ -119,7 +120,8 @@ double TopologicalMemory::LeastExploredYaw(const Eigen::Vector3d& position) cons
   std::vector<int> visits(static_cast<std::size_t>(sectors), 0);
   for (const TopoNode& node : nodes_) {
     const Eigen::Vector3d offset = node.position - position;
-    if (offset.head<2>().norm() < 1e-6) continue;
+    // A NaN angle would index outside the sectors (the gateway crashed on a NaN pose).
+    if (!offset.allFinite() || offset.head<2>().norm() < 1e-6) continue;
     double angle = std::atan2(offset.y(), offset.x()) + width / 2.0;
     angle = std::fmod(angle + 2.0 * M_PI, 2.0 * M_PI);
     const int sector = std::min(sectors - 1, static_cast<int>(angle / width));

@@ -42,7 +42,8 @@ class TopologicalMemory {
   TopologicalMemory(const LabelMatcher* matcher, TopologicalMemoryConfig config);
 
   // Records the robot at `position` seeing `labels`: revisits the nearest node if it is closer
-  // than the spacing, else creates a node linked to the previous one. Returns the current node id.
+  // than the spacing, else creates a node linked to the previous one. Returns the current node id
+  // (-1, nothing recorded, for a non-finite position: a NaN node would poison every query).
   int64_t Update(const Eigen::Vector3d& position, const std::vector<std::string>& labels,
                  const std::vector<float>& embedding);
 

@@ -57,6 +57,17 @@ TEST_F(GatewayTopologicalMemoryTest, LeastExploredSector) {
   EXPECT_NEAR(memory.LeastExploredYaw({0, 0, 0}), 3 * M_PI / 4, 1e-12);
 }
 
+// A NaN position records nothing, and asking from one does not index outside the sectors (the
+// gateway crashed there on a robot's NaN pose).
+TEST_F(GatewayTopologicalMemoryTest, NonFinitePositionsAreIgnored) {
+  TopologicalMemory memory(&matcher_, TopologicalMemoryConfig{});
+  memory.Update({3, 0, 0}, {}, {});
+  EXPECT_EQ(memory.Update(Eigen::Vector3d::Constant(std::nan("")), {}, {}), -1);
+  EXPECT_EQ(memory.nodes().size(), 1u);
+  const double yaw = memory.LeastExploredYaw(Eigen::Vector3d::Constant(std::nan("")));
+  EXPECT_TRUE(std::isfinite(yaw));
+}
+
 TEST_F(GatewayTopologicalMemoryTest, PrunesOldestLeastVisitedPastTheLimit) {
   TopologicalMemoryConfig config;
   config.max_nodes = 500;

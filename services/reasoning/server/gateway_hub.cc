@@ -5,9 +5,12 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/strip.h"
+#include "services/common/status/field_error.h"
+#include "services/common/status/value_checks.h"
 #include "services/reasoning/core/correction.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
+#include "services/reasoning/server/request_checks.h"
 
 namespace semnav::reasoning {
 
@@ -69,7 +72,8 @@ GatewayHub::Robot& GatewayHub::RobotRecord(const std::string& robot_id) {
 absl::StatusOr<GatewayHub::Task*> GatewayHub::FindTask(const std::string& task_id) {
   auto it = tasks_.find(task_id);
   if (it == tasks_.end()) {
-    return FieldError(absl::StatusCode::kNotFound, "task_id", absl::StrCat("no task '", task_id, "'"), "NOT_FOUND");
+    return FieldError(absl::StatusCode::kNotFound, "task_id",
+                      absl::StrCat("no task '", Preview(task_id), "'"), "NOT_FOUND");
   }
   return &it->second;
 }
@@ -221,14 +225,12 @@ void GatewayHub::SetMobility(Task& task, const Robot& robot) {
 
 absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::SubmitInstructionRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat("Submit:", request.request_id());
   if (auto cached = Cached<api::SubmitInstructionResponse>(requests_, key)) return *cached;
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   if (absl::Status s = Required(request.instruction(), "instruction"); !s.ok()) return s;
-  if (request.instruction().size() > kMaxInstructionChars) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "instruction", "longer than 1000 characters");
-  }
   if (!api::ExplorationStrategy_IsValid(request.exploration_strategy())) {
     return FieldError(absl::StatusCode::kInvalidArgument, "exploration_strategy",
                       absl::StrCat("unknown value ", request.exploration_strategy()));
@@ -303,13 +305,15 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
 
 absl::StatusOr<api::TaskSnapshot> GatewayHub::GetTask(const std::string& task_id) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = CheckLength(task_id, "task_id", kMaxIdBytes); !s.ok()) return s;
   absl::StatusOr<Task*> task = FindTask(task_id);
   if (!task.ok()) return task.status();
   return Snapshot(**task);
 }
 
-api::ListTasksResponse GatewayHub::ListTasks(const api::ListTasksRequest& request) {
+absl::StatusOr<api::ListTasksResponse> GatewayHub::ListTasks(const api::ListTasksRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   std::vector<const Task*> selected;
   for (const auto& [id, task] : tasks_) {
     if (!request.robot_id().empty() && task.robot_id != request.robot_id()) continue;
@@ -329,6 +333,7 @@ api::ListTasksResponse GatewayHub::ListTasks(const api::ListTasksRequest& reques
 template <typename Request, typename Action>
 absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, const Request& request, Action action) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat(method, ":", request.request_id());
   if (auto cached = Cached<api::TaskSnapshot>(requests_, key)) return *cached;
@@ -373,10 +378,8 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::Resume(const api::ResumeTaskReques
 absl::StatusOr<api::DecomposeInstructionResponse> GatewayHub::Decompose(
     const api::DecomposeInstructionRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.instruction(), "instruction"); !s.ok()) return s;
-  if (request.instruction().size() > kMaxInstructionChars) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "instruction", "longer than 1000 characters");
-  }
   if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
   const Decomposition decomposition = decomposer_->Decompose(request.instruction());
   api::DecomposeInstructionResponse response;
@@ -400,6 +403,7 @@ void GatewayHub::OnSceneGraph(const SceneGraph& graph) {
 
 absl::StatusOr<api::ResolveTargetResponse> GatewayHub::ResolveTarget(const api::ResolveTargetRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   TargetSpec target;
   if (request.has_target()) {

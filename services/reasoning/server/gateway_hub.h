@@ -47,13 +47,13 @@ class GatewayHub {
 
   absl::StatusOr<api::SubmitInstructionResponse> Submit(const api::SubmitInstructionRequest& request);
   absl::StatusOr<api::TaskSnapshot> GetTask(const std::string& task_id);
-  api::ListTasksResponse ListTasks(const api::ListTasksRequest& request);
+  absl::StatusOr<api::ListTasksResponse> ListTasks(const api::ListTasksRequest& request);
   absl::StatusOr<api::TaskSnapshot> Cancel(const api::CancelTaskRequest& request);
   absl::StatusOr<api::TaskSnapshot> Pause(const api::PauseTaskRequest& request);
   absl::StatusOr<api::TaskSnapshot> Resume(const api::ResumeTaskRequest& request);
   absl::StatusOr<api::Lease> AcquireLease(const api::AcquireLeaseRequest& request);
   absl::StatusOr<api::Lease> RenewLease(const api::RenewLeaseRequest& request);
-  void ReleaseLease(const std::string& lease_id);
+  absl::Status ReleaseLease(const api::ReleaseLeaseRequest& request);
   absl::StatusOr<api::EmergencyStopResponse> EmergencyStop(const api::EmergencyStopRequest& request);
   absl::Status ClearEmergencyStop(const api::ClearEmergencyStopRequest& request);
   absl::StatusOr<api::DecomposeInstructionResponse> Decompose(const api::DecomposeInstructionRequest& request);
@@ -88,8 +88,11 @@ class GatewayHub {
   // Robot sessions.
   absl::StatusOr<api::SessionAccepted> OpenSession(const api::SessionHello& hello,
                                                    StreamSink<api::ConnectResponse>* sink);
-  void OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state);
-  void OnFeedback(StreamSink<api::ConnectResponse>* sink, const api::CommandFeedback& feedback);
+  // INVALID_ARGUMENT naming the field for a bad state (non-finite or absurd pose, velocity,
+  // battery): the robot keeps its last good pose and nothing moves on it.
+  absl::Status OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state);
+  absl::Status OnFeedback(StreamSink<api::ConnectResponse>* sink,
+                          const api::CommandFeedback& feedback);
   // A camera frame for the active task's EROI search (seed 000); dropped when the task has none
   // or its vision call is still running. INVALID_ARGUMENT naming the field for a bad frame.
   absl::Status OnCameraFrame(StreamSink<api::ConnectResponse>* sink, const api::CameraFrame& frame);

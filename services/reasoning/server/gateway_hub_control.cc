@@ -4,6 +4,7 @@
 #include "absl/strings/str_cat.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
+#include "services/reasoning/server/request_checks.h"
 
 namespace semnav::reasoning {
 
@@ -11,6 +12,7 @@ using namespace hub_internal;
 
 absl::StatusOr<api::Lease> GatewayHub::AcquireLease(const api::AcquireLeaseRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat("AcquireLease:", request.request_id());
   if (auto cached = Cached<api::Lease>(requests_, key)) return *cached;
@@ -34,6 +36,7 @@ absl::StatusOr<api::Lease> GatewayHub::AcquireLease(const api::AcquireLeaseReque
 
 absl::StatusOr<api::Lease> GatewayHub::RenewLease(const api::RenewLeaseRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.lease_id(), "lease_id"); !s.ok()) return s;
   double ttl = config_.default_lease_ttl_s;
   if (request.has_ttl()) ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
@@ -45,13 +48,17 @@ absl::StatusOr<api::Lease> GatewayHub::RenewLease(const api::RenewLeaseRequest& 
   return ToProto(*lease);
 }
 
-void GatewayHub::ReleaseLease(const std::string& lease_id) {
+absl::Status GatewayHub::ReleaseLease(const api::ReleaseLeaseRequest& request) {
   absl::MutexLock lock(&mu_);
-  leases_.Release(lease_id);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
+  if (absl::Status s = Required(request.lease_id(), "lease_id"); !s.ok()) return s;
+  leases_.Release(request.lease_id());
+  return absl::OkStatus();
 }
 
 absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::EmergencyStopRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat("EmergencyStop:", request.request_id());
   if (auto cached = Cached<api::EmergencyStopResponse>(requests_, key)) return *cached;
@@ -59,6 +66,9 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
   api::EmergencyStopResponse response;
   for (auto& [robot_id, robot] : robots_) {
     if (!request.robot_id().empty() && robot_id != request.robot_id()) continue;
+    // "" = every connected robot: a disconnected robot's paused task is not the stop's business
+    // (it stays paused until the robot reconnects or the operator acts on it by id).
+    if (request.robot_id().empty() && robot.session == nullptr) continue;
     robot.emergency_stop = true;
     auto task = tasks_.find(robot.active_task);
     if (task != tasks_.end() && !task->second.executor->finished()) {
@@ -84,6 +94,7 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
 
 absl::Status GatewayHub::ClearEmergencyStop(const api::ClearEmergencyStopRequest& request) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   auto robot = robots_.find(request.robot_id());

@@ -9,12 +9,14 @@
 #include "services/common/logging/log.h"
 #include "services/reasoning/server/camera_frame.h"
 #include "services/reasoning/server/hub_internal.h"
+#include "services/reasoning/server/request_checks.h"
 
 namespace semnav::reasoning {
 
 using namespace hub_internal;
 
 absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, const api::CameraFrame& frame) {
+  if (absl::Status s = Validate(frame); !s.ok()) return s;
   absl::MutexLock lock(&mu_);
   std::string robot_id;
   Robot* robot = RobotOfSink(sink, &robot_id);

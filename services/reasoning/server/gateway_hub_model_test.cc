@@ -6,6 +6,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
+#include "services/common/status/field_error.h"
 #include "services/reasoning/server/camera_frame.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_test_support.h"
@@ -105,7 +106,7 @@ void Reached(GatewayHub& hub, RecordingSink& session, const api::RobotCommand& c
   api::CommandFeedback feedback;
   feedback.set_command_id(command.command_id());
   feedback.set_kind(api::FEEDBACK_KIND_GOAL_REACHED);
-  hub.OnFeedback(&session, feedback);
+  ASSERT_TRUE(hub.OnFeedback(&session, feedback).ok());
 }
 
 class GatewayHubModelTest : public ::testing::Test {
@@ -115,7 +116,7 @@ class GatewayHubModelTest : public ::testing::Test {
     api::SessionHello hello;
     hello.set_robot_id("r1");
     ASSERT_TRUE(hub_.OpenSession(hello, &session_).ok());
-    hub_.OnRobotState(&session_, At(0, 0));
+    EXPECT_TRUE(hub_.OnRobotState(&session_, At(0, 0)).ok());
   }
   std::string SubmitFindRedCup() { return Submit("find the red cup"); }
   std::string Submit(const std::string& instruction) {
@@ -150,7 +151,8 @@ TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnswere
   const api::RobotCommand explore = session_.Last();
   ASSERT_TRUE(explore.has_navigate()) << explore.ShortDebugString();
   EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
-  hub_.OnRobotState(&session_, At(explore.navigate().goal().x(), explore.navigate().goal().y()));
+  const api::RobotState there = At(explore.navigate().goal().x(), explore.navigate().goal().y());
+  ASSERT_TRUE(hub_.OnRobotState(&session_, there).ok());
   Reached(hub_, session_, explore);
   EXPECT_TRUE(session_.Last().has_rotate()) << session_.Last().ShortDebugString();  // scan at the goal
 
@@ -348,7 +350,7 @@ void OpenUavSession(GatewayHub& hub, RecordingSink* session) {
   api::SessionHello hello;
   hello.set_robot_id("uav");
   ASSERT_TRUE(hub.OpenSession(hello, session).ok());
-  hub.OnRobotState(session, At(0, 0));
+  EXPECT_TRUE(hub.OnRobotState(session, At(0, 0)).ok());
 }
 
 api::SubmitInstructionRequest UavSearch(const std::string& request_id, const std::string& instruction) {
@@ -487,7 +489,9 @@ TEST(GatewayHubSearchAreaTest, SearchAreaReachesPlanning) {
   area->set_max_y(40.0);
   EXPECT_EQ(hub.Submit(request).status().message(), "search_area: min_x must be < max_x and min_y < max_y");
   area->set_max_x(std::nan(""));
-  EXPECT_EQ(hub.Submit(request).status().message(), "search_area: coordinates must be finite");
+  EXPECT_EQ(hub.Submit(request).status().message(), "search_area.max_x: must be a finite number");
+  area->set_max_x(1e6);  // beyond kMaxCoordinateM
+  EXPECT_EQ(ErrorField(hub.Submit(request).status()), "search_area.max_x");
   EXPECT_TRUE(explorer.contexts.empty());  // refused tasks never explore
   area->set_max_x(45.0);
   absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(request);

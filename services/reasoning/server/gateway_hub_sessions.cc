@@ -4,6 +4,7 @@
 #include "absl/strings/str_cat.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
+#include "services/reasoning/server/request_checks.h"
 
 namespace semnav::reasoning {
 
@@ -13,9 +14,7 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
                                                              StreamSink<api::ConnectResponse>* sink) {
   absl::MutexLock lock(&mu_);
   if (shut_down_) return absl::UnavailableError("gateway shutting down");
-  if (hello.robot_id().empty() || hello.robot_id().size() > 128) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "hello.robot_id", "must have 1 to 128 characters");
-  }
+  if (absl::Status s = Validate(hello); !s.ok()) return s;
   Robot& robot = RobotRecord(hello.robot_id());
   if (robot.session != nullptr && robot.session != sink) {
     robot.session->Close(grpc::Status(grpc::StatusCode::ABORTED, "replaced by a new session"));
@@ -52,12 +51,16 @@ GatewayHub::Robot* GatewayHub::RobotOfSink(StreamSink<api::ConnectResponse>* sin
   return nullptr;
 }
 
-void GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state) {
+absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink,
+                                      const api::RobotState& state) {
+  // Checked before anything is stored: the last good pose stays and no command is built.
+  absl::StatusOr<RobotPose> pose = ValidatedPose(state);
+  if (!pose.ok()) return pose.status();
   absl::MutexLock lock(&mu_);
   std::string robot_id;
   Robot* robot = RobotOfSink(sink, &robot_id);
-  if (robot == nullptr) return;
-  robot->pose = FromProto(state);
+  if (robot == nullptr) return absl::OkStatus();
+  robot->pose = *pose;
   robot->last_state = state;
   std::vector<std::string> nearby;
   for (const SceneObject& object : scene_graph_.objects) {
@@ -78,17 +81,22 @@ void GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink, const api:
   }
   auto task = tasks_.find(robot->active_task);
   if (task != tasks_.end() && task->second.started) Apply(task->second, task->second.executor->OnPose(Now(), robot->pose));
+  return absl::OkStatus();
 }
 
-void GatewayHub::OnFeedback(StreamSink<api::ConnectResponse>* sink, const api::CommandFeedback& feedback) {
+absl::Status GatewayHub::OnFeedback(StreamSink<api::ConnectResponse>* sink,
+                                    const api::CommandFeedback& feedback) {
+  if (absl::Status s = Validate(feedback); !s.ok()) return s;
   absl::MutexLock lock(&mu_);
   std::string robot_id;
   Robot* robot = RobotOfSink(sink, &robot_id);
   const std::optional<RobotFeedback> kind = FromProto(feedback.kind());
-  if (robot == nullptr || !kind.has_value() || feedback.command_id() != robot->last_session_command) return;
+  const bool current = robot != nullptr && feedback.command_id() == robot->last_session_command;
+  if (!current || !kind.has_value()) return absl::OkStatus();
   auto task = tasks_.find(robot->active_task);
-  if (task == tasks_.end() || !task->second.started) return;
+  if (task == tasks_.end() || !task->second.started) return absl::OkStatus();
   Apply(task->second, task->second.executor->OnFeedback(Now(), robot->last_executor_command, *kind));
+  return absl::OkStatus();
 }
 
 void GatewayHub::CloseSession(StreamSink<api::ConnectResponse>* sink) {

@@ -4,6 +4,7 @@
 #include "absl/strings/str_cat.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
+#include "services/reasoning/server/request_checks.h"
 
 namespace semnav::reasoning {
 
@@ -11,7 +12,10 @@ using namespace hub_internal;
 
 void GatewayHub::WatchTask(const api::WatchTaskRequest& request, StreamSink<api::WatchTaskResponse>* sink) {
   absl::MutexLock lock(&mu_);
-  absl::StatusOr<Task*> found = shut_down_ ? absl::UnavailableError("gateway shutting down") : FindTask(request.task_id());
+  absl::Status valid = Validate(request);
+  absl::StatusOr<Task*> found = shut_down_ ? absl::UnavailableError("gateway shutting down")
+                                : !valid.ok()  ? absl::StatusOr<Task*>(valid)
+                                               : FindTask(request.task_id());
   if (!found.ok()) {
     sink->Close(ToGrpcStatus(found.status()));
     return;
@@ -38,6 +42,10 @@ void GatewayHub::WatchEvents(const api::StreamEventsRequest& request, StreamSink
   absl::MutexLock lock(&mu_);
   if (shut_down_) {
     sink->Close(grpc::Status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down"));
+    return;
+  }
+  if (absl::Status s = Validate(request); !s.ok()) {
+    sink->Close(ToGrpcStatus(s));
     return;
   }
   if (request.last_event_id() > 0) {
@@ -76,7 +84,10 @@ api::ListEventsResponse GatewayHub::ListEvents(const api::ListEventsRequest& req
 
 api::StreamSlowTelemetryResponse GatewayHub::SlowSample(const std::string& robot_id) {
   api::StreamSlowTelemetryResponse out;
-  Robot& robot = RobotRecord(robot_id);
+  // A watcher of a robot never seen gets an empty sample; no record is created for it.
+  static const Robot kUnknownRobot;
+  auto found = robots_.find(robot_id);
+  const Robot& robot = found != robots_.end() ? found->second : kUnknownRobot;
   out.set_session_connected(robot.session != nullptr);
   *out.mutable_capabilities() = robot.capabilities;
   if (std::optional<LeaseInfo> lease = leases_.Current(robot_id, absl::Now())) *out.mutable_lease() = ToProto(*lease);
@@ -86,7 +97,7 @@ api::StreamSlowTelemetryResponse GatewayHub::SlowSample(const std::string& robot
   out.set_slow_path_resolutions(slow_resolutions_);
   out.set_model_calls(model_calls_);
   out.set_scene_graph_revision(scene_graph_.revision);
-  out.set_topological_nodes(static_cast<uint32_t>(robot.memory->nodes().size()));
+  out.set_topological_nodes(robot.memory ? static_cast<uint32_t>(robot.memory->nodes().size()) : 0);
   *out.mutable_stamp() = ToTimestamp(absl::Now());
   return out;
 }
@@ -94,6 +105,10 @@ api::StreamSlowTelemetryResponse GatewayHub::SlowSample(const std::string& robot
 void GatewayHub::WatchFastTelemetry(const api::StreamFastTelemetryRequest& request,
                                     StreamSink<api::StreamFastTelemetryResponse>* sink) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) {
+    sink->Close(ToGrpcStatus(s));
+    return;
+  }
   if (shut_down_ || request.robot_id().empty() || request.max_rate_hz() > 50) {
     sink->Close(ToGrpcStatus(shut_down_ ? absl::UnavailableError("gateway shutting down")
                                         : FieldError(absl::StatusCode::kInvalidArgument,
@@ -113,6 +128,10 @@ void GatewayHub::UnwatchFastTelemetry(StreamSink<api::StreamFastTelemetryRespons
 void GatewayHub::WatchSlowTelemetry(const api::StreamSlowTelemetryRequest& request,
                                     StreamSink<api::StreamSlowTelemetryResponse>* sink) {
   absl::MutexLock lock(&mu_);
+  if (absl::Status s = Validate(request); !s.ok()) {
+    sink->Close(ToGrpcStatus(s));
+    return;
+  }
   absl::Duration period = absl::Seconds(1);
   if (request.has_period()) period = absl::Milliseconds(TimeUtil::DurationToMilliseconds(request.period()));
   if (shut_down_ || request.robot_id().empty() || period < absl::Milliseconds(100)) {

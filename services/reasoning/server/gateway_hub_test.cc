@@ -1,9 +1,13 @@
 // The hub without gRPC: a fake session sink records the robot commands.
 #include "services/reasoning/server/gateway_hub.h"
 
+#include <cmath>
+#include <limits>
+
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
+#include "services/common/status/field_error.h"
 #include "services/reasoning/server/hub_test_support.h"
 #include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/testing/test_lexicon.h"
@@ -37,9 +41,9 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   api::SessionHello hello;
   hello.set_robot_id("r1");
   ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
-  hub.OnRobotState(&session, At(0, 0));   // node 1 sees the sofa (1.1 m away)
-  hub.OnRobotState(&session, At(6, 0));   // node 2, 5 m from the sofa: not seen
-  hub.OnRobotState(&session, At(12, 0));  // node 3
+  ASSERT_TRUE(hub.OnRobotState(&session, At(0, 0)).ok());   // node 1 sees the sofa (1.1 m away)
+  ASSERT_TRUE(hub.OnRobotState(&session, At(6, 0)).ok());   // node 2, 5 m from the sofa: not seen
+  ASSERT_TRUE(hub.OnRobotState(&session, At(12, 0)).ok());  // node 3
 
   absl::StatusOr<api::SubmitInstructionResponse> response = hub.Submit(SubmitRequest("back-1", "r1", "回到沙发那里"));
   ASSERT_TRUE(response.ok()) << response.status();
@@ -177,6 +181,120 @@ TEST(GatewayHubTest, ListEventsIsTruncatedOnlyWhenTheTasksOwnEventsWereDropped) 
   EXPECT_FALSE(last.truncated()) << last.DebugString();
   ASSERT_GE(last.events_size(), 2);
   EXPECT_EQ(last.events(0).kind(), api::EVENT_KIND_TASK_CREATED);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
+
+namespace semnav::reasoning {
+namespace {
+
+class GatewayHubValidationTest : public ::testing::Test {
+ protected:
+  RobotLocalPlanner planner_;
+  GatewayHub hub_{GatewayConfig{}, &ShippedLexicon(), &planner_};
+};
+
+// 400 Chinese characters are 1200 bytes: within the documented 1000 characters (the old check
+// counted bytes and refused them).
+TEST_F(GatewayHubValidationTest, InstructionLimitCountsCharacters) {
+  std::string text;
+  for (int i = 0; i < 50; ++i) text += "去厨房找红色杯子";
+  api::DecomposeInstructionRequest request;
+  request.set_instruction(text);
+  EXPECT_TRUE(hub_.Decompose(request).ok()) << hub_.Decompose(request).status();
+  for (int i = 0; i < 76; ++i) request.mutable_instruction()->append("去厨房找红色杯子");  // 1008
+  absl::Status refused = hub_.Decompose(request).status();
+  EXPECT_EQ(refused.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(refused), "instruction");
+}
+
+// Each request names its bad field, quotes at most a short prefix, and stores nothing.
+TEST_F(GatewayHubValidationTest, BadFieldsAreNamedAndNothingIsStored) {
+  const std::string huge(1 << 20, 'x');
+  absl::Status task = hub_.GetTask(huge).status();
+  EXPECT_EQ(ErrorField(task), "task_id");
+  EXPECT_LT(task.message().size(), 200u);
+
+  api::AcquireLeaseRequest lease;
+  lease.set_request_id("lease-1");
+  lease.set_robot_id("r1");
+  lease.set_holder(huge);
+  EXPECT_EQ(ErrorField(hub_.AcquireLease(lease).status()), "holder");
+  lease.set_holder("alice");
+  lease.mutable_ttl()->set_seconds(std::numeric_limits<int64_t>::max());  // overflowed to ms
+  EXPECT_EQ(ErrorField(hub_.AcquireLease(lease).status()), "ttl");
+
+  api::CancelTaskRequest cancel;
+  cancel.set_request_id("cancel-1");
+  cancel.set_task_id("task-1");
+  cancel.set_reason(huge);
+  EXPECT_EQ(ErrorField(hub_.Cancel(cancel).status()), "reason");
+
+  api::ResolveTargetRequest resolve;
+  resolve.set_robot_id("r1");
+  resolve.mutable_target()->set_name("cup");
+  for (int i = 0; i < 1000; ++i) resolve.mutable_target()->add_colours("red");
+  EXPECT_EQ(ErrorField(hub_.ResolveTarget(resolve).status()), "target.colours");
+
+  api::ListTasksRequest list;
+  list.set_robot_id(huge);
+  EXPECT_EQ(ErrorField(hub_.ListTasks(list).status()), "robot_id");
+
+  api::SubmitInstructionRequest submit = SubmitRequest("req-1", huge, "find the cup");
+  EXPECT_EQ(ErrorField(hub_.Submit(submit).status()), "robot_id");
+  EXPECT_EQ(hub_.ListTasks({})->tasks_size(), 0);
+}
+
+// A hello with a NaN capability opens no session; a camera frame with a NaN pose is refused
+// (the session logs and skips it) before anything reads it.
+TEST_F(GatewayHubValidationTest, HelloAndCameraFramesAreChecked) {
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("r1");
+  hello.mutable_capabilities()->set_max_linear_speed_mps(std::nan(""));
+  EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()),
+            "hello.capabilities.max_linear_speed_mps");
+  EXPECT_TRUE(session.messages().empty());  // not accepted
+  hello.mutable_capabilities()->set_max_linear_speed_mps(1.0);
+  hello.mutable_capabilities()->add_modes(static_cast<api::LocomotionMode>(42));
+  EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()),
+            "hello.capabilities.modes[0]");
+  hello.mutable_capabilities()->clear_modes();
+  ASSERT_TRUE(hub_.OpenSession(hello, &session).ok());
+
+  api::CameraFrame frame;
+  frame.mutable_camera_pose()->mutable_position()->set_x(std::nan(""));
+  EXPECT_EQ(ErrorField(hub_.OnCameraFrame(&session, frame)), "camera.camera_pose.position.x");
+  hub_.CloseSession(&session);
+}
+
+// A NaN robot state is refused naming the coordinate; the pose stays the last good one, so the
+// task's first step is planned from it.
+TEST_F(GatewayHubValidationTest, NonFiniteRobotStateIsRefusedAndThePoseKept) {
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("r1");
+  ASSERT_TRUE(hub_.OpenSession(hello, &session).ok());
+  ASSERT_TRUE(hub_.OnRobotState(&session, At(2, 0)).ok());
+  api::RobotState lost = At(0, 0);
+  lost.mutable_pose()->mutable_position()->set_y(std::nan(""));
+  absl::Status refused = hub_.OnRobotState(&session, lost);
+  EXPECT_EQ(refused.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(refused), "state.pose.position.y");
+  api::RobotState fast = At(1e6, 0);
+  EXPECT_EQ(ErrorField(hub_.OnRobotState(&session, fast)), "state.pose.position.x");
+  api::RobotState spinning = At(0, 0);
+  spinning.mutable_velocity()->set_z(INFINITY);
+  EXPECT_EQ(ErrorField(hub_.OnRobotState(&session, spinning)), "state.velocity.z");
+
+  ASSERT_TRUE(hub_.Submit(SubmitRequest("req-1", "r1", "find the bottle")).ok());
+  // No map: the first step is 3 m east of the last good pose (2, 0).
+  const api::RobotCommand first = session.Last();
+  ASSERT_TRUE(first.has_navigate());
+  EXPECT_DOUBLE_EQ(first.navigate().goal().x(), 5.0);
+  EXPECT_DOUBLE_EQ(first.navigate().goal().y(), 0.0);
+  hub_.CloseSession(&session);  // the sink dies before the hub
 }
 
 }  // namespace

@@ -19,8 +19,6 @@ namespace semnav::reasoning::hub_internal {
 namespace api = ::semnav::reasoning::v1;
 using google::protobuf::util::TimeUtil;
 
-inline constexpr std::size_t kMaxInstructionChars = 1000;
-
 inline absl::Status Required(const std::string& value, absl::string_view field) {
   if (!value.empty()) return absl::OkStatus();
   return FieldError(absl::StatusCode::kInvalidArgument, field, "is required");

@@ -67,8 +67,8 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::GetTask(grpc::CallbackServerConte
 grpc::ServerUnaryReactor* OperatorServiceImpl::ListTasks(grpc::CallbackServerContext* context,
                                                          const api::ListTasksRequest* request,
                                                          api::ListTasksResponse* response) {
-  *response = hub_->ListTasks(*request);
-  return Reply(context, absl::OkStatus());
+  return Reply(context, hub_->ListTasks(*request),
+               [&](api::ListTasksResponse r) { *response = std::move(r); });
 }
 
 grpc::ServerWriteReactor<api::WatchTaskResponse>* OperatorServiceImpl::WatchTask(grpc::CallbackServerContext*,
@@ -124,11 +124,7 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::RenewLease(grpc::CallbackServerCo
 grpc::ServerUnaryReactor* OperatorServiceImpl::ReleaseLease(grpc::CallbackServerContext* context,
                                                             const api::ReleaseLeaseRequest* request,
                                                             api::ReleaseLeaseResponse*) {
-  if (request->lease_id().empty()) {
-    return Reply(context, FieldError(absl::StatusCode::kInvalidArgument, "lease_id", "is required"));
-  }
-  hub_->ReleaseLease(request->lease_id());
-  return Reply(context, absl::OkStatus());
+  return Reply(context, hub_->ReleaseLease(*request));
 }
 
 grpc::ServerUnaryReactor* OperatorServiceImpl::EmergencyStop(grpc::CallbackServerContext* context,

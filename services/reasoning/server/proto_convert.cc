@@ -4,6 +4,7 @@
 
 #include "google/protobuf/util/time_util.h"
 #include "services/common/status/grpc_status.h"
+#include "services/reasoning/core/input_limits.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -109,15 +110,10 @@ RobotPose FromProto(const api::RobotState& state) {
 }
 
 absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area) {
-  for (double v : {area.min_x(), area.min_y(), area.max_x(), area.max_y()}) {
-    if (!std::isfinite(v)) {
-      return FieldError(absl::StatusCode::kInvalidArgument, "search_area", "coordinates must be finite");
-    }
-  }
-  if (area.min_x() >= area.max_x() || area.min_y() >= area.max_y()) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "search_area", "min_x must be < max_x and min_y < max_y");
-  }
-  return SearchArea{Eigen::Vector2d(area.min_x(), area.min_y()), Eigen::Vector2d(area.max_x(), area.max_y())};
+  const SearchArea out{Eigen::Vector2d(area.min_x(), area.min_y()),
+                       Eigen::Vector2d(area.max_x(), area.max_y())};
+  if (absl::Status status = CheckSearchArea(out, "search_area"); !status.ok()) return status;
+  return out;
 }
 
 api::SearchArea ToProto(const SearchArea& area) {

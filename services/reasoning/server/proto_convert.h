@@ -26,7 +26,8 @@ api::Event ToProto(const LoggedEvent& event);
 api::TaskStatus ToProto(TaskState state);
 // Pose and yaw (about z) from the robot's state message.
 RobotPose FromProto(const api::RobotState& state);
-// INVALID_ARGUMENT naming `search_area` when a coordinate is not finite or min >= max.
+// INVALID_ARGUMENT naming the coordinate ("search_area.min_x") when it is not finite or beyond
+// kMaxCoordinateM, or naming `search_area` when min >= max.
 absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area);
 api::SearchArea ToProto(const SearchArea& area);
 // nullopt for ACCEPTED and UNSPECIFIED, which need no reaction.

@@ -44,12 +44,12 @@ class SessionReactor
       return accepted.status();
     }
     switch (request_.body_case()) {
+      // A bad state or feedback ends the session with INVALID_ARGUMENT naming the field (the
+      // robot has no other error channel); the task pauses and the last good pose is kept.
       case api::ConnectRequest::kState:
-        hub_->OnRobotState(this, request_.state());
-        return absl::OkStatus();
+        return hub_->OnRobotState(this, request_.state());
       case api::ConnectRequest::kFeedback:
-        hub_->OnFeedback(this, request_.feedback());
-        return absl::OkStatus();
+        return hub_->OnFeedback(this, request_.feedback());
       case api::ConnectRequest::kCamera:
         if (absl::Status status = hub_->OnCameraFrame(this, request_.camera()); !status.ok()) {
           // A bad frame is the camera's problem, not the session's: log it and keep the stream.

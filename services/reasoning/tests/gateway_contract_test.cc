@@ -2,6 +2,7 @@
 // session stream and an operator through the generated stubs.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <thread>
@@ -63,14 +64,25 @@ class ScriptedRobot {
     feedback.mutable_feedback()->set_kind(kind);
     stream_->Write(feedback);
   }
-  void Leave() {
-    if (left_) return;
+  void Send(const api::ConnectRequest& request) { stream_->Write(request); }
+  // The next command, or false when the gateway ended the stream.
+  bool TryNextCommand(api::RobotCommand* command) {
+    api::ConnectResponse response;
+    if (!stream_->Read(&response)) return false;
+    EXPECT_TRUE(response.has_command());
+    *command = response.command();
+    return true;
+  }
+  // Ends the session and returns the gateway's final status.
+  grpc::Status Leave() {
+    if (left_) return final_status_;
     left_ = true;
     stream_->WritesDone();
     api::ConnectResponse ignored;
     while (stream_->Read(&ignored)) {
     }
-    stream_->Finish();
+    final_status_ = stream_->Finish();
+    return final_status_;
   }
   const api::SessionAccepted& accepted() const { return accepted_; }
 
@@ -80,6 +92,7 @@ class ScriptedRobot {
   std::unique_ptr<grpc::ClientReaderWriter<api::ConnectRequest, api::ConnectResponse>> stream_;
   api::SessionAccepted accepted_;
   bool left_ = false;
+  grpc::Status final_status_;
 };
 
 class GatewayContractTest : public ::testing::Test {
@@ -384,6 +397,175 @@ TEST_F(GatewayContractTest, SessionMustStartWithHello) {
   grpc::Status status = stream->Finish();
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(status)->field(), "hello");
+}
+
+bool AllFinite(const api::RobotCommand& command) {
+  const auto finite = [](const common::v1::Vector3& v) {
+    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+  };
+  if (command.has_navigate()) {
+    const api::NavigateAction& navigate = command.navigate();
+    bool ok = finite(navigate.goal()) && std::isfinite(navigate.goal_yaw()) &&
+              std::isfinite(navigate.max_speed_mps());
+    for (const api::PathWaypoint& point : navigate.path()) ok = ok && finite(point.position());
+    return ok;
+  }
+  if (command.has_rotate()) {
+    const api::RotateAction& rotate = command.rotate();
+    return std::isfinite(rotate.angular_speed_rps()) && std::isfinite(rotate.duration_s());
+  }
+  if (command.has_hold()) return std::isfinite(command.hold().duration_s());
+  return true;
+}
+
+// A robot that loses its localization and reports NaN: the gateway ends the session with
+// INVALID_ARGUMENT naming the coordinate, pauses the task, and no command it ever sends carries
+// a NaN (the old gateway kept the pose and, at the next exploration step, sent goal (NaN, NaN)).
+TEST_F(GatewayContractTest, NanPoseEndsTheSessionAndNoNanCommandReachesTheRobot) {
+  api::SubmitInstructionResponse submitted;
+  {
+    ScriptedRobot robot(process_->channel(), "r1");
+    ASSERT_TRUE(Submit("req-1", "find the bottle", &submitted).ok());
+    api::RobotCommand command = robot.NextCommand();
+    ASSERT_TRUE(command.has_navigate());
+    EXPECT_TRUE(AllFinite(command));
+
+    api::ConnectRequest lost;
+    lost.mutable_state()->mutable_pose()->mutable_position()->set_x(std::nan(""));
+    lost.mutable_state()->mutable_pose()->mutable_position()->set_y(std::nan(""));
+    lost.mutable_state()->mutable_pose()->mutable_orientation()->set_w(1.0);
+    robot.Send(lost);
+    // The robot goes on as if nothing happened: it reaches the goal and the scan, each of which
+    // makes the gateway plan its next step from the robot's pose.
+    std::vector<api::RobotCommand> after;
+    robot.Report(command, api::FEEDBACK_KIND_GOAL_REACHED);
+    for (int i = 0; i < 2 && robot.TryNextCommand(&command); ++i) {
+      after.push_back(command);
+      robot.Report(command, api::FEEDBACK_KIND_GOAL_REACHED);
+    }
+    for (const api::RobotCommand& sent : after) EXPECT_TRUE(AllFinite(sent)) << sent.DebugString();
+    grpc::Status ended = robot.Leave();
+    EXPECT_EQ(ended.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << ended.error_message();
+    std::optional<common::v1::ErrorInfo> info = GetDetail<common::v1::ErrorInfo>(ended);
+    ASSERT_TRUE(info.has_value());
+    EXPECT_EQ(info->field(), "state.pose.position.x");
+  }
+  api::TaskSnapshot task = Get(submitted.task_id());
+  EXPECT_EQ(task.status(), api::TASK_STATUS_PAUSED);
+  // Back with a good pose, the task resumes with finite commands.
+  ScriptedRobot back(process_->channel(), "r1");
+  EXPECT_EQ(back.accepted().resumed_task_id(), submitted.task_id());
+  api::RobotCommand resumed = back.NextCommand();
+  EXPECT_TRUE(resumed.has_navigate());
+  EXPECT_TRUE(AllFinite(resumed)) << resumed.DebugString();
+}
+
+// Resident set size of a process, kB, from /proc.
+long ResidentKb(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
+  }
+  return -1;
+}
+
+// A 1 MB robot id is refused naming robot_id with a short message, and nothing of it is kept:
+// no task, no event, no robot record (the old gateway stored it and grew ~3.5 MB per call).
+TEST_F(GatewayContractTest, HugeRobotIdIsRefusedAndNothingIsKept) {
+  const std::string huge_id(1 << 20, 'r');
+  api::SubmitInstructionRequest submit;
+  submit.set_request_id("req-big");
+  submit.set_robot_id(huge_id);
+  submit.set_instruction("find the bottle");
+  api::SubmitInstructionResponse submitted;
+  {
+    grpc::ClientContext context;
+    grpc::Status status = operator_->SubmitInstruction(&context, submit, &submitted);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    std::optional<common::v1::ErrorInfo> info = GetDetail<common::v1::ErrorInfo>(status);
+    ASSERT_TRUE(info.has_value());
+    EXPECT_EQ(info->field(), "robot_id");
+    EXPECT_LT(status.error_message().size(), 1024u);
+  }
+
+  const long rss_before = ResidentKb(process_->pid());
+  for (int i = 0; i < 20; ++i) {
+    api::EmergencyStopRequest stop;
+    stop.set_request_id("stop-big-" + std::to_string(i));
+    stop.set_robot_id(huge_id + std::to_string(i));
+    api::EmergencyStopResponse stopped;
+    grpc::ClientContext context;
+    grpc::Status status = operator_->EmergencyStop(&context, stop, &stopped);
+    ASSERT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    std::optional<common::v1::ErrorInfo> info = GetDetail<common::v1::ErrorInfo>(status);
+    ASSERT_TRUE(info.has_value());
+    EXPECT_EQ(info->field(), "robot_id");
+    EXPECT_LT(status.error_message().size(), 1024u);
+  }
+  const long rss_after = ResidentKb(process_->pid());
+  ASSERT_GT(rss_before, 0);
+  // 20 stored ids would be > 60 MB; receive buffers are reused.
+  EXPECT_LT(rss_after - rss_before, 20 * 1024) << rss_before << " kB -> " << rss_after << " kB";
+
+  api::ListTasksRequest list;
+  api::ListTasksResponse tasks;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->ListTasks(&context, list, &tasks).ok());
+  }
+  EXPECT_EQ(tasks.tasks_size(), 0);
+  // Clearing it is refused the same way (the old gateway had stored the robot and cleared it).
+  api::ClearEmergencyStopRequest clear;
+  clear.set_request_id("clear-big");
+  clear.set_robot_id(huge_id + "0");
+  api::ClearEmergencyStopResponse cleared;
+  grpc::ClientContext context;
+  EXPECT_EQ(operator_->ClearEmergencyStop(&context, clear, &cleared).error_code(),
+            grpc::StatusCode::INVALID_ARGUMENT);
+}
+
+// EmergencyStop{robot_id: ""} stops every connected robot: r1 is sent a stop and listed, its task
+// cancelled; r2, disconnected with a paused task, is left alone and resumes when it reconnects.
+TEST_F(GatewayContractTest, EmergencyStopOfEveryRobotSkipsDisconnectedOnes) {
+  api::SubmitInstructionRequest submit;
+  submit.set_request_id("req-r2");
+  submit.set_robot_id("r2");
+  submit.set_instruction("find the bottle");
+  api::SubmitInstructionResponse r2_task;
+  {
+    ScriptedRobot r2(process_->channel(), "r2");
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->SubmitInstruction(&context, submit, &r2_task).ok());
+    EXPECT_TRUE(r2.NextCommand().has_navigate());
+  }
+  ASSERT_EQ(Get(r2_task.task_id()).status(), api::TASK_STATUS_PAUSED);
+
+  ScriptedRobot r1(process_->channel(), "r1");
+  api::SubmitInstructionResponse r1_task;
+  ASSERT_TRUE(Submit("req-r1", "find the bottle", &r1_task).ok());
+  EXPECT_TRUE(r1.NextCommand().has_navigate());
+
+  api::EmergencyStopRequest stop;
+  stop.set_request_id("stop-all");
+  stop.set_reason("fire alarm");
+  api::EmergencyStopResponse stopped;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(operator_->EmergencyStop(&context, stop, &stopped).ok());
+  }
+  ASSERT_EQ(stopped.stopped_robot_ids_size(), 1);
+  EXPECT_EQ(stopped.stopped_robot_ids(0), "r1");
+  ASSERT_EQ(stopped.cancelled_task_ids_size(), 1);
+  EXPECT_EQ(stopped.cancelled_task_ids(0), r1_task.task_id());
+  api::RobotCommand command = r1.NextCommand();
+  ASSERT_TRUE(command.has_stop());
+  EXPECT_TRUE(command.stop().emergency());
+  EXPECT_EQ(Get(r1_task.task_id()).status(), api::TASK_STATUS_CANCELLED);
+  EXPECT_EQ(Get(r2_task.task_id()).status(), api::TASK_STATUS_PAUSED);
+
+  ScriptedRobot r2_back(process_->channel(), "r2");
+  EXPECT_EQ(r2_back.accepted().resumed_task_id(), r2_task.task_id());
+  EXPECT_TRUE(r2_back.NextCommand().has_navigate());
 }
 
 // A configured commonsense prior that cannot be read stops the binary with the key named.
