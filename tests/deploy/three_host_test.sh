@@ -31,6 +31,18 @@ work=$(mktemp -d /tmp/semnav-three-hosts.XXXXXX)
 pids=()
 cleanup() {
   for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+  # `ip netns exec` forks: the services are its children, and SIGTERM to it left all six running
+  # after ctest ended. Every process inside the test's namespaces is ours: stop them all.
+  local inside=()
+  for host in "${!ns[@]}"; do inside+=($(ip netns pids "${ns[$host]}" 2>/dev/null || true)); done
+  ((${#inside[@]})) && kill -TERM "${inside[@]}" 2>/dev/null || true
+  for _ in $(seq 50); do
+    local alive=0
+    for pid in "${inside[@]}"; do if kill -0 "$pid" 2>/dev/null; then alive=1; fi; done
+    ((alive)) || break
+    sleep 0.1
+  done
+  ((${#inside[@]})) && kill -KILL "${inside[@]}" 2>/dev/null || true
   for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
   for host in "${!ns[@]}"; do
     ip netns del "${ns[$host]}" 2>/dev/null || true
