@@ -18,7 +18,7 @@
 #include "clients/sim/core/view_renderer.h"
 #include "clients/sim/core/world_yaml.h"
 #include "clients/sim/worlds/benchmark_suite.h"
-#include "services/common/cli/flags.h"
+#include "services/common/cli/benchmark_flags.h"
 #include "services/common/cli/help.h"
 
 namespace semnav::sim {
@@ -114,15 +114,9 @@ int main(int argc, char** argv) {
   constexpr char kUsage[] =
       "usage: semnav-bench-sim [--json FILE] [--benchmark_* flags]\n"
       "Depth render and full sensor frame time per world source.\n";
-  // Before benchmark::Initialize, which would answer --help with its own text.
-  if (semnav::HelpRequested(argc, argv)) {
-    std::printf("%s", kUsage);
-    return 0;
-  }
   using namespace semnav::sim;
-  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
   const semnav::ParsedFlags flags =
-      semnav::ParseFlagsOrExit(argc, argv, {{"json", "FILE", ""}}, "semnav-bench-sim", kUsage);
+      semnav::ParseBenchmarkFlagsOrExit(&argc, argv, {{"json", "FILE", ""}}, "semnav-bench-sim", kUsage);
   const std::string json_path = flags.Get("json").value_or("");
   for (const Case& c : Cases()) {
     benchmark::RegisterBenchmark(("render_depth_640x480/" + c.name).c_str(), BM_RenderDepth, &c)

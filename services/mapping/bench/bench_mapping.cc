@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "services/common/cli/flags.h"
+#include "services/common/cli/benchmark_flags.h"
 #include "services/common/cli/help.h"
 #include "services/mapping/bench/figures.h"
 #include "services/mapping/bench/grid_image.h"
@@ -207,15 +207,9 @@ int main(int argc, char** argv) {
   constexpr char kUsage[] =
       "usage: semnav-bench-mapping [--json FILE] [--png FILE] [--benchmark_* flags]\n"
       "Frame integration vs plain OctoMap, agreement, FR-079 grid, scene-graph update.\n";
-  // Before benchmark::Initialize, which would answer --help with its own text.
-  if (semnav::HelpRequested(argc, argv)) {
-    std::printf("%s", kUsage);
-    return 0;
-  }
   using namespace semnav::mapping::bench;
-  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
-  const semnav::ParsedFlags flags = semnav::ParseFlagsOrExit(
-      argc, argv, {{"json", "FILE", ""}, {"png", "FILE", ""}}, "semnav-bench-mapping", kUsage);
+  const semnav::ParsedFlags flags = semnav::ParseBenchmarkFlagsOrExit(
+      &argc, argv, {{"json", "FILE", ""}, {"png", "FILE", ""}}, "semnav-bench-mapping", kUsage);
   const std::string json_path = flags.Get("json").value_or("");
   if (auto png = flags.Get("png")) g_png_path = *png;
   benchmark::RunSpecifiedBenchmarks();

@@ -18,7 +18,7 @@
 
 #include "benchmark/benchmark.h"
 #include "nlohmann/json.hpp"
-#include "services/common/cli/flags.h"
+#include "services/common/cli/benchmark_flags.h"
 #include "services/common/cli/help.h"
 #include "services/reasoning/bench/loopback_latency.h"
 #include "services/reasoning/core/fast_resolver.h"
@@ -173,14 +173,8 @@ int main(int argc, char** argv) {
   constexpr char kUsage[] =
       "usage: semnav-bench-gateway [--json FILE] [--benchmark_* flags]\n"
       "Fast-path resolve, ESCA grounding and instruction-to-command latency of the gateway.\n";
-  // Before benchmark::Initialize, which would answer --help with its own text.
-  if (semnav::HelpRequested(argc, argv)) {
-    std::printf("%s", kUsage);
-    return 0;
-  }
-  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
-  const semnav::ParsedFlags flags =
-      semnav::ParseFlagsOrExit(argc, argv, {{"json", "FILE", ""}}, "semnav-bench-gateway", kUsage);
+  const semnav::ParsedFlags flags = semnav::ParseBenchmarkFlagsOrExit(
+      &argc, argv, {{"json", "FILE", ""}}, "semnav-bench-gateway", kUsage);
   const std::string json_path = flags.Get("json").value_or("");
   benchmark::RunSpecifiedBenchmarks();
   const nlohmann::json figures = semnav::reasoning::Figures();

@@ -13,7 +13,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
-#include "services/common/cli/flags.h"
+#include "services/common/cli/benchmark_flags.h"
 #include "services/common/cli/help.h"
 #include "services/relocalization/bench/evaluation.h"
 #include "services/relocalization/core/hungarian.h"
@@ -32,9 +32,9 @@ constexpr char kUsage[] =
     " [--benchmark_* flags]\n"
     "Seed 001 relocalization vs the RANSAC + Umeyama baseline on seeded scenarios.\n";
 
-// Our flags, once benchmark::Initialize has taken its own out of argv.
-Options ParseOptions(int argc, char** argv) {
-  const ParsedFlags flags = ParseFlagsOrExit(
+// Our flags and Google Benchmark's.
+Options ParseOptions(int* argc, char** argv) {
+  const ParsedFlags flags = ParseBenchmarkFlagsOrExit(
       argc, argv, {{"json", "FILE", ""}, {"keyframes", "N", ""}, {"seed", "S", ""}},
       "semnav-bench-relocalization", kUsage);
   Options o;
@@ -110,13 +110,7 @@ void BM_Hungarian8x8(benchmark::State& state) {
 BENCHMARK(BM_Hungarian8x8);
 
 int Main(int argc, char** argv) {
-  // Before benchmark::Initialize, which would answer --help with its own text.
-  if (HelpRequested(argc, argv)) {
-    std::cout << kUsage;
-    return 0;
-  }
-  benchmark::Initialize(&argc, argv);  // takes its --benchmark_* flags out of argv
-  const Options options = ParseOptions(argc, argv);
+  const Options options = ParseOptions(&argc, argv);
   const RelocalizationParams params;
   const eval::BaselineParams baseline;
   const eval::SuccessBounds bounds;
