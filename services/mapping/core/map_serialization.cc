@@ -37,7 +37,9 @@ void PutLe(std::string& out, uint64_t value, int bytes) {
 
 uint64_t GetLe(const std::string& in, size_t offset, int bytes) {
   uint64_t value = 0;
-  for (int i = 0; i < bytes; ++i) value |= static_cast<uint64_t>(static_cast<unsigned char>(in[offset + i])) << (8 * i);
+  for (int i = 0; i < bytes; ++i) {
+    value |= static_cast<uint64_t>(static_cast<unsigned char>(in[offset + i])) << (8 * i);
+  }
   return value;
 }
 
@@ -65,7 +67,8 @@ absl::StatusOr<SavedGrid> ParseGridSection(const std::string& section) {
     return absl::DataLossError("map payload: grid resolution is not a positive number");
   }
   // Division, not multiplication: a corrupt count must not overflow the size check.
-  if ((section.size() - 16) % kSavedCellBytes != 0 || (section.size() - 16) / kSavedCellBytes != count) {
+  const size_t cell_bytes = section.size() - 16;
+  if (cell_bytes % kSavedCellBytes != 0 || cell_bytes / kSavedCellBytes != count) {
     return absl::DataLossError(absl::StrCat("map payload: grid section holds ", section.size() - 16,
                                             " bytes for ", count, " cells"));
   }
@@ -78,7 +81,8 @@ absl::StatusOr<SavedGrid> ParseGridSection(const std::string& section) {
     cell.height = static_cast<uint8_t>(GetLe(section, offset + 12, 1));
     const uint64_t structure = GetLe(section, offset + 13, 1);
     if (!std::isfinite(cell.log_odds) || structure > 1) {
-      return absl::DataLossError(absl::StrCat("map payload: grid cell (", cell.x, ", ", cell.y, ") is malformed"));
+      return absl::DataLossError(
+          absl::StrCat("map payload: grid cell (", cell.x, ", ", cell.y, ") is malformed"));
     }
     cell.structure = structure == 1;
     offset += kSavedCellBytes;

@@ -108,7 +108,8 @@ TEST(MapSerializationTest, PayloadWithoutGridStillLoadsWithoutOne) {
 TEST(MapSerializationTest, DamagedGridSectionIsDataLoss) {
   const SavedGrid grid = TwoCells();
   const std::string payload = Payload(&grid);
-  EXPECT_EQ(ParseMap(payload.substr(0, payload.size() - 1)).status().code(), absl::StatusCode::kDataLoss);
+  const std::string truncated = payload.substr(0, payload.size() - 1);
+  EXPECT_EQ(ParseMap(truncated).status().code(), absl::StatusCode::kDataLoss);
   std::string nan_cell = payload;
   // The last cell's log-odds (4 bytes before height and structure) becomes a NaN.
   nan_cell.replace(nan_cell.size() - 6, 4, std::string("\x00\x00\xc0\x7f", 4));

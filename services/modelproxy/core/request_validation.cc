@@ -14,7 +14,9 @@ bool SupportedMime(const std::string& mime) {
 
 uint32_t BigEndian(absl::string_view data, size_t offset, int bytes) {
   uint32_t value = 0;
-  for (int i = 0; i < bytes; ++i) value = (value << 8) | static_cast<unsigned char>(data[offset + i]);
+  for (int i = 0; i < bytes; ++i) {
+    value = (value << 8) | static_cast<unsigned char>(data[offset + i]);
+  }
   return value;
 }
 
@@ -111,7 +113,9 @@ absl::Status ValidateCompletionRequest(const CompletionRequest& request) {
       const ContentPart& part = message.parts[j];
       const std::string path = absl::StrCat(parts_field, "[", j, "]");
       if (!part.is_image()) {
-        if (!part.image_mime.empty()) return InvalidField(path + ".image.data", "must not be empty");
+        if (!part.image_mime.empty()) {
+          return InvalidField(path + ".image.data", "must not be empty");
+        }
         if (part.text.empty()) return InvalidField(path + ".text", "must not be empty");
         // The budget is for the whole prompt; the part that crosses it is named.
         text_bytes += part.text.size();

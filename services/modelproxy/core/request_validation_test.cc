@@ -64,7 +64,9 @@ TEST(ModelProxyRequestValidationTest, EmbeddingTextsMustBeNonEmpty) {
 std::string PngHeader(uint32_t width, uint32_t height) {
   std::string png("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
   for (uint32_t v : {width, height}) {
-    for (int shift = 24; shift >= 0; shift -= 8) png.push_back(static_cast<char>((v >> shift) & 0xff));
+    for (int shift = 24; shift >= 0; shift -= 8) {
+      png.push_back(static_cast<char>((v >> shift) & 0xff));
+    }
   }
   return png + std::string("\x08\x02\0\0\0", 5);
 }
@@ -142,8 +144,8 @@ TEST(ModelProxyRequestValidationTest, ImagesStayWithinTheByteAndPixelBudget) {
   ExpectField(ValidateCompletionRequest(WithImage(JpegHeader(8193, 2), "image/jpeg")),
               "messages[0].parts[1].image.data");
   ExpectField(ValidateCompletionRequest(WithImage("not a png")), "messages[0].parts[1].image.data");
-  ExpectField(ValidateCompletionRequest(WithImage(PngHeader(4, 4) + std::string(kMaxImageBytes, 0))),
-              "messages[0].parts[1].image.data");
+  const std::string oversized = PngHeader(4, 4) + std::string(kMaxImageBytes, 0);
+  ExpectField(ValidateCompletionRequest(WithImage(oversized)), "messages[0].parts[1].image.data");
   CompletionRequest many = Good();
   for (size_t i = 0; i <= kMaxImagesPerRequest; ++i) {
     many.messages[0].parts.push_back(ContentPart{"", PngHeader(4, 4), "image/png"});

@@ -266,7 +266,8 @@ TEST_F(ModelProxyContractTest, HostileRequestsNameTheFieldAndChangeNoUsage) {
   const std::string before = Usage().SerializeAsString();
   const std::string megabyte(1 << 20, 'x');
   const auto expect_named = [](const grpc::Status& s, const std::string& field) {
-    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << field << ": " << s.error_message();
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << field << ": " << s.error_message();
     const auto info = GetDetail<common::v1::ErrorInfo>(s);
     ASSERT_TRUE(info.has_value()) << field;
     EXPECT_EQ(info->field(), field);
@@ -293,7 +294,8 @@ TEST_F(ModelProxyContractTest, HostileRequestsNameTheFieldAndChangeNoUsage) {
   common::v1::Image* bomb = request.mutable_messages(0)->add_parts()->mutable_image();
   bomb->set_encoding(common::v1::IMAGE_ENCODING_PNG);
   // Signature and an IHDR declaring 100000 x 100000 pixels: 40 GB once decoded.
-  bomb->set_data(std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\x01\x86\xa0\0\x01\x86\xa0\x08\x02\0\0\0", 29));
+  bomb->set_data(std::string(
+      "\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\x01\x86\xa0\0\x01\x86\xa0\x08\x02\0\0\0", 29));
   expect_named(Complete(request, &response), "messages[0].parts[1].image.data");
   request = TaskRequest();
   request.mutable_timeout()->set_seconds(-5);

@@ -162,7 +162,9 @@ absl::Status RelocalizationServiceImpl::DoUpsert(const v1::UpsertLandmarksReques
     return absl::OkStatus();
   }
   if (absl::Status s = ValidateMapId(request.map_id()); !s.ok()) return WithErrorInfo(s, "FIELD_INVALID");
-  if (request.landmarks().empty()) return InvalidField("landmarks", "must contain at least one landmark");
+  if (request.landmarks().empty()) {
+    return InvalidField("landmarks", "must contain at least one landmark");
+  }
   size_t dim = 0;
   if (absl::StatusOr<std::shared_ptr<const LandmarkMap>> existing = store_->Get(request.map_id());
       existing.ok()) {

@@ -223,7 +223,8 @@ TEST_F(RelocalizationContractTest, HostileRequestsNameTheFieldAndChangeNoMap) {
   const auto before = MapState("m");
   const std::string megabyte(1 << 20, 'x');
   const auto expect_named = [](const grpc::Status& s, const std::string& field) {
-    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << field << ": " << s.error_message();
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << field << ": " << s.error_message();
     EXPECT_EQ(FieldOf(s), field);
     EXPECT_LT(s.error_message().size(), 1024u) << field;
     EXPECT_LT(s.error_details().size(), 2048u) << field;
