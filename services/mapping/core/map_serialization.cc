@@ -1,5 +1,7 @@
 #include "services/mapping/core/map_serialization.h"
 
+#include <bit>
+#include <cmath>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -27,13 +29,75 @@ absl::StatusOr<std::string> TakeSection(const std::string& in, size_t& offset, a
   return section;
 }
 
+constexpr size_t kSavedCellBytes = 4 + 4 + 4 + 1 + 1;
+
+void PutLe(std::string& out, uint64_t value, int bytes) {
+  for (int i = 0; i < bytes; ++i) out.push_back(static_cast<char>((value >> (8 * i)) & 0xff));
+}
+
+uint64_t GetLe(const std::string& in, size_t offset, int bytes) {
+  uint64_t value = 0;
+  for (int i = 0; i < bytes; ++i) {
+    value |= static_cast<uint64_t>(static_cast<unsigned char>(in[offset + i])) << (8 * i);
+  }
+  return value;
+}
+
+std::string GridSection(const SavedGrid& grid) {
+  std::string out;
+  out.reserve(16 + grid.cells.size() * kSavedCellBytes);
+  PutLe(out, std::bit_cast<uint64_t>(grid.resolution_m), 8);
+  PutLe(out, grid.cells.size(), 8);
+  for (const SavedGridCell& cell : grid.cells) {
+    PutLe(out, static_cast<uint32_t>(cell.x), 4);
+    PutLe(out, static_cast<uint32_t>(cell.y), 4);
+    PutLe(out, std::bit_cast<uint32_t>(cell.log_odds), 4);
+    PutLe(out, cell.height, 1);
+    PutLe(out, cell.structure ? 1 : 0, 1);
+  }
+  return out;
+}
+
+absl::StatusOr<SavedGrid> ParseGridSection(const std::string& section) {
+  if (section.size() < 16) return absl::DataLossError("map payload: grid section truncated");
+  SavedGrid grid;
+  grid.resolution_m = std::bit_cast<double>(GetLe(section, 0, 8));
+  const uint64_t count = GetLe(section, 8, 8);
+  if (!std::isfinite(grid.resolution_m) || grid.resolution_m <= 0.0) {
+    return absl::DataLossError("map payload: grid resolution is not a positive number");
+  }
+  // Division, not multiplication: a corrupt count must not overflow the size check.
+  const size_t cell_bytes = section.size() - 16;
+  if (cell_bytes % kSavedCellBytes != 0 || cell_bytes / kSavedCellBytes != count) {
+    return absl::DataLossError(absl::StrCat("map payload: grid section holds ", section.size() - 16,
+                                            " bytes for ", count, " cells"));
+  }
+  grid.cells.resize(count);
+  size_t offset = 16;
+  for (SavedGridCell& cell : grid.cells) {
+    cell.x = static_cast<int32_t>(static_cast<uint32_t>(GetLe(section, offset, 4)));
+    cell.y = static_cast<int32_t>(static_cast<uint32_t>(GetLe(section, offset + 4, 4)));
+    cell.log_odds = std::bit_cast<float>(static_cast<uint32_t>(GetLe(section, offset + 8, 4)));
+    cell.height = static_cast<uint8_t>(GetLe(section, offset + 12, 1));
+    const uint64_t structure = GetLe(section, offset + 13, 1);
+    if (!std::isfinite(cell.log_odds) || structure > 1) {
+      return absl::DataLossError(
+          absl::StrCat("map payload: grid cell (", cell.x, ", ", cell.y, ") is malformed"));
+    }
+    cell.structure = structure == 1;
+    offset += kSavedCellBytes;
+  }
+  return grid;
+}
+
 json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
 Eigen::Vector3d Vec(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
 
 }  // namespace
 
 std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObject>& objects, uint64_t next_object_id,
-                         const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points) {
+                         const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points,
+                         const SavedGrid* grid) {
   std::ostringstream octree;
   tree.write(octree);
   json scene = {{"next_id", next_object_id}, {"objects", json::array()}};
@@ -58,6 +122,7 @@ std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObj
   PutSection(out, octree.str());
   PutSection(out, scene.dump());
   PutSection(out, semantic.dump());
+  if (grid != nullptr) PutSection(out, GridSection(*grid));
   return out;
 }
 
@@ -71,6 +136,14 @@ absl::StatusOr<MapContent> ParseMap(const std::string& payload) {
   if (!semantic.ok()) return semantic.status();
 
   MapContent content;
+  // Files saved before the grid was kept end here.
+  if (offset < payload.size()) {
+    absl::StatusOr<std::string> grid = TakeSection(payload, offset, "grid");
+    if (!grid.ok()) return grid.status();
+    absl::StatusOr<SavedGrid> parsed = ParseGridSection(*grid);
+    if (!parsed.ok()) return parsed.status();
+    content.grid = *std::move(parsed);
+  }
   std::istringstream octree_stream(*octree);
   std::unique_ptr<octomap::AbstractOcTree> tree(octomap::AbstractOcTree::read(octree_stream));
   auto* oc_tree = dynamic_cast<octomap::OcTree*>(tree.get());

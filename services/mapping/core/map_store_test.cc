@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "services/mapping/core/map_serialization.h"
+
 namespace semnav::mapping {
 namespace {
 
@@ -63,6 +65,60 @@ TEST_F(MapStoreTest, RejectsBadMapIds) {
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << id;
     EXPECT_THAT(std::string(status.message()), HasSubstr("map_id"));
   }
+}
+
+// A payload as the engine writes it: an empty octree, no objects, one labelled point.
+std::string Payload(const SavedGrid* grid) {
+  const octomap::OcTree tree(0.05);
+  const std::map<std::string, std::vector<Eigen::Vector3f>> points = {{"chair", {{1, 2, 3}}}};
+  return SerializeMap(tree, {}, 7, points, grid);
+}
+
+SavedGrid TwoCells() {
+  SavedGrid grid;
+  grid.resolution_m = 0.05;
+  // Negative indices, a log-odds below zero and one at the clamp, a structure cell.
+  grid.cells = {{-3, 41, -0.4054651f, 0, false}, {12, -7, 3.5f, 57, false}, {0, 0, 0.0f, 0, true}};
+  return grid;
+}
+
+TEST(MapSerializationTest, GridLogOddsRoundTripBitForBit) {
+  const SavedGrid grid = TwoCells();
+  const absl::StatusOr<MapContent> content = ParseMap(Payload(&grid));
+  ASSERT_TRUE(content.ok()) << content.status();
+  ASSERT_TRUE(content->grid.has_value());
+  EXPECT_EQ(content->grid->resolution_m, 0.05);
+  EXPECT_EQ(content->grid->cells, grid.cells);
+  EXPECT_EQ(content->next_object_id, 7u);
+  EXPECT_EQ(content->semantic_points.at("chair").size(), 1u);
+}
+
+TEST(MapSerializationTest, PayloadWithoutGridStillLoadsWithoutOne) {
+  // Maps saved before the grid was kept: three sections, the loader rebuilds the grid.
+  const std::string old_payload = Payload(nullptr);
+  const absl::StatusOr<MapContent> content = ParseMap(old_payload);
+  ASSERT_TRUE(content.ok()) << content.status();
+  EXPECT_FALSE(content->grid.has_value());
+  EXPECT_EQ(content->semantic_points.at("chair").size(), 1u);
+  // The new section is only appended: the first three are byte-identical to the old format.
+  const SavedGrid grid = TwoCells();
+  EXPECT_EQ(Payload(&grid).substr(0, old_payload.size()), old_payload);
+}
+
+TEST(MapSerializationTest, DamagedGridSectionIsDataLoss) {
+  const SavedGrid grid = TwoCells();
+  const std::string payload = Payload(&grid);
+  const std::string truncated = payload.substr(0, payload.size() - 1);
+  EXPECT_EQ(ParseMap(truncated).status().code(), absl::StatusCode::kDataLoss);
+  std::string nan_cell = payload;
+  // The last cell's log-odds (4 bytes before height and structure) becomes a NaN.
+  nan_cell.replace(nan_cell.size() - 6, 4, std::string("\x00\x00\xc0\x7f", 4));
+  EXPECT_EQ(ParseMap(nan_cell).status().code(), absl::StatusCode::kDataLoss);
+  std::string wrong_count = payload;
+  // Count field: after the last section's 8-byte size and 8-byte resolution.
+  const size_t grid_start = payload.size() - (16 + 3 * 14);
+  wrong_count[grid_start + 8] = 4;
+  EXPECT_EQ(ParseMap(wrong_count).status().code(), absl::StatusCode::kDataLoss);
 }
 
 }  // namespace

@@ -5,9 +5,11 @@
 
 #include "absl/random/random.h"
 #include "absl/status/status.h"
+#include "absl/strings/cord.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "absl/synchronization/mutex.h"
+#include "services/common/status/field_error.h"
 #include "services/modelproxy/core/json_answer.h"
 #include "services/modelproxy/core/request_key.h"
 #include "services/modelproxy/core/request_validation.h"
@@ -49,6 +51,12 @@ constexpr absl::Duration kMinAttemptTime = absl::Milliseconds(1);
 double UniformDraw() {
   thread_local absl::BitGen gen;
   return absl::Uniform(gen, 0.0, 1.0);
+}
+
+// A call outcome without a request field to blame, with a stable ErrorInfo reason.
+absl::Status WithReason(absl::Status status, absl::string_view reason) {
+  status.SetPayload(kReasonPayloadUrl, absl::Cord(reason));
+  return status;
 }
 
 std::string Summary(const std::string& alias, const std::vector<Attempt>& attempts) {
@@ -120,7 +128,8 @@ absl::StatusOr<std::vector<ModelProxy::Managed*>> ModelProxy::Chain(
     const std::string& alias) const {
   auto it = aliases_.find(alias);
   if (it == aliases_.end()) {
-    return absl::NotFoundError(absl::StrCat("model_alias '", alias, "' is not configured"));
+    return FieldStatus(absl::StatusCode::kNotFound, "model_alias",
+                       absl::StrCat("'", Preview(alias), "' is not configured"), "ALIAS_NOT_FOUND");
   }
   std::vector<Managed*> chain;
   for (const std::string& name : it->second) chain.push_back(backends_.at(name).get());
@@ -191,14 +200,18 @@ ModelProxy::ChainOutcome<Reply> ModelProxy::RunChain(
     }
   }
   if (absl::Now() + kMinAttemptTime >= deadline) {
-    out.reply = absl::DeadlineExceededError(
-        absl::StrCat("deadline passed; ", Summary(alias, out.attempts)));
+    out.reply = WithReason(absl::DeadlineExceededError(
+                               absl::StrCat("deadline passed; ", Summary(alias, out.attempts))),
+                           "DEADLINE_EXCEEDED");
   } else if (!out.attempts.empty() &&
              out.attempts.back().status.code() == absl::StatusCode::kInvalidArgument) {
-    out.reply = absl::InvalidArgumentError(Summary(alias, out.attempts));
+    // The request was valid here but every backend refused it (e.g. too long for its model).
+    out.reply = WithReason(absl::InvalidArgumentError(Summary(alias, out.attempts)),
+                           "BACKEND_REJECTED");
   } else {
-    out.reply =
-        absl::UnavailableError(absl::StrCat("no backend answered; ", Summary(alias, out.attempts)));
+    out.reply = WithReason(
+        absl::UnavailableError(absl::StrCat("no backend answered; ", Summary(alias, out.attempts))),
+        "BACKEND_UNAVAILABLE");
   }
   return out;
 }
@@ -211,8 +224,10 @@ absl::StatusOr<std::vector<ModelProxy::Managed*>> ModelProxy::Begin(const absl::
   absl::StatusOr<std::vector<Managed*>> chain = Chain(alias);
   if (!chain.ok()) return chain.status();
   deadline = std::min(deadline, start + options_.max_deadline);
-  if (start >= deadline)
-    return absl::DeadlineExceededError("deadline passed before the call started");
+  if (start >= deadline) {
+    return WithReason(absl::DeadlineExceededError("deadline passed before the call started"),
+                      "DEADLINE_EXCEEDED");
+  }
   return chain;
 }
 

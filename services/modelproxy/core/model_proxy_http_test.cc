@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <limits>
 #include <thread>
 
 #include "absl/strings/match.h"
+#include "services/common/status/field_error.h"
 #include "nlohmann/json.hpp"
 #include "services/modelproxy/core/http_backend.h"
 #include "services/modelproxy/core/model_proxy.h"
@@ -320,6 +322,30 @@ TEST_F(ModelProxyHttpTest, BadRequestsFailBeforeAnyBackendCall) {
   r.temperature = -1;
   EXPECT_EQ(Call(r).status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_EQ(server_.requests(Route::kOpenAiChat), 0);
+}
+
+// Every call outcome carries a stable reason for ErrorInfo, and a huge alias is not echoed.
+TEST_F(ModelProxyHttpTest, FailuresCarryAStableReason) {
+  Build();
+  const auto unknown = Call(Ask("q", "nope"));
+  EXPECT_EQ(ErrorReason(unknown.status()).value_or(""), "ALIAS_NOT_FOUND");
+  EXPECT_EQ(ErrorField(unknown.status()).value_or(""), "model_alias");
+  const auto huge = Call(Ask("q", std::string(1 << 20, 'a')));
+  EXPECT_EQ(huge.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(huge.status()).value_or(""), "model_alias");
+  EXPECT_LT(huge.status().message().size(), 200u);
+  CompletionRequest hot = Ask("q");
+  hot.temperature = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(ErrorReason(Call(hot).status()).value_or(""), "FIELD_INVALID");
+
+  server_.SetDefault(Route::kOpenAiChat, Action::Status(503));
+  server_.SetDefault(Route::kAnthropicMessages, Action::Status(503));
+  const auto down = Call(Ask("q"));
+  EXPECT_EQ(down.status().code(), absl::StatusCode::kUnavailable);
+  EXPECT_EQ(ErrorReason(down.status()).value_or(""), "BACKEND_UNAVAILABLE");
+  const auto late = Call(Ask("q"), absl::ZeroDuration());
+  EXPECT_EQ(late.status().code(), absl::StatusCode::kDeadlineExceeded);
+  EXPECT_EQ(ErrorReason(late.status()).value_or(""), "DEADLINE_EXCEEDED");
 }
 
 }  // namespace

@@ -1,7 +1,11 @@
 #include "services/modelproxy/server/model_proxy_service.h"
 
+#include "absl/strings/cord.h"
+#include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/value_checks.h"
 #include "services/modelproxy/server/proto_convert.h"
 
 namespace semnav::modelproxy {
@@ -15,6 +19,32 @@ std::string Metadata(const grpc::CallbackServerContext& context, const char* key
 
 CallerId Caller(const grpc::CallbackServerContext& context) {
   return CallerId{Metadata(context, kRobotIdMetadata), Metadata(context, kTaskIdMetadata)};
+}
+
+// A request's own time budget: unset/zero = none; otherwise positive and at most a day (the
+// proxy caps it further at max_deadline_s).
+constexpr int64_t kMaxTimeoutS = 86400;
+
+absl::Status ValidateTimeout(const google::protobuf::Duration& timeout) {
+  if (timeout.seconds() < 0 || timeout.seconds() > kMaxTimeoutS) {
+    return InvalidField("timeout.seconds", absl::StrCat("must be in [0, ", kMaxTimeoutS, "]"));
+  }
+  if (timeout.nanos() < 0 || timeout.nanos() > 999999999) {
+    return InvalidField("timeout.nanos", "must be in [0, 999999999]");
+  }
+  return absl::OkStatus();
+}
+
+// Caller ids key the usage ledger: bounded like every other id.
+absl::Status ValidateCaller(const CallerId& caller) {
+  if (auto s = CheckLength(caller.robot_id, kRobotIdMetadata, kMaxIdBytes); !s.ok()) return s;
+  return CheckLength(caller.task_id, kTaskIdMetadata, kMaxIdBytes);
+}
+
+grpc::ServerUnaryReactor* Finish(grpc::CallbackServerContext* context, const absl::Status& status) {
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  reactor->Finish(ToGrpcStatus(status));
+  return reactor;
 }
 
 // The earlier of the gRPC deadline and now + the request's own timeout (when set).
@@ -41,7 +71,9 @@ grpc::ServerUnaryReactor* ModelProxyServiceImpl::RunOnWorker(grpc::CallbackServe
                                                              std::function<grpc::Status()> job) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
   if (!workers_.Submit([reactor, job = std::move(job)] { reactor->Finish(job()); })) {
-    reactor->Finish(grpc::Status(grpc::StatusCode::UNAVAILABLE, "model proxy is shutting down"));
+    absl::Status stopping = absl::UnavailableError("model proxy is shutting down");
+    stopping.SetPayload(kReasonPayloadUrl, absl::Cord("SHUTTING_DOWN"));
+    reactor->Finish(ToGrpcStatus(stopping));
   }
   return reactor;
 }
@@ -50,6 +82,8 @@ grpc::ServerUnaryReactor* ModelProxyServiceImpl::Complete(grpc::CallbackServerCo
                                                           const v1::CompleteRequest* request,
                                                           v1::CompleteResponse* response) {
   const CallerId caller = Caller(*context);
+  if (absl::Status s = ValidateCaller(caller); !s.ok()) return Finish(context, s);
+  if (absl::Status s = ValidateTimeout(request->timeout()); !s.ok()) return Finish(context, s);
   const absl::Time deadline = Deadline(*context, request->timeout());
   return RunOnWorker(context, [this, request, response, caller, deadline] {
     absl::StatusOr<CompletionRequest> core = ToCore(*request);
@@ -65,6 +99,8 @@ grpc::ServerUnaryReactor* ModelProxyServiceImpl::Embed(grpc::CallbackServerConte
                                                        const v1::EmbedRequest* request,
                                                        v1::EmbedResponse* response) {
   const CallerId caller = Caller(*context);
+  if (absl::Status s = ValidateCaller(caller); !s.ok()) return Finish(context, s);
+  if (absl::Status s = ValidateTimeout(request->timeout()); !s.ok()) return Finish(context, s);
   const absl::Time deadline = Deadline(*context, request->timeout());
   return RunOnWorker(context, [this, request, response, caller, deadline] {
     absl::StatusOr<EmbeddingResult> result = proxy_->Embed(ToCore(*request), caller, deadline);
@@ -86,20 +122,22 @@ grpc::ServerUnaryReactor* ModelProxyServiceImpl::ListBackends(
   }
   response->set_default_alias(default_alias_);
   response->set_cache_entries(proxy_->cache_entries());
-  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  reactor->Finish(grpc::Status::OK);
-  return reactor;
+  return Finish(context, absl::OkStatus());
 }
 
 grpc::ServerUnaryReactor* ModelProxyServiceImpl::GetUsage(grpc::CallbackServerContext* context,
                                                           const v1::GetUsageRequest* request,
                                                           v1::GetUsageResponse* response) {
+  if (auto s = CheckLength(request->robot_id(), "robot_id", kMaxIdBytes); !s.ok()) {
+    return Finish(context, s);
+  }
+  if (auto s = CheckLength(request->task_id(), "task_id", kMaxIdBytes); !s.ok()) {
+    return Finish(context, s);
+  }
   for (const UsageRow& row : proxy_->usage().Query(request->robot_id(), request->task_id())) {
     ToProto(row, response->add_records());
   }
-  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  reactor->Finish(grpc::Status::OK);
-  return reactor;
+  return Finish(context, absl::OkStatus());
 }
 
 }  // namespace semnav::modelproxy

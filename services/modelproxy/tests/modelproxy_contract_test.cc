@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -233,7 +234,11 @@ TEST_F(ModelProxyContractTest, BadInputIsRejectedNamingTheFieldAndChangesNothing
 
   status = Complete(TaskRequest("no-such-alias"), &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::NOT_FOUND);
-  EXPECT_TRUE(absl::StrContains(status.error_message(), "model_alias 'no-such-alias'"));
+  EXPECT_TRUE(absl::StrContains(status.error_message(), "'no-such-alias'"));
+  const auto unknown = GetDetail<common::v1::ErrorInfo>(status);
+  ASSERT_TRUE(unknown.has_value());
+  EXPECT_EQ(unknown->field(), "model_alias");
+  EXPECT_EQ(unknown->reason(), "ALIAS_NOT_FOUND");
 
   v1::CompleteRequest prose = TaskRequest();
   prose.mutable_messages(0)->mutable_parts(0)->set_text("write me a poem");
@@ -249,6 +254,74 @@ TEST_F(ModelProxyContractTest, BadInputIsRejectedNamingTheFieldAndChangesNothing
   EXPECT_EQ(after.records(0).failed_calls(), 1);
   EXPECT_EQ(after.records(0).calls(), 0);
   ASSERT_TRUE(Complete(TaskRequest(), &response).ok());  // still serving
+}
+
+// Hostile requests from other-language clients: NaN, 1e300, 1 MB strings, a PNG header
+// claiming 100000 x 100000 pixels, bad timeouts. Each names its field with reason FIELD_INVALID,
+// keeps the message short, and no call is accounted (usage unchanged).
+TEST_F(ModelProxyContractTest, HostileRequestsNameTheFieldAndChangeNoUsage) {
+  Start({});
+  v1::CompleteResponse response;
+  ASSERT_TRUE(Complete(TaskRequest(), &response).ok());
+  const std::string before = Usage().SerializeAsString();
+  const std::string megabyte(1 << 20, 'x');
+  const auto expect_named = [](const grpc::Status& s, const std::string& field) {
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << field << ": " << s.error_message();
+    const auto info = GetDetail<common::v1::ErrorInfo>(s);
+    ASSERT_TRUE(info.has_value()) << field;
+    EXPECT_EQ(info->field(), field);
+    EXPECT_EQ(info->reason(), "FIELD_INVALID");
+    EXPECT_LT(s.error_message().size(), 1024u) << field;
+    EXPECT_LT(s.error_details().size(), 2048u) << field;
+  };
+
+  v1::CompleteRequest request = TaskRequest();
+  request.set_temperature(std::nan(""));
+  expect_named(Complete(request, &response), "temperature");
+  request = TaskRequest();
+  request.set_temperature(1e300);
+  expect_named(Complete(request, &response), "temperature");
+  request = TaskRequest();
+  request.mutable_messages(0)->mutable_parts(0)->set_text(megabyte);
+  expect_named(Complete(request, &response), "messages[0].parts[0].text");
+  expect_named(Complete(TaskRequest(megabyte), &response), "model_alias");
+  request = TaskRequest();
+  request.set_response_format(v1::RESPONSE_FORMAT_JSON_SCHEMA);
+  request.set_json_schema("{\"d\":\"" + megabyte + "\"}");
+  expect_named(Complete(request, &response), "json_schema");
+  request = TaskRequest();
+  common::v1::Image* bomb = request.mutable_messages(0)->add_parts()->mutable_image();
+  bomb->set_encoding(common::v1::IMAGE_ENCODING_PNG);
+  // Signature and an IHDR declaring 100000 x 100000 pixels: 40 GB once decoded.
+  bomb->set_data(std::string(
+      "\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\x01\x86\xa0\0\x01\x86\xa0\x08\x02\0\0\0", 29));
+  expect_named(Complete(request, &response), "messages[0].parts[1].image.data");
+  request = TaskRequest();
+  request.mutable_timeout()->set_seconds(-5);
+  expect_named(Complete(request, &response), "timeout.seconds");
+  request = TaskRequest();
+  request.mutable_timeout()->set_seconds(4000000000000LL);
+  expect_named(Complete(request, &response), "timeout.seconds");
+  expect_named(Complete(TaskRequest(), &response, std::string(1000, 'r')), "x-semnav-robot-id");
+
+  v1::EmbedRequest embed;
+  embed.set_model_alias("embed");
+  embed.add_texts(megabyte);
+  v1::EmbedResponse embedded;
+  {
+    grpc::ClientContext context;
+    expect_named(stub_->Embed(&context, embed, &embedded), "texts[0]");
+  }
+  v1::GetUsageRequest usage;
+  usage.set_robot_id(megabyte);
+  v1::GetUsageResponse usage_rows;
+  {
+    grpc::ClientContext context;
+    expect_named(stub_->GetUsage(&context, usage, &usage_rows), "robot_id");
+  }
+
+  EXPECT_EQ(Usage().SerializeAsString(), before);
 }
 
 TEST_F(ModelProxyContractTest, DeadlineHoldsAgainstASlowVendor) {

@@ -1,5 +1,6 @@
 #include "services/relocalization/core/hungarian.h"
 
+#include <cmath>
 #include <limits>
 
 namespace semnav::relocalization {
@@ -65,8 +66,10 @@ std::vector<int> MaxSimilarityAssignment(const Eigen::MatrixXd& similarity) {
   const Eigen::Index rows = similarity.rows(), cols = similarity.cols();
   std::vector<int> result(static_cast<size_t>(rows), -1);
   if (rows == 0 || cols == 0) return result;
-  // Negative scores can never help, so they cost the same as "no match" (0).
-  const Eigen::MatrixXd cost = -similarity.cwiseMax(0.0);
+  // Negative scores can never help, so they cost the same as "no match" (0). So does a
+  // non-finite score: a NaN cost never lowers a slack, and the augmenting search looped forever.
+  const Eigen::MatrixXd cost =
+      -similarity.unaryExpr([](double s) { return std::isfinite(s) && s > 0.0 ? s : 0.0; });
   if (rows <= cols) {
     result = MinCostRowAssignment(cost);
   } else {
@@ -75,7 +78,7 @@ std::vector<int> MaxSimilarityAssignment(const Eigen::MatrixXd& similarity) {
   }
   for (Eigen::Index r = 0; r < rows; ++r) {
     const int c = result[static_cast<size_t>(r)];
-    if (c >= 0 && similarity(r, c) <= 0.0) result[static_cast<size_t>(r)] = -1;
+    if (c >= 0 && !(cost(r, c) < 0.0)) result[static_cast<size_t>(r)] = -1;
   }
   return result;
 }

@@ -1,5 +1,6 @@
 #include "services/relocalization/core/hungarian.h"
 
+#include <limits>
 #include <random>
 #include <set>
 
@@ -80,6 +81,26 @@ TEST(RelocHungarianTest, MatchesBruteForceOnRandomSmallMatrices) {
     std::vector<bool> used(static_cast<size_t>(s.cols()), false);
     EXPECT_NEAR(Total(s, a), BruteForceBest(s, 0, used), 1e-9) << "trial " << trial << "\n" << s;
   }
+}
+
+// Similarities from absurd coordinates are NaN or infinite: they used to make the augmenting
+// search spin forever (one Relocalize request pinned a core). They now count as "no match".
+TEST(RelocHungarianTest, NonFiniteSimilaritiesAreNoMatchAndTerminate) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd s(2, 2);
+  s << nan, 0.5,
+       0.7, nan;
+  EXPECT_EQ(MaxSimilarityAssignment(s), (std::vector<int>{1, 0}));
+  s << nan, nan,
+       nan, nan;
+  EXPECT_EQ(MaxSimilarityAssignment(s), (std::vector<int>{-1, -1}));
+  Eigen::MatrixXd wide(1, 2);
+  wide << inf, 0.2;
+  EXPECT_EQ(MaxSimilarityAssignment(wide), (std::vector<int>{1}));
+  Eigen::MatrixXd tall(3, 1);  // more rows than columns: the transposed path
+  tall << nan, 0.4, -inf;
+  EXPECT_EQ(MaxSimilarityAssignment(tall), (std::vector<int>{-1, 0, -1}));
 }
 
 }  // namespace

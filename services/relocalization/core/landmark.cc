@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
+#include "services/common/status/value_checks.h"
 
 namespace semnav::relocalization {
 
@@ -31,24 +33,34 @@ double CosineSimilarity(const Descriptor& a, const Descriptor& b) {
 
 absl::Status ValidateLandmark(const Landmark& landmark, size_t descriptor_dim,
                               absl::string_view field) {
-  if (!landmark.position.allFinite()) {
-    return absl::InvalidArgumentError(absl::StrCat(field, ".position: must be finite"));
+  const char* const axes[] = {"x", "y", "z"};
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string coordinate = absl::StrCat(field, ".position.", axes[axis]);
+    if (auto s = CheckMagnitude(landmark.position[axis], coordinate, kMaxCoordinateM); !s.ok()) {
+      return s;
+    }
   }
-  if (!std::isfinite(landmark.scale) || landmark.scale <= 0.0) {
-    return absl::InvalidArgumentError(
-        absl::StrCat(field, ".scale: must be finite and > 0, got ", landmark.scale));
+  const std::string scale_field = absl::StrCat(field, ".scale_m");
+  if (auto s = CheckRange(landmark.scale, scale_field, 0.0, kMaxLandmarkScaleM); !s.ok()) return s;
+  if (landmark.scale <= 0.0) return InvalidField(scale_field, "must be > 0");
+  if (landmark.observations > kMaxObservations) {
+    return InvalidField(absl::StrCat(field, ".observations"),
+                        absl::StrCat("must be at most ", kMaxObservations));
   }
-  if (landmark.descriptor.empty()) {
-    return absl::InvalidArgumentError(absl::StrCat(field, ".embedding: must not be empty"));
+  const std::string embedding = absl::StrCat(field, ".embedding");
+  if (landmark.descriptor.empty()) return InvalidField(embedding, "must not be empty");
+  if (auto s = CheckCount(landmark.descriptor.size(), embedding, kMaxDescriptorDim); !s.ok()) {
+    return s;
   }
   if (descriptor_dim != 0 && landmark.descriptor.size() != descriptor_dim) {
-    return absl::InvalidArgumentError(absl::StrCat(field, ".embedding: length ",
-                                                   landmark.descriptor.size(),
-                                                   " != map descriptor length ", descriptor_dim));
+    return InvalidField(embedding, absl::StrCat("length ", landmark.descriptor.size(),
+                                                " != map descriptor length ", descriptor_dim));
   }
-  for (float v : landmark.descriptor) {
-    if (!std::isfinite(v)) {
-      return absl::InvalidArgumentError(absl::StrCat(field, ".embedding: must be finite"));
+  for (size_t i = 0; i < landmark.descriptor.size(); ++i) {
+    const float v = landmark.descriptor[i];
+    if (!std::isfinite(v) || std::abs(v) > kMaxDescriptorValue) {
+      return InvalidField(embedding, absl::StrCat("entry ", i, " must be finite and within +-",
+                                                  kMaxDescriptorValue));
     }
   }
   return absl::OkStatus();

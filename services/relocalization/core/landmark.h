@@ -29,9 +29,19 @@ int DescriptorLabel(const Descriptor& descriptor);
 // Cosine similarity in [-1, 1]; 0 when either vector has zero norm.
 double CosineSimilarity(const Descriptor& a, const Descriptor& b);
 
-// Checks finite position, positive finite scale and a finite descriptor (named
-// "embedding" in errors, its wire name) of
-// `descriptor_dim` entries (0 = any non-empty length). Errors name `field`.
+// Request limits (docs/protocol.md, Relocalization): bounds that keep one request's memory and
+// arithmetic sane (squared distances and descriptor dot products stay far from overflow).
+inline constexpr double kMaxLandmarkScaleM = 1e3;       // no object is larger than 1 km
+inline constexpr size_t kMaxDescriptorDim = 4096;       // floats per embedding
+inline constexpr double kMaxDescriptorValue = 1e6;      // |each embedding entry|
+inline constexpr uint32_t kMaxObservations = 1000000;   // fused frames; sums stay in uint32
+inline constexpr size_t kMaxLandmarksPerRequest = 10000;  // upserted or observed landmarks
+
+// Checks each position coordinate within +-kMaxCoordinateM, scale in (0, kMaxLandmarkScaleM],
+// observations <= kMaxObservations and a descriptor (named "embedding" in errors, its wire
+// name) of 1..kMaxDescriptorDim entries, each within +-kMaxDescriptorValue, of
+// `descriptor_dim` entries (0 = any non-empty length). Errors name `field` and its sub-field
+// ("landmarks[3].position.x") via InvalidField.
 absl::Status ValidateLandmark(const Landmark& landmark, size_t descriptor_dim,
                               absl::string_view field);
 

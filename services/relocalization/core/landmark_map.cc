@@ -3,6 +3,8 @@
 #include <unordered_map>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
+#include "services/common/status/value_checks.h"
 
 namespace semnav::relocalization {
 namespace {
@@ -37,9 +39,8 @@ size_t LandmarkMap::descriptor_dim() const {
 
 absl::StatusOr<UpsertSummary> LandmarkMap::Upsert(std::vector<Landmark> incoming,
                                                   const MergeParams& params) {
-  if (incoming.empty()) {
-    return absl::InvalidArgumentError("landmarks: must contain at least one landmark");
-  }
+  if (incoming.empty()) return InvalidField("landmarks", "must contain at least one landmark");
+  if (auto s = CheckCount(incoming.size(), "landmarks", kMaxLandmarksPerRequest); !s.ok()) return s;
   const size_t dim = descriptor_dim() != 0 ? descriptor_dim() : incoming.front().descriptor.size();
   std::unordered_map<uint64_t, size_t> slot_of_id;
   for (size_t i = 0; i < landmarks().size(); ++i) slot_of_id[landmarks()[i].id] = i;
@@ -47,11 +48,12 @@ absl::StatusOr<UpsertSummary> LandmarkMap::Upsert(std::vector<Landmark> incoming
     const std::string field = absl::StrCat("landmarks[", i, "]");
     if (auto s = ValidateLandmark(incoming[i], dim, field); !s.ok()) return s;
     if (incoming[i].observations == 0) {
-      return absl::InvalidArgumentError(absl::StrCat(field, ".observations: must be >= 1"));
+      return InvalidField(absl::StrCat(field, ".observations"), "must be >= 1");
     }
     if (incoming[i].id != 0 && !slot_of_id.contains(incoming[i].id)) {
-      return absl::NotFoundError(absl::StrCat(field, ".id: no landmark ", incoming[i].id,
-                                              " in this map"));
+      return FieldStatus(absl::StatusCode::kNotFound, absl::StrCat(field, ".id"),
+                         absl::StrCat("no landmark ", incoming[i].id, " in this map"),
+                         "LANDMARK_NOT_FOUND");
     }
   }
 

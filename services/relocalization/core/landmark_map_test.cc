@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "services/common/status/field_error.h"
+
 namespace semnav::relocalization {
 namespace {
 
@@ -100,6 +102,67 @@ TEST(RelocLandmarkMapTest, BadInputNamesTheFieldAndChangesNothing) {
   EXPECT_EQ(map.revision(), 1u);
   EXPECT_EQ(map.landmarks().size(), 3u);
   EXPECT_EQ(map.next_id(), 4u);
+}
+
+// Every hostile value names its field (ErrorField) and leaves the map as it was.
+TEST(RelocLandmarkMapTest, AbsurdValuesNameTheFieldAndChangeNothing) {
+  LandmarkMap map = ThreeLandmarks();
+  const auto expect_rejected = [&map](std::vector<Landmark> incoming, const std::string& field) {
+    const auto s = map.Upsert(std::move(incoming), MergeParams{});
+    EXPECT_EQ(s.status().code(), absl::StatusCode::kInvalidArgument) << field;
+    EXPECT_EQ(ErrorField(s.status()).value_or(""), field);
+    EXPECT_LT(s.status().message().size(), 1024u);
+    EXPECT_EQ(map.revision(), 1u) << field;
+    EXPECT_EQ(map.landmarks().size(), 3u) << field;
+  };
+  const Landmark good = Make(5, 5, {0, 0, 1});
+  Landmark bad = good;
+  bad.position.z() = 1e300;  // finite, but no place in any map
+  expect_rejected({good, bad}, "landmarks[1].position.z");
+  bad = good;
+  bad.position.x() = std::numeric_limits<double>::quiet_NaN();
+  expect_rejected({bad}, "landmarks[0].position.x");
+  bad = good;
+  bad.position.y() = -1.0001e5;  // just beyond kMaxCoordinateM
+  expect_rejected({bad}, "landmarks[0].position.y");
+  bad = good;
+  bad.scale = 1e300;
+  expect_rejected({bad}, "landmarks[0].scale_m");
+  bad = good;
+  bad.scale = 0.0;
+  expect_rejected({bad}, "landmarks[0].scale_m");
+  bad = good;
+  bad.descriptor[1] = 3e38f;  // finite float whose square overflows
+  expect_rejected({bad}, "landmarks[0].embedding");
+  bad = good;
+  bad.observations = 4000000000u;  // two of these would wrap a uint32 sum when merged
+  expect_rejected({bad}, "landmarks[0].observations");
+  expect_rejected(std::vector<Landmark>(kMaxLandmarksPerRequest + 1, good), "landmarks");
+
+  // Exactly at the limits is accepted.
+  Landmark edge = good;
+  edge.position = {1e5, -1e5, 0.0};
+  edge.scale = kMaxLandmarkScaleM;
+  edge.observations = kMaxObservations;
+  EXPECT_TRUE(map.Upsert({edge}, MergeParams{}).ok());
+}
+
+TEST(RelocLandmarkMapTest, OverlongEmbeddingIsRejectedOnAnEmptyMap) {
+  LandmarkMap map;
+  const auto s = map.Upsert({Make(0, 0, Descriptor(kMaxDescriptorDim + 1, 0.5f))}, MergeParams{});
+  EXPECT_EQ(s.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(s.status()).value_or(""), "landmarks[0].embedding");
+  EXPECT_TRUE(map.landmarks().empty());
+}
+
+TEST(RelocLandmarkMapTest, UnknownIdIsNotFoundNamingTheId) {
+  LandmarkMap map = ThreeLandmarks();
+  Landmark l = Make(1, 1, {1, 0, 0});
+  l.id = 99;
+  const auto s = map.Upsert({l}, MergeParams{});
+  EXPECT_EQ(s.status().code(), absl::StatusCode::kNotFound);
+  EXPECT_EQ(ErrorField(s.status()).value_or(""), "landmarks[0].id");
+  EXPECT_EQ(ErrorReason(s.status()).value_or(""), "LANDMARK_NOT_FOUND");
 }
 
 }  // namespace

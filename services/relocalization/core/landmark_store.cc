@@ -6,6 +6,7 @@
 
 #include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 #include "services/relocalization/core/landmark_map_file.h"
 
 namespace semnav::relocalization {
@@ -20,9 +21,9 @@ absl::Status ValidateMapId(absl::string_view map_id) {
     return absl::ascii_isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
   });
   if (map_id.empty() || map_id.size() > 128 || map_id.front() == '.' || !chars_ok) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "map_id: must be 1-128 characters of [A-Za-z0-9_.-] not starting with '.', got \"",
-        map_id, "\""));
+    // Preview: a 1 MB id is never echoed back.
+    return InvalidField("map_id", absl::StrCat("must be 1-128 characters of [A-Za-z0-9_.-] not "
+                                               "starting with '.', got \"", Preview(map_id), "\""));
   }
   return absl::OkStatus();
 }

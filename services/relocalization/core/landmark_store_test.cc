@@ -7,6 +7,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "services/common/status/field_error.h"
+
 namespace semnav::relocalization {
 namespace {
 
@@ -97,6 +99,17 @@ TEST(RelocLandmarkStoreTest, CorruptFileIsDataLossAndNeverOverwritten) {
   ASSERT_TRUE((*store)->Delete("bad").ok());  // the explicit way out
   EXPECT_FALSE(std::filesystem::exists(bad_path));
   EXPECT_TRUE((*store)->Upsert("bad", OneLandmark(3)).ok());
+}
+
+TEST(RelocLandmarkStoreTest, AHugeMapIdIsNamedButNotEchoed) {
+  auto store = LandmarkStore::Open("", MergeParams{});
+  ASSERT_TRUE(store.ok());
+  const std::string huge(1 << 20, 'a');
+  const auto upsert = (*store)->Upsert(huge, OneLandmark(0.0));
+  EXPECT_EQ(upsert.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(upsert.status()).value_or(""), "map_id");
+  EXPECT_LT(upsert.status().message().size(), 200u);
+  EXPECT_EQ((*store)->Get(huge).status().message(), upsert.status().message());
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include "absl/strings/string_view.h"
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
+#include "services/common/status/value_checks.h"
 
 namespace semnav::relocalization {
 namespace {
@@ -14,13 +16,12 @@ double Sigmoid(double x) { return 1.0 / (1.0 + std::exp(-x)); }
 absl::Status CheckPlane(const std::vector<float>& data, size_t channels, size_t cells,
                         absl::string_view name) {
   if (data.size() != channels * cells) {
-    return absl::InvalidArgumentError(absl::StrCat("tensors.", name, ": expected ",
-                                                   channels * cells, " values, got ",
-                                                   data.size()));
+    return InvalidField(absl::StrCat("tensors.", name),
+                        absl::StrCat("expected ", channels * cells, " values, got ", data.size()));
   }
   for (float v : data) {
     if (!std::isfinite(v)) {
-      return absl::InvalidArgumentError(absl::StrCat("tensors.", name, ": must be finite"));
+      return InvalidField(absl::StrCat("tensors.", name), "must be finite");
     }
   }
   return absl::OkStatus();
@@ -29,31 +30,33 @@ absl::Status CheckPlane(const std::vector<float>& data, size_t channels, size_t 
 // Bounds keep channels x cells far from size_t overflow (2^15 x 2^15 x 2^16 = 2^46).
 constexpr int kMaxSide = 1 << 15;
 constexpr int kMaxChannels = 1 << 16;
+constexpr double kMaxStride = 1024.0;
 
 absl::Status Validate(const HeadTensors& h, const ObjectPointParams& p) {
-  if (h.width <= 0 || h.height <= 0 || h.width > kMaxSide || h.height > kMaxSide) {
-    return absl::InvalidArgumentError("tensors.width/height: must be in [1, 32768]");
+  if (auto s = CheckRange(h.width, "tensors.width", 1, kMaxSide); !s.ok()) return s;
+  if (auto s = CheckRange(h.height, "tensors.height", 1, kMaxSide); !s.ok()) return s;
+  if (auto s = CheckRange(h.heatmap_channels, "tensors.heatmap_channels", 1, kMaxChannels);
+      !s.ok()) {
+    return s;
   }
-  if (h.heatmap_channels <= 0 || h.heatmap_channels > kMaxChannels) {
-    return absl::InvalidArgumentError("tensors.heatmap_channels: must be in [1, 65536]");
+  if (auto s = CheckRange(h.feature_channels, "tensors.feature_channels", 0, kMaxChannels);
+      !s.ok()) {
+    return s;
   }
-  if (h.feature_channels < 0 || h.feature_channels > kMaxChannels) {
-    return absl::InvalidArgumentError("tensors.feature_channels: must be in [0, 65536]");
-  }
-  if (!std::isfinite(h.stride_x) || h.stride_x <= 0.0 || !std::isfinite(h.stride_y) ||
-      h.stride_y <= 0.0) {
-    return absl::InvalidArgumentError("tensors.stride_x/stride_y: must be finite and > 0");
-  }
-  if (p.nms_kernel < 0 || p.top_k <= 0) {
-    return absl::InvalidArgumentError("params: nms_kernel must be >= 0 and top_k > 0");
-  }
+  // A stride maps cells to pixels: beyond kMaxStride the boxes leave any real image.
+  if (auto s = CheckRange(h.stride_x, "tensors.stride_x", 0.0, kMaxStride); !s.ok()) return s;
+  if (auto s = CheckRange(h.stride_y, "tensors.stride_y", 0.0, kMaxStride); !s.ok()) return s;
+  if (h.stride_x <= 0.0) return InvalidField("tensors.stride_x", "must be > 0");
+  if (h.stride_y <= 0.0) return InvalidField("tensors.stride_y", "must be > 0");
+  if (p.top_k <= 0) return InvalidField("top_k", "must be > 0");
+  if (p.nms_kernel < 0) return absl::InvalidArgumentError("params: nms_kernel must be >= 0");
   const size_t cells = static_cast<size_t>(h.width) * static_cast<size_t>(h.height);
   if (auto s = CheckPlane(h.heatmap, static_cast<size_t>(h.heatmap_channels), cells, "heatmap");
       !s.ok()) {
     return s;
   }
   if (auto s = CheckPlane(h.offset, 2, cells, "offset"); !s.ok()) return s;
-  if (auto s = CheckPlane(h.size, 2, cells, "size"); !s.ok()) return s;
+  if (auto s = CheckPlane(h.size, 2, cells, "box_size"); !s.ok()) return s;
   return CheckPlane(h.features, static_cast<size_t>(h.feature_channels), cells, "features");
 }
 

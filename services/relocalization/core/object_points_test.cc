@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "services/common/status/field_error.h"
+
 namespace semnav::relocalization {
 namespace {
 
@@ -118,6 +120,26 @@ TEST(RelocObjectPointsTest, MalformedTensorsNameTheTensor) {
   r = ExtractObjectPoints(h, {});
   EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(r.status().message(), HasSubstr("tensors.features"));
+}
+
+TEST(RelocObjectPointsTest, SizesAndStridesNameTheirOwnField) {
+  HeadTensors h = HandMadeHeads();
+  h.width = 0;
+  auto r = ExtractObjectPoints(h, {});
+  EXPECT_EQ(ErrorField(r.status()).value_or(""), "tensors.width");
+  h = HandMadeHeads();
+  h.height = 1 << 20;
+  r = ExtractObjectPoints(h, {});
+  EXPECT_EQ(ErrorField(r.status()).value_or(""), "tensors.height");
+  h = HandMadeHeads();
+  h.stride_y = 1e300;  // finite, but every box would leave any image
+  r = ExtractObjectPoints(h, {});
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(r.status()).value_or(""), "tensors.stride_y");
+  h = HandMadeHeads();
+  h.size.pop_back();  // the wire name of the size head is box_size
+  r = ExtractObjectPoints(h, {});
+  EXPECT_EQ(ErrorField(r.status()).value_or(""), "tensors.box_size");
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 
 #include "absl/strings/str_cat.h"
 #include "semnav/common/v1/errors.pb.h"
+#include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/value_checks.h"
 
 namespace semnav::relocalization {
 
@@ -20,15 +22,18 @@ absl::StatusOr<Landmark> LandmarkFromProto(const v1::Landmark& proto, size_t des
   l.scale = proto.scale_m();
   l.descriptor.assign(proto.embedding().begin(), proto.embedding().end());
   l.observations = proto.observations() == 0 ? 1 : proto.observations();
-  if (absl::Status s = ValidateLandmark(l, descriptor_dim, field); !s.ok()) {
-    return WithErrorInfo(s, "FIELD_INVALID");
-  }
+  if (absl::Status s = ValidateLandmark(l, descriptor_dim, field); !s.ok()) return s;
   return l;
 }
 
 absl::StatusOr<std::vector<Landmark>> LandmarksFromProto(
     const google::protobuf::RepeatedPtrField<v1::Landmark>& protos, size_t descriptor_dim,
     absl::string_view field) {
+  // Before converting anything: a huge list is rejected without copying it.
+  if (auto s = CheckCount(static_cast<size_t>(protos.size()), field, kMaxLandmarksPerRequest);
+      !s.ok()) {
+    return s;
+  }
   std::vector<Landmark> out;
   out.reserve(static_cast<size_t>(protos.size()));
   for (int i = 0; i < protos.size(); ++i) {
@@ -111,6 +116,8 @@ void SolutionToProto(const RelocalizationResult& result, const std::vector<uint6
 absl::Status WithErrorInfo(const absl::Status& status, absl::string_view reason,
                            absl::string_view field_prefix) {
   if (status.ok()) return status;
+  // Core named the field itself (InvalidField / FieldStatus): ToGrpcStatus reads its payloads.
+  if (ErrorField(status).has_value()) return status;
   const absl::string_view message = status.message();
   const size_t colon = message.find(": ");
   const absl::string_view head = colon == absl::string_view::npos ? "" : message.substr(0, colon);

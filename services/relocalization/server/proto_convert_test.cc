@@ -21,8 +21,9 @@ v1::Landmark Valid() {
   return l;
 }
 
+// The field the client will see: what ToGrpcStatus puts into ErrorInfo.
 std::string FieldOf(const absl::Status& s) {
-  const auto info = GetDetail<common::v1::ErrorInfo>(s);
+  const auto info = GetDetail<common::v1::ErrorInfo>(FromGrpcStatus(ToGrpcStatus(s)));
   return info ? info->field() : "";
 }
 
@@ -43,7 +44,7 @@ TEST(RelocProtoConvertTest, ErrorsCarryTheRequestFieldPath) {
   EXPECT_EQ(FieldOf(LandmarkFromProto(l, 2, "landmarks[3]").status()), "landmarks[3].position");
   l = Valid();
   l.set_scale_m(std::numeric_limits<double>::quiet_NaN());
-  EXPECT_EQ(FieldOf(LandmarkFromProto(l, 2, "landmarks[3]").status()), "landmarks[3].scale");
+  EXPECT_EQ(FieldOf(LandmarkFromProto(l, 2, "landmarks[3]").status()), "landmarks[3].scale_m");
 
   google::protobuf::RepeatedPtrField<v1::Landmark> list;
   *list.Add() = Valid();

@@ -5,7 +5,9 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/strip.h"
+#include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/value_checks.h"
 #include "services/relocalization/core/indexed_landmarks.h"
 #include "services/relocalization/core/object_points.h"
 #include "services/relocalization/core/relocalizer.h"
@@ -16,6 +18,17 @@ namespace semnav::relocalization {
 namespace {
 
 constexpr uint32_t kDefaultPageSize = 1000;
+// Request limits (docs/protocol.md): a page of this many 4096-float landmarks stays a few
+// hundred MB at worst; the usual 16-float ones ~1 MB, within the 4 MiB message limit.
+constexpr uint32_t kMaxPageSize = 10000;
+constexpr uint32_t kMaxTopK = 100000;
+// Pixels per side of an image for the detector; larger images are rejected before decoding.
+constexpr uint32_t kMaxImageSide = 8192;
+
+// Idempotency keys are kept in a cache: bounded like every other id.
+absl::Status CheckRequestId(const std::string& request_id) {
+  return CheckLength(request_id, "request_id", kMaxIdBytes);
+}
 
 grpc::ServerUnaryReactor* Answer(grpc::CallbackServerContext* context, const absl::Status& status) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
@@ -39,7 +52,7 @@ class MapPageWriter final : public grpc::ServerWriteReactor<v1::GetLandmarkMapRe
   }
   void OnWriteDone(bool ok) override {
     if (!ok) {
-      Finish(grpc::Status(grpc::StatusCode::CANCELLED, "client stopped reading"));
+      Finish(ToGrpcStatus(absl::CancelledError("client stopped reading")));
       return;
     }
     if (next_ >= map_->landmarks().size()) {
@@ -102,7 +115,10 @@ absl::StatusOr<std::shared_ptr<const LandmarkMap>> RelocalizationServiceImpl::Ge
 absl::Status RelocalizationServiceImpl::DoExtract(const v1::ExtractObjectPointsRequest& request,
                                                   v1::ExtractObjectPointsResponse& response) {
   ObjectPointParams params = config_.object_points;
-  if (request.top_k() != 0) params.top_k = static_cast<int>(std::min<uint32_t>(request.top_k(), 100000));
+  if (request.top_k() > kMaxTopK) {
+    return InvalidField("top_k", absl::StrCat("must be at most ", kMaxTopK));
+  }
+  if (request.top_k() != 0) params.top_k = static_cast<int>(request.top_k());
   HeadTensors heads;
   switch (request.input_case()) {
     case v1::ExtractObjectPointsRequest::kTensors:
@@ -113,6 +129,13 @@ absl::Status RelocalizationServiceImpl::DoExtract(const v1::ExtractObjectPointsR
         return FieldError(absl::StatusCode::kFailedPrecondition, "image",
                           "no ONNX detector configured (relocalization.detector.model_path)",
                           "NO_DETECTOR");
+      }
+      // Before decoding: a small PNG can claim a huge raster.
+      if (request.image().width() > kMaxImageSide) {
+        return InvalidField("image.width", absl::StrCat("must be at most ", kMaxImageSide));
+      }
+      if (request.image().height() > kMaxImageSide) {
+        return InvalidField("image.height", absl::StrCat("must be at most ", kMaxImageSide));
       }
       absl::StatusOr<cv::Mat> image = DecodeColorImage(request.image());
       if (!image.ok()) return image.status();
@@ -132,6 +155,7 @@ absl::Status RelocalizationServiceImpl::DoExtract(const v1::ExtractObjectPointsR
 
 absl::Status RelocalizationServiceImpl::DoUpsert(const v1::UpsertLandmarksRequest& request,
                                                  v1::UpsertLandmarksResponse& response) {
+  if (absl::Status s = CheckRequestId(request.request_id()); !s.ok()) return s;
   absl::MutexLock lock(&transaction_mu_);
   if (auto first = upsert_answers_.Find(request.request_id())) {
     response = *std::move(first);
@@ -139,7 +163,7 @@ absl::Status RelocalizationServiceImpl::DoUpsert(const v1::UpsertLandmarksReques
   }
   if (absl::Status s = ValidateMapId(request.map_id()); !s.ok()) return WithErrorInfo(s, "FIELD_INVALID");
   if (request.landmarks().empty()) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "landmarks", "must contain at least one landmark");
+    return InvalidField("landmarks", "must contain at least one landmark");
   }
   size_t dim = 0;
   if (absl::StatusOr<std::shared_ptr<const LandmarkMap>> existing = store_->Get(request.map_id());
@@ -165,6 +189,7 @@ absl::Status RelocalizationServiceImpl::DoUpsert(const v1::UpsertLandmarksReques
 }
 
 absl::Status RelocalizationServiceImpl::DoDelete(const v1::DeleteLandmarkMapRequest& request) {
+  if (absl::Status s = CheckRequestId(request.request_id()); !s.ok()) return s;
   absl::MutexLock lock(&transaction_mu_);
   if (delete_answers_.Find(request.request_id())) return absl::OkStatus();
   absl::Status s = store_->Delete(request.map_id());
@@ -179,9 +204,7 @@ absl::Status RelocalizationServiceImpl::DoRelocalize(const v1::RelocalizeRequest
                                                      v1::RelocalizeResponse& response) {
   absl::StatusOr<std::shared_ptr<const LandmarkMap>> map = GetMap(request.map_id(), "map_id");
   if (!map.ok()) return map.status();
-  if (request.observed().empty()) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "observed", "must not be empty");
-  }
+  if (request.observed().empty()) return InvalidField("observed", "must not be empty");
   absl::StatusOr<std::vector<Landmark>> observed =
       LandmarksFromProto(request.observed(), (*map)->descriptor_dim(), "observed");
   if (!observed.ok()) return observed.status();
@@ -229,6 +252,10 @@ grpc::ServerUnaryReactor* RelocalizationServiceImpl::UpsertLandmarks(
 
 grpc::ServerWriteReactor<v1::GetLandmarkMapResponse>* RelocalizationServiceImpl::GetLandmarkMap(
     grpc::CallbackServerContext* /*context*/, const v1::GetLandmarkMapRequest* request) {
+  if (request->page_size() > kMaxPageSize) {
+    return new FailedWriter(
+        InvalidField("page_size", absl::StrCat("must be at most ", kMaxPageSize)));
+  }
   absl::StatusOr<std::shared_ptr<const LandmarkMap>> map = GetMap(request->map_id(), "map_id");
   if (!map.ok()) return new FailedWriter(map.status());
   return new MapPageWriter(*std::move(map), request->page_size());

@@ -194,7 +194,7 @@ TEST_F(RelocalizationContractTest, BadUpsertsNameTheFieldAndChangeNothing) {
   bad[1].position.y() = std::numeric_limits<double>::quiet_NaN();
   grpc::Status s = Upsert("m", bad, &response);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  EXPECT_EQ(FieldOf(s), "landmarks[1].position");
+  EXPECT_EQ(FieldOf(s), "landmarks[1].position.y");
 
   bad = {scene.map[2]};
   bad[0].descriptor.pop_back();
@@ -210,6 +210,92 @@ TEST_F(RelocalizationContractTest, BadUpsertsNameTheFieldAndChangeNothing) {
   s = Upsert("../escape", {scene.map[2]}, &response);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(FieldOf(s), "map_id");
+
+  EXPECT_EQ(MapState("m"), before);
+}
+
+// Hostile requests from other-language clients: NaN, 1e300, 1 MB strings, oversized lists and
+// parameters. Each names its field, keeps the message short and changes no map.
+TEST_F(RelocalizationContractTest, HostileRequestsNameTheFieldAndChangeNoMap) {
+  const eval::Scenario scene = eval::GenerateScenario(Scene());
+  v1::UpsertLandmarksResponse response;
+  ASSERT_TRUE(Upsert("m", {scene.map[0], scene.map[1], scene.map[2]}, &response).ok());
+  const auto before = MapState("m");
+  const std::string megabyte(1 << 20, 'x');
+  const auto expect_named = [](const grpc::Status& s, const std::string& field) {
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << field << ": " << s.error_message();
+    EXPECT_EQ(FieldOf(s), field);
+    EXPECT_LT(s.error_message().size(), 1024u) << field;
+    EXPECT_LT(s.error_details().size(), 2048u) << field;
+  };
+
+  std::vector<Landmark> bad = {scene.map[3]};
+  bad[0].position.x() = 1e300;
+  expect_named(Upsert("m", bad, &response), "landmarks[0].position.x");
+  bad = {scene.map[3]};
+  bad[0].scale = 1e300;
+  expect_named(Upsert("m", bad, &response), "landmarks[0].scale_m");
+  bad = {scene.map[3]};
+  bad[0].descriptor[0] = std::numeric_limits<float>::max();
+  expect_named(Upsert("m", bad, &response), "landmarks[0].embedding");
+  expect_named(Upsert(megabyte, {scene.map[3]}, &response), "map_id");
+  expect_named(Upsert("m", {scene.map[3]}, &response, megabyte), "request_id");
+  expect_named(Upsert("m", std::vector<Landmark>(10001, scene.map[3]), &response), "landmarks");
+
+  v1::RelocalizeRequest relocalize;
+  relocalize.set_map_id("m");
+  for (int i = 0; i < 3; ++i) ToProto(scene.map[static_cast<size_t>(i)], relocalize.add_observed());
+  relocalize.mutable_observed(2)->mutable_position()->set_z(-1e300);
+  v1::RelocalizeResponse relocalized;
+  {
+    grpc::ClientContext context;
+    expect_named(stub_->Relocalize(&context, relocalize, &relocalized), "observed[2].position.z");
+  }
+  v1::AlignMapsRequest align;
+  align.set_reference_map_id("m");
+  align.set_moving_map_id(megabyte);
+  v1::AlignMapsResponse aligned;
+  {
+    grpc::ClientContext context;
+    expect_named(stub_->AlignMaps(&context, align, &aligned), "moving_map_id");
+  }
+  v1::DeleteLandmarkMapRequest remove;
+  remove.set_map_id("m");
+  remove.set_request_id(megabyte);
+  v1::DeleteLandmarkMapResponse removed;
+  {
+    grpc::ClientContext context;
+    expect_named(stub_->DeleteLandmarkMap(&context, remove, &removed), "request_id");
+  }
+  std::vector<v1::GetLandmarkMapResponse> pages;
+  expect_named(ReadMap("m", 4000000000u, &pages), "page_size");
+  EXPECT_TRUE(pages.empty());
+
+  v1::ExtractObjectPointsRequest extract;
+  extract.set_top_k(4000000000u);
+  v1::HeadTensors* t = extract.mutable_tensors();
+  t->set_width(1);
+  t->set_height(1);
+  t->set_heatmap_channels(1);
+  t->add_heatmap(1.0f);
+  t->add_offset(0.0f);
+  t->add_offset(0.0f);
+  t->add_box_size(1.0f);
+  t->add_box_size(1.0f);
+  t->set_stride_x(4.0);
+  t->set_stride_y(4.0);
+  v1::ExtractObjectPointsResponse points;
+  {
+    grpc::ClientContext context;
+    expect_named(stub_->ExtractObjectPoints(&context, extract, &points), "top_k");
+  }
+  extract.set_top_k(0);
+  t->set_stride_x(1e300);
+  {
+    grpc::ClientContext context;
+    expect_named(stub_->ExtractObjectPoints(&context, extract, &points), "tensors.stride_x");
+  }
 
   EXPECT_EQ(MapState("m"), before);
 }
@@ -270,7 +356,7 @@ TEST_F(RelocalizationContractTest, BadRelocalizeAndAlignNameTheField) {
   observed[2].position.x() = std::numeric_limits<double>::infinity();
   s = relocalize("m", observed, &response);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  EXPECT_EQ(FieldOf(s), "observed[2].position");
+  EXPECT_EQ(FieldOf(s), "observed[2].position.x");
 
   s = relocalize("m", {scene.keyframes[0].observed[0], scene.keyframes[0].observed[1]}, &response);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
