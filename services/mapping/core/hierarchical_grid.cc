@@ -83,6 +83,22 @@ uint8_t HierarchicalGrid::Value(CellIndex index) const {
   return Probability(index) >= config_.p_threshold ? it->second.height : kFree;
 }
 
+std::vector<HierarchicalGrid::CellState> HierarchicalGrid::Cells() const {
+  std::vector<CellState> out;
+  out.reserve(cells_.size());
+  for (const auto& [index, cell] : cells_) out.push_back({index, cell.log_odds, cell.height, cell.structure});
+  std::sort(out.begin(), out.end(), [](const CellState& a, const CellState& b) {
+    return a.index.x != b.index.x ? a.index.x < b.index.x : a.index.y < b.index.y;
+  });
+  return out;
+}
+
+void HierarchicalGrid::RestoreCells(const std::vector<CellState>& cells) {
+  cells_.clear();
+  cells_.reserve(cells.size());
+  for (const CellState& c : cells) cells_[c.index] = Cell{c.log_odds, c.height, c.structure};
+}
+
 bool HierarchicalGrid::Bounds(CellIndex* min, CellIndex* max) const {
   if (cells_.empty()) return false;
   *min = *max = cells_.begin()->first;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "absl/container/flat_hash_map.h"
 #include "absl/container/flat_hash_set.h"
@@ -62,6 +63,18 @@ class HierarchicalGrid {
   // Bounding box of every explored cell (min, max inclusive); false if empty.
   bool Bounds(CellIndex* min, CellIndex* max) const;
   size_t CellCount() const { return cells_.size(); }
+
+  // The accumulated state of one explored cell, for saving a map and loading it unchanged.
+  struct CellState {
+    CellIndex index;
+    float log_odds = 0.0f;
+    uint8_t height = 0;
+    bool structure = false;
+  };
+  // Every explored cell, sorted by (x, y) so equal grids save to equal bytes.
+  std::vector<CellState> Cells() const;
+  // Replaces every cell by `cells` (a grid saved by Cells() at the same resolution).
+  void RestoreCells(const std::vector<CellState>& cells);
 
  private:
   struct Cell {

@@ -28,9 +28,19 @@ struct MappingEngine::State {
     tree = std::move(content.tree);
     columns = VoxelColumns::FromOctree(*tree);
     grid = HierarchicalGrid(config.grid, config.heights);
-    absl::flat_hash_set<VoxelColumns::ColumnId> all;
-    for (const auto& [id, column] : columns.columns()) all.insert(id);
-    grid.Update(columns, all);
+    if (content.grid && content.grid->resolution_m == config.grid.resolution_m) {
+      // The saved log-odds: a rebuild from the octree would apply one update per cell.
+      std::vector<HierarchicalGrid::CellState> cells;
+      cells.reserve(content.grid->cells.size());
+      for (const SavedGridCell& c : content.grid->cells) {
+        cells.push_back({CellIndex{c.x, c.y}, c.log_odds, c.height, c.structure});
+      }
+      grid.RestoreCells(cells);
+    } else {  // maps saved without the grid, or at another grid resolution
+      absl::flat_hash_set<VoxelColumns::ColumnId> all;
+      for (const auto& [id, column] : columns.columns()) all.insert(id);
+      grid.Update(columns, all);
+    }
     semantic.Clear();
     for (const auto& [label, points] : content.semantic_points) semantic.Add(label, points);
     scene.Replace(std::move(content.objects), content.next_object_id);
@@ -291,7 +301,12 @@ uint64_t MappingEngine::AwaitChange(uint64_t revision, absl::Duration timeout) c
 std::string MappingEngine::Serialize() const {
   absl::MutexLock lock(&mu_);
   const State& s = *state_;
-  return SerializeMap(*s.tree, s.scene.objects(), s.scene.next_id(), s.semantic.points());
+  SavedGrid grid;
+  grid.resolution_m = config_.grid.resolution_m;
+  for (const HierarchicalGrid::CellState& c : s.grid.Cells()) {
+    grid.cells.push_back({c.index.x, c.index.y, c.log_odds, c.height, c.structure});
+  }
+  return SerializeMap(*s.tree, s.scene.objects(), s.scene.next_id(), s.semantic.points(), &grid);
 }
 
 absl::Status MappingEngine::Restore(const std::string& payload) {
