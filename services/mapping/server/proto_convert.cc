@@ -2,6 +2,7 @@
 
 #include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
 
 namespace semnav::mapping {
@@ -50,10 +51,22 @@ const std::vector<uint8_t>* LayerBytes(const GridLayers& layers, GridLayerKind k
 
 }  // namespace
 
+// Year 2255: far beyond any robot's clock, and x 1e9 still fits int64 nanoseconds.
+constexpr int64_t kMaxStampSeconds = 9'000'000'000;
+
 absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
   SensorFrame frame;
   frame.robot_id = proto.header().robot_id();
-  frame.stamp_ns = proto.header().stamp().seconds() * 1'000'000'000 + proto.header().stamp().nanos();
+  // Checked before the multiplication, which would overflow int64 (year 2262) otherwise.
+  const auto& stamp = proto.header().stamp();
+  if (stamp.seconds() < 0 || stamp.seconds() > kMaxStampSeconds) {
+    return InvalidField("header.stamp.seconds",
+                        absl::StrCat("must be in [0, ", kMaxStampSeconds, "] (Unix seconds)"));
+  }
+  if (stamp.nanos() < 0 || stamp.nanos() >= 1'000'000'000) {
+    return InvalidField("header.stamp.nanos", "must be in [0, 999999999]");
+  }
+  frame.stamp_ns = stamp.seconds() * 1'000'000'000 + stamp.nanos();
   const auto& k = proto.intrinsics();
   frame.intrinsics = {static_cast<int>(k.width()), static_cast<int>(k.height()), k.fx(), k.fy(), k.cx(), k.cy()};
   frame.depth.width = static_cast<int>(proto.depth().width());
