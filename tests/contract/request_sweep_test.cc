@@ -215,7 +215,7 @@ struct Request {
   std::string field;
   std::string bytes;
   bool parses = true;
-  // NaN, an infinity or 1e300 (3e38 in a float): no door may accept it.
+  // NaN, an infinity, 1e300 (3e38 in a float) or an unknown enum: no door may accept it.
   bool must_be_rejected = false;
   // The request every mutation starts from ("sensible" when the method has one, else "empty").
   bool is_base = false;
@@ -441,8 +441,10 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
       std::unique_ptr<Message> message = base();
       setter(ParentOf(message.get(), path), path.back());
       const std::string field = PathName(path);
+      // An unknown enum number selects no behaviour: taking it for some default hides a bug.
       const bool unrepresentable = value_label == "nan" || absl::EndsWith(value_label, "inf") ||
-                                   value_label == "1e300" || value_label == "3e38";
+                                   value_label == "1e300" || value_label == "3e38" ||
+                                   value_label == "enum9999";
       requests.push_back({absl::StrCat(field, "=", value_label), field,
                           message->SerializeAsString(), true, unrepresentable, false,
                           created_root});

@@ -315,6 +315,9 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       return s;
     }
   }
+  if (!pb::ExplorationStrategy_IsValid(request.strategy())) {
+    return InvalidField("strategy", "unknown exploration strategy");
+  }
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};

@@ -45,6 +45,9 @@ absl::Time SearchDeadline(const grpc::CallbackServerContext& context, uint32_t r
 }
 
 absl::Status CheckRequest(const pb::PlanPathRequest& request) {
+  if (!pb::PlannerKind_IsValid(request.planner())) {
+    return Invalid("planner", "unknown planner kind");
+  }
   if (!NonNegative(request.robot_radius_m()) || request.robot_radius_m() > kMaxRobotRadiusM) {
     return Invalid("robot_radius_m",
                    absl::StrCat("robot_radius_m must be a finite value in [0, ", kMaxRobotRadiusM,
