@@ -64,6 +64,15 @@ const std::vector<std::string> kPendingFixes = {
     // empty", "texts must hold 1..256 strings").
     "semnav.modelproxy.v1.ModelProxyService/Complete:",
     "semnav.modelproxy.v1.ModelProxyService/Embed:",
+    // Relocalization: landmark positions and scale_m of 1e300 are stored (and GetLandmarkMap
+    // then answers them); a non-finite scale_m is named "landmarks[0].scale".
+    "semnav.relocalization.v1.RelocalizationService/UpsertLandmarks:landmarks[0].",
+    "semnav.relocalization.v1.RelocalizationService/GetLandmarkMap:",
+    // Robot session (gateway): a state or camera message after the hello is taken with NaN,
+    // +-inf or 1e300 in pose, velocity, battery and intrinsics, and with unknown enum numbers.
+    "semnav.reasoning.v1.RobotSessionService/Connect:state.",
+    "semnav.reasoning.v1.RobotSessionService/Connect:camera.",
+    "semnav.reasoning.v1.RobotSessionService/Connect:feedback.kind=",
 };
 
 constexpr int kMaxFieldDepth = 4;
@@ -167,6 +176,70 @@ const std::map<std::string, std::string>& SensibleBases() {
        absl::StrCat("source {", kGrid, "} robot { x: 0.6 y: 0.6 }")},
       {"semnav.planning.v1.PlanningService/SmoothTrajectory",
        absl::StrCat("source {", kGrid, "} path { x: 0.6 y: 0.6 } path { x: 3.2 y: 1.6 }")},
+      {"semnav.relocalization.v1.RelocalizationService/UpsertLandmarks",
+       R"pb(map_id: "sweep"
+            request_id: "@UNIQUE@"
+            landmarks {
+              position { x: 1 y: 1 z: 0 }
+              scale_m: 0.5
+              embedding: [ 1, 0, 0, 0 ]
+              observations: 1
+            }
+            landmarks {
+              position { x: 4 y: 1 z: 0 }
+              scale_m: 0.5
+              embedding: [ 0, 1, 0, 0 ]
+              observations: 1
+            }
+            landmarks {
+              position { x: 1 y: 5 z: 1 }
+              scale_m: 0.5
+              embedding: [ 0, 0, 1, 0 ]
+              observations: 1
+            })pb"},
+      {"semnav.relocalization.v1.RelocalizationService/GetLandmarkMap",
+       R"pb(map_id: "sweep" page_size: 10)pb"},
+      {"semnav.relocalization.v1.RelocalizationService/Relocalize",
+       R"pb(map_id: "sweep"
+            observed {
+              position { x: 1 y: 1 z: 0 }
+              scale_m: 0.5
+              embedding: [ 1, 0, 0, 0 ]
+              observations: 1
+            }
+            observed {
+              position { x: 4 y: 1 z: 0 }
+              scale_m: 0.5
+              embedding: [ 0, 1, 0, 0 ]
+              observations: 1
+            }
+            observed {
+              position { x: 1 y: 5 z: 1 }
+              scale_m: 0.5
+              embedding: [ 0, 0, 1, 0 ]
+              observations: 1
+            })pb"},
+      {"semnav.modelproxy.v1.ModelProxyService/Complete",
+       R"pb(messages {
+              role: ROLE_USER
+              parts { text: "hello" }
+            })pb"},
+      {"semnav.modelproxy.v1.ModelProxyService/Embed", R"pb(texts: "chair")pb"},
+      {"semnav.reasoning.v1.OperatorService/SubmitInstruction",
+       R"pb(request_id: "@UNIQUE@" robot_id: "sweep-robot" instruction: "find the chair")pb"},
+      {"semnav.reasoning.v1.OperatorService/AcquireLease",
+       R"pb(request_id: "@UNIQUE@" robot_id: "@UNIQUE@" holder: "sweep" ttl { seconds: 5 })pb"},
+      {"semnav.reasoning.v1.OperatorService/DecomposeInstruction",
+       R"pb(instruction: "find the chair")pb"},
+      {"semnav.reasoning.v1.RobotSessionService/Connect",
+       R"pb(state {
+              header { stamp { seconds: 1 } robot_id: "@UNIQUE@" }
+              pose {
+                position { x: 1 y: 1 z: 0 }
+                orientation { w: 1 }
+              }
+              battery_fraction: 0.5
+            })pb"},
       {"semnav.planning.v1.PlanningService/ScoreFrontiers",
        R"pb(frontiers {
               centroid { x: 2 y: 2 }
@@ -188,6 +261,15 @@ const std::map<std::string, std::string>& SensibleBases() {
             weights { distance: 1 })pb"},
   };
   return *bases;
+}
+
+// Bidi streams whose every message needs an opening one: the mutated message is sent second.
+const std::map<std::string, std::string>& SessionPreambles() {
+  static const auto* preambles = new std::map<std::string, std::string>{
+      {"semnav.reasoning.v1.RobotSessionService/Connect",
+       R"pb(hello { robot_id: "@UNIQUE@" software_version: "sweep" })pb"},
+  };
+  return *preambles;
 }
 
 // Text-format escapes of the bases' binary fields: 16 depth pixels of 2.0 m (float32), 64 free
@@ -222,6 +304,8 @@ struct Request {
   // The outermost message the mutation had to create (absent from the base), e.g. "window" for
   // "window.min.z" on an empty request: its other fields are defaults, which may be what fails.
   std::string created_root;
+  // Sent first on a bidi stream that needs it (a robot session's hello); empty = none.
+  std::string preamble;
 };
 
 // The outermost message on `path` that `base` does not hold ("" when all exist).
@@ -407,21 +491,26 @@ std::unique_ptr<Message> NewMessage(const Descriptor* type) {
       google::protobuf::MessageFactory::generated_factory()->GetPrototype(type)->New());
 }
 
+// A base's text with its placeholders filled in for request `request_index`.
+std::string Render(absl::string_view text, int method_index, size_t request_index) {
+  return absl::StrReplaceAll(
+      text, {{"@UNIQUE@", absl::StrCat("sweep-", method_index, "-", request_index)},
+             {"@DEPTH@", kDepthBytes},
+             {"@EXPLORED@", kExploredBytes},
+             {"@ZEROS@", kZeroBytes}});
+}
+
 std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_index) {
   const Descriptor* type = method->input_type();
   std::vector<Request> requests;
-  requests.push_back({"empty", "", "", true, false, true, ""});
+  requests.push_back({"empty", "", "", true, false, true, "", ""});
 
   const auto base_text = SensibleBases().find(absl::StrCat(
       method->service()->full_name(), "/", method->name()));
   auto base = [&]() {
     std::unique_ptr<Message> message = NewMessage(type);
     if (base_text != SensibleBases().end()) {
-      const std::string text = absl::StrReplaceAll(
-          base_text->second, {{"@UNIQUE@", absl::StrCat("sweep-", method_index, "-", requests.size())},
-                              {"@DEPTH@", kDepthBytes},
-                              {"@EXPLORED@", kExploredBytes},
-                              {"@ZEROS@", kZeroBytes}});
+      const std::string text = Render(base_text->second, method_index, requests.size());
       EXPECT_TRUE(google::protobuf::TextFormat::ParseFromString(text, message.get()))
           << method->full_name();
     }
@@ -429,7 +518,8 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
   };
   if (base_text != SensibleBases().end()) {
     requests.front().is_base = false;
-    requests.push_back({"sensible", "", base()->SerializeAsString(), true, false, true, ""});
+    requests.push_back(
+        {"sensible", "", base()->SerializeAsString(), true, false, true, "", ""});
   }
 
   std::vector<FieldPath> paths;
@@ -447,7 +537,7 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
                                    value_label == "enum9999";
       requests.push_back({absl::StrCat(field, "=", value_label), field,
                           message->SerializeAsString(), true, unrepresentable, false,
-                          created_root});
+                          created_root, ""});
     }
   }
 
@@ -459,13 +549,24 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
   std::string truncated = whole.empty() ? std::string("\x0a\x05" "ab", 4)
                                         : whole.substr(0, whole.size() - 1);
   requests.push_back({"truncated", "", truncated, NewMessage(type)->ParseFromString(truncated),
-                      false, false, ""});
+                      false, false, "", ""});
 
   std::mt19937 random(20261124u + static_cast<unsigned>(method_index));
   std::string noise(48, '\0');
   for (char& byte : noise) byte = static_cast<char>(random() & 0xff);
   requests.push_back({"random", "", noise, NewMessage(type)->ParseFromString(noise), false, false,
-                      ""});
+                      "", ""});
+
+  const auto preamble = SessionPreambles().find(absl::StrCat(
+      method->service()->full_name(), "/", method->name()));
+  if (preamble != SessionPreambles().end()) {
+    for (size_t i = 0; i < requests.size(); ++i) {
+      std::unique_ptr<Message> first = NewMessage(type);
+      EXPECT_TRUE(google::protobuf::TextFormat::ParseFromString(
+          Render(preamble->second, method_index, i), first.get()));
+      requests[i].preamble = first->SerializeAsString();
+    }
+  }
   return requests;
 }
 
@@ -479,7 +580,8 @@ struct CallOutcome {
 // One call with raw bytes, the same way for unary, server- and bidi-streaming methods: one
 // message, WritesDone, read until the end (or cancel a stream still open after the grace).
 CallOutcome CallRaw(const std::shared_ptr<grpc::Channel>& channel, const std::string& path,
-                    const std::string& bytes, bool may_stay_open) {
+                    const std::string& preamble, const std::string& bytes,
+                    bool may_stay_open) {
   CallOutcome outcome;
   grpc::GenericStub stub(channel);
   grpc::CompletionQueue queue;
@@ -506,10 +608,13 @@ CallOutcome CallRaw(const std::shared_ptr<grpc::Channel>& channel, const std::st
   if (!await_or_fail()) {
     // Fall through to Finish: the status says why.
   }
-  grpc::Slice slice(bytes);
-  grpc::ByteBuffer buffer(&slice, 1);
-  call->Write(buffer, nullptr);
-  await_or_fail();
+  for (const std::string* message : {&preamble, &bytes}) {
+    if (message == &preamble && preamble.empty()) continue;
+    grpc::Slice slice(*message);
+    grpc::ByteBuffer buffer(&slice, 1);
+    call->Write(buffer, nullptr);
+    await_or_fail();
+  }
   call->WritesDone(nullptr);
   await_or_fail();
   const absl::Time stream_until = absl::Now() + kOpenStreamGrace;
@@ -735,7 +840,7 @@ TEST_P(RequestSweepTest, EveryRpcSurvivesHostileRequests) {
         const std::vector<uint64_t> revisions_before = MapRevisions();
         last_map_numbers_.clear();
 
-        const CallOutcome outcome = CallRaw(channel_, path, request.bytes, may_stay_open);
+        const CallOutcome outcome = CallRaw(channel_, path, request.preamble, request.bytes, may_stay_open);
         const grpc::Status& status = outcome.status;
         const std::string code_name = absl::StatusCodeToString(
             static_cast<absl::StatusCode>(status.error_code()));
