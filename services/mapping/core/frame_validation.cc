@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/field_error.h"
@@ -45,20 +46,23 @@ absl::Status ValidateGeometry(const SensorFrame& frame) {
   const Intrinsics& k = frame.intrinsics;
   if (k.width <= 0) return Invalid("intrinsics.width", "image size must be positive");
   if (k.height <= 0) return Invalid("intrinsics.height", "image size must be positive");
-  if (absl::Status s = CheckRange(k.fx, "intrinsics.fx", kMinFocalPx, kMaxPixelCoordinate); !s.ok()) {
-    return s;
+  for (const auto& [value, field] :
+       {std::pair{k.fx, "intrinsics.fx"}, std::pair{k.fy, "intrinsics.fy"}}) {
+    if (absl::Status s = CheckRange(value, field, kMinFocalPx, kMaxPixelCoordinate); !s.ok()) {
+      return s;
+    }
   }
-  if (absl::Status s = CheckRange(k.fy, "intrinsics.fy", kMinFocalPx, kMaxPixelCoordinate); !s.ok()) {
-    return s;
+  for (const auto& [value, field] :
+       {std::pair{k.cx, "intrinsics.cx"}, std::pair{k.cy, "intrinsics.cy"}}) {
+    if (absl::Status s = CheckMagnitude(value, field, kMaxPixelCoordinate); !s.ok()) return s;
   }
-  if (absl::Status s = CheckMagnitude(k.cx, "intrinsics.cx", kMaxPixelCoordinate); !s.ok()) return s;
-  if (absl::Status s = CheckMagnitude(k.cy, "intrinsics.cy", kMaxPixelCoordinate); !s.ok()) return s;
   const DepthImage& d = frame.depth;
   if (d.encoding == DepthEncoding::kUnknown) {
     return Invalid("depth.encoding", "unknown encoding (expected 16UC1 millimetres or 32FC1 metres)");
   }
   if (d.width != k.width || d.height != k.height) {
-    return Invalid(d.width != k.width ? "depth.width" : "depth.height", absl::StrCat("depth is ", d.width, "x", d.height,
+    return Invalid(d.width != k.width ? "depth.width" : "depth.height",
+                   absl::StrCat("depth is ", d.width, "x", d.height,
                                                " but intrinsics are ", k.width, "x", k.height));
   }
   const size_t expected = static_cast<size_t>(d.width) * d.height * BytesPerPixel(d.encoding);

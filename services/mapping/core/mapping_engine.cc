@@ -244,7 +244,9 @@ constexpr size_t kMaxQueryEmbedding = 4096;
 
 // Every number finite and in range, every list and label within limits, before any lookup.
 absl::Status ValidateQuery(const ObjectQuery& query) {
-  if (absl::Status s = CheckCount(query.labels.size(), "labels", kMaxQueryLabels); !s.ok()) return s;
+  if (absl::Status s = CheckCount(query.labels.size(), "labels", kMaxQueryLabels); !s.ok()) {
+    return s;
+  }
   for (size_t i = 0; i < query.labels.size(); ++i) {
     if (absl::Status s = CheckLength(query.labels[i], absl::StrCat("labels[", i, "]"), kMaxIdBytes);
         !s.ok()) {
@@ -257,7 +259,8 @@ absl::Status ValidateQuery(const ObjectQuery& query) {
   }
   for (size_t i = 0; i < query.embedding.size(); ++i) {
     // As for frames: beyond this a dot product of 4096 components overflows a float.
-    if (absl::Status s = CheckMagnitude(query.embedding[i], absl::StrCat("embedding[", i, "]"), 1e6);
+    if (absl::Status s =
+            CheckMagnitude(query.embedding[i], absl::StrCat("embedding[", i, "]"), 1e6);
         !s.ok()) {
       return s;
     }

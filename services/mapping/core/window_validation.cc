@@ -42,8 +42,9 @@ absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max
   return absl::OkStatus();
 }
 
-absl::Status ValidateOccupancyBox(const double (&min)[3], const double (&max)[3], double resolution_m,
-                                  double max_voxels, const WindowLimits& limits) {
+absl::Status ValidateOccupancyBox(const double (&min)[3], const double (&max)[3],
+                                  double resolution_m, double max_voxels,
+                                  const WindowLimits& limits) {
   static constexpr const char* kMinFields[] = {"min.x", "min.y", "min.z"};
   static constexpr const char* kMaxFields[] = {"max.x", "max.y", "max.z"};
   for (int a = 0; a < 3; ++a) {
