@@ -3,12 +3,13 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::mapping {
 namespace {
 
 absl::Status Invalid(absl::string_view field, absl::string_view why) {
-  return absl::InvalidArgumentError(absl::StrCat(field, ": ", why));
+  return InvalidField(field, why);
 }
 
 absl::Status CheckCoordinate(double value, absl::string_view field, const WindowLimits& limits) {

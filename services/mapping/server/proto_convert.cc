@@ -199,7 +199,8 @@ void SceneToProto(const SceneSnapshot& scene, v1::SceneGraph* proto) {
 }
 
 absl::Status WithFieldDetail(absl::Status status) {
-  if (status.ok()) return status;
+  // Core errors made with InvalidField/FieldStatus already name their field and reason.
+  if (status.ok() || ErrorField(status).has_value()) return status;
   const absl::string_view message = status.message();
   const size_t colon = message.find(':');
   if (colon == absl::string_view::npos) return status;
