@@ -9,6 +9,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
+#include "services/common/server/request_parse_interceptor.h"
 #include "services/common/server/token_auth.h"
 
 namespace semnav {
@@ -96,6 +97,9 @@ absl::Status ServiceHost::Start() {
   for (auto& [service, name] : services_) builder.RegisterService(service.get());
   builder.RegisterService(metrics_service_.get());
   std::vector<std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>> interceptors;
+  // A body that does not parse is INVALID_ARGUMENT, not gRPC's bare UNIMPLEMENTED; first, so
+  // the metrics see the status the client gets.
+  interceptors.push_back(std::make_unique<RequestParseInterceptorFactory>());
   interceptors.push_back(std::make_unique<MetricsInterceptorFactory>(metrics_));
   builder.experimental().SetInterceptorCreators(std::move(interceptors));
 

@@ -2,16 +2,40 @@
 
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
+#include "services/common/status/value_checks.h"
 
 namespace semnav::mapping {
 namespace {
 
 constexpr double kUnitQuaternionTolerance = 1e-3;
+// Focal lengths and principal points in pixels: outside these, rays (and so every lifted point)
+// leave any mapped world.
+constexpr double kMinFocalPx = 1.0;
+constexpr double kMaxPixelCoordinate = 1e6;
+// Per-frame lists: far above any real camera or detector, far below what would exhaust memory.
+constexpr size_t kMaxDetections = 1024;
+constexpr size_t kMaxEmbeddingLength = 4096;
+// Embedding components: far above any model's, far below where a dot product overflows a float.
+constexpr double kMaxEmbeddingValue = 1e6;
+constexpr size_t kMaxLidarPoints = 1 << 20;
 
 absl::Status Invalid(absl::string_view field, absl::string_view why) {
-  return absl::InvalidArgumentError(absl::StrCat(field, ": ", why));
+  return InvalidField(field, why);
+}
+
+absl::Status CheckPosition(const Eigen::Vector3d& p, absl::string_view field) {
+  static constexpr const char* kAxes[] = {".x", ".y", ".z"};
+  for (int a = 0; a < 3; ++a) {
+    if (absl::Status s = CheckMagnitude(p[a], absl::StrCat(field, kAxes[a]), kMaxCoordinateM);
+        !s.ok()) {
+      return s;
+    }
+  }
+  return absl::OkStatus();
 }
 
 size_t BytesPerPixel(DepthEncoding encoding) {
@@ -20,25 +44,32 @@ size_t BytesPerPixel(DepthEncoding encoding) {
 
 absl::Status ValidateGeometry(const SensorFrame& frame) {
   const Intrinsics& k = frame.intrinsics;
-  if (k.width <= 0 || k.height <= 0) return Invalid("intrinsics.width", "image size must be positive");
-  if (!(k.fx > 0.0) || !(k.fy > 0.0) || !std::isfinite(k.fx) || !std::isfinite(k.fy)) {
-    return Invalid("intrinsics.fx", "focal lengths must be finite and positive");
+  if (k.width <= 0) return Invalid("intrinsics.width", "image size must be positive");
+  if (k.height <= 0) return Invalid("intrinsics.height", "image size must be positive");
+  for (const auto& [value, field] :
+       {std::pair{k.fx, "intrinsics.fx"}, std::pair{k.fy, "intrinsics.fy"}}) {
+    if (absl::Status s = CheckRange(value, field, kMinFocalPx, kMaxPixelCoordinate); !s.ok()) {
+      return s;
+    }
   }
-  if (!std::isfinite(k.cx) || !std::isfinite(k.cy)) return Invalid("intrinsics.cx", "must be finite");
+  for (const auto& [value, field] :
+       {std::pair{k.cx, "intrinsics.cx"}, std::pair{k.cy, "intrinsics.cy"}}) {
+    if (absl::Status s = CheckMagnitude(value, field, kMaxPixelCoordinate); !s.ok()) return s;
+  }
   const DepthImage& d = frame.depth;
   if (d.encoding == DepthEncoding::kUnknown) {
     return Invalid("depth.encoding", "unknown encoding (expected 16UC1 millimetres or 32FC1 metres)");
   }
   if (d.width != k.width || d.height != k.height) {
-    return Invalid("depth.width", absl::StrCat("depth is ", d.width, "x", d.height,
+    return Invalid(d.width != k.width ? "depth.width" : "depth.height",
+                   absl::StrCat("depth is ", d.width, "x", d.height,
                                                " but intrinsics are ", k.width, "x", k.height));
   }
   const size_t expected = static_cast<size_t>(d.width) * d.height * BytesPerPixel(d.encoding);
   if (d.data.size() != expected) {
     return Invalid("depth.data", absl::StrCat("has ", d.data.size(), " bytes, expected ", expected));
   }
-  const Eigen::Vector3d& p = frame.pose.position;
-  if (!p.allFinite()) return Invalid("pose.position", "must be finite");
+  if (absl::Status s = CheckPosition(frame.pose.position, "pose.position"); !s.ok()) return s;
   const Eigen::Quaterniond& q = frame.pose.orientation;
   if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > kUnitQuaternionTolerance) {
     return Invalid("pose.orientation", "must be a finite unit quaternion");
@@ -50,10 +81,17 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
   const int w = frame.intrinsics.width;
   const int h = frame.intrinsics.height;
   int dim = embedding_dim;
+  if (absl::Status s = CheckCount(frame.detections.size(), "detections", kMaxDetections); !s.ok()) {
+    return s;
+  }
   for (size_t i = 0; i < frame.detections.size(); ++i) {
     const Detection& det = frame.detections[i];
     const std::string field = absl::StrCat("detections[", i, "]");
     if (det.label.empty()) return Invalid(absl::StrCat(field, ".label"), "must not be empty");
+    if (absl::Status s = CheckLength(det.label, absl::StrCat(field, ".label"), kMaxIdBytes);
+        !s.ok()) {
+      return s;
+    }
     if (!(det.score >= 0.0 && det.score <= 1.0)) return Invalid(absl::StrCat(field, ".score"), "must be in [0, 1]");
     const PixelBox& b = det.box;
     const bool inside = b.x_min >= 0.0 && b.y_min >= 0.0 && b.x_max <= w && b.y_max <= h &&
@@ -65,6 +103,19 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
       return Invalid(absl::StrCat(field, ".mask"), absl::StrCat("must have ", w * h, " pixels"));
     }
     if (det.embedding.empty()) continue;
+    const std::string embedding_field = absl::StrCat(field, ".embedding");
+    if (absl::Status s = CheckCount(det.embedding.size(), embedding_field, kMaxEmbeddingLength);
+        !s.ok()) {
+      return s;
+    }
+    for (size_t j = 0; j < det.embedding.size(); ++j) {
+      if (absl::Status s = CheckMagnitude(det.embedding[j],
+                                          absl::StrCat(embedding_field, "[", j, "]"),
+                                          kMaxEmbeddingValue);
+          !s.ok()) {
+        return s;
+      }
+    }
     if (dim != 0 && static_cast<int>(det.embedding.size()) != dim) {
       return Invalid(absl::StrCat(field, ".embedding"),
                      absl::StrCat("length ", det.embedding.size(), " != map embedding length ", dim));
@@ -78,12 +129,24 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
 
 absl::Status ValidateFrame(const SensorFrame& frame, const ValidationContext& context) {
   if (frame.robot_id.empty()) return Invalid("robot_id", "must not be empty");
+  if (absl::Status s = CheckLength(frame.robot_id, "robot_id", kMaxIdBytes); !s.ok()) return s;
   if (context.last_stamp_ns.has_value() && frame.stamp_ns < *context.last_stamp_ns) {
     return absl::FailedPreconditionError(absl::StrCat(
         "stamp: ", frame.stamp_ns, " ns goes backwards for robot ", frame.robot_id,
         " (last accepted ", *context.last_stamp_ns, " ns)"));
   }
   if (absl::Status s = ValidateGeometry(frame); !s.ok()) return s;
+  if (absl::Status s = CheckCount(frame.lidar_points.size(), "lidar_points", kMaxLidarPoints);
+      !s.ok()) {
+    return s;
+  }
+  for (size_t i = 0; i < frame.lidar_points.size(); ++i) {
+    if (absl::Status s = CheckPosition(frame.lidar_points[i].cast<double>(),
+                                       absl::StrCat("lidar_points[", i, "]"));
+        !s.ok()) {
+      return s;
+    }
+  }
   return ValidateDetections(frame, context.embedding_dim);
 }
 

@@ -1,5 +1,7 @@
 #include "services/mapping/core/frame_validation.h"
 
+#include <limits>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -52,6 +54,34 @@ TEST(FrameValidationTest, RejectsNonFiniteOrNonUnitPose) {
   frame = GoodFrame();
   frame.pose.orientation = Eigen::Quaterniond(2.0, 0.0, 0.0, 0.0);
   ExpectInvalid(frame, "pose.orientation");
+}
+
+// Finite is not enough: a camera at 1e300 m created objects at 1e300 m.
+TEST(FrameValidationTest, RejectsHugeOrNonFiniteNumbersNamingThePath) {
+  SensorFrame frame = GoodFrame();
+  frame.pose.position.y() = 1e300;
+  ExpectInvalid(frame, "pose.position.y");
+  frame = GoodFrame();
+  frame.intrinsics.cx = 1e300;
+  ExpectInvalid(frame, "intrinsics.cx");
+  frame = GoodFrame();
+  frame.detections[0].embedding[1] = std::numeric_limits<float>::quiet_NaN();
+  ExpectInvalid(frame, "detections[0].embedding[1]");
+  frame = GoodFrame();
+  frame.lidar_points.emplace_back(1.0f, std::numeric_limits<float>::infinity(), 0.0f);
+  ExpectInvalid(frame, "lidar_points[0].y");
+}
+
+TEST(FrameValidationTest, RejectsOversizedIdsWithoutEchoingThem) {
+  SensorFrame frame = GoodFrame();
+  frame.robot_id = std::string(1 << 20, 'r');
+  const absl::Status status = ValidateFrame(frame, {});
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(std::string(status.message()), HasSubstr("robot_id"));
+  EXPECT_LT(status.message().size(), 200u);
+  frame = GoodFrame();
+  frame.detections[0].label = std::string(1000, 'l');
+  ExpectInvalid(frame, "detections[0].label");
 }
 
 TEST(FrameValidationTest, RejectsStampGoingBackwardsForThatRobot) {

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::mapping {
 namespace {
@@ -92,7 +93,8 @@ absl::Status MapStore::ValidateMapId(const std::string& map_id) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
   });
   if (ok) return absl::OkStatus();
-  return absl::InvalidArgumentError(absl::StrCat("map_id: '", map_id, "' must be 1-64 characters of [A-Za-z0-9_-]"));
+  return InvalidField("map_id", absl::StrCat("'", Preview(map_id),
+                                              "' must be 1-64 characters of [A-Za-z0-9_-]"));
 }
 
 absl::StatusOr<MapStore> MapStore::Open(const std::string& directory) {

@@ -9,6 +9,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
+#include "services/common/status/value_checks.h"
 #include "services/mapping/core/frame_validation.h"
 #include "services/mapping/core/map_serialization.h"
 #include "services/mapping/core/semantic_filters.h"
@@ -244,12 +246,57 @@ std::optional<SceneDelta> MappingEngine::SceneChangesSince(uint64_t since) const
   return state_->scene.ChangesSince(since);
 }
 
+namespace {
+
+// Query lists: far above any real query, far below what would cost memory or time.
+constexpr size_t kMaxQueryLabels = 256;
+constexpr size_t kMaxQueryEmbedding = 4096;
+
+// Every number finite and in range, every list and label within limits, before any lookup.
+absl::Status ValidateQuery(const ObjectQuery& query) {
+  if (absl::Status s = CheckCount(query.labels.size(), "labels", kMaxQueryLabels); !s.ok()) {
+    return s;
+  }
+  for (size_t i = 0; i < query.labels.size(); ++i) {
+    if (absl::Status s = CheckLength(query.labels[i], absl::StrCat("labels[", i, "]"), kMaxIdBytes);
+        !s.ok()) {
+      return s;
+    }
+  }
+  if (absl::Status s = CheckCount(query.embedding.size(), "embedding", kMaxQueryEmbedding);
+      !s.ok()) {
+    return s;
+  }
+  for (size_t i = 0; i < query.embedding.size(); ++i) {
+    // As for frames: beyond this a dot product of 4096 components overflows a float.
+    if (absl::Status s =
+            CheckMagnitude(query.embedding[i], absl::StrCat("embedding[", i, "]"), 1e6);
+        !s.ok()) {
+      return s;
+    }
+  }
+  if (absl::Status s = CheckRange(query.min_cosine, "min_cosine", -1.0, 1.0); !s.ok()) return s;
+  if (query.near.has_value()) {
+    static constexpr const char* kAxes[] = {"near.x", "near.y", "near.z"};
+    for (int a = 0; a < 3; ++a) {
+      if (absl::Status s = CheckMagnitude((*query.near)[a], kAxes[a], kMaxCoordinateM); !s.ok()) {
+        return s;
+      }
+    }
+  }
+  // A radius beyond the world's diameter finds nothing more.
+  return CheckRange(query.near_radius_m, "near_radius", 0.0, 2 * kMaxCoordinateM);
+}
+
+}  // namespace
+
 absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQuery& query) const {
+  if (absl::Status s = ValidateQuery(query); !s.ok()) return s;
   if (query.labels.empty() && query.embedding.empty() && !query.near.has_value()) {
-    return absl::InvalidArgumentError("labels: give at least one of labels, embedding or near");
+    return InvalidField("labels", "give at least one of labels, embedding or near");
   }
   if (query.near.has_value() && !(query.near_radius_m > 0.0)) {
-    return absl::InvalidArgumentError("near_radius: must be > 0 when near is set");
+    return InvalidField("near_radius", "must be > 0 when near is set");
   }
   std::set<std::string> wanted;
   for (const std::string& label : query.labels) {

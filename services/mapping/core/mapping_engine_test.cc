@@ -29,6 +29,32 @@ uint8_t CellValue(const MappingEngine& engine, double x, double y) {
   return engine.Grid(window, nullptr).hierarchical[0];
 }
 
+// The request sweep's valid 4 x 4 frame, 2 m deep, from a camera on voxel corners at (1, 1, 1):
+// ray walks met ties at the corner, stepped past the sensor's voxel and out of the scan box, and
+// semnav-mapping died with SIGSEGV. A real frame must integrate.
+TEST(MappingEngineTest, CameraOnAVoxelCornerIntegrates) {
+  MappingEngine engine{MappingConfig{}};
+  SensorFrame frame;
+  frame.robot_id = "corner";
+  frame.stamp_ns = 1'000'000'000;
+  frame.intrinsics = {4, 4, 2.0, 2.0, 2.0, 2.0};
+  frame.depth.width = 4;
+  frame.depth.height = 4;
+  frame.depth.encoding = DepthEncoding::kMetres32F;
+  const float two_metres = 2.0f;
+  for (int i = 0; i < 16; ++i) {
+    frame.depth.data.append(reinterpret_cast<const char*>(&two_metres), sizeof(two_metres));
+  }
+  frame.pose.position = Eigen::Vector3d(1.0, 1.0, 1.0);
+  frame.lidar_points.emplace_back(2.0f, 1.0f, 1.0f);
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    frame.stamp_ns += 100'000'000;
+    const absl::StatusOr<FrameResult> result = engine.AddFrame(frame);
+    ASSERT_TRUE(result.ok()) << result.status();
+  }
+  EXPECT_GT(engine.revision(), 0u);
+}
+
 TEST(MappingEngineTest, MovingBoxVanishesStaticBoxStays) {
   MappingEngine engine{MappingConfig{}};
   const testing::SyntheticRoom room = testing::StandardRoom();

@@ -66,33 +66,41 @@ class VoxelBits {
 };
 
 // Walks the voxels from the endpoint voxel (excluded) back to the sensor voxel (included) with a 3D
-// DDA in key units (the voxels OctoMap's computeRayKeys visits) and marks them in `passed`.
-void CarveRay(const Eigen::Vector3d& origin_units, const octomap::OcTreeKey& endpoint, const KeyBox& box,
-              VoxelBits& passed) {
+// DDA in key units (the voxels OctoMap's computeRayKeys visits) and marks them in `passed`. The
+// walk aims at the sensor's key and never leaves the box: origin_units / resolution can round to
+// the neighbour of the key OctoMap computed (a sensor at x = 1.0 m), and a walk aimed there used
+// to step one voxel past the box and write outside `passed`.
+void CarveRay(const Eigen::Vector3d& origin_units, const octomap::OcTreeKey& origin_key,
+              const octomap::OcTreeKey& endpoint, const KeyBox& box, VoxelBits& passed) {
   std::array<int, 3> voxel{endpoint[0], endpoint[1], endpoint[2]};
   const Eigen::Vector3d dir = origin_units - Eigen::Vector3d(voxel[0] + 0.5, voxel[1] + 0.5, voxel[2] + 0.5);
-  const std::array<int64_t, 3> stride{1, box.size[0], static_cast<int64_t>(box.size[0]) * box.size[1]};
-  std::array<int64_t, 3> index_step{};
+  std::array<int, 3> step{};
   std::array<double, 3> t_max{};
   std::array<double, 3> t_delta{};
   int steps_left = 0;
   for (int a = 0; a < 3; ++a) {
-    const int target = static_cast<int>(std::floor(origin_units[a]));
+    const int target = origin_key[a];
     steps_left += std::abs(target - voxel[a]);
-    if (dir[a] == 0.0) {
+    if (target == voxel[a] || dir[a] == 0.0) {
       t_max[a] = t_delta[a] = std::numeric_limits<double>::infinity();
       continue;
     }
-    index_step[a] = dir[a] > 0.0 ? stride[a] : -stride[a];
+    step[a] = target > voxel[a] ? 1 : -1;
     t_delta[a] = std::abs(1.0 / dir[a]);
     t_max[a] = 0.5 * t_delta[a];  // the walk starts at a voxel centre
   }
-  auto index = static_cast<int64_t>(box.Index(endpoint));
   while (steps_left-- > 0) {
-    const int a = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
-    index += index_step[a];
+    int a = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
+    // An axis already at the sensor's key is done; move along one that is not.
+    if (voxel[a] == origin_key[a]) {
+      a = voxel[0] != origin_key[0] ? 0 : (voxel[1] != origin_key[1] ? 1 : 2);
+      if (voxel[a] == origin_key[a]) return;
+      step[a] = origin_key[a] > voxel[a] ? 1 : -1;
+    }
+    voxel[a] += step[a];
     t_max[a] += t_delta[a];
-    passed.Set(static_cast<size_t>(index));
+    if (voxel[a] < box.lo[a] || voxel[a] >= box.lo[a] + box.size[a]) return;
+    passed.Set(box.Index(voxel));
   }
 }
 
@@ -132,7 +140,9 @@ std::vector<TouchedVoxel> OctomapIntegrator::Integrate(octomap::OcTree& tree,
     const size_t begin = std::min(endpoints.size(), t * per_thread);
     const size_t end = std::min(endpoints.size(), begin + per_thread);
     workers.emplace_back([&, t, begin, end] {
-      for (size_t i = begin; i < end; ++i) CarveRay(origin_units, endpoints[i], box, passed[t]);
+      for (size_t i = begin; i < end; ++i) {
+        CarveRay(origin_units, origin_key, endpoints[i], box, passed[t]);
+      }
     });
   }
   for (std::thread& w : workers) w.join();

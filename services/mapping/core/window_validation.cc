@@ -39,4 +39,24 @@ absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max
   return absl::OkStatus();
 }
 
+absl::Status ValidateOccupancyBox(const double (&min)[3], const double (&max)[3],
+                                  double resolution_m, double max_voxels,
+                                  const WindowLimits& limits) {
+  static constexpr const char* kMinFields[] = {"min.x", "min.y", "min.z"};
+  static constexpr const char* kMaxFields[] = {"max.x", "max.y", "max.z"};
+  for (int a = 0; a < 3; ++a) {
+    if (absl::Status s = CheckCoordinate(min[a], kMinFields[a], limits); !s.ok()) return s;
+    if (absl::Status s = CheckCoordinate(max[a], kMaxFields[a], limits); !s.ok()) return s;
+  }
+  double voxels = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    if (!(max[a] > min[a])) return InvalidField(kMaxFields[a], "must be > min");
+    voxels *= (max[a] - min[a]) / resolution_m;
+  }
+  if (voxels > max_voxels) {
+    return InvalidField("max", absl::StrCat("box holds ", voxels, " voxels, more than ", max_voxels));
+  }
+  return absl::OkStatus();
+}
+
 }  // namespace semnav::mapping

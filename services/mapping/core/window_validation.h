@@ -19,4 +19,11 @@ struct WindowLimits {
 absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max_y, double resolution_m,
                             const WindowLimits& limits);
 
+// Checks an occupancy box [min, max] (fields "min.x" ... "max.z") before the octree is read:
+// corners finite within limits.max_abs_coordinate_m, max > min on every axis, and at most
+// `max_voxels` voxels of `resolution_m`.
+absl::Status ValidateOccupancyBox(const double (&min)[3], const double (&max)[3],
+                                  double resolution_m, double max_voxels,
+                                  const WindowLimits& limits);
+
 }  // namespace semnav::mapping

@@ -7,6 +7,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/value_checks.h"
 #include "services/mapping/server/frame_stream_reactor.h"
 #include "services/mapping/server/proto_convert.h"
 #include "services/mapping/server/watch_reactor.h"
@@ -131,6 +132,10 @@ template <typename Response, typename Call>
 grpc::Status MappingServiceImpl::Idempotent(const std::string& method, const std::string& request_id,
                                             Response* response, Call call) {
   if (request_id.empty()) return Invalid("request_id", "required for this call (idempotency key)");
+  // Kept in the idempotency cache: a huge key would be held for the cache's lifetime.
+  if (absl::Status s = CheckLength(request_id, "request_id", kMaxIdBytes); !s.ok()) {
+    return ToGrpcStatus(s);
+  }
   absl::MutexLock lock(&store_mu_);
   if (std::optional<IdempotencyCache::Answer> answer = idempotency_.Find(method, request_id)) {
     if (answer->status.ok()) response->ParseFromString(answer->response);
@@ -204,15 +209,12 @@ grpc::ServerWriteReactor<v1::GetOccupancyResponse>* MappingServiceImpl::GetOccup
     grpc::CallbackServerContext*, const v1::GetOccupancyRequest* request) {
   const Eigen::Vector3d min(request->min().x(), request->min().y(), request->min().z());
   const Eigen::Vector3d max(request->max().x(), request->max().y(), request->max().z());
-  const char* axes[] = {"max.x", "max.y", "max.z"};
-  double voxels = 1.0;
-  for (int a = 0; a < 3; ++a) {
-    if (!(max[a] > min[a])) return FailStream<v1::GetOccupancyResponse>(Invalid(axes[a], "must be > min"));
-    voxels *= (max[a] - min[a]) / config_.core.octomap_resolution_m;
-  }
-  if (voxels > kMaxOccupancyVoxels) {
-    return FailStream<v1::GetOccupancyResponse>(
-        Invalid("max", absl::StrCat("box holds ", voxels, " voxels, more than ", kMaxOccupancyVoxels)));
+  const double box_min[3] = {min.x(), min.y(), min.z()};
+  const double box_max[3] = {max.x(), max.y(), max.z()};
+  if (absl::Status s = ValidateOccupancyBox(box_min, box_max, config_.core.octomap_resolution_m,
+                                            kMaxOccupancyVoxels, config_.window_limits);
+      !s.ok()) {
+    return FailStream<v1::GetOccupancyResponse>(FromCore(s));
   }
   return new ChunkWriter(engine_.OccupancyBinary(min, max), "application/x-octomap-bt",
                          static_cast<size_t>(config_.occupancy_chunk_bytes));
@@ -264,9 +266,6 @@ grpc::ServerUnaryReactor* MappingServiceImpl::QueryObjects(grpc::CallbackServerC
   ObjectQuery query;
   query.labels.assign(request->labels().begin(), request->labels().end());
   query.embedding.assign(request->embedding().begin(), request->embedding().end());
-  if (request->min_cosine() < -1.0 || request->min_cosine() > 1.0) {
-    return Reply(context, Invalid("min_cosine", "must be in [-1, 1]"));
-  }
   query.min_cosine = request->min_cosine() == 0.0 ? config_.query_min_cosine : request->min_cosine();
   if (request->has_near()) query.near = Eigen::Vector3d(request->near().x(), request->near().y(), request->near().z());
   query.near_radius_m = request->near_radius();

@@ -1,9 +1,8 @@
 #include "services/mapping/server/proto_convert.h"
 
-#include "services/common/status/field_error.h"
-
 #include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
 
 namespace semnav::mapping {
@@ -52,10 +51,22 @@ const std::vector<uint8_t>* LayerBytes(const GridLayers& layers, GridLayerKind k
 
 }  // namespace
 
+// Year 2255: far beyond any robot's clock, and x 1e9 still fits int64 nanoseconds.
+constexpr int64_t kMaxStampSeconds = 9'000'000'000;
+
 absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
   SensorFrame frame;
   frame.robot_id = proto.header().robot_id();
-  frame.stamp_ns = proto.header().stamp().seconds() * 1'000'000'000 + proto.header().stamp().nanos();
+  // Checked before the multiplication, which would overflow int64 (year 2262) otherwise.
+  const auto& stamp = proto.header().stamp();
+  if (stamp.seconds() < 0 || stamp.seconds() > kMaxStampSeconds) {
+    return InvalidField("header.stamp.seconds",
+                        absl::StrCat("must be in [0, ", kMaxStampSeconds, "] (Unix seconds)"));
+  }
+  if (stamp.nanos() < 0 || stamp.nanos() >= 1'000'000'000) {
+    return InvalidField("header.stamp.nanos", "must be in [0, 999999999]");
+  }
+  frame.stamp_ns = stamp.seconds() * 1'000'000'000 + stamp.nanos();
   const auto& k = proto.intrinsics();
   frame.intrinsics = {static_cast<int>(k.width()), static_cast<int>(k.height()), k.fx(), k.fy(), k.cx(), k.cy()};
   frame.depth.width = static_cast<int>(proto.depth().width());
@@ -188,7 +199,8 @@ void SceneToProto(const SceneSnapshot& scene, v1::SceneGraph* proto) {
 }
 
 absl::Status WithFieldDetail(absl::Status status) {
-  if (status.ok() || ErrorField(status).has_value()) return status;  // core named the field itself
+  // Core errors made with InvalidField/FieldStatus already name their field and reason.
+  if (status.ok() || ErrorField(status).has_value()) return status;
   const absl::string_view message = status.message();
   const size_t colon = message.find(':');
   if (colon == absl::string_view::npos) return status;

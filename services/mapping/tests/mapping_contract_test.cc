@@ -144,7 +144,7 @@ TEST_F(MappingContractTest, BadFramesAreRejectedWithTheirFieldAndChangeNothing) 
   bad("depth.width", [](v1::SensorFrame& f) { f.mutable_intrinsics()->set_width(320); });
   bad("depth.encoding", [](v1::SensorFrame& f) { f.mutable_depth()->set_encoding(semnav::common::v1::IMAGE_ENCODING_MONO8); });
   bad("pose.orientation", [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_orientation()->set_w(0.5); });
-  bad("pose.position", [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_position()->set_x(std::nan("")); });
+  bad("pose.position.x", [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_position()->set_x(std::nan("")); });
   bad("stamp", [](v1::SensorFrame& f) { f.mutable_header()->mutable_stamp()->set_seconds(0); });
   bad("detections[0].box", [](v1::SensorFrame& f) { f.mutable_detections(0)->mutable_box()->set_x_max(700); });
   bad("detections[0].embedding", [](v1::SensorFrame& f) { f.mutable_detections(0)->add_embedding(0.5f); });

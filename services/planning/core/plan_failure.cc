@@ -4,6 +4,7 @@
 #include <string>
 
 #include "absl/strings/cord.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::planning {
 namespace {
@@ -31,6 +32,8 @@ const FailureInfo& Info(PlanFailure failure) {
 absl::Status MakePlanFailure(PlanFailure failure, absl::string_view message) {
   absl::Status status(Info(failure).code, message);
   status.SetPayload(kPlanFailurePayload, absl::Cord(Info(failure).name));
+  // The typed failure is the ErrorInfo reason clients switch on (ToGrpcStatus reads it).
+  status.SetPayload(kReasonPayloadUrl, absl::Cord(Info(failure).name));
   return status;
 }
 

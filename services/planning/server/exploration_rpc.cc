@@ -6,7 +6,10 @@
 #include <vector>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/value_checks.h"
+#include "services/planning/server/request_checks.h"
 #include "services/planning/core/coverage_goal.h"
 #include "services/planning/core/distance_field.h"
 #include "services/planning/core/eroi_utility.h"
@@ -18,6 +21,9 @@ namespace {
 
 namespace pb = semnav::planning::v1;
 using semnav::common::v1::GridMap;
+
+// A frontier needs at least this many cells; more than a whole grid holds finds none.
+constexpr uint32_t kMaxMinCells = uint32_t{1} << 26;
 
 // Everything the frontier strategies need from one request.
 struct FrontierView {
@@ -75,8 +81,9 @@ absl::StatusOr<FrontierScoreConfig> WeightsOf(const pb::FrontierScoreWeights& we
   };
   for (const auto& o : overrides) {
     if (!o.set) continue;
-    if (!std::isfinite(o.value) || o.value < 0) {
-      return Invalid(absl::StrCat("weights.", o.name), "must be a finite value >= 0");
+    if (!std::isfinite(o.value) || o.value < 0 || o.value > kMaxScore) {
+      return Invalid(absl::StrCat("weights.", o.name),
+                     absl::StrCat("must be a finite value in [0, ", kMaxScore, "]"));
     }
     *o.target = o.value;
   }
@@ -114,8 +121,15 @@ struct SearchBounds {
 absl::StatusOr<SearchBounds> ReadSearchBounds(const pb::SelectExplorationGoalRequest& request) {
   if (!request.has_search_area()) return SearchBounds{};
   const pb::SearchArea& a = request.search_area();
-  for (double v : {a.min_x(), a.min_y(), a.max_x(), a.max_y()}) {
-    if (!std::isfinite(v)) return Invalid("search_area", "coordinates must be finite");
+  const struct {
+    double value;
+    const char* field;
+  } corners[] = {{a.min_x(), "search_area.min_x"}, {a.min_y(), "search_area.min_y"},
+                 {a.max_x(), "search_area.max_x"}, {a.max_y(), "search_area.max_y"}};
+  for (const auto& corner : corners) {
+    if (absl::Status s = CheckMagnitude(corner.value, corner.field, kMaxCoordinateM); !s.ok()) {
+      return s;
+    }
   }
   if (a.min_x() >= a.max_x() || a.min_y() >= a.max_y()) {
     return Invalid("search_area", "min_x must be < max_x and min_y < max_y");
@@ -157,9 +171,14 @@ std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers, cons
 
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
                                        const semnav::common::v1::Pose2D& robot,
-                                       uint32_t min_cells, const pb::SemanticContext& semantics,
+                                       uint32_t min_cells, const std::string& min_cells_field,
+                                       const pb::SemanticContext& semantics,
                                        const PlanningConfig& config, const GoalFilter& filter = {}) {
   FrontierView view;
+  if (absl::Status s = CheckSemantics(semantics, "semantics"); !s.ok()) return s;
+  if (min_cells > kMaxMinCells) {
+    return InvalidField(min_cells_field, absl::StrCat("must be at most ", kMaxMinCells));
+  }
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
   if (!frame.ok()) return frame.status();
   view.frame = *frame;
@@ -203,7 +222,8 @@ absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
                                 const PlanningConfig& config,
                                 pb::ExtractFrontiersResponse* response) {
   absl::StatusOr<FrontierView> view =
-      BuildView(grid, field, request.robot(), request.min_cells(), request.semantics(), config);
+      BuildView(grid, field, request.robot(), request.min_cells(), "min_cells",
+                request.semantics(), config);
   if (!view.ok()) return view.status();
   for (size_t i = 0; i < view->frontiers.size(); ++i) {
     pb::Frontier* f = response->add_frontiers();
@@ -223,15 +243,30 @@ absl::Status ScoreFrontiersOn(const pb::ScoreFrontiersRequest& request,
   absl::StatusOr<FrontierScoreConfig> weights =
       WeightsOf(request.weights(), config.exploration.score);
   if (!weights.ok()) return weights.status();
+  if (absl::Status s = CheckPose2D(request.robot(), "robot"); !s.ok()) return s;
+  if (absl::Status s = CheckSemantics(request.semantics(), "semantics"); !s.ok()) return s;
+  if (absl::Status s = CheckCount(request.frontiers_size(), "frontiers", kMaxListItems); !s.ok()) {
+    return s;
+  }
   std::vector<FrontierCandidate> candidates;
   for (int i = 0; i < request.frontiers_size(); ++i) {
     const pb::Frontier& f = request.frontiers(i);
-    if (!std::isfinite(f.centroid().x()) || !std::isfinite(f.centroid().y())) {
-      return Invalid(absl::StrCat("frontiers[", i, "].centroid"), "must be finite");
+    const std::string at = absl::StrCat("frontiers[", i, "]");
+    if (absl::Status s = CheckPose2D(f.centroid(), at + ".centroid"); !s.ok()) return s;
+    if (absl::Status s = CheckPose2D(f.anchor(), at + ".anchor"); !s.ok()) return s;
+    if (!std::isfinite(f.path_distance_m()) || std::abs(f.path_distance_m()) > kMaxPathM) {
+      return Invalid(at + ".path_distance_m",
+                     absl::StrCat("must be finite and within +-", kMaxPathM,
+                                  " (< 0 = unreachable)"));
     }
-    if (!std::isfinite(f.path_distance_m())) {
-      return Invalid(absl::StrCat("frontiers[", i, "].path_distance_m"),
-                     "must be finite (< 0 = unreachable)");
+    // A previous answer's score may be sent back; it is recomputed, but must still be a number.
+    const pb::FrontierScore& score = f.score();
+    for (const auto& [value, name] : {std::pair{score.distance(), "distance"},
+                                      std::pair{score.novelty(), "novelty"},
+                                      std::pair{score.language(), "language"},
+                                      std::pair{score.grounding(), "grounding"},
+                                      std::pair{score.total(), "total"}}) {
+      if (absl::Status s = CheckScore(value, absl::StrCat(at, ".score.", name)); !s.ok()) return s;
     }
     candidates.push_back({ToPoint(f.centroid()), f.path_distance_m()});
   }
@@ -252,15 +287,43 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                           const pb::SelectExplorationGoalRequest& request,
                           const PlanningConfig& config,
                           pb::SelectExplorationGoalResponse* response) {
-  if (request.excluded_radius_m() < 0) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "excluded_radius_m",
-                      "excluded_radius_m must be >= 0");
+  if (absl::Status s = CheckRange(request.excluded_radius_m(), "excluded_radius_m", 0.0,
+                                  2 * kMaxCoordinateM);
+      !s.ok()) {
+    return s;
+  }
+  if (absl::Status s = CheckCount(request.excluded_goals_size(), "excluded_goals", kMaxListItems);
+      !s.ok()) {
+    return s;
+  }
+  for (int i = 0; i < request.excluded_goals_size(); ++i) {
+    if (absl::Status s =
+            CheckPose2D(request.excluded_goals(i), absl::StrCat("excluded_goals[", i, "]"));
+        !s.ok()) {
+      return s;
+    }
+  }
+  if (absl::Status s = CheckCount(request.eroi_semantic_values_size(), "eroi_semantic_values",
+                                  kMaxListItems);
+      !s.ok()) {
+    return s;
+  }
+  for (int i = 0; i < request.eroi_semantic_values_size(); ++i) {
+    if (absl::Status s = CheckScore(request.eroi_semantic_values(i),
+                                    absl::StrCat("eroi_semantic_values[", i, "]"));
+        !s.ok()) {
+      return s;
+    }
+  }
+  if (!pb::ExplorationStrategy_IsValid(request.strategy())) {
+    return InvalidField("strategy", "unknown exploration strategy");
   }
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};
   absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
-                                                request.min_frontier_cells(), request.semantics(),
+                                                request.min_frontier_cells(),
+                                                "min_frontier_cells", request.semantics(),
                                                 config, filter);
   if (!view.ok()) return view.status();
   const pb::ExplorationStrategy strategy =

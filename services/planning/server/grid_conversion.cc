@@ -4,6 +4,8 @@
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/value_checks.h"
+#include "services/planning/server/request_checks.h"
 
 namespace semnav::planning {
 namespace {
@@ -13,6 +15,8 @@ using semnav::common::v1::GridMap;
 
 constexpr uint8_t kUnknown = 255;
 constexpr int64_t kMaxCells = int64_t{1} << 26;  // 8192 x 8192
+// Cells larger than this are no grid a planner can use (and 1e300 would put every pose at 1e300).
+constexpr double kMaxResolutionM = 100.0;
 
 absl::Status Invalid(const std::string& field, absl::string_view message) {
   return FieldError(absl::StatusCode::kInvalidArgument, field, message);
@@ -22,6 +26,7 @@ absl::Status Invalid(const std::string& field, absl::string_view message) {
 
 absl::StatusOr<Cell> GridFrame::ToCell(const semnav::common::v1::Pose2D& pose,
                                        const std::string& field) const {
+  if (absl::Status s = CheckPose2D(pose, field); !s.ok()) return s;
   const double col = std::floor((pose.x() - origin_x) / resolution);
   const double row = std::floor((pose.y() - origin_y) / resolution);
   if (!(col >= 0 && row >= 0 && col < width && row < height)) {
@@ -39,12 +44,26 @@ semnav::common::v1::Pose2D GridFrame::ToPose(Cell cell) const {
 }
 
 absl::StatusOr<GridFrame> ReadGridFrame(const GridMap& grid, const std::string& field) {
-  if (!(grid.resolution() > 0.0) || !std::isfinite(grid.resolution())) {
-    return Invalid(field + ".resolution", "resolution must be a finite value > 0");
+  if (!(grid.resolution() > 0.0) || !(grid.resolution() <= kMaxResolutionM)) {
+    return Invalid(field + ".resolution",
+                   absl::StrCat("resolution must be a finite value in (0, ", kMaxResolutionM, "]"));
+  }
+  if (absl::Status s = CheckPose2D(grid.origin(), field + ".origin"); !s.ok()) return s;
+  if (absl::Status s = CheckMagnitude(grid.foot_height(), field + ".foot_height", kMaxCoordinateM);
+      !s.ok()) {
+    return s;
+  }
+  if (absl::Status s =
+          CheckMagnitude(grid.ceiling_height(), field + ".ceiling_height", kMaxCoordinateM);
+      !s.ok()) {
+    return s;
   }
   const int64_t cells = int64_t{grid.width()} * grid.height();
-  if (grid.width() == 0 || grid.height() == 0 || cells > kMaxCells) {
+  if (grid.width() == 0 || grid.width() > kMaxCells) {
     return Invalid(field + ".width", absl::StrCat("width x height must be in 1..", kMaxCells));
+  }
+  if (grid.height() == 0 || cells > kMaxCells) {
+    return Invalid(field + ".height", absl::StrCat("width x height must be in 1..", kMaxCells));
   }
   for (int i = 0; i < grid.layers_size(); ++i) {
     if (static_cast<int64_t>(grid.layers(i).data().size()) != cells) {

@@ -12,6 +12,7 @@
 #include "services/planning/server/exploration_rpc.h"
 #include "services/planning/server/grid_conversion.h"
 #include "services/planning/server/plan_response.h"
+#include "services/planning/server/request_checks.h"
 #include "services/planning/server/trajectory_rpc.h"
 
 namespace semnav::planning {
@@ -25,6 +26,9 @@ absl::Status Invalid(absl::string_view field, absl::string_view message) {
 }
 
 bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
+
+// A robot wider than this is no robot this planner serves.
+constexpr double kMaxRobotRadiusM = 100.0;
 
 // The earliest of the call deadline (less the margin for the reply), the
 // request budget and the config cap.
@@ -41,21 +45,33 @@ absl::Time SearchDeadline(const grpc::CallbackServerContext& context, uint32_t r
 }
 
 absl::Status CheckRequest(const pb::PlanPathRequest& request) {
-  if (!NonNegative(request.robot_radius_m())) {
-    return Invalid("robot_radius_m", "robot_radius_m must be a finite value >= 0");
+  if (!pb::PlannerKind_IsValid(request.planner())) {
+    return Invalid("planner", "unknown planner kind");
   }
-  if (!NonNegative(request.goal_tolerance_m())) {
-    return Invalid("goal_tolerance_m", "goal_tolerance_m must be a finite value >= 0");
+  if (!NonNegative(request.robot_radius_m()) || request.robot_radius_m() > kMaxRobotRadiusM) {
+    return Invalid("robot_radius_m",
+                   absl::StrCat("robot_radius_m must be a finite value in [0, ", kMaxRobotRadiusM,
+                                "]"));
+  }
+  if (!NonNegative(request.goal_tolerance_m()) || request.goal_tolerance_m() > kMaxPathM) {
+    return Invalid("goal_tolerance_m",
+                   absl::StrCat("goal_tolerance_m must be a finite value in [0, ", kMaxPathM, "]"));
   }
   if (request.allow_alternative_point() && !request.has_first_sighting()) {
     return Invalid("first_sighting", "first_sighting is required when allow_alternative_point");
   }
-  const pb::MultiModalOptions& mm = request.multimodal();
-  if (mm.has_alpha() && !NonNegative(mm.alpha())) {
-    return Invalid("multimodal.alpha", "alpha must be a finite value >= 0");
+  // Checked whenever sent, used or not: a NaN is a client bug either way.
+  if (request.has_first_sighting()) {
+    if (absl::Status s = CheckPose2D(request.first_sighting(), "first_sighting"); !s.ok()) return s;
   }
-  if (mm.has_beta() && !NonNegative(mm.beta())) {
-    return Invalid("multimodal.beta", "beta must be a finite value >= 0");
+  const pb::MultiModalOptions& mm = request.multimodal();
+  if (mm.has_alpha() && (!NonNegative(mm.alpha()) || mm.alpha() > kMaxScore)) {
+    return Invalid("multimodal.alpha", absl::StrCat("alpha must be a finite value in [0, ",
+                                                    kMaxScore, "]"));
+  }
+  if (mm.has_beta() && (!NonNegative(mm.beta()) || mm.beta() > kMaxScore)) {
+    return Invalid("multimodal.beta", absl::StrCat("beta must be a finite value in [0, ",
+                                                   kMaxScore, "]"));
   }
   return absl::OkStatus();
 }

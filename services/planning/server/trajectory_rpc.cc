@@ -2,6 +2,8 @@
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/value_checks.h"
+#include "services/planning/server/request_checks.h"
 #include "services/planning/core/trajectory.h"
 #include "services/planning/server/grid_conversion.h"
 
@@ -14,6 +16,7 @@ absl::Status SmoothTrajectoryOn(const semnav::common::v1::GridMap& grid, const s
   if (request.path_size() < 2) {
     return FieldError(absl::StatusCode::kInvalidArgument, "path", "path needs at least 2 points");
   }
+  if (absl::Status s = CheckCount(request.path_size(), "path", kMaxListItems); !s.ok()) return s;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
   if (!frame.ok()) return frame.status();
   absl::StatusOr<PassabilityGrid> free = ToPassability(grid, {occupied_percent, false}, field);

@@ -102,6 +102,11 @@ TEST_F(PlanningContract, FootprintInflationBlocksTheDoor) {
   std::optional<pb::PlanFailureDetail> detail = GetDetail<pb::PlanFailureDetail>(status);
   ASSERT_TRUE(detail.has_value());
   EXPECT_EQ(detail->reason(), pb::PLAN_FAILURE_REASON_NO_PATH);
+  // Clients that only read ErrorInfo see the typed failure too.
+  std::optional<semnav::common::v1::ErrorInfo> info =
+      GetDetail<semnav::common::v1::ErrorInfo>(status);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->reason(), "NO_PATH");
 }
 
 TEST_F(PlanningContract, TypedFailuresForOccupiedEndpoints) {
