@@ -46,6 +46,10 @@ absl::StatusOr<CompletionRequest> ToCore(const v1::CompleteRequest& request) {
   out.alias = request.model_alias();
   for (int i = 0; i < request.messages_size(); ++i) {
     const v1::ChatMessage& message = request.messages(i);
+    if (!v1::Role_IsValid(message.role())) {
+      return FieldError(absl::StatusCode::kInvalidArgument, absl::StrCat("messages[", i, "].role"),
+                        "unknown role");
+    }
     ChatMessage m{ToCore(message.role()), {}};
     for (int j = 0; j < message.parts_size(); ++j) {
       const v1::ContentPart& part = message.parts(j);
@@ -71,6 +75,9 @@ absl::StatusOr<CompletionRequest> ToCore(const v1::CompleteRequest& request) {
       }
     }
     out.messages.push_back(std::move(m));
+  }
+  if (!v1::ResponseFormat_IsValid(request.response_format())) {
+    return FieldError(absl::StatusCode::kInvalidArgument, "response_format", "unknown response format");
   }
   switch (request.response_format()) {
     case v1::RESPONSE_FORMAT_JSON_OBJECT:

@@ -211,7 +211,8 @@ absl::Status Validate(const api::SessionHello& hello) {
 }
 
 absl::Status Validate(const api::CommandFeedback& feedback) {
-  // Unknown kinds are ignored like UNSPECIFIED (a newer robot may send kinds added later).
+  // Every door refuses numbers it does not know, enums included (as planning does).
+  if (!api::FeedbackKind_IsValid(feedback.kind())) return InvalidField("feedback.kind", "unknown kind");
   return CheckLength(feedback.detail(), "feedback.detail", kMaxTextBytes);
 }
 
@@ -230,6 +231,9 @@ absl::Status Validate(const api::CameraFrame& frame) {
                                                        {k.cy(), "camera.intrinsics.cy"}};
   for (const auto& [value, field] : intrinsics) {
     if (absl::Status s = CheckMagnitude(value, field, kMaxFocalLengthPx); !s.ok()) return s;
+  }
+  if (!common::v1::ImageEncoding_IsValid(frame.image().encoding())) {
+    return InvalidField("camera.image.encoding", "unknown encoding");
   }
   return CheckPose(frame.camera_pose(), "camera.camera_pose");
 }

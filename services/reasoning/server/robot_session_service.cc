@@ -3,6 +3,7 @@
 #include "services/common/logging/log.h"
 #include "services/common/status/grpc_status.h"
 #include "services/reasoning/server/queued_writer.h"
+#include "services/reasoning/server/request_checks.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -51,8 +52,10 @@ class SessionReactor
       case api::ConnectRequest::kFeedback:
         return hub_->OnFeedback(this, request_.feedback());
       case api::ConnectRequest::kCamera:
+        // Malformed numbers end the session like a bad state; an image that does not decode is
+        // the camera's problem, not the session's: logged, and the stream goes on.
+        if (absl::Status malformed = Validate(request_.camera()); !malformed.ok()) return malformed;
         if (absl::Status status = hub_->OnCameraFrame(this, request_.camera()); !status.ok()) {
-          // A bad frame is the camera's problem, not the session's: log it and keep the stream.
           LogWarning("camera_frame_rejected", {{"message", status.message()}});
         }
         return absl::OkStatus();
