@@ -111,6 +111,18 @@ std::vector<SweptBinary> SweptBinaries() {
 // A request worth mutating beyond the empty message: mutations of a valid frame or plan reach
 // the checks behind "frame has no depth" or "no grid". UNIQUE is replaced per call, so frames of
 // different calls never look like one robot going back in time and request ids never repeat.
+// Three landmarks that span a frame, as the text of a repeated field `field`.
+std::string ThreeLandmarks(absl::string_view field) {
+  std::string text;
+  const char* corners[] = {"x: 1 y: 1 z: 0", "x: 4 y: 1 z: 0", "x: 1 y: 5 z: 1"};
+  const char* embeddings[] = {"1, 0, 0, 0", "0, 1, 0, 0", "0, 0, 1, 0"};
+  for (int i = 0; i < 3; ++i) {
+    absl::StrAppend(&text, field, " { position { ", corners[i], " } scale_m: 0.5 embedding: [ ", embeddings[i],
+                    " ] observations: 1 } ");
+  }
+  return text;
+}
+
 const std::map<std::string, std::string>& SensibleBases() {
   // 8 x 8 cells of 0.5 m, all free; rows 0-3 explored, so there is a frontier at y = 2 m.
   static const std::string kGrid = absl::StrCat(
@@ -167,48 +179,11 @@ const std::map<std::string, std::string>& SensibleBases() {
       {"semnav.planning.v1.PlanningService/SmoothTrajectory",
        absl::StrCat("source {", kGrid, "} path { x: 0.6 y: 0.6 } path { x: 3.2 y: 1.6 }")},
       {"semnav.relocalization.v1.RelocalizationService/UpsertLandmarks",
-       R"pb(map_id: "sweep"
-            request_id: "@UNIQUE@"
-            landmarks {
-              position { x: 1 y: 1 z: 0 }
-              scale_m: 0.5
-              embedding: [ 1, 0, 0, 0 ]
-              observations: 1
-            }
-            landmarks {
-              position { x: 4 y: 1 z: 0 }
-              scale_m: 0.5
-              embedding: [ 0, 1, 0, 0 ]
-              observations: 1
-            }
-            landmarks {
-              position { x: 1 y: 5 z: 1 }
-              scale_m: 0.5
-              embedding: [ 0, 0, 1, 0 ]
-              observations: 1
-            })pb"},
+       absl::StrCat(R"pb(map_id: "sweep" request_id: "@UNIQUE@" )pb", ThreeLandmarks("landmarks"))},
       {"semnav.relocalization.v1.RelocalizationService/GetLandmarkMap",
        R"pb(map_id: "sweep" page_size: 10)pb"},
       {"semnav.relocalization.v1.RelocalizationService/Relocalize",
-       R"pb(map_id: "sweep"
-            observed {
-              position { x: 1 y: 1 z: 0 }
-              scale_m: 0.5
-              embedding: [ 1, 0, 0, 0 ]
-              observations: 1
-            }
-            observed {
-              position { x: 4 y: 1 z: 0 }
-              scale_m: 0.5
-              embedding: [ 0, 1, 0, 0 ]
-              observations: 1
-            }
-            observed {
-              position { x: 1 y: 5 z: 1 }
-              scale_m: 0.5
-              embedding: [ 0, 0, 1, 0 ]
-              observations: 1
-            })pb"},
+       absl::StrCat(R"pb(map_id: "sweep" )pb", ThreeLandmarks("observed"))},
       {"semnav.modelproxy.v1.ModelProxyService/Complete",
        R"pb(messages {
               role: ROLE_USER
