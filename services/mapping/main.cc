@@ -17,8 +17,9 @@ int main(int argc, char** argv) {
     absl::StatusOr<semnav::mapping::MapStore> store = semnav::mapping::MapStore::Open(config.store_directory);
     if (!store.ok()) return store.status();
     auto service = std::make_unique<semnav::mapping::MappingServiceImpl>(config, *std::move(store));
+    if (absl::Status live = service->StartLiveSnapshots(); !live.ok()) return live;
     semnav::mapping::MappingServiceImpl* raw = service.get();
-    host.OnShutdown([raw] { raw->StopWatches(); });
+    host.OnShutdown([raw] { raw->Shutdown(); });
     host.AddService(std::move(service), "semnav.mapping.v1.MappingService");
     return absl::OkStatus();
   };

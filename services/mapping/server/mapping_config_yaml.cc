@@ -90,12 +90,15 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
       .Read("query_min_cosine", &config.query_min_cosine)
       .Read("occupancy_chunk_bytes", &config.occupancy_chunk_bytes)
       .Read("max_window_cells", &config.window_limits.max_cells)
-      .Read("max_abs_coordinate_m", &config.window_limits.max_abs_coordinate_m);
+      .Read("max_abs_coordinate_m", &config.window_limits.max_abs_coordinate_m)
+      .Read("live_snapshot_interval_s", &config.live_snapshot_interval_s);
   section.Check(!config.store_directory.empty(), "store_directory", "must not be empty");
   section.Check(config.watch_min_interval_ms >= 10, "watch_min_interval_ms", "must be >= 10");
   section.Check(config.occupancy_chunk_bytes >= 1024 && config.occupancy_chunk_bytes <= (1 << 20),
                 "occupancy_chunk_bytes", "must be in [1024, 1048576]");
   section.Check(config.window_limits.max_cells >= 1, "max_window_cells", "must be >= 1");
+  section.Check(config.live_snapshot_interval_s >= 0 && config.live_snapshot_interval_s <= 3600,
+                "live_snapshot_interval_s", "must be in [0, 3600]");
   section.Check(config.window_limits.max_abs_coordinate_m > 0, "max_abs_coordinate_m", "must be > 0");
   return config;
 }

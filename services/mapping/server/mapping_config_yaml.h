@@ -17,6 +17,7 @@ struct MappingServiceConfig {
   size_t idempotency_cache_size = 1024;      // remembered request_ids
   int occupancy_chunk_bytes = 1 << 20;       // GetOccupancy DataChunk size (protocol max 1 MiB)
   WindowLimits window_limits;                // GetGridMap / WatchGridMap window bounds
+  double live_snapshot_interval_s = 5.0;     // crash-recovery snapshot of the live map; 0 = off
 };
 
 // Reads the "mapping" YAML section. Keys (defaults in brackets):
@@ -34,6 +35,7 @@ struct MappingServiceConfig {
 //   synonyms: {label: [other names]}   store_directory   watch_min_interval_ms   query_min_cosine
 //   occupancy_chunk_bytes [1048576, in 1024..1048576]
 //   max_window_cells [16777216]   max_abs_coordinate_m [100000]: grid-window request bounds
+//   live_snapshot_interval_s [5, 0 = off]: crash-recovery snapshot in <store_directory>/live
 // Errors are recorded on `section` (reported with their key path by the caller's Finish()).
 MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section);
 

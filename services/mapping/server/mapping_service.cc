@@ -128,6 +128,20 @@ grpc::ServerWriteReactor<Response>* FailStream(const grpc::Status& status) {
 MappingServiceImpl::MappingServiceImpl(const MappingServiceConfig& config, MapStore store)
     : config_(config), store_(std::move(store)), engine_(config.core), idempotency_(config.idempotency_cache_size) {}
 
+absl::Status MappingServiceImpl::StartLiveSnapshots() {
+  if (config_.live_snapshot_interval_s <= 0) return absl::OkStatus();
+  absl::StatusOr<std::unique_ptr<LiveSnapshot>> started =
+      LiveSnapshot::Start(engine_, config_.store_directory, absl::Seconds(config_.live_snapshot_interval_s));
+  if (!started.ok()) return started.status();
+  live_snapshot_ = *std::move(started);
+  return absl::OkStatus();
+}
+
+void MappingServiceImpl::Shutdown() {
+  stopping_.store(true);
+  if (live_snapshot_ != nullptr) live_snapshot_->StopAndDiscard();
+}
+
 template <typename Response, typename Call>
 grpc::Status MappingServiceImpl::Idempotent(const std::string& method, const std::string& request_id,
                                             Response* response, Call call) {

@@ -9,6 +9,7 @@
 #include "services/mapping/core/map_store.h"
 #include "services/mapping/core/mapping_engine.h"
 #include "services/mapping/server/idempotency_cache.h"
+#include "services/mapping/server/live_snapshot.h"
 #include "services/mapping/server/mapping_config_yaml.h"
 
 namespace semnav::mapping {
@@ -18,8 +19,11 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
  public:
   MappingServiceImpl(const MappingServiceConfig& config, MapStore store);
 
-  // Ends every watch stream (server shutdown hook).
-  void StopWatches() { stopping_.store(true); }
+  // Restores the live map a crashed predecessor left and snapshots it from now on
+  // (config live_snapshot_interval_s; 0 = off).
+  absl::Status StartLiveSnapshots();
+  // Server shutdown hook: ends every watch stream; a clean stop discards the live snapshot.
+  void Shutdown();
 
   grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse>* StreamFrames(
       grpc::CallbackServerContext* context) override;
@@ -57,6 +61,7 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
   IdempotencyCache idempotency_;
   absl::Mutex store_mu_;  // one save/load/delete at a time
   std::atomic<bool> stopping_{false};
+  std::unique_ptr<LiveSnapshot> live_snapshot_;
 };
 
 }  // namespace semnav::mapping

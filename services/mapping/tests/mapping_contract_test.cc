@@ -1,4 +1,6 @@
 // Contract test: the real semnav-mapping binary on a loopback port, called through generated stubs.
+#include <signal.h>
+
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -9,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
 
+#include "absl/time/clock.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "services/common/status/grpc_status.h"
 #include "services/mapping/testing/frame_proto.h"
@@ -268,6 +271,50 @@ TEST_F(MappingContractTest, UnboundedWindowsAreRejectedAndTheServiceSurvives) {
   }
   // Still alive and answering.
   EXPECT_EQ(Grid().grid().width(), 0);
+}
+
+// A mapping service that dies (SIGKILL, as an OOM kill or a crash) and is started again keeps its
+// live map: the snapshot in <store>/live brings back every cell and object. A clean stop
+// (SIGTERM) discards it, so a fresh start begins empty.
+TEST_F(MappingContractTest, LiveMapSurvivesACrashButNotACleanStop) {
+  const std::string config = store_ + "-live.yaml";
+  std::ofstream(config) << "mapping:\n  store_directory: " << store_ << "\n  live_snapshot_interval_s: 0.1\n";
+  auto start = [&] {
+    absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> process =
+        semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", config});
+    EXPECT_TRUE(process.ok()) << process.status();
+    return process.ok() ? *std::move(process) : nullptr;
+  };
+  process_ = start();
+  ASSERT_NE(process_, nullptr);
+  stub_ = v1::MappingService::NewStub(process_->channel());
+  Stream({RoomFrame(kFrameNs), RoomFrame(2 * kFrameNs)});
+  const v1::GetGridMapResponse before = Grid();
+  ASSERT_GT(before.grid().width(), 0);
+  const int objects = Scene().objects_size();
+  ASSERT_EQ(objects, 1);
+  absl::SleepFor(absl::Milliseconds(500));  // a few snapshot periods
+
+  ::kill(process_->pid(), SIGKILL);
+  process_.reset();
+  process_ = start();
+  ASSERT_NE(process_, nullptr);
+  stub_ = v1::MappingService::NewStub(process_->channel());
+  const v1::GetGridMapResponse after = Grid();
+  EXPECT_EQ(after.grid().width(), before.grid().width());
+  EXPECT_EQ(after.grid().height(), before.grid().height());
+  ASSERT_EQ(after.grid().layers_size(), before.grid().layers_size());
+  for (int i = 0; i < before.grid().layers_size(); ++i) {
+    EXPECT_EQ(after.grid().layers(i).data(), before.grid().layers(i).data()) << "layer " << i;
+  }
+  EXPECT_EQ(Scene().objects_size(), objects);
+
+  ASSERT_TRUE(process_->Terminate().ok());
+  process_ = start();
+  ASSERT_NE(process_, nullptr);
+  stub_ = v1::MappingService::NewStub(process_->channel());
+  EXPECT_EQ(Grid().grid().width(), 0);
+  EXPECT_EQ(Scene().objects_size(), 0);
 }
 
 TEST_F(MappingContractTest, SaveLoadAndCorruptFileIsDataLossWithLiveMapUntouched) {
