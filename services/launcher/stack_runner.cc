@@ -139,13 +139,20 @@ absl::Status StackRunner::Start() {
         absl::StrCat(lock.status().message(), "; stop it first, or give this one other ports with --config FILE"));
   }
   lock_.emplace(std::move(*lock));
-  std::vector<std::pair<std::string, std::string>> listens;
-  for (const StackService& service : config_.services) listens.emplace_back(service.name, service.listen);
-  if (config_.dashboard.enabled) listens.emplace_back("dashboard", config_.dashboard.listen);
-  for (const auto& [name, listen] : listens) {
-    if (absl::Status free = CheckListenAddressFree(listen); !free.ok()) {
-      return absl::FailedPreconditionError(absl::StrCat(
-          name, ": ", free.message(), " (another stack or program?); stop it, or choose other ports with --config FILE"));
+  for (const StackService& service : config_.services) {
+    if (absl::Status free = CheckListenAddressFree(service.listen); !free.ok()) {
+      return absl::FailedPreconditionError(absl::StrCat(service.name, ": ", free.message(),
+                                                        " (another stack or program?); stop it, or choose other "
+                                                        "ports with --config FILE"));
+    }
+  }
+  // The page is optional: a port taken by another program (a web server on 8080) costs the
+  // dashboard, not the stack.
+  if (config_.dashboard.enabled) {
+    if (absl::Status free = CheckListenAddressFree(config_.dashboard.listen); !free.ok()) {
+      notes_.push_back(absl::StrCat("dashboard: not started: ", free.message(),
+                                    "; give it another address (dashboard.listen) with --config FILE"));
+      config_.dashboard.enabled = false;
     }
   }
   if (options_.sim_robot &&

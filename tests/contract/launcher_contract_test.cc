@@ -1,6 +1,9 @@
 // `semnav up` brings the five real services to SERVING, `semnav status` sees them, SIGTERM
 // stops them all cleanly; a killed service comes back while the others keep running, a second
 // stack on the same ports refuses to start, and no child outlives the launcher.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -241,6 +244,25 @@ TEST(LauncherTest, DashboardIsServedAndItsUrlPrinted) {
   EXPECT_THAT(status->output, HasSubstr(absl::StrCat("SERVING http://127.0.0.1:", port, "/")));
   const int code = StopUp(running);
   EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
+}
+
+TEST(LauncherTest, ATakenDashboardPortCostsTheDashboardNotTheStack) {
+  const std::string stack = WriteStack();
+  const int port = *semnav::launcher::FreeLoopbackPort();
+  const int blocker = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  ASSERT_EQ(::bind(blocker, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  ASSERT_EQ(::listen(blocker, 1), 0);
+  std::ofstream(stack, std::ios::app) << "dashboard: {listen: '127.0.0.1:" << port << "'}\n";
+  RunningStack running = StartUp(stack);
+  EXPECT_THAT(running.printed, HasSubstr("semnav stack is up"));
+  EXPECT_THAT(running.printed, HasSubstr(absl::StrCat("dashboard: not started: 127.0.0.1:", port, " is already in use")));
+  const int code = StopUp(running);
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
+  ::close(blocker);
 }
 
 TEST(LauncherTest, UnknownBenchAreaListsTheBuiltOnes) {
