@@ -238,5 +238,31 @@ TEST_F(GatewayFaultContractTest, PlanningKilledForLongerThanTheTimeoutFailsTheTa
   EXPECT_EQ(failed->reason(), "planning unavailable for 6 s");
 }
 
+// Mapping gone behind a live planning service: planning answers that its live map's GetGridMap
+// failed, and the pause names mapping.
+TEST_F(GatewayFaultContractTest, MappingKilledPausesTheTaskNamingMapping) {
+  ASSERT_NO_FATAL_FAILURE(StartStack("dependency_retry_s: 0.5, dependency_timeout_s: 60"));
+  const std::optional<api::RobotCommand> navigate = NextPlannedNavigate(std::chrono::seconds(15));
+  ASSERT_TRUE(navigate.has_value());
+  ASSERT_EQ(::kill(mapping_->pid(), SIGKILL), 0);
+  EXPECT_FALSE(mapping_->Terminate(absl::Seconds(5)).ok());
+  ASSERT_TRUE(Blocked(navigate->command_id()));
+
+  const std::optional<api::RobotCommand> hold = reader_->Next(std::chrono::milliseconds(5000));
+  ASSERT_TRUE(hold.has_value());
+  EXPECT_TRUE(hold->has_hold()) << hold->ShortDebugString();
+  if (const std::optional<api::RobotCommand> blind =
+          reader_->Next(std::chrono::milliseconds(2000))) {
+    ADD_FAILURE() << "command while mapping is dead: " << blind->ShortDebugString();
+  }
+  absl::StatusOr<api::TaskSnapshot> paused = testing::FetchTask(*operator_, task_id_);
+  ASSERT_TRUE(paused.ok()) << paused.status();
+  EXPECT_EQ(paused->status(), api::TASK_STATUS_PAUSED);
+  EXPECT_TRUE(absl::StartsWith(paused->reason(), "dependency_unavailable: mapping"))
+      << paused->reason();
+  EXPECT_TRUE(AnyEventContains("TASK_STATUS_PAUSED: dependency_unavailable: mapping"))
+      << absl::StrJoin(EventMessages(), "\n");
+}
+
 }  // namespace
 }  // namespace semnav::reasoning
