@@ -3,11 +3,14 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "absl/status/status.h"
 #include "absl/status/statusor.h"
+#include "absl/strings/string_view.h"
 #include "services/reasoning/core/robot_types.h"
 
 namespace semnav::reasoning {
@@ -37,15 +40,22 @@ struct ExplorationQuery {
   double excluded_radius_m = 0.0;
 };
 
+// A dependency of the planner ("planning", or "mapping" behind it) is unreachable or timed out:
+// UNAVAILABLE naming it, so the executor pauses the task instead of driving blind.
+absl::Status DependencyUnavailableError(absl::string_view dependency, absl::string_view detail);
+// The dependency an UNAVAILABLE status names; "planning" when it names none.
+std::string UnavailableDependency(const absl::Status& status);
+
 class PathPlanner {
  public:
   virtual ~PathPlanner() = default;
   // Waypoints from start to the planned goal (the last one; an empty list lets the robot plan
   // locally). Typed failures: FAILED_PRECONDITION = the goal is occupied (retry with
-  // alternative_from), NOT_FOUND = no path (explore instead); any other error is transient.
+  // alternative_from), NOT_FOUND = no path (explore instead), UNAVAILABLE = a dependency is gone
+  // (DependencyUnavailableError: the task pauses); any other error is transient.
   virtual absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) = 0;
   // Next exploration goal (the planner's configured strategy, frontier based); NOT_FOUND when the
-  // map has no frontier left that is not excluded.
+  // map has no frontier left that is not excluded; UNAVAILABLE as for Plan.
   virtual absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) = 0;
 };
 

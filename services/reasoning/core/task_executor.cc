@@ -58,6 +58,7 @@ std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose)
 std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
                                                Phase phase, const std::string& reason) {
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
+  if (absl::IsUnavailable(path.status())) return PauseForDependency(now, path.status());
   if (!path.ok() && phase == Phase::kExploring) {
     // Without a frontier goal this was the fallback step: ExplorationFailed looks around rather
     // than chain more planning calls under the hub lock; the scan's end asks for a goal again.
@@ -148,6 +149,44 @@ std::vector<RobotCommand> TaskExecutor::Halt(TaskState state, CommandKind kind, 
 
 std::vector<RobotCommand> TaskExecutor::Fail(const std::string& reason) {
   return Halt(TaskState::kFailed, CommandKind::kStop, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::PauseForDependency(double now,
+                                                           const absl::Status& unavailable) {
+  const std::string dependency = UnavailableDependency(unavailable);
+  if (dependency_wait_.has_value()) {
+    // A retry failed: the robot already holds; the timeout counts from the first failure.
+    dependency_wait_->dependency = dependency;
+    dependency_wait_->next_retry = now + config_.dependency_retry_s;
+    progress_.state = TaskState::kPaused;
+    progress_.phase = "dependency_unavailable";
+    progress_.reason =
+        absl::StrCat("dependency_unavailable: ", dependency, " (", unavailable.message(), ")");
+    phase_ = Phase::kIdle;
+    return {};
+  }
+  dependency_wait_ = DependencyWait{dependency, now, now + config_.dependency_retry_s};
+  progress_.phase = "dependency_unavailable";
+  progress_.path.clear();
+  return Halt(
+      TaskState::kPaused, CommandKind::kHold,
+      absl::StrCat("dependency_unavailable: ", dependency, " (", unavailable.message(), ")"));
+}
+
+std::vector<RobotCommand> TaskExecutor::RetryDependency(double now) {
+  const DependencyWait wait = *dependency_wait_;
+  if (now - wait.since >= config_.dependency_timeout_s) {
+    dependency_wait_.reset();
+    return Fail(
+        absl::StrCat(wait.dependency, " unavailable for ", config_.dependency_timeout_s, " s"));
+  }
+  // Re-enter the interrupted subgoal: it asks the planner again.
+  progress_.state = TaskState::kRunning;
+  std::vector<RobotCommand> out = EnterSubgoal(now);
+  if (progress_.state == TaskState::kPaused && dependency_wait_.has_value()) return out;
+  dependency_wait_.reset();
+  progress_.reason = absl::StrCat("dependency_restored: ", wait.dependency, "; ", progress_.reason);
+  return out;
 }
 
 std::vector<RobotCommand> TaskExecutor::Refuse(const absl::Status& refused) {
@@ -264,9 +303,11 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
     const absl::StatusOr<Eigen::Vector3d> goal =
         planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
+    if (absl::IsUnavailable(goal.status())) return PauseExploring(now, goal.status());
     if (!goal.ok()) break;
     explore_goal_ = *goal;
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
+    if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
     const bool moves = path.ok() && (path->empty() || (path->back() - pose_.position).head<2>().norm() >=
                                                           config_.min_explore_step_m);
     if (moves) return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring, "exploring for the target");
@@ -277,7 +318,19 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   const double yaw = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
   const Eigen::Vector3d target =
       pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
-  return MoveTo(now, target, YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
+  std::vector<RobotCommand> out =
+      MoveTo(now, target, YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
+  if (progress_.state == TaskState::kPaused && waiting_for_dependency()) {
+    --progress_.explore_goals;  // no goal was driven to: the retry asks again
+  }
+  return out;
+}
+
+std::vector<RobotCommand> TaskExecutor::PauseExploring(double now,
+                                                       const absl::Status& unavailable) {
+  --progress_.explore_goals;  // no goal was driven to: the retry asks again
+  explore_goal_.reset();
+  return PauseForDependency(now, unavailable);
 }
 
 std::vector<RobotCommand> TaskExecutor::Search(double now) {
@@ -406,6 +459,11 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
 
 std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose) {
   if (CheckRobotPose(pose, "pose").ok()) pose_ = pose;  // keep the last good pose
+  if (dependency_wait_.has_value() && progress_.state == TaskState::kPaused &&
+      (now >= dependency_wait_->next_retry ||
+       now - dependency_wait_->since >= config_.dependency_timeout_s)) {
+    return RetryDependency(now);
+  }
   if (progress_.state != TaskState::kRunning || phase_ == Phase::kIdle || now < phase_deadline_) return {};
   switch (phase_) {
     case Phase::kRotating:
@@ -482,18 +540,26 @@ std::vector<RobotCommand> TaskExecutor::OnVisionVerdict(double now, bool confirm
 }
 
 std::vector<RobotCommand> TaskExecutor::Pause() {
+  if (dependency_wait_.has_value()) {
+    // The operator's pause takes over: no retries, no timeout; Resume asks the planner again.
+    dependency_wait_.reset();
+    progress_.reason = "task paused";
+    return {};
+  }
   if (progress_.state != TaskState::kRunning) return {};
   return Halt(TaskState::kPaused, CommandKind::kHold, "task paused");
 }
 
 std::vector<RobotCommand> TaskExecutor::Resume(double now) {
   if (progress_.state != TaskState::kPaused) return {};
+  if (dependency_wait_.has_value()) return RetryDependency(now);
   progress_.state = TaskState::kRunning;
   return EnterSubgoal(now);
 }
 
 std::vector<RobotCommand> TaskExecutor::Cancel(const std::string& reason) {
   if (finished()) return {};
+  dependency_wait_.reset();
   std::vector<RobotCommand> stop = Fail(reason);
   progress_.state = TaskState::kCancelled;
   return stop;

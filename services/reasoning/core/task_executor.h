@@ -46,6 +46,10 @@ struct ExecutorConfig {
   // Paths keep this much more than the footprint from mapped obstacles (Nav2 inflates beyond the
   // inscribed radius too): mapped walls are off by a cell or two, and paths hug inflated edges.
   double path_clearance_m = 0.1;
+  // A planner dependency gone (planning, or mapping behind it) pauses the task with the robot
+  // holding: the planner is asked again this often, and the task fails after this long without it.
+  double dependency_retry_s = 2.0;
+  double dependency_timeout_s = 60.0;
 };
 
 enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
@@ -91,7 +95,9 @@ class TaskExecutor {
   std::vector<RobotCommand> OnSceneGraph(double now, const SceneGraph& graph);
   std::vector<RobotCommand> OnSlowDecision(double now, uint64_t graph_revision, const SlowDecision& decision);
   std::vector<RobotCommand> OnVisionVerdict(double now, bool confirmed);
+  // An operator's pause; during a dependency pause it stops the retries (the robot already holds).
   std::vector<RobotCommand> Pause();
+  // Also retries the planner at once during a dependency pause.
   std::vector<RobotCommand> Resume(double now);
   std::vector<RobotCommand> Cancel(const std::string& reason);
   // Replace the target of the remaining subgoals (multi-turn correction).
@@ -112,6 +118,8 @@ class TaskExecutor {
   const TaskProgress& progress() const { return progress_; }
   const std::vector<Subgoal>& subgoals() const { return subgoals_; }
   bool finished() const;
+  // PAUSED because the planner's dependency is gone (not by the operator or the session).
+  bool waiting_for_dependency() const { return dependency_wait_.has_value(); }
 
  private:
   enum class Phase { kIdle, kMoving, kRotating, kWaiting, kExploring, kExploreScan, kVerifying };
@@ -124,6 +132,10 @@ class TaskExecutor {
   // Fails the task instead of sending a command that CheckCommand refused.
   std::vector<RobotCommand> Refuse(const absl::Status& refused);
   std::vector<RobotCommand> Replan(double now, const std::string& reason);
+  // The planner answered UNAVAILABLE: hold and pause (once), retry from OnPose.
+  std::vector<RobotCommand> PauseForDependency(double now, const absl::Status& unavailable);
+  std::vector<RobotCommand> RetryDependency(double now);
+  std::vector<RobotCommand> PauseExploring(double now, const absl::Status& unavailable);
   std::vector<RobotCommand> ExplorationFailed(double now, const std::string& reason);
   std::vector<RobotCommand> SetTargetAside(double now, const std::string& reason);
   std::vector<RobotCommand> Search(double now);
@@ -170,6 +182,12 @@ class TaskExecutor {
   uint64_t requested_revision_ = 0;
   bool awaiting_model_ = false;
   std::optional<ModelRequest> pending_request_;
+  struct DependencyWait {
+    std::string dependency;  // "planning" or "mapping"
+    double since = 0.0;      // first UNAVAILABLE answer
+    double next_retry = 0.0;
+  };
+  std::optional<DependencyWait> dependency_wait_;
 };
 
 std::string_view TaskStateName(TaskState state);

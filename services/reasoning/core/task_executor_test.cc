@@ -10,11 +10,12 @@ namespace semnav::reasoning {
 namespace {
 
 // Straight-line paths; exploration goals from a script, NOT_FOUND when it runs out. Records every
-// query; `failures` are returned (in order) before any path.
+// query; `failures` are returned (in order) before any path; `down` answers every call.
 class ScriptedPlanner : public PathPlanner {
  public:
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
     queries.push_back(query);
+    if (!down.ok()) return down;
     if (!failures.empty()) {
       absl::Status failure = failures.front();
       failures.pop_front();
@@ -29,6 +30,7 @@ class ScriptedPlanner : public PathPlanner {
   Eigen::Vector3d alternative_point = Eigen::Vector3d::Zero();
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
     exploration_queries.push_back(query);
+    if (!down.ok()) return down;
     if (frontiers.empty()) return absl::NotFoundError("no frontier");
     Eigen::Vector3d goal = frontiers.front();
     frontiers.pop_front();
@@ -37,6 +39,7 @@ class ScriptedPlanner : public PathPlanner {
   std::deque<Eigen::Vector3d> frontiers;
   std::vector<ExplorationQuery> exploration_queries;
   bool unreachable = false;
+  absl::Status down;  // not OK: every call answers this (a dependency gone)
 };
 
 SceneObject Extinguisher(int detections) {
@@ -592,6 +595,121 @@ TEST_F(GatewayTaskExecutorTest, AbsurdWaitDurationFailsTheTaskInstead) {
   EXPECT_EQ(out[0].kind, CommandKind::kStop);
   EXPECT_EQ(task.progress().state, TaskState::kFailed);
   EXPECT_TRUE(absl::StrContains(task.progress().reason, "duration_s")) << task.progress().reason;
+}
+
+bool Moves(const std::vector<RobotCommand>& commands) {
+  for (const RobotCommand& command : commands) {
+    if (command.kind == CommandKind::kNavigate || command.kind == CommandKind::kRotate) return true;
+  }
+  return false;
+}
+
+// Issue "Fleet and faults": planning dead used to mean blind 3 m steps and a task RUNNING with no
+// event. Now the robot holds, the task pauses naming the dependency and retries every 2 s.
+TEST_F(GatewayTaskExecutorTest, PlanningUnavailablePausesHoldsAndResumesWhenItAnswers) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  const uint64_t interrupted = out[0].id;
+  planner_.down = absl::UnavailableError("PlanPath: connection refused");
+  out = task.OnFeedback(1, interrupted, RobotFeedback::kBlocked);  // re-plan: planning is gone
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);  // hold, not an emergency stop
+  EXPECT_EQ(task.progress().state, TaskState::kPaused);
+  EXPECT_EQ(task.progress().phase, "dependency_unavailable");
+  EXPECT_TRUE(absl::StartsWith(task.progress().reason, "dependency_unavailable: planning"))
+      << task.progress().reason;
+  EXPECT_TRUE(task.waiting_for_dependency());
+  EXPECT_TRUE(task.progress().path.empty());
+
+  // Nothing moves the robot while planning is gone; it is asked again every 2 s.
+  const std::size_t asked = planner_.queries.size();
+  EXPECT_TRUE(task.OnFeedback(1.5, interrupted, RobotFeedback::kGoalReached).empty());
+  EXPECT_TRUE(task.OnPose(2.9, At(1)).empty());
+  EXPECT_EQ(planner_.queries.size(), asked);
+  EXPECT_TRUE(task.OnPose(3.0, At(1)).empty());
+  EXPECT_EQ(planner_.queries.size(), asked + 1);
+  EXPECT_EQ(task.progress().state, TaskState::kPaused);
+  EXPECT_TRUE(task.OnPose(4.5, At(1)).empty());
+  EXPECT_EQ(planner_.queries.size(), asked + 1);
+
+  planner_.down = absl::OkStatus();
+  out = task.OnPose(5.0, At(1));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);  // the interrupted subgoal, planned again
+  EXPECT_EQ(out[0].path.size(), 2u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4, 0, 0)));
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  EXPECT_EQ(task.progress().subgoal_index, 0);
+  EXPECT_TRUE(absl::StartsWith(task.progress().reason, "dependency_restored: planning"))
+      << task.progress().reason;
+  EXPECT_FALSE(task.waiting_for_dependency());
+}
+
+TEST_F(GatewayTaskExecutorTest, NoExplorationGoalWhileMappingIsGoneAndTheTaskFailsAfterTheTimeout) {
+  ExecutorConfig config;
+  config.dependency_retry_s = 1.0;
+  config.dependency_timeout_s = 30.0;
+  TaskExecutor task = Make(FindTarget(), config);
+  planner_.down = DependencyUnavailableError("mapping", "GetGridMap failed");
+  std::vector<RobotCommand> out = task.Start(0, At(0));  // exploring: no blind fallback step
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  EXPECT_EQ(task.progress().state, TaskState::kPaused);
+  EXPECT_TRUE(absl::StartsWith(task.progress().reason, "dependency_unavailable: mapping"))
+      << task.progress().reason;
+  EXPECT_TRUE(planner_.queries.empty());  // no path toward the least explored sector either
+  for (double now = 0.5; now < 30.0; now += 0.5) {
+    out = task.OnPose(now, At(0));
+    EXPECT_FALSE(Moves(out)) << "at " << now;
+    EXPECT_TRUE(out.empty()) << "at " << now;
+  }
+  EXPECT_EQ(planner_.exploration_queries.size(), 30u);  // the first and one a second
+  EXPECT_EQ(task.progress().explore_goals, 0);          // retries spend no exploration budget
+  out = task.OnPose(30.0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kFailed);
+  EXPECT_EQ(task.progress().reason, "mapping unavailable for 30 s");
+}
+
+TEST_F(GatewayTaskExecutorTest, OperatorCancelPauseAndResumeWorkWhilePlanningIsGone) {
+  TaskExecutor cancelled = Make(GoToTarget());
+  cancelled.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  planner_.down = absl::UnavailableError("PlanPath: deadline exceeded");
+  ASSERT_EQ(cancelled.Start(0, At(0)).size(), 1u);
+  ASSERT_EQ(cancelled.progress().state, TaskState::kPaused);
+  std::vector<RobotCommand> out = cancelled.Cancel("operator");
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(cancelled.progress().state, TaskState::kCancelled);
+  const std::size_t asked = planner_.queries.size();
+  planner_.down = absl::OkStatus();
+  EXPECT_TRUE(cancelled.OnPose(10, At(0)).empty());  // no retry after the cancel
+  EXPECT_EQ(planner_.queries.size(), asked);
+
+  // The operator's pause takes over: no retries, no timeout; Resume asks at once.
+  planner_.down = absl::UnavailableError("PlanPath: connection refused");
+  TaskExecutor paused = Make(GoToTarget());
+  paused.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  ASSERT_EQ(paused.Start(0, At(0)).size(), 1u);
+  EXPECT_TRUE(paused.Pause().empty());  // the robot already holds
+  EXPECT_EQ(paused.progress().state, TaskState::kPaused);
+  EXPECT_EQ(paused.progress().reason, "task paused");
+  EXPECT_FALSE(paused.waiting_for_dependency());
+  const std::size_t before_resume = planner_.queries.size();
+  EXPECT_TRUE(paused.OnPose(100, At(0)).empty());  // past the 60 s timeout: still paused
+  EXPECT_EQ(paused.progress().state, TaskState::kPaused);
+  EXPECT_EQ(planner_.queries.size(), before_resume);
+  out = paused.Resume(101);  // planning still gone: paused for it again, holding
+  EXPECT_TRUE(out.size() == 1u && out[0].kind == CommandKind::kHold);
+  EXPECT_TRUE(paused.waiting_for_dependency());
+  planner_.down = absl::OkStatus();
+  out = paused.Resume(101.5);  // an operator's resume retries without waiting 2 s
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_EQ(paused.progress().state, TaskState::kRunning);
 }
 
 }  // namespace

@@ -53,11 +53,16 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("path_clearance_m", &c.executor.path_clearance_m)
       .Read("min_explore_step_m", &c.executor.min_explore_step_m)
       .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
-      .Read("grounding_max_objects", &c.executor.grounding_max_objects);
+      .Read("grounding_max_objects", &c.executor.grounding_max_objects)
+      .Read("dependency_retry_s", &c.executor.dependency_retry_s)
+      .Read("dependency_timeout_s", &c.executor.dependency_timeout_s);
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
   executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m", "must be >= 0");
   executor.Check(c.executor.path_clearance_m >= 0.0, "path_clearance_m", "must be >= 0");
+  executor.Check(c.executor.dependency_retry_s > 0.0, "dependency_retry_s", "must be > 0");
+  executor.Check(c.executor.dependency_timeout_s >= c.executor.dependency_retry_s,
+                 "dependency_timeout_s", "must be >= dependency_retry_s");
 
   ConfigReader memory = section.Child("memory");
   memory.Read("node_spacing_m", &c.memory.node_spacing_m)

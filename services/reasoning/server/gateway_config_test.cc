@@ -20,6 +20,8 @@ TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
   EXPECT_DOUBLE_EQ(config.executor.approach_speed_mps, 0.15);
   EXPECT_DOUBLE_EQ(config.executor.look_around_rate_rps, 0.5);
   EXPECT_DOUBLE_EQ(config.executor.success_radius_m, 1.0);
+  EXPECT_DOUBLE_EQ(config.executor.dependency_retry_s, 2.0);
+  EXPECT_DOUBLE_EQ(config.executor.dependency_timeout_s, 60.0);
   EXPECT_DOUBLE_EQ(config.memory.node_spacing_m, 2.0);
   EXPECT_EQ(config.memory.max_nodes, 500);
   EXPECT_TRUE(config.mapping.address.empty());
@@ -80,16 +82,21 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
 
 TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
-      "fast_path: {fast_threshold: 0.8}\nexecutor: {success_radius_m: 0.5}\nmapping: {address: 127.0.0.1:50051}\n");
+      "fast_path: {fast_threshold: 0.8}\n"
+      "executor: {success_radius_m: 0.5, dependency_retry_s: 0.5, dependency_timeout_s: 5}\n"
+      "mapping: {address: 127.0.0.1:50051}\n");
   ASSERT_TRUE(reader.ok());
   const GatewayConfig config = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
   EXPECT_DOUBLE_EQ(config.fast_path.fast_threshold, 0.8);
   EXPECT_DOUBLE_EQ(config.executor.success_radius_m, 0.5);
+  EXPECT_DOUBLE_EQ(config.executor.dependency_retry_s, 0.5);
+  EXPECT_DOUBLE_EQ(config.executor.dependency_timeout_s, 5.0);
   EXPECT_EQ(config.mapping.address, "127.0.0.1:50051");
 
   for (const char* yaml : {"fast_path: {fast_threshold: 1.5}", "executor: {success_radius_m: 0}",
-                           "fast_path: {fast_treshold: 0.8}"}) {
+                           "fast_path: {fast_treshold: 0.8}", "executor: {dependency_retry_s: 0}",
+                           "executor: {dependency_timeout_s: 1}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
     GatewayConfig::FromYaml(*bad);

@@ -165,7 +165,12 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
     Log(api::EVENT_KIND_GOAL_RESOLVED, task.robot_id, task.task_id,
         absl::StrCat("object ", now.target().object_id(), " by the ", api::ResolutionPath_Name(now.target().path())));
   }
-  if (before.status() != now.status() && before.status() != api::TASK_STATUS_UNSPECIFIED) {
+  // A dependency pause is logged even when the task was already PAUSED (an operator's resume
+  // that found planning gone) or had no snapshot yet (it paused as it started).
+  const bool dependency_lost =
+      now.phase() == "dependency_unavailable" && before.phase() != "dependency_unavailable";
+  if ((before.status() != now.status() && before.status() != api::TASK_STATUS_UNSPECIFIED) ||
+      dependency_lost) {
     Log(api::EVENT_KIND_TASK_STATUS, task.robot_id, task.task_id,
         absl::StrCat(api::TaskStatus_Name(now.status()), ": ", now.reason()));
   } else if (before.current_subgoal() != now.current_subgoal()) {

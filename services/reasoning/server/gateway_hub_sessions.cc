@@ -107,7 +107,10 @@ void GatewayHub::CloseSession(StreamSink<api::ConnectResponse>* sink) {
   robot->session = nullptr;
   Log(api::EVENT_KIND_SESSION, robot_id, "", "session closed");
   auto task = tasks_.find(robot->active_task);
-  if (task == tasks_.end() || !task->second.started || task->second.executor->progress().state != TaskState::kRunning) {
+  // A task waiting for planning pauses for the session too, so the robot's return resumes it.
+  if (task == tasks_.end() || !task->second.started ||
+      (task->second.executor->progress().state != TaskState::kRunning &&
+       !task->second.executor->waiting_for_dependency())) {
     return;
   }
   task->second.paused_by_session = true;

@@ -59,6 +59,40 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   EXPECT_EQ(session.closed()->error_code(), grpc::StatusCode::UNAVAILABLE);
 }
 
+// Planning gone as a task starts: the robot holds and the log names planning at once (the
+// task's first snapshot is already PAUSED, which no status change would report).
+TEST(GatewayHubTest, TaskThatStartsWhilePlanningIsGoneHoldsAndLogsIt) {
+  class GonePlanner : public PathPlanner {
+   public:
+    absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery&) override {
+      return DependencyUnavailableError("planning", "PlanPath: not connected");
+    }
+    absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery&) override {
+      return DependencyUnavailableError("planning", "SelectExplorationGoal: not connected");
+    }
+  } planner;
+  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner);
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("r1");
+  ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
+  ASSERT_TRUE(hub.OnRobotState(&session, At(0, 0)).ok());
+  absl::StatusOr<api::SubmitInstructionResponse> response =
+      hub.Submit(SubmitRequest("find-1", "r1", "find the red cup"));
+  ASSERT_TRUE(response.ok()) << response.status();
+  const api::RobotCommand command = session.Last();
+  EXPECT_TRUE(command.has_hold()) << command.ShortDebugString();
+  EXPECT_EQ(response->task().status(), api::TASK_STATUS_PAUSED);
+  api::ListEventsRequest request;
+  request.set_task_id(response->task_id());
+  const api::ListEventsResponse listed = hub.ListEvents(request);
+  ASSERT_GE(listed.events_size(), 2) << listed.DebugString();
+  EXPECT_EQ(listed.events(listed.events_size() - 1).message(),
+            "TASK_STATUS_PAUSED: dependency_unavailable: planning "
+            "(planning unavailable: SelectExplorationGoal: not connected)");
+  hub.Shutdown();
+}
+
 // operator.proto: control of a finished task is FAILED_PRECONDITION naming task_id, but a retry
 // of the call that finished it (same request_id) gets that call's answer again.
 TEST(GatewayHubTest, ControlOfAFinishedTaskIsRefusedButARetryGetsTheFirstAnswer) {

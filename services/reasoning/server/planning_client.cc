@@ -4,6 +4,7 @@
 
 #include <grpcpp/client_context.h>
 
+#include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
 #include "services/common/status/grpc_status.h"
@@ -20,6 +21,26 @@ void SetPose(const Eigen::Vector3d& point, common::v1::Pose2D* out) {
 
 void SetDeadline(grpc::ClientContext& context, int deadline_ms) {
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::milliseconds(deadline_ms));
+}
+
+// Planning unreachable or too slow (or mapping behind it): the task pauses rather than drive
+// blind. Other failures (no map yet, robot outside the map, start occupied) keep the fallback.
+bool DependencyGone(const grpc::Status& status) {
+  return status.error_code() == grpc::StatusCode::UNAVAILABLE ||
+         status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED;
+}
+
+absl::Status Unavailable(const char* call, const grpc::Status& status) {
+  // Planning answers UNAVAILABLE naming its live map's GetGridMap when mapping is the one gone.
+  const bool mapping =
+      status.error_code() == grpc::StatusCode::UNAVAILABLE &&
+      absl::StrContains(status.error_message(), "mapping service GetGridMap failed");
+  LogWarning("planning_unavailable", {{"call", call},
+                                      {"code", static_cast<int>(status.error_code())},
+                                      {"message", status.error_message()},
+                                      {"dependency", mapping ? "mapping" : "planning"}});
+  return DependencyUnavailableError(mapping ? "mapping" : "planning",
+                                    absl::StrCat(call, ": ", status.error_message()));
 }
 
 }  // namespace
@@ -43,14 +64,14 @@ PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningS
   pb::ExplorationStrategy_Parse("EXPLORATION_STRATEGY_" + settings_.exploration_strategy, &strategy_);
 }
 
-bool PlanningClient::Ready(const char* call) {
-  if (channel_->GetState(/*try_to_connect=*/true) == GRPC_CHANNEL_READY) return true;
-  LogWarning("planning_not_connected", {{"call", call}, {"fallback", "robot plans locally"}});
-  return false;
+absl::Status PlanningClient::Ready(const char* call) {
+  if (channel_->GetState(/*try_to_connect=*/true) == GRPC_CHANNEL_READY) return absl::OkStatus();
+  LogWarning("planning_not_connected", {{"call", call}, {"fallback", "task pauses"}});
+  return DependencyUnavailableError("planning", absl::StrCat(call, ": not connected"));
 }
 
 absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuery& query) {
-  if (!Ready("PlanPath")) return std::vector<Eigen::Vector3d>{};
+  if (absl::Status ready = Ready("PlanPath"); !ready.ok()) return ready;
   pb::PlanPathRequest request;
   request.mutable_source()->mutable_live_map();
   SetPose(query.start, request.mutable_start());
@@ -80,11 +101,13 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   if (!status.ok()) {
     if (reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED) return absl::FailedPreconditionError(status.error_message());
     if (reason == pb::PLAN_FAILURE_REASON_NO_PATH) return absl::NotFoundError(status.error_message());
-    LogWarning("planning_unavailable", {{"code", static_cast<int>(status.error_code())},
-                                        {"message", status.error_message()},
-                                        {"elapsed_ms", std::chrono::duration<double, std::milli>(
-                                                           std::chrono::steady_clock::now() - started).count()},
-                                        {"fallback", "robot plans locally"}});
+    if (DependencyGone(status)) return Unavailable("PlanPath", status);
+    LogWarning("planning_failed", {{"code", static_cast<int>(status.error_code())},
+                                   {"message", status.error_message()},
+                                   {"elapsed_ms", std::chrono::duration<double, std::milli>(
+                                                      std::chrono::steady_clock::now() - started)
+                                                      .count()},
+                                   {"fallback", "robot plans locally"}});
     return std::vector<Eigen::Vector3d>{};
   }
   std::vector<Eigen::Vector3d> path;
@@ -106,7 +129,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const Exploratio
 
 absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuery& query, const std::string& strategy,
                                                            const ExplorationContext& context) {
-  if (!Ready("SelectExplorationGoal")) return absl::NotFoundError("planning service not connected");
+  if (absl::Status ready = Ready("SelectExplorationGoal"); !ready.ok()) return ready;
   const RobotPose& pose = query.pose;
   pb::SelectExplorationGoalRequest request;
   request.mutable_source()->mutable_live_map();
@@ -147,6 +170,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuer
     request.clear_eroi_semantic_values();
     status = Select(request, &response);
   }
+  if (DependencyGone(status)) return Unavailable("SelectExplorationGoal", status);
   if (!status.ok()) {
     return absl::NotFoundError(absl::StrCat("no exploration goal from planning: ", status.error_message()));
   }

@@ -1,11 +1,13 @@
 // PathPlanner over semnav-planning: PlanPath and SelectExplorationGoal on the mapping service's
 // live map. Typed failures (PlanFailureDetail) become the core's codes: GOAL_OCCUPIED ->
-// FAILED_PRECONDITION, NO_PATH -> NOT_FOUND. Any other failure (no map yet, robot outside the
-// map, start occupied, timeout, planning down) returns an empty path so the robot plans locally,
-// as it does without a planning service: motion never stops because planning is unavailable.
-// Calls run under the gateway's lock, so they are only made on a READY channel: connecting (at
-// start-up or after idleness) is kicked off in the background and meanwhile the robot plans
-// locally / exploration falls back, instead of blocking gRPC threads on connection setup.
+// FAILED_PRECONDITION, NO_PATH -> NOT_FOUND. Planning unreachable, too slow or not connected
+// (UNAVAILABLE, DEADLINE_EXCEEDED, channel not READY), or answering UNAVAILABLE because its
+// live map's mapping call failed, becomes DependencyUnavailableError naming "planning" or
+// "mapping": the executor pauses the task rather than send the robot blind goals. Other failures
+// (no map yet, robot outside the map, start occupied) return an empty path so the robot plans
+// locally. Calls run under the gateway's lock, so they are only made on a READY channel:
+// connecting (at start-up or after idleness) is kicked off in the background and meanwhile the
+// planner answers UNAVAILABLE (the task retries), instead of blocking gRPC threads.
 #pragma once
 
 #include <memory>
@@ -34,7 +36,7 @@ class PlanningClient : public PathPlanner, public ExplorationService {
                                              const ExplorationContext& context) override;
 
  private:
-  bool Ready(const char* call);
+  absl::Status Ready(const char* call);
   grpc::Status Select(const planning::v1::SelectExplorationGoalRequest& request,
                       planning::v1::SelectExplorationGoalResponse* response);
 

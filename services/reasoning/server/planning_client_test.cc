@@ -15,10 +15,16 @@ namespace pb = ::semnav::planning::v1;
 
 class RecordingPlanning final : public pb::PlanningService::Service {
  public:
+  grpc::Status PlanPath(grpc::ServerContext*, const pb::PlanPathRequest*,
+                        pb::PlanPathResponse*) override {
+    absl::MutexLock lock(&mu);
+    return failure;
+  }
   grpc::Status SelectExplorationGoal(grpc::ServerContext*, const pb::SelectExplorationGoalRequest* request,
                                      pb::SelectExplorationGoalResponse* response) override {
     absl::MutexLock lock(&mu);
     requests.push_back(*request);
+    if (!failure.ok()) return failure;
     if (refuse_values && request->eroi_semantic_values_size() > 0) {
       return grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, "eroi_semantic_values has 2 values; this grid has 6");
     }
@@ -28,6 +34,7 @@ class RecordingPlanning final : public pb::PlanningService::Service {
   }
   absl::Mutex mu;
   bool refuse_values = false;
+  grpc::Status failure;  // every answer's (PlanPath answers OK with an empty path otherwise)
   std::vector<pb::SelectExplorationGoalRequest> requests;
 };
 
@@ -119,6 +126,50 @@ TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIs
   EXPECT_EQ(planning_.requests[2].eroi_semantic_values_size(), 0);
   EXPECT_FALSE(planning_.requests[2].source().live_map().has_window_min());
   EXPECT_EQ(client_->SelectGoal({}, "RANDOM", context).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+// Issue "Fleet and faults": planning or mapping gone is UNAVAILABLE naming it, so the task
+// pauses; it used to be an empty path (robot-local planning) and NOT_FOUND (a blind step).
+TEST_F(GatewayPlanningClientTest, PlanningOrMappingGoneIsUnavailableNamingIt) {
+  const PathQuery path{
+      Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.0, 0.0, std::nullopt};
+  const ExplorationQuery explore{RobotPose{}, {}, 1.0};
+  const auto answer = [&](grpc::Status failure) {
+    absl::MutexLock lock(&planning_.mu);
+    planning_.failure = std::move(failure);
+  };
+  answer(grpc::Status(grpc::StatusCode::UNAVAILABLE,
+                      "source.live_map: mapping service GetGridMap failed: failed to connect"));
+  absl::StatusOr<std::vector<Eigen::Vector3d>> planned = client_->Plan(path);
+  EXPECT_TRUE(absl::IsUnavailable(planned.status())) << planned.status();
+  EXPECT_EQ(UnavailableDependency(planned.status()), "mapping");
+  absl::StatusOr<Eigen::Vector3d> goal = client_->ExplorationGoal(explore);
+  EXPECT_TRUE(absl::IsUnavailable(goal.status())) << goal.status();
+  EXPECT_EQ(UnavailableDependency(goal.status()), "mapping");
+
+  for (const grpc::StatusCode code :
+       {grpc::StatusCode::UNAVAILABLE, grpc::StatusCode::DEADLINE_EXCEEDED}) {
+    answer(grpc::Status(code, "overloaded"));
+    planned = client_->Plan(path);
+    EXPECT_TRUE(absl::IsUnavailable(planned.status())) << planned.status();
+    EXPECT_EQ(UnavailableDependency(planned.status()), "planning");
+    goal = client_->ExplorationGoal(explore);
+    EXPECT_TRUE(absl::IsUnavailable(goal.status())) << goal.status();
+  }
+
+  // Planning up but without an answer for this query: the robot still plans locally.
+  answer(grpc::Status(grpc::StatusCode::FAILED_PRECONDITION, "no map yet"));
+  planned = client_->Plan(path);
+  ASSERT_TRUE(planned.ok()) << planned.status();
+  EXPECT_TRUE(planned->empty());
+  EXPECT_TRUE(absl::IsNotFound(client_->ExplorationGoal(explore).status()));
+
+  server_->Shutdown();  // gone: the channel is not READY
+  server_->Wait();
+  planned = client_->Plan(path);
+  EXPECT_TRUE(absl::IsUnavailable(planned.status())) << planned.status();
+  EXPECT_EQ(UnavailableDependency(planned.status()), "planning");
+  EXPECT_TRUE(absl::IsUnavailable(client_->ExplorationGoal(explore).status()));
 }
 
 }  // namespace
