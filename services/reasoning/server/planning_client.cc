@@ -65,7 +65,16 @@ PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningS
 }
 
 absl::Status PlanningClient::Ready(const char* call) {
-  if (channel_->GetState(/*try_to_connect=*/true) == GRPC_CHANNEL_READY) return absl::OkStatus();
+  // A channel still connecting (the gateway has just started, or planning has just come back)
+  // gets a moment before the task pauses; a refused connection ends the wait at once.
+  constexpr auto kConnectWait = std::chrono::milliseconds(500);
+  const auto deadline = std::chrono::system_clock::now() + kConnectWait;
+  grpc_connectivity_state state = channel_->GetState(/*try_to_connect=*/true);
+  while (state == GRPC_CHANNEL_IDLE || state == GRPC_CHANNEL_CONNECTING) {
+    if (!channel_->WaitForStateChange(state, deadline)) break;
+    state = channel_->GetState(/*try_to_connect=*/true);
+  }
+  if (state == GRPC_CHANNEL_READY) return absl::OkStatus();
   LogWarning("planning_not_connected", {{"call", call}, {"fallback", "task pauses"}});
   return DependencyUnavailableError("planning", absl::StrCat(call, ": not connected"));
 }
