@@ -19,7 +19,8 @@ struct RelocalizationParams {
   double reliable_translation_m = 1.0;  // final vs initial pose: max translation change
   double reliable_rotation_deg = 20.0;  // final vs initial pose: max rotation change
   size_t reliable_min_inliers = 12;     // fewer final inliers is never reliable
-  // Additions to the seed (docs/algorithms/relocalization.md, 3.3); 0 turns each one off.
+  // Additions to the seed (docs/algorithms/relocalization.md, sections 4-5); 0 turns each
+  // of the three below off.
   // After each stage-2 solve, pairs whose residual exceeds this are dropped and the pose
   // re-refined: ~3.5 sigma of 5 cm per-axis landmark noise, while a box matched to its
   // shelf neighbour is off by the 0.6 m pitch.
@@ -61,7 +62,9 @@ double SecondPrincipalSpread(const std::vector<Eigen::Vector3d>& positions);
 // stage-2 re-match of all query landmarks under it -> pose (repeated rematch_rounds
 // times, each round under the latest pose; pairs beyond final_residual_gate_m dropped) ->
 // reliability check (against the initial pose, inlier count, residual and spread).
-// If the first m matches are inconsistent, retrieval continues with m more.
+// If the first m matches are inconsistent, retrieval continues with m more; if a
+// hypothesis ends unreliable, with m fresh matches for another one (max_hypotheses): the
+// first reliable answer is returned, else the unreliable one with the most inliers.
 // NOT_FOUND (with the reason) for fewer than 3 landmarks on either side or when no
 // consistent set of matches exists.
 absl::StatusOr<RelocalizationResult> Relocalize(const IndexedLandmarks& query,
