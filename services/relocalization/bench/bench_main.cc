@@ -1,7 +1,9 @@
 // semnav-bench-relocalization: seed 001's evaluation (recall, e_x e_y e_z e_p e_r, time)
 // on seeded scenarios, side by side with the nearest-descriptor + RANSAC baseline, then
 // Google Benchmark timings of the hot steps.
-//   semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S] [--benchmark_*]
+//   semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S] [--seed-method]
+//       [--retrieval-labels K] [--max-hypotheses H] [--benchmark_*]
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -25,23 +27,36 @@ struct Options {
   std::string json_path;
   size_t keyframes = 200;
   uint32_t seed = 1;
+  RelocalizationParams method;  // defaults; --seed-method and the knobs below change it
 };
 
 constexpr char kUsage[] =
     "usage: semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S]"
-    " [--benchmark_* flags]\n"
+    " [--seed-method] [--retrieval-labels K] [--max-hypotheses H] [--benchmark_* flags]\n"
     "Seed 001 relocalization vs the RANSAC + Umeyama baseline on seeded scenarios.\n";
 
 // Our flags and Google Benchmark's.
 Options ParseOptions(int* argc, char** argv) {
   const ParsedFlags flags = ParseBenchmarkFlagsOrExit(
-      argc, argv, {{"json", "FILE", ""}, {"keyframes", "N", ""}, {"seed", "S", ""}},
+      argc, argv, {{"json", "FILE", ""},
+                   {"keyframes", "N", ""},
+                   {"seed", "S", ""},
+                   {"seed-method", "", "the seed's method alone (SeedMethodParams)"},
+                   {"retrieval-labels", "K", "hash buckets per query landmark"},
+                   {"max-hypotheses", "H", "stage-1 hypotheses tried"}},
       "semnav-bench-relocalization", kUsage);
   Options o;
   o.json_path = flags.Get("json").value_or(o.json_path);
   if (auto v = flags.Get("keyframes")) o.keyframes = std::strtoul(v->c_str(), nullptr, 10);
   if (auto v = flags.Get("seed")) {
     o.seed = static_cast<uint32_t>(std::strtoul(v->c_str(), nullptr, 10));
+  }
+  if (flags.Has("seed-method")) o.method = SeedMethodParams();
+  if (auto v = flags.Get("retrieval-labels")) {
+    o.method.match.retrieval_labels = std::strtoul(v->c_str(), nullptr, 10);
+  }
+  if (auto v = flags.Get("max-hypotheses")) {
+    o.method.max_hypotheses = static_cast<int>(std::strtol(v->c_str(), nullptr, 10));
   }
   return o;
 }
@@ -66,9 +81,23 @@ eval::ScenarioParams HeavyLookalikes(const Options& o) {
   return p;
 }
 
+// Keyframes answered as reliable but outside the success bounds, over all keyframes.
+double ReliableWrongRate(const eval::MethodSummary& s) {
+  return std::max(0.0, s.answered_rate - s.recall);
+}
+
+// Smoke: the standard setting with heavy descriptor degradation (top labels often flip).
+eval::ScenarioParams Smoke(const Options& o) {
+  eval::ScenarioParams p = Standard(o);
+  p.seed = o.seed + 2000;
+  p.smoke = 0.6;
+  return p;
+}
+
 nlohmann::json ToJson(const eval::MethodSummary& s) {
   return {{"recall", s.recall},
           {"answered_rate", s.answered_rate},
+          {"reliable_wrong_rate", ReliableWrongRate(s)},
           {"median_ex_m", s.median_ex},
           {"median_ey_m", s.median_ey},
           {"median_ez_m", s.median_ez},
@@ -111,12 +140,18 @@ BENCHMARK(BM_Hungarian8x8);
 
 int Main(int argc, char** argv) {
   const Options options = ParseOptions(&argc, argv);
-  const RelocalizationParams params;
+  const RelocalizationParams params = options.method;
   const eval::BaselineParams baseline;
   const eval::SuccessBounds bounds;
 
   const Comparison standard = RunComparison(eval::GenerateScenario(Standard(options)), params, baseline, bounds);
   const Comparison heavy = RunComparison(eval::GenerateScenario(HeavyLookalikes(options)), params, baseline, bounds);
+  const Comparison smoke =
+      RunComparison(eval::GenerateScenario(Smoke(options)), params, baseline, bounds);
+  // Equal keyframe counts per scenario: the pooled rate is the mean of the three.
+  const double reliable_wrong_rate = (ReliableWrongRate(standard.method) +
+                                      ReliableWrongRate(heavy.method) +
+                                      ReliableWrongRate(smoke.method)) / 3.0;
 
   std::printf("keyframes per scenario: %zu, seed %u; relocalized = reliable answer within %.1f m and %.1f deg\n",
               options.keyframes, options.seed, bounds.max_position_error_m, bounds.max_rotation_error_deg);
@@ -127,6 +162,10 @@ int Main(int argc, char** argv) {
   PrintRow("standard", "nn-desc+ransac", standard.baseline);
   PrintRow("heavy-lookalike", "generalized-objects", heavy.method);
   PrintRow("heavy-lookalike", "nn-desc+ransac", heavy.baseline);
+  PrintRow("smoke", "generalized-objects", smoke.method);
+  PrintRow("smoke", "nn-desc+ransac", smoke.baseline);
+  std::printf("reliable but wrong (generalized objects, all scenarios): %.4f\n",
+              reliable_wrong_rate);
 
   if (!options.json_path.empty()) {
     nlohmann::json j = {
@@ -140,11 +179,20 @@ int Main(int argc, char** argv) {
         {"cpu_ms_p99", standard.method.cpu_ms_p99},
         {"lookalike_recall", heavy.method.recall},
         {"lookalike_baseline_recall", heavy.baseline.recall},
+        {"reliable_wrong_rate", reliable_wrong_rate},
+        {"recall_standard", standard.method.recall},
+        {"recall_lookalike", heavy.method.recall},
+        {"recall_smoke", smoke.method.recall},
+        {"baseline_recall_standard", standard.baseline.recall},
+        {"baseline_recall_lookalike", heavy.baseline.recall},
+        {"baseline_recall_smoke", smoke.baseline.recall},
         {"keyframes", options.keyframes},
         {"seed", options.seed},
         {"tables",
          {{"standard", {{"method", ToJson(standard.method)}, {"baseline", ToJson(standard.baseline)}}},
-          {"heavy_lookalike", {{"method", ToJson(heavy.method)}, {"baseline", ToJson(heavy.baseline)}}}}}};
+          {"heavy_lookalike",
+           {{"method", ToJson(heavy.method)}, {"baseline", ToJson(heavy.baseline)}}},
+          {"smoke", {{"method", ToJson(smoke.method)}, {"baseline", ToJson(smoke.baseline)}}}}}};
     std::ofstream out(options.json_path);
     out << j.dump(2) << "\n";
     if (!out) {

@@ -19,6 +19,20 @@ int DescriptorLabel(const Descriptor& descriptor) {
   return best;
 }
 
+std::vector<int> TopDescriptorLabels(const Descriptor& descriptor, size_t count) {
+  std::vector<int> labels(descriptor.size());
+  for (size_t i = 0; i < labels.size(); ++i) labels[i] = static_cast<int>(i);
+  const size_t keep = std::min(count, labels.size());
+  std::partial_sort(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(keep),
+                    labels.end(), [&](int a, int b) {
+                      const float va = descriptor[static_cast<size_t>(a)];
+                      const float vb = descriptor[static_cast<size_t>(b)];
+                      return va > vb || (va == vb && a < b);
+                    });
+  labels.resize(keep);
+  return labels;
+}
+
 double CosineSimilarity(const Descriptor& a, const Descriptor& b) {
   const size_t n = std::min(a.size(), b.size());
   double dot = 0.0, na = 0.0, nb = 0.0;

@@ -26,6 +26,10 @@ struct Landmark {
 // Index of the largest descriptor entry (the hash key of seed 001, 3.1); -1 if empty.
 int DescriptorLabel(const Descriptor& descriptor);
 
+// Indices of the `count` largest descriptor entries, largest first (ties: lower index
+// first); fewer when the descriptor is shorter. Entry 0 is DescriptorLabel.
+std::vector<int> TopDescriptorLabels(const Descriptor& descriptor, size_t count);
+
 // Cosine similarity in [-1, 1]; 0 when either vector has zero norm.
 double CosineSimilarity(const Descriptor& a, const Descriptor& b);
 

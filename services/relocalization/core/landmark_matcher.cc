@@ -22,8 +22,12 @@ NeighbourhoodMatcher::NeighbourhoodMatcher(const IndexedLandmarks& query,
       map_used_(map.size(), false) {
   std::vector<double> best(query.size(), 0.0);
   for (size_t q = 0; q < query.size(); ++q) {
-    for (size_t m : map.WithLabel(query.label(q))) {
-      candidates_[q].push_back({m, map.DescriptorSimilarity(m, query.unit_descriptor(q))});
+    const size_t labels = std::max<size_t>(1, params.retrieval_labels);
+    // Each map landmark sits in one bucket, so distinct labels never repeat a candidate.
+    for (int label : TopDescriptorLabels(query.at(q).descriptor, labels)) {
+      for (size_t m : map.WithLabel(label)) {
+        candidates_[q].push_back({m, map.DescriptorSimilarity(m, query.unit_descriptor(q))});
+      }
     }
     auto& c = candidates_[q];
     const size_t keep = std::min(c.size(), params.max_candidates);

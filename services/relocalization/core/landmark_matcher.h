@@ -14,6 +14,10 @@ struct MatchParams {
   SimilarityParams similarity;
   size_t neighbourhood_size = 8;      // |N(P)|: nearest landmarks compared around each point
   size_t max_candidates = 16;         // hash candidates tried per query, best descriptor first
+  // Hash buckets looked up per query landmark: its `retrieval_labels` most similar labels.
+  // The seed uses 1 (the arg-max only); smoke often swaps the top two labels, so the
+  // default also looks up the runner-up labels (docs/algorithms/relocalization.md, 3.1).
+  size_t retrieval_labels = 3;
   size_t min_neighbour_matches = 3;   // neighbour pairs the Hungarian step must find
   size_t early_stop_matches = 6;      // m: stop retrieval after this many matches
   double rematch_radius_m = 0.5;      // search radius around each re-projected query landmark
@@ -26,9 +30,10 @@ struct Match {
   double similarity = 0.0;  // s of the pair (stage 1: anchor + neighbourhood score)
 };
 
-// Stage 1: candidates from the label hash, neighbourhood-to-neighbourhood similarity
-// solved with the Hungarian algorithm, best candidate wins. Query landmarks are visited
-// by descending best descriptor similarity; each map landmark is matched at most once.
+// Stage 1: candidates from the label hash (the buckets of the query's retrieval_labels most
+// similar labels), neighbourhood-to-neighbourhood similarity solved with the Hungarian
+// algorithm, best candidate wins. Query landmarks are visited by descending best
+// descriptor similarity; each map landmark is matched at most once.
 class NeighbourhoodMatcher {
  public:
   NeighbourhoodMatcher(const IndexedLandmarks& query, const IndexedLandmarks& map,

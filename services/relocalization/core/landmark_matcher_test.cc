@@ -22,6 +22,14 @@ eval::ScenarioParams CleanScene() {
   return p;
 }
 
+TEST(RelocLandmarkMatcherTest, TopDescriptorLabelsAreLargestEntriesFirst) {
+  const Descriptor d = {0.1f, 0.7f, 0.3f, 0.7f, 0.9f};
+  EXPECT_EQ(TopDescriptorLabels(d, 3), (std::vector<int>{4, 1, 3}));  // tie 1 = 3: lower first
+  EXPECT_EQ(TopDescriptorLabels(d, 1), (std::vector<int>{DescriptorLabel(d)}));
+  EXPECT_EQ(TopDescriptorLabels(d, 9).size(), 5u);
+  EXPECT_TRUE(TopDescriptorLabels({}, 2).empty());
+}
+
 TEST(RelocLandmarkMatcherTest, EarlyStopsAfterMCorrectMatches) {
   const eval::Scenario scene = eval::GenerateScenario(CleanScene());
   const IndexedLandmarks map(scene.map);

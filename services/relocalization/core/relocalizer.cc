@@ -1,6 +1,10 @@
 #include "services/relocalization/core/relocalizer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <Eigen/Eigenvalues>
 
 #include "absl/strings/str_cat.h"
 
@@ -19,6 +23,105 @@ absl::StatusOr<PoseEstimate> SolveFromMatches(const IndexedLandmarks& query,
   return SolvePose(p, q, params);
 }
 
+// Drops inlier pairs whose residual under the solved pose exceeds `gate_m` and refines
+// the pose on the rest (from the solved pose); keeps the estimate when fewer than
+// min_inliers pairs would remain.
+void GateResiduals(const IndexedLandmarks& query, const IndexedLandmarks& map,
+                   const std::vector<Match>& matches, double gate_m, const PoseParams& params,
+                   PoseEstimate& estimate) {
+  if (gate_m <= 0.0) return;
+  std::vector<Eigen::Vector3d> p(matches.size()), q(matches.size());
+  for (size_t i = 0; i < matches.size(); ++i) {
+    p[i] = query.at(matches[i].query).position;
+    q[i] = map.at(matches[i].map).position;
+  }
+  std::vector<size_t> kept;
+  for (size_t i : estimate.inliers) {
+    if ((q[i] - estimate.map_from_query * p[i]).norm() <= gate_m) kept.push_back(i);
+  }
+  if (kept.size() == estimate.inliers.size() ||
+      kept.size() < std::max<size_t>(params.min_inliers, 3)) {
+    return;
+  }
+  int iterations = 0;
+  estimate.map_from_query =
+      RefinePoseLevenbergMarquardt(p, q, kept, estimate.map_from_query, params, &iterations);
+  double squared = 0.0;
+  for (size_t i : kept) squared += (q[i] - estimate.map_from_query * p[i]).squaredNorm();
+  estimate.rms_residual_m = std::sqrt(squared / static_cast<double>(kept.size()));
+  estimate.inliers = std::move(kept);
+}
+
+}  // namespace
+
+RelocalizationParams SeedMethodParams() {
+  RelocalizationParams params;
+  params.match.retrieval_labels = 1;
+  params.final_residual_gate_m = 0.0;
+  params.reliable_max_rms_m = 0.0;
+  params.reliable_min_spread_m = 0.0;
+  params.max_hypotheses = 1;
+  params.reliable_rotation_deg = 10.0;
+  return params;
+}
+
+double SecondPrincipalSpread(const std::vector<Eigen::Vector3d>& positions) {
+  if (positions.size() < 2) return 0.0;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& x : positions) mean += x;
+  mean /= static_cast<double>(positions.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& x : positions) covariance += (x - mean) * (x - mean).transpose();
+  covariance /= static_cast<double>(positions.size());
+  // Eigenvalues ascending: index 1 is the second largest.
+  const Eigen::Vector3d eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance, Eigen::EigenvaluesOnly)
+          .eigenvalues();
+  return std::sqrt(std::max(0.0, eigenvalues(1)));
+}
+
+namespace {
+
+// Stage 2 from one initial pose, then the reliability checks.
+absl::StatusOr<RelocalizationResult> RefineHypothesis(const IndexedLandmarks& query,
+                                                      const IndexedLandmarks& map,
+                                                      const Eigen::Isometry3d& initial,
+                                                      const RelocalizationParams& params) {
+  RelocalizationResult result;
+  result.initial_map_from_query = initial;
+  result.map_from_query = initial;
+  for (int round = 0; round < std::max(1, params.rematch_rounds); ++round) {
+    std::vector<Match> matches = MatchUnderPose(query, map, result.map_from_query, params.match);
+    absl::StatusOr<PoseEstimate> solved = SolveFromMatches(query, map, matches, params.pose);
+    if (solved.ok()) {
+      GateResiduals(query, map, matches, params.final_residual_gate_m, params.pose, *solved);
+    }
+    if (!solved.ok()) {
+      if (round > 0) break;  // keep the previous round's answer
+      return absl::NotFoundError(
+          absl::StrCat("re-match under the initial pose failed: ", solved.status().message()));
+    }
+    result.matches = std::move(matches);
+    result.map_from_query = solved->map_from_query;
+    result.inliers = std::move(solved->inliers);
+    result.rms_residual_m = solved->rms_residual_m;
+  }
+  std::vector<Eigen::Vector3d> inlier_positions;
+  for (size_t i : result.inliers) {
+    inlier_positions.push_back(query.at(result.matches[i].query).position);
+  }
+  result.inlier_spread_m = SecondPrincipalSpread(inlier_positions);
+  result.reliable =
+      result.inliers.size() >= params.reliable_min_inliers &&
+      (params.reliable_max_rms_m <= 0.0 || result.rms_residual_m <= params.reliable_max_rms_m) &&
+      result.inlier_spread_m >= params.reliable_min_spread_m &&
+      TranslationDifferenceM(result.map_from_query, result.initial_map_from_query) <=
+          params.reliable_translation_m &&
+      RotationDifferenceDeg(result.map_from_query, result.initial_map_from_query) <=
+          params.reliable_rotation_deg;
+  return result;
+}
+
 }  // namespace
 
 absl::StatusOr<RelocalizationResult> Relocalize(const IndexedLandmarks& query,
@@ -33,44 +136,41 @@ absl::StatusOr<RelocalizationResult> Relocalize(const IndexedLandmarks& query,
         absl::StrCat("too few landmarks: the map has ", map.size(), ", need at least 3"));
   }
   NeighbourhoodMatcher matcher(query, map, params.match);
-  std::vector<Match> initial_matches;
-  absl::StatusOr<PoseEstimate> initial = absl::NotFoundError("not solved yet");
-  while (!matcher.exhausted()) {
+  size_t total_matches = 0;
+  std::vector<Match> hypothesis_matches;  // stage-1 matches since the last hypothesis
+  absl::Status last_error = absl::NotFoundError("not solved yet");
+  std::optional<RelocalizationResult> best_unreliable;
+  int hypotheses = 0;
+  while (!matcher.exhausted() && hypotheses < std::max(1, params.max_hypotheses)) {
     const std::vector<Match> more = matcher.Next(params.match.early_stop_matches);
-    initial_matches.insert(initial_matches.end(), more.begin(), more.end());
-    if (initial_matches.size() < 3) continue;
-    initial = SolveFromMatches(query, map, initial_matches, params.pose);
-    if (initial.ok()) break;
+    total_matches += more.size();
+    hypothesis_matches.insert(hypothesis_matches.end(), more.begin(), more.end());
+    if (hypothesis_matches.size() < 3) continue;
+    const absl::StatusOr<PoseEstimate> initial =
+        SolveFromMatches(query, map, hypothesis_matches, params.pose);
+    if (!initial.ok()) {
+      last_error = initial.status();
+      continue;  // inconsistent: retrieve m more (seed 3.2)
+    }
+    ++hypotheses;
+    hypothesis_matches.clear();  // the next hypothesis starts from fresh matches
+    absl::StatusOr<RelocalizationResult> result =
+        RefineHypothesis(query, map, initial->map_from_query, params);
+    if (!result.ok()) {
+      last_error = result.status();
+      continue;
+    }
+    if (result->reliable) return result;
+    if (!best_unreliable || result->inliers.size() > best_unreliable->inliers.size()) {
+      best_unreliable = std::move(*result);
+    }
   }
-  if (!initial.ok() && initial_matches.size() < 3) {
-    return absl::NotFoundError(absl::StrCat("no consistent match: only ", initial_matches.size(),
+  if (best_unreliable) return *std::move(best_unreliable);
+  if (total_matches < 3) {
+    return absl::NotFoundError(absl::StrCat("no consistent match: only ", total_matches,
                                             " query landmarks found a match in the map"));
   }
-  if (!initial.ok()) return initial.status();
-
-  RelocalizationResult result;
-  result.initial_map_from_query = initial->map_from_query;
-  result.map_from_query = initial->map_from_query;
-  for (int round = 0; round < std::max(1, params.rematch_rounds); ++round) {
-    std::vector<Match> matches = MatchUnderPose(query, map, result.map_from_query, params.match);
-    absl::StatusOr<PoseEstimate> solved = SolveFromMatches(query, map, matches, params.pose);
-    if (!solved.ok()) {
-      if (round > 0) break;  // keep the previous round's answer
-      return absl::NotFoundError(
-          absl::StrCat("re-match under the initial pose failed: ", solved.status().message()));
-    }
-    result.matches = std::move(matches);
-    result.map_from_query = solved->map_from_query;
-    result.inliers = std::move(solved->inliers);
-    result.rms_residual_m = solved->rms_residual_m;
-  }
-  result.reliable =
-      result.inliers.size() >= params.reliable_min_inliers &&
-      TranslationDifferenceM(result.map_from_query, result.initial_map_from_query) <=
-          params.reliable_translation_m &&
-      RotationDifferenceDeg(result.map_from_query, result.initial_map_from_query) <=
-          params.reliable_rotation_deg;
-  return result;
+  return last_error;
 }
 
 }  // namespace semnav::relocalization

@@ -17,9 +17,29 @@ struct RelocalizationParams {
   PoseParams pose;
   int rematch_rounds = 2;  // stage-2 re-match + solve rounds, each under the latest pose
   double reliable_translation_m = 1.0;  // final vs initial pose: max translation change
-  double reliable_rotation_deg = 10.0;  // final vs initial pose: max rotation change
+  double reliable_rotation_deg = 20.0;  // final vs initial pose: max rotation change
   size_t reliable_min_inliers = 12;     // fewer final inliers is never reliable
+  // Additions to the seed (docs/algorithms/relocalization.md, sections 4-5); 0 turns each
+  // of the three below off.
+  // After each stage-2 solve, pairs whose residual exceeds this are dropped and the pose
+  // re-refined: ~3.5 sigma of 5 cm per-axis landmark noise, while a box matched to its
+  // shelf neighbour is off by the 0.6 m pitch.
+  double final_residual_gate_m = 0.3;
+  // Inlier RMS residual above this is never reliable: correct poses stay near the noise
+  // floor (~0.09 m for 5 cm per axis), a pose bent by a few wrong pairs does not.
+  double reliable_max_rms_m = 0.12;
+  // The inliers' second principal spread (std. dev., query frame) must reach this: a
+  // (near-)collinear set, e.g. one shelf row, leaves the rotation about the row free.
+  double reliable_min_spread_m = 0.3;
+  // Stage-1 hypotheses tried: when a hypothesis ends unreliable, retrieval continues with m
+  // fresh matches for a new initial pose. The seed stops after the first (1).
+  int max_hypotheses = 3;
 };
+
+// The method as it was before the consistency checks (the seed's method with this project's
+// earlier settings): top-label retrieval, one hypothesis, no residual gate, reliability only
+// by initial vs final pose (10 deg) and inlier count.
+RelocalizationParams SeedMethodParams();
 
 struct RelocalizationResult {
   Eigen::Isometry3d map_from_query = Eigen::Isometry3d::Identity();
@@ -27,14 +47,24 @@ struct RelocalizationResult {
   std::vector<Match> matches;   // stage-2 pairs the final pose was solved from
   std::vector<size_t> inliers;  // indices into `matches` kept by outlier rejection
   double rms_residual_m = 0.0;
-  bool reliable = false;  // final pose within the thresholds of the initial one, enough inliers
+  double inlier_spread_m = 0.0;  // second principal std. dev. of the inliers (query frame)
+  // Final pose within the thresholds of the initial one, enough inliers, RMS residual and
+  // spread of the inliers within their bounds.
+  bool reliable = false;
 };
+
+// Square root of the second-largest eigenvalue of the positions' covariance: 0 for
+// collinear points, the smaller in-plane extent for a planar set.
+double SecondPrincipalSpread(const std::vector<Eigen::Vector3d>& positions);
 
 // Finds the pose of the query landmarks (e.g. a keyframe's, or robot B's whole map)
 // in the map: stage-1 retrieval with early stop after m matches -> initial pose ->
 // stage-2 re-match of all query landmarks under it -> pose (repeated rematch_rounds
-// times, each round under the latest pose) -> reliability check against the initial pose.
-// If the first m matches are inconsistent, retrieval continues with m more.
+// times, each round under the latest pose; pairs beyond final_residual_gate_m dropped) ->
+// reliability check (against the initial pose, inlier count, residual and spread).
+// If the first m matches are inconsistent, retrieval continues with m more; if a
+// hypothesis ends unreliable, with m fresh matches for another one (max_hypotheses): the
+// first reliable answer is returned, else the unreliable one with the most inliers.
 // NOT_FOUND (with the reason) for fewer than 3 landmarks on either side or when no
 // consistent set of matches exists.
 absl::StatusOr<RelocalizationResult> Relocalize(const IndexedLandmarks& query,

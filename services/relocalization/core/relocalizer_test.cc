@@ -62,6 +62,92 @@ TEST(RelocRelocalizerTest, AlignsTwoRobotMaps) {
   EXPECT_LT(RotationDifferenceDeg(r->map_from_query, map_from_b), 0.3);
 }
 
+// Map landmark i has label i (entry i = 1.0) and runner-up label 16 + i (0.8); the other
+// 30 entries are 0.1. Two different landmarks have cosine 0.64 / 1.94 = 0.33 < T_desc.
+Descriptor TwoLabelDescriptor(size_t i, float top, float runner_up) {
+  Descriptor d(32, 0.1f);
+  d[i] = top;
+  d[16 + i] = runner_up;
+  return d;
+}
+
+Eigen::Isometry3d YawAndShift(double yaw_rad, const Eigen::Vector3d& shift) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  pose.translation() = shift;
+  return pose;
+}
+
+// The query sees landmarks `positions` of the map exactly, from `map_from_query`; its
+// descriptors have entries top / runner-up as given.
+std::vector<Landmark> SeenFrom(const std::vector<Landmark>& map,
+                               const Eigen::Isometry3d& map_from_query, float top,
+                               float runner_up) {
+  std::vector<Landmark> query;
+  for (size_t i = 0; i < map.size(); ++i) {
+    Landmark l = map[i];
+    l.id = 0;
+    l.position = map_from_query.inverse() * map[i].position;
+    l.descriptor = TwoLabelDescriptor(i, top, runner_up);
+    query.push_back(std::move(l));
+  }
+  return query;
+}
+
+TEST(RelocRelocalizerTest, SmokeFlippedTopLabelStillRetrievesByTheRunnerUp) {
+  // 16 distinct landmarks on a 4 x 4 grid (1.5 m pitch) at three heights.
+  std::vector<Landmark> map;
+  for (size_t i = 0; i < 16; ++i) {
+    Landmark l;
+    l.id = i + 1;
+    l.position = {1.5 * static_cast<double>(i % 4), 1.5 * static_cast<double>(i / 4),
+                  0.7 * static_cast<double>(i % 3)};
+    l.scale = 0.3 + 0.05 * static_cast<double>(i);
+    l.descriptor = TwoLabelDescriptor(i, 1.0f, 0.8f);
+    map.push_back(std::move(l));
+  }
+  const Eigen::Isometry3d truth = YawAndShift(0.5, {3.0, -2.0, 0.2});
+  // Smoke swapped every observed landmark's top two labels: its arg-max 16 + i is a label
+  // no map landmark has, while its cosine to map landmark i is still 1.9 / 1.94 = 0.98.
+  const std::vector<Landmark> query = SeenFrom(map, truth, 0.8f, 1.0f);
+  const auto r = Relocalize(IndexedLandmarks(query), IndexedLandmarks(map), RelocalizationParams{});
+  ASSERT_TRUE(r.ok()) << r.status();  // top-label retrieval alone finds no candidate at all
+  EXPECT_TRUE(r->reliable);
+  ASSERT_EQ(r->matches.size(), 16u);
+  for (const Match& m : r->matches) EXPECT_EQ(m.query, m.map);
+  EXPECT_LT(TranslationDifferenceM(r->map_from_query, truth), 1e-6);
+  EXPECT_LT(RotationDifferenceDeg(r->map_from_query, truth), 1e-6);
+}
+
+TEST(RelocRelocalizerTest, CollinearShelfRowIsNotReliable) {
+  // One shelf row: 14 boxes on a line at 0.6 m pitch, each matched correctly, but any
+  // rotation about the row's axis fits them equally well.
+  std::vector<Landmark> map;
+  for (size_t i = 0; i < 14; ++i) {
+    Landmark l;
+    l.id = i + 1;
+    l.position = {2.0 + 0.6 * static_cast<double>(i), 5.0, 1.2};
+    l.scale = 0.4 + 0.02 * static_cast<double>(i);
+    l.descriptor = TwoLabelDescriptor(i, 1.0f, 0.8f);
+    map.push_back(std::move(l));
+  }
+  const Eigen::Isometry3d truth = YawAndShift(0.3, {-1.0, 2.0, 0.0});
+  const std::vector<Landmark> query = SeenFrom(map, truth, 1.0f, 0.8f);
+  const auto r = Relocalize(IndexedLandmarks(query), IndexedLandmarks(map), RelocalizationParams{});
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_EQ(r->inliers.size(), 14u);  // every pair agrees: count alone cannot tell
+  EXPECT_FALSE(r->reliable);
+}
+
+TEST(RelocRelocalizerTest, SecondPrincipalSpreadOfLineAndRectangle) {
+  // Points at +-1 along x: covariance diag(1, 0, 0) -> second eigenvalue 0.
+  EXPECT_NEAR(SecondPrincipalSpread({{-1, 0, 0}, {1, 0, 0}, {0, 0, 0}}), 0.0, 1e-9);
+  // Square corners (+-1, +-0.5): covariance diag(1, 0.25, 0) -> sqrt(0.25) = 0.5.
+  EXPECT_NEAR(SecondPrincipalSpread({{1, 0.5, 0}, {-1, 0.5, 0}, {1, -0.5, 0}, {-1, -0.5, 0}}),
+              0.5, 1e-9);
+  EXPECT_EQ(SecondPrincipalSpread({{1, 2, 3}}), 0.0);
+}
+
 TEST(RelocRelocalizerTest, TooFewLandmarksIsNotFound) {
   const eval::Scenario scene = eval::GenerateScenario(SmallScene());
   std::vector<Landmark> two(scene.keyframes[0].observed.begin(),

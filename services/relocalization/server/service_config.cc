@@ -42,6 +42,7 @@ void ReadMatching(ConfigReader r, MatchParams& m) {
       .Read("pos_sigma_m", &s.pos_sigma_m);
   r.Read("neighbourhood_size", &m.neighbourhood_size)
       .Read("max_candidates", &m.max_candidates)
+      .Read("retrieval_labels", &m.retrieval_labels)
       .Read("min_neighbour_matches", &m.min_neighbour_matches)
       .Read("early_stop_matches", &m.early_stop_matches)
       .Read("rematch_radius_m", &m.rematch_radius_m);
@@ -49,6 +50,7 @@ void ReadMatching(ConfigReader r, MatchParams& m) {
           "alpha, beta, gamma must be >= 0 and not all 0");
   r.Check(s.pos_sigma_m > 0, "pos_sigma_m", "must be > 0");
   r.Check(m.max_candidates > 0, "max_candidates", "must be > 0");
+  r.Check(m.retrieval_labels > 0, "retrieval_labels", "must be > 0");
   r.Check(m.early_stop_matches >= 3, "early_stop_matches", "must be >= 3");
   r.Check(m.rematch_radius_m > 0, "rematch_radius_m", "must be > 0");
 }
@@ -69,9 +71,13 @@ void ReadPose(ConfigReader r, PoseParams& p) {
 void ReadReliability(ConfigReader r, RelocalizationParams& p) {
   r.Read("translation_m", &p.reliable_translation_m)
       .Read("rotation_deg", &p.reliable_rotation_deg)
-      .Read("min_inliers", &p.reliable_min_inliers);
+      .Read("min_inliers", &p.reliable_min_inliers)
+      .Read("max_rms_m", &p.reliable_max_rms_m)
+      .Read("min_spread_m", &p.reliable_min_spread_m);
   r.Check(p.reliable_translation_m > 0, "translation_m", "must be > 0");
   r.Check(p.reliable_rotation_deg > 0, "rotation_deg", "must be > 0");
+  r.Check(p.reliable_max_rms_m >= 0, "max_rms_m", "must be >= 0 (0 = off)");
+  r.Check(p.reliable_min_spread_m >= 0, "min_spread_m", "must be >= 0 (0 = off)");
 }
 
 }  // namespace
@@ -80,8 +86,13 @@ absl::StatusOr<ServiceConfig> ServiceConfig::FromYaml(ConfigReader& section) {
   ServiceConfig c;
   section.Read("storage_dir", &c.storage_dir)
       .Read("idempotency_cache", &c.idempotency_cache)
-      .Read("rematch_rounds", &c.relocalization.rematch_rounds);
+      .Read("rematch_rounds", &c.relocalization.rematch_rounds)
+      .Read("max_hypotheses", &c.relocalization.max_hypotheses)
+      .Read("final_residual_gate_m", &c.relocalization.final_residual_gate_m);
   section.Check(c.relocalization.rematch_rounds >= 1, "rematch_rounds", "must be >= 1");
+  section.Check(c.relocalization.max_hypotheses >= 1, "max_hypotheses", "must be >= 1");
+  section.Check(c.relocalization.final_residual_gate_m >= 0, "final_residual_gate_m",
+                "must be >= 0 (0 = off)");
   ReadObjectPoints(section.Child("object_points"), c.object_points);
   ReadDetector(section.Child("detector"), c.detector);
   ConfigReader merge = section.Child("merge");

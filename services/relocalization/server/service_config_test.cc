@@ -17,15 +17,20 @@ TEST(RelocServiceConfigTest, EmptySectionKeepsTheSeedDefaults) {
   EXPECT_EQ(c->relocalization.match.early_stop_matches, 6u);
   EXPECT_DOUBLE_EQ(c->relocalization.match.similarity.alpha, 0.4);
   EXPECT_DOUBLE_EQ(c->relocalization.pose.outlier_distance_m, 0.2);
+  EXPECT_EQ(c->relocalization.match.retrieval_labels, 3u);
+  EXPECT_EQ(c->relocalization.max_hypotheses, 3);
+  EXPECT_DOUBLE_EQ(c->relocalization.reliable_min_spread_m, 0.3);
   EXPECT_TRUE(c->detector.model_path.empty());
 }
 
 TEST(RelocServiceConfigTest, ReadsNestedSections) {
   auto r = ConfigReader::FromString(
       "storage_dir: /tmp/maps\n"
-      "matching: {early_stop_matches: 8, alpha: 0.5}\n"
+      "matching: {early_stop_matches: 8, alpha: 0.5, retrieval_labels: 1}\n"
       "detector: {model_path: m.onnx, mean_rgb: [1, 2, 3]}\n"
-      "reliability: {rotation_deg: 4}\n");
+      "reliability: {rotation_deg: 4, max_rms_m: 0.2, min_spread_m: 0}\n"
+      "max_hypotheses: 1\n"
+      "final_residual_gate_m: 0.5\n");
   ASSERT_TRUE(r.ok());
   const auto c = ServiceConfig::FromYaml(*r);
   ASSERT_TRUE(c.ok()) << c.status();
@@ -35,6 +40,11 @@ TEST(RelocServiceConfigTest, ReadsNestedSections) {
   EXPECT_EQ(c->detector.model_path, "m.onnx");
   EXPECT_DOUBLE_EQ(c->detector.mean_b, 3.0);
   EXPECT_DOUBLE_EQ(c->relocalization.reliable_rotation_deg, 4.0);
+  EXPECT_DOUBLE_EQ(c->relocalization.reliable_max_rms_m, 0.2);
+  EXPECT_DOUBLE_EQ(c->relocalization.reliable_min_spread_m, 0.0);
+  EXPECT_EQ(c->relocalization.max_hypotheses, 1);
+  EXPECT_DOUBLE_EQ(c->relocalization.final_residual_gate_m, 0.5);
+  EXPECT_EQ(c->relocalization.match.retrieval_labels, 1u);
 }
 
 TEST(RelocServiceConfigTest, BadValuesAndUnknownKeysNameTheKey) {
