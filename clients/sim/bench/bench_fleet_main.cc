@@ -630,6 +630,9 @@ int main(int argc, char** argv) {
           "real time and prints one line per run; targets: command p99 <= 50 ms, operator "
           "GetTask p99 <= 10 ms, 0 errors, RSS growth <= 5 %.\n"));
   std::vector<int> counts;
+  if (flags.Has("sweep") && flags.Has("robots")) {
+    return Fail(absl::InvalidArgumentError("--robots and --sweep: give one of them"));
+  }
   if (auto sweep = flags.Get("sweep")) {
     for (absl::string_view part : absl::StrSplit(*sweep, ',')) {
       int n = 0;
