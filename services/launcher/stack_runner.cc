@@ -132,6 +132,12 @@ void StackRunner::AddSimRobot() {
   children_.push_back(std::move(child));
 }
 
+std::map<std::string, pid_t> StackRunner::child_pids() const {
+  std::map<std::string, pid_t> pids;
+  for (const Child& child : children_) pids[child.name] = child.pid;
+  return pids;
+}
+
 absl::Status StackRunner::Start() {
   absl::StatusOr<StackLock> lock = StackLock::Acquire(StackLockPath(config_));
   if (!lock.ok()) {

@@ -2,6 +2,7 @@
 
 #include <sys/types.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,8 @@ class StackRunner {
   const std::optional<std::string>& dashboard_url() const { return dashboard_url_; }
   // Why an optional part (the dashboard) did not start, for the user.
   const std::vector<std::string>& notes() const { return notes_; }
+  // Pid of each child by name, -1 once it exited; e.g. to read a service's memory use.
+  std::map<std::string, pid_t> child_pids() const;
 
  private:
   enum class Health { kGrpc, kHttp, kNone };

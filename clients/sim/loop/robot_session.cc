@@ -38,7 +38,7 @@ void RobotSession::ReadLoop() {
   while (stream_->Read(&response)) {
     if (!response.has_command()) continue;
     absl::MutexLock lock(&mu_);
-    commands_.push_back(response.command());
+    commands_.push_back({response.command(), absl::Now()});
   }
   absl::MutexLock lock(&mu_);
   closed_ = true;
@@ -50,12 +50,25 @@ absl::Status RobotSession::Send(const api::ConnectRequest& request) {
 }
 
 std::vector<api::RobotCommand> RobotSession::TakeCommands(absl::Duration wait) {
+  std::vector<api::RobotCommand> out;
+  for (ReceivedCommand& received : TakeReceivedCommands(wait)) {
+    out.push_back(std::move(received.command));
+  }
+  return out;
+}
+
+std::vector<ReceivedCommand> RobotSession::TakeReceivedCommands(absl::Duration wait) {
   absl::MutexLock lock(&mu_);
   auto ready = [this]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return !commands_.empty() || closed_; };
   mu_.AwaitWithTimeout(absl::Condition(&ready), wait);
-  std::vector<api::RobotCommand> out(commands_.begin(), commands_.end());
+  std::vector<ReceivedCommand> out(commands_.begin(), commands_.end());
   commands_.clear();
   return out;
+}
+
+bool RobotSession::closed() {
+  absl::MutexLock lock(&mu_);
+  return closed_;
 }
 
 }  // namespace semnav::sim::loop

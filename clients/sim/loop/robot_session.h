@@ -17,6 +17,12 @@
 
 namespace semnav::sim::loop {
 
+// A command with the wall time the reader thread took it off the stream, for latency figures.
+struct ReceivedCommand {
+  semnav::reasoning::v1::RobotCommand command;
+  absl::Time received_at;
+};
+
 class RobotSession {
  public:
   // Opens the stream and waits for SessionAccepted (or the gateway's refusal).
@@ -27,6 +33,9 @@ class RobotSession {
   absl::Status Send(const semnav::reasoning::v1::ConnectRequest& request);
   // Commands received since the last call, oldest first; waits up to `wait` for the first.
   std::vector<semnav::reasoning::v1::RobotCommand> TakeCommands(absl::Duration wait);
+  std::vector<ReceivedCommand> TakeReceivedCommands(absl::Duration wait);
+  // True once the gateway ended the stream (or it broke).
+  bool closed();
 
  private:
   RobotSession() = default;
@@ -39,7 +48,7 @@ class RobotSession {
       stream_;
   std::thread reader_;
   absl::Mutex mu_;
-  std::deque<semnav::reasoning::v1::RobotCommand> commands_ ABSL_GUARDED_BY(mu_);
+  std::deque<ReceivedCommand> commands_ ABSL_GUARDED_BY(mu_);
   bool closed_ ABSL_GUARDED_BY(mu_) = false;
 };
 

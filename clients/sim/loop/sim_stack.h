@@ -2,6 +2,9 @@
 // launcher's StackRunner from a bin folder, wired to each other through generated configs.
 #pragma once
 
+#include <sys/types.h>
+
+#include <map>
 #include <memory>
 #include <string>
 
@@ -30,6 +33,8 @@ class SimStack {
   const std::string& planning_address() const { return planning_; }
   // Fresh channels to the three services.
   Endpoints endpoints() const;
+  // Pid of each service process by name ("mapping", "planning", "gateway", ...).
+  std::map<std::string, pid_t> service_pids() const { return runner_->child_pids(); }
 
  private:
   SimStack() = default;
