@@ -75,7 +75,7 @@ class GatewayHub {
   void WatchEvents(const api::StreamEventsRequest& request, StreamSink<api::StreamEventsResponse>* sink);
   void UnwatchEvents(StreamSink<api::StreamEventsResponse>* sink);
   // The retained events of a robot or task at once, with the log's newest id to stream on from.
-  api::ListEventsResponse ListEvents(const api::ListEventsRequest& request);
+  absl::StatusOr<api::ListEventsResponse> ListEvents(const api::ListEventsRequest& request);
 
   // Telemetry: fast samples on every robot state (throttled), slow samples every period.
   void WatchFastTelemetry(const api::StreamFastTelemetryRequest& request,

@@ -66,7 +66,8 @@ void GatewayHub::UnwatchEvents(StreamSink<api::StreamEventsResponse>* sink) {
   event_watchers_.erase(sink);
 }
 
-api::ListEventsResponse GatewayHub::ListEvents(const api::ListEventsRequest& request) {
+absl::StatusOr<api::ListEventsResponse> GatewayHub::ListEvents(const api::ListEventsRequest& request) {
+  if (absl::Status s = Validate(request); !s.ok()) return s;
   absl::MutexLock lock(&mu_);
   api::ListEventsResponse response;
   bool truncated = false;

@@ -85,7 +85,7 @@ TEST(GatewayHubTest, TaskThatStartsWhilePlanningIsGoneHoldsAndLogsIt) {
   EXPECT_EQ(response->task().status(), api::TASK_STATUS_PAUSED);
   api::ListEventsRequest request;
   request.set_task_id(response->task_id());
-  const api::ListEventsResponse listed = hub.ListEvents(request);
+  const api::ListEventsResponse listed = *hub.ListEvents(request);
   ASSERT_GE(listed.events_size(), 2) << listed.DebugString();
   EXPECT_EQ(listed.events(listed.events_size() - 1).message(),
             "TASK_STATUS_PAUSED: dependency_unavailable: planning "
@@ -160,7 +160,7 @@ TEST(GatewayHubTest, ListEventsGivesAFinishedTasksEventsAndTheNewestId) {
 
   api::ListEventsRequest request;
   request.set_task_id(first->task_id());
-  const api::ListEventsResponse listed = hub.ListEvents(request);
+  const api::ListEventsResponse listed = *hub.ListEvents(request);
   ASSERT_GE(listed.events_size(), 2) << listed.DebugString();
   EXPECT_FALSE(listed.truncated());
   EXPECT_EQ(listed.events(0).event_id(), 1u);
@@ -171,7 +171,7 @@ TEST(GatewayHubTest, ListEventsGivesAFinishedTasksEventsAndTheNewestId) {
   EXPECT_EQ(last.message(), "TASK_STATUS_CANCELLED: changed my mind");
   for (const api::Event& event : listed.events()) EXPECT_EQ(event.task_id(), first->task_id());
 
-  const api::ListEventsResponse everything = hub.ListEvents(api::ListEventsRequest{});
+  const api::ListEventsResponse everything = *hub.ListEvents(api::ListEventsRequest{});
   ASSERT_GT(everything.events_size(), listed.events_size());
   const api::Event& newest = everything.events(everything.events_size() - 1);
   EXPECT_EQ(newest.task_id(), second->task_id());
@@ -181,12 +181,18 @@ TEST(GatewayHubTest, ListEventsGivesAFinishedTasksEventsAndTheNewestId) {
   request.set_task_id("");
   request.set_robot_id("r2");
   request.set_after_event_id(0);
-  const api::ListEventsResponse of_r2 = hub.ListEvents(request);
+  const api::ListEventsResponse of_r2 = *hub.ListEvents(request);
   ASSERT_GT(of_r2.events_size(), 0);
   for (const api::Event& event : of_r2.events()) EXPECT_EQ(event.task_id(), second->task_id());
   request.set_robot_id("");
   request.set_after_event_id(newest.event_id());
-  EXPECT_EQ(hub.ListEvents(request).events_size(), 0);
+  EXPECT_EQ(hub.ListEvents(request)->events_size(), 0);
+  // Like every operator request, its ids stay within kMaxIdBytes.
+  request.set_task_id(std::string(1 << 20, 't'));
+  const absl::StatusOr<api::ListEventsResponse> refused = hub.ListEvents(request);
+  EXPECT_EQ(refused.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(refused.status()), "task_id");
+  EXPECT_LT(refused.status().message().size(), 200u);
 }
 
 // A task whose creation is still retained lost no events, however much older ones were dropped.
@@ -206,12 +212,12 @@ TEST(GatewayHubTest, ListEventsIsTruncatedOnlyWhenTheTasksOwnEventsWereDropped) 
     cancel.set_task_id(submitted->task_id());
     ASSERT_TRUE(hub.Cancel(cancel).ok());
   }
-  EXPECT_TRUE(hub.ListEvents(api::ListEventsRequest{}).truncated());
+  EXPECT_TRUE(hub.ListEvents(api::ListEventsRequest{})->truncated());
   api::ListEventsRequest request;
   request.set_task_id(task_ids.front());
-  EXPECT_TRUE(hub.ListEvents(request).truncated());
+  EXPECT_TRUE(hub.ListEvents(request)->truncated());
   request.set_task_id(task_ids.back());
-  const api::ListEventsResponse last = hub.ListEvents(request);
+  const api::ListEventsResponse last = *hub.ListEvents(request);
   EXPECT_FALSE(last.truncated()) << last.DebugString();
   ASSERT_GE(last.events_size(), 2);
   EXPECT_EQ(last.events(0).kind(), api::EVENT_KIND_TASK_CREATED);

@@ -147,8 +147,7 @@ grpc::ServerWriteReactor<api::StreamEventsResponse>* OperatorServiceImpl::Stream
 grpc::ServerUnaryReactor* OperatorServiceImpl::ListEvents(grpc::CallbackServerContext* context,
                                                           const api::ListEventsRequest* request,
                                                           api::ListEventsResponse* response) {
-  *response = hub_->ListEvents(*request);
-  return Reply(context, absl::OkStatus());
+  return Reply(context, hub_->ListEvents(*request), [&](api::ListEventsResponse r) { *response = std::move(r); });
 }
 
 grpc::ServerUnaryReactor* OperatorServiceImpl::DecomposeInstruction(grpc::CallbackServerContext* context,

@@ -161,6 +161,10 @@ absl::Status Validate(const api::StreamEventsRequest& request) {
   return CheckIds({{&request.robot_id(), "robot_id"}});
 }
 
+absl::Status Validate(const api::ListEventsRequest& request) {
+  return CheckIds({{&request.robot_id(), "robot_id"}, {&request.task_id(), "task_id"}});
+}
+
 absl::Status Validate(const api::DecomposeInstructionRequest& request) {
   return CheckInstruction(request.instruction(), "instruction");
 }

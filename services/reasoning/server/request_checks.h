@@ -41,6 +41,7 @@ absl::Status Validate(const api::ClearEmergencyStopRequest& request);
 absl::Status Validate(const api::StreamFastTelemetryRequest& request);
 absl::Status Validate(const api::StreamSlowTelemetryRequest& request);
 absl::Status Validate(const api::StreamEventsRequest& request);
+absl::Status Validate(const api::ListEventsRequest& request);
 absl::Status Validate(const api::DecomposeInstructionRequest& request);
 absl::Status Validate(const api::ResolveTargetRequest& request);
 
