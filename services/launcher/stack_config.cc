@@ -95,6 +95,12 @@ std::string StackConfig::AddressOf(const std::string& name) const {
   return "";
 }
 
+std::optional<StackConfig::ClientEndpoints> StackConfig::ClientEndpointsOf() const {
+  ClientEndpoints endpoints{AddressOf("gateway"), AddressOf("mapping"), AddressOf("planning")};
+  if (endpoints.gateway.empty() || endpoints.mapping.empty() || endpoints.planning.empty()) return std::nullopt;
+  return endpoints;
+}
+
 absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path) {
   absl::StatusOr<ConfigReader> root = ConfigReader::FromFile(path);
   if (!root.ok()) return root.status();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,13 @@ struct StackConfig {
 
   // The listen address of the service named `name`, or "" when the stack has none.
   std::string AddressOf(const std::string& name) const;
+  // What the dashboard and the simulated robot talk to; nullopt unless the stack has all three.
+  struct ClientEndpoints {
+    std::string gateway;
+    std::string mapping;
+    std::string planning;
+  };
+  std::optional<ClientEndpoints> ClientEndpointsOf() const;
 };
 
 // The stack from a YAML file (see deploy/local.yaml); relative config paths resolve against

@@ -92,17 +92,16 @@ void StackRunner::AddDashboard() {
                                   " is missing; cmake --build --preset release builds it"));
     return;
   }
-  const std::string gateway = config_.AddressOf("gateway");
-  const std::string mapping = config_.AddressOf("mapping");
-  const std::string planning = config_.AddressOf("planning");
-  if (gateway.empty() || mapping.empty() || planning.empty()) {
+  const std::optional<StackConfig::ClientEndpoints> endpoints = config_.ClientEndpointsOf();
+  if (!endpoints) {
     notes_.push_back("dashboard: not started: the stack needs gateway, mapping and planning services");
     return;
   }
   Child child;
   child.name = "dashboard";
-  child.argv = {node,       bundle,  "--listen",   config_.dashboard.listen, "--gateway",  gateway,
-                "--mapping", mapping, "--planning", planning,                 "--robot-id", config_.dashboard.robot_id};
+  child.argv = {node,       bundle,          "--listen",   config_.dashboard.listen,
+                "--gateway", endpoints->gateway, "--mapping", endpoints->mapping,
+                "--planning", endpoints->planning, "--robot-id", config_.dashboard.robot_id};
   child.health = Health::kHttp;
   child.health_target = DashboardUrl(config_.dashboard.listen);
   // The proxy prints its bound address as JSON on stdout; the URL line below says it for people.
@@ -115,13 +114,14 @@ void StackRunner::AddSimRobot() {
   Child child;
   child.name = "sim-robot";
   const SimRobotConfig& robot = config_.sim_robot;
+  const StackConfig::ClientEndpoints endpoints = *config_.ClientEndpointsOf();  // checked in Start
   child.argv = {absl::StrCat(bin_dir_, "/semnav-dashboard-sim-robot"),
                 "--gateway",
-                config_.AddressOf("gateway"),
+                endpoints.gateway,
                 "--mapping",
-                config_.AddressOf("mapping"),
+                endpoints.mapping,
                 "--planning",
-                config_.AddressOf("planning"),
+                endpoints.planning,
                 "--robot-id",
                 robot.robot_id,
                 "--world-seed",
@@ -161,9 +161,7 @@ absl::Status StackRunner::Start() {
       config_.dashboard.enabled = false;
     }
   }
-  if (options_.sim_robot &&
-      (config_.AddressOf("gateway").empty() || config_.AddressOf("mapping").empty() ||
-       config_.AddressOf("planning").empty())) {
+  if (options_.sim_robot && !config_.ClientEndpointsOf()) {
     return absl::InvalidArgumentError("--sim-robot needs the stack's gateway, mapping and planning services");
   }
   state_path_ = StackStatePath(config_);
