@@ -43,6 +43,13 @@ TEST(ValueChecksTest, NumbersMustBeFiniteAndSane) {
   EXPECT_FALSE(CheckRange(std::nan(""), "score", 0, 1).ok());
 }
 
+TEST(ValueChecksTest, PointsNameTheAxisThatIsWrong) {
+  EXPECT_TRUE(CheckPoint(1, -2, 3, "pose.position", kMaxCoordinateM).ok());
+  EXPECT_EQ(ErrorField(CheckPoint(std::nan(""), 0, 0, "pose.position", kMaxCoordinateM)), "pose.position.x");
+  EXPECT_EQ(ErrorField(CheckPoint(0, 1e300, 0, "near", kMaxCoordinateM)), "near.y");
+  EXPECT_EQ(ErrorField(CheckPoint(0, 0, -2e5, "goal", kMaxCoordinateM)), "goal.z");
+}
+
 TEST(ValueChecksTest, LongStringsAreRefusedWithoutEchoingThem) {
   EXPECT_TRUE(CheckLength(std::string(kMaxIdBytes, 'r'), "robot_id", kMaxIdBytes).ok());
   const absl::Status status = CheckLength(std::string(1 << 20, 'r'), "robot_id", kMaxIdBytes);

@@ -1,6 +1,7 @@
 #include "services/common/status/value_checks.h"
 
 #include <cmath>
+#include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/field_error.h"
@@ -21,6 +22,14 @@ absl::Status CheckMagnitude(double value, absl::string_view field, double max_ab
 absl::Status CheckRange(double value, absl::string_view field, double min, double max) {
   if (!std::isfinite(value)) return InvalidField(field, "must be a finite number");
   if (value < min || value > max) return InvalidField(field, absl::StrCat("must be in [", min, ", ", max, "]"));
+  return absl::OkStatus();
+}
+
+absl::Status CheckPoint(double x, double y, double z, absl::string_view field, double max_abs) {
+  const std::pair<double, const char*> axes[] = {{x, ".x"}, {y, ".y"}, {z, ".z"}};
+  for (const auto& [value, axis] : axes) {
+    if (absl::Status s = CheckMagnitude(value, absl::StrCat(field, axis), max_abs); !s.ok()) return s;
+  }
   return absl::OkStatus();
 }
 

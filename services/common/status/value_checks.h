@@ -23,6 +23,8 @@ absl::Status CheckFinite(double value, absl::string_view field);
 absl::Status CheckMagnitude(double value, absl::string_view field, double max_abs);
 // Finite and within [min, max].
 absl::Status CheckRange(double value, absl::string_view field, double min, double max);
+// A point or vector: each axis finite and |axis| <= max_abs, named "<field>.x", ".y", ".z".
+absl::Status CheckPoint(double x, double y, double z, absl::string_view field, double max_abs);
 absl::Status CheckLength(absl::string_view value, absl::string_view field, size_t max_bytes);
 absl::Status CheckCount(size_t count, absl::string_view field, size_t max_count);
 

@@ -28,14 +28,7 @@ absl::Status Invalid(absl::string_view field, absl::string_view why) {
 }
 
 absl::Status CheckPosition(const Eigen::Vector3d& p, absl::string_view field) {
-  static constexpr const char* kAxes[] = {".x", ".y", ".z"};
-  for (int a = 0; a < 3; ++a) {
-    if (absl::Status s = CheckMagnitude(p[a], absl::StrCat(field, kAxes[a]), kMaxCoordinateM);
-        !s.ok()) {
-      return s;
-    }
-  }
-  return absl::OkStatus();
+  return CheckPoint(p.x(), p.y(), p.z(), field, kMaxCoordinateM);
 }
 
 size_t BytesPerPixel(DepthEncoding encoding) {

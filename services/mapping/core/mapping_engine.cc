@@ -277,12 +277,8 @@ absl::Status ValidateQuery(const ObjectQuery& query) {
   }
   if (absl::Status s = CheckRange(query.min_cosine, "min_cosine", -1.0, 1.0); !s.ok()) return s;
   if (query.near.has_value()) {
-    static constexpr const char* kAxes[] = {"near.x", "near.y", "near.z"};
-    for (int a = 0; a < 3; ++a) {
-      if (absl::Status s = CheckMagnitude((*query.near)[a], kAxes[a], kMaxCoordinateM); !s.ok()) {
-        return s;
-      }
-    }
+    const Eigen::Vector3d& near = *query.near;
+    if (absl::Status s = CheckPoint(near.x(), near.y(), near.z(), "near", kMaxCoordinateM); !s.ok()) return s;
   }
   // A radius beyond the world's diameter finds nothing more.
   return CheckRange(query.near_radius_m, "near_radius", 0.0, 2 * kMaxCoordinateM);

@@ -26,13 +26,7 @@ absl::Status CheckInstruction(absl::string_view text, absl::string_view field) {
 }
 
 absl::Status CheckPosition(const Eigen::Vector3d& position, absl::string_view field) {
-  static constexpr const char* kAxes[] = {".x", ".y", ".z"};
-  for (int axis = 0; axis < 3; ++axis) {
-    absl::Status status =
-        CheckMagnitude(position[axis], absl::StrCat(field, kAxes[axis]), kMaxCoordinateM);
-    if (!status.ok()) return status;
-  }
-  return absl::OkStatus();
+  return CheckPoint(position.x(), position.y(), position.z(), field, kMaxCoordinateM);
 }
 
 absl::Status CheckRobotPose(const RobotPose& pose, absl::string_view field) {

@@ -26,12 +26,7 @@ absl::Status CheckIds(std::initializer_list<IdField> ids) {
 }
 
 absl::Status CheckVector(const common::v1::Vector3& v, absl::string_view field, double max_abs) {
-  const std::pair<double, const char*> axes[] = {{v.x(), ".x"}, {v.y(), ".y"}, {v.z(), ".z"}};
-  for (const auto& [value, axis] : axes) {
-    if (absl::Status s = CheckMagnitude(value, absl::StrCat(field, axis), max_abs); !s.ok())
-      return s;
-  }
-  return absl::OkStatus();
+  return CheckPoint(v.x(), v.y(), v.z(), field, max_abs);
 }
 
 // Finite components, and unit length within 1e-3 (docs/protocol.md); all zero = unset, read as

@@ -47,12 +47,10 @@ double CosineSimilarity(const Descriptor& a, const Descriptor& b) {
 
 absl::Status ValidateLandmark(const Landmark& landmark, size_t descriptor_dim,
                               absl::string_view field) {
-  const char* const axes[] = {"x", "y", "z"};
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::string coordinate = absl::StrCat(field, ".position.", axes[axis]);
-    if (auto s = CheckMagnitude(landmark.position[axis], coordinate, kMaxCoordinateM); !s.ok()) {
-      return s;
-    }
+  const Eigen::Vector3d& p = landmark.position;
+  if (auto s = CheckPoint(p.x(), p.y(), p.z(), absl::StrCat(field, ".position"), kMaxCoordinateM);
+      !s.ok()) {
+    return s;
   }
   const std::string scale_field = absl::StrCat(field, ".scale_m");
   if (auto s = CheckRange(landmark.scale, scale_field, 0.0, kMaxLandmarkScaleM); !s.ok()) return s;
