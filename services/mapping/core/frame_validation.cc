@@ -23,10 +23,6 @@ constexpr size_t kMaxEmbeddingLength = 4096;
 constexpr double kMaxEmbeddingValue = 1e6;
 constexpr size_t kMaxLidarPoints = 1 << 20;
 
-absl::Status Invalid(absl::string_view field, absl::string_view why) {
-  return InvalidField(field, why);
-}
-
 absl::Status CheckPosition(const Eigen::Vector3d& p, absl::string_view field) {
   return CheckPoint(p.x(), p.y(), p.z(), field, kMaxCoordinateM);
 }
@@ -37,8 +33,8 @@ size_t BytesPerPixel(DepthEncoding encoding) {
 
 absl::Status ValidateGeometry(const SensorFrame& frame) {
   const Intrinsics& k = frame.intrinsics;
-  if (k.width <= 0) return Invalid("intrinsics.width", "image size must be positive");
-  if (k.height <= 0) return Invalid("intrinsics.height", "image size must be positive");
+  if (k.width <= 0) return InvalidField("intrinsics.width", "image size must be positive");
+  if (k.height <= 0) return InvalidField("intrinsics.height", "image size must be positive");
   for (const auto& [value, field] :
        {std::pair{k.fx, "intrinsics.fx"}, std::pair{k.fy, "intrinsics.fy"}}) {
     if (absl::Status s = CheckRange(value, field, kMinFocalPx, kMaxPixelCoordinate); !s.ok()) {
@@ -51,21 +47,21 @@ absl::Status ValidateGeometry(const SensorFrame& frame) {
   }
   const DepthImage& d = frame.depth;
   if (d.encoding == DepthEncoding::kUnknown) {
-    return Invalid("depth.encoding", "unknown encoding (expected 16UC1 millimetres or 32FC1 metres)");
+    return InvalidField("depth.encoding", "unknown encoding (expected 16UC1 millimetres or 32FC1 metres)");
   }
   if (d.width != k.width || d.height != k.height) {
-    return Invalid(d.width != k.width ? "depth.width" : "depth.height",
+    return InvalidField(d.width != k.width ? "depth.width" : "depth.height",
                    absl::StrCat("depth is ", d.width, "x", d.height,
                                                " but intrinsics are ", k.width, "x", k.height));
   }
   const size_t expected = static_cast<size_t>(d.width) * d.height * BytesPerPixel(d.encoding);
   if (d.data.size() != expected) {
-    return Invalid("depth.data", absl::StrCat("has ", d.data.size(), " bytes, expected ", expected));
+    return InvalidField("depth.data", absl::StrCat("has ", d.data.size(), " bytes, expected ", expected));
   }
   if (absl::Status s = CheckPosition(frame.pose.position, "pose.position"); !s.ok()) return s;
   const Eigen::Quaterniond& q = frame.pose.orientation;
   if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > kUnitQuaternionTolerance) {
-    return Invalid("pose.orientation", "must be a finite unit quaternion");
+    return InvalidField("pose.orientation", "must be a finite unit quaternion");
   }
   return absl::OkStatus();
 }
@@ -80,20 +76,20 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
   for (size_t i = 0; i < frame.detections.size(); ++i) {
     const Detection& det = frame.detections[i];
     const std::string field = absl::StrCat("detections[", i, "]");
-    if (det.label.empty()) return Invalid(absl::StrCat(field, ".label"), "must not be empty");
+    if (det.label.empty()) return InvalidField(absl::StrCat(field, ".label"), "must not be empty");
     if (absl::Status s = CheckLength(det.label, absl::StrCat(field, ".label"), kMaxIdBytes);
         !s.ok()) {
       return s;
     }
-    if (!(det.score >= 0.0 && det.score <= 1.0)) return Invalid(absl::StrCat(field, ".score"), "must be in [0, 1]");
+    if (!(det.score >= 0.0 && det.score <= 1.0)) return InvalidField(absl::StrCat(field, ".score"), "must be in [0, 1]");
     const PixelBox& b = det.box;
     const bool inside = b.x_min >= 0.0 && b.y_min >= 0.0 && b.x_max <= w && b.y_max <= h &&
                         b.x_min < b.x_max && b.y_min < b.y_max;
     if (!inside) {
-      return Invalid(absl::StrCat(field, ".box"), absl::StrCat("must be a non-empty box inside the ", w, "x", h, " image"));
+      return InvalidField(absl::StrCat(field, ".box"), absl::StrCat("must be a non-empty box inside the ", w, "x", h, " image"));
     }
     if (!det.mask.empty() && det.mask.size() != static_cast<size_t>(w) * h) {
-      return Invalid(absl::StrCat(field, ".mask"), absl::StrCat("must have ", w * h, " pixels"));
+      return InvalidField(absl::StrCat(field, ".mask"), absl::StrCat("must have ", w * h, " pixels"));
     }
     if (det.embedding.empty()) continue;
     const std::string embedding_field = absl::StrCat(field, ".embedding");
@@ -110,7 +106,7 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
       }
     }
     if (dim != 0 && static_cast<int>(det.embedding.size()) != dim) {
-      return Invalid(absl::StrCat(field, ".embedding"),
+      return InvalidField(absl::StrCat(field, ".embedding"),
                      absl::StrCat("length ", det.embedding.size(), " != map embedding length ", dim));
     }
     dim = static_cast<int>(det.embedding.size());
@@ -121,7 +117,7 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
 }  // namespace
 
 absl::Status ValidateFrame(const SensorFrame& frame, const ValidationContext& context) {
-  if (frame.robot_id.empty()) return Invalid("robot_id", "must not be empty");
+  if (frame.robot_id.empty()) return InvalidField("robot_id", "must not be empty");
   if (absl::Status s = CheckLength(frame.robot_id, "robot_id", kMaxIdBytes); !s.ok()) return s;
   if (context.last_stamp_ns.has_value() && frame.stamp_ns < *context.last_stamp_ns) {
     return absl::FailedPreconditionError(absl::StrCat(
