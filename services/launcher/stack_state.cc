@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/storage/durable_file.h"
 
 namespace semnav::launcher {
 namespace {
@@ -41,16 +42,7 @@ absl::Status WriteStackState(const std::string& path, const StackState& state) {
   for (const auto& [name, child] : state.children) {
     json["children"][name] = {{"pid", child.pid}, {"restarts", child.restarts}, {"last_exit", child.last_exit}};
   }
-  const std::string temporary = absl::StrCat(path, ".", ::getpid(), ".tmp");
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << json.dump() << "\n";
-    if (!out) return absl::InternalError(absl::StrCat("cannot write ", temporary));
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) return absl::InternalError(absl::StrCat("cannot replace ", path, ": ", error.message()));
-  return absl::OkStatus();
+  return storage::WriteFileAtomically(path, json.dump() + "\n");
 }
 
 absl::StatusOr<StackState> ReadLiveStackState(const std::string& path) {

@@ -15,10 +15,10 @@ struct StoredMap {
   int64_t saved_ns = 0;
 };
 
-// Named map files in one directory, crash-safe: a save writes <id>.snmap.tmp, fsyncs it, renames
-// it over <id>.snmap and fsyncs the directory, so a crash leaves either the old or the new file.
-// Files are "SNMAP1\n" + payload size (8 bytes LE) + CRC-32 (4 bytes LE) + payload; a file
-// whose header, size or checksum does not match loads as DATA_LOSS.
+// Named map files in one directory, crash-safe (storage::WriteFileAtomically): a crash leaves
+// either the old or the new <id>.snmap. Files are the checksummed frame of
+// storage::FrameWithChecksum with magic "SNMAP1\n"; a file whose header, size or checksum does not
+// match loads as DATA_LOSS.
 class MapStore {
  public:
   // Creates the directory if needed.
@@ -40,8 +40,5 @@ class MapStore {
 
   std::string directory_;
 };
-
-// CRC-32 (IEEE 802.3, reflected, as in zlib/PNG).
-uint32_t Crc32(const std::string& data);
 
 }  // namespace semnav::mapping

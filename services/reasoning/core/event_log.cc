@@ -1,5 +1,8 @@
 #include "services/reasoning/core/event_log.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace semnav::reasoning {
 
 const LoggedEvent& EventLog::Append(int kind, std::string robot_id, std::string task_id, std::string message,
@@ -20,6 +23,12 @@ std::vector<LoggedEvent> EventLog::After(uint64_t last_id, const std::string& ro
     }
   }
   return out;
+}
+
+void EventLog::Restore(std::vector<LoggedEvent> events) {
+  events_.assign(std::make_move_iterator(events.begin()), std::make_move_iterator(events.end()));
+  while (events_.size() > retained_) events_.pop_front();
+  if (!events_.empty()) next_id_ = std::max(next_id_, events_.back().id + 1);
 }
 
 }  // namespace semnav::reasoning

@@ -30,6 +30,8 @@ class EventLog {
   std::vector<LoggedEvent> After(uint64_t last_id, const std::string& robot_id, const std::string& task_id,
                                  bool* truncated) const;
   uint64_t last_id() const { return next_id_ - 1; }
+  // Events kept from before a restart (ids ascending); the next id continues after them.
+  void Restore(std::vector<LoggedEvent> events);
 
  private:
   std::size_t retained_;

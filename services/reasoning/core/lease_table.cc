@@ -13,6 +13,20 @@ std::optional<LeaseInfo> LeaseTable::Current(const std::string& robot_id, absl::
   return it->second;
 }
 
+std::vector<LeaseInfo> LeaseTable::Unexpired(absl::Time now) const {
+  std::vector<LeaseInfo> out;
+  for (const auto& [robot_id, lease] : by_robot_) {
+    if (lease.expires_at > now) out.push_back(lease);
+  }
+  return out;
+}
+
+void LeaseTable::Restore(const std::vector<LeaseInfo>& leases, absl::Time now) {
+  for (const LeaseInfo& lease : leases) {
+    if (lease.expires_at > now && !lease.robot_id.empty()) by_robot_[lease.robot_id] = lease;
+  }
+}
+
 absl::StatusOr<LeaseInfo> LeaseTable::Acquire(const std::string& robot_id, const std::string& holder,
                                               absl::Duration ttl, absl::Time now) {
   std::optional<LeaseInfo> current = Current(robot_id, now);

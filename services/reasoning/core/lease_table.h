@@ -6,6 +6,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
@@ -32,6 +33,9 @@ class LeaseTable {
   // OK when the robot has no unexpired lease or `lease_id` is it; FAILED_PRECONDITION otherwise.
   absl::Status CheckControl(const std::string& robot_id, const std::string& lease_id, absl::Time now) const;
   std::optional<LeaseInfo> Current(const std::string& robot_id, absl::Time now) const;
+  // Unexpired leases, for the gateway journal; Restore puts them back after a restart.
+  std::vector<LeaseInfo> Unexpired(absl::Time now) const;
+  void Restore(const std::vector<LeaseInfo>& leases, absl::Time now);
 
  private:
   std::map<std::string, LeaseInfo> by_robot_;

@@ -1,5 +1,6 @@
 #include "services/reasoning/core/task_executor.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "absl/status/status.h"
@@ -563,6 +564,20 @@ std::vector<RobotCommand> TaskExecutor::Cancel(const std::string& reason) {
   std::vector<RobotCommand> stop = Fail(reason);
   progress_.state = TaskState::kCancelled;
   return stop;
+}
+
+void TaskExecutor::Restore(const TaskProgress& saved, const std::string& reason) {
+  progress_.subgoal_index = std::clamp(saved.subgoal_index, 0, std::max(0, static_cast<int>(subgoals_.size()) - 1));
+  progress_.replans = saved.replans;
+  progress_.explore_goals = saved.explore_goals;
+  progress_.model_requests = saved.model_requests;
+  progress_.phase = saved.phase;
+  progress_.reason = saved.reason;
+  progress_.state = saved.state;
+  if (finished()) return;
+  progress_.state = TaskState::kPaused;
+  progress_.reason = reason;
+  phase_ = Phase::kIdle;
 }
 
 std::vector<RobotCommand> TaskExecutor::Retarget(double now, const TargetSpec& target, bool exclude_current) {

@@ -100,6 +100,10 @@ class TaskExecutor {
   // Also retries the planner at once during a dependency pause.
   std::vector<RobotCommand> Resume(double now);
   std::vector<RobotCommand> Cancel(const std::string& reason);
+  // A task the gateway kept across its own restart (GatewayJournal): its subgoal, counters and
+  // end state. A task that had not ended comes back PAUSED with `reason` and goes on from its
+  // subgoal on Resume; nothing is commanded until then.
+  void Restore(const TaskProgress& saved, const std::string& reason);
   // Replace the target of the remaining subgoals (multi-turn correction).
   std::vector<RobotCommand> Retarget(double now, const TargetSpec& target, bool exclude_current);
 

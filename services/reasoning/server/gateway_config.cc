@@ -131,12 +131,16 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("max_lease_ttl_s", &c.max_lease_ttl_s)
       .Read("retained_events", &c.retained_events)
       .Read("idempotency_entries", &c.idempotency_entries)
+      .Read("state_directory", &c.state_directory)
+      .Read("journal_flush_interval_s", &c.journal_flush_interval_s)
       .Read("memory_label_radius_m", &c.memory_label_radius_m)
       .Read("lexicon_path", &c.lexicon_path)
       .Read("prior_path", &c.prior_path);
   section.Check(c.default_lease_ttl_s >= 1.0 && c.default_lease_ttl_s <= c.max_lease_ttl_s, "default_lease_ttl_s",
                 "must be in [1, max_lease_ttl_s]");
   section.Check(c.retained_events > 0, "retained_events", "must be > 0");
+  section.Check(c.journal_flush_interval_s >= 0.05 && c.journal_flush_interval_s <= 60.0,
+                "journal_flush_interval_s", "must be in [0.05, 60]");
   return c;
 }
 

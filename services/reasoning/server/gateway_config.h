@@ -54,6 +54,10 @@ struct GatewayConfig {
   double max_lease_ttl_s = 600.0;     // longest lease
   int retained_events = 10000;        // event log replay window
   int idempotency_entries = 4096;     // remembered request_ids
+  // Where tasks, leases and events survive a gateway crash (GatewayJournal); "" = kept in memory
+  // only. A running task comes back PAUSED and resumes with its robot's next state.
+  std::string state_directory;
+  double journal_flush_interval_s = 1.0;  // the most a crash can lose
   std::string lexicon_path = Lexicon::DefaultPath();  // bilingual lexicon (TSV); default: the source tree's
   ClientOptions mapping;              // mapping service; empty address = no scene graph
   PlanningSettings planning;

@@ -30,12 +30,18 @@ GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner
   if (segmenter.ok()) {
     decomposer_ = std::make_unique<TaskDecomposer>(InstructionParser(lexicon, *std::move(segmenter)), config.decomposer);
   }
+  journal_enabled_ = !config_.state_directory.empty();
+  if (journal_enabled_) {
+    RestoreFromJournal();
+    journal_flusher_ = std::thread([this] { FlushJournalLoop(); });
+  }
   ticker_ = std::thread([this] { Tick(); });
 }
 
 GatewayHub::~GatewayHub() {
   Shutdown();
   if (ticker_.joinable()) ticker_.join();
+  if (journal_flusher_.joinable()) journal_flusher_.join();
 }
 
 // 10 Hz: timeouts of running tasks even when a robot stops reporting, and slow telemetry.
@@ -87,6 +93,7 @@ absl::Status GatewayHub::CheckControl(const std::string& robot_id, const std::st
 void GatewayHub::Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id,
                      std::string message) {
   const LoggedEvent& event = events_.Append(kind, robot_id, task_id, std::move(message), absl::Now());
+  if (journal_enabled_) unjournaled_events_.push_back(event);
   api::StreamEventsResponse response;
   *response.mutable_event() = ToProto(event);
   for (auto& [sink, filter] : event_watchers_) {
@@ -156,6 +163,7 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   const api::TaskSnapshot before = std::move(task.published);
   task.fingerprint = std::move(fingerprint);
   ++task.revision;
+  journal_dirty_ = true;
   task.updated = absl::Now();
   api::WatchTaskResponse response;
   *response.mutable_task() = Snapshot(task);
@@ -458,6 +466,13 @@ void GatewayHub::Shutdown() {
   {
     absl::MutexLock lock(&mu_);
     if (!shut_down_) {
+      if (journal_enabled_) {
+        // A stopped gateway ends its tasks (the robots get a stop) so a fresh start never drives
+        // an old one; only a crash leaves tasks to resume.
+        for (auto& [id, task] : tasks_) {
+          if (!task.executor->finished()) Apply(task, task.executor->Cancel("gateway stopped"));
+        }
+      }
       shut_down_ = true;
       const grpc::Status status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down");
       for (auto& [id, task] : tasks_) {
@@ -475,6 +490,7 @@ void GatewayHub::Shutdown() {
       }
     }
   }
+  if (journal_enabled_) FlushJournal();
   // Outside the lock: an answer being delivered waits for mu_ (and then finds the hub shut down).
   if (backends_.model != nullptr) backends_.model->Stop();
 }

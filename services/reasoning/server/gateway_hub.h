@@ -16,6 +16,7 @@
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "semnav/reasoning/v1/robot_session.pb.h"
 #include "services/reasoning/core/event_log.h"
+#include "services/reasoning/core/gateway_journal.h"
 #include "services/reasoning/core/lease_table.h"
 #include "services/reasoning/core/request_cache.h"
 #include "services/reasoning/core/task_decomposer.h"
@@ -135,6 +136,7 @@ class GatewayHub {
     bool vision_busy = false;          // a VLM call of the EROI search is running
     bool started = false;
     bool paused_by_session = false;
+    bool resume_on_state = false;  // restored after a gateway crash: resumes on the robot's next state
     uint64_t revision = 0;
     absl::Time created;
     absl::Time updated;
@@ -176,6 +178,13 @@ class GatewayHub {
   // The strategy a task explores with: its own, else the configured default.
   std::string StrategyOf(const Task& task) const;
   void Tick() ABSL_LOCKS_EXCLUDED(mu_);
+  // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
+  // shutdown, outside mu_ for the file writes.
+  void RestoreFromJournal() ABSL_LOCKS_EXCLUDED(mu_);
+  void RestoreTask(const JournaledTask& saved) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  JournaledTask JournalEntry(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void FlushJournalLoop() ABSL_LOCKS_EXCLUDED(mu_);
+  void FlushJournal() ABSL_LOCKS_EXCLUDED(mu_);
   api::StreamSlowTelemetryResponse SlowSample(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id, std::string message)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
@@ -209,6 +218,14 @@ class GatewayHub {
   uint64_t next_task_ ABSL_GUARDED_BY(mu_) = 1;
   bool shut_down_ ABSL_GUARDED_BY(mu_) = false;
   std::thread ticker_;
+  // Null without config.state_directory. journal_mu_ orders the flushes; mu_ is never held while
+  // a file is written.
+  absl::Mutex journal_mu_ ABSL_ACQUIRED_BEFORE(mu_);
+  std::unique_ptr<GatewayJournal> journal_ ABSL_GUARDED_BY(journal_mu_);
+  bool journal_dirty_ ABSL_GUARDED_BY(mu_) = false;
+  std::vector<LoggedEvent> unjournaled_events_ ABSL_GUARDED_BY(mu_);
+  bool journal_enabled_ = false;  // set before the threads start
+  std::thread journal_flusher_;
 };
 
 }  // namespace semnav::reasoning

@@ -29,6 +29,7 @@ absl::StatusOr<api::Lease> GatewayHub::AcquireLease(const api::AcquireLeaseReque
     return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", lease.status().message(), "LEASE_HELD");
   }
   Log(api::EVENT_KIND_LEASE, request.robot_id(), "", absl::StrCat("lease acquired by ", request.holder()));
+  journal_dirty_ = true;
   api::Lease out = ToProto(*lease);
   requests_.Put(key, out.SerializeAsString());
   return out;
@@ -45,6 +46,7 @@ absl::StatusOr<api::Lease> GatewayHub::RenewLease(const api::RenewLeaseRequest& 
   }
   absl::StatusOr<LeaseInfo> lease = leases_.Renew(request.lease_id(), absl::Seconds(ttl), absl::Now());
   if (!lease.ok()) return FieldError(absl::StatusCode::kNotFound, "lease_id", "unknown or expired lease", "NOT_FOUND");
+  journal_dirty_ = true;
   return ToProto(*lease);
 }
 
@@ -53,6 +55,7 @@ absl::Status GatewayHub::ReleaseLease(const api::ReleaseLeaseRequest& request) {
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.lease_id(), "lease_id"); !s.ok()) return s;
   leases_.Release(request.lease_id());
+  journal_dirty_ = true;
   return absl::OkStatus();
 }
 

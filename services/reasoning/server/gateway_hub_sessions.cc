@@ -26,7 +26,9 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   Log(api::EVENT_KIND_SESSION, hello.robot_id(), "", "session opened");
   api::ConnectResponse first;
   auto task = tasks_.find(robot.active_task);
-  if (task != tasks_.end() && task->second.paused_by_session) accepted.set_resumed_task_id(task->first);
+  if (task != tasks_.end() && (task->second.paused_by_session || task->second.resume_on_state)) {
+    accepted.set_resumed_task_id(task->first);
+  }
   *first.mutable_accepted() = accepted;
   sink->Send(first);
   if (task != tasks_.end() && !task->second.executor->finished()) {
@@ -80,7 +82,14 @@ absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink,
     watcher->Send(sample);
   }
   auto task = tasks_.find(robot->active_task);
-  if (task != tasks_.end() && task->second.started) Apply(task->second, task->second.executor->OnPose(Now(), robot->pose));
+  if (task != tasks_.end() && task->second.resume_on_state) {
+    // Restored after a gateway crash: this is the first pose the gateway can trust.
+    task->second.resume_on_state = false;
+    SetMobility(task->second, *robot);
+    Apply(task->second, task->second.executor->Resume(Now()));
+  } else if (task != tasks_.end() && task->second.started) {
+    Apply(task->second, task->second.executor->OnPose(Now(), robot->pose));
+  }
   return absl::OkStatus();
 }
 

@@ -69,9 +69,14 @@ class CommandReader {
 
 class GatewayFaultContractTest : public ::testing::Test {
  protected:
-  // `executor` holds the gateway's dependency_* keys.
-  void StartStack(const std::string& executor) {
+  // `executor` holds the gateway's dependency_* keys; a `journal_flush_s` > 0 gives the gateway a
+  // state directory (its journal) flushed that often.
+  void StartStack(const std::string& executor, double journal_flush_s = 0.0) {
     dir_ = testing::FreshDir("gateway_fault_contract");
+    const std::string gateway_extra =
+        journal_flush_s > 0.0 ? absl::StrCat("  state_directory: ", dir_, "/gateway_state\n  journal_flush_interval_s: ",
+                                             journal_flush_s, "\n")
+                              : "";
     auto mapping = testing::StartMapping(dir_);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
@@ -84,25 +89,14 @@ class GatewayFaultContractTest : public ::testing::Test {
         "semnav-gateway", dir_, "gateway.yaml",
         absl::StrCat("gateway:\n  mapping:\n    address: ", mapping_->address(),
                      "\n  planning:\n    address: ", planning_->address(), "\n  executor: {",
-                     executor, "}\n"));
+                     executor, "}\n", gateway_extra));
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
 
     ASSERT_TRUE(testing::StreamLabelledFrames(mapping_->channel(), 1, 6, "clock", kClock).ok());
     ASSERT_TRUE(testing::WaitUntilFastResolvable(*operator_, "r1", "go to the clock", 5000));
-    session_stub_ = api::RobotSessionService::NewStub(gateway_->channel());
-    session_context_.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(90));
-    session_ = session_stub_->Connect(&session_context_);
-    api::ConnectRequest hello;
-    hello.mutable_hello()->set_robot_id("r1");
-    hello.mutable_hello()->mutable_capabilities()->add_modes(api::LOCOMOTION_MODE_GROUND);
-    hello.mutable_hello()->mutable_capabilities()->set_footprint_radius_m(0.1);
-    ASSERT_TRUE(session_->Write(hello));
-    api::ConnectResponse accepted;
-    ASSERT_TRUE(session_->Read(&accepted));
-    ASSERT_TRUE(accepted.has_accepted());
-    reader_ = std::make_unique<CommandReader>(session_.get());
+    ASSERT_NO_FATAL_FAILURE(OpenSession());
     ASSERT_TRUE(session_->Write(testing::PoseReport(kStart.x(), kStart.y())));
     ASSERT_TRUE(testing::WaitUntilPoseSeen(*operator_, "r1", 5000));
     const absl::StatusOr<std::string> task_id =
@@ -111,13 +105,45 @@ class GatewayFaultContractTest : public ::testing::Test {
     task_id_ = *task_id;
   }
 
-  void TearDown() override {
+  // The robot's session (again after a gateway restart); `accepted_` keeps the gateway's answer.
+  void OpenSession() {
+    CloseSession();
+    session_stub_ = api::RobotSessionService::NewStub(gateway_->channel());
+    session_context_ = std::make_unique<grpc::ClientContext>();
+    session_context_->set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(90));
+    session_ = session_stub_->Connect(session_context_.get());
+    api::ConnectRequest hello;
+    hello.mutable_hello()->set_robot_id("r1");
+    hello.mutable_hello()->mutable_capabilities()->add_modes(api::LOCOMOTION_MODE_GROUND);
+    hello.mutable_hello()->mutable_capabilities()->set_footprint_radius_m(0.1);
+    ASSERT_TRUE(session_->Write(hello));
+    api::ConnectResponse accepted;
+    ASSERT_TRUE(session_->Read(&accepted));
+    ASSERT_TRUE(accepted.has_accepted());
+    accepted_ = accepted.accepted();
+    reader_ = std::make_unique<CommandReader>(session_.get());
+  }
+
+  void CloseSession() {
     if (session_ != nullptr) {
       session_->WritesDone();
-      session_context_.TryCancel();
+      session_context_->TryCancel();
     }
     reader_.reset();
+    session_.reset();
   }
+
+  // The gateway again on its address with its config (and so its state directory).
+  void RestartGateway() {
+    const std::string address = gateway_->address();
+    auto restarted = semnav::testing::ServiceProcess::Start(
+        "semnav-gateway", {"--config", dir_ + "/gateway.yaml", "--listen", address});
+    ASSERT_TRUE(restarted.ok()) << restarted.status();
+    gateway_ = *std::move(restarted);
+    operator_ = api::OperatorService::NewStub(gateway_->channel());
+  }
+
+  void TearDown() override { CloseSession(); }
 
   // The first navigate command with a planned path within `timeout`; every command before it
   // must be a hold (the task waiting for planning), never a goal without a path.
@@ -175,8 +201,9 @@ class GatewayFaultContractTest : public ::testing::Test {
   std::unique_ptr<semnav::testing::ServiceProcess> gateway_;
   std::unique_ptr<api::OperatorService::Stub> operator_;
   std::unique_ptr<api::RobotSessionService::Stub> session_stub_;
-  grpc::ClientContext session_context_;
+  std::unique_ptr<grpc::ClientContext> session_context_;
   std::unique_ptr<Session> session_;
+  api::SessionAccepted accepted_;
   std::unique_ptr<CommandReader> reader_;
 };
 
@@ -262,6 +289,59 @@ TEST_F(GatewayFaultContractTest, MappingKilledPausesTheTaskNamingMapping) {
       << paused->reason();
   EXPECT_TRUE(AnyEventContains("TASK_STATUS_PAUSED: dependency_unavailable: mapping"))
       << absl::StrJoin(EventMessages(), "\n");
+}
+
+// The gateway SIGKILLed mid-task (issue "Fleet and faults"): the restarted gateway knows the task
+// and its events from its journal, holds it PAUSED until the robot reports where it is, then goes
+// on with a planned path. Nothing is commanded before that first state.
+TEST_F(GatewayFaultContractTest, GatewayKilledMidTaskKeepsTheTaskAndResumesOnTheRobotsNextState) {
+  ASSERT_NO_FATAL_FAILURE(StartStack("dependency_retry_s: 0.5, dependency_timeout_s: 60", 0.1));
+  ASSERT_TRUE(NextPlannedNavigate(std::chrono::seconds(15)).has_value());
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // > the flush interval
+  ASSERT_EQ(::kill(gateway_->pid(), SIGKILL), 0);
+  EXPECT_FALSE(gateway_->Terminate(absl::Seconds(5)).ok());
+  CloseSession();
+  ASSERT_NO_FATAL_FAILURE(RestartGateway());
+
+  absl::StatusOr<api::TaskSnapshot> restored = testing::FetchTask(*operator_, task_id_);
+  ASSERT_TRUE(restored.ok()) << restored.status();
+  EXPECT_EQ(restored->status(), api::TASK_STATUS_PAUSED);
+  EXPECT_TRUE(absl::StartsWith(restored->reason(), "gateway_restarted")) << restored->reason();
+  EXPECT_EQ(restored->instruction(), "go to the clock");
+  const std::vector<std::string> events = EventMessages();
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.front(), "go to the clock");  // the creation event, from before the crash
+  EXPECT_TRUE(AnyEventContains("TASK_STATUS_PAUSED: gateway_restarted")) << absl::StrJoin(events, "\n");
+
+  ASSERT_NO_FATAL_FAILURE(OpenSession());
+  EXPECT_EQ(accepted_.resumed_task_id(), task_id_);
+  if (const std::optional<api::RobotCommand> early = reader_->Next(std::chrono::milliseconds(1000))) {
+    ADD_FAILURE() << "command before the robot's first state: " << early->ShortDebugString();
+  }
+  ASSERT_TRUE(session_->Write(testing::PoseReport(kStart.x(), kStart.y())));
+  ASSERT_TRUE(NextPlannedNavigate(std::chrono::seconds(15)).has_value());
+  absl::StatusOr<api::TaskSnapshot> running = testing::FetchTask(*operator_, task_id_);
+  ASSERT_TRUE(running.ok()) << running.status();
+  EXPECT_EQ(running->status(), api::TASK_STATUS_RUNNING);
+}
+
+// A clean stop ends the gateway's tasks, so a fresh start keeps them as history and never drives one.
+TEST_F(GatewayFaultContractTest, GatewayStoppedCleanlyCancelsItsTasksAndKeepsThem) {
+  ASSERT_NO_FATAL_FAILURE(StartStack("dependency_retry_s: 0.5, dependency_timeout_s: 60", 1.0));
+  ASSERT_TRUE(NextPlannedNavigate(std::chrono::seconds(15)).has_value());
+  ASSERT_TRUE(gateway_->Terminate(absl::Seconds(10)).ok());  // SIGTERM, exit 0
+  CloseSession();
+  ASSERT_NO_FATAL_FAILURE(RestartGateway());
+  absl::StatusOr<api::TaskSnapshot> kept = testing::FetchTask(*operator_, task_id_);
+  ASSERT_TRUE(kept.ok()) << kept.status();
+  EXPECT_EQ(kept->status(), api::TASK_STATUS_CANCELLED);
+  EXPECT_EQ(kept->reason(), "gateway stopped");
+  ASSERT_NO_FATAL_FAILURE(OpenSession());
+  EXPECT_EQ(accepted_.resumed_task_id(), "");
+  ASSERT_TRUE(session_->Write(testing::PoseReport(kStart.x(), kStart.y())));
+  if (const std::optional<api::RobotCommand> command = reader_->Next(std::chrono::milliseconds(1500))) {
+    ADD_FAILURE() << "a cancelled task commanded the robot: " << command->ShortDebugString();
+  }
 }
 
 }  // namespace

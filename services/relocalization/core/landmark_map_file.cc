@@ -1,16 +1,10 @@
 #include "services/relocalization/core/landmark_map_file.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/string_view.h"
+#include "services/common/storage/durable_file.h"
 
 namespace semnav::relocalization {
 namespace {
@@ -66,57 +60,17 @@ std::string Encode(const LandmarkMap& map) {
   return out;
 }
 
-absl::Status ErrnoError(absl::string_view what, const std::string& path) {
-  return absl::InternalError(absl::StrCat(what, " ", path, ": ", std::strerror(errno)));
-}
-
-absl::Status SyncPath(const std::string& path, int flags) {
-  const int fd = ::open(path.c_str(), flags);
-  if (fd < 0) return ErrnoError("open", path);
-  const int rc = ::fsync(fd);
-  ::close(fd);
-  return rc == 0 ? absl::OkStatus() : ErrnoError("fsync", path);
-}
-
 }  // namespace
 
 absl::Status WriteLandmarkMapFile(const std::string& path, const LandmarkMap& map) {
-  const std::string bytes = Encode(map);
-  const std::string tmp = path + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) return ErrnoError("open", tmp);
-  size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const absl::Status s = ErrnoError("write", tmp);
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      return s;
-    }
-    written += static_cast<size_t>(n);
-  }
-  if (::fsync(fd) != 0) {
-    const absl::Status s = ErrnoError("fsync", tmp);
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    return s;
-  }
-  ::close(fd);
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const absl::Status s = ErrnoError("rename", tmp);
-    ::unlink(tmp.c_str());
-    return s;
-  }
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  return SyncPath(parent.empty() ? "." : parent.string(), O_RDONLY | O_DIRECTORY);
+  return storage::WriteFileAtomically(path, Encode(map));
 }
 
 absl::StatusOr<LandmarkMap> ReadLandmarkMapFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return absl::NotFoundError(absl::StrCat("no landmark map file ", path));
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  absl::StatusOr<std::string> file = storage::ReadWholeFile(path);
+  if (absl::IsNotFound(file.status())) return absl::NotFoundError(absl::StrCat("no landmark map file ", path));
+  if (!file.ok()) return file.status();
+  const std::string& bytes = *file;
   auto corrupt = [&](absl::string_view why) {
     return absl::DataLossError(absl::StrCat("landmark map file ", path, " is corrupt: ", why));
   };
