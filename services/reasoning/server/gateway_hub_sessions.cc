@@ -86,6 +86,7 @@ absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink,
     // Restored after a gateway crash: this is the first pose the gateway can trust.
     task->second.resume_on_state = false;
     SetMobility(task->second, *robot);
+    Apply(task->second, task->second.executor->OnPose(Now(), robot->pose));  // paused: only takes the pose
     Apply(task->second, task->second.executor->Resume(Now()));
   } else if (task != tasks_.end() && task->second.started) {
     Apply(task->second, task->second.executor->OnPose(Now(), robot->pose));
