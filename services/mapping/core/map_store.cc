@@ -1,6 +1,5 @@
 #include "services/mapping/core/map_store.h"
 
-
 #include <algorithm>
 #include <chrono>
 #include <cstring>

@@ -106,5 +106,22 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   }
 }
 
+TEST(GatewayConfigTest, ReadsTheJournalKeysAndBoundsTheFlushInterval) {
+  absl::StatusOr<ConfigReader> reader =
+      ConfigReader::FromString("state_directory: /var/lib/semnav/gateway\njournal_flush_interval_s: 0.25\n");
+  ASSERT_TRUE(reader.ok());
+  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  EXPECT_EQ(config.state_directory, "/var/lib/semnav/gateway");
+  EXPECT_DOUBLE_EQ(config.journal_flush_interval_s, 0.25);
+  EXPECT_EQ(GatewayConfig{}.state_directory, "");  // memory only unless configured
+  for (const char* yaml : {"journal_flush_interval_s: 0", "journal_flush_interval_s: 61"}) {
+    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
+    ASSERT_TRUE(bad.ok());
+    GatewayConfig::FromYaml(*bad);
+    EXPECT_TRUE(absl::StrContains(bad->Finish().message(), "journal_flush_interval_s")) << yaml;
+  }
+}
+
 }  // namespace
 }  // namespace semnav::reasoning
