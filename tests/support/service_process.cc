@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,6 +19,13 @@
 
 namespace semnav::testing {
 namespace {
+
+// In the child before exec: a test that crashes or is killed by ctest's timeout takes its
+// services with it (no orphans); PR_SET_PDEATHSIG alone misses a parent that died before it.
+void DieWithParent(pid_t parent) {
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() != parent) ::_exit(127);
+}
 
 std::vector<char*> Argv(const std::string& path, const std::vector<std::string>& args) {
   std::vector<char*> argv;
@@ -81,9 +89,11 @@ absl::StatusOr<std::unique_ptr<ServiceProcess>> ServiceProcess::Start(
   if (::access(path.c_str(), X_OK) != 0) return absl::NotFoundError(absl::StrCat(path, " not built"));
   int out[2];
   if (::pipe2(out, O_CLOEXEC) != 0) return absl::InternalError("pipe failed");
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) return absl::InternalError("fork failed");
   if (pid == 0) {
+    DieWithParent(parent);
     ::dup2(out[1], STDOUT_FILENO);
     std::vector<char*> argv = Argv(path, extra_args);
     ::execv(path.c_str(), argv.data());
@@ -149,9 +159,11 @@ absl::StatusOr<ProcessResult> RunToCompletion(const std::string& binary,
   const std::string path = BinaryPath(binary);
   int out[2];
   if (::pipe2(out, O_CLOEXEC) != 0) return absl::InternalError("pipe failed");
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) return absl::InternalError("fork failed");
   if (pid == 0) {
+    DieWithParent(parent);
     ::dup2(out[1], STDOUT_FILENO);
     ::dup2(out[1], STDERR_FILENO);
     std::vector<char*> argv = Argv(path, args);
