@@ -1,6 +1,9 @@
 #include "services/common/server/service_binary.h"
 
+#include <malloc.h>
+
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
 
@@ -39,6 +42,10 @@ int Fail(const ServiceBinarySpec& spec, const absl::Status& status, int code) {
 }  // namespace
 
 int RunServiceBinary(int argc, char** argv, const ServiceBinarySpec& spec) {
+  // glibc gives each of gRPC's threads its own heap arena (up to 8 per core); a long-running
+  // service then keeps freed memory in many half-empty arenas. Two arenas held mapping's RSS
+  // flat in the fleet soak (+12 % in 4 min without). MALLOC_ARENA_MAX in the environment wins.
+  if (std::getenv("MALLOC_ARENA_MAX") == nullptr) ::mallopt(M_ARENA_MAX, 2);
   SetLogComponent(spec.binary);
   const ParsedFlags flags = ParseFlagsOrExit(argc, argv, Flags(), spec.binary, Usage(spec));
 

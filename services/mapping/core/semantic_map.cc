@@ -8,20 +8,34 @@
 
 namespace semnav::mapping {
 
+namespace {
+
+std::array<int, 3> CubeOf(const Eigen::Vector3f& p, float edge) {
+  return {static_cast<int>(std::floor(p.x() / edge)), static_cast<int>(std::floor(p.y() / edge)),
+          static_cast<int>(std::floor(p.z() / edge))};
+}
+
+}  // namespace
+
 void SemanticMap::Add(const std::string& label, const std::vector<Eigen::Vector3f>& points) {
   auto& cubes = occupied_cubes_[label];
+  auto& per_voxel = points_per_voxel_[label];
   auto& kept = points_[label];
   const auto r = static_cast<float>(config_.point_resolution_m);
   for (const Eigen::Vector3f& p : points) {
-    const std::array<int, 3> cube{static_cast<int>(std::floor(p.x() / r)), static_cast<int>(std::floor(p.y() / r)),
-                                  static_cast<int>(std::floor(p.z() / r))};
-    if (cubes.insert(cube).second) kept.push_back(p);
+    int& in_voxel = per_voxel[CubeOf(p, static_cast<float>(config_.cap_voxel_m))];
+    if (in_voxel >= config_.max_points_per_voxel) continue;
+    if (cubes.insert(CubeOf(p, r)).second) {
+      kept.push_back(p);
+      ++in_voxel;
+    }
   }
 }
 
 void SemanticMap::Clear() {
   points_.clear();
   occupied_cubes_.clear();
+  points_per_voxel_.clear();
 }
 
 void SemanticMap::Render(GridLayers& layers) const {

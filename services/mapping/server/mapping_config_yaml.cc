@@ -54,7 +54,9 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
       .Read("point_resolution_m", &c.semantic.point_resolution_m)
       .Read("radius_m", &c.semantic.radius_m)
       .Read("min_neighbours", &c.semantic.min_neighbours)
-      .Read("opening_kernel", &c.semantic.opening_kernel);
+      .Read("opening_kernel", &c.semantic.opening_kernel)
+      .Read("cap_voxel_m", &c.semantic.cap_voxel_m)
+      .Read("max_points_per_voxel", &c.semantic.max_points_per_voxel);
   semantic.Check(c.blur_min_laplacian_variance >= 0.0, "blur_min_laplacian_variance", "must be >= 0");
   semantic.Check(c.lift.erosion_kernel >= 1 && c.lift.erosion_kernel % 2 == 1, "erosion_kernel", "must be odd and >= 1");
   semantic.Check(c.lift.pixel_stride >= 1, "mask_pixel_stride", "must be >= 1");
@@ -63,6 +65,8 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
   semantic.Check(c.semantic.radius_m > 0.0f, "radius_m", "must be > 0");
   semantic.Check(c.semantic.min_neighbours >= 0, "min_neighbours", "must be >= 0");
   semantic.Check(c.semantic.opening_kernel >= 1, "opening_kernel", "must be >= 1");
+  semantic.Check(c.semantic.cap_voxel_m > 0.0, "cap_voxel_m", "must be > 0");
+  semantic.Check(c.semantic.max_points_per_voxel >= 1, "max_points_per_voxel", "must be >= 1");
 
   ConfigReader scene = section.Child("scene_graph");
   SceneGraphConfig& s = c.scene;

@@ -28,7 +28,8 @@ struct MappingServiceConfig {
 //          robot_radius_m [0.25], change_log_size [256]}
 //   semantic: {blur_min_laplacian_variance [100], erosion_kernel [5], erosion_keep_above [23.5],
 //              mask_pixel_stride [2], depth_band_m [0.3], point_resolution_m [0.02],
-//              radius_m [0.1], min_neighbours [5], opening_kernel [3]}
+//              radius_m [0.1], min_neighbours [5], opening_kernel [3], cap_voxel_m [0.05],
+//              max_points_per_voxel [4]}
 //   scene_graph: {ema_new_weight [0.3], embedding_min_cosine [0.8], embedding_max_distance_m [3],
 //                 label_max_distance_m [1], prune_single_after_s [10], near_m [1.5],
 //                 direction_margin_m [0.2], on_tolerance_m [0.15], region_radius_m [3]}
