@@ -128,6 +128,16 @@ TEST_F(SimulatedClockTest, SimulatedTimeMayNotGoBack) {
   EXPECT_NE(status.message().find("state.header.stamp"), std::string::npos) << status;
 }
 
+// The next episode of the same robot id opens a new session whose clock starts at 0 again.
+TEST_F(SimulatedClockTest, ANewSimulatedSessionStartsItsOwnClock) {
+  hub_->CloseSession(&session_);
+  RecordingSink next;
+  ASSERT_TRUE(hub_->OpenSession(SimulatedHello("r1"), &next).ok());
+  EXPECT_TRUE(hub_->OnRobotState(&next, StepState(0, 0, 0.0, 1)).ok());
+  EXPECT_TRUE(next.messages().back().has_step_done());
+  hub_->Shutdown();  // closes `next` while it exists
+}
+
 // Answers the slow path's match_target calls when told, reporting a latency; embeddings fail at
 // once (no backend), with no latency.
 class LatencyModel : public LanguageModel {

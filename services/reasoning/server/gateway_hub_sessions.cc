@@ -59,6 +59,9 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   robot.session = sink;
   robot.capabilities = hello.capabilities();
   robot.simulated_clock = hello.clock() == api::CLOCK_KIND_SIMULATED;
+  // A new simulated session is a new simulation: its clock and frames start over.
+  robot.sim_now_s = 0.0;
+  robot.synced_mapping_revision = 0;
   robot.step_inputs.clear();
   api::SessionAccepted accepted;
   accepted.set_session_id(absl::StrCat(hello.robot_id(), "-", robot.next_command_id));
