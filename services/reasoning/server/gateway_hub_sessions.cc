@@ -98,18 +98,17 @@ absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink,
   // Checked before anything is stored: the last good pose stays and no command is built.
   absl::StatusOr<RobotPose> pose = ValidatedPose(state);
   if (!pose.ok()) return pose.status();
-  absl::MutexLock lock(&mu_);
-  std::string robot_id;
-  Robot* robot = RobotOfSink(sink, &robot_id);
-  if (robot == nullptr) return absl::OkStatus();
-  if (robot->simulated_clock) {
-    mu_.Unlock();
-    absl::Status status = OnSimulatedStep(sink, state, *pose);
-    mu_.Lock();
-    return status;
+  {
+    absl::MutexLock lock(&mu_);
+    std::string robot_id;
+    Robot* robot = RobotOfSink(sink, &robot_id);
+    if (robot == nullptr) return absl::OkStatus();
+    if (!robot->simulated_clock) {
+      HandlePose(robot_id, *robot, state, *pose);
+      return absl::OkStatus();
+    }
   }
-  HandlePose(robot_id, *robot, state, *pose);
-  return absl::OkStatus();
+  return OnSimulatedStep(sink, state, *pose);
 }
 
 absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state,
