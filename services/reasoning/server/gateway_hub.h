@@ -41,8 +41,9 @@ struct GatewayBackends {
 
 class GatewayHub {
  public:
-  // `lexicon` and `planner` must outlive the hub. Starts the 10 Hz ticker that drives executor
-  // timeouts and slow telemetry; Shutdown() stops it (and the model's pending calls).
+  // `lexicon` and `planner` must outlive the hub. Starts the 10 Hz ticker that drives the
+  // executor timeouts of wall-clock robots and slow telemetry; Shutdown() stops it (and the
+  // model's pending calls).
   GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner, GatewayBackends backends = {});
   ~GatewayHub();
 
