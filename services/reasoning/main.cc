@@ -59,6 +59,7 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
     absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.mapping);
     if (!channel.ok()) return channel.status();
     auto watcher = std::make_shared<MappingWatcher>(*channel, [hub](const SceneGraph& graph) { hub->OnSceneGraph(graph); });
+    hub->SetSceneGraphSync([watcher](absl::Duration timeout) { return watcher->CatchUp(timeout); });
     host.OnShutdown([watcher] { watcher->Stop(); });  // runs before the hub's hook
   }
   return absl::OkStatus();

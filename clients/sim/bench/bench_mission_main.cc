@@ -196,7 +196,9 @@ int main(int argc, char** argv) {
       }
       loop::EpisodeSpec spec = plan[jobs[j].episode];
       spec.strategy = jobs[j].strategy;
-      spec.robot_id = absl::StrCat(spec.robot_id, "-", spec.strategy);
+      // One robot id per episode: the gateway keeps a robot's topological memory across
+      // sessions, and which episodes ran before on this stack depends on --jobs.
+      spec.robot_id = absl::StrCat(spec.robot_id, "-", spec.strategy, "-", jobs[j].episode);
       spec.camera_frames = spec.strategy == "EROI_UTILITY";  // the VLM's input (seed 000)
       spec.max_steps = max_steps;
       const auto episode_started = std::chrono::steady_clock::now();

@@ -24,12 +24,10 @@ namespace {
 
 namespace api = semnav::reasoning::v1;
 
-// Wall time the robot gives the gateway to answer each step (it reacts to state, feedback and
-// scene-graph updates asynchronously); simulated time does not depend on it. Most commands are
-// queued before the wait starts; 8 ms (was 15) keeps the 8-episode results and saves ~7 ms a
-// step. Counting the wait from the state message instead made runs diverge
-// (docs/performance/mission.md).
-constexpr absl::Duration kCommandWait = absl::Milliseconds(8);
+// Lock step (docs/simulation.md, "Time"): the robot does not step before the gateway's StepDone
+// for its last state. This bounds a gateway that hangs; reaching it fails the episode (and the
+// bench) rather than letting the simulation run on without its commands.
+constexpr absl::Duration kStepDoneTimeout = absl::Seconds(120);
 
 bool Terminal(api::TaskStatus status) {
   return status == api::TASK_STATUS_SUCCEEDED || status == api::TASK_STATUS_FAILED ||
@@ -131,10 +129,10 @@ std::string Describe(const api::RobotCommand& command) {
   }
 }
 
-// Executes the gateway's pending commands and answers each with its feedback.
+// Executes the gateway's commands and answers each with its feedback.
 absl::Status ExecuteCommands(RobotSession& session, CommandExecutor& executor, const SimRobot& robot,
-                             EpisodeResult& result) {
-  for (const api::RobotCommand& command : session.TakeCommands(kCommandWait)) {
+                             const std::vector<api::RobotCommand>& commands, EpisodeResult& result) {
+  for (const api::RobotCommand& command : commands) {
     const Feedback feedback = executor.Start(command);
     result.timeline.push_back(absl::StrCat(Stamp(robot), "command ", command.command_id(), ": ", Describe(command),
                                            " -> ", api::FeedbackKind_Name(feedback.kind), " ", feedback.detail));
@@ -164,8 +162,9 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   CommandExecutor executor(robot, LiveMapPlanner(endpoints.planning, robot_config.radius));
 
   if (absl::Status s = ResetMap(endpoints.mapping, spec); !s.ok()) return s;
-  absl::StatusOr<std::unique_ptr<RobotSession>> session =
-      RobotSession::Open(endpoints.gateway, Hello(spec.robot_id, start.modality, robot_config));
+  api::SessionHello hello = Hello(spec.robot_id, start.modality, robot_config);
+  hello.set_clock(api::CLOCK_KIND_SIMULATED);
+  absl::StatusOr<std::unique_ptr<RobotSession>> session = RobotSession::Open(endpoints.gateway, hello);
   if (!session.ok()) return session.status();
   FrameStream frames(endpoints.mapping);
   auto op = api::OperatorService::NewStub(endpoints.gateway);
@@ -177,22 +176,35 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.group = ReportGroup(start.modality);
   // One capture per step: depth and detections to mapping (acknowledged), the colour image to
   // the gateway when asked for.
+  uint64_t mapping_revision = 0;  // of the last acknowledged frame
   auto send_frame = [&]() -> absl::Status {
     const SensorFrame captured = robot.Capture();
     for (const Detection& d : captured.detections.detections) {
       if (d.object_index >= 0) result.seen_objects.insert(d.object_index);
     }
-    if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(captured, spec.robot_id));
-        !ack.ok()) {
-      return ack.status();
-    }
+    absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(captured, spec.robot_id));
+    if (!ack.ok()) return ack.status();
+    mapping_revision = ack->revision();
     if (!spec.camera_frames) return absl::OkStatus();
     absl::StatusOr<api::ConnectRequest> camera = EncodeCameraFrame(captured);
     return camera.ok() ? (*session)->Send(*camera) : camera.status();
   };
+  // One lock step: the state (after the step's frame and feedback), the gateway's StepDone, and
+  // the commands it sent before it, executed at once.
+  uint64_t step_number = 0;
+  auto exchange = [&]() -> absl::Status {
+    ++step_number;
+    if (absl::Status s = (*session)->Send(StepStateMessage(robot, spec.robot_id, step_number, mapping_revision));
+        !s.ok()) {
+      return s;
+    }
+    absl::StatusOr<std::vector<api::RobotCommand>> commands = (*session)->TakeStepCommands(step_number, kStepDoneTimeout);
+    if (!commands.ok()) return commands.status();
+    return ExecuteCommands(**session, executor, robot, *commands, result);
+  };
   // The gateway must know where the robot is and what it sees before it plans.
-  if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
   if (absl::Status s = send_frame(); !s.ok()) return s;
+  if (absl::Status s = exchange(); !s.ok()) return s;
   absl::StatusOr<api::TaskSnapshot> task = Submit(*op, spec);
   if (!task.ok() && !Refused(task.status())) {
     return absl::UnavailableError(absl::StrCat("SubmitInstruction: ", task.status().message()));
@@ -206,9 +218,15 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     result.timeline.push_back(Stamp(robot) + result.final_reason);
   }
 
-  for (int step = 0; step < spec.max_steps && !Terminal(result.final_status); ++step) {
-    if (absl::Status s = ExecuteCommands(**session, executor, robot, result); !s.ok()) return s;
-    if (executor.stop_issued()) break;  // the agent's stop action ends the episode
+  // Step `step` starts with the gateway's answer to the state that ended the last one (or, first,
+  // to the submission); after the budget's last step that answer still counts.
+  for (int step = 0; task.ok(); ++step) {
+    if (absl::Status s = exchange(); !s.ok()) return s;
+    task = GetTask(*op, result.task_id);
+    if (!task.ok()) return task.status();
+    RecordTask(*task, robot, result);
+    // The agent's stop action ends the episode; a task that ended without one ends it too.
+    if (executor.stop_issued() || Terminal(result.final_status) || step == spec.max_steps) break;
     const std::optional<Feedback> outcome = executor.Step(spec.step_s);
     result.steps = step + 1;
     result.trajectory.push_back(robot.pose().position.head<2>());
@@ -217,21 +235,8 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
                                              outcome->detail));
       if (absl::Status s = (*session)->Send(FeedbackMessage(*outcome)); !s.ok()) return s;
     }
-    if (absl::Status s = (*session)->Send(StateMessage(robot, spec.robot_id)); !s.ok()) return s;
     if (absl::Status s = send_frame(); !s.ok()) return s;
-    task = GetTask(*op, result.task_id);
-    if (!task.ok()) return task.status();
-    RecordTask(*task, robot, result);
     if (observer) observer(step, result);
-  }
-  // The task's final STOP and its terminal state race each other: execute the commands that
-  // are still on the way, and give a stopped robot's task a moment to publish its end.
-  for (int i = 0; task.ok() && i < 20 && !(executor.stop_issued() && Terminal(result.final_status)); ++i) {
-    if (absl::Status s = ExecuteCommands(**session, executor, robot, result); !s.ok()) return s;
-    if (!executor.stop_issued() && Terminal(result.final_status) && i >= 10) break;  // ended without a stop
-    task = GetTask(*op, result.task_id);
-    if (!task.ok()) return task.status();
-    RecordTask(*task, robot, result);
   }
 
   if (task.ok() && !Terminal(result.final_status)) {

@@ -44,6 +44,14 @@ api::ConnectRequest StateMessage(const SimRobot& robot, const std::string& robot
   return request;
 }
 
+api::ConnectRequest StepStateMessage(const SimRobot& robot, const std::string& robot_id, uint64_t step,
+                                     uint64_t mapping_revision) {
+  api::ConnectRequest request = StateMessage(robot, robot_id);
+  request.mutable_state()->set_step(step);
+  request.mutable_state()->set_mapping_revision(mapping_revision);
+  return request;
+}
+
 api::ConnectRequest FeedbackMessage(const Feedback& feedback) {
   api::ConnectRequest request;
   request.mutable_feedback()->set_command_id(feedback.command_id);

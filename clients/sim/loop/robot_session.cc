@@ -36,9 +36,13 @@ RobotSession::~RobotSession() {
 void RobotSession::ReadLoop() {
   api::ConnectResponse response;
   while (stream_->Read(&response)) {
-    if (!response.has_command()) continue;
     absl::MutexLock lock(&mu_);
-    commands_.push_back({response.command(), absl::Now()});
+    if (response.has_step_done()) {
+      step_done_ = true;
+      last_step_done_ = response.step_done().step();
+      commands_before_done_ = commands_.size();
+    }
+    if (response.has_command()) commands_.push_back({response.command(), absl::Now()});
   }
   absl::MutexLock lock(&mu_);
   closed_ = true;
@@ -63,6 +67,28 @@ std::vector<ReceivedCommand> RobotSession::TakeReceivedCommands(absl::Duration w
   mu_.AwaitWithTimeout(absl::Condition(&ready), wait);
   std::vector<ReceivedCommand> out(commands_.begin(), commands_.end());
   commands_.clear();
+  commands_before_done_ = 0;
+  return out;
+}
+
+absl::StatusOr<std::vector<api::RobotCommand>> RobotSession::TakeStepCommands(uint64_t step, absl::Duration timeout) {
+  absl::MutexLock lock(&mu_);
+  auto done = [this, step]() ABSL_SHARED_LOCKS_REQUIRED(mu_) {
+    return (step_done_ && last_step_done_ >= step) || closed_;
+  };
+  if (!mu_.AwaitWithTimeout(absl::Condition(&done), timeout)) {
+    return absl::DeadlineExceededError(absl::StrCat("the gateway did not finish step ", step, " within ",
+                                                    absl::FormatDuration(timeout), " of wall time"));
+  }
+  if (!(step_done_ && last_step_done_ >= step)) {
+    return absl::UnavailableError(absl::StrCat("the gateway ended the robot session before step ", step));
+  }
+  std::vector<api::RobotCommand> out;
+  for (std::size_t i = 0; i < commands_before_done_; ++i) {
+    out.push_back(std::move(commands_.front().command));
+    commands_.pop_front();
+  }
+  commands_before_done_ = 0;
   return out;
 }
 

@@ -34,6 +34,11 @@ class RobotSession {
   // Commands received since the last call, oldest first; waits up to `wait` for the first.
   std::vector<semnav::reasoning::v1::RobotCommand> TakeCommands(absl::Duration wait);
   std::vector<ReceivedCommand> TakeReceivedCommands(absl::Duration wait);
+  // Simulated clock (lock step): waits until the gateway's StepDone for `step` and returns the
+  // commands that came before it, oldest first. DEADLINE_EXCEEDED after `timeout` of wall time,
+  // UNAVAILABLE when the stream ended first.
+  absl::StatusOr<std::vector<semnav::reasoning::v1::RobotCommand>> TakeStepCommands(uint64_t step,
+                                                                                    absl::Duration timeout);
   // True once the gateway ended the stream (or it broke).
   bool closed();
 
@@ -49,6 +54,9 @@ class RobotSession {
   std::thread reader_;
   absl::Mutex mu_;
   std::deque<ReceivedCommand> commands_ ABSL_GUARDED_BY(mu_);
+  bool step_done_ ABSL_GUARDED_BY(mu_) = false;   // a StepDone came
+  uint64_t last_step_done_ ABSL_GUARDED_BY(mu_) = 0;
+  std::size_t commands_before_done_ ABSL_GUARDED_BY(mu_) = 0;  // leading commands_ sent before it
   bool closed_ ABSL_GUARDED_BY(mu_) = false;
 };
 

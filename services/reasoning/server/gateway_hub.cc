@@ -51,6 +51,7 @@ void GatewayHub::Tick() {
     mu_.AwaitWithTimeout(absl::Condition(&shut_down_), absl::Milliseconds(100));
     if (shut_down_) break;
     for (auto& [robot_id, robot] : robots_) {
+      if (robot.simulated_clock) continue;  // its states are its clock
       auto task = tasks_.find(robot.active_task);
       if (task != tasks_.end() && task->second.started) Apply(task->second, task->second.executor->OnPose(Now(), robot.pose));
     }
@@ -201,7 +202,7 @@ void GatewayHub::StartIfPossible(Task& task) {
   }
   task.started = true;
   SetMobility(task, robot);
-  Apply(task, task.executor->Start(Now(), robot.pose));
+  Apply(task, task.executor->Start(NowFor(task.robot_id), robot.pose));
 }
 
 void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
@@ -210,7 +211,7 @@ void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
   ++task.executor_generation;
   task.executor = std::make_unique<TaskExecutor>(task.instruction, std::move(subgoals), &resolver_,
                                                  task.planner.get(), RobotRecord(task.robot_id).memory.get(), executor);
-  task.executor->OnSceneGraph(Now(), scene_graph_);
+  GiveSceneGraph(task, NowFor(task.robot_id));
   const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
   task.eroi.reset();
   // The operator's search area is the EROI volume when it is given (the configured one's edge,
@@ -227,6 +228,11 @@ void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
     if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
   }
   RequestTextEmbedding(task);
+}
+
+std::vector<RobotCommand> GatewayHub::GiveSceneGraph(Task& task, double now) {
+  task.graph_revision = scene_graph_.revision;
+  return task.executor->OnSceneGraph(now, scene_graph_);
 }
 
 void GatewayHub::SetMobility(Task& task, const Robot& robot) {
@@ -270,7 +276,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
         target != nullptr ? ReadCorrection(decomposer_->parser().Parse(request.instruction()), *target) : std::nullopt;
     if (correction.has_value()) {
       Log(api::EVENT_KIND_CORRECTION, task.robot_id, task.task_id, request.instruction());
-      Apply(task, task.executor->Retarget(Now(), correction->target, correction->exclude_current));
+      Apply(task, task.executor->Retarget(NowFor(task.robot_id), correction->target, correction->exclude_current));
       response.set_task_id(task.task_id);
       response.set_correction_applied(true);
       *response.mutable_task() = Snapshot(task);
@@ -383,7 +389,7 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::Resume(const api::ResumeTaskReques
     if (RobotRecord(task.robot_id).session == nullptr) {
       task.paused_by_session = true;  // resumes when the robot reconnects
     } else {
-      Apply(task, task.executor->Resume(Now()));
+      Apply(task, task.executor->Resume(NowFor(task.robot_id)));
     }
   });
 }
@@ -406,10 +412,11 @@ void GatewayHub::OnSceneGraph(const SceneGraph& graph) {
   absl::MutexLock lock(&mu_);
   scene_graph_ = graph;
   for (auto& [robot_id, robot] : robots_) {
+    if (robot.simulated_clock) continue;  // its task gets the graph with its next state
     auto task = tasks_.find(robot.active_task);
     if (task == tasks_.end()) continue;
     // Not-yet-started tasks keep the graph too, so they start with it.
-    std::vector<RobotCommand> commands = task->second.executor->OnSceneGraph(Now(), scene_graph_);
+    std::vector<RobotCommand> commands = GiveSceneGraph(task->second, Now());
     if (task->second.started) Apply(task->second, commands);
   }
 }

@@ -3,6 +3,7 @@
 // are called under it and only queue.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -41,8 +42,9 @@ struct GatewayBackends {
 
 class GatewayHub {
  public:
-  // `lexicon` and `planner` must outlive the hub. Starts the 10 Hz ticker that drives executor
-  // timeouts and slow telemetry; Shutdown() stops it (and the model's pending calls).
+  // `lexicon` and `planner` must outlive the hub. Starts the 10 Hz ticker that drives the
+  // executor timeouts of wall-clock robots and slow telemetry; Shutdown() stops it (and the
+  // model's pending calls).
   GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner, GatewayBackends backends = {});
   ~GatewayHub();
 
@@ -66,8 +68,13 @@ class GatewayHub {
   // called later (on the model's thread) with `fast` completed by the model's decision.
   void ResolveSlow(const api::ResolveTargetRequest& request, api::ResolveTargetResponse fast,
                    std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done) ABSL_LOCKS_EXCLUDED(mu_);
-  // A new revision of mapping's scene graph (shared by all robots of this gateway).
+  // A new revision of mapping's scene graph (shared by all robots of this gateway). Tasks of
+  // simulated-clock robots see it at their robot's next state, not at once.
   void OnSceneGraph(const SceneGraph& graph);
+  // How a simulated-clock state brings the scene graph up to the robot's last frame: fetches
+  // mapping's current graph and hands it to OnSceneGraph, within `timeout`. Unset = the graph
+  // arrives only by the watch (tests without mapping).
+  void SetSceneGraphSync(std::function<absl::Status(absl::Duration timeout)> sync) ABSL_LOCKS_EXCLUDED(mu_);
 
   // Streams. Watchers get the current snapshot / replayed events at once, then live ones; request
   // errors close the sink with the error.
@@ -90,7 +97,11 @@ class GatewayHub {
   absl::StatusOr<api::SessionAccepted> OpenSession(const api::SessionHello& hello,
                                                    StreamSink<api::ConnectResponse>* sink);
   // INVALID_ARGUMENT naming the field for a bad state (non-finite or absurd pose, velocity,
-  // battery): the robot keeps its last good pose and nothing moves on it.
+  // battery): the robot keeps its last good pose and nothing moves on it. For a simulated-clock
+  // robot (docs/simulation.md, "Time") the state is one lock step: the scene graph is brought up
+  // to state.mapping_revision, model answers due by the state's stamp are applied, then the
+  // feedback and camera frames sent since the last state, then the pose, all at the stamp's
+  // time; StepDone{state.step} follows the commands they caused.
   absl::Status OnRobotState(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state);
   absl::Status OnFeedback(StreamSink<api::ConnectResponse>* sink,
                           const api::CommandFeedback& feedback);
@@ -103,8 +114,21 @@ class GatewayHub {
   void Shutdown();
 
  private:
+  // A model answer for a simulated-clock robot, held until the robot's simulated time reaches
+  // the call's issue time plus the latency the model reported.
+  struct HeldAnswer {
+    double due_s = 0.0;
+    uint64_t order = 0;           // issue order: ties apply in the order the calls were made
+    std::function<void()> apply;  // runs the answer's handler; takes mu_ itself
+  };
   struct Robot {
     StreamSink<api::ConnectResponse>* session = nullptr;
+    bool simulated_clock = false;   // the session's hello declared CLOCK_KIND_SIMULATED
+    double sim_now_s = 0.0;         // stamp of the last state (simulated clock)
+    uint64_t synced_mapping_revision = 0;  // frames the scene graph was brought up to
+    std::vector<api::ConnectRequest> step_inputs;  // feedback / camera frames since the last state
+    int model_calls_in_flight = 0;  // simulated clock: calls whose answer has not come back
+    std::vector<HeldAnswer> held_answers;
     api::Capabilities capabilities;
     RobotPose pose;
     bool emergency_stop = false;
@@ -130,6 +154,7 @@ class GatewayHub {
     std::unique_ptr<TaskPlanner> planner;  // before the executor, which refers to it
     std::unique_ptr<TaskExecutor> executor;
     uint64_t executor_generation = 0;  // bumped when the model's plan replaces the executor
+    std::optional<uint64_t> graph_revision;  // scene graph revision the executor was last given
     int model_calls = 0;
     std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
     std::optional<SearchArea> search_area;  // the operator's; unset = the whole map
@@ -148,6 +173,28 @@ class GatewayHub {
   template <typename Request, typename Action>
   absl::StatusOr<api::TaskSnapshot> ControlTask(const char* method, const Request& request, Action action);
   double Now() const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The clock of `robot_id`'s tasks: its last state stamp for a simulated-clock robot, else Now().
+  double NowFor(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Wraps a model call's handler for `caller`'s robot: unchanged for a wall-clock robot; for a
+  // simulated-clock robot the answer is held (HeldAnswer) and applied by the state whose stamp
+  // first reaches issue time + reported latency. Sets caller.reported_latency.
+  template <typename Answer>
+  std::function<void(Answer)> AtSimulatedArrival(ModelCaller& caller, std::function<void(Answer)> handler)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Simulated clock: waits (bounded) for the robot's model calls to come back and applies the
+  // answers due by its current time, in (due, issue) order; mu_ is released while handlers run.
+  void ApplyDueAnswers(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Gives the executor the hub's scene graph at `now` (and notes its revision).
+  std::vector<RobotCommand> GiveSceneGraph(Task& task, double now) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // One simulated-clock state: see OnRobotState.
+  absl::Status OnSimulatedStep(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state,
+                               const RobotPose& pose) ABSL_LOCKS_EXCLUDED(mu_);
+  // The pose part of a state: memory, fast telemetry and the executor.
+  void HandlePose(const std::string& robot_id, Robot& robot, const api::RobotState& state, const RobotPose& pose)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void HandleFeedback(Robot& robot, const api::CommandFeedback& feedback) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  absl::Status HandleCameraFrame(const std::string& robot_id, Robot& robot, const api::CameraFrame& frame)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   Robot& RobotRecord(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   absl::StatusOr<Task*> FindTask(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   api::TaskSnapshot Snapshot(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
@@ -216,6 +263,8 @@ class GatewayHub {
   uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t model_calls_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t next_task_ ABSL_GUARDED_BY(mu_) = 1;
+  uint64_t next_model_call_ ABSL_GUARDED_BY(mu_) = 0;  // issue order of held answers
+  std::function<absl::Status(absl::Duration)> scene_sync_ ABSL_GUARDED_BY(mu_);
   bool shut_down_ ABSL_GUARDED_BY(mu_) = false;
   std::thread ticker_;
   // Null without config.state_directory. journal_mu_ orders the flushes; mu_ is never held while
@@ -227,5 +276,21 @@ class GatewayHub {
   bool journal_enabled_ = false;  // set before the threads start
   std::thread journal_flusher_;
 };
+
+template <typename Answer>
+std::function<void(Answer)> GatewayHub::AtSimulatedArrival(ModelCaller& caller, std::function<void(Answer)> handler) {
+  Robot& robot = RobotRecord(caller.robot_id);
+  if (!robot.simulated_clock) return handler;
+  ++robot.model_calls_in_flight;
+  caller.reported_latency = std::make_shared<absl::Duration>(absl::ZeroDuration());
+  return [this, robot_id = caller.robot_id, issued_s = robot.sim_now_s, order = next_model_call_++,
+          latency = caller.reported_latency, handler = std::move(handler)](Answer answer) {
+    absl::MutexLock lock(&mu_);
+    Robot& arrived = RobotRecord(robot_id);
+    --arrived.model_calls_in_flight;
+    arrived.held_answers.push_back({issued_s + absl::ToDoubleSeconds(*latency), order,
+                                    [handler, answer = std::move(answer)]() mutable { handler(std::move(answer)); }});
+  };
+}
 
 }  // namespace semnav::reasoning

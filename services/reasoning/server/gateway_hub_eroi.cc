@@ -21,7 +21,18 @@ absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, c
   std::string robot_id;
   Robot* robot = RobotOfSink(sink, &robot_id);
   if (robot == nullptr || backends_.model == nullptr || shut_down_) return absl::OkStatus();
-  auto task = tasks_.find(robot->active_task);
+  if (robot->simulated_clock) {  // handled with the step's state, at its time
+    api::ConnectRequest input;
+    *input.mutable_camera() = frame;
+    robot->step_inputs.push_back(std::move(input));
+    return absl::OkStatus();
+  }
+  return HandleCameraFrame(robot_id, *robot, frame);
+}
+
+absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& robot, const api::CameraFrame& frame) {
+  if (backends_.model == nullptr || shut_down_) return absl::OkStatus();
+  auto task = tasks_.find(robot.active_task);
   if (task == tasks_.end() || task->second.eroi == nullptr || task->second.vision_busy ||
       task->second.executor->progress().state != TaskState::kRunning) {
     return absl::OkStatus();
@@ -34,8 +45,10 @@ absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, c
   ++task->second.model_calls;
   ++model_calls_;
   const std::string task_id = task->first;
-  backends_.model->Ask({robot_id, task_id}, {observation.prompt, EncodePng(decoded->image)},
-                       [this, task_id](absl::StatusOr<std::string> answer) { OnVisionAnswer(task_id, std::move(answer)); });
+  ModelCaller caller{robot_id, task_id};
+  LanguageModel::AnswerDone done = AtSimulatedArrival<absl::StatusOr<std::string>>(
+      caller, [this, task_id](absl::StatusOr<std::string> answer) { OnVisionAnswer(task_id, std::move(answer)); });
+  backends_.model->Ask(caller, {observation.prompt, EncodePng(decoded->image)}, std::move(done));
   return absl::OkStatus();
 }
 
@@ -54,10 +67,12 @@ void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::
   for (const RegionDue& region : evidence.due) {
     ++t.model_calls;
     ++model_calls_;
-    backends_.model->Ask({t.robot_id, task_id}, {t.eroi->RegionPrompt(region), ""},
-                         [this, task_id, region](absl::StatusOr<std::string> score) {
-                           OnRegionScore(task_id, region, std::move(score));
-                         });
+    ModelCaller caller{t.robot_id, task_id};
+    LanguageModel::AnswerDone done = AtSimulatedArrival<absl::StatusOr<std::string>>(
+        caller, [this, task_id, region](absl::StatusOr<std::string> score) {
+          OnRegionScore(task_id, region, std::move(score));
+        });
+    backends_.model->Ask(caller, {t.eroi->RegionPrompt(region), ""}, std::move(done));
   }
 }
 

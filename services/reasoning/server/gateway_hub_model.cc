@@ -21,10 +21,12 @@ void GatewayHub::DispatchModelRequest(Task& task) {
   const std::string task_id = task.task_id;
   const uint64_t generation = task.executor_generation;
   auto shared = std::make_shared<const ModelRequest>(*std::move(request));
-  backends_.model->MatchTarget({task.robot_id, task_id}, shared->request,
-                               [this, task_id, generation, shared](absl::StatusOr<std::string> answer) {
-                                 OnModelAnswer(task_id, generation, *shared, std::move(answer));
-                               });
+  ModelCaller caller{task.robot_id, task_id};
+  LanguageModel::AnswerDone done = AtSimulatedArrival<absl::StatusOr<std::string>>(
+      caller, [this, task_id, generation, shared](absl::StatusOr<std::string> answer) {
+        OnModelAnswer(task_id, generation, *shared, std::move(answer));
+      });
+  backends_.model->MatchTarget(caller, shared->request, std::move(done));
 }
 
 void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, const ModelRequest& request,
@@ -49,7 +51,8 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, 
                                 {"object", decision.object_id},
                                 {"confidence", decision.confidence},
                                 {"explanation", decision.explanation}});
-  Apply(task->second, task->second.executor->OnSlowDecision(Now(), request.graph_revision, decision));
+  Apply(task->second, task->second.executor->OnSlowDecision(NowFor(task->second.robot_id), request.graph_revision,
+                                                            decision));
 }
 
 // Seed 000 3.5 / the issue: the model never blocks motion. The task starts on the rule subgoals
@@ -61,10 +64,12 @@ void GatewayHub::RequestDecomposition(Task& task, Decomposition rules) {
   ++model_calls_;
   const std::string task_id = task.task_id;
   auto shared = std::make_shared<const Decomposition>(std::move(rules));
-  backends_.model->Decompose({task.robot_id, task_id}, BuildDecomposeRequest(task.instruction),
-                             [this, task_id, shared](absl::StatusOr<std::string> answer) {
-                               OnDecomposition(task_id, *shared, std::move(answer));
-                             });
+  ModelCaller caller{task.robot_id, task_id};
+  LanguageModel::AnswerDone done = AtSimulatedArrival<absl::StatusOr<std::string>>(
+      caller, [this, task_id, shared](absl::StatusOr<std::string> answer) {
+        OnDecomposition(task_id, *shared, std::move(answer));
+      });
+  backends_.model->Decompose(caller, BuildDecomposeRequest(task.instruction), std::move(done));
 }
 
 void GatewayHub::OnDecomposition(const std::string& task_id, const Decomposition& rules,
@@ -104,10 +109,12 @@ void GatewayHub::RequestTextEmbedding(Task& task) {
   ++task.model_calls;
   ++model_calls_;
   const std::string task_id = task.task_id;
-  backends_.model->EmbedText({task.robot_id, task_id}, target->text.empty() ? target->name : target->text,
-                             [this, task_id](absl::StatusOr<std::vector<float>> embedding) {
-                               OnTextEmbedding(task_id, std::move(embedding));
-                             });
+  ModelCaller caller{task.robot_id, task_id};
+  LanguageModel::EmbeddingDone done = AtSimulatedArrival<absl::StatusOr<std::vector<float>>>(
+      caller, [this, task_id](absl::StatusOr<std::vector<float>> embedding) {
+        OnTextEmbedding(task_id, std::move(embedding));
+      });
+  backends_.model->EmbedText(caller, target->text.empty() ? target->name : target->text, std::move(done));
 }
 
 void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding) {
@@ -120,7 +127,7 @@ void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std:
     return;
   }
   task->second.executor->SetTextEmbedding(*std::move(embedding));
-  Apply(task->second, task->second.executor->OnSceneGraph(Now(), scene_graph_));
+  Apply(task->second, GiveSceneGraph(task->second, NowFor(task->second.robot_id)));
 }
 
 bool GatewayHub::WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const {

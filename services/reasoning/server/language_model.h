@@ -5,10 +5,12 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "absl/time/time.h"
 #include "services/reasoning/core/slow_answer.h"
 #include "services/reasoning/core/subgoal_json.h"
 
@@ -18,6 +20,10 @@ namespace semnav::reasoning {
 struct ModelCaller {
   std::string robot_id;
   std::string task_id;
+  // When set, the model writes the latency it reports for the call (the proxy's response
+  // `latency`) here before `done` runs: simulated-clock robots get the answer only once their
+  // simulated time has covered it (docs/simulation.md, "Time").
+  std::shared_ptr<absl::Duration> reported_latency = nullptr;
 };
 
 // A free-text question, with one PNG image for the vision model when `png` is not empty.

@@ -1,6 +1,7 @@
 #include "services/reasoning/server/mapping_watcher.h"
 
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
+#include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
 
 namespace semnav::reasoning {
@@ -22,6 +23,28 @@ void MappingWatcher::Stop() {
   if (thread_.joinable()) thread_.join();
 }
 
+void MappingWatcher::Deliver(const SceneGraph& graph, bool restart) {
+  absl::MutexLock lock(&delivery_mu_);
+  if (!restart && delivered_revision_.has_value() && graph.revision <= *delivered_revision_) return;
+  delivered_revision_ = graph.revision;
+  on_graph_(graph);
+}
+
+absl::Status MappingWatcher::CatchUp(absl::Duration timeout) {
+  auto stub = mapping::v1::MappingService::NewStub(channel_);
+  grpc::ClientContext context;
+  context.set_deadline(absl::ToChronoTime(absl::Now() + timeout));
+  mapping::v1::GetSceneGraphResponse response;
+  const grpc::Status status = stub->GetSceneGraph(&context, mapping::v1::GetSceneGraphRequest(), &response);
+  if (!status.ok()) return absl::UnavailableError(absl::StrCat("mapping GetSceneGraph: ", status.error_message()));
+  mapping::v1::WatchSceneGraphResponse snapshot;
+  *snapshot.mutable_snapshot() = std::move(*response.mutable_graph());
+  SceneGraphMirror fetched;
+  fetched.Apply(snapshot);
+  Deliver(fetched.graph(), /*restart=*/false);
+  return absl::OkStatus();
+}
+
 void MappingWatcher::Run() {
   auto stub = mapping::v1::MappingService::NewStub(channel_);
   SceneGraphMirror mirror;
@@ -37,13 +60,14 @@ void MappingWatcher::Run() {
     auto reader = stub->WatchSceneGraph(&context, request);
     bool delivered = false;
     for (mapping::v1::WatchSceneGraphResponse update; reader->Read(&update);) {
+      const bool restart = !delivered && update.has_snapshot();
       delivered = true;
       if (!mirror.Apply(update)) {
         context.TryCancel();  // gap: restart from a snapshot
         mirror = SceneGraphMirror();
         break;
       }
-      on_graph_(mirror.graph());
+      Deliver(mirror.graph(), restart);
     }
     const grpc::Status status = reader->Finish();
     absl::MutexLock lock(&mu_);

@@ -30,6 +30,11 @@ absl::StatusOr<std::string> AnswerJson(const pb::CompleteResponse& response) {
   return answer.dump();
 }
 
+// The proxy's latency for the call (0 for a failed one) into the caller's slot, if it has one.
+void ReportLatency(const google::protobuf::Duration& latency, absl::Duration* out) {
+  if (out != nullptr) *out = absl::Seconds(latency.seconds()) + absl::Nanoseconds(latency.nanos());
+}
+
 }  // namespace
 
 ModelProxyClient::ModelProxyClient(std::shared_ptr<grpc::Channel> channel, ModelSettings settings)
@@ -86,9 +91,11 @@ void ModelProxyClient::Work() {
 void ModelProxyClient::Complete(const ModelCaller& caller, pb::CompleteRequest call,
                                 std::function<void(absl::StatusOr<pb::CompleteResponse>)> done) {
   SetTimeout(settings_.deadline_ms, call.mutable_timeout());
-  Enqueue(caller, [this, call = std::move(call), done = std::move(done)](grpc::ClientContext& context) {
+  Enqueue(caller, [this, call = std::move(call), latency = caller.reported_latency,
+                   done = std::move(done)](grpc::ClientContext& context) {
     pb::CompleteResponse response;
     const grpc::Status status = stub_->Complete(&context, call, &response);
+    ReportLatency(response.latency(), latency.get());
     if (!status.ok()) {
       LogInfo("model_call_failed", {{"rpc", "Complete"}, {"alias", call.model_alias()},
                                     {"code", static_cast<int>(status.error_code())},
@@ -145,7 +152,8 @@ void ModelProxyClient::EmbedText(const ModelCaller& caller, const std::string& t
   call.set_model_alias(settings_.embedding_alias);
   call.add_texts(text);
   SetTimeout(settings_.deadline_ms, call.mutable_timeout());
-  Enqueue(caller, [this, call = std::move(call), done = std::move(done)](grpc::ClientContext& context) {
+  Enqueue(caller, [this, call = std::move(call), latency = caller.reported_latency,
+                   done = std::move(done)](grpc::ClientContext& context) {
     bool recently_unavailable;
     {
       absl::MutexLock lock(&mu_);
@@ -159,6 +167,7 @@ void ModelProxyClient::EmbedText(const ModelCaller& caller, const std::string& t
     }
     pb::EmbedResponse response;
     const grpc::Status status = stub_->Embed(&context, call, &response);
+    ReportLatency(response.latency(), latency.get());
     if (!status.ok()) {
       if (status.error_code() == grpc::StatusCode::UNAVAILABLE) {
         absl::MutexLock lock(&mu_);
