@@ -18,8 +18,8 @@ namespace {
 // datasets drop the other draws the same way.
 bool Scorable(const World& world, const GroundTruthGrid& grid, const StartPose& start, const std::string& label) {
   const Eigen::Vector2d at = start.position.head<2>();
-  return DistanceToNearestInstance(world, label, at) > kDefaultSuccessRadius &&
-         loop::NearestSuccessPoint(world, grid, at, label, kDefaultSuccessRadius).has_value();
+  const SuccessRegion region = SuccessRegion::Build(world, label, grid, kDefaultSuccessRadius);
+  return !region.Contains(at) && loop::NearestSuccessPoint(region, grid, at).has_value();
 }
 
 std::vector<int> StartsOf(const World& world, Modality modality) {

@@ -161,6 +161,9 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   SensorConfig sensors = spec.sensors;
   sensors.rgb = sensors.rgb || spec.camera_frames;
   SimRobot robot(spec.world, scene, start, robot_config, sensors, spec.seed);
+  // The true map the robot's body meets, and the target's success region on it (scoring, l_i).
+  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(robot_config, start.position.z()));
+  const SuccessRegion region = SuccessRegion::Build(spec.world, label, grid, spec.success_radius);
   CommandExecutor executor(robot, LiveMapPlanner(endpoints.planning, robot_config.radius));
 
   if (absl::Status s = ResetMap(endpoints.mapping, spec); !s.ok()) return s;
@@ -242,8 +245,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   // The stop action is the agent declaring it has arrived: the STOP a task sends when it gives
   // up (FAILED) halts the robot but declares nothing, even if it happens near a target.
   const bool declared = executor.stop_issued() && result.final_status == api::TASK_STATUS_SUCCEEDED;
-  const StopOutcome outcome =
-      ScoreStop(spec.world, label, robot.pose().position.head<2>(), declared, spec.success_radius);
+  const StopOutcome outcome = ScoreStop(spec.world, region, label, robot.pose().position.head<2>(), declared);
   result.stop_issued = declared;
   result.collisions = static_cast<int>(robot.collisions().size());
   result.record.success = outcome.success;
@@ -253,10 +255,8 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.energy_j = robot.energy_j();
   // l_i on the true map the robot's body meets (a fly-roll robot's l_i is its rolling path, an
   // upper bound).
-  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(robot_config, start.position.z()));
   auto planning = semnav::planning::v1::PlanningService::NewStub(endpoints.planning);
-  absl::StatusOr<double> shortest =
-      ShortestPathToTarget(*planning, spec.world, grid, start.position.head<2>(), label, spec.success_radius);
+  absl::StatusOr<double> shortest = ShortestPathToTarget(*planning, region, grid, start.position.head<2>());
   if (!shortest.ok() && !absl::IsNotFound(shortest.status())) return shortest.status();
   result.record.shortest_path_m = shortest.ok() ? *shortest : 0.0;  // unreachable: SPL term is 0
   return result;
