@@ -211,6 +211,7 @@ std::vector<StrategySummary> SummariseByStrategy(const std::vector<EpisodeRecord
     it->model_calls += r.model_calls;
     resolved[k] += r.goals_resolved;
     fast[k] += r.goals_fast_path;
+    if (!r.success) ++it->failures[r.failure_cause.empty() ? "unclassified" : r.failure_cause];
   }
   for (size_t k = 0; k < summaries.size(); ++k) {
     StrategySummary& s = summaries[k];

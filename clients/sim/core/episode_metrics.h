@@ -2,6 +2,7 @@
 #define SEMNAV_CLIENTS_SIM_CORE_EPISODE_METRICS_H_
 
 #include <Eigen/Core>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -86,6 +87,9 @@ struct EpisodeRecord {
   int goals_resolved = 0;   // goal resolutions the gateway made
   int goals_fast_path = 0;  // of which on the fast path
   std::string group;        // the report section: indoor, outdoor or flyroll (by modality)
+  // Why a failed episode failed (the loop's failure taxonomy, e.g. "budget_spent_exploring");
+  // empty for a success.
+  std::string failure_cause;
 };
 
 // The report section of an episode by the robot's modality: ground = "indoor", uav = "outdoor",
@@ -103,6 +107,8 @@ struct StrategySummary {
   double energy_j = 0.0;         // mean
   double model_calls = 0.0;      // mean per episode
   double fast_path_share = 0.0;  // fast-path resolutions / all resolutions (0 if none)
+  // Failed episodes per cause (EpisodeRecord::failure_cause; "unclassified" when empty).
+  std::map<std::string, int> failures;
 };
 
 // One summary per strategy, in order of first appearance.

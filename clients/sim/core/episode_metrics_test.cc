@@ -143,6 +143,9 @@ TEST(SimEpisodeMetricsTest, AggregatesPerStrategyByHand) {
   EXPECT_DOUBLE_EQ(s.fast_path_share, 3.0 / 5.0);
   EXPECT_DOUBLE_EQ(summaries[1].spl, 1.0);
   EXPECT_DOUBLE_EQ(summaries[1].fast_path_share, 0.0);
+  // The failed episode without a cause counts as unclassified; successes count nowhere.
+  EXPECT_EQ(s.failures, (std::map<std::string, int>{{"unclassified", 1}}));
+  EXPECT_TRUE(summaries[1].failures.empty());
 }
 
 }  // namespace
