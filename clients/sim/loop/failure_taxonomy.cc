@@ -21,7 +21,7 @@ bool Says(const std::string& text, absl::string_view phrase) {
 int CountNoPath(const EpisodeTrace& trace) {
   int n = 0;
   for (const FeedbackEvent& f : trace.feedback) {
-    if (f.kind == api::FEEDBACK_KIND_FAILED && (Says(f.detail, "no path") || Says(f.detail, "unreachable"))) ++n;
+    if (f.kind == api::FEEDBACK_KIND_FAILED && (Says(f.detail, "no path") || Says(f.detail, "unreachable") || Says(f.detail, "not reachable"))) ++n;
   }
   for (const TaskChange& t : trace.task) {
     if (Says(t.reason, "no path")) ++n;
