@@ -120,7 +120,9 @@ int main(int argc, char** argv) {
   const semnav::sim::bench::EpisodeCounts counts{std::atoi(flags["--episodes"].c_str()),
                                                  std::atoi(flags["--outdoor-episodes"].c_str()),
                                                  std::atoi(flags["--flyroll-episodes"].c_str())};
-  const std::vector<loop::EpisodeSpec> plan = semnav::sim::bench::PlanEpisodes(*worlds, counts, seed);
+  std::vector<std::string> unscorable;
+  const std::vector<loop::EpisodeSpec> plan = semnav::sim::bench::PlanEpisodes(*worlds, counts, seed, &unscorable);
+  for (const std::string& line : unscorable) std::cerr << "semnav-bench-mission: " << line << "\n";
   if (plan.empty()) {
     std::cerr << "semnav-bench-mission: no episode: no world with objects and a start of a requested modality\n";
     return 1;

@@ -18,8 +18,8 @@ namespace {
 // datasets drop the other draws the same way.
 bool Scorable(const World& world, const GroundTruthGrid& grid, const StartPose& start, const std::string& label) {
   const Eigen::Vector2d at = start.position.head<2>();
-  return DistanceToNearestInstance(world, label, at) > kDefaultSuccessRadius &&
-         loop::NearestSuccessPoint(world, grid, at, label, kDefaultSuccessRadius).has_value();
+  const SuccessRegion region = SuccessRegion::Build(world, label, grid, kDefaultSuccessRadius);
+  return !region.Contains(at) && loop::NearestSuccessPoint(region, grid, at).has_value();
 }
 
 std::vector<int> StartsOf(const World& world, Modality modality) {
@@ -31,7 +31,7 @@ std::vector<int> StartsOf(const World& world, Modality modality) {
 }
 
 void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes, uint64_t seed,
-               std::vector<loop::EpisodeSpec>& plan) {
+               std::vector<loop::EpisodeSpec>& plan, std::vector<std::string>* unscorable) {
   std::vector<const World*> usable;
   for (const World& world : worlds) {
     if (!StartsOf(world, modality).empty() && !world.objects.empty()) usable.push_back(&world);
@@ -56,9 +56,22 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
     const GroundTruthGrid grid =
         RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
     // Draw again while the label cannot be scored; a scorable first draw is what it always was.
-    for (size_t attempt = 0; attempt < 4 * labels.size(); ++attempt) {
+    bool scorable = false;
+    for (size_t attempt = 0; attempt < 4 * labels.size() && !scorable; ++attempt) {
       spec.target_label = labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];
-      if (Scorable(world, grid, start, spec.target_label)) break;
+      scorable = Scorable(world, grid, start, spec.target_label);
+    }
+    for (size_t k = 0; k < labels.size() && !scorable; ++k) {
+      spec.target_label = labels[k];
+      scorable = Scorable(world, grid, start, spec.target_label);
+    }
+    if (!scorable) {
+      if (unscorable != nullptr) {
+        unscorable->push_back(absl::StrCat(group, " episode ", i, ": ", world.name, " start ", spec.start_index,
+                                           ": no scorable target (every label is unreachable from the start or "
+                                           "already within its success region); left out"));
+      }
+      continue;
     }
     const std::optional<std::string> chinese = ChineseName(spec.target_label);
     spec.target = i % 4 == 3 && chinese.has_value() ? *chinese : spec.target_label;
@@ -71,11 +84,11 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
 }  // namespace
 
 std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
-                                            uint64_t seed) {
+                                            uint64_t seed, std::vector<std::string>* unscorable) {
   std::vector<loop::EpisodeSpec> plan;
-  PlanGroup(worlds, Modality::kGround, counts.indoor, seed, plan);
-  PlanGroup(worlds, Modality::kUav, counts.outdoor, seed, plan);
-  PlanGroup(worlds, Modality::kFlyRoll, counts.flyroll, seed, plan);
+  PlanGroup(worlds, Modality::kGround, counts.indoor, seed, plan, unscorable);
+  PlanGroup(worlds, Modality::kUav, counts.outdoor, seed, plan, unscorable);
+  PlanGroup(worlds, Modality::kFlyRoll, counts.flyroll, seed, plan, unscorable);
   return plan;
 }
 

@@ -20,11 +20,13 @@ struct EpisodeCounts {
 
 // Per group, episode i uses world i mod W (of the worlds with a start of the group's modality and
 // objects), that world's start (i / W) mod S of the modality, and one of the world's object
-// labels chosen by (seed, group, i), drawn again while the label is unreachable from the start
-// on the body's true raster or already within the 1 m success radius (l_i must exist and be
-// > 0). Every fourth episode (i mod 4 = 3) names its target in Chinese when the label has a
-// name in ChineseName. Groups come in the order indoor, outdoor, flyroll.
+// labels chosen by (seed, group, i), drawn again while the label cannot be scored: unreachable
+// from the start on the body's true raster, or the start already inside its success region
+// (l_i must exist and be > 0; SuccessRegion). After 4 x labels draws the labels are tried in
+// name order; when none can be scored the episode is left out and `unscorable` (if given) gets
+// a line saying which world and start. Every fourth episode (i mod 4 = 3) names its target in
+// Chinese (ChineseName). Groups come in the order indoor, outdoor, flyroll.
 std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
-                                            uint64_t seed);
+                                            uint64_t seed, std::vector<std::string>* unscorable = nullptr);
 
 }  // namespace semnav::sim::bench

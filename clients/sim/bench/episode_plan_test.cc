@@ -56,6 +56,27 @@ TEST(SimBenchEpisodePlanTest, TargetsAreReachableAndNotAtTheStart) {
   for (const loop::EpisodeSpec& spec : PlanEpisodes({world}, {12, 0, 0}, 3)) EXPECT_EQ(spec.target_label, "sink");
 }
 
+// A world whose only object is walled in: no draw can be scored, so the plan leaves the
+// episodes out and says why instead of keeping an episode nobody can score.
+TEST(SimBenchEpisodePlanTest, UnscorableEpisodesAreLeftOutAndNamed) {
+  World world = testing::OpenWorld();
+  world.name = "sealed";
+  world.objects.push_back(testing::Object("chair_1", "chair", testing::Box(-3.0, 3.0, 0.5, 0.5, 0.8)));
+  for (const auto& [x, y, sx, sy] : std::vector<std::array<double, 4>>{
+           {-3.0, 4.0, 2.1, 0.1}, {-3.0, 2.0, 2.1, 0.1}, {-4.0, 3.0, 0.1, 2.1}, {-2.0, 3.0, 0.1, 2.1}}) {
+    world.obstacles.push_back(Obstacle{"wall", Rgb{}, testing::Box(x, y, sx, sy, 2.0)});
+  }
+  std::vector<std::string> unscorable;
+  const std::vector<World> worlds = {world, WithObject("home", Modality::kGround, "sink")};
+  const std::vector<loop::EpisodeSpec> plan = PlanEpisodes(worlds, {4, 0, 0}, 1, &unscorable);
+  // Episodes 0 and 2 fall on the sealed world, 1 and 3 on the home.
+  ASSERT_EQ(plan.size(), 2u);
+  for (const loop::EpisodeSpec& spec : plan) EXPECT_EQ(spec.world.name, "home");
+  ASSERT_EQ(unscorable.size(), 2u);
+  EXPECT_NE(unscorable[0].find("indoor episode 0: sealed start 0: no scorable target"), std::string::npos)
+      << unscorable[0];
+}
+
 TEST(SimBenchEpisodePlanTest, GroupWithoutWorldsPlansNothing) {
   const std::vector<World> worlds = {WithObject("home", Modality::kGround, "sink")};
   EXPECT_EQ(PlanEpisodes(worlds, {0, 15, 10}, 1).size(), 0u);

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
@@ -58,6 +59,8 @@ std::optional<PairedRatio> PathVsExplorationOnlyBothFound(const std::vector<Epis
 }
 
 nlohmann::json StrategyJson(const StrategySummary& s) {
+  nlohmann::json failures = nlohmann::json::object();
+  for (const auto& [cause, n] : s.failures) failures[cause] = n;
   return {{"sr", s.sr},
           {"spl", s.spl},
           {"dtg", s.dtg_m},
@@ -65,7 +68,34 @@ nlohmann::json StrategyJson(const StrategySummary& s) {
           {"time_s", s.time_s},
           {"model_calls", s.model_calls},
           {"fast_path_share", s.fast_path_share},
-          {"episodes", s.episodes}};
+          {"episodes", s.episodes},
+          {"failures", failures}};
+}
+
+// Per group, failed episodes by cause: one row per strategy, one column per cause seen in the
+// group (sorted by name).
+std::string FailureTable(const std::vector<StrategySummary>& summaries) {
+  std::set<std::string> causes;
+  for (const StrategySummary& s : summaries) {
+    for (const auto& [cause, n] : s.failures) causes.insert(cause);
+  }
+  if (causes.empty()) return "";
+  std::string table = "\nFailures by cause (episodes):\n\n| strategy | failed |";
+  for (const std::string& cause : causes) absl::StrAppend(&table, " ", cause, " |");
+  absl::StrAppend(&table, "\n|---|---|");
+  for (size_t i = 0; i < causes.size(); ++i) absl::StrAppend(&table, "---|");
+  absl::StrAppend(&table, "\n");
+  for (const StrategySummary& s : summaries) {
+    int failed = 0;
+    for (const auto& [cause, n] : s.failures) failed += n;
+    absl::StrAppend(&table, "| ", s.strategy, " | ", failed, " |");
+    for (const std::string& cause : causes) {
+      const auto it = s.failures.find(cause);
+      absl::StrAppend(&table, " ", it == s.failures.end() ? 0 : it->second, " |");
+    }
+    absl::StrAppend(&table, "\n");
+  }
+  return table;
 }
 
 }  // namespace
@@ -105,7 +135,8 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
     rows.push_back({{"strategy", r.strategy}, {"group", r.group}, {"world", r.world}, {"target", r.target},
                     {"success", r.success}, {"shortest_path_m", r.shortest_path_m}, {"path_m", r.path_m},
                     {"dtg_m", r.distance_to_goal_m}, {"time_s", r.time_s}, {"energy_j", r.energy_j},
-                    {"model_calls", r.model_calls}, {"fast_path", r.goals_fast_path}});
+                    {"model_calls", r.model_calls}, {"fast_path", r.goals_fast_path},
+                    {"failure_cause", r.failure_cause}});
   }
   out["episodes"] = rows;
   std::ofstream file(path);
@@ -135,6 +166,7 @@ std::string MissionTable(const std::vector<EpisodeRecord>& records, double succe
                                                   : "-",
                                               s.time_s, s.energy_j, s.model_calls, s.fast_path_share));
     }
+    absl::StrAppend(&table, FailureTable(summaries));
   }
   for (const auto& [strategy, reason] : not_run) absl::StrAppend(&table, "\n", strategy, " not run: ", reason, "\n");
   return table;

@@ -17,7 +17,8 @@ inline constexpr char kExplorationOnly[] = "NEAREST_FRONTIER";
 using NotRun = std::map<std::string, std::string>;
 
 // {"success_radius_m": r,
-//  "strategies": {NAME: {sr, spl, dtg, path_m, time_s, model_calls, fast_path_share, episodes}},
+//  "strategies": {NAME: {sr, spl, dtg, path_m, time_s, model_calls, fast_path_share, episodes,
+//                        failures: {CAUSE: n}}},
 //      (the indoor group, the headline)
 //  "groups": {GROUP: {"strategies": {NAME: {the same keys}}, "energy_j": {NAME: mean},
 //             "path_vs_exploration_only": {NAME: mean path / NEAREST_FRONTIER's mean path},
@@ -26,7 +27,8 @@ using NotRun = std::map<std::string, std::string>;
 //  "not_run": {NAME: reason}, "episodes": [per-episode rows]}.
 absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double success_radius,
                               const NotRun& not_run, const std::string& path);
-// One table per group (Markdown, also printed to the console), then the strategies not run.
+// One table per group (Markdown, also printed to the console) followed by its failed episodes
+// by cause, then the strategies not run.
 std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius,
                          const NotRun& not_run = {});
 

@@ -9,17 +9,19 @@ namespace semnav::sim::bench {
 namespace {
 
 std::vector<EpisodeRecord> Episodes() {
-  EpisodeRecord hit{"NEAREST_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 1600.0, 1, 1, 1, "indoor"};
-  EpisodeRecord miss{"NEAREST_FRONTIER", "home_2", "tv", false, 3.0, 6.0, 2.5, 40.0, 2400.0, 3, 1, 0, "indoor"};
+  EpisodeRecord hit{"NEAREST_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 1600.0, 1, 1, 1, "indoor", ""};
+  EpisodeRecord miss{"NEAREST_FRONTIER", "home_2", "tv", false, 3.0, 6.0, 2.5, 40.0, 2400.0, 3, 1, 0, "indoor", ""};
   EpisodeRecord uav_base{"NEAREST_FRONTIER", "outdoor_road_vehicles", "car", true, 10.0, 40.0, 0.8, 50.0, 0.0, 0, 1, 1,
-                         "outdoor"};
+                         "outdoor", ""};
   EpisodeRecord uav{"SEMANTIC_FRONTIER", "outdoor_road_vehicles", "car", true, 10.0, 20.0, 0.6, 30.0, 0.0, 0, 1, 1,
-                    "outdoor"};
+                    "outdoor", ""};
   // The baseline gave up after 80 m here: only the first outdoor pair counts as "both found".
   EpisodeRecord uav_base_miss{"NEAREST_FRONTIER", "outdoor_river_bridge", "boat", false, 10.0, 80.0, 9.0, 250.0, 0.0,
-                              0, 0, 0, "outdoor"};
+                              0, 0, 0, "outdoor", ""};
   EpisodeRecord uav_hit{"SEMANTIC_FRONTIER", "outdoor_river_bridge", "boat", true, 10.0, 10.0, 0.4, 20.0, 0.0, 0, 1, 1,
-                        "outdoor"};
+                        "outdoor", ""};
+  miss.failure_cause = "budget_spent_exploring";
+  uav_base_miss.failure_cause = "collision_loop";
   return {hit, miss, uav_base, uav_base_miss, uav, uav_hit};
 }
 
@@ -29,7 +31,7 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   const nlohmann::json json = nlohmann::json::parse(std::ifstream(path));
   // The headline is the indoor group, with exactly the keys.
   const nlohmann::json& s = json["strategies"]["NEAREST_FRONTIER"];
-  EXPECT_EQ(s.size(), 8u);
+  EXPECT_EQ(s.size(), 9u);
   EXPECT_EQ(s["episodes"], 2);
   EXPECT_DOUBLE_EQ(s["sr"], 0.5);
   EXPECT_DOUBLE_EQ(s["spl"], 0.25);  // (2 / max(4, 2) + 0) / 2
@@ -38,6 +40,7 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   EXPECT_DOUBLE_EQ(s["time_s"], 30.0);
   EXPECT_DOUBLE_EQ(s["model_calls"], 2.0);
   EXPECT_DOUBLE_EQ(s["fast_path_share"], 0.5);
+  EXPECT_EQ(s["failures"], nlohmann::json({{"budget_spent_exploring", 1}}));
   EXPECT_FALSE(json["strategies"].contains("SEMANTIC_FRONTIER"));  // outdoor only
   EXPECT_DOUBLE_EQ(json["groups"]["indoor"]["energy_j"]["NEAREST_FRONTIER"], 2000.0);
   const nlohmann::json& outdoor = json["groups"]["outdoor"];
@@ -50,6 +53,11 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   EXPECT_DOUBLE_EQ(json["success_radius_m"], 1.0);
   EXPECT_EQ(json["episodes"].size(), 6u);
   EXPECT_EQ(json["episodes"][2]["group"], "outdoor");
+  // Failures by cause per strategy and group; a strategy without failures has an empty map.
+  EXPECT_EQ(outdoor["strategies"]["NEAREST_FRONTIER"]["failures"], nlohmann::json({{"collision_loop", 1}}));
+  EXPECT_TRUE(outdoor["strategies"]["SEMANTIC_FRONTIER"]["failures"].empty());
+  EXPECT_EQ(json["episodes"][1]["failure_cause"], "budget_spent_exploring");
+  EXPECT_EQ(json["episodes"][0]["failure_cause"], "");
 }
 
 TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategyAndGroup) {
@@ -61,6 +69,14 @@ TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategyAndGroup
   EXPECT_NE(table.find("| SEMANTIC_FRONTIER | 2 | 1.000 | 0.750 | 0.50 | 15.00 | 0.25 | 0.50 (1) |"),
             std::string::npos);
   EXPECT_NE(table.find("EROI_UTILITY not run: no model configured"), std::string::npos);
+  // Each group's failures by cause: the indoor miss, the outdoor baseline's collision loop.
+  EXPECT_NE(table.find("| strategy | failed | budget_spent_exploring |\n|---|---|---|\n| NEAREST_FRONTIER | 1 | 1 |"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("| strategy | failed | collision_loop |\n|---|---|---|\n| NEAREST_FRONTIER | 1 | 1 |\n"
+                       "| SEMANTIC_FRONTIER | 0 | 0 |"),
+            std::string::npos)
+      << table;
 }
 
 }  // namespace

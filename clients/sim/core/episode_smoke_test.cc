@@ -27,8 +27,9 @@ TEST(SimEpisodeSmokeTest, SeeDriveStopAndScore) {
   for (int i = 0; i < 100 && !report.arrived; ++i) report = robot.Step(0.25);
   ASSERT_TRUE(report.arrived);
   ASSERT_TRUE(robot.Apply(Stop{}).ok());
-  const StopOutcome stop =
-      ScoreStop(world, "chair", robot.pose().position.head<2>(), robot.stopped());
+  const GroundTruthGrid grid = RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(Modality::kGround), 0.0));
+  const StopOutcome stop = ScoreStop(world, SuccessRegion::Build(world, "chair", grid), "chair",
+                                     robot.pose().position.head<2>(), robot.stopped());
   EXPECT_TRUE(stop.success);
   EXPECT_NEAR(stop.distance_to_goal_m, 0.45, 1e-9);
   // Shortest path: to 1 m from the face, 3.75 - 1 = 2.75 m; taken 3.3 m.

@@ -105,7 +105,7 @@ GroundTruthGrid RasterizeHeightLayers(const World& world, double resolution, dou
   GroundTruthGrid grid = EmptyGrid(world, resolution);
   ForEachSolid(world, [&](const Shape& shape, const std::string& kind) {
     const double top = ShapeTop(shape);
-    const bool structure = kind == "wall" || kind == "building" || top >= ceiling_m;
+    const bool structure = IsStructure(kind) || top >= ceiling_m;
     const int value =
         structure ? 100 : std::clamp(static_cast<int>(std::ceil(top / ceiling_m * 99.0)), 1, 99);
     ForEachCoveredCell(grid, shape, [&](int x, int y) {

@@ -25,4 +25,6 @@ double ShapeTop(const Shape& shape) {
   return std::visit([](const auto& s) { return s.top_z(); }, shape);
 }
 
+bool IsStructure(std::string_view kind) { return kind == "wall" || kind == "building"; }
+
 }  // namespace semnav::sim

@@ -87,6 +87,10 @@ struct World {
 // Height of the top face of a shape.
 double ShapeTop(const Shape& shape);
 
+// Obstacle kinds that are building structure ("wall", "building"): nothing is reached or seen
+// through them, and the fly-roll robot never flies over them.
+bool IsStructure(std::string_view kind);
+
 }  // namespace semnav::sim
 
 #endif  // SEMNAV_CLIENTS_SIM_CORE_WORLD_H_

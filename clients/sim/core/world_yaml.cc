@@ -9,7 +9,12 @@
 #include <sstream>
 
 #include "absl/strings/str_cat.h"
+#include "clients/sim/core/geometry2d.h"
+#include "clients/sim/core/label_lexicon.h"
+#include "clients/sim/core/robot_config.h"
+#include "clients/sim/core/shape_queries.h"
 #include "clients/sim/core/yaml_fields.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::sim {
 namespace {
@@ -24,9 +29,10 @@ namespace yf = yaml_fields;
 #define SIM_RETURN_IF_ERROR(expr) \
   if (absl::Status s_ = (expr); !s_.ok()) return s_
 
-absl::Status Invalid(const std::string& field, absl::string_view what) {
-  return absl::InvalidArgumentError(absl::StrCat(field, ": ", what));
-}
+absl::Status Invalid(const std::string& field, absl::string_view what) { return InvalidField(field, what); }
+
+// Geometry may reach this far past the bounds (rounding of written coordinates).
+constexpr double kBoundsTolerance = 1e-3;
 
 absl::StatusOr<Rgb> ReadColour(const YAML::Node& map, const std::string& path) {
   const YAML::Node node = map["colour"];
@@ -190,6 +196,76 @@ absl::Status CheckReferences(const World& world) {
   return absl::OkStatus();
 }
 
+// Every object label must be an object the gateway can name (any English form of a lexicon
+// object: "couch", "sofa", "table"): a target it cannot parse is no benchmark of search.
+absl::Status CheckLabels(const World& world) {
+  SIM_ASSIGN_OR_RETURN(lexicon, LabelLexicon());
+  for (size_t i = 0; i < world.objects.size(); ++i) {
+    if (lexicon->Find(world.objects[i].label, reasoning::TermKind::kObject) == nullptr) {
+      return Invalid(yf::Index("objects", i) + ".label",
+                     absl::StrCat("\"", Preview(world.objects[i].label), "\" is not an object of the reasoning lexicon"));
+    }
+  }
+  return absl::OkStatus();
+}
+
+bool WithinBounds(const World& world, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  return (lo.array() >= world.bounds_min.array() - kBoundsTolerance).all() &&
+         (hi.array() <= world.bounds_max.array() + kBoundsTolerance).all();
+}
+
+// Obstacles, objects, rooms and starts lie inside the bounds: the grids, the maps and the
+// search area cover the bounds and nothing else.
+absl::Status CheckBounds(const World& world) {
+  const std::string inside = "lies outside the bounds";
+  for (size_t i = 0; i < world.obstacles.size(); ++i) {
+    const auto [lo, hi] = FootprintBounds(world.obstacles[i].shape);
+    if (!WithinBounds(world, lo, hi)) {
+      const bool box = std::holds_alternative<BoxShape>(world.obstacles[i].shape);
+      return Invalid(yf::Index("obstacles", i) + (box ? ".box" : ".prism.polygon"), inside);
+    }
+  }
+  for (size_t i = 0; i < world.objects.size(); ++i) {
+    const auto [lo, hi] = FootprintBounds(Shape(world.objects[i].box));
+    if (!WithinBounds(world, lo, hi)) return Invalid(yf::Index("objects", i) + ".box", inside);
+  }
+  for (size_t i = 0; i < world.rooms.size(); ++i) {
+    for (const Eigen::Vector2d& p : world.rooms[i].polygon) {
+      if (!WithinBounds(world, p, p)) return Invalid(yf::Index("rooms", i) + ".polygon", inside);
+    }
+  }
+  for (size_t i = 0; i < world.starts.size(); ++i) {
+    const Eigen::Vector2d p = world.starts[i].position.head<2>();
+    if (!WithinBounds(world, p, p)) return Invalid(yf::Index("starts", i) + ".position", inside);
+  }
+  return absl::OkStatus();
+}
+
+// A start is where the robot's body (the upright cylinder of its modality, RobotConfig) stands:
+// it must not touch a solid, or the robot is stuck or in collision before it moves.
+absl::Status CheckStarts(const World& world) {
+  for (size_t i = 0; i < world.starts.size(); ++i) {
+    const StartPose& start = world.starts[i];
+    const RobotConfig body = RobotConfig::ForModality(start.modality);
+    const Eigen::Vector2d at = start.position.head<2>();
+    const double z0 = start.position.z() + body.ground_clearance, z1 = start.position.z() + body.body_height;
+    auto touches = [&](const Shape& shape) { return CylinderOverlaps(shape, at, body.radius, z0, z1); };
+    for (size_t k = 0; k < world.obstacles.size(); ++k) {
+      if (touches(world.obstacles[k].shape)) {
+        return Invalid(yf::Index("starts", i) + ".position",
+                       absl::StrCat("the robot's body there touches obstacles[", k, "] (", world.obstacles[k].kind, ")"));
+      }
+    }
+    for (size_t k = 0; k < world.objects.size(); ++k) {
+      if (touches(Shape(world.objects[k].box))) {
+        return Invalid(yf::Index("starts", i) + ".position",
+                       absl::StrCat("the robot's body there touches objects[", k, "] (", world.objects[k].id, ")"));
+      }
+    }
+  }
+  return absl::OkStatus();
+}
+
 absl::StatusOr<World> ParseRoot(const YAML::Node& root) {
   SIM_RETURN_IF_ERROR(yf::ExpectMap(root, ""));
   SIM_RETURN_IF_ERROR(yf::CheckKeys(root, "",
@@ -226,6 +302,9 @@ absl::StatusOr<World> ParseRoot(const YAML::Node& root) {
   SIM_RETURN_IF_ERROR(ReadList(root, "rooms", ReadRoom, &world.rooms));
   SIM_RETURN_IF_ERROR(ReadList(root, "starts", ReadStart, &world.starts));
   SIM_RETURN_IF_ERROR(CheckReferences(world));
+  SIM_RETURN_IF_ERROR(CheckLabels(world));
+  SIM_RETURN_IF_ERROR(CheckBounds(world));
+  SIM_RETURN_IF_ERROR(CheckStarts(world));
   return world;
 }
 
@@ -248,7 +327,10 @@ absl::StatusOr<World> LoadWorldFile(const std::string& path) {
   text << in.rdbuf();
   absl::StatusOr<World> world = ParseWorldYaml(text.str());
   if (!world.ok()) {
-    return absl::Status(world.status().code(), absl::StrCat(path, ": ", world.status().message()));
+    // The file name leads the message; the field payload stays.
+    absl::Status named(world.status().code(), absl::StrCat(path, ": ", world.status().message()));
+    world.status().ForEachPayload([&](absl::string_view url, const absl::Cord& payload) { named.SetPayload(url, payload); });
+    return named;
   }
   return world;
 }

@@ -4,12 +4,14 @@
 
 #include <filesystem>
 
+#include "services/common/status/field_error.h"
+
 namespace semnav::sim {
 namespace {
 
 constexpr char kWorld[] = R"(
 name: tiny
-bounds: {min: [0, 0], max: [6, 4]}
+bounds: {min: [-0.1, -0.1], max: [6, 4]}
 ceiling_height: 2.5
 rooms:
   - {name: kitchen_1, type: kitchen, polygon: [[0, 0], [6, 0], [6, 4], [0, 4]]}
@@ -36,6 +38,14 @@ void ExpectInvalid(const std::string& text, const std::string& field) {
       << world.status().message();
 }
 
+// The field travels as the status payload too (field_error.h), exactly.
+void ExpectInvalidField(const std::string& text, const std::string& field) {
+  const absl::StatusOr<World> world = ParseWorldYaml(text);
+  ASSERT_FALSE(world.ok()) << field;
+  EXPECT_EQ(world.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(world.status()), field) << world.status();
+}
+
 TEST(SimWorldYamlTest, ParsesEveryField) {
   const absl::StatusOr<World> world = ParseWorldYaml(kWorld);
   ASSERT_TRUE(world.ok()) << world.status();
@@ -59,19 +69,54 @@ TEST(SimWorldYamlTest, ErrorsNameTheField) {
                 "obstacles[1].colr");
   ExpectInvalid(Replace(kWorld, "room: kitchen_1,", "room: garage,"), "objects[0].room");
   ExpectInvalid(Replace(kWorld, "height: 0.9", "height: -1"), "obstacles[1].prism.height");
-  ExpectInvalid(Replace(kWorld, "max: [6, 4]", "max: [0, 4]"), "bounds.max");
+  ExpectInvalid(Replace(kWorld, "max: [6, 4]", "max: [-0.2, 4]"), "bounds.max");
   ExpectInvalid(Replace(kWorld, "colour: [240, 240, 240]", "colour: [240, 256, 240]"),
                 "objects[0].colour");
   ExpectInvalid(Replace(kWorld, "name: tiny", "title: tiny"), "title");
   ExpectInvalid("name: [unclosed", "YAML syntax error");
 }
 
+TEST(SimWorldYamlTest, RejectsLabelsTheLexiconDoesNotKnow) {
+  ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: flux capacitor"), "objects[0].label");
+  ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: spaceship"), "objects[0].label");
+  // Any English form of a lexicon object is a label the gateway can name.
+  EXPECT_TRUE(ParseWorldYaml(Replace(kWorld, "label: refrigerator", "label: sofa")).ok());
+  EXPECT_TRUE(ParseWorldYaml(Replace(kWorld, "label: refrigerator", "label: table")).ok());
+  EXPECT_TRUE(ParseWorldYaml(Replace(kWorld, "label: refrigerator", "label: trash can")).ok());
+}
+
+TEST(SimWorldYamlTest, RejectsGeometryOutsideTheBounds) {
+  // The fridge reaches x = 6.35 in a world that ends at x = 6.
+  ExpectInvalidField(Replace(kWorld, "center: [5, 3]", "center: [6, 3]"), "objects[0].box");
+  ExpectInvalidField(Replace(kWorld, "center: [3, 0], size: [6, 0.1", "center: [3, 0], size: [6.4, 0.1"),
+                     "obstacles[0].box");
+  ExpectInvalidField(Replace(kWorld, "[[1, 2], [2, 2], [2, 3]]", "[[1, 2], [2, 2], [2, 4.5]]"),
+                     "obstacles[1].prism.polygon");
+  ExpectInvalidField(Replace(kWorld, "[6, 4], [0, 4]]", "[6, 5], [0, 4]]"), "rooms[0].polygon");
+  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [7, 1, 0]"), "starts[0].position");
+}
+
+TEST(SimWorldYamlTest, RejectsStartsTouchingASolid) {
+  // The ground robot's body has a 0.25 m radius: 0.2 m from the wall's face at y = 0.05 it
+  // touches it, 0.3 m away it does not.
+  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [1, 0.25, 0]"), "starts[0].position");
+  EXPECT_TRUE(ParseWorldYaml(Replace(kWorld, "position: [1, 1, 0]", "position: [1, 0.35, 0]")).ok());
+  // Inside the fridge's footprint.
+  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [5, 3, 0]"), "starts[0].position");
+  // A UAV at 1.5 m flies over the 0.9 m furniture that a ground robot would stand in.
+  const std::string over_furniture = Replace(kWorld, "position: [1, 1, 0]", "position: [1.8, 2.2, 0]");
+  ExpectInvalidField(over_furniture, "starts[0].position");
+  EXPECT_TRUE(ParseWorldYaml(Replace(over_furniture, "[1.8, 2.2, 0], yaw: 0.5, modality: ground",
+                                     "[1.8, 2.2, 1.5], yaw: 0.5, modality: uav"))
+                  .ok());
+}
+
 TEST(SimWorldYamlTest, WriterRoundTrips) {
   absl::StatusOr<World> world = ParseWorldYaml(kWorld);
   ASSERT_TRUE(world.ok());
-  world->starts[0].position.x() = 28.9504;  // written to the millimetre
+  world->starts[0].position.x() = 2.9504;  // written to the millimetre
   const std::string text = WorldToYaml(*world);
-  EXPECT_NE(text.find("[28.95, "), std::string::npos) << text;
+  EXPECT_NE(text.find("[2.95, "), std::string::npos) << text;
   const absl::StatusOr<World> again = ParseWorldYaml(text);
   ASSERT_TRUE(again.ok()) << again.status() << "\n" << text;
   EXPECT_EQ(WorldToYaml(*again), text);

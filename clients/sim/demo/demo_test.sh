@@ -16,12 +16,12 @@ fail() {
 rc=$?
 cat "$work/out"
 [[ $rc == 0 ]] || fail "exit $rc, not 0 (success)"
-grep -q '^world demo_home_11, start 0, instruction "find a couch"' "$work/out" || fail "no episode line"
-grep -q 'no couch$' "$work/out" && grep -q '^  is in sight from the start at' "$work/out" ||
+grep -q '^world demo_home_11, start 0, instruction "find a bed"' "$work/out" || fail "no episode line"
+grep -q 'no bed$' "$work/out" && grep -q '^  is in sight from the start at' "$work/out" ||
   fail "no out-of-sight line"
 grep -Eq '^  t= *[0-9.]+s  (exploring|looking_around) ' "$work/out" || fail "no progress line while exploring"
-grep -q 'the camera sees a couch' "$work/out" || fail "the target was never reported seen"
-grep -Eq '^SUCCESS after [0-9]+ steps .*: SR 1, SPL 0\.[0-9]+, path [0-9.]+ m, shortest 7\.66 m, .*model calls [0-9]+' \
+grep -q 'the camera sees a bed' "$work/out" || fail "the target was never reported seen"
+grep -Eq '^SUCCESS after [0-9]+ steps .*: SR 1, SPL 0\.[0-9]+, path [0-9.]+ m, shortest 4\.33 m, .*model calls [0-9]+' \
   "$work/out" || fail "no result line with SR, SPL, path, shortest path and model calls"
 grep -q "^report: $work/report/demo.md and $work/report/demo.png" "$work/out" || fail "no report line"
 grep -q '^| ' "$work/report/demo.md" || fail "demo.md has no result table"

@@ -101,6 +101,7 @@ bool Refused(const absl::Status& status) {
 std::string Stamp(const SimRobot& robot) { return absl::StrFormat("t=%.1fs ", robot.time_s()); }
 
 void RecordTask(const api::TaskSnapshot& task, const SimRobot& robot, EpisodeResult& result) {
+  RecordTaskChange(result.trace, robot.time_s(), task);
   const std::string line = absl::StrCat(api::TaskStatus_Name(task.status()), " ", task.phase(), ": ", task.reason(),
                                         " (replans ", task.replans(), ", explore goals ", task.explore_goals(), ")");
   if (result.timeline.empty() || !absl::EndsWith(result.timeline.back(), line)) {
@@ -134,10 +135,12 @@ absl::Status ExecuteCommands(RobotSession& session, CommandExecutor& executor, c
                              const std::vector<api::RobotCommand>& commands, EpisodeResult& result) {
   for (const api::RobotCommand& command : commands) {
     const Feedback feedback = executor.Start(command);
+    RecordFeedback(result.trace, robot.time_s(), feedback.kind, feedback.detail);
     result.timeline.push_back(absl::StrCat(Stamp(robot), "command ", command.command_id(), ": ", Describe(command),
                                            " -> ", api::FeedbackKind_Name(feedback.kind), " ", feedback.detail));
     if (command.action_case() == api::RobotCommand::kNavigate) {
       result.goals.emplace_back(command.navigate().goal().x(), command.navigate().goal().y());
+      RecordNavigateGoal(result.trace, robot.time_s(), result.goals.back());
     }
     if (absl::Status s = session.Send(FeedbackMessage(feedback)); !s.ok()) return s;
   }
@@ -159,6 +162,9 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   SensorConfig sensors = spec.sensors;
   sensors.rgb = sensors.rgb || spec.camera_frames;
   SimRobot robot(spec.world, scene, start, robot_config, sensors, spec.seed);
+  // The true map the robot's body meets, and the target's success region on it (scoring, l_i).
+  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(robot_config, start.position.z()));
+  const SuccessRegion region = SuccessRegion::Build(spec.world, label, grid, spec.success_radius);
   CommandExecutor executor(robot, LiveMapPlanner(endpoints.planning, robot_config.radius));
 
   if (absl::Status s = ResetMap(endpoints.mapping, spec); !s.ok()) return s;
@@ -181,6 +187,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     const SensorFrame captured = robot.Capture();
     for (const Detection& d : captured.detections.detections) {
       if (d.object_index >= 0) result.seen_objects.insert(d.object_index);
+      RecordDetection(result.trace, robot.time_s(), spec.world, label, d.object_index);
     }
     absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(captured, spec.robot_id));
     if (!ack.ok()) return ack.status();
@@ -215,6 +222,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   } else {
     result.final_status = api::TASK_STATUS_FAILED;
     result.final_reason = absl::StrCat("instruction refused: ", task.status().ToString());
+    result.trace.instruction_refused = true;
     result.timeline.push_back(Stamp(robot) + result.final_reason);
   }
 
@@ -230,9 +238,11 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     const std::optional<Feedback> outcome = executor.Step(spec.step_s);
     result.steps = step + 1;
     result.trajectory.push_back(robot.pose().position.head<2>());
+    RecordSample(result.trace, robot.time_s(), result.trajectory.back(), spec.world, label, region);
     if (outcome.has_value()) {
       result.timeline.push_back(absl::StrCat(Stamp(robot), "robot: ", api::FeedbackKind_Name(outcome->kind), " ",
                                              outcome->detail));
+      RecordFeedback(result.trace, robot.time_s(), outcome->kind, outcome->detail);
       if (absl::Status s = (*session)->Send(FeedbackMessage(*outcome)); !s.ok()) return s;
     }
     if (absl::Status s = send_frame(); !s.ok()) return s;
@@ -242,13 +252,13 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   if (task.ok() && !Terminal(result.final_status)) {
     if (absl::Status s = CancelUnfinished(*op, result.task_id); !s.ok()) return s;
     result.timeline.push_back(Stamp(robot) + "budget spent: task cancelled");
+    result.trace.budget_spent = true;
   }
 
   // The stop action is the agent declaring it has arrived: the STOP a task sends when it gives
   // up (FAILED) halts the robot but declares nothing, even if it happens near a target.
   const bool declared = executor.stop_issued() && result.final_status == api::TASK_STATUS_SUCCEEDED;
-  const StopOutcome outcome =
-      ScoreStop(spec.world, label, robot.pose().position.head<2>(), declared, spec.success_radius);
+  const StopOutcome outcome = ScoreStop(spec.world, region, label, robot.pose().position.head<2>(), declared);
   result.stop_issued = declared;
   result.collisions = static_cast<int>(robot.collisions().size());
   result.record.success = outcome.success;
@@ -258,12 +268,16 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.energy_j = robot.energy_j();
   // l_i on the true map the robot's body meets (a fly-roll robot's l_i is its rolling path, an
   // upper bound).
-  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(robot_config, start.position.z()));
   auto planning = semnav::planning::v1::PlanningService::NewStub(endpoints.planning);
-  absl::StatusOr<double> shortest =
-      ShortestPathToTarget(*planning, spec.world, grid, start.position.head<2>(), label, spec.success_radius);
+  absl::StatusOr<double> shortest = ShortestPathToTarget(*planning, region, grid, start.position.head<2>());
   if (!shortest.ok() && !absl::IsNotFound(shortest.status())) return shortest.status();
   result.record.shortest_path_m = shortest.ok() ? *shortest : 0.0;  // unreachable: SPL term is 0
+  result.trace.stop_declared = declared;
+  result.trace.success = outcome.success;
+  result.trace.end_s = robot.time_s();
+  result.trace.bounds_min = spec.world.bounds_min;
+  result.trace.bounds_max = spec.world.bounds_max;
+  result.record.failure_cause = FailureCauseName(ClassifyFailure(result.trace, spec.taxonomy));
   return result;
 }
 

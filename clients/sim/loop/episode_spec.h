@@ -13,6 +13,8 @@
 #include "clients/sim/core/episode_metrics.h"
 #include "clients/sim/core/robot_config.h"
 #include "clients/sim/core/world.h"
+#include "clients/sim/loop/episode_trace.h"
+#include "clients/sim/loop/failure_taxonomy.h"
 #include "semnav/reasoning/v1/task.pb.h"
 
 namespace semnav::sim::loop {
@@ -42,6 +44,8 @@ struct EpisodeSpec {
   // Ground robots look down this much (rad) so low furniture in front of them reaches the map;
   // level (the Habitat agent's 0) leaves everything under 0.88 m unseen within ~1.9 m.
   double ground_camera_pitch = 0.35;
+  // Thresholds that name a failed episode's cause (EpisodeRecord::failure_cause).
+  FailureTaxonomyConfig taxonomy;
 };
 
 struct Endpoints {
@@ -67,6 +71,8 @@ struct EpisodeResult {
   // What the gateway decided and the robot answered, one line per change ("t=12.5s ..."),
   // so a failed episode can be read back.
   std::vector<std::string> timeline;
+  // The same as values, for the failure taxonomy (record.failure_cause).
+  EpisodeTrace trace;
 };
 
 }  // namespace semnav::sim::loop

@@ -26,23 +26,24 @@ common::GridMap ToGridMap(const GroundTruthGrid& grid) {
   return out;
 }
 
+std::optional<NearestGoal> NearestSuccessPoint(const SuccessRegion& region, const GroundTruthGrid& grid,
+                                               const Eigen::Vector2d& start) {
+  if (region.empty()) return std::nullopt;
+  return NearestReachableGoal(grid, start, [&](const Eigen::Vector2d& p) { return region.Contains(p); });
+}
+
 std::optional<NearestGoal> NearestSuccessPoint(const World& world, const GroundTruthGrid& grid,
                                                const Eigen::Vector2d& start, const std::string& label,
                                                double success_radius) {
-  return NearestReachableGoal(grid, start, [&](const Eigen::Vector2d& p) {
-    return DistanceToNearestInstance(world, label, p) <= success_radius;
-  });
+  return NearestSuccessPoint(SuccessRegion::Build(world, label, grid, success_radius), grid, start);
 }
 
-absl::StatusOr<double> ShortestPathToTarget(planning::PlanningService::Stub& stub, const World& world,
-                                            const GroundTruthGrid& grid, const Eigen::Vector2d& start,
-                                            const std::string& label, double success_radius) {
+absl::StatusOr<double> ShortestPathToTarget(planning::PlanningService::Stub& stub, const SuccessRegion& region,
+                                            const GroundTruthGrid& grid, const Eigen::Vector2d& start) {
   // Which point of the success region is nearest by path: a region cell, not the free cell
   // nearest an instance's centre, which can lie on the far side of a long counter or a wall.
-  const std::optional<NearestGoal> nearest = NearestSuccessPoint(world, grid, start, label, success_radius);
-  if (!nearest.has_value()) {
-    return absl::NotFoundError(absl::StrCat("no reachable instance of \"", label, "\""));
-  }
+  const std::optional<NearestGoal> nearest = NearestSuccessPoint(region, grid, start);
+  if (!nearest.has_value()) return absl::NotFoundError("no point of the success region is reachable");
   // The length itself is planning's A* to that cell.
   planning::PlanPathRequest request;
   *request.mutable_source()->mutable_grid() = ToGridMap(grid);

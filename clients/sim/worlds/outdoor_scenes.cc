@@ -1,5 +1,6 @@
 #include "clients/sim/worlds/outdoor_scenes.h"
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <numbers>
@@ -57,7 +58,14 @@ void ScatterTrees(World& world, Rng& rng, int count, double x0, double y0, doubl
         }
       },
       [&](const BoxShape& b) {
-        parts::AddTree(world, b.center.x(), b.center.y(), rng.Uniform(3.5, 6.0));
+        // The canopy (2.4 m, turned 0.3 rad) reaches 1.5 m from the trunk: keep it inside the
+        // bounds, which the world loader checks (moves a tree by at most 0.5 m, same draws).
+        constexpr double kCanopyReach = 1.51;
+        const double x = std::clamp(b.center.x(), world.bounds_min.x() + kCanopyReach,
+                                    world.bounds_max.x() - kCanopyReach);
+        const double y = std::clamp(b.center.y(), world.bounds_min.y() + kCanopyReach,
+                                    world.bounds_max.y() - kCanopyReach);
+        parts::AddTree(world, x, y, rng.Uniform(3.5, 6.0));
       },
       1.0);
 }

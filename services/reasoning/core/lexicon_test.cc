@@ -26,6 +26,19 @@ TEST(GatewayLexiconTest, CoversAllCoco80ClassesInBothLanguages) {
   EXPECT_EQ(count, 80);
 }
 
+// Every object and room can be asked for in Chinese (the simulator's benchmark names its targets
+// by the first Chinese form: clients/sim/bench/target_names.h).
+TEST(GatewayLexiconTest, EveryObjectAndRoomHasAChineseName) {
+  int objects = 0;
+  for (const LexiconEntry& entry : ShippedLexicon().entries()) {
+    if (entry.kind != TermKind::kObject && entry.kind != TermKind::kRoom) continue;
+    objects += entry.kind == TermKind::kObject ? 1 : 0;
+    EXPECT_FALSE(entry.chinese.empty()) << entry.canonical;
+    EXPECT_FALSE(entry.english.empty()) << entry.canonical;
+  }
+  EXPECT_GE(objects, 80);
+}
+
 TEST(GatewayLexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
   const Lexicon& lexicon = ShippedLexicon();
   EXPECT_EQ(lexicon.CanonicalObject("Sofa"), "couch");
