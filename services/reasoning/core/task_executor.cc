@@ -55,7 +55,7 @@ std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose)
   if (CheckRobotPose(pose, "pose").ok()) pose_ = pose;  // a bad pose never becomes a goal
   start_time_ = progress_since_ = now;
   progress_anchor_ = pose_.position;
-  trail_ = {pose_.position};
+  trail_.push_back(pose_.position);
   return EnterSubgoal(now);
 }
 

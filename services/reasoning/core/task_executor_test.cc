@@ -757,3 +757,178 @@ TEST_F(GatewayTaskExecutorTest, OperatorCancelPauseAndResumeWorkWhilePlanningIsG
 
 }  // namespace
 }  // namespace semnav::reasoning
+
+// Regression tests for the mission bench's failure causes (issue 14): scripted timelines.
+namespace semnav::reasoning {
+namespace {
+
+// Stuck without feedback (a robot wedged against furniture, its controller still trying): the
+// progress watchdog re-plans after progress_timeout_s, not after the 120 s navigate timeout.
+TEST_F(GatewayTaskExecutorTest, WatchdogReplansANavigationThatMakesNoProgress) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  for (double now = 0.5; now < 30.0; now += 0.5) {
+    EXPECT_TRUE(task.OnPose(now, At(now < 5 ? 0.0 : 0.5)).empty()) << "at " << now;
+  }
+  // Last progress at t = 5 (0.5 m from the start): 30 s later the watchdog fires.
+  EXPECT_TRUE(task.OnPose(34.5, At(0.5)).empty());
+  out = task.OnPose(35, At(0.5));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_EQ(task.progress().replans, 1);
+  EXPECT_TRUE(planner_.queries.back().start.isApprox(Eigen::Vector3d(0.5, 0, 0)));
+}
+
+// Regression (office_03, "find tv"): the approach ended at the alternative point 2.25 m from the
+// tv and VERIFY waited there for detections until the budget ran out. Now VERIFY times out,
+// looks again from the view distance, and succeeds when the tv is seen from there.
+TEST_F(GatewayTaskExecutorTest, VerifyFromAfarLooksAgainFromTheViewDistanceAndSucceeds) {
+  planner_.failures = {absl::FailedPreconditionError("goal occupied"), absl::FailedPreconditionError("goal occupied")};
+  planner_.alternative_point = Eigen::Vector3d(2.75, 0, 0);
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(10, At(2.75));
+  out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);  // NAVIGATE at the alternative point
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  out = task.OnFeedback(11, out[0].id, RobotFeedback::kGoalReached);  // APPROACH: no closer
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  EXPECT_TRUE(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());  // facing the tv
+  for (double now = 12; now < 21; now += 0.5) EXPECT_TRUE(task.OnPose(now, At(2.75)).empty());
+  out = task.OnPose(21, At(2.75));  // 10 s in VERIFY without a detection
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));
+  EXPECT_EQ(task.progress().target->object_id, 7);  // not rejected
+  task.OnPose(27, At(4.2));
+  EXPECT_TRUE(task.OnFeedback(27, out[0].id, RobotFeedback::kGoalReached).empty());
+  EXPECT_TRUE(task.OnSceneGraph(28, GraphWith({Extinguisher(16)}, 2)).empty());
+  out = task.OnSceneGraph(28.5, GraphWith({Extinguisher(17)}, 3));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+// Regression ("episodes ended within 0.4-0.5 m of the target but never succeeded"): the robot
+// within reach with the target in view stops and succeeds, whatever subgoal it is in.
+TEST_F(GatewayTaskExecutorTest, WithinReachWithTheTargetInViewTheRobotStops) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(5, At(4));
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  // Seen at 1.0 m: not yet within reach (0.8 m with the margin).
+  EXPECT_TRUE(task.OnSceneGraph(5.5, GraphWith({Extinguisher(16)}, 2)).empty());
+  EXPECT_TRUE(task.OnSceneGraph(6, GraphWith({Extinguisher(17)}, 3)).empty());
+  task.OnPose(7, At(4.35));  // 0.65 m: the approach would go on to 0.5 m
+  EXPECT_TRUE(task.OnSceneGraph(7, GraphWith({Extinguisher(18)}, 4)).empty());
+  out = task.OnSceneGraph(7.5, GraphWith({Extinguisher(19)}, 5));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+// Regression (flyroll, fr079: "robot blocked" again and again): a block backs off and re-plans
+// to the same exploration goal with more clearance; blocked again where it was blocked before,
+// the goal is given up with the region around it, and the next one is asked for.
+TEST_F(GatewayTaskExecutorTest, BlockedTwiceAtTheSameSpotGivesTheExplorationGoalUp) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.robot_radius_m = 0.2;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  for (int i = 1; i <= 8; ++i) task.OnPose(i, At(0.25 * i));
+  out = task.OnFeedback(8, out[0].id, RobotFeedback::kBlocked);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "backing_off");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(1.5, 0, 0)));
+  task.OnPose(10, At(1.5));
+  out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));  // the same goal ...
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);     // ... with more clearance
+  task.OnPose(12, At(1.9));
+  out = task.OnFeedback(12, out[0].id, RobotFeedback::kBlocked);  // within 0.5 m of (2, 0)
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  const std::vector<Eigen::Vector3d>& excluded = planner_.exploration_queries.back().excluded_goals;
+  ASSERT_GT(excluded.size(), 1u);
+  EXPECT_TRUE(excluded[0].isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+}
+
+// Regression (office_04: 15 x "no path to the exploration goal"): an unreachable frontier is
+// excluded with the region around it, so its neighbours in the same pocket are not offered one
+// by one; fallback steps with no path are not asked again, and the robot backs off once.
+TEST_F(GatewayTaskExecutorTest, UnreachableExplorationGoalsAreSetAsideWithTheirRegion) {
+  planner_.unreachable = true;
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
+  TaskExecutor task = Make(FindTarget());
+  task.OnPose(0, At(-1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  // The frontier and three fallback directions had no path; the robot backs off (it came from -1).
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "backing_off");
+  ASSERT_EQ(planner_.queries.size(), 4u);
+  const ExplorationQuery query = planner_.exploration_queries.back();
+  const auto excluded = [&](const Eigen::Vector3d& point) {
+    for (const Eigen::Vector3d& goal : query.excluded_goals) {
+      if ((goal - point).head<2>().norm() <= 1.0) return true;
+    }
+    return false;
+  };
+  planner_.frontiers = {Eigen::Vector3d(1.5, 10.8, 0)};  // the same pocket
+  out = task.OnFeedback(2, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  const ExplorationQuery next = planner_.exploration_queries.back();
+  bool covered = false;
+  for (const Eigen::Vector3d& goal : next.excluded_goals) {
+    covered = covered || (goal - Eigen::Vector3d(1.5, 10.8, 0)).head<2>().norm() <= 1.0;
+  }
+  EXPECT_TRUE(covered);
+  EXPECT_TRUE(excluded(Eigen::Vector3d(1.2, 11.2, 0)));   // the region around (0, 10) ...
+  EXPECT_FALSE(excluded(Eigen::Vector3d(0, 13.5, 0)));  // ... is 2 m (+ planning's 1 m)
+  // The three new fallback directions differ from the first three.
+  ASSERT_GE(planner_.queries.size(), 8u);
+  for (std::size_t i = 5; i < 8; ++i) {
+    for (std::size_t j = 1; j < 4; ++j) {
+      EXPECT_GT((planner_.queries[i].goal - planner_.queries[j].goal).norm(), 1.0) << i << " vs " << j;
+    }
+  }
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);  // backed off already: now look around
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+}
+
+// The last steps of the budget: with endgame_s left and no accepted target, the robot goes to
+// the best candidate seen (below the fast path's threshold) rather than to a new frontier.
+TEST_F(GatewayTaskExecutorTest, EndgameGoesToTheBestCandidateSeen) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0)};
+  ExecutorConfig config;
+  config.time_budget_s = 100.0;
+  config.endgame_s = 40.0;
+  TaskExecutor task = Make(FindTarget(), config);
+  task.OnSceneGraph(0, GraphWith({Extinguisher(1)}, 1));  // too unsure for the fast path
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));
+  EXPECT_FALSE(task.progress().target.has_value());
+  for (double now = 1; now < 60; now += 1) EXPECT_TRUE(task.OnPose(now, At(-now / 10)).empty()) << now;
+  out = task.OnPose(60, At(-6));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_TRUE(task.progress().target.has_value());
+  EXPECT_EQ(task.progress().target->object_id, 7);
+  EXPECT_EQ(task.progress().target->path, "endgame");
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
