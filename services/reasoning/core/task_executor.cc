@@ -302,7 +302,7 @@ std::optional<ModelRequest> TaskExecutor::TakeModelRequest() {
 }
 
 std::vector<RobotCommand> TaskExecutor::Explore(double now) {
-  if (InEndgame(now) && current().type != SubgoalType::kExplore && TakeBestCandidate(now)) return EnterSubgoal(now);
+  if (InEndgame(now) && current().type != SubgoalType::kExplore && TakeBestCandidate()) return GoToBestCandidate(now);
   if (progress_.explore_goals >= config_.max_explore_goals) {
     if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration budget used");
     return Fail(absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
@@ -388,7 +388,7 @@ bool TaskExecutor::InEndgame(double now) const {
   return config_.time_budget_s > 0.0 && now - start_time_ >= config_.time_budget_s - config_.endgame_s;
 }
 
-bool TaskExecutor::TakeBestCandidate(double now) {
+bool TaskExecutor::TakeBestCandidate() {
   if (endgame_taken_ || progress_.target.has_value()) return false;
   std::set<int64_t> skip = excluded_;
   skip.insert(set_aside_.begin(), set_aside_.end());
@@ -397,10 +397,19 @@ bool TaskExecutor::TakeBestCandidate(double now) {
   const SceneObject* object = graph_.FindObject(resolution.best->object_id);
   if (object == nullptr) return false;
   endgame_taken_ = true;
-  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "endgame", 0};
-  progress_.reason = absl::StrCat(now - start_time_, " s of ", config_.time_budget_s,
-                                  " s used: going to the best candidate seen, object ", object->id);
+  // The fast path found it (below its threshold): reported as a fast-path resolution.
+  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "fast", 0};
   return true;
+}
+
+std::vector<RobotCommand> TaskExecutor::GoToBestCandidate(double now) {
+  const int64_t id = progress_.target->object_id;
+  std::vector<RobotCommand> out = EnterSubgoal(now);
+  if (progress_.state == TaskState::kRunning) {
+    progress_.reason = absl::StrCat(progress_.reason, " (endgame: ", config_.time_budget_s - (now - start_time_),
+                                    " s left, best candidate seen: object ", id, ")");
+  }
+  return out;
 }
 
 std::vector<RobotCommand> TaskExecutor::PauseExploring(double now,
@@ -708,7 +717,7 @@ std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose
   if (progress_.state != TaskState::kRunning || phase_ == Phase::kIdle) return {};
   const bool searching = (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) &&
                          current().type != SubgoalType::kExplore;
-  if (searching && InEndgame(now) && TakeBestCandidate(now)) return EnterSubgoal(now);
+  if (searching && InEndgame(now) && TakeBestCandidate()) return GoToBestCandidate(now);
   WatchProgress(now);
   const bool timed = phase_ == Phase::kRotating || phase_ == Phase::kWaiting || phase_ == Phase::kExploreScan;
   if (!timed && now - progress_since_ >= config_.progress_timeout_s) {

@@ -202,8 +202,9 @@ class TaskExecutor {
   // Spends an exploration goal; an unreachable one with the region around it.
   void SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable);
   // Endgame: with little budget left, the best candidate seen becomes the target.
-  bool TakeBestCandidate(double now);
+  bool TakeBestCandidate();
   bool InEndgame(double now) const;
+  std::vector<RobotCommand> GoToBestCandidate(double now);
   std::vector<RobotCommand> FallbackStep(double now);
   bool TryResolve();
   void MaybeRequestModel();
