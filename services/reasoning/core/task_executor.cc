@@ -563,17 +563,32 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
   }
   if (second_look_target_ != id) {
     second_look_target_ = id;
-    // One more look from the view distance on the line from the target to the robot.
-    Eigen::Vector3d away = pose_.position - progress_.target->position;
+    // One more look from verify_view_m: the robot's side first, then from other sides (the
+    // approach may have ended at an alternative point behind furniture). A view point counts
+    // only when its planned path ends within reach of the target.
+    constexpr int kSides = 8;
+    constexpr int kViewPlans = 3;  // planning calls run under the gateway lock
+    const Eigen::Vector3d target = progress_.target->position;
+    Eigen::Vector3d away = pose_.position - target;
     away.z() = 0.0;
-    const double d = away.norm();
-    Eigen::Vector3d view = d > 1e-6 ? Eigen::Vector3d(progress_.target->position + away * (config_.verify_view_m / d))
-                                    : pose_.position;
-    view.z() = pose_.position.z();
-    const Eigen::Vector3d to_target = progress_.target->position - view;
+    const double own_side = away.norm() > 1e-6 ? std::atan2(away.y(), away.x()) : pose_.yaw + M_PI;
     progress_.target->detections_at_verify = object != nullptr ? object->detection_count : 0;
-    return MoveTo(now, view, std::atan2(to_target.y(), to_target.x()), 0.0, Phase::kVerifying,
-                  absl::StrCat("object ", id, " not confirmed yet: looking again from ", config_.verify_view_m, " m"));
+    for (int k = 0, planned = 0; k < kSides && planned < kViewPlans; ++k) {
+      const int side = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);  // 0, +45, -45, +90, ... deg
+      const double angle = own_side + side * (2.0 * M_PI / kSides);
+      Eigen::Vector3d view = target + config_.verify_view_m * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
+      view.z() = pose_.position.z();
+      ++planned;
+      absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(view);
+      if (absl::IsUnavailable(path.status())) return PauseForDependency(now, path.status());
+      if (!path.ok()) continue;
+      const Eigen::Vector3d end = path->empty() ? view : path->back();
+      if ((end - target).head<2>().norm() > config_.success_radius_m) continue;
+      const Eigen::Vector3d to_target = target - end;
+      return Navigate(now, view, *std::move(path), std::atan2(to_target.y(), to_target.x()), 0.0, Phase::kVerifying,
+                      absl::StrCat("object ", id, " not confirmed yet: looking again from ", config_.verify_view_m,
+                                   " m", side == 0 ? "" : " on another side"));
+    }
   }
   second_look_target_ = -1;
   return SetTargetAside(now, absl::StrCat("not confirmed within ", config_.verify_timeout_s, " s, twice"));

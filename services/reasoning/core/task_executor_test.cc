@@ -400,7 +400,7 @@ TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetGetsASecondLookThenIsSetAside) 
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "verifying");
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));  // 0.8 m from the target
-  EXPECT_DOUBLE_EQ(out[0].goal_yaw, 0.0);
+  EXPECT_NEAR(out[0].goal_yaw, 0.0, 1e-9);
   task.OnPose(12, At(4.2));
   EXPECT_TRUE(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());
   out = task.OnPose(20, At(4.2));  // the second look times out too
@@ -782,8 +782,9 @@ TEST_F(GatewayTaskExecutorTest, WatchdogReplansANavigationThatMakesNoProgress) {
 }
 
 // Regression (office_03, "find tv"): the approach ended at the alternative point 2.25 m from the
-// tv and VERIFY waited there for detections until the budget ran out. Now VERIFY times out,
-// looks again from the view distance, and succeeds when the tv is seen from there.
+// tv, behind furniture, and VERIFY waited there for detections until the budget ran out. Now
+// VERIFY times out and looks again from the view distance: its own side leads back to the same
+// alternative point, so from another side, and it succeeds when the tv is seen from there.
 TEST_F(GatewayTaskExecutorTest, VerifyFromAfarLooksAgainFromTheViewDistanceAndSucceeds) {
   planner_.failures = {absl::FailedPreconditionError("goal occupied"), absl::FailedPreconditionError("goal occupied")};
   planner_.alternative_point = Eigen::Vector3d(2.75, 0, 0);
@@ -799,13 +800,16 @@ TEST_F(GatewayTaskExecutorTest, VerifyFromAfarLooksAgainFromTheViewDistanceAndSu
   EXPECT_EQ(task.progress().phase, "verifying");
   EXPECT_TRUE(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());  // facing the tv
   for (double now = 12; now < 21; now += 0.5) EXPECT_TRUE(task.OnPose(now, At(2.75)).empty());
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};  // the own side's view point
   out = task.OnPose(21, At(2.75));  // 10 s in VERIFY without a detection
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "verifying");
   EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
-  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));
+  const Eigen::Vector3d side = Eigen::Vector3d(5, 0, 0) + 0.8 * Eigen::Vector3d(-std::sqrt(0.5), -std::sqrt(0.5), 0);
+  EXPECT_TRUE(out[0].goal.isApprox(side)) << out[0].goal.transpose();
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "another side")) << task.progress().reason;
   EXPECT_EQ(task.progress().target->object_id, 7);  // not rejected
-  task.OnPose(27, At(4.2));
+  task.OnPose(27, RobotPose{side, 0.0});
   EXPECT_TRUE(task.OnFeedback(27, out[0].id, RobotFeedback::kGoalReached).empty());
   EXPECT_TRUE(task.OnSceneGraph(28, GraphWith({Extinguisher(16)}, 2)).empty());
   out = task.OnSceneGraph(28.5, GraphWith({Extinguisher(17)}, 3));
