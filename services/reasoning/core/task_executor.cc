@@ -556,7 +556,9 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
   const int64_t id = progress_.target->object_id;
   const SceneObject* object = graph_.FindObject(id);
   const double distance = (progress_.target->position - pose_.position).head<2>().norm();
-  if (object != nullptr && distance <= config_.success_radius_m &&
+  // Accepted only when seen from within reach at least once: a misplaced or phantom object
+  // (office_03: a "tv" mapped on the wrong side of a cabinet) never is.
+  if (object != nullptr && distance <= config_.success_radius_m && close_target_ == id && close_detections_ >= 1 &&
       object->detection_count >= config_.verify_accept_detections) {
     return TargetReached(now, absl::StrCat("object ", id, " accepted: ", object->detection_count,
                                            " detections, within reach, none new while facing it"));
@@ -609,12 +611,26 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
       });
   blocked_spots_.push_back(pose_.position);
   extra_clearance_m_ = std::min(extra_clearance_m_ + config_.blocked_clearance_step_m, config_.blocked_clearance_max_m);
-  if (same_spot || blocks_on_goal_ >= config_.max_blocks_per_goal) {
-    const std::string why = same_spot ? "robot blocked again where it was blocked before"
-                                      : absl::StrCat("robot blocked ", blocks_on_goal_, " times on the way");
+  // The multi-modal search has no footprint inflation to raise: re-planning the same goal would
+  // graze the same obstacle, so the goal is given up at once (the robot backed up already).
+  if (same_spot || blocks_on_goal_ >= config_.max_blocks_per_goal || config_.multi_modal) {
+    const std::string why = same_spot           ? "robot blocked again where it was blocked before"
+                            : config_.multi_modal ? "robot blocked"
+                                                  : absl::StrCat("robot blocked ", blocks_on_goal_, " times on the way");
     blocked_goal_.reset();
     blocks_on_goal_ = 0;
-    if (exploring) return ExplorationFailed(now, why);
+    if (exploring) {
+      // Another route may reach it: the goal alone is spent, not its region.
+      if (explore_goal_.has_value()) {
+        SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
+        explore_goal_.reset();
+        --progress_.explore_goals;  // never reached: no budget used
+        std::vector<RobotCommand> out = Explore(now);
+        if (progress_.state == TaskState::kRunning) progress_.reason = absl::StrCat(progress_.reason, " (", why, ")");
+        return out;
+      }
+      return ExplorationFailed(now, why);
+    }
     if (progress_.target.has_value()) return SetTargetAside(now, why);
     return Replan(now, why);
   }
@@ -622,12 +638,17 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
 }
 
 std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_exploring, const std::string& reason) {
-  // Retrace the trail (space the robot just drove through) to the newest point backoff_m away.
+  // Back to the newest trail point (space the robot just drove through) at least backoff_m away
+  // and behind the robot: it faces the obstacle, and its own recovery may have backed it up past
+  // the newest points already.
+  const Eigen::Vector3d heading(std::cos(pose_.yaw), std::sin(pose_.yaw), 0.0);
   std::vector<Eigen::Vector3d> path = {pose_.position};
   for (auto it = trail_.rbegin(); it != trail_.rend(); ++it) {
-    if ((*it - pose_.position).head<2>().norm() < 1e-6) continue;
-    path.push_back(*it);
-    if ((*it - pose_.position).head<2>().norm() >= config_.backoff_m) break;
+    const Eigen::Vector3d offset = *it - pose_.position;
+    if (offset.head<2>().norm() >= config_.backoff_m && offset.head<2>().dot(heading.head<2>()) < 0.0) {
+      path.push_back(*it);
+      break;
+    }
   }
   if (path.size() == 1 || (path.back() - pose_.position).head<2>().norm() < config_.backoff_m) {
     path = {pose_.position,
