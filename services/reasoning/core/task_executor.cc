@@ -706,7 +706,12 @@ void TaskExecutor::WatchProgress(double now) {
 std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_id, RobotFeedback feedback) {
   if (progress_.state != TaskState::kRunning || command_id != active_command_) return {};
   if (feedback == RobotFeedback::kBlocked) return Blocked(now);
-  if (feedback != RobotFeedback::kGoalReached) return Replan(now, "robot reported failure");
+  if (feedback != RobotFeedback::kGoalReached) {
+    // The robot could not drive a fallback step (its local planner found no way): that
+    // direction is not offered again.
+    if (phase_ == Phase::kExploring && !explore_goal_.has_value()) failed_fallback_steps_.push_back(active_goal_);
+    return Replan(now, "robot reported failure");
+  }
   if (phase_ == Phase::kMoving || phase_ == Phase::kExploring) {
     extra_clearance_m_ = 0.0;  // a goal reached: back to the normal clearance
     blocked_goal_.reset();

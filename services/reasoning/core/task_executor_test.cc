@@ -342,10 +342,17 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   std::vector<RobotCommand> next = task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
   ASSERT_EQ(next.size(), 1u);
   EXPECT_EQ(next[0].kind, CommandKind::kNavigate);
+  const Eigen::Vector3d failed_step = next[0].goal;
   next = task.OnFeedback(13, next[0].id, RobotFeedback::kFailed);
   ASSERT_EQ(next.size(), 1u);
   EXPECT_EQ(next[0].kind, CommandKind::kRotate);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  // Regression (house_expo_room_0000: the same fallback step sent 10 times, the robot's local
+  // planner failing on each): after the scan another direction is tried.
+  next = task.OnFeedback(25, next[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].kind, CommandKind::kNavigate);
+  EXPECT_GT((next[0].goal - failed_step).norm(), 2.0);
 }
 
 TEST_F(GatewayTaskExecutorTest, FailedExplorationGoalIsExcludedAndExplorationGoesOn) {
