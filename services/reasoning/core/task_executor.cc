@@ -634,6 +634,10 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
     if (progress_.target.has_value()) return SetTargetAside(now, why);
     return Replan(now, why);
   }
+  if (config_.backoff_m <= 0.0) {  // the robot's own controller backs up (Nav2's BackUp)
+    resume_exploring_ = exploring;
+    return ResumeAfterBackoff(now);
+  }
   return BackOff(now, exploring, "robot blocked; backing off to re-plan with more clearance");
 }
 
@@ -645,7 +649,9 @@ std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_explorin
   std::vector<Eigen::Vector3d> path = {pose_.position};
   for (auto it = trail_.rbegin(); it != trail_.rend(); ++it) {
     const Eigen::Vector3d offset = *it - pose_.position;
-    if (offset.head<2>().norm() >= config_.backoff_m && offset.head<2>().dot(heading.head<2>()) < 0.0) {
+    const double distance = offset.head<2>().norm();
+    if (distance > 2.0 * config_.backoff_m) break;  // too far for a straight retreat
+    if (distance >= config_.backoff_m && offset.head<2>().dot(heading.head<2>()) < 0.0) {
       path.push_back(*it);
       break;
     }

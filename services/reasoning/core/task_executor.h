@@ -69,11 +69,13 @@ struct ExecutorConfig {
   int verify_accept_detections = 4;
   double verify_view_m = 0.8;
   // Blocked recovery: after the robot reports BLOCKED it backs off backoff_m along the way it
-  // came, and the next plans keep blocked_clearance_step_m more clearance per block (at most
+  // came (0 = not: the robot's own controller backs up, as Nav2's BackUp and the simulator's
+  // do; a retreat in the executor cost the hand-drawn office_kitchenette its bowl), and the
+  // next plans keep blocked_clearance_step_m more clearance per block (at most
   // blocked_clearance_max_m, back to normal once a goal is reached). A goal the robot is blocked
   // on max_blocks_per_goal times, or again within blocked_spot_radius_m of a spot it was blocked
   // at, is given up: an exploration goal is spent, a target set aside.
-  double backoff_m = 0.5;
+  double backoff_m = 0.0;
   double blocked_clearance_step_m = 0.1;
   double blocked_clearance_max_m = 0.3;
   int max_blocks_per_goal = 2;

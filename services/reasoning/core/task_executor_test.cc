@@ -546,6 +546,7 @@ TEST_F(GatewayTaskExecutorTest, NoPathToTheTargetExploresInstead) {
 TEST_F(GatewayTaskExecutorTest, BlockedFeedbackBacksOffAndPlansAgainWithMoreClearance) {
   ExecutorConfig config;
   config.robot_radius_m = 0.2;
+  config.backoff_m = 0.5;  // a robot without its own back-up recovery
   TaskExecutor task = Make(GoToTarget(), config);
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   std::vector<RobotCommand> out = task.Start(0, At(0));
@@ -855,6 +856,7 @@ TEST_F(GatewayTaskExecutorTest, BlockedTwiceAtTheSameSpotGivesTheExplorationGoal
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
   ExecutorConfig config;
   config.robot_radius_m = 0.2;
+  config.backoff_m = 0.5;
   TaskExecutor task = Make(FindTarget(), config);
   std::vector<RobotCommand> out = task.Start(0, At(0));
   for (int i = 1; i <= 8; ++i) task.OnPose(i, At(0.25 * i));
@@ -881,6 +883,23 @@ TEST_F(GatewayTaskExecutorTest, BlockedTwiceAtTheSameSpotGivesTheExplorationGoal
 
 // Fly-roll (multi-modal) paths have no footprint inflation to raise: a block gives the
 // exploration goal up at once instead of backing off to re-plan the same grazing path.
+// Default (the robot backs up by itself): a block re-plans the same goal at once, with more
+// clearance, from where the robot stands.
+TEST_F(GatewayTaskExecutorTest, BlockedReplansTheSameGoalWithMoreClearance) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.robot_radius_m = 0.2;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(4, At(1));
+  out = task.OnFeedback(4, out[0].id, RobotFeedback::kBlocked);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_TRUE(planner_.queries.back().start.isApprox(Eigen::Vector3d(1, 0, 0)));
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);
+}
+
 TEST_F(GatewayTaskExecutorTest, MultiModalBlockGivesTheExplorationGoalUpAtOnce) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
   ExecutorConfig config;

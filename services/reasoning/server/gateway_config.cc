@@ -84,7 +84,7 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(c.executor.verify_accept_detections >= 1, "verify_accept_detections", "must be >= 1");
   executor.Check(c.executor.verify_view_m > 0.0 && c.executor.verify_view_m <= c.executor.success_radius_m,
                  "verify_view_m", "must be in (0, success_radius_m]");
-  executor.Check(c.executor.backoff_m > 0.0 && c.executor.backoff_m <= 5.0, "backoff_m", "must be in (0, 5]");
+  executor.Check(c.executor.backoff_m >= 0.0 && c.executor.backoff_m <= 5.0, "backoff_m", "must be in [0, 5]");
   executor.Check(c.executor.blocked_clearance_step_m >= 0.0, "blocked_clearance_step_m", "must be >= 0");
   executor.Check(c.executor.blocked_clearance_max_m >= 0.0 && c.executor.blocked_clearance_max_m <= 2.0,
                  "blocked_clearance_max_m", "must be in [0, 2]");
