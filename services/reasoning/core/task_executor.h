@@ -70,8 +70,8 @@ struct ExecutorConfig {
   double verify_view_m = 0.8;
   // Blocked recovery: after the robot reports BLOCKED it backs off backoff_m along the way it
   // came (0 = not: the robot's own controller backs up, as Nav2's BackUp and the simulator's
-  // do; a retreat in the executor cost the hand-drawn office_kitchenette its bowl), and the
-  // next plans keep blocked_clearance_step_m more clearance per block (at most
+  // do; an extra executor retreat showed no benefit in the mission bench), and the next plans
+  // keep blocked_clearance_step_m more clearance per block (at most
   // blocked_clearance_max_m, back to normal once a goal is reached). A goal the robot is blocked
   // on max_blocks_per_goal times, or again within blocked_spot_radius_m of a spot it was blocked
   // at, is given up: an exploration goal is spent, a target set aside.
