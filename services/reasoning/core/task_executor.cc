@@ -53,6 +53,9 @@ double TaskExecutor::YawTo(const Eigen::Vector3d& point) const {
 
 std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose) {
   if (CheckRobotPose(pose, "pose").ok()) pose_ = pose;  // a bad pose never becomes a goal
+  start_time_ = progress_since_ = now;
+  progress_anchor_ = pose_.position;
+  trail_.push_back(pose_.position);
   return EnterSubgoal(now);
 }
 
@@ -88,7 +91,11 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
   command.path = path;
   if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.path = std::move(path);
-  progress_.phase = phase == Phase::kExploring ? "exploring" : phase == Phase::kVerifying ? "verifying" : "navigating";
+  active_goal_ = command.goal;
+  progress_.phase = phase == Phase::kExploring     ? "exploring"
+                    : phase == Phase::kVerifying   ? "verifying"
+                    : phase == Phase::kBackingOff  ? "backing_off"
+                                                   : "navigating";
   progress_.reason = reason;
   phase_ = phase;
   phase_deadline_ = now + (phase == Phase::kVerifying ? config_.verify_timeout_s : config_.navigate_timeout_s);
@@ -97,7 +104,8 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
 
 absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal) {
   if ((goal - pose_.position).head<2>().norm() < 1e-6) return std::vector<Eigen::Vector3d>{};  // turn in place
-  const double clearance = config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0;
+  // After a block the path keeps more clearance (re-plan with inflated costs).
+  const double clearance = (config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0) + extra_clearance_m_;
   PathQuery query{pose_.position, goal, config_.multi_modal, config_.robot_radius_m, clearance, std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
   if (absl::IsFailedPrecondition(path.status())) {
@@ -197,6 +205,7 @@ std::vector<RobotCommand> TaskExecutor::Refuse(const absl::Status& refused) {
 }
 
 std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& reason) {
+  if (phase_ == Phase::kBackingOff) return ResumeAfterBackoff(now);
   if (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) return ExplorationFailed(now, reason);
   if (++progress_.replans > config_.max_replans) {
     if (progress_.target.has_value()) {
@@ -216,7 +225,7 @@ std::vector<RobotCommand> TaskExecutor::ExplorationFailed(double now, const std:
     return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
                   absl::StrCat(reason, "; looking around"));
   }
-  spent_explore_goals_.push_back(*explore_goal_);
+  SpendExploreGoal(*explore_goal_, /*unreachable=*/true);
   // A goal never reached explored nothing: it does not use the budget (the spent list bounds
   // the retries, since planning never offers it again).
   --progress_.explore_goals;
@@ -293,6 +302,7 @@ std::optional<ModelRequest> TaskExecutor::TakeModelRequest() {
 }
 
 std::vector<RobotCommand> TaskExecutor::Explore(double now) {
+  if (InEndgame(now) && current().type != SubgoalType::kExplore && TakeBestCandidate()) return GoToBestCandidate(now);
   if (progress_.explore_goals >= config_.max_explore_goals) {
     if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration budget used");
     return Fail(absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
@@ -312,17 +322,92 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
     const bool moves = path.ok() && (path->empty() || (path->back() - pose_.position).head<2>().norm() >=
                                                           config_.min_explore_step_m);
     if (moves) return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring, "exploring for the target");
-    spent_explore_goals_.push_back(*goal);
+    // No path: the frontiers around it lie in the same unreachable pocket.
+    SpendExploreGoal(*goal, absl::IsNotFound(path.status()));
   }
-  // No usable frontier from planning: step toward the least-explored sector of the topological memory.
+  return FallbackStep(now);
+}
+
+// No usable frontier from planning: step toward the least-explored sector of the topological
+// memory, then its neighbours; directions that had no path are not asked again.
+std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
+  constexpr int kDirections = 8;
+  constexpr int kStepsPerCall = 3;  // planning calls run under the gateway lock
   explore_goal_.reset();
-  const double yaw = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
-  const Eigen::Vector3d target =
-      pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
-  std::vector<RobotCommand> out =
-      MoveTo(now, target, YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
-  if (progress_.state == TaskState::kPaused && waiting_for_dependency()) {
-    --progress_.explore_goals;  // no goal was driven to: the retry asks again
+  const double least = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
+  int asked = 0;
+  for (int k = 0; k < kDirections && asked < kStepsPerCall; ++k) {
+    const int side = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);  // 0, +1, -1, +2, -2, ... sectors
+    const double yaw = least + side * (2.0 * M_PI / kDirections);
+    const Eigen::Vector3d target =
+        pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
+    const bool failed_before = std::any_of(
+        failed_fallback_steps_.begin(), failed_fallback_steps_.end(), [&](const Eigen::Vector3d& failed) {
+          return (failed - target).head<2>().norm() <= config_.unreachable_region_m;
+        });
+    if (failed_before) continue;
+    ++asked;
+    absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(target);
+    if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
+    if (path.ok()) {
+      return Navigate(now, target, *std::move(path), YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
+    }
+    if (absl::IsNotFound(path.status())) failed_fallback_steps_.push_back(target);
+  }
+  // Nothing can be planned from here: the robot may stand where planning cannot start (a narrow
+  // gap, an inflated wall). Back off along the way it came once, then look around.
+  if (!last_fallback_backed_off_ && trail_.size() >= 2) {
+    last_fallback_backed_off_ = true;
+    --progress_.explore_goals;  // the exploration step after backing off asks again
+    return BackOff(now, /*resume_exploring=*/true, "no path to the exploration goal from here; backing off");
+  }
+  last_fallback_backed_off_ = false;
+  return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
+                "no path to the exploration goal; looking around");
+}
+
+void TaskExecutor::SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable) {
+  spent_explore_goals_.push_back(goal);
+  // Planning excludes a disc of excluded_radius_m (0 = 1 m) around each spent goal: cover the
+  // region with such discs on a hexagonal lattice (spacing sqrt(3) r covers the plane).
+  const double r = config_.explore_exclusion_radius_m > 0.0 ? config_.explore_exclusion_radius_m : 1.0;
+  const double region = config_.unreachable_region_m;
+  if (!unreachable || region <= r) return;
+  const double spacing = std::sqrt(3.0) * r;
+  const int n = static_cast<int>(std::ceil(region / spacing)) + 1;
+  for (int i = -n; i <= n; ++i) {
+    for (int j = -n; j <= n; ++j) {
+      const Eigen::Vector3d offset(spacing * (i + 0.5 * j), spacing * (std::sqrt(3.0) / 2.0) * j, 0.0);
+      const double distance = offset.head<2>().norm();
+      if (distance > 1e-9 && distance <= region) spent_explore_goals_.push_back(goal + offset);
+    }
+  }
+}
+
+bool TaskExecutor::InEndgame(double now) const {
+  return config_.time_budget_s > 0.0 && now - start_time_ >= config_.time_budget_s - config_.endgame_s;
+}
+
+bool TaskExecutor::TakeBestCandidate() {
+  if (endgame_taken_ || progress_.target.has_value()) return false;
+  std::set<int64_t> skip = excluded_;
+  skip.insert(set_aside_.begin(), set_aside_.end());
+  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
+  if (!resolution.best.has_value()) return false;
+  const SceneObject* object = graph_.FindObject(resolution.best->object_id);
+  if (object == nullptr) return false;
+  endgame_taken_ = true;
+  // The fast path found it (below its threshold): reported as a fast-path resolution.
+  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "fast", 0};
+  return true;
+}
+
+std::vector<RobotCommand> TaskExecutor::GoToBestCandidate(double now) {
+  const int64_t id = progress_.target->object_id;
+  std::vector<RobotCommand> out = EnterSubgoal(now);
+  if (progress_.state == TaskState::kRunning) {
+    progress_.reason = absl::StrCat(progress_.reason, " (endgame: ", config_.time_budget_s - (now - start_time_),
+                                    " s left, best candidate seen: object ", id, ")");
   }
   return out;
 }
@@ -432,19 +517,222 @@ std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
                 "verified but too far: approaching");
 }
 
+std::vector<RobotCommand> TaskExecutor::TargetReached(double now, const std::string& reason) {
+  const std::string name = ActiveTarget().name;
+  int next = progress_.subgoal_index;
+  for (; next < static_cast<int>(subgoals_.size()); ++next) {
+    const Subgoal& goal = subgoals_[static_cast<std::size_t>(next)];
+    const bool about_target = goal.type == SubgoalType::kFind || goal.type == SubgoalType::kApproach ||
+                              goal.type == SubgoalType::kVerify ||
+                              (goal.type == SubgoalType::kNavigate && !goal.target.is_room);
+    if (goal.type != SubgoalType::kLookAround && !(about_target && goal.target.name == name)) break;
+  }
+  progress_.subgoal_index = next - 1;  // NextSubgoal steps past the last one about the target
+  return NextSubgoal(now, reason);
+}
+
+std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now, int fresh_detections) {
+  if (!progress_.target.has_value() || phase_ == Phase::kIdle) return std::nullopt;
+  const SubgoalType type = current().type;
+  const bool about_target = type == SubgoalType::kApproach || type == SubgoalType::kVerify ||
+                            (type == SubgoalType::kNavigate && !current().target.is_room);
+  if (!about_target) return std::nullopt;
+  if (close_target_ != progress_.target->object_id) {
+    close_target_ = progress_.target->object_id;
+    close_detections_ = 0;
+  }
+  const double distance = (progress_.target->position - pose_.position).head<2>().norm();
+  if (distance > config_.success_radius_m - config_.success_margin_m) {
+    close_detections_ = 0;
+    return std::nullopt;
+  }
+  close_detections_ += fresh_detections;
+  if (close_detections_ < config_.verify_detections) return std::nullopt;
+  return TargetReached(now, absl::StrCat("object ", progress_.target->object_id, " in view within ",
+                                         absl::SixDigits(distance), " m: stopping"));
+}
+
+std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
+  const int64_t id = progress_.target->object_id;
+  const SceneObject* object = graph_.FindObject(id);
+  const double distance = (progress_.target->position - pose_.position).head<2>().norm();
+  // Accepted only when seen from within reach at least once: a misplaced or phantom object
+  // (office_03: a "tv" mapped on the wrong side of a cabinet) never is.
+  if (object != nullptr && distance <= config_.success_radius_m && close_target_ == id && close_detections_ >= 1 &&
+      object->detection_count >= config_.verify_accept_detections) {
+    return TargetReached(now, absl::StrCat("object ", id, " accepted: ", object->detection_count,
+                                           " detections, within reach, none new while facing it"));
+  }
+  if (second_look_target_ != id) {
+    second_look_target_ = id;
+    // One more look from verify_view_m: the robot's side first, then from other sides (the
+    // approach may have ended at an alternative point behind furniture). A view point counts
+    // only when its planned path ends within reach of the target.
+    constexpr int kSides = 8;
+    constexpr int kViewPlans = 3;  // planning calls run under the gateway lock
+    const Eigen::Vector3d target = progress_.target->position;
+    Eigen::Vector3d away = pose_.position - target;
+    away.z() = 0.0;
+    const double own_side = away.norm() > 1e-6 ? std::atan2(away.y(), away.x()) : pose_.yaw + M_PI;
+    progress_.target->detections_at_verify = object != nullptr ? object->detection_count : 0;
+    for (int k = 0, planned = 0; k < kSides && planned < kViewPlans; ++k) {
+      const int side = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);  // 0, +45, -45, +90, ... deg
+      const double angle = own_side + side * (2.0 * M_PI / kSides);
+      Eigen::Vector3d view = target + config_.verify_view_m * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
+      view.z() = pose_.position.z();
+      ++planned;
+      absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(view);
+      if (absl::IsUnavailable(path.status())) return PauseForDependency(now, path.status());
+      if (!path.ok()) continue;
+      const Eigen::Vector3d end = path->empty() ? view : path->back();
+      if ((end - target).head<2>().norm() > config_.success_radius_m) continue;
+      const Eigen::Vector3d to_target = target - end;
+      return Navigate(now, view, *std::move(path), std::atan2(to_target.y(), to_target.x()), 0.0, Phase::kVerifying,
+                      absl::StrCat("object ", id, " not confirmed yet: looking again from ", config_.verify_view_m,
+                                   " m", side == 0 ? "" : " on another side"));
+    }
+  }
+  second_look_target_ = -1;
+  return SetTargetAside(now, absl::StrCat("not confirmed within ", config_.verify_timeout_s, " s, twice"));
+}
+
+std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
+  if (phase_ == Phase::kBackingOff) return ResumeAfterBackoff(now);  // cannot back off: re-plan from here
+  const bool exploring = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
+  if (!blocked_goal_.has_value() ||
+      (active_goal_ - *blocked_goal_).head<2>().norm() > config_.blocked_spot_radius_m) {
+    blocked_goal_ = active_goal_;
+    blocks_on_goal_ = 0;
+  }
+  ++blocks_on_goal_;
+  const bool same_spot =
+      std::any_of(blocked_spots_.begin(), blocked_spots_.end(), [&](const Eigen::Vector3d& spot) {
+        return (spot - pose_.position).head<2>().norm() <= config_.blocked_spot_radius_m;
+      });
+  blocked_spots_.push_back(pose_.position);
+  extra_clearance_m_ = std::min(extra_clearance_m_ + config_.blocked_clearance_step_m, config_.blocked_clearance_max_m);
+  // The multi-modal search has no footprint inflation to raise: re-planning the same goal would
+  // graze the same obstacle, so the goal is given up at once (the robot backed up already).
+  if (same_spot || blocks_on_goal_ >= config_.max_blocks_per_goal || config_.multi_modal) {
+    const std::string why = same_spot           ? "robot blocked again where it was blocked before"
+                            : config_.multi_modal ? "robot blocked"
+                                                  : absl::StrCat("robot blocked ", blocks_on_goal_, " times on the way");
+    blocked_goal_.reset();
+    blocks_on_goal_ = 0;
+    if (exploring) {
+      // Another route may reach it: the goal alone is spent, not its region.
+      if (explore_goal_.has_value()) {
+        SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
+        explore_goal_.reset();
+        --progress_.explore_goals;  // never reached: no budget used
+        std::vector<RobotCommand> out = Explore(now);
+        if (progress_.state == TaskState::kRunning) progress_.reason = absl::StrCat(progress_.reason, " (", why, ")");
+        return out;
+      }
+      return ExplorationFailed(now, why);
+    }
+    if (progress_.target.has_value()) return SetTargetAside(now, why);
+    return Replan(now, why);
+  }
+  if (config_.backoff_m <= 0.0) {  // the robot's own controller backs up (Nav2's BackUp)
+    resume_exploring_ = exploring;
+    return ResumeAfterBackoff(now);
+  }
+  return BackOff(now, exploring, "robot blocked; backing off to re-plan with more clearance");
+}
+
+std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_exploring, const std::string& reason) {
+  // Back to the newest trail point (space the robot just drove through) at least backoff_m away
+  // and behind the robot: it faces the obstacle, and its own recovery may have backed it up past
+  // the newest points already.
+  const Eigen::Vector3d heading(std::cos(pose_.yaw), std::sin(pose_.yaw), 0.0);
+  std::vector<Eigen::Vector3d> path = {pose_.position};
+  for (auto it = trail_.rbegin(); it != trail_.rend(); ++it) {
+    const Eigen::Vector3d offset = *it - pose_.position;
+    const double distance = offset.head<2>().norm();
+    if (distance > 2.0 * config_.backoff_m) break;  // too far for a straight retreat
+    if (distance >= config_.backoff_m && offset.head<2>().dot(heading.head<2>()) < 0.0) {
+      path.push_back(*it);
+      break;
+    }
+  }
+  if (path.size() == 1 || (path.back() - pose_.position).head<2>().norm() < config_.backoff_m) {
+    path = {pose_.position,
+            pose_.position - config_.backoff_m * Eigen::Vector3d(std::cos(pose_.yaw), std::sin(pose_.yaw), 0.0)};
+  }
+  for (Eigen::Vector3d& point : path) point.z() = pose_.position.z();
+  resume_exploring_ = resume_exploring;
+  const Eigen::Vector3d back = path.back();
+  return Navigate(now, back, std::move(path), pose_.yaw, 0.0, Phase::kBackingOff, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::ResumeAfterBackoff(double now) {
+  if (!resume_exploring_) {
+    progress_.reason = "re-planning after backing off";
+    return EnterSubgoal(now);
+  }
+  if (!explore_goal_.has_value()) return Explore(now);  // after a fallback step with no path
+  const Eigen::Vector3d goal = *explore_goal_;
+  absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
+  if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
+  if (!path.ok()) {
+    phase_ = Phase::kExploring;
+    return ExplorationFailed(now, absl::StrCat("no path after backing off: ", path.status().message()));
+  }
+  return Navigate(now, goal, *std::move(path), YawTo(goal), 0.0, Phase::kExploring,
+                  "exploring for the target (re-planned with more clearance)");
+}
+
+std::vector<RobotCommand> TaskExecutor::NoProgress(double now) {
+  const std::string why = absl::StrCat("no progress for ", config_.progress_timeout_s, " s");
+  switch (phase_) {
+    case Phase::kExploring:
+      return ExplorationFailed(now, why);
+    case Phase::kVerifying:
+      return VerifyTimedOut(now);
+    case Phase::kBackingOff:
+      return ResumeAfterBackoff(now);
+    case Phase::kMoving:
+      return Replan(now, why);
+    default:
+      return {};  // timed phases end by their own clocks
+  }
+}
+
+void TaskExecutor::WatchProgress(double now) {
+  const std::string key = absl::StrCat(progress_.subgoal_index, "/", static_cast<int>(phase_), "/",
+                                       progress_.target.has_value() ? progress_.target->object_id : -1);
+  if (key != progress_key_ || (pose_.position - progress_anchor_).head<2>().norm() >= config_.progress_distance_m) {
+    progress_key_ = key;
+    progress_anchor_ = pose_.position;
+    progress_since_ = now;
+  }
+}
+
 std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_id, RobotFeedback feedback) {
   if (progress_.state != TaskState::kRunning || command_id != active_command_) return {};
+  if (feedback == RobotFeedback::kBlocked) return Blocked(now);
   if (feedback != RobotFeedback::kGoalReached) {
-    return Replan(now, feedback == RobotFeedback::kBlocked ? "robot blocked" : "robot reported failure");
+    // The robot could not drive a fallback step (its local planner found no way): that
+    // direction is not offered again.
+    if (phase_ == Phase::kExploring && !explore_goal_.has_value()) failed_fallback_steps_.push_back(active_goal_);
+    return Replan(now, "robot reported failure");
+  }
+  if (phase_ == Phase::kMoving || phase_ == Phase::kExploring) {
+    extra_clearance_m_ = 0.0;  // a goal reached: back to the normal clearance
+    blocked_goal_.reset();
+    blocks_on_goal_ = 0;
   }
   switch (phase_) {
+    case Phase::kBackingOff:
+      return ResumeAfterBackoff(now);
     case Phase::kExploring:
       set_aside_.clear();  // a new vantage point: targets set aside may be reachable from here
       if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration goal reached");
       return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
                     "scanning at the exploration goal");
     case Phase::kExploreScan:
-      if (explore_goal_.has_value()) spent_explore_goals_.push_back(*explore_goal_);
+      if (explore_goal_.has_value()) SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
       return Explore(now);
     case Phase::kVerifying:
       return {};  // facing the target; confirmation comes from detections or the vision model
@@ -459,28 +747,61 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
 }
 
 std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose) {
-  if (CheckRobotPose(pose, "pose").ok()) pose_ = pose;  // keep the last good pose
+  if (CheckRobotPose(pose, "pose").ok()) {  // keep the last good pose
+    pose_ = pose;
+    constexpr double kTrailSpacingM = 0.25;
+    constexpr std::size_t kTrailPoints = 40;
+    if (trail_.empty() || (trail_.back() - pose_.position).head<2>().norm() >= kTrailSpacingM) {
+      trail_.push_back(pose_.position);
+      if (trail_.size() > kTrailPoints) trail_.erase(trail_.begin());
+    }
+  }
   if (dependency_wait_.has_value() && progress_.state == TaskState::kPaused &&
       (now >= dependency_wait_->next_retry ||
        now - dependency_wait_->since >= config_.dependency_timeout_s)) {
     return RetryDependency(now);
   }
-  if (progress_.state != TaskState::kRunning || phase_ == Phase::kIdle || now < phase_deadline_) return {};
+  if (progress_.state != TaskState::kRunning || phase_ == Phase::kIdle) return {};
+  const bool searching = (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) &&
+                         current().type != SubgoalType::kExplore;
+  if (searching && InEndgame(now) && TakeBestCandidate()) return GoToBestCandidate(now);
+  WatchProgress(now);
+  const bool timed = phase_ == Phase::kRotating || phase_ == Phase::kWaiting || phase_ == Phase::kExploreScan;
+  if (!timed && now - progress_since_ >= config_.progress_timeout_s) {
+    progress_since_ = now;
+    return NoProgress(now);
+  }
+  if (now < phase_deadline_) return {};
   switch (phase_) {
     case Phase::kRotating:
     case Phase::kWaiting:
     case Phase::kExploreScan:
       return OnFeedback(now, active_command_, RobotFeedback::kGoalReached);
     case Phase::kVerifying:
-      return OnVisionVerdict(now, false);
+      return VerifyTimedOut(now);
+    case Phase::kBackingOff:
+      return ResumeAfterBackoff(now);
     default:
       return Replan(now, "motion timed out");
   }
 }
 
 std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGraph& graph) {
+  // New detections of the located target: counted while the robot stands within reach of it.
+  int fresh = 0;
+  if (progress_.target.has_value()) {
+    const SceneObject* before = graph_.FindObject(progress_.target->object_id);
+    const SceneObject* after = graph.FindObject(progress_.target->object_id);
+    if (before != nullptr && after != nullptr) fresh = std::max(0, after->detection_count - before->detection_count);
+  }
   graph_ = graph;
   if (progress_.state != TaskState::kRunning) return {};
+  if (progress_.target.has_value()) {
+    if (const SceneObject* object = graph_.FindObject(progress_.target->object_id)) {
+      progress_.target->position = object->position;  // the map refines its estimate
+    }
+  }
+  if (std::optional<std::vector<RobotCommand>> reached = SuccessInView(now, fresh)) return *std::move(reached);
   if (phase_ == Phase::kVerifying && progress_.target.has_value()) {
     const SceneObject* object = graph_.FindObject(progress_.target->object_id);
     if (object == nullptr) return {};

@@ -50,6 +50,45 @@ struct ExecutorConfig {
   // holding: the planner is asked again this often, and the task fails after this long without it.
   double dependency_retry_s = 2.0;
   double dependency_timeout_s = 60.0;
+
+  // Progress watchdog (Nav2's progress checker): in every driven phase the robot must move this
+  // far from where it last made progress, or change phase, within progress_timeout_s; otherwise
+  // the phase's recovery runs (exploration goal spent, target re-planned then set aside, VERIFY
+  // fallback). Timed phases (look around, wait) end by their own clocks.
+  double progress_timeout_s = 30.0;
+  double progress_distance_m = 0.3;
+  // Success in view: once the robot stands within success_radius_m - success_margin_m of the
+  // located target (the map's estimate may be off a little) and the detector reports it
+  // verify_detections more times from there, the task succeeds: no VERIFY turn, no timeout.
+  double success_margin_m = 0.2;
+  // VERIFY fallback after verify_timeout_s without verify_detections new detections: a target
+  // within reach that was detected at least verify_accept_detections times in all is accepted
+  // (close up the camera may not frame it); otherwise the robot steps back to verify_view_m from
+  // it and looks once more; a second timeout sets the target aside (tried again from the next
+  // exploration goal). Only the vision model's "no" rejects an object for good.
+  int verify_accept_detections = 4;
+  double verify_view_m = 0.8;
+  // Blocked recovery: after the robot reports BLOCKED it backs off backoff_m along the way it
+  // came (0 = not: the robot's own controller backs up, as Nav2's BackUp and the simulator's
+  // do; an extra executor retreat showed no benefit in the mission bench), and the next plans
+  // keep blocked_clearance_step_m more clearance per block (at most
+  // blocked_clearance_max_m, back to normal once a goal is reached). A goal the robot is blocked
+  // on max_blocks_per_goal times, or again within blocked_spot_radius_m of a spot it was blocked
+  // at, is given up: an exploration goal is spent, a target set aside.
+  double backoff_m = 0.0;
+  double blocked_clearance_step_m = 0.1;
+  double blocked_clearance_max_m = 0.3;
+  int max_blocks_per_goal = 2;
+  double blocked_spot_radius_m = 0.5;
+  // An exploration goal with no path (or the robot blocked on it) is set aside with the region
+  // within unreachable_region_m around it: frontiers of the same unreachable pocket are not tried
+  // one by one.
+  double unreachable_region_m = 2.0;
+  // The task's time budget, seconds from Start (0 = none: real robots run until cancelled).
+  // With less than endgame_s left and no accepted target, the robot goes to the best candidate
+  // seen (the fast path's best label match, even below its threshold) instead of a new frontier.
+  double time_budget_s = 0.0;
+  double endgame_s = 40.0;
 };
 
 enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
@@ -126,7 +165,7 @@ class TaskExecutor {
   bool waiting_for_dependency() const { return dependency_wait_.has_value(); }
 
  private:
-  enum class Phase { kIdle, kMoving, kRotating, kWaiting, kExploring, kExploreScan, kVerifying };
+  enum class Phase { kIdle, kMoving, kRotating, kWaiting, kExploring, kExploreScan, kVerifying, kBackingOff };
 
   std::vector<RobotCommand> EnterSubgoal(double now);
   std::vector<RobotCommand> NextSubgoal(double now, const std::string& reason);
@@ -152,6 +191,27 @@ class TaskExecutor {
   std::vector<RobotCommand> Rotate(double now, double rate, double duration, Phase phase, const std::string& reason);
   std::vector<RobotCommand> Hold(double now, double duration, const std::string& reason);
   std::vector<RobotCommand> CheckSuccessOrApproach(double now);
+  // The located target is reached: the subgoals about it are done.
+  std::vector<RobotCommand> TargetReached(double now, const std::string& reason);
+  // Success in view: within reach of the located target and seeing it; nullopt = not yet.
+  std::optional<std::vector<RobotCommand>> SuccessInView(double now, int fresh_detections);
+  // VERIFY ran out of time without enough new detections: accept, look again, or set aside.
+  std::vector<RobotCommand> VerifyTimedOut(double now);
+  // The robot reported BLOCKED: back off and re-plan with more clearance, or give the goal up.
+  std::vector<RobotCommand> Blocked(double now);
+  // Drive back along the recent trail (known free space); then ResumeAfterBackoff.
+  std::vector<RobotCommand> BackOff(double now, bool resume_exploring, const std::string& reason);
+  std::vector<RobotCommand> ResumeAfterBackoff(double now);
+  // The watchdog fired: the phase's recovery.
+  std::vector<RobotCommand> NoProgress(double now);
+  void WatchProgress(double now);
+  // Spends an exploration goal; an unreachable one with the region around it.
+  void SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable);
+  // Endgame: with little budget left, the best candidate seen becomes the target.
+  bool TakeBestCandidate();
+  bool InEndgame(double now) const;
+  std::vector<RobotCommand> GoToBestCandidate(double now);
+  std::vector<RobotCommand> FallbackStep(double now);
   bool TryResolve();
   void MaybeRequestModel();
   const Subgoal& current() const { return subgoals_[static_cast<std::size_t>(progress_.subgoal_index)]; }
@@ -180,6 +240,29 @@ class TaskExecutor {
   // Exploration goals the robot failed to reach or already scanned from: not offered again (a
   // frontier that survives a visit and a full turn cannot be cleared from there).
   std::vector<Eigen::Vector3d> spent_explore_goals_;
+  // Recent positions (every 0.25 m), newest last: backing off retraces them.
+  std::vector<Eigen::Vector3d> trail_;
+  // Progress watchdog: where and when the robot last moved or changed phase.
+  Eigen::Vector3d progress_anchor_ = Eigen::Vector3d::Zero();
+  double progress_since_ = 0.0;
+  std::string progress_key_;
+  // Success in view: detections of the target seen while within reach.
+  int64_t close_target_ = -1;
+  int close_detections_ = 0;
+  // VERIFY: the target got its second look already.
+  int64_t second_look_target_ = -1;
+  // Blocked recovery.
+  Eigen::Vector3d active_goal_ = Eigen::Vector3d::Zero();  // goal of the last navigate command
+  std::optional<Eigen::Vector3d> blocked_goal_;
+  int blocks_on_goal_ = 0;
+  std::vector<Eigen::Vector3d> blocked_spots_;
+  double extra_clearance_m_ = 0.0;
+  bool resume_exploring_ = false;
+  // Fallback steps with no path: other directions are tried next.
+  std::vector<Eigen::Vector3d> failed_fallback_steps_;
+  bool last_fallback_backed_off_ = false;
+  double start_time_ = 0.0;
+  bool endgame_taken_ = false;
   uint64_t next_command_id_ = 1;
   uint64_t active_command_ = 0;
   double phase_deadline_ = 0.0;

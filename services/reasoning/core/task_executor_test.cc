@@ -212,7 +212,8 @@ TEST_F(GatewayTaskExecutorTest, SlowAnswerNamingASetAsideObjectKeepsExploring) {
   out = task.OnSlowDecision(1, 1, decision);
   ASSERT_EQ(out.size(), 1u);
   ASSERT_TRUE(task.progress().target.has_value());
-  for (int failure = 0; failure <= config.max_replans; ++failure) {
+  // Blocked on the way (back off, re-plan, blocked again at the same spot): set aside.
+  for (int failure = 0; failure < 10 && task.progress().target.has_value(); ++failure) {
     out = task.OnFeedback(2 + failure, out[0].id, RobotFeedback::kBlocked);
     ASSERT_EQ(out.size(), 1u);
   }
@@ -334,28 +335,35 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   EXPECT_EQ(out[0].kind, CommandKind::kRotate);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
   EXPECT_EQ(task.progress().explore_goals, 1);  // one exploration step, not the whole budget
-  EXPECT_EQ(planner_.queries.size(), 1u);
+  EXPECT_EQ(planner_.queries.size(), 3u);         // the least explored direction and its two neighbours
   // After the scan the fallback step has a path; when the robot fails on it, it looks around
   // again instead of being sent on the same step.
   planner_.unreachable = false;
   std::vector<RobotCommand> next = task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
   ASSERT_EQ(next.size(), 1u);
   EXPECT_EQ(next[0].kind, CommandKind::kNavigate);
+  const Eigen::Vector3d failed_step = next[0].goal;
   next = task.OnFeedback(13, next[0].id, RobotFeedback::kFailed);
   ASSERT_EQ(next.size(), 1u);
   EXPECT_EQ(next[0].kind, CommandKind::kRotate);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
+  // Regression (house_expo_room_0000: the same fallback step sent 10 times, the robot's local
+  // planner failing on each): after the scan another direction is tried.
+  next = task.OnFeedback(25, next[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].kind, CommandKind::kNavigate);
+  EXPECT_GT((next[0].goal - failed_step).norm(), 2.0);
 }
 
-TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGoesOn) {
+TEST_F(GatewayTaskExecutorTest, FailedExplorationGoalIsExcludedAndExplorationGoesOn) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(-10, 0, 0),
                         Eigen::Vector3d(0, -10, 0), Eigen::Vector3d(5, 5, 0)};
   ExecutorConfig config;
-  config.explore_exclusion_radius_m = 1.5;
+  config.explore_exclusion_radius_m = 1.5;  // covers the 2 m unreachable region alone
   TaskExecutor task = Make(FindTarget(), config);
   std::vector<RobotCommand> out = task.Start(0, At(0));
-  // Blocked four times in a row: more than max_replans, but exploring never fails the task.
-  for (int i = 0; i < 4; ++i) out = task.OnFeedback(1 + i, out[0].id, RobotFeedback::kBlocked);
+  // Failed four times in a row: more than max_replans, but exploring never fails the task.
+  for (int i = 0; i < 4; ++i) out = task.OnFeedback(1 + i, out[0].id, RobotFeedback::kFailed);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(5, 5, 0)));
@@ -370,17 +378,46 @@ TEST_F(GatewayTaskExecutorTest, BlockedExplorationGoalIsExcludedAndExplorationGo
   EXPECT_EQ(task.progress().explore_goals, 1);  // goals never reached do not use the budget
 }
 
-TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetIsRejectedAndSearchResumes) {
+// Regression (the mission bench's "episodes ended within 0.4-0.5 m but never succeeded"): close
+// up, the camera no longer framed the target (facing its mapped centre), VERIFY got one new
+// detection instead of two, and its timeout rejected the right object for good. A target seen
+// from within reach and often enough in all is accepted.
+TEST_F(GatewayTaskExecutorTest, VerifyTimeoutAcceptsAWellSeenTargetWithinReach) {
   planner_.frontiers = {Eigen::Vector3d(-10, 0, 0)};
   TaskExecutor task = Make(GoToTarget());
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   task.Start(0, At(4.5));  // already 0.5 m away: NAVIGATE and APPROACH complete at once
   EXPECT_EQ(current_type(task), SubgoalType::kVerify);
-  std::vector<RobotCommand> out = task.OnPose(11, At(4.5));  // 10 s without new detections
+  EXPECT_TRUE(task.OnSceneGraph(1, GraphWith({Extinguisher(16)}, 2)).empty());  // one sighting from here
+  EXPECT_TRUE(task.OnPose(9.5, At(4.5)).empty());
+  std::vector<RobotCommand> out = task.OnPose(10, At(4.5));  // 10 s, one new detection
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+// A target seen too rarely to accept gets a second look from the view distance; a second
+// timeout sets it aside (not excluded: it is tried again from the next exploration goal).
+TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetGetsASecondLookThenIsSetAside) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0)};
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  task.Start(0, At(4.5));
+  // Seen 15 times from afar but never from within reach (office_03: a "tv" mapped on the wrong
+  // side of a cabinet, faced for 180 s without a detection): not accepted.
+  std::vector<RobotCommand> out = task.OnPose(10, At(4.5));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));  // 0.8 m from the target
+  EXPECT_NEAR(out[0].goal_yaw, 0.0, 1e-9);
+  task.OnPose(12, At(4.2));
+  EXPECT_TRUE(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());
+  out = task.OnPose(20, At(4.2));  // the second look times out too
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().subgoal_index, 0);
   EXPECT_FALSE(task.progress().target.has_value());
-  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));  // object 7 excluded: explore
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "object 7 set aside")) << task.progress().reason;
 }
 
 TEST_F(GatewayTaskExecutorTest, PauseResumeCancelAndCorrection) {
@@ -504,17 +541,33 @@ TEST_F(GatewayTaskExecutorTest, NoPathToTheTargetExploresInstead) {
   EXPECT_EQ(task.progress().explore_goals, 1);
 }
 
-TEST_F(GatewayTaskExecutorTest, BlockedFeedbackPlansAgainFromTheCurrentPose) {
-  TaskExecutor task = Make(GoToTarget());
+// A block backs the robot off along the way it came, then plans again from there with more
+// clearance (the planner's inflation grows by blocked_clearance_step_m).
+TEST_F(GatewayTaskExecutorTest, BlockedFeedbackBacksOffAndPlansAgainWithMoreClearance) {
+  ExecutorConfig config;
+  config.robot_radius_m = 0.2;
+  config.backoff_m = 0.5;  // a robot without its own back-up recovery
+  TaskExecutor task = Make(GoToTarget(), config);
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   std::vector<RobotCommand> out = task.Start(0, At(0));
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.1);
+  task.OnPose(1, At(0.5, 0.25));
   task.OnPose(2, At(1, 0.5));
   out = task.OnFeedback(2, out[0].id, RobotFeedback::kBlocked);
-  ASSERT_EQ(planner_.queries.size(), 2u);
-  EXPECT_TRUE(planner_.queries[1].start.isApprox(Eigen::Vector3d(1, 0.5, 0)));
   ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "backing_off");
+  ASSERT_GE(out[0].path.size(), 2u);
   EXPECT_TRUE(out[0].path.front().isApprox(Eigen::Vector3d(1, 0.5, 0)));
-  EXPECT_EQ(task.progress().replans, 1);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0.5, 0.25, 0)));  // retraces the trail >= 0.5 m
+  EXPECT_EQ(planner_.queries.size(), 1u);                             // no planning to back off
+  task.OnPose(4, At(0.5, 0.25));
+  out = task.OnFeedback(4, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(planner_.queries.size(), 2u);
+  EXPECT_TRUE(planner_.queries[1].start.isApprox(Eigen::Vector3d(0.5, 0.25, 0)));
+  EXPECT_DOUBLE_EQ(planner_.queries[1].clearance_m, 0.2);  // inflated after the block
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "navigating");
+  EXPECT_TRUE(out[0].path.front().isApprox(Eigen::Vector3d(0.5, 0.25, 0)));
 }
 
 }  // namespace
@@ -613,7 +666,7 @@ TEST_F(GatewayTaskExecutorTest, PlanningUnavailablePausesHoldsAndResumesWhenItAn
   ASSERT_EQ(out.size(), 1u);
   const uint64_t interrupted = out[0].id;
   planner_.down = absl::UnavailableError("PlanPath: connection refused");
-  out = task.OnFeedback(1, interrupted, RobotFeedback::kBlocked);  // re-plan: planning is gone
+  out = task.OnFeedback(1, interrupted, RobotFeedback::kFailed);  // re-plan: planning is gone
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kHold);  // hold, not an emergency stop
   EXPECT_EQ(task.progress().state, TaskState::kPaused);
@@ -710,6 +763,220 @@ TEST_F(GatewayTaskExecutorTest, OperatorCancelPauseAndResumeWorkWhilePlanningIsG
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
   EXPECT_EQ(paused.progress().state, TaskState::kRunning);
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
+
+// Regression tests for the mission bench's failure causes (issue 14): scripted timelines.
+namespace semnav::reasoning {
+namespace {
+
+// Stuck without feedback (a robot wedged against furniture, its controller still trying): the
+// progress watchdog re-plans after progress_timeout_s, not after the 120 s navigate timeout.
+TEST_F(GatewayTaskExecutorTest, WatchdogReplansANavigationThatMakesNoProgress) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  for (double now = 0.5; now < 30.0; now += 0.5) {
+    EXPECT_TRUE(task.OnPose(now, At(now < 5 ? 0.0 : 0.5)).empty()) << "at " << now;
+  }
+  // Last progress at t = 5 (0.5 m from the start): 30 s later the watchdog fires.
+  EXPECT_TRUE(task.OnPose(34.5, At(0.5)).empty());
+  out = task.OnPose(35, At(0.5));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_EQ(task.progress().replans, 1);
+  EXPECT_TRUE(planner_.queries.back().start.isApprox(Eigen::Vector3d(0.5, 0, 0)));
+}
+
+// Regression (office_03, "find tv"): the approach ended at the alternative point 2.25 m from the
+// tv, behind furniture, and VERIFY waited there for detections until the budget ran out. Now
+// VERIFY times out and looks again from the view distance: its own side leads back to the same
+// alternative point, so from another side, and it succeeds when the tv is seen from there.
+TEST_F(GatewayTaskExecutorTest, VerifyFromAfarLooksAgainFromTheViewDistanceAndSucceeds) {
+  planner_.failures = {absl::FailedPreconditionError("goal occupied"), absl::FailedPreconditionError("goal occupied")};
+  planner_.alternative_point = Eigen::Vector3d(2.75, 0, 0);
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(10, At(2.75));
+  out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);  // NAVIGATE at the alternative point
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  out = task.OnFeedback(11, out[0].id, RobotFeedback::kGoalReached);  // APPROACH: no closer
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  EXPECT_TRUE(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());  // facing the tv
+  for (double now = 12; now < 21; now += 0.5) EXPECT_TRUE(task.OnPose(now, At(2.75)).empty());
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};  // the own side's view point
+  out = task.OnPose(21, At(2.75));  // 10 s in VERIFY without a detection
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  const Eigen::Vector3d side = Eigen::Vector3d(5, 0, 0) + 0.8 * Eigen::Vector3d(-std::sqrt(0.5), -std::sqrt(0.5), 0);
+  EXPECT_TRUE(out[0].goal.isApprox(side)) << out[0].goal.transpose();
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "another side")) << task.progress().reason;
+  EXPECT_EQ(task.progress().target->object_id, 7);  // not rejected
+  task.OnPose(27, RobotPose{side, 0.0});
+  EXPECT_TRUE(task.OnFeedback(27, out[0].id, RobotFeedback::kGoalReached).empty());
+  EXPECT_TRUE(task.OnSceneGraph(28, GraphWith({Extinguisher(16)}, 2)).empty());
+  out = task.OnSceneGraph(28.5, GraphWith({Extinguisher(17)}, 3));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+// Regression ("episodes ended within 0.4-0.5 m of the target but never succeeded"): the robot
+// within reach with the target in view stops and succeeds, whatever subgoal it is in.
+TEST_F(GatewayTaskExecutorTest, WithinReachWithTheTargetInViewTheRobotStops) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(5, At(4));
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  // Seen at 1.0 m: not yet within reach (0.8 m with the margin).
+  EXPECT_TRUE(task.OnSceneGraph(5.5, GraphWith({Extinguisher(16)}, 2)).empty());
+  EXPECT_TRUE(task.OnSceneGraph(6, GraphWith({Extinguisher(17)}, 3)).empty());
+  task.OnPose(7, At(4.35));  // 0.65 m: the approach would go on to 0.5 m
+  EXPECT_TRUE(task.OnSceneGraph(7, GraphWith({Extinguisher(18)}, 4)).empty());
+  out = task.OnSceneGraph(7.5, GraphWith({Extinguisher(19)}, 5));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+// Regression (flyroll, fr079: "robot blocked" again and again): a block backs off and re-plans
+// to the same exploration goal with more clearance; blocked again where it was blocked before,
+// the goal is given up with the region around it, and the next one is asked for.
+TEST_F(GatewayTaskExecutorTest, BlockedTwiceAtTheSameSpotGivesTheExplorationGoalUp) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.robot_radius_m = 0.2;
+  config.backoff_m = 0.5;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  for (int i = 1; i <= 8; ++i) task.OnPose(i, At(0.25 * i));
+  task.OnPose(8.5, At(1.75));  // the robot's own recovery backed it up 0.25 m
+  out = task.OnFeedback(8.5, out[0].id, RobotFeedback::kBlocked);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "backing_off");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(1.25, 0, 0))) << out[0].goal.transpose();  // 0.5 m behind
+  task.OnPose(10, At(1.5));
+  out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));  // the same goal ...
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);     // ... with more clearance
+  task.OnPose(12, At(1.9));
+  out = task.OnFeedback(12, out[0].id, RobotFeedback::kBlocked);  // within 0.5 m of (2, 0)
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  const std::vector<Eigen::Vector3d>& excluded = planner_.exploration_queries.back().excluded_goals;
+  ASSERT_EQ(excluded.size(), 1u);  // another route may reach it: the goal alone, not its region
+  EXPECT_TRUE(excluded[0].isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+}
+
+// Fly-roll (multi-modal) paths have no footprint inflation to raise: a block gives the
+// exploration goal up at once instead of backing off to re-plan the same grazing path.
+// Default (the robot backs up by itself): a block re-plans the same goal at once, with more
+// clearance, from where the robot stands.
+TEST_F(GatewayTaskExecutorTest, BlockedReplansTheSameGoalWithMoreClearance) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.robot_radius_m = 0.2;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(4, At(1));
+  out = task.OnFeedback(4, out[0].id, RobotFeedback::kBlocked);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_TRUE(planner_.queries.back().start.isApprox(Eigen::Vector3d(1, 0, 0)));
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);
+}
+
+TEST_F(GatewayTaskExecutorTest, MultiModalBlockGivesTheExplorationGoalUpAtOnce) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.multi_modal = true;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  for (int i = 1; i <= 8; ++i) task.OnPose(i, At(0.25 * i));
+  out = task.OnFeedback(8, out[0].id, RobotFeedback::kBlocked);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_EQ(task.progress().explore_goals, 1);
+}
+
+// Regression (office_04: 15 x "no path to the exploration goal"): an unreachable frontier is
+// excluded with the region around it, so its neighbours in the same pocket are not offered one
+// by one; fallback steps with no path are not asked again, and the robot backs off once.
+TEST_F(GatewayTaskExecutorTest, UnreachableExplorationGoalsAreSetAsideWithTheirRegion) {
+  planner_.unreachable = true;
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
+  TaskExecutor task = Make(FindTarget());
+  task.OnPose(0, At(-1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  // The frontier and three fallback directions had no path; the robot backs off (it came from -1).
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "backing_off");
+  ASSERT_EQ(planner_.queries.size(), 4u);
+  const ExplorationQuery query = planner_.exploration_queries.back();
+  const auto excluded = [&](const Eigen::Vector3d& point) {
+    for (const Eigen::Vector3d& goal : query.excluded_goals) {
+      if ((goal - point).head<2>().norm() <= 1.0) return true;
+    }
+    return false;
+  };
+  planner_.frontiers = {Eigen::Vector3d(1.5, 10.8, 0)};  // the same pocket
+  out = task.OnFeedback(2, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  const ExplorationQuery next = planner_.exploration_queries.back();
+  bool covered = false;
+  for (const Eigen::Vector3d& goal : next.excluded_goals) {
+    covered = covered || (goal - Eigen::Vector3d(1.5, 10.8, 0)).head<2>().norm() <= 1.0;
+  }
+  EXPECT_TRUE(covered);
+  EXPECT_TRUE(excluded(Eigen::Vector3d(1.2, 11.2, 0)));   // the region around (0, 10) ...
+  EXPECT_FALSE(excluded(Eigen::Vector3d(0, 13.5, 0)));  // ... is 2 m (+ planning's 1 m)
+  // The three new fallback directions differ from the first three.
+  ASSERT_GE(planner_.queries.size(), 8u);
+  for (std::size_t i = 5; i < 8; ++i) {
+    for (std::size_t j = 1; j < 4; ++j) {
+      EXPECT_GT((planner_.queries[i].goal - planner_.queries[j].goal).norm(), 1.0) << i << " vs " << j;
+    }
+  }
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);  // backed off already: now look around
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+}
+
+// The last steps of the budget: with endgame_s left and no accepted target, the robot goes to
+// the best candidate seen (below the fast path's threshold) rather than to a new frontier.
+TEST_F(GatewayTaskExecutorTest, EndgameGoesToTheBestCandidateSeen) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0)};
+  ExecutorConfig config;
+  config.time_budget_s = 100.0;
+  config.endgame_s = 40.0;
+  TaskExecutor task = Make(FindTarget(), config);
+  task.OnSceneGraph(0, GraphWith({Extinguisher(1)}, 1));  // too unsure for the fast path
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));
+  EXPECT_FALSE(task.progress().target.has_value());
+  for (double now = 1; now < 60; now += 1) EXPECT_TRUE(task.OnPose(now, At(-now / 10)).empty()) << now;
+  out = task.OnPose(60, At(-6));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_TRUE(task.progress().target.has_value());
+  EXPECT_EQ(task.progress().target->object_id, 7);
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "endgame")) << task.progress().reason;
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));
 }
 
 }  // namespace

@@ -55,7 +55,20 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
       .Read("grounding_max_objects", &c.executor.grounding_max_objects)
       .Read("dependency_retry_s", &c.executor.dependency_retry_s)
-      .Read("dependency_timeout_s", &c.executor.dependency_timeout_s);
+      .Read("dependency_timeout_s", &c.executor.dependency_timeout_s)
+      .Read("progress_timeout_s", &c.executor.progress_timeout_s)
+      .Read("progress_distance_m", &c.executor.progress_distance_m)
+      .Read("success_margin_m", &c.executor.success_margin_m)
+      .Read("verify_accept_detections", &c.executor.verify_accept_detections)
+      .Read("verify_view_m", &c.executor.verify_view_m)
+      .Read("backoff_m", &c.executor.backoff_m)
+      .Read("blocked_clearance_step_m", &c.executor.blocked_clearance_step_m)
+      .Read("blocked_clearance_max_m", &c.executor.blocked_clearance_max_m)
+      .Read("max_blocks_per_goal", &c.executor.max_blocks_per_goal)
+      .Read("blocked_spot_radius_m", &c.executor.blocked_spot_radius_m)
+      .Read("unreachable_region_m", &c.executor.unreachable_region_m)
+      .Read("time_budget_s", &c.executor.time_budget_s)
+      .Read("endgame_s", &c.executor.endgame_s);
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
   executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m", "must be >= 0");
@@ -63,6 +76,24 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(c.executor.dependency_retry_s > 0.0, "dependency_retry_s", "must be > 0");
   executor.Check(c.executor.dependency_timeout_s >= c.executor.dependency_retry_s,
                  "dependency_timeout_s", "must be >= dependency_retry_s");
+  executor.Check(c.executor.verify_timeout_s > 0.0, "verify_timeout_s", "must be > 0");
+  executor.Check(c.executor.progress_timeout_s > 0.0, "progress_timeout_s", "must be > 0");
+  executor.Check(c.executor.progress_distance_m > 0.0, "progress_distance_m", "must be > 0");
+  executor.Check(c.executor.success_margin_m >= 0.0 && c.executor.success_margin_m < c.executor.success_radius_m,
+                 "success_margin_m", "must be in [0, success_radius_m)");
+  executor.Check(c.executor.verify_accept_detections >= 1, "verify_accept_detections", "must be >= 1");
+  executor.Check(c.executor.verify_view_m > 0.0 && c.executor.verify_view_m <= c.executor.success_radius_m,
+                 "verify_view_m", "must be in (0, success_radius_m]");
+  executor.Check(c.executor.backoff_m >= 0.0 && c.executor.backoff_m <= 5.0, "backoff_m", "must be in [0, 5]");
+  executor.Check(c.executor.blocked_clearance_step_m >= 0.0, "blocked_clearance_step_m", "must be >= 0");
+  executor.Check(c.executor.blocked_clearance_max_m >= 0.0 && c.executor.blocked_clearance_max_m <= 2.0,
+                 "blocked_clearance_max_m", "must be in [0, 2]");
+  executor.Check(c.executor.max_blocks_per_goal >= 1, "max_blocks_per_goal", "must be >= 1");
+  executor.Check(c.executor.blocked_spot_radius_m >= 0.0, "blocked_spot_radius_m", "must be >= 0");
+  executor.Check(c.executor.unreachable_region_m >= 0.0 && c.executor.unreachable_region_m <= 20.0,
+                 "unreachable_region_m", "must be in [0, 20]");
+  executor.Check(c.executor.time_budget_s >= 0.0, "time_budget_s", "must be >= 0 (0 = none)");
+  executor.Check(c.executor.endgame_s >= 0.0, "endgame_s", "must be >= 0");
 
   ConfigReader memory = section.Child("memory");
   memory.Read("node_spacing_m", &c.memory.node_spacing_m)

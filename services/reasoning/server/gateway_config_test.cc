@@ -83,7 +83,9 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
 TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
       "fast_path: {fast_threshold: 0.8}\n"
-      "executor: {success_radius_m: 0.5, dependency_retry_s: 0.5, dependency_timeout_s: 5}\n"
+      "executor: {success_radius_m: 0.5, dependency_retry_s: 0.5, dependency_timeout_s: 5,\n"
+      "           progress_timeout_s: 20, verify_view_m: 0.4, success_margin_m: 0.1, unreachable_region_m: 3,\n"
+      "           time_budget_s: 250, endgame_s: 30, max_blocks_per_goal: 3}\n"
       "mapping: {address: 127.0.0.1:50051}\n");
   ASSERT_TRUE(reader.ok());
   const GatewayConfig config = GatewayConfig::FromYaml(*reader);
@@ -92,11 +94,20 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   EXPECT_DOUBLE_EQ(config.executor.success_radius_m, 0.5);
   EXPECT_DOUBLE_EQ(config.executor.dependency_retry_s, 0.5);
   EXPECT_DOUBLE_EQ(config.executor.dependency_timeout_s, 5.0);
+  EXPECT_DOUBLE_EQ(config.executor.progress_timeout_s, 20.0);
+  EXPECT_DOUBLE_EQ(config.executor.verify_view_m, 0.4);
+  EXPECT_DOUBLE_EQ(config.executor.success_margin_m, 0.1);
+  EXPECT_DOUBLE_EQ(config.executor.unreachable_region_m, 3.0);
+  EXPECT_DOUBLE_EQ(config.executor.time_budget_s, 250.0);
+  EXPECT_DOUBLE_EQ(config.executor.endgame_s, 30.0);
+  EXPECT_EQ(config.executor.max_blocks_per_goal, 3);
   EXPECT_EQ(config.mapping.address, "127.0.0.1:50051");
 
   for (const char* yaml : {"fast_path: {fast_threshold: 1.5}", "executor: {success_radius_m: 0}",
                            "fast_path: {fast_treshold: 0.8}", "executor: {dependency_retry_s: 0}",
-                           "executor: {dependency_timeout_s: 1}"}) {
+                           "executor: {dependency_timeout_s: 1}", "executor: {progress_timeout_s: 0}",
+                           "executor: {success_margin_m: 1.0}", "executor: {verify_view_m: 1.5}",
+                           "executor: {time_budget_s: -1}", "executor: {max_blocks_per_goal: 0}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
     GatewayConfig::FromYaml(*bad);
