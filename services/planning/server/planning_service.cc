@@ -212,7 +212,10 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
   const GridMap& map = **resolved;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(map, grid_field);
   if (!frame.ok()) return frame.status();
-  absl::StatusOr<Cell> start = frame->ToCell(request.start(), "start");
+  // 2D planners pad the grid to a start just outside it (GridPlannerConfig::max_start_outside_m).
+  absl::StatusOr<Cell> start = request.planner() == pb::PLANNER_KIND_JUMP_ASTAR
+                                   ? frame->ToCell(request.start(), "start")
+                                   : frame->ToCellAnywhere(request.start(), "start");
   if (!start.ok()) return start.status();
   absl::StatusOr<Cell> goal = frame->ToCell(request.goal(), "goal");
   if (!goal.ok()) return goal.status();
@@ -260,7 +263,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     failure = result.status();
   }
   if (!failure.ok()) {
-    AttachPlanFailure(failure, *start, *goal);
+    AttachPlanFailure(failure, Cell{std::max(start->x, 0), std::max(start->y, 0)}, *goal);
     return failure;
   }
   response->set_planning_time_ms(absl::ToDoubleMilliseconds(absl::Now() - started));
