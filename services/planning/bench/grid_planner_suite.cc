@@ -48,6 +48,7 @@ nlohmann::json RunGridPlannerSuite(const std::string& data_dir) {
       request.resolution_m = 0.05;
       request.start = (*rows)[i].start;
       request.goal = (*rows)[i].goal;
+      request.keep_clearance = true;
       absl::StatusOr<GridPlanResult> a, b;
       off_ms.push_back(TimeMs([&] { a = off.Plan(request); }));
       on_ms.push_back(TimeMs([&] { b = on.Plan(request); }));

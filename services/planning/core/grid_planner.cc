@@ -173,7 +173,10 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& or
     }
     request.start = *free;
   }
-  clearance_cost_ = ClearanceCost(grid, request.resolution_m, config_.clearance);
+  clearance_cost_.clear();
+  if (request.keep_clearance) {
+    clearance_cost_ = ClearanceCost(grid, request.resolution_m, config_.clearance);
+  }
   absl::StatusOr<GridPlanResult> result = PlanStages(grid, request);
   clearance_cost_.clear();
   if (!result.ok()) return result;

@@ -45,6 +45,8 @@ struct GridPlanRequest {
   // seed 004 may replace an occupied or unreachable goal.
   std::optional<Cell> first_sighting;
   bool use_jps = true;  // false: A*
+  // Add the config's clearance cost (the robot's paths); false = the shortest path.
+  bool keep_clearance = false;
   SearchLimits limits;
 };
 

@@ -206,6 +206,7 @@ TEST(GridPlanner, ClearanceKeepsTheCorridorPathCentred) {
   const PassabilityGrid grid = GridFromRows(rows);
   GridPlanRequest request = RequestOn(grid, {1, 1}, {38, 1});
   request.resolution_m = 0.1;
+  request.keep_clearance = true;
   GridPlannerConfig config;
   config.clearance = {.clearance_m = 0.4, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0};
   absl::StatusOr<GridPlanResult> centred = GridPlanner(config).Plan(request);
@@ -216,12 +217,17 @@ TEST(GridPlanner, ClearanceKeepsTheCorridorPathCentred) {
       EXPECT_EQ(c.y, 4);  // the middle row, 4 cells from both walls
     }
   }
-  // Off: the shortest path runs along the wall.
-  config.clearance.clearance_m = 0.0;
+  // Not asked for (a metric's shortest path), or off in the config: the path runs along the wall.
+  request.keep_clearance = false;
   absl::StatusOr<GridPlanResult> hugging = GridPlanner(config).Plan(request);
   ASSERT_TRUE(hugging.ok()) << hugging.status();
   EXPECT_DOUBLE_EQ(hugging->path.length_cells, 37.0);
   EXPECT_GT(centred->path.length_cells, 37.0);
+  request.keep_clearance = true;
+  config.clearance.clearance_m = 0.0;
+  hugging = GridPlanner(config).Plan(request);
+  ASSERT_TRUE(hugging.ok()) << hugging.status();
+  EXPECT_DOUBLE_EQ(hugging->path.length_cells, 37.0);
 }
 
 TEST(GridPlanner, GapNarrowerThanTheRobotIsRefusedWithClearanceOn) {
@@ -232,6 +238,7 @@ TEST(GridPlanner, GapNarrowerThanTheRobotIsRefusedWithClearanceOn) {
   GridPlanRequest request = RequestOn(grid, {5, 0}, {5, 10});
   request.resolution_m = 0.1;
   request.robot_radius_m = 0.2;
+  request.keep_clearance = true;
   GridPlanner planner({});
   EXPECT_EQ(PlanFailureOf(planner.Plan(request).status()), PlanFailure::kNoPath);
   // A 0.1 m robot passes, through the middle cell of the gap.

@@ -256,6 +256,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
       plan.first_sighting = *sighting;
     }
     plan.use_jps = request.planner() != pb::PLANNER_KIND_ASTAR;
+    plan.keep_clearance = request.keep_clearance();
     plan.limits = limits;
     GridPlanner planner(config_.grid_planner);
     absl::StatusOr<GridPlanResult> result = planner.Plan(plan);
