@@ -18,8 +18,8 @@ struct ClearanceConfig {
   bool enabled() const { return clearance_m > 0.0 && cost_penalty > 0.0; }
 };
 
-// Extra cost per cell (0 on blocked cells and beyond reach), from an 8-connected chamfer
-// distance to the nearest blocked cell. The grid's border is no obstacle (beyond it is unknown).
+// Extra cost per cell (0 on blocked cells and beyond reach), from the 8-connected (octile)
+// chamfer distance to the nearest blocked cell. The grid's border is no obstacle (beyond it is unknown).
 // Empty when no cell gets a cost (off, or nothing blocked).
 std::vector<float> ClearanceCost(const PassabilityGrid& inflated, double resolution_m,
                                  const ClearanceConfig& config);
