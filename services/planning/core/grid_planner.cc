@@ -178,6 +178,20 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& or
     clearance_cost_ = ClearanceCost(grid, request.resolution_m, config_.clearance);
   }
   absl::StatusOr<GridPlanResult> result = PlanStages(grid, request);
+  if (PlanFailureOf(result.status()) == PlanFailure::kNoPath && config_.start_snap_radius_m > 0.0 &&
+      IsFree(grid, request.goal.x, request.goal.y)) {
+    // Boxed in: the robot stands on a free island the inflation cut off (after a collision,
+    // next to a counter). Leave it for the nearest cell within the snap radius the goal can be
+    // reached from.
+    const std::vector<uint8_t> to_goal = ReachableFrom(grid, request.goal);
+    const std::optional<Cell> exit =
+        NearestFreeWithin(grid, to_goal, original.start,
+                          config_.start_snap_radius_m / original.resolution_m);
+    if (exit && !(*exit == request.start)) {
+      request.start = *exit;
+      result = PlanStages(grid, request);
+    }
+  }
   clearance_cost_.clear();
   if (!result.ok()) return result;
   result->planned_start = request.start;

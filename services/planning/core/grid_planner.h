@@ -22,7 +22,8 @@ struct GridPlannerConfig {
   int max_low_probability_percent = 50;
   // A start cell blocked after footprint inflation (the robot stands near a wall, or map noise
   // under it) moves to the nearest free cell this close, metres; the path then begins with the
-  // step from the robot to that cell. 0 = an occupied start fails as START_OCCUPIED.
+  // step from the robot to that cell. A free start boxed in by the inflation (NO_PATH) moves the
+  // same way to the nearest cell the goal can be reached from. 0 = neither (START_OCCUPIED).
   double start_snap_radius_m = 0.5;
   // A start at most this far outside the grid (the robot at the edge of a map that has not yet
   // grown to cover it) is planned from: the grid is padded with free cells up to the start.

@@ -168,6 +168,33 @@ TEST(GridPlanner, OccupiedStartSnapsToTheNearestFreeCell) {
   EXPECT_EQ(PlanFailureOf(strict.Plan(request).status()), PlanFailure::kStartOccupied);
 }
 
+TEST(GridPlanner, StartBoxedInByTheInflationLeavesItsIsland) {
+  // Robot radius 1 cell. The robot at (1,2) stands on a free island: the inflated counter
+  // (row 0, columns 0-3) and wall cell (3,3) cut it off from the room on the right.
+  const PassabilityGrid grid = GridFromRows({
+      "@@@@........",
+      "............",
+      "............",
+      "...@........",
+      "@@@@@@@@@@@@",
+  });
+  GridPlanRequest request = RequestOn(grid, {1, 2}, {10, 2});
+  request.robot_radius_m = 1.0;
+  GridPlannerConfig config;
+  config.start_snap_radius_m = 0.0;
+  EXPECT_EQ(PlanFailureOf(GridPlanner(config).Plan(request).status()), PlanFailure::kNoPath);
+  config.start_snap_radius_m = 2.9;  // below 3 cells: still no way out
+  EXPECT_EQ(PlanFailureOf(GridPlanner(config).Plan(request).status()), PlanFailure::kNoPath);
+  config.start_snap_radius_m = 3.0;
+  absl::StatusOr<GridPlanResult> result = GridPlanner(config).Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->start_adjusted);
+  EXPECT_EQ(result->path.waypoints.front(), (Cell{1, 2}));
+  // The island is {(0,2), (1,2), (2,2)} ((3,2) is inflated by (3,3)); the nearest cell the goal
+  // is reached from is (4,2), 3 cells east ((4,1) is sqrt(10) away), both sqrt(2) from (3,3).
+  EXPECT_EQ(result->planned_start, (Cell{4, 2}));
+}
+
 TEST(GridPlanner, StartJustOutsideTheGridPadsIt) {
   PassabilityGrid grid(5, 5, 1);
   GridPlannerConfig config;
