@@ -1,5 +1,6 @@
 #include "services/planning/core/grid_planner.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
@@ -123,12 +124,36 @@ absl::StatusOr<GridPath> GridPlanner::Search(const PassabilityGrid& grid, Cell s
                          : astar_.Plan(grid, start, goal, request.limits);
 }
 
-absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& request) {
+absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original) {
+  GridPlanRequest request = original;
+  std::optional<Cell> requested_goal;
   if (!request.free.Contains(request.goal)) {
-    return InvalidField("goal", absl::StrCat("goal (", request.goal.x, ", ", request.goal.y,
-                                             ") is outside the ", request.free.width(), " x ",
-                                             request.free.height(), " grid"));
+    // A target seen just past the map's edge: plan to the edge cell nearest it, which the map
+    // then grows past as the robot arrives.
+    const Cell edge{std::clamp(request.goal.x, 0, request.free.width() - 1),
+                    std::clamp(request.goal.y, 0, request.free.height() - 1)};
+    const double outside_m = std::hypot(edge.x - request.goal.x, edge.y - request.goal.y) *
+                             request.resolution_m;
+    if (outside_m > config_.max_goal_outside_m) {
+      return InvalidField("goal", absl::StrCat("goal (", request.goal.x, ", ", request.goal.y,
+                                               ") is outside the ", request.free.width(), " x ",
+                                               request.free.height(), " grid"));
+    }
+    requested_goal = request.goal;
+    request.goal = edge;
   }
+  absl::StatusOr<GridPlanResult> result = PlanPadded(request);
+  if (result.ok() && requested_goal) {
+    result->goal_adjusted = true;
+    result->adjustment_reason = result->adjustment_reason.empty()
+                                    ? "goal outside the grid moved to the grid's edge"
+                                    : absl::StrCat("goal outside the grid moved to the grid's edge; ",
+                                                   result->adjustment_reason);
+  }
+  return result;
+}
+
+absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& request) {
   const Padding pad = PaddingFor(request.free, request.start);
   if (!pad.any()) return PlanInside(request);
   const double outside_m = std::hypot(std::max(pad.left, pad.right), std::max(pad.bottom, pad.top)) *

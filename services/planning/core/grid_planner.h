@@ -29,6 +29,9 @@ struct GridPlannerConfig {
   // grown to cover it) is planned from: the grid is padded with free cells up to the start.
   // 0 = a start outside the grid is INVALID_ARGUMENT.
   double max_start_outside_m = 1.0;
+  // A goal at most this far outside the grid (a target seen past the map's edge) is planned to
+  // the nearest edge cell (goal_adjusted). 0 = a goal outside the grid is INVALID_ARGUMENT.
+  double max_goal_outside_m = 1.0;
   // Cost near obstacles beyond the hard inflation (Nav2 inflation layer style).
   ClearanceConfig clearance;
 };
@@ -81,6 +84,7 @@ class GridPlanner {
                                   const GridPlanRequest& request);
   absl::StatusOr<GridPlanResult> PlanOn(const PassabilityGrid& grid,
                                         const GridPlanRequest& request);
+  absl::StatusOr<GridPlanResult> PlanPadded(const GridPlanRequest& request);
   absl::StatusOr<GridPlanResult> PlanInside(const GridPlanRequest& request);
   absl::StatusOr<GridPlanResult> PlanStages(const PassabilityGrid& grid,
                                             const GridPlanRequest& request);

@@ -221,7 +221,15 @@ TEST(GridPlanner, StartJustOutsideTheGridPadsIt) {
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_EQ(result->path.waypoints.front(), (Cell{5, 5}));
 
-  // A goal outside stays an error naming the goal.
+  // A goal just outside (1 m at 0.5 m cells) goes to the nearest edge cell; farther, an error
+  // naming the goal.
+  request.start = {0, 2};
+  request.goal = {6, 2};
+  result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->goal_adjusted);
+  EXPECT_EQ(result->planned_goal, (Cell{4, 2}));
+  EXPECT_NE(result->adjustment_reason.find("outside the grid"), std::string::npos);
   request.goal = {7, 2};
   EXPECT_EQ(ErrorField(planner.Plan(request).status()), "goal");
 }

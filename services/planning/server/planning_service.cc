@@ -217,7 +217,9 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
                                    ? frame->ToCell(request.start(), "start")
                                    : frame->ToCellAnywhere(request.start(), "start");
   if (!start.ok()) return start.status();
-  absl::StatusOr<Cell> goal = frame->ToCell(request.goal(), "goal");
+  absl::StatusOr<Cell> goal = request.planner() == pb::PLANNER_KIND_JUMP_ASTAR
+                                  ? frame->ToCell(request.goal(), "goal")
+                                  : frame->ToCellAnywhere(request.goal(), "goal");
   if (!goal.ok()) return goal.status();
 
   SearchLimits limits;
@@ -264,7 +266,8 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     failure = result.status();
   }
   if (!failure.ok()) {
-    AttachPlanFailure(failure, Cell{std::max(start->x, 0), std::max(start->y, 0)}, *goal);
+    AttachPlanFailure(failure, Cell{std::max(start->x, 0), std::max(start->y, 0)},
+                      Cell{std::max(goal->x, 0), std::max(goal->y, 0)});
     return failure;
   }
   response->set_planning_time_ms(absl::ToDoubleMilliseconds(absl::Now() - started));

@@ -156,6 +156,15 @@ TEST_F(PlanningContract, StartJustOutsideTheGridIsPlannedFrom) {
   // Farther out than max_start_outside_m (1 m): an error naming the start.
   request.mutable_start()->set_x(-3.0);
   ExpectFieldError(Plan(request, &response), "start");
+
+  // A goal 0.2 m past the right edge (x = 2.5): planned to the edge cell, column 6.
+  request = DoorRequest(pb::PLANNER_KIND_JPS);
+  request.mutable_goal()->set_x(2.7);
+  response.Clear();
+  status = Plan(request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_TRUE(response.goal_adjusted());
+  EXPECT_NEAR(response.planned_goal().x(), 2.25, 1e-12);
 }
 
 TEST_F(PlanningContract, AlternativePointForAGoalInTheWall) {
@@ -284,7 +293,7 @@ TEST_F(PlanningContract, BadInputNamesTheFieldAndChangesNothing) {
 
   pb::PlanPathResponse response;
   pb::PlanPathRequest outside = DoorRequest(pb::PLANNER_KIND_JPS);
-  outside.mutable_goal()->set_x(100.0);
+  outside.mutable_goal()->set_x(100.0);  // far beyond max_goal_outside_m
   ExpectFieldError(Plan(outside, &response), "goal");
 
   pb::PlanPathRequest short_layer = DoorRequest(pb::PLANNER_KIND_JPS);
