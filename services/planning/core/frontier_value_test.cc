@@ -99,6 +99,7 @@ TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesTheP
   query.robot = {4, 1};
   query.min_frontier_cells = 1;
   ExplorationGoalConfig config;
+  config.value.enabled = true;  // opt-in (frontier_value.h)
   absl::StatusOr<ExplorationChoice> nearest =
       SelectExplorationGoal(grid, query, ExplorationStrategy::kNearestFrontier, config);
   ASSERT_TRUE(nearest.ok()) << nearest.status();
