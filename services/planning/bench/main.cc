@@ -1,6 +1,6 @@
 // semnav-bench-planning: the planning figures (Moving AI correctness and
 // speed, improved Jump A* on the seed 003 map, OMPL RRT* anchor).
-// Usage: semnav-bench-planning [--json FILE] [--only movingai|multimodal|rrtstar]
+// Usage: semnav-bench-planning [--json FILE] [--only movingai|gridplanner|multimodal|rrtstar]
 //          [--rrtstar_seconds S] [--threads N] [--movingai_dir DIR]
 #include <algorithm>
 #include <cstdio>
@@ -13,6 +13,7 @@
 #include "absl/strings/str_cat.h"
 #include "nlohmann/json.hpp"
 #include "services/common/cli/flags.h"
+#include "services/planning/bench/grid_planner_suite.h"
 #include "services/planning/bench/movingai_suite.h"
 #include "services/planning/bench/multimodal_suite.h"
 #include "services/planning/bench/rrtstar_suite.h"
@@ -30,7 +31,7 @@ const std::vector<semnav::FlagSpec> kFlags = {{"json", "FILE", ""},
 int main(int argc, char** argv) {
   const std::string usage =
       absl::StrCat("usage: ", argv[0],
-                   " [--json FILE] [--only movingai|multimodal|rrtstar] [--rrtstar_seconds S]"
+                   " [--json FILE] [--only movingai|gridplanner|multimodal|rrtstar] [--rrtstar_seconds S]"
                    " [--threads N] [--movingai_dir DIR]\n"
                    "A*/JPS on every Moving AI row, multi-modal Jump A* (seed 003 Table 2) and the"
                    " OMPL RRT* anchor.\n");
@@ -52,6 +53,9 @@ int main(int argc, char** argv) {
   nlohmann::json figures = nlohmann::json::object();
   if (only.empty() || only == "movingai") {
     figures.update(semnav::planning::bench::RunMovingAiSuite(data_dir, threads));
+  }
+  if (only.empty() || only == "gridplanner") {
+    figures.update(semnav::planning::bench::RunGridPlannerSuite(data_dir));
   }
   if (only.empty() || only == "multimodal") {
     figures.update(semnav::planning::bench::RunMultiModalSuite());

@@ -1,9 +1,12 @@
 #include "services/planning/core/grid_planner.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 #include "services/planning/core/alternative_point.h"
+#include "services/planning/core/octile.h"
 #include "services/planning/core/inflation.h"
 #include "services/planning/core/plan_failure.h"
 #include "services/planning/core/reachability.h"
@@ -48,17 +51,186 @@ PassabilityGrid WithProbabilityLimit(const PassabilityGrid& free,
   return out;
 }
 
+// Nearest free cell to `start` within `radius` cells (Euclidean; ties: the one nearer `goal`,
+// then the first in row order).
+std::optional<Cell> NearestFreeCell(const PassabilityGrid& grid, Cell start, Cell goal,
+                                    double radius) {
+  const int r = static_cast<int>(std::floor(radius));
+  std::optional<Cell> best;
+  long best_d2 = 0, best_goal_d2 = 0;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const long d2 = long{dx} * dx + long{dy} * dy;
+      const Cell c{start.x + dx, start.y + dy};
+      if (d2 > radius * radius || !IsFree(grid, c.x, c.y)) continue;
+      const long goal_d2 = long{c.x - goal.x} * (c.x - goal.x) + long{c.y - goal.y} * (c.y - goal.y);
+      if (!best || d2 < best_d2 || (d2 == best_d2 && goal_d2 < best_goal_d2)) {
+        best = c;
+        best_d2 = d2;
+        best_goal_d2 = goal_d2;
+      }
+    }
+  }
+  return best;
+}
+
+// Only the cells where the direction changes (and both ends): the runs between them stay
+// straight or 45-degree, as GridPath promises.
+std::vector<Cell> CornersOf(const std::vector<Cell>& cells) {
+  if (cells.size() <= 2) return cells;
+  std::vector<Cell> out{cells.front()};
+  for (size_t i = 1; i + 1 < cells.size(); ++i) {
+    const int dx0 = cells[i].x - cells[i - 1].x, dy0 = cells[i].y - cells[i - 1].y;
+    const int dx1 = cells[i + 1].x - cells[i].x, dy1 = cells[i + 1].y - cells[i].y;
+    if (dx0 != dx1 || dy0 != dy1) out.push_back(cells[i]);
+  }
+  out.push_back(cells.back());
+  return out;
+}
+
+// Cells the start lies beyond each edge of a width x height grid.
+struct Padding {
+  int left = 0, right = 0, bottom = 0, top = 0;
+  bool any() const { return left + right + bottom + top > 0; }
+};
+
+Padding PaddingFor(const PassabilityGrid& grid, Cell start) {
+  return {std::max(0, -start.x), std::max(0, start.x - (grid.width() - 1)),
+          std::max(0, -start.y), std::max(0, start.y - (grid.height() - 1))};
+}
+
+template <typename T>
+CellGrid<T> Padded(const CellGrid<T>& grid, const Padding& pad, T fill) {
+  if (grid.size() == 0) return grid;
+  CellGrid<T> out(grid.width() + pad.left + pad.right, grid.height() + pad.bottom + pad.top, fill);
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) out.at(x + pad.left, y + pad.bottom) = grid.at(x, y);
+  }
+  return out;
+}
+
+Cell Shift(Cell c, int dx, int dy) { return {c.x + dx, c.y + dy}; }
+
 }  // namespace
 
 absl::StatusOr<GridPath> GridPlanner::Search(const PassabilityGrid& grid, Cell start, Cell goal,
                                              const GridPlanRequest& request) {
+  if (!clearance_cost_.empty()) {
+    absl::StatusOr<GridPath> path = astar_.Plan(grid, start, goal, request.limits, &clearance_cost_);
+    if (path.ok()) path->waypoints = CornersOf(path->waypoints);
+    return path;
+  }
   return request.use_jps ? jps_.Plan(grid, start, goal, request.limits)
                          : astar_.Plan(grid, start, goal, request.limits);
 }
 
-absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& request) {
+absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original) {
+  GridPlanRequest request = original;
+  std::optional<Cell> requested_goal;
+  if (!request.free.Contains(request.goal)) {
+    // A target seen just past the map's edge: plan to the edge cell nearest it, which the map
+    // then grows past as the robot arrives.
+    const Cell edge{std::clamp(request.goal.x, 0, request.free.width() - 1),
+                    std::clamp(request.goal.y, 0, request.free.height() - 1)};
+    const double outside_m = std::hypot(edge.x - request.goal.x, edge.y - request.goal.y) *
+                             request.resolution_m;
+    if (outside_m > config_.max_goal_outside_m) {
+      return InvalidField("goal", absl::StrCat("goal (", request.goal.x, ", ", request.goal.y,
+                                               ") is outside the ", request.free.width(), " x ",
+                                               request.free.height(), " grid"));
+    }
+    requested_goal = request.goal;
+    request.goal = edge;
+  }
+  absl::StatusOr<GridPlanResult> result = PlanPadded(request);
+  if (result.ok() && requested_goal) {
+    result->goal_adjusted = true;
+    result->adjustment_reason = result->adjustment_reason.empty()
+                                    ? "goal outside the grid moved to the grid's edge"
+                                    : absl::StrCat("goal outside the grid moved to the grid's edge; ",
+                                                   result->adjustment_reason);
+  }
+  return result;
+}
+
+absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& request) {
+  const Padding pad = PaddingFor(request.free, request.start);
+  if (!pad.any()) return PlanInside(request);
+  const double outside_m = std::hypot(std::max(pad.left, pad.right), std::max(pad.bottom, pad.top)) *
+                           request.resolution_m;
+  if (outside_m > config_.max_start_outside_m) {
+    return InvalidField("start", absl::StrCat("start (", request.start.x, ", ", request.start.y,
+                                              ") is ", outside_m, " m outside the ",
+                                              request.free.width(), " x ", request.free.height(),
+                                              " grid (max_start_outside_m ",
+                                              config_.max_start_outside_m, ")"));
+  }
+  // The robot stands there, so the strip between it and the map is taken as free.
+  GridPlanRequest padded = request;
+  padded.free = Padded<uint8_t>(request.free, pad, 1);
+  padded.obstacle_probability = Padded<uint8_t>(request.obstacle_probability, pad, 0);
+  padded.start = Shift(request.start, pad.left, pad.bottom);
+  padded.goal = Shift(request.goal, pad.left, pad.bottom);
+  if (padded.first_sighting) padded.first_sighting = Shift(*request.first_sighting, pad.left, pad.bottom);
+  absl::StatusOr<GridPlanResult> result = PlanInside(padded);
+  if (!result.ok()) return result;
+  for (Cell& c : result->path.waypoints) c = Shift(c, -pad.left, -pad.bottom);
+  result->planned_goal = Shift(result->planned_goal, -pad.left, -pad.bottom);
+  result->planned_start = Shift(result->planned_start, -pad.left, -pad.bottom);
+  result->grid_padded = true;
+  return result;
+}
+
+absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& original) {
   const PassabilityGrid grid =
-      InflateObstacles(request.free, request.robot_radius_m / request.resolution_m);
+      InflateObstacles(original.free, original.robot_radius_m / original.resolution_m);
+  GridPlanRequest request = original;
+  if (grid.Contains(original.start) && grid.at(original.start) == 0 &&
+      config_.start_snap_radius_m > 0.0) {
+    const std::optional<Cell> free =
+        NearestFreeCell(grid, original.start, original.goal, config_.start_snap_radius_m / original.resolution_m);
+    if (!free) {
+      return MakePlanFailure(PlanFailure::kStartOccupied,
+                             absl::StrCat("start (", original.start.x, ", ", original.start.y,
+                                          ") is occupied and no free cell lies within "
+                                          "start_snap_radius_m ",
+                                          config_.start_snap_radius_m));
+    }
+    request.start = *free;
+  }
+  clearance_cost_.clear();
+  if (request.keep_clearance) {
+    clearance_cost_ = ClearanceCost(grid, request.resolution_m, config_.clearance);
+  }
+  absl::StatusOr<GridPlanResult> result = PlanStages(grid, request);
+  if (PlanFailureOf(result.status()) == PlanFailure::kNoPath && config_.start_snap_radius_m > 0.0 &&
+      IsFree(grid, request.goal.x, request.goal.y)) {
+    // Boxed in: the robot stands on a free island the inflation cut off (after a collision,
+    // next to a counter). Leave it for the nearest cell within the snap radius the goal can be
+    // reached from.
+    const std::vector<uint8_t> to_goal = ReachableFrom(grid, request.goal);
+    const std::optional<Cell> exit =
+        NearestFreeWithin(grid, to_goal, original.start,
+                          config_.start_snap_radius_m / original.resolution_m);
+    if (exit && !(*exit == request.start)) {
+      request.start = *exit;
+      result = PlanStages(grid, request);
+    }
+  }
+  clearance_cost_.clear();
+  if (!result.ok()) return result;
+  result->planned_start = request.start;
+  if (!(request.start == original.start)) {
+    // The path begins where the robot stands, then leaves the inflated zone.
+    result->start_adjusted = true;
+    result->path.waypoints.insert(result->path.waypoints.begin(), original.start);
+    result->path.length_cells += OctileDistance(original.start, request.start);
+  }
+  return result;
+}
+
+absl::StatusOr<GridPlanResult> GridPlanner::PlanStages(const PassabilityGrid& grid,
+                                                       const GridPlanRequest& request) {
   if (request.obstacle_probability.size() == 0) return PlanOn(grid, request);
   // Stage 1: zero-probability cells only; stage 2: low-probability cells too.
   absl::StatusOr<GridPlanResult> zero = PlanOn(

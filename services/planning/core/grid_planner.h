@@ -3,10 +3,12 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "services/planning/core/astar.h"
 #include "services/planning/core/cell_grid.h"
+#include "services/planning/core/clearance_cost.h"
 #include "services/planning/core/grid_path.h"
 #include "services/planning/core/jps.h"
 #include "services/planning/core/search_limits.h"
@@ -18,6 +20,20 @@ struct GridPlannerConfig {
   // probability; if none exists, also allow cells up to this probability
   // (percent, 0-100).
   int max_low_probability_percent = 50;
+  // A start cell blocked after footprint inflation (the robot stands near a wall, or map noise
+  // under it) moves to the nearest free cell this close, metres; the path then begins with the
+  // step from the robot to that cell. A free start boxed in by the inflation (NO_PATH) moves the
+  // same way to the nearest cell the goal can be reached from. 0 = neither (START_OCCUPIED).
+  double start_snap_radius_m = 0.5;
+  // A start at most this far outside the grid (the robot at the edge of a map that has not yet
+  // grown to cover it) is planned from: the grid is padded with free cells up to the start.
+  // 0 = a start outside the grid is INVALID_ARGUMENT.
+  double max_start_outside_m = 1.0;
+  // A goal at most this far outside the grid (a target seen past the map's edge) is planned to
+  // the nearest edge cell (goal_adjusted). 0 = a goal outside the grid is INVALID_ARGUMENT.
+  double max_goal_outside_m = 1.0;
+  // Cost near obstacles beyond the hard inflation (Nav2 inflation layer style).
+  ClearanceConfig clearance;
 };
 
 struct GridPlanRequest {
@@ -25,7 +41,7 @@ struct GridPlanRequest {
   // Seed 004 obstacle probability map, percent 0-100 per cell; empty = none.
   CellGrid<uint8_t> obstacle_probability;
   double resolution_m = 0.05;
-  Cell start;
+  Cell start;  // may lie up to max_start_outside_m outside `free`
   Cell goal;
   double robot_radius_m = 0.0;    // footprint inflation radius; 0 = point robot
   double goal_tolerance_m = 0.0;  // an occupied goal may move this far to a free cell
@@ -33,12 +49,17 @@ struct GridPlanRequest {
   // seed 004 may replace an occupied or unreachable goal.
   std::optional<Cell> first_sighting;
   bool use_jps = true;  // false: A*
+  // Add the config's clearance cost (the robot's paths); false = the shortest path.
+  bool keep_clearance = false;
   SearchLimits limits;
 };
 
 struct GridPlanResult {
   GridPath path;
   Cell planned_goal;               // the goal actually planned to
+  Cell planned_start;              // the free cell the search began from
+  bool start_adjusted = false;     // the start was occupied and moved to planned_start
+  bool grid_padded = false;        // the start lay outside the grid, which was padded
   bool goal_adjusted = false;      // moved within goal_tolerance_m
   bool alternative_used = false;   // replaced by the seed 004 alternative point
   std::string adjustment_reason;   // why the goal changed; empty when it did not
@@ -47,7 +68,11 @@ struct GridPlanResult {
 
 // 2D planning on one grid: footprint inflation, the two-stage obstacle
 // probability costs, goal tolerance and the alternative point, on top of
-// JPS or A*. Failures carry the typed PlanFailure of the last attempt.
+// JPS or A*. A start just outside the grid pads the grid; an occupied start
+// snaps to the nearest free cell (both reported in the result). With
+// clearance enabled the search is A* over the clearance cost (JPS has no
+// costs) and the path keeps only the cells where its direction changes.
+// Failures carry the typed PlanFailure of the last attempt.
 class GridPlanner {
  public:
   explicit GridPlanner(GridPlannerConfig config) : config_(config) {}
@@ -59,6 +84,12 @@ class GridPlanner {
                                   const GridPlanRequest& request);
   absl::StatusOr<GridPlanResult> PlanOn(const PassabilityGrid& grid,
                                         const GridPlanRequest& request);
+  absl::StatusOr<GridPlanResult> PlanPadded(const GridPlanRequest& request);
+  absl::StatusOr<GridPlanResult> PlanInside(const GridPlanRequest& request);
+  absl::StatusOr<GridPlanResult> PlanStages(const PassabilityGrid& grid,
+                                            const GridPlanRequest& request);
+
+  std::vector<float> clearance_cost_;  // of the current query; empty = none
 
   GridPlannerConfig config_;
   AStarPlanner astar_;

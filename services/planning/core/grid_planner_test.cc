@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "services/common/status/field_error.h"
 #include "services/planning/core/alternative_point.h"
+#include "services/planning/core/clearance_cost.h"
+#include "services/planning/core/grid_path.h"
 #include "services/planning/core/inflation.h"
 #include "services/planning/core/plan_failure.h"
 #include "services/planning/core/test_grids.h"
@@ -131,6 +136,168 @@ TEST(GridPlanner, ZeroProbabilityCellsFirstThenLowProbability) {
   for (int y = 0; y < 3; ++y) probability.at(2, y) = 80;
   request.obstacle_probability = probability;
   EXPECT_EQ(PlanFailureOf(planner.Plan(request).status()), PlanFailure::kNoPath);
+}
+
+TEST(GridPlanner, OccupiedStartSnapsToTheNearestFreeCell) {
+  // Robot radius 1 cell: the wall row 2 inflates rows 1 and 3. The robot at (3,1) stands in the
+  // inflated band; the nearest free cell is (3,0), 1 cell away.
+  const PassabilityGrid grid = GridFromRows({
+      ".......",
+      ".......",
+      "@@@@@@.",
+      ".......",
+      ".......",
+  });
+  GridPlannerConfig config;
+  config.start_snap_radius_m = 1.0;
+  GridPlanner planner(config);
+  GridPlanRequest request = RequestOn(grid, {3, 1}, {0, 0});
+  request.robot_radius_m = 1.0;
+  absl::StatusOr<GridPlanResult> result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->start_adjusted);
+  EXPECT_EQ(result->planned_start, (Cell{3, 0}));
+  ASSERT_GE(result->path.waypoints.size(), 2u);
+  EXPECT_EQ(result->path.waypoints.front(), (Cell{3, 1}));  // begins where the robot stands
+  EXPECT_EQ(result->path.waypoints[1], (Cell{3, 0}));
+  EXPECT_DOUBLE_EQ(result->path.length_cells, 1.0 + 3.0);
+
+  // A snap radius below one cell leaves the typed failure.
+  config.start_snap_radius_m = 0.9;
+  GridPlanner strict(config);
+  EXPECT_EQ(PlanFailureOf(strict.Plan(request).status()), PlanFailure::kStartOccupied);
+}
+
+TEST(GridPlanner, StartBoxedInByTheInflationLeavesItsIsland) {
+  // Robot radius 1 cell. The robot at (1,2) stands on a free island: the inflated counter
+  // (row 0, columns 0-3) and wall cell (3,3) cut it off from the room on the right.
+  const PassabilityGrid grid = GridFromRows({
+      "@@@@........",
+      "............",
+      "............",
+      "...@........",
+      "@@@@@@@@@@@@",
+  });
+  GridPlanRequest request = RequestOn(grid, {1, 2}, {10, 2});
+  request.robot_radius_m = 1.0;
+  GridPlannerConfig config;
+  config.start_snap_radius_m = 0.0;
+  EXPECT_EQ(PlanFailureOf(GridPlanner(config).Plan(request).status()), PlanFailure::kNoPath);
+  config.start_snap_radius_m = 2.9;  // below 3 cells: still no way out
+  EXPECT_EQ(PlanFailureOf(GridPlanner(config).Plan(request).status()), PlanFailure::kNoPath);
+  config.start_snap_radius_m = 3.0;
+  absl::StatusOr<GridPlanResult> result = GridPlanner(config).Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->start_adjusted);
+  EXPECT_EQ(result->path.waypoints.front(), (Cell{1, 2}));
+  // The island is {(0,2), (1,2), (2,2)} ((3,2) is inflated by (3,3)); the nearest cell the goal
+  // is reached from is (4,2), 3 cells east ((4,1) is sqrt(10) away), both sqrt(2) from (3,3).
+  EXPECT_EQ(result->planned_start, (Cell{4, 2}));
+}
+
+TEST(GridPlanner, StartJustOutsideTheGridPadsIt) {
+  PassabilityGrid grid(5, 5, 1);
+  GridPlannerConfig config;
+  config.max_start_outside_m = 1.0;
+  GridPlanner planner(config);
+  GridPlanRequest request = RequestOn(grid, {-1, 2}, {4, 2});
+  request.resolution_m = 0.5;  // 0.5 m outside
+  absl::StatusOr<GridPlanResult> result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->grid_padded);
+  EXPECT_FALSE(result->start_adjusted);
+  EXPECT_EQ(result->path.waypoints.front(), (Cell{-1, 2}));
+  EXPECT_EQ(result->path.waypoints.back(), (Cell{4, 2}));
+  EXPECT_EQ(result->planned_goal, (Cell{4, 2}));
+  EXPECT_DOUBLE_EQ(result->path.length_cells, 5.0);
+
+  // Beyond and above the top-right corner too.
+  request.start = {6, 6};  // sqrt(2) x 2 cells x 0.5 m = 1.41 m > 1 m
+  absl::Status far = planner.Plan(request).status();
+  EXPECT_EQ(far.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(far), "start");
+  request.start = {5, 5};  // 0.71 m
+  result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->path.waypoints.front(), (Cell{5, 5}));
+
+  // A goal just outside (1 m at 0.5 m cells) goes to the nearest edge cell; farther, an error
+  // naming the goal.
+  request.start = {0, 2};
+  request.goal = {6, 2};
+  result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->goal_adjusted);
+  EXPECT_EQ(result->planned_goal, (Cell{4, 2}));
+  EXPECT_NE(result->adjustment_reason.find("outside the grid"), std::string::npos);
+  request.goal = {7, 2};
+  EXPECT_EQ(ErrorField(planner.Plan(request).status()), "goal");
+}
+
+TEST(GridPlanner, ClearanceKeepsTheCorridorPathCentred) {
+  // A corridor of 7 free rows (1..7) between walls; start and goal next to the lower wall.
+  std::vector<std::string> rows(9, std::string(40, '.'));
+  rows[0] = rows[8] = std::string(40, '@');
+  const PassabilityGrid grid = GridFromRows(rows);
+  GridPlanRequest request = RequestOn(grid, {1, 1}, {38, 1});
+  request.resolution_m = 0.1;
+  request.keep_clearance = true;
+  GridPlannerConfig config;
+  config.clearance = {.clearance_m = 0.4, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0};
+  absl::StatusOr<GridPlanResult> centred = GridPlanner(config).Plan(request);
+  ASSERT_TRUE(centred.ok()) << centred.status();
+  const std::vector<Cell> cells = ExpandWaypoints(centred->path.waypoints);
+  for (const Cell& c : cells) {
+    if (c.x == 20) {
+      EXPECT_EQ(c.y, 4);  // the middle row, 4 cells from both walls
+    }
+  }
+  // Not asked for (a metric's shortest path), or off in the config: the path runs along the wall.
+  request.keep_clearance = false;
+  absl::StatusOr<GridPlanResult> hugging = GridPlanner(config).Plan(request);
+  ASSERT_TRUE(hugging.ok()) << hugging.status();
+  EXPECT_DOUBLE_EQ(hugging->path.length_cells, 37.0);
+  EXPECT_GT(centred->path.length_cells, 37.0);
+  request.keep_clearance = true;
+  config.clearance.clearance_m = 0.0;
+  hugging = GridPlanner(config).Plan(request);
+  ASSERT_TRUE(hugging.ok()) << hugging.status();
+  EXPECT_DOUBLE_EQ(hugging->path.length_cells, 37.0);
+}
+
+TEST(GridPlanner, GapNarrowerThanTheRobotIsRefusedWithClearanceOn) {
+  // A 3-cell gap (0.3 m) in a wall; a 0.2 m robot needs 0.4 m (inflation blocks the whole gap).
+  std::vector<std::string> rows(11, std::string(11, '.'));
+  rows[5] = "@@@@...@@@@";
+  const PassabilityGrid grid = GridFromRows(rows);
+  GridPlanRequest request = RequestOn(grid, {5, 0}, {5, 10});
+  request.resolution_m = 0.1;
+  request.robot_radius_m = 0.2;
+  request.keep_clearance = true;
+  GridPlanner planner({});
+  EXPECT_EQ(PlanFailureOf(planner.Plan(request).status()), PlanFailure::kNoPath);
+  // A 0.1 m robot passes, through the middle cell of the gap.
+  request.robot_radius_m = 0.1;
+  absl::StatusOr<GridPlanResult> result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  bool through_middle = false;
+  for (const Cell& c : ExpandWaypoints(result->path.waypoints)) {
+    if (c.y == 5) through_middle = c.x == 5;
+  }
+  EXPECT_TRUE(through_middle);
+}
+
+TEST(ClearanceCost, DecaysExponentiallyWithDistance) {
+  const PassabilityGrid grid = GridFromRows({"@......"});
+  const std::vector<float> cost =
+      ClearanceCost(grid, 0.1, {.clearance_m = 0.3, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0});
+  ASSERT_EQ(cost.size(), 7u);
+  EXPECT_FLOAT_EQ(cost[0], 0.0f);                          // blocked
+  EXPECT_FLOAT_EQ(cost[1], 2.0f);                          // next to it
+  EXPECT_NEAR(cost[2], 2.0 * std::exp(-0.3), 1e-6);        // 0.1 m further
+  EXPECT_NEAR(cost[3], 2.0 * std::exp(-0.6), 1e-6);
+  EXPECT_FLOAT_EQ(cost[4], 0.0f);                          // 0.4 m: beyond clearance_m
+  EXPECT_TRUE(ClearanceCost(PassabilityGrid(4, 4, 1), 0.1, {}).empty());  // nothing blocked
 }
 
 }  // namespace

@@ -18,6 +18,10 @@ EroiConfig ExplorationConfig::EroiInCells(double resolution_m) const {
   return c;
 }
 
+ExplorationGoalConfig ExplorationConfig::GoalConfig(double resolution_m) const {
+  return {score, value, coverage, EroiInCells(resolution_m)};
+}
+
 void ExplorationConfig::Read(ConfigReader& section) {
   section.Read("min_frontier_cells", &min_frontier_cells)
       .Read("l_max_steps", &coverage.l_max_steps);
@@ -32,6 +36,32 @@ void ExplorationConfig::Read(ConfigReader& section) {
       .Read("novelty_radius_m", &score.novelty_radius_m);
   score_section.Check(score.novelty_radius_m > 0 && score.language_radius_m > 0,
                       "novelty_radius_m", "radii must be > 0");
+  ConfigReader value_section = section.Child("value_map");
+  value_section.Read("enabled", &value.enabled)
+      .Read("evidence_sigma_m", &value.evidence_sigma_m)
+      .Read("semantic_gain", &value.semantic_gain)
+      .Read("gain_radius_m", &value.gain_radius_m)
+      .Read("distance_decay_per_m", &value.distance_decay_per_m)
+      .Read("region_link_m", &value.region_link_m)
+      .Read("min_gain_m2", &value.min_gain_m2);
+  value_section.Check(std::isfinite(value.evidence_sigma_m) && value.evidence_sigma_m > 0 &&
+                          value.evidence_sigma_m <= 100,
+                      "evidence_sigma_m", "must be in (0, 100]");
+  value_section.Check(std::isfinite(value.gain_radius_m) && value.gain_radius_m > 0 &&
+                          value.gain_radius_m <= 100,
+                      "gain_radius_m", "must be in (0, 100]");
+  value_section.Check(std::isfinite(value.semantic_gain) && value.semantic_gain >= 0 &&
+                          value.semantic_gain <= 100,
+                      "semantic_gain", "must be in [0, 100]");
+  value_section.Check(std::isfinite(value.distance_decay_per_m) &&
+                          value.distance_decay_per_m >= 0 && value.distance_decay_per_m <= 10,
+                      "distance_decay_per_m", "must be in [0, 10]");
+  value_section.Check(std::isfinite(value.region_link_m) && value.region_link_m >= 0 &&
+                          value.region_link_m <= 100,
+                      "region_link_m", "must be in [0, 100]");
+  value_section.Check(std::isfinite(value.min_gain_m2) && value.min_gain_m2 >= 0 &&
+                          value.min_gain_m2 <= 1e4,
+                      "min_gain_m2", "must be in [0, 10000]");
   ConfigReader eroi = section.Child("eroi");
   eroi.Read("size_m", &eroi_size_m)
       .Read("viewpoints", &eroi_viewpoints)

@@ -3,6 +3,7 @@
 #include "services/common/config/config_reader.h"
 #include "services/planning/core/coverage_goal.h"
 #include "services/planning/core/eroi_utility.h"
+#include "services/planning/core/exploration_goal.h"
 #include "services/planning/core/frontier_scoring.h"
 #include "services/planning/core/trajectory.h"
 
@@ -13,6 +14,7 @@ namespace semnav::planning {
 struct ExplorationConfig {
   int min_frontier_cells = 5;
   FrontierScoreConfig score;        // seed 002 weights 0.2/0.3/0.2/0.3
+  FrontierValueConfig value;        // SEMANTIC_FRONTIER's value map (docs/algorithms/planning.md)
   CoverageGoalConfig coverage;      // L_MAX, turn step
   double eroi_size_m = 2.0;         // Delta
   int eroi_viewpoints = 8;
@@ -24,6 +26,7 @@ struct ExplorationConfig {
   double eroi_k = 0.8;              // eq. 24 tau = k max s
 
   EroiConfig EroiInCells(double resolution_m) const;
+  ExplorationGoalConfig GoalConfig(double resolution_m) const;
   void Read(ConfigReader& section);
 };
 

@@ -10,11 +10,7 @@
 #include "services/common/status/grpc_status.h"
 #include "services/common/status/value_checks.h"
 #include "services/planning/server/request_checks.h"
-#include "services/planning/core/coverage_goal.h"
-#include "services/planning/core/distance_field.h"
-#include "services/planning/core/eroi_utility.h"
-#include "services/planning/core/frontier.h"
-#include "services/planning/core/frontier_scoring.h"
+#include "services/planning/core/exploration_goal.h"
 
 namespace semnav::planning {
 namespace {
@@ -25,15 +21,11 @@ using semnav::common::v1::GridMap;
 // A frontier needs at least this many cells; more than a whole grid holds finds none.
 constexpr uint32_t kMaxMinCells = uint32_t{1} << 26;
 
-// Everything the frontier strategies need from one request.
+// One request as the core's grid and query.
 struct FrontierView {
   GridFrame frame;
-  CellGrid<uint8_t> explored;
-  PassabilityGrid free;
-  Cell robot;
-  std::vector<Frontier> frontiers;
-  std::vector<FrontierCandidate> candidates;  // metres, path distances
-  std::vector<FrontierScore> scores;
+  ExplorationGrid grid;
+  ExplorationQuery query;
 };
 
 Point2 ToPoint(const semnav::common::v1::Pose2D& p) { return {p.x(), p.y()}; }
@@ -145,30 +137,7 @@ struct GoalFilter {
   bool empty() const { return exclusions.goals.empty() && !bounds.area.has_value(); }
 };
 
-// Drops the frontier cells the filter rejects (near excluded goals: the part the robot could not
-// clear; outside the search area), then clusters left smaller than min_cells; centroid and anchor
-// are those of the cells kept.
-std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers, const GridFrame& frame,
-                                           const GoalFilter& filter, int min_cells) {
-  std::vector<Frontier> kept;
-  for (Frontier& f : frontiers) {
-    std::erase_if(f.cells, [&](const Cell& c) { return filter.Drops(ToPoint(frame.ToPose(c))); });
-    if (f.cells.empty() || static_cast<int>(f.cells.size()) < min_cells) continue;
-    double sx = 0.0, sy = 0.0;
-    for (const Cell& c : f.cells) {
-      sx += c.x;
-      sy += c.y;
-    }
-    f.centroid_x = sx / f.cells.size();
-    f.centroid_y = sy / f.cells.size();
-    f.anchor = *std::min_element(f.cells.begin(), f.cells.end(), [&](const Cell& a, const Cell& b) {
-      return std::hypot(a.x - f.centroid_x, a.y - f.centroid_y) < std::hypot(b.x - f.centroid_x, b.y - f.centroid_y);
-    });
-    kept.push_back(std::move(f));
-  }
-  return kept;
-}
-
+// The checked request pieces as the core's grid and query.
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
                                        const semnav::common::v1::Pose2D& robot,
                                        uint32_t min_cells, const std::string& min_cells_field,
@@ -184,35 +153,56 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   view.frame = *frame;
   absl::StatusOr<Cell> cell = view.frame.ToCell(robot, "robot");
   if (!cell.ok()) return cell.status();
-  view.robot = *cell;
+  view.query.robot = *cell;
+  view.query.robot_yaw_rad = robot.yaw();
+  view.query.min_frontier_cells =
+      min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
+  view.query.objects = ObjectsOf(semantics);
+  view.query.visited = VisitedOf(semantics);
+  if (!filter.empty()) {
+    view.query.excluded = [filter](Point2 p) { return filter.Drops(p); };
+  }
+  if (filter.bounds.area.has_value()) {
+    view.query.outside_area = [bounds = filter.bounds](Point2 p) { return bounds.Outside(p); };
+  }
+  view.grid.resolution_m = frame->resolution;
+  view.grid.origin_x = frame->origin_x;
+  view.grid.origin_y = frame->origin_y;
   absl::StatusOr<CellGrid<uint8_t>> explored = ToExplored(grid, field);
   if (!explored.ok()) return explored.status();
-  view.explored = *std::move(explored);
+  view.grid.explored = *std::move(explored);
   absl::StatusOr<PassabilityGrid> free =
       ToPassability(grid, {config.occupied_percent, false}, field);
   if (!free.ok()) return free.status();
-  view.free = *std::move(free);
-  const int min =
-      min_cells > 0 ? static_cast<int>(min_cells) : config.exploration.min_frontier_cells;
-  view.frontiers = ExtractFrontiers(view.explored, view.free, min);
-  if (!filter.empty()) view.frontiers = WithoutExcludedCells(std::move(view.frontiers), view.frame, filter, min);
-  const std::vector<double> distance = OctileDistanceField(view.free, view.robot);
-  for (const Frontier& f : view.frontiers) {
-    double nearest = kUnreachable;
-    for (const Cell& c : f.cells) nearest = std::min(nearest, distance[view.free.Index(c)]);
-    const double x = view.frame.origin_x + (f.centroid_x + 0.5) * view.frame.resolution;
-    const double y = view.frame.origin_y + (f.centroid_y + 0.5) * view.frame.resolution;
-    view.candidates.push_back(
-        {{x, y}, nearest == kUnreachable ? -1.0 : nearest * view.frame.resolution});
-  }
-  const Point2 robot_m = ToPoint(view.frame.ToPose(view.robot));
-  view.scores = ScoreFrontiers(view.candidates, robot_m, VisitedOf(semantics), ObjectsOf(semantics),
-                               config.exploration.score);
+  view.grid.free = *std::move(free);
   return view;
 }
 
-absl::Status NotFound(absl::string_view message) {
-  return FieldError(absl::StatusCode::kNotFound, "", message, "NO_EXPLORATION_GOAL");
+pb::ExplorationStrategy ToProto(ExplorationStrategy strategy) {
+  switch (strategy) {
+    case ExplorationStrategy::kCoverageMax:
+      return pb::EXPLORATION_STRATEGY_COVERAGE_MAX;
+    case ExplorationStrategy::kSemanticFrontier:
+      return pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER;
+    case ExplorationStrategy::kEroiUtility:
+      return pb::EXPLORATION_STRATEGY_EROI_UTILITY;
+    case ExplorationStrategy::kNearestFrontier:
+      break;
+  }
+  return pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER;
+}
+
+ExplorationStrategy FromProto(pb::ExplorationStrategy strategy) {
+  switch (strategy) {
+    case pb::EXPLORATION_STRATEGY_COVERAGE_MAX:
+      return ExplorationStrategy::kCoverageMax;
+    case pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER:
+      return ExplorationStrategy::kSemanticFrontier;
+    case pb::EXPLORATION_STRATEGY_EROI_UTILITY:
+      return ExplorationStrategy::kEroiUtility;
+    default:  // UNSPECIFIED = nearest frontier
+      return ExplorationStrategy::kNearestFrontier;
+  }
 }
 
 }  // namespace
@@ -225,14 +215,15 @@ absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
       BuildView(grid, field, request.robot(), request.min_cells(), "min_cells",
                 request.semantics(), config);
   if (!view.ok()) return view.status();
-  for (size_t i = 0; i < view->frontiers.size(); ++i) {
+  const FrontierSet set = CollectFrontiers(view->grid, view->query, config.exploration.score);
+  for (size_t i = 0; i < set.frontiers.size(); ++i) {
     pb::Frontier* f = response->add_frontiers();
-    f->mutable_centroid()->set_x(view->candidates[i].centroid.x);
-    f->mutable_centroid()->set_y(view->candidates[i].centroid.y);
-    *f->mutable_anchor() = view->frame.ToPose(view->frontiers[i].anchor);
-    f->set_size_cells(static_cast<uint32_t>(view->frontiers[i].cells.size()));
-    f->set_path_distance_m(view->candidates[i].path_distance_m);
-    SetScore(view->scores[i], f->mutable_score());
+    f->mutable_centroid()->set_x(set.candidates[i].centroid.x);
+    f->mutable_centroid()->set_y(set.candidates[i].centroid.y);
+    *f->mutable_anchor() = view->frame.ToPose(set.frontiers[i].anchor);
+    f->set_size_cells(static_cast<uint32_t>(set.frontiers[i].cells.size()));
+    f->set_path_distance_m(set.candidates[i].path_distance_m);
+    SetScore(set.scores[i], f->mutable_score());
   }
   response->set_map_revision(grid.revision());
   return absl::OkStatus();
@@ -326,77 +317,18 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                                                 "min_frontier_cells", request.semantics(),
                                                 config, filter);
   if (!view.ok()) return view.status();
-  const pb::ExplorationStrategy strategy =
-      request.strategy() == pb::EXPLORATION_STRATEGY_UNSPECIFIED
-          ? pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER
-          : request.strategy();
-  response->set_strategy(strategy);
+  const ExplorationStrategy strategy = FromProto(request.strategy());
+  view->query.eroi_values.assign(request.eroi_semantic_values().begin(),
+                                 request.eroi_semantic_values().end());
+  absl::StatusOr<ExplorationChoice> choice = SelectExplorationGoal(
+      view->grid, view->query, strategy, config.exploration.GoalConfig(view->frame.resolution));
+  if (!choice.ok()) return choice.status();
+  response->set_strategy(ToProto(strategy));
   response->set_map_revision(grid.revision());
-  switch (strategy) {
-    case pb::EXPLORATION_STRATEGY_COVERAGE_MAX: {
-      // Seed 004: unknown space counts as free for the long-term goal.
-      PassabilityGrid open = view->free;
-      for (int i = 0; i < open.size(); ++i) {
-        if (view->explored.values()[i] == 0) open.values()[i] = 1;
-      }
-      // Excluded goals' surroundings and cells outside the search area cannot hold the goal.
-      for (int y = 0; y < open.height(); ++y) {
-        for (int x = 0; x < open.width(); ++x) {
-          if (filter.Drops(ToPoint(view->frame.ToPose(Cell{x, y})))) open.at(x, y) = 0;
-        }
-      }
-      const std::optional<Cell> goal =
-          CoverageMaxGoal(open, view->robot, request.robot().yaw(), config.exploration.coverage);
-      if (!goal) return NotFound("no reachable boundary goal in any direction");
-      *response->mutable_goal() = view->frame.ToPose(*goal);
-      return absl::OkStatus();
-    }
-    case pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER: {
-      int best = -1;
-      for (size_t i = 0; i < view->scores.size(); ++i) {
-        if (view->candidates[i].path_distance_m < 0) continue;
-        if (best < 0 || view->scores[i].total > view->scores[best].total)
-          best = static_cast<int>(i);
-      }
-      if (best < 0) return NotFound("no reachable frontier");
-      *response->mutable_goal() = view->frame.ToPose(view->frontiers[best].anchor);
-      response->set_score(view->scores[best].total);
-      return absl::OkStatus();
-    }
-    case pb::EXPLORATION_STRATEGY_EROI_UTILITY: {
-      const EroiConfig eroi = config.exploration.EroiInCells(view->frame.resolution);
-      const std::vector<double> values(request.eroi_semantic_values().begin(),
-                                       request.eroi_semantic_values().end());
-      const int count = EroiCount(view->frame.width, view->frame.height, eroi);
-      if (!values.empty() && static_cast<int>(values.size()) != count) {
-        return FieldError(absl::StatusCode::kInvalidArgument, "eroi_semantic_values",
-                          absl::StrCat("eroi_semantic_values has ", values.size(),
-                                       " values; this grid has ", count, " EROIs"));
-      }
-      // Outside the search area counts as explored: no information to gain there.
-      CellGrid<uint8_t> explored = view->explored;
-      for (int y = 0; y < explored.height(); ++y) {
-        for (int x = 0; x < explored.width(); ++x) {
-          if (filter.bounds.Outside(ToPoint(view->frame.ToPose(Cell{x, y})))) explored.at(x, y) = 1;
-        }
-      }
-      const std::optional<EroiChoice> choice =
-          SelectEroiGoal({explored, view->free}, view->robot, values, eroi);
-      if (!choice) return NotFound("no reachable EROI viewpoint");
-      *response->mutable_goal() = view->frame.ToPose(choice->viewpoint);
-      response->set_score(choice->utility);
-      for (const Cell& c : choice->route) *response->add_route() = view->frame.ToPose(c);
-      return absl::OkStatus();
-    }
-    default: {
-      const std::optional<NearestFrontier> nearest =
-          SelectNearestFrontier(view->frontiers, view->free, view->robot);
-      if (!nearest) return NotFound("no reachable frontier");
-      *response->mutable_goal() = view->frame.ToPose(nearest->cell);
-      response->set_score(nearest->distance_cells * view->frame.resolution);
-      return absl::OkStatus();
-    }
-  }
+  *response->mutable_goal() = view->frame.ToPose(choice->goal);
+  if (strategy != ExplorationStrategy::kCoverageMax) response->set_score(choice->score);
+  for (const Cell& c : choice->route) *response->add_route() = view->frame.ToPose(c);
+  return absl::OkStatus();
 }
 
 }  // namespace semnav::planning

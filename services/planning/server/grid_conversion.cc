@@ -36,6 +36,20 @@ absl::StatusOr<Cell> GridFrame::ToCell(const semnav::common::v1::Pose2D& pose,
   return Cell{static_cast<int>(col), static_cast<int>(row)};
 }
 
+absl::StatusOr<Cell> GridFrame::ToCellAnywhere(const semnav::common::v1::Pose2D& pose,
+                                               const std::string& field) const {
+  if (absl::Status s = CheckPose2D(pose, field); !s.ok()) return s;
+  const double col = std::floor((pose.x() - origin_x) / resolution);
+  const double row = std::floor((pose.y() - origin_y) / resolution);
+  // A pose this far out is no start a planner could pad to (and would overflow an int).
+  constexpr double kMaxCellsOutside = 1 << 20;
+  if (!(std::abs(col) < kMaxCellsOutside + width && std::abs(row) < kMaxCellsOutside + height)) {
+    return Invalid(field, absl::StrCat(field, " (", pose.x(), ", ", pose.y(),
+                                       ") m is far outside the grid"));
+  }
+  return Cell{static_cast<int>(col), static_cast<int>(row)};
+}
+
 semnav::common::v1::Pose2D GridFrame::ToPose(Cell cell) const {
   semnav::common::v1::Pose2D pose;
   pose.set_x(origin_x + (cell.x + 0.5) * resolution);

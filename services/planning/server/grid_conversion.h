@@ -22,6 +22,10 @@ struct GridFrame {
   // The cell containing (x, y); INVALID_ARGUMENT naming `field` when outside.
   absl::StatusOr<Cell> ToCell(const semnav::common::v1::Pose2D& pose,
                               const std::string& field) const;
+  // The cell containing (x, y), which may lie outside the grid (a planner may pad to it);
+  // INVALID_ARGUMENT naming `field` when the pose is not finite or bounded.
+  absl::StatusOr<Cell> ToCellAnywhere(const semnav::common::v1::Pose2D& pose,
+                                      const std::string& field) const;
   // The centre of `cell`, yaw 0.
   semnav::common::v1::Pose2D ToPose(Cell cell) const;
 };

@@ -58,6 +58,9 @@ void FillResponse(const GridFrame& frame, const GridPlanResult& result,
   response->set_alternative_used(result.alternative_used);
   response->set_adjustment_reason(result.adjustment_reason);
   response->set_low_probability_cells_used(result.low_probability_cells_used);
+  response->set_start_adjusted(result.start_adjusted);
+  *response->mutable_planned_start() = frame.ToPose(result.planned_start);
+  response->set_grid_padded(result.grid_padded);
   response->set_expansions(static_cast<uint32_t>(result.path.expansions));
 }
 

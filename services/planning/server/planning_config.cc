@@ -1,5 +1,7 @@
 #include "services/planning/server/planning_config.h"
 
+#include <cmath>
+
 namespace semnav::planning {
 
 absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section) {
@@ -7,7 +9,36 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section)
   ConfigReader grid = section.Child("grid");
   grid.Read("occupied_percent", &config.occupied_percent)
       .Read("unknown_is_free", &config.unknown_is_free)
-      .Read("max_low_probability_percent", &config.grid_planner.max_low_probability_percent);
+      .Read("max_low_probability_percent", &config.grid_planner.max_low_probability_percent)
+      .Read("start_snap_radius_m", &config.grid_planner.start_snap_radius_m)
+      .Read("max_start_outside_m", &config.grid_planner.max_start_outside_m)
+      .Read("max_goal_outside_m", &config.grid_planner.max_goal_outside_m);
+  ClearanceConfig& clearance = config.grid_planner.clearance;
+  ConfigReader clear = section.Child("clearance");
+  clear.Read("clearance_m", &clearance.clearance_m)
+      .Read("cost_scaling_per_m", &clearance.cost_scaling_per_m)
+      .Read("cost_penalty", &clearance.cost_penalty);
+  clear.Check(std::isfinite(clearance.clearance_m) && clearance.clearance_m >= 0 &&
+                  clearance.clearance_m <= 10,
+              "clearance_m", "must be in [0, 10]");
+  clear.Check(std::isfinite(clearance.cost_scaling_per_m) && clearance.cost_scaling_per_m >= 0 &&
+                  clearance.cost_scaling_per_m <= 100,
+              "cost_scaling_per_m", "must be in [0, 100]");
+  clear.Check(std::isfinite(clearance.cost_penalty) && clearance.cost_penalty >= 0 &&
+                  clearance.cost_penalty <= 100,
+              "cost_penalty", "must be in [0, 100]");
+  grid.Check(std::isfinite(config.grid_planner.start_snap_radius_m) &&
+                 config.grid_planner.start_snap_radius_m >= 0 &&
+                 config.grid_planner.start_snap_radius_m <= 5,
+             "start_snap_radius_m", "must be in [0, 5]");
+  grid.Check(std::isfinite(config.grid_planner.max_start_outside_m) &&
+                 config.grid_planner.max_start_outside_m >= 0 &&
+                 config.grid_planner.max_start_outside_m <= 10,
+             "max_start_outside_m", "must be in [0, 10]");
+  grid.Check(std::isfinite(config.grid_planner.max_goal_outside_m) &&
+                 config.grid_planner.max_goal_outside_m >= 0 &&
+                 config.grid_planner.max_goal_outside_m <= 10,
+             "max_goal_outside_m", "must be in [0, 10]");
   grid.Check(config.occupied_percent >= 1 && config.occupied_percent <= 100, "occupied_percent",
              "must be in 1..100");
   grid.Check(config.grid_planner.max_low_probability_percent >= 0 &&

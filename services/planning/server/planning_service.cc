@@ -212,9 +212,14 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
   const GridMap& map = **resolved;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(map, grid_field);
   if (!frame.ok()) return frame.status();
-  absl::StatusOr<Cell> start = frame->ToCell(request.start(), "start");
+  // 2D planners pad the grid to a start just outside it (GridPlannerConfig::max_start_outside_m).
+  absl::StatusOr<Cell> start = request.planner() == pb::PLANNER_KIND_JUMP_ASTAR
+                                   ? frame->ToCell(request.start(), "start")
+                                   : frame->ToCellAnywhere(request.start(), "start");
   if (!start.ok()) return start.status();
-  absl::StatusOr<Cell> goal = frame->ToCell(request.goal(), "goal");
+  absl::StatusOr<Cell> goal = request.planner() == pb::PLANNER_KIND_JUMP_ASTAR
+                                  ? frame->ToCell(request.goal(), "goal")
+                                  : frame->ToCellAnywhere(request.goal(), "goal");
   if (!goal.ok()) return goal.status();
 
   SearchLimits limits;
@@ -253,6 +258,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
       plan.first_sighting = *sighting;
     }
     plan.use_jps = request.planner() != pb::PLANNER_KIND_ASTAR;
+    plan.keep_clearance = request.keep_clearance();
     plan.limits = limits;
     GridPlanner planner(config_.grid_planner);
     absl::StatusOr<GridPlanResult> result = planner.Plan(plan);
@@ -260,7 +266,8 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     failure = result.status();
   }
   if (!failure.ok()) {
-    AttachPlanFailure(failure, *start, *goal);
+    AttachPlanFailure(failure, Cell{std::max(start->x, 0), std::max(start->y, 0)},
+                      Cell{std::max(goal->x, 0), std::max(goal->y, 0)});
     return failure;
   }
   response->set_planning_time_ms(absl::ToDoubleMilliseconds(absl::Now() - started));

@@ -121,13 +121,50 @@ TEST_F(PlanningContract, TypedFailuresForOccupiedEndpoints) {
   EXPECT_EQ(detail->goal_column(), 0u);
   EXPECT_EQ(detail->goal_row(), 2u);
 
+  // A start in the wall snaps to the nearest free cell (within start_snap_radius_m, 0.5 m).
   request = DoorRequest(pb::PLANNER_KIND_ASTAR);
   *request.mutable_start() = At(6, 2, 0.5);
+  status = Plan(request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_TRUE(response.start_adjusted());
+  EXPECT_NEAR(response.path(0).x(), At(6, 2, 0.5).x(), 1e-12);  // begins where the robot is
+  EXPECT_NEAR(response.path(0).y(), At(6, 2, 0.5).y(), 1e-12);
+  EXPECT_NEAR(response.planned_start().x(), At(6, 3, 0.5).x(), 1e-12);
+  EXPECT_NEAR(response.planned_start().y(), At(6, 3, 0.5).y(), 1e-12);
+
+  // No free cell within the snap radius: the typed failure stays.
+  request.set_robot_radius_m(1.0);  // two cells: the wall's inflation covers the whole map
+  response.Clear();
   status = Plan(request, &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
   detail = GetDetail<pb::PlanFailureDetail>(status);
   ASSERT_TRUE(detail.has_value());
   EXPECT_EQ(detail->reason(), pb::PLAN_FAILURE_REASON_START_OCCUPIED);
+}
+
+void ExpectFieldError(const grpc::Status& status, const std::string& field);
+
+TEST_F(PlanningContract, StartJustOutsideTheGridIsPlannedFrom) {
+  pb::PlanPathRequest request = DoorRequest(pb::PLANNER_KIND_JPS);
+  request.mutable_start()->set_x(-1.2);  // 0.2 m left of the grid's origin (-1, -2)
+  pb::PlanPathResponse response;
+  grpc::Status status = Plan(request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_TRUE(response.grid_padded());
+  EXPECT_NEAR(response.path(0).x(), -1.25, 1e-12);  // the padded column's centre
+  EXPECT_NEAR(response.path(response.path_size() - 1).x(), 2.25, 1e-12);
+  // Farther out than max_start_outside_m (1 m): an error naming the start.
+  request.mutable_start()->set_x(-3.0);
+  ExpectFieldError(Plan(request, &response), "start");
+
+  // A goal 0.2 m past the right edge (x = 2.5): planned to the edge cell, column 6.
+  request = DoorRequest(pb::PLANNER_KIND_JPS);
+  request.mutable_goal()->set_x(2.7);
+  response.Clear();
+  status = Plan(request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_TRUE(response.goal_adjusted());
+  EXPECT_NEAR(response.planned_goal().x(), 2.25, 1e-12);
 }
 
 TEST_F(PlanningContract, AlternativePointForAGoalInTheWall) {
@@ -256,7 +293,7 @@ TEST_F(PlanningContract, BadInputNamesTheFieldAndChangesNothing) {
 
   pb::PlanPathResponse response;
   pb::PlanPathRequest outside = DoorRequest(pb::PLANNER_KIND_JPS);
-  outside.mutable_goal()->set_x(100.0);
+  outside.mutable_goal()->set_x(100.0);  // far beyond max_goal_outside_m
   ExpectFieldError(Plan(outside, &response), "goal");
 
   pb::PlanPathRequest short_layer = DoorRequest(pb::PLANNER_KIND_JPS);

@@ -1,5 +1,8 @@
 #include "services/reasoning/core/conceptnet_cooccurrence.h"
 
+#include <cmath>
+#include <map>
+
 #include "services/modelproxy/core/offline/lexicon.h"
 
 namespace semnav::reasoning {
@@ -18,6 +21,31 @@ double ConceptNetCooccurrence::Cooccurrence(std::string_view target, std::string
   // A label that is no object of the prior may be a place the target is found at ("road" for
   // a car, "river" for a boat: stuff a segmenter reports).
   return prior_.Affinity(target_term, label_term);
+}
+
+double ConceptNetCooccurrence::RoomCooccurrence(std::string_view target,
+                                                 const std::vector<std::string>& labels) const {
+  using modelproxy::offline::CanonicalTerm;
+  constexpr size_t kAllPlaces = 1 << 16;
+  const std::string target_term = CanonicalTerm(absl::string_view(target.data(), target.size()));
+  std::map<std::string, double> room;
+  int known = 0;
+  for (const std::string& label : labels) {
+    const std::string term = CanonicalTerm(label);
+    if (!prior_.Knows(term)) continue;
+    ++known;
+    for (const auto& [place, p] : prior_.TopPlaces(term, kAllPlaces)) room[place] += p;
+  }
+  if (known == 0) return 0.0;
+  double dot = 0.0, target_norm = 0.0, room_norm = 0.0;
+  for (const auto& [place, p] : prior_.TopPlaces(target_term, kAllPlaces)) {
+    target_norm += p * p;
+    auto it = room.find(place);
+    if (it != room.end()) dot += p * it->second;
+  }
+  for (const auto& [place, w] : room) room_norm += w * w;
+  if (target_norm == 0.0 || room_norm == 0.0) return 0.0;
+  return dot / std::sqrt(target_norm * room_norm);  // the mean's 1/known cancels in the cosine
 }
 
 }  // namespace semnav::reasoning

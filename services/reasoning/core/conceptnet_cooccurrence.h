@@ -8,6 +8,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "services/modelproxy/core/offline/place_prior.h"
@@ -21,6 +22,10 @@ class ConceptNetCooccurrence final : public CooccurrencePrior {
   static absl::StatusOr<ConceptNetCooccurrence> Load(const std::string& json_path);
 
   double Cooccurrence(std::string_view target, std::string_view label) const override;
+  // The room's place distribution is the mean of its known objects' P(place | object); the
+  // value is its cosine with the target's (Relatedness of the target with the room as a whole:
+  // sink + oven + fridge reads as a kitchen). 0 when no object is known.
+  double RoomCooccurrence(std::string_view target, const std::vector<std::string>& labels) const override;
 
  private:
   explicit ConceptNetCooccurrence(modelproxy::offline::PlacePrior prior) : prior_(std::move(prior)) {}

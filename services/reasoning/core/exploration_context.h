@@ -24,6 +24,10 @@ class CooccurrencePrior {
  public:
   virtual ~CooccurrencePrior() = default;
   virtual double Cooccurrence(std::string_view target, std::string_view label) const = 0;
+  // Co-occurrence of the target with a room, known only by the objects seen in it together
+  // (object-room co-occurrence without a room classifier). Default: the mean pairwise value, so
+  // one stray object does not make a room; a prior that knows places overrides it.
+  virtual double RoomCooccurrence(std::string_view target, const std::vector<std::string>& labels) const;
 };
 
 struct ExplorationHint {
@@ -41,7 +45,9 @@ struct SearchArea {
 };
 
 struct ExplorationContext {
-  std::vector<ExplorationHint> objects;        // only objects with some non-zero term
+  // Objects with some non-zero term, then one hint per scene region of >= 2 objects (label
+  // "region:<id>", at its objects' mean, co-occurrence = RoomCooccurrence of its objects).
+  std::vector<ExplorationHint> objects;
   std::vector<Eigen::Vector3d> visited;        // topological memory nodes
   // EROI_UTILITY (seed 000): semantic value per EROI column of edge `eroi_edge_m` over the
   // rectangle [eroi_window_min, eroi_window_max], row-major with x fastest; empty = none.

@@ -76,6 +76,26 @@ TEST_F(GatewayExplorationContextTest, VisitedPlacesComeFromMemoryAndRoomsGiveNoO
   EXPECT_DOUBLE_EQ(context.visited[1].x(), 3.0);
 }
 
+TEST_F(GatewayExplorationContextTest, RegionsOfTwoOrMoreObjectsGiveARoomHint) {
+  SceneGraph graph;
+  graph.objects = {Object(1, "sink", 1.0), Object(2, "oven", 3.0), Object(3, "toilet", 9.0),
+                   Object(4, "cup", 2.0)};
+  graph.regions = {{7, "area_with_sink_oven", {1, 2, 4}}, {8, "area_with_toilet", {3}}};
+  TargetSpec target;
+  target.name = "cup";
+  const TablePrior prior({{{"cup", "sink"}, 0.4}, {{"cup", "oven"}, 0.2}});
+  const ExplorationContext context = BuildExplorationContext(target, graph, matcher_, &prior, nullptr);
+  // cup (relevance 1), sink, oven as objects; then the kitchen-like region: the seen cup is left
+  // out of it, the room value is the default mean (0.4 + 0.2) / 2 at the mean of x = 1 and 3.
+  // The one-object region gives no hint.
+  ASSERT_EQ(context.objects.size(), 4u);
+  const ExplorationHint& room = context.objects.back();
+  EXPECT_EQ(room.label, "region:7");  // by id: region names grow with their objects
+  EXPECT_DOUBLE_EQ(room.cooccurrence, 0.3);
+  EXPECT_DOUBLE_EQ(room.position.x(), 2.0);
+  EXPECT_DOUBLE_EQ(room.relevance, 0.0);
+}
+
 // The shipped ConceptNet prior (shared/data): objects found in the same places co-occur.
 TEST(GatewayConceptNetCooccurrenceTest, SharedPriorRelatesKitchenwareNotBathroomware) {
   absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(SEMNAV_PRIOR_JSON);
@@ -89,6 +109,14 @@ TEST(GatewayConceptNetCooccurrenceTest, SharedPriorRelatesKitchenwareNotBathroom
   EXPECT_NEAR(prior->Cooccurrence("car", "road"), 4.47213595499958 / 7.483314773547882, 1e-9);
   EXPECT_NEAR(prior->Cooccurrence("boat", "river"), 2.82842712474619 / 8.246211251235321, 1e-9);
   EXPECT_EQ(prior->Cooccurrence("boat", "road"), 0.0);
+  // A room read from its objects: kitchenware says kitchen, where a fork is found, more than a
+  // bathroom does; the cosine of the room's summed place distribution with the fork's.
+  const double kitchen = prior->RoomCooccurrence("fork", {"knife", "oven", "sink"});
+  const double bathroom = prior->RoomCooccurrence("fork", {"toilet", "toothbrush"});
+  EXPECT_GT(kitchen, bathroom);
+  EXPECT_GT(kitchen, 0.3);
+  EXPECT_NEAR(prior->RoomCooccurrence("fork", {"knife"}), prior->Cooccurrence("fork", "knife"), 1e-12);
+  EXPECT_EQ(prior->RoomCooccurrence("fork", {"fire extinguisher"}), 0.0);  // nothing known
   EXPECT_EQ(ConceptNetCooccurrence::Load("/nonexistent/conceptnet.json").status().code(),
             absl::StatusCode::kNotFound);
 }

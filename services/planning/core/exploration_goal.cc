@@ -1,0 +1,141 @@
+#include "services/planning/core/exploration_goal.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
+#include "services/planning/core/distance_field.h"
+
+namespace semnav::planning {
+namespace {
+
+// Drops the frontier cells the caller excluded (near excluded goals: the part the robot could
+// not clear; outside the search area), then clusters left smaller than min_cells; centroid and
+// anchor are those of the cells kept.
+std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers,
+                                           const ExplorationGrid& grid,
+                                           const std::function<bool(Point2)>& excluded,
+                                           int min_cells) {
+  std::vector<Frontier> kept;
+  for (Frontier& f : frontiers) {
+    std::erase_if(f.cells, [&](const Cell& c) { return excluded(grid.CentreOf(c)); });
+    if (f.cells.empty() || static_cast<int>(f.cells.size()) < min_cells) continue;
+    double sx = 0.0, sy = 0.0;
+    for (const Cell& c : f.cells) {
+      sx += c.x;
+      sy += c.y;
+    }
+    f.centroid_x = sx / f.cells.size();
+    f.centroid_y = sy / f.cells.size();
+    f.anchor = *std::min_element(f.cells.begin(), f.cells.end(), [&](const Cell& a, const Cell& b) {
+      return std::hypot(a.x - f.centroid_x, a.y - f.centroid_y) <
+             std::hypot(b.x - f.centroid_x, b.y - f.centroid_y);
+    });
+    kept.push_back(std::move(f));
+  }
+  return kept;
+}
+
+absl::Status NotFound(absl::string_view message) {
+  return FieldStatus(absl::StatusCode::kNotFound, "", message, "NO_EXPLORATION_GOAL");
+}
+
+}  // namespace
+
+FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery& query,
+                             const FrontierScoreConfig& score) {
+  FrontierSet set;
+  set.frontiers = ExtractFrontiers(grid.explored, grid.free, query.min_frontier_cells);
+  if (query.excluded) {
+    set.frontiers = WithoutExcludedCells(std::move(set.frontiers), grid, query.excluded,
+                                         query.min_frontier_cells);
+  }
+  const std::vector<double> distance = OctileDistanceField(grid.free, query.robot);
+  for (const Frontier& f : set.frontiers) {
+    double nearest = kUnreachable;
+    for (const Cell& c : f.cells) nearest = std::min(nearest, distance[grid.free.Index(c)]);
+    set.candidates.push_back({grid.CentreOf(f.centroid_x, f.centroid_y),
+                              nearest == kUnreachable ? -1.0 : nearest * grid.resolution_m});
+  }
+  set.scores = ScoreFrontiers(set.candidates, grid.CentreOf(query.robot), query.visited,
+                              query.objects, score);
+  return set;
+}
+
+absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,
+                                                        const ExplorationQuery& query,
+                                                        ExplorationStrategy strategy,
+                                                        const ExplorationGoalConfig& config) {
+  switch (strategy) {
+    case ExplorationStrategy::kCoverageMax: {
+      // Seed 004: unknown space counts as free for the long-term goal.
+      PassabilityGrid open = grid.free;
+      for (int i = 0; i < open.size(); ++i) {
+        if (grid.explored.values()[i] == 0) open.values()[i] = 1;
+      }
+      // Excluded goals' surroundings and cells outside the search area cannot hold the goal.
+      if (query.excluded) {
+        for (int y = 0; y < open.height(); ++y) {
+          for (int x = 0; x < open.width(); ++x) {
+            if (query.excluded(grid.CentreOf(Cell{x, y}))) open.at(x, y) = 0;
+          }
+        }
+      }
+      const std::optional<Cell> goal =
+          CoverageMaxGoal(open, query.robot, query.robot_yaw_rad, config.coverage);
+      if (!goal) return NotFound("no reachable boundary goal in any direction");
+      return ExplorationChoice{*goal, 0.0, {}};
+    }
+    case ExplorationStrategy::kSemanticFrontier: {
+      const FrontierSet set = CollectFrontiers(grid, query, config.score);
+      std::optional<int> best;
+      double score = 0.0;
+      if (config.value.enabled) {
+        const std::vector<FrontierValue> values =
+            ValueFrontiers(set.frontiers, set.candidates, grid.explored, grid.resolution_m,
+                           query.objects, config.value);
+        best = SelectValuedFrontier(set.candidates, values, config.value);
+        if (best) score = values[*best].utility;
+      } else {
+        for (size_t i = 0; i < set.scores.size(); ++i) {
+          if (set.candidates[i].path_distance_m < 0) continue;
+          if (!best || set.scores[i].total > set.scores[*best].total) best = static_cast<int>(i);
+        }
+        if (best) score = set.scores[*best].total;
+      }
+      if (!best) return NotFound("no reachable frontier");
+      return ExplorationChoice{set.frontiers[*best].anchor, score, {}};
+    }
+    case ExplorationStrategy::kEroiUtility: {
+      const int count = EroiCount(grid.explored.width(), grid.explored.height(), config.eroi);
+      if (!query.eroi_values.empty() && static_cast<int>(query.eroi_values.size()) != count) {
+        return InvalidField("eroi_semantic_values",
+                            absl::StrCat("eroi_semantic_values has ", query.eroi_values.size(),
+                                         " values; this grid has ", count, " EROIs"));
+      }
+      // Outside the search area counts as explored: no information to gain there.
+      CellGrid<uint8_t> explored = grid.explored;
+      if (query.outside_area) {
+        for (int y = 0; y < explored.height(); ++y) {
+          for (int x = 0; x < explored.width(); ++x) {
+            if (query.outside_area(grid.CentreOf(Cell{x, y}))) explored.at(x, y) = 1;
+          }
+        }
+      }
+      const std::optional<EroiChoice> choice =
+          SelectEroiGoal({explored, grid.free}, query.robot, query.eroi_values, config.eroi);
+      if (!choice) return NotFound("no reachable EROI viewpoint");
+      return ExplorationChoice{choice->viewpoint, choice->utility, choice->route};
+    }
+    case ExplorationStrategy::kNearestFrontier:
+      break;
+  }
+  const FrontierSet set = CollectFrontiers(grid, query, config.score);
+  const std::optional<NearestFrontier> nearest =
+      SelectNearestFrontier(set.frontiers, grid.free, query.robot);
+  if (!nearest) return NotFound("no reachable frontier");
+  return ExplorationChoice{nearest->cell, nearest->distance_cells * grid.resolution_m, {}};
+}
+
+}  // namespace semnav::planning

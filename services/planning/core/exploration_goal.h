@@ -1,0 +1,82 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "services/planning/core/cell_grid.h"
+#include "services/planning/core/coverage_goal.h"
+#include "services/planning/core/eroi_utility.h"
+#include "services/planning/core/frontier.h"
+#include "services/planning/core/frontier_scoring.h"
+#include "services/planning/core/frontier_value.h"
+
+namespace semnav::planning {
+
+enum class ExplorationStrategy { kNearestFrontier, kCoverageMax, kSemanticFrontier, kEroiUtility };
+
+// The grid exploration reads, placed in the map frame.
+struct ExplorationGrid {
+  double resolution_m = 0.05;
+  double origin_x = 0.0;
+  double origin_y = 0.0;
+  CellGrid<uint8_t> explored;  // 1 observed
+  PassabilityGrid free;        // unknown counts as blocked
+  Point2 CentreOf(Cell c) const {
+    return {origin_x + (c.x + 0.5) * resolution_m, origin_y + (c.y + 0.5) * resolution_m};
+  }
+  Point2 CentreOf(double col, double row) const {
+    return {origin_x + (col + 0.5) * resolution_m, origin_y + (row + 0.5) * resolution_m};
+  }
+};
+
+// Everything the caller knows for one choice (map frame, metres).
+struct ExplorationQuery {
+  Cell robot;
+  double robot_yaw_rad = 0.0;
+  int min_frontier_cells = 5;
+  std::vector<ScoredObject> objects;
+  std::vector<Point2> visited;
+  // A goal must not be chosen here (near a goal the caller could not reach, or outside the
+  // operator's search area); unset = nowhere.
+  std::function<bool(Point2)> excluded;
+  // Outside the operator's search area (EROI counts it as explored); unset = nowhere.
+  std::function<bool(Point2)> outside_area;
+  std::vector<double> eroi_values;  // EROI_UTILITY semantic values; empty = uniform
+};
+
+struct ExplorationGoalConfig {
+  FrontierScoreConfig score;  // seed 002 terms (reported; SEMANTIC_FRONTIER with value map off)
+  FrontierValueConfig value;  // SEMANTIC_FRONTIER's value map
+  CoverageGoalConfig coverage;
+  EroiConfig eroi;            // cells
+};
+
+// Frontiers with the excluded cells removed, their path distances and scores.
+struct FrontierSet {
+  std::vector<Frontier> frontiers;
+  std::vector<FrontierCandidate> candidates;  // metres, path distances (-1 unreachable)
+  std::vector<FrontierScore> scores;          // seed 002
+};
+
+FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery& query,
+                             const FrontierScoreConfig& score);
+
+struct ExplorationChoice {
+  Cell goal;
+  double score = 0.0;       // strategy-specific (distance m, seed 002 total, utility)
+  std::vector<Cell> route;  // EROI_UTILITY's route; empty otherwise
+};
+
+// The exploration goal by strategy. NEAREST_FRONTIER and COVERAGE_MAX are the seed 004
+// baselines; SEMANTIC_FRONTIER takes the value map (frontier_value.h) or, with it off, the best
+// seed 002 total; EROI_UTILITY is seed 000's utility. NOT_FOUND with reason
+// NO_EXPLORATION_GOAL when nothing is reachable; INVALID_ARGUMENT naming eroi_semantic_values
+// when their count does not match the grid.
+absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,
+                                                        const ExplorationQuery& query,
+                                                        ExplorationStrategy strategy,
+                                                        const ExplorationGoalConfig& config);
+
+}  // namespace semnav::planning
