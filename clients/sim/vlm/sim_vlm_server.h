@@ -1,0 +1,46 @@
+// The simulated VLM behind the OpenAI-compatible chat-completions wire (POST <base>/chat/completions,
+// text and image_url data-URL parts), on 127.0.0.1: the model proxy reaches it like any vendor
+// (kind openai, base_url, model, key from a file). Each answer states its simulated latency in the
+// x-semnav-simulated-latency-s header, which the proxy reports as the call's latency.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "absl/status/statusor.h"
+#include "absl/synchronization/mutex.h"
+#include "clients/sim/vlm/sim_vlm.h"
+
+namespace httplib {
+class Server;
+}
+
+namespace semnav::sim::vlm {
+
+class SimVlmServer {
+ public:
+  // Listens on 127.0.0.1:`port` (0 = a free port) and serves on a background thread.
+  static absl::StatusOr<std::unique_ptr<SimVlmServer>> Start(std::unique_ptr<SimVlm> model, int port = 0);
+  ~SimVlmServer();
+
+  std::string base_url() const;  // "http://127.0.0.1:<port>/v1"
+  int port() const { return port_; }
+  int requests() const;
+
+ private:
+  explicit SimVlmServer(std::unique_ptr<SimVlm> model);
+
+  std::unique_ptr<SimVlm> model_;
+  std::unique_ptr<httplib::Server> server_;
+  int port_ = 0;
+  std::thread thread_;
+  mutable absl::Mutex mu_;
+  int requests_ ABSL_GUARDED_BY(mu_) = 0;
+};
+
+// The OpenAI chat body as a question: text parts joined by newlines, image_url data URLs decoded
+// (PNG/JPEG). INVALID_ARGUMENT naming the field for a malformed body.
+absl::StatusOr<VlmQuestion> ParseChatBody(const std::string& body);
+
+}  // namespace semnav::sim::vlm
