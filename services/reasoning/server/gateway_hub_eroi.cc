@@ -28,6 +28,12 @@ absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, c
   }
   absl::StatusOr<DecodedCameraFrame> decoded = DecodeCameraFrame(frame);
   if (!decoded.ok()) return decoded.status();
+  // Call economy: only a new view, not while backing off after a failure, within the budget.
+  ModelCallPolicy& calls = task->second.calls;
+  if (!AllowModelCall(task->second, calls.MayAskVision(Now(), decoded->position, decoded->orientation))) {
+    return absl::OkStatus();
+  }
+  calls.OnAskedVision(decoded->position, decoded->orientation);
   const EroiObservation observation =
       task->second.eroi->Annotate(decoded->position, decoded->orientation, decoded->camera, decoded->image);
   task->second.vision_busy = true;
@@ -35,23 +41,31 @@ absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, c
   ++model_calls_;
   const std::string task_id = task->first;
   backends_.model->Ask({robot_id, task_id}, {observation.prompt, EncodePng(decoded->image)},
-                       [this, task_id](absl::StatusOr<std::string> answer) { OnVisionAnswer(task_id, std::move(answer)); });
+                       [this, task_id, prompt_tokens = EstimateTokens(observation.prompt, "", true)](
+                           absl::StatusOr<std::string> answer) {
+                         OnVisionAnswer(task_id, std::move(answer), prompt_tokens);
+                       });
   return absl::OkStatus();
 }
 
-void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer) {
+void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer,
+                                int64_t prompt_tokens) {
   absl::MutexLock lock(&mu_);
   auto task = tasks_.find(task_id);
   if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
   Task& t = task->second;
   t.vision_busy = false;
   if (!answer.ok()) {
+    t.calls.OnFailure(Now());  // back off: the next frame does not ask again at once (the 636-call storm)
     LogDebug("eroi_vision_failed", {{"task", task_id}, {"message", answer.status().message()}});
     return;
   }
+  t.calls.OnAnswer(prompt_tokens + EstimateTokens("", *answer, false));
   const EroiEvidence evidence = t.eroi->OnVlmAnswer(*answer);
   LogDebug("eroi_vision_answer", {{"task", task_id}, {"codes", evidence.codes_used}, {"regions_due", evidence.due.size()}});
   for (const RegionDue& region : evidence.due) {
+    if (!AllowModelCall(t, t.calls.MayAsk(Now()))) break;
+    t.calls.OnAsked();
     ++t.model_calls;
     ++model_calls_;
     backends_.model->Ask({t.robot_id, task_id}, {t.eroi->RegionPrompt(region), ""},
@@ -66,6 +80,11 @@ void GatewayHub::OnRegionScore(const std::string& task_id, const RegionDue& regi
   absl::MutexLock lock(&mu_);
   auto task = tasks_.find(task_id);
   if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
+  if (answer.ok()) {
+    task->second.calls.OnAnswer(EstimateTokens(task->second.eroi->RegionPrompt(region), *answer, false));
+  } else {
+    task->second.calls.OnFailure(Now());
+  }
   const absl::Status applied = answer.ok() ? task->second.eroi->OnRegionAnswer(region, *answer) : answer.status();
   if (!applied.ok()) {
     LogDebug("eroi_region_score_unused", {{"task", task_id}, {"region", region.region}, {"message", applied.message()}});
