@@ -88,18 +88,25 @@ absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_pt
       absl::MutexLock lock(&self->mu_);
       ++self->requests_;
     }
-    const std::string& key = self->model_->config().api_key;
+    const std::shared_ptr<const SimVlm> model = self->model();
+    const std::string& key = model->config().api_key;
     if (!key.empty() && req.get_header_value("Authorization") != absl::StrCat("Bearer ", key)) {
       res.status = 401;
       res.set_content(ErrorBody(absl::UnauthenticatedError("invalid API key")), "application/json");
       return;
     }
     absl::StatusOr<VlmQuestion> question = ParseChatBody(req.body);
-    absl::StatusOr<VlmReply> reply = question.ok() ? self->model_->Answer(*question) : question.status();
+    absl::StatusOr<VlmReply> reply = question.ok() ? model->Answer(*question) : question.status();
     if (!reply.ok()) {
       res.status = 400;
       res.set_content(ErrorBody(reply.status()), "application/json");
       return;
+    }
+    {
+      absl::MutexLock lock(&self->mu_);
+      ++self->served_.answers;
+      self->served_.tokens += reply->input_tokens + reply->output_tokens;
+      self->served_.latency_s += reply->latency_s;
     }
     const nlohmann::json request = nlohmann::json::parse(req.body, nullptr, false);
     res.set_header(modelproxy::kSimulatedLatencyHeader, absl::StrFormat("%.3f", reply->latency_s));
@@ -130,7 +137,23 @@ SimVlmServer::~SimVlmServer() {
   if (thread_.joinable()) thread_.join();
 }
 
+void SimVlmServer::Replace(std::unique_ptr<SimVlm> model) {
+  if (model == nullptr) return;
+  absl::MutexLock lock(&mu_);
+  model_ = std::move(model);
+}
+
+std::shared_ptr<const SimVlm> SimVlmServer::model() const {
+  absl::MutexLock lock(&mu_);
+  return model_;
+}
+
 std::string SimVlmServer::base_url() const { return absl::StrCat("http://127.0.0.1:", port_, "/v1"); }
+
+SimVlmServer::Served SimVlmServer::served() const {
+  absl::MutexLock lock(&mu_);
+  return served_;
+}
 
 int SimVlmServer::requests() const {
   absl::MutexLock lock(&mu_);

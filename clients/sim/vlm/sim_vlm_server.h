@@ -24,19 +24,33 @@ class SimVlmServer {
   static absl::StatusOr<std::unique_ptr<SimVlmServer>> Start(std::unique_ptr<SimVlm> model, int port = 0);
   ~SimVlmServer();
 
+  // Answers from `model` from now on (the next episode's world and frame log); calls being
+  // answered finish with the old one.
+  void Replace(std::unique_ptr<SimVlm> model);
+
   std::string base_url() const;  // "http://127.0.0.1:<port>/v1"
   int port() const { return port_; }
   int requests() const;
+  // Totals over the answers served (for per-episode reports: take differences).
+  struct Served {
+    int answers = 0;
+    int64_t tokens = 0;       // input + output
+    double latency_s = 0.0;   // simulated model time
+  };
+  Served served() const;
 
  private:
   explicit SimVlmServer(std::unique_ptr<SimVlm> model);
 
-  std::unique_ptr<SimVlm> model_;
+  mutable absl::Mutex mu_;
+  std::shared_ptr<const SimVlm> model() const;
+
+  std::shared_ptr<const SimVlm> model_ ABSL_GUARDED_BY(mu_);
   std::unique_ptr<httplib::Server> server_;
   int port_ = 0;
   std::thread thread_;
-  mutable absl::Mutex mu_;
   int requests_ ABSL_GUARDED_BY(mu_) = 0;
+  Served served_ ABSL_GUARDED_BY(mu_);
 };
 
 // The OpenAI chat body as a question: text parts joined by newlines, image_url data URLs decoded
