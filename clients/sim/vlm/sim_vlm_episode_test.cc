@@ -58,7 +58,9 @@ TEST(SimVlmEpisodeTest, DISABLED_EroiUtilityFindsTheCarThroughTheProxyAndTheSimu
   ASSERT_TRUE(result.ok()) << result.status();
   std::string timeline;
   for (const std::string& line : result->timeline) absl::StrAppend(&timeline, line, "\n");
-  EXPECT_TRUE(result->record.success) << result->final_reason << "\n" << timeline;
+  std::string answers;
+  for (const std::string& answer : (*endpoint)->answers()) absl::StrAppend(&answers, answer, "\n");
+  EXPECT_TRUE(result->record.success) << result->final_reason << "\n" << timeline << "VLM answers:\n" << answers;
   EXPECT_GT((*endpoint)->requests(), 0);
   EXPECT_LE(result->record.model_calls, 61) << "the per-task budget (60) plus the text embedding";
   std::cout << "steps " << result->steps << ", path " << result->record.path_m << " m, model calls "

@@ -107,6 +107,8 @@ absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_pt
       ++self->served_.answers;
       self->served_.tokens += reply->input_tokens + reply->output_tokens;
       self->served_.latency_s += reply->latency_s;
+      self->answers_.push_back(reply->text.substr(0, 200));
+      if (self->answers_.size() > 1000) self->answers_.pop_front();
     }
     const nlohmann::json request = nlohmann::json::parse(req.body, nullptr, false);
     res.set_header(modelproxy::kSimulatedLatencyHeader, absl::StrFormat("%.3f", reply->latency_s));
@@ -153,6 +155,11 @@ std::string SimVlmServer::base_url() const { return absl::StrCat("http://127.0.0
 SimVlmServer::Served SimVlmServer::served() const {
   absl::MutexLock lock(&mu_);
   return served_;
+}
+
+std::vector<std::string> SimVlmServer::answers() const {
+  absl::MutexLock lock(&mu_);
+  return std::vector<std::string>(answers_.begin(), answers_.end());
 }
 
 int SimVlmServer::requests() const {

@@ -6,7 +6,9 @@
 
 #include <memory>
 #include <string>
+#include <deque>
 #include <thread>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "absl/synchronization/mutex.h"
@@ -38,6 +40,8 @@ class SimVlmServer {
     double latency_s = 0.0;   // simulated model time
   };
   Served served() const;
+  // The answers served so far, oldest first (at most the last 1000), for episode timelines.
+  std::vector<std::string> answers() const;
 
  private:
   explicit SimVlmServer(std::unique_ptr<SimVlm> model);
@@ -51,6 +55,7 @@ class SimVlmServer {
   std::thread thread_;
   int requests_ ABSL_GUARDED_BY(mu_) = 0;
   Served served_ ABSL_GUARDED_BY(mu_);
+  std::deque<std::string> answers_ ABSL_GUARDED_BY(mu_);
 };
 
 // The OpenAI chat body as a question: text parts joined by newlines, image_url data URLs decoded
