@@ -64,22 +64,31 @@ const PrintedCode* Nearest(const std::vector<PrintedCode>& codes, const cv::Poin
 }  // namespace
 
 std::string ChooseSearchAnswer(const FrameSighting& sighting, const std::vector<PrintedCode>& codes,
-                               absl::string_view target, const SimVlmErrors& errors, Rng& rng) {
-  // Recognition: the target (unless missed) and anything taken for it; the largest comes first.
+                               absl::string_view target, const SimVlmErrors& errors, Rng& rng,
+                               double max_code_distance_px) {
+  auto nameable = [&](const cv::Point2d& pixel) {
+    const PrintedCode* code = Nearest(codes, pixel);
+    return code == nullptr || std::hypot(code->pixel.x - pixel.x, code->pixel.y - pixel.y) <= max_code_distance_px;
+  };
+  // Recognition: the target (unless missed) and anything taken for it; the largest nameable first.
   std::optional<cv::Point2d> clue;
   for (const FrameSighting::Instance& instance : sighting.instances) {
     const bool is_target = LabelNamesTarget(instance.label, target);
     const bool taken = is_target ? !rng.Bernoulli(errors.miss_rate) : rng.Bernoulli(errors.confusion_rate);
-    if (taken && !clue.has_value()) clue = instance.centroid;
+    if (taken && !clue.has_value() && nameable(instance.centroid)) clue = instance.centroid;
   }
   const bool hallucinated = !clue.has_value() && !codes.empty() && rng.Bernoulli(errors.hallucination_rate);
   if (hallucinated) clue = codes[rng.UniformInt(0, static_cast<int>(codes.size()) - 1)].pixel;
   std::string description;
   if (clue.has_value()) {
     description = absl::StrCat(target, " seen here");
-  } else if (!sighting.passages.empty()) {  // evaluation: transfer through a passage
-    clue = sighting.passages.front().centroid;
-    description = absl::StrCat("no ", target, " here; ", sighting.passages.front().kind, " leading to another area");
+  } else {  // evaluation: transfer through the largest nameable passage
+    for (const FrameSighting::Passage& passage : sighting.passages) {
+      if (!nameable(passage.centroid)) continue;
+      clue = passage.centroid;
+      description = absl::StrCat("no ", target, " here; ", passage.kind, " leading to another area");
+      break;
+    }
   }
   const bool off_by_one = rng.Bernoulli(errors.code_off_by_one_rate);
   if (!clue.has_value()) return kNothing;
@@ -163,7 +172,7 @@ absl::StatusOr<std::string> SimVlm::AnswerSearch(absl::string_view target, const
   const std::vector<PrintedCode> codes =
       ReadPrintedCodes(image, frame->image, config_.font_scale, config_.font_thickness);
   Rng rng(MixSeed(MixSeed(config_.seed, HashString(std::string(target))), frame->index));
-  return ChooseSearchAnswer(Sight(*frame), codes, target, config_.errors, rng);
+  return ChooseSearchAnswer(Sight(*frame), codes, target, config_.errors, rng, config_.max_code_distance_px);
 }
 
 std::string SimVlm::AnswerRegionScore(absl::string_view target, const std::vector<std::string>& descriptions) const {

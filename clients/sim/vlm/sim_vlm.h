@@ -62,8 +62,11 @@ bool LabelNamesTarget(absl::string_view label, absl::string_view target);
 
 // The search-prompt answer for what was sighted and the codes read in the frame, with the error
 // model's draws from `rng` (a fixed number per call, so answers are reproducible by seed).
+// A clue or passage is named only by a code printed within `max_code_distance_px` of it (a code
+// further away labels another place).
 std::string ChooseSearchAnswer(const FrameSighting& sighting, const std::vector<PrintedCode>& codes,
-                               absl::string_view target, const SimVlmErrors& errors, Rng& rng);
+                               absl::string_view target, const SimVlmErrors& errors, Rng& rng,
+                               double max_code_distance_px = 1e9);
 
 class SimVlm {
  public:

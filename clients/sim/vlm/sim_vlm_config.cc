@@ -24,6 +24,7 @@ absl::Status ValidateSimVlmConfig(const SimVlmConfig& config) {
   if (config.min_pixels < 1) return InvalidField("min_pixels", "must be >= 1");
   if (absl::Status s = CheckRange(config.max_range_m, "max_range_m", 0.5, 1e4); !s.ok()) return s;
   if (absl::Status s = CheckRange(config.font_scale, "font_scale", 0.1, 5.0); !s.ok()) return s;
+  if (absl::Status s = CheckRange(config.max_code_distance_px, "max_code_distance_px", 0.0, 1e5); !s.ok()) return s;
   if (config.font_thickness < 1 || config.font_thickness > 5) return InvalidField("font_thickness", "must be 1..5");
   return absl::OkStatus();
 }

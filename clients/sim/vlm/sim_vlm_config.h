@@ -31,6 +31,9 @@ struct SimVlmConfig {
   uint64_t seed = 1;
   int min_pixels = 12;          // pixels an instance needs to be recognisable (160 x 120 frames)
   double max_range_m = 40.0;    // what the model can make out, metres of z-depth
+  // A clue is named by the printed code nearest it only within this many pixels (two code widths
+  // at the gateway's font on 160 x 120 frames); a farther clue lies beyond the codes' 3-12 m.
+  double max_code_distance_px = 40.0;
   // Obstacle kinds the prompt's "passages (doors, windows, roads)" are.
   std::vector<std::string> passage_kinds = {"road", "door", "window", "gate"};
   // How the gateway prints the codes (services/reasoning InverseMappingConfig).

@@ -189,6 +189,16 @@ TEST(SimVlmErrorModelTest, CodeOffByOneCell) {
   EXPECT_EQ(elsewhere, 0);
 }
 
+TEST(SimVlmErrorModelTest, AClueFarFromEveryPrintedCodeIsNotNamed) {
+  const SimVlmErrors errors{0, 0, 0, 0};
+  FrameSighting far = Seen({"backpack"});
+  far.instances[0].centroid = cv::Point2d(40, 5);  // 55 px above C5A, the nearest code
+  Rng rng(1);
+  EXPECT_EQ(ChooseSearchAnswer(far, kCodes, "backpack", errors, rng, 40.0), "No clue or passage.");
+  far.instances[0].centroid = cv::Point2d(40, 30);  // 30 px away: named
+  EXPECT_EQ(ChooseSearchAnswer(far, kCodes, "backpack", errors, rng, 40.0), "Code: C5A, Description: backpack seen here");
+}
+
 TEST(SimVlmErrorModelTest, LatencyIsLogNormalAroundTheConfiguredMedian) {
   const World world = SearchWorld();
   FrameLog log;
