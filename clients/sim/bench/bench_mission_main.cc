@@ -18,6 +18,7 @@
 #include "absl/strings/str_split.h"
 #include "clients/sim/bench/episode_plan.h"
 #include "clients/sim/bench/mission_plot.h"
+#include "clients/sim/vlm/sim_vlm_server.h"
 #include "clients/sim/bench/mission_report.h"
 #include "clients/sim/core/occupancy_raster.h"
 #include "clients/sim/core/world_yaml.h"
@@ -36,7 +37,7 @@ namespace sim = semnav::sim;
 constexpr char kUsage[] =
     "usage: semnav-bench-mission [--suite DIR] [--episodes N] [--outdoor-episodes N] [--flyroll-episodes N]\n"
     "                            [--json FILE] [--out DIR] [--seed N] [--max-steps N] [--strategies LIST]\n"
-    "                            [--model-config FILE] [--bin-dir DIR] [--jobs N]\n"
+    "                            [--model-config FILE | --model sim] [--bin-dir DIR] [--jobs N]\n"
     "  --suite DIR            folder of world YAML files, or of suite folders (semnav-sim-worlds --out DIR\n"
     "                         writes indoor, outdoor, flyroll, houseexpo, fr079); default: 4 generated homes\n"
     "  --episodes N           indoor (ground robot) episodes per strategy (default 4)\n"
@@ -50,6 +51,9 @@ constexpr char kUsage[] =
     "  --strategies L         comma list of exploration strategies (default NEAREST_FRONTIER,\n"
     "                         COVERAGE_MAX,SEMANTIC_FRONTIER; EROI_UTILITY needs --model-config)\n"
     "  --model-config FILE    semnav-model-proxy config: run a model proxy in the stack\n"
+    "  --model sim            run the simulated VLM (clients/sim/vlm) per stack and a model proxy\n"
+    "                         pointed at it; adds EROI_UTILITY and prints model calls, tokens and\n"
+    "                         simulated model time per episode\n"
     "  --bin-dir DIR          folder with the service binaries (default: this program's folder)\n"
     "  --jobs N               episodes run at once, each on its own stack of services (default 2, one\n"
     "                         per core of the reference machine; 1 = one after another)\n";
@@ -65,6 +69,7 @@ const std::vector<semnav::FlagSpec> kFlags = {{"suite", "DIR", ""},
                                               {"max-steps", "N", ""},
                                               {"strategies", "LIST", ""},
                                               {"model-config", "FILE", ""},
+                                              {"model", "NAME", ""},
                                               {"bin-dir", "DIR", ""},
                                               {"jobs", "N", ""}};
 
@@ -140,7 +145,7 @@ int main(int argc, char** argv) {
       std::cerr << "semnav-bench-mission: --strategies: unknown strategy " << strategy << "\n" << kUsage;
       return 2;
     }
-    if (strategy == "EROI_UTILITY" && !flags.contains("--model-config")) {
+    if (strategy == "EROI_UTILITY" && !flags.contains("--model-config") && !flags.contains("--model")) {
       not_run[strategy] = "no model configured (--model-config): EROI_UTILITY's semantic values come from the "
                           "vision model (seed 000)";
       continue;
@@ -159,11 +164,34 @@ int main(int argc, char** argv) {
   }
   const int workers = std::clamp(std::atoi(flags["--jobs"].c_str()), 1, std::max<int>(1, jobs.size()));
   std::vector<std::unique_ptr<loop::SimStack>> stacks;
+  // --model sim: one simulated VLM endpoint per stack, re-aimed at each episode's world.
+  const bool sim_model = flags.contains("--model") && flags.at("--model") == "sim" && !plan.empty();
+  if (flags.contains("--model") && !sim_model) {
+    std::cerr << "semnav-bench-mission: --model: only 'sim' is known\n" << kUsage;
+    return 2;
+  }
+  std::vector<std::unique_ptr<sim::vlm::SimVlmServer>> endpoints;
+  std::vector<std::vector<std::unique_ptr<sim::vlm::FrameLog>>> frame_logs(workers);
   for (int w = 0; w < workers; ++w) {
     loop::SimStackOptions options;
     options.bin_dir = bin_dir;
     options.work_dir = absl::StrCat(out_dir, "/stack_", w);
     if (flags.contains("--model-config")) options.model_proxy_config = flags["--model-config"];
+    if (sim_model) {
+      frame_logs[w].push_back(std::make_unique<sim::vlm::FrameLog>());
+      auto model = sim::vlm::SimVlm::Create(plan.front().world, frame_logs[w].back().get(), sim::vlm::SimVlmConfig());
+      auto endpoint = model.ok() ? sim::vlm::SimVlmServer::Start(*std::move(model)) : model.status();
+      if (!endpoint.ok()) {
+        std::cerr << "semnav-bench-mission: simulated VLM: " << endpoint.status() << "\n";
+        return 1;
+      }
+      std::filesystem::create_directories(options.work_dir);
+      options.model_proxy_config = absl::StrCat(options.work_dir, "/modelproxy_sim.yaml");
+      std::ofstream(options.model_proxy_config)
+          << "modelproxy:\n  backends:\n    sim-vlm:\n      kind: openai\n      base_url: \"" << (*endpoint)->base_url()
+          << "\"\n      model: sim-vlm\n      retry: {max_attempts: 1}\n  aliases:\n    default: [sim-vlm, offline]\n";
+      endpoints.push_back(*std::move(endpoint));
+    }
     absl::StatusOr<std::unique_ptr<loop::SimStack>> stack = loop::SimStack::Start(options);
     if (!stack.ok()) {
       std::cerr << "semnav-bench-mission: cannot start stack " << w << ": " << stack.status() << "\n";
@@ -188,7 +216,7 @@ int main(int argc, char** argv) {
   absl::Mutex mutex;
   size_t next_job = 0, done = 0;
   absl::Status failure;
-  auto work = [&](loop::SimStack& stack) {
+  auto work = [&](loop::SimStack& stack, int worker) {
     for (;;) {
       size_t j;
       {
@@ -203,6 +231,14 @@ int main(int argc, char** argv) {
       spec.robot_id = absl::StrCat(spec.robot_id, "-", spec.strategy, "-", jobs[j].episode);
       spec.camera_frames = spec.strategy == "EROI_UTILITY";  // the VLM's input (seed 000)
       spec.max_steps = max_steps;
+      sim::vlm::SimVlmServer::Served model_before;
+      if (sim_model) {  // this episode's world and frames (the worker's episodes run one at a time)
+        sim::vlm::FrameLog* frames = frame_logs[worker].emplace_back(std::make_unique<sim::vlm::FrameLog>()).get();
+        auto model = sim::vlm::SimVlm::Create(spec.world, frames, sim::vlm::SimVlmConfig());
+        if (model.ok()) endpoints[worker]->Replace(*std::move(model));
+        spec.on_camera_frame = [frames](const sim::SensorFrame& frame) { frames->Record(frame); };
+        model_before = endpoints[worker]->served();
+      }
       const auto episode_started = std::chrono::steady_clock::now();
       absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, stack.endpoints());
       if (!result.ok()) {
@@ -214,6 +250,14 @@ int main(int argc, char** argv) {
           absl::StrFormat("%s/%s_episode_%02d_%s", out_dir, spec.strategy, jobs[j].episode, spec.world.name);
       std::ofstream log(stem + ".log");
       for (const std::string& line : result->timeline) log << line << "\n";
+      std::string model_line;
+      if (sim_model) {
+        const sim::vlm::SimVlmServer::Served after = endpoints[worker]->served();
+        model_line = absl::StrFormat(" model: %d calls (gateway), %d answers, %d tokens, %.1f s model time",
+                                     result->record.model_calls, after.answers - model_before.answers,
+                                     after.tokens - model_before.tokens, after.latency_s - model_before.latency_s);
+        log << "model:" << model_line << "\n";
+      }
       if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, plot_grids.at(spec.world.name),
                                                                 spec.target_label, *result,
                                                                 stem + ".png");
@@ -229,17 +273,17 @@ int main(int argc, char** argv) {
                            static_cast<double>(jobs.size() - done);
       std::cout << absl::StrFormat(
           "[%d/%d] %s %s %s start %d: find %s: %s in %d steps, DTG %.2f m, path %.1f m, l %.1f m (%s) "
-          "[%.0f s wall, %.0f s left]\n",
+          "[%.0f s wall, %.0f s left]%s\n",
           done, jobs.size(), spec.strategy, sim::ReportGroup(spec.world.starts[spec.start_index].modality),
           spec.world.name, spec.start_index, spec.target, result->record.success ? "SUCCESS" : "fail",
           result->steps, result->record.distance_to_goal_m, result->record.path_m, result->record.shortest_path_m,
-          result->final_reason, wall_s, eta_s)
+          result->final_reason, wall_s, eta_s, model_line)
                 << std::flush;
     }
   };
   {
     std::vector<std::thread> threads;
-    for (auto& stack : stacks) threads.emplace_back(work, std::ref(*stack));
+    for (size_t w = 0; w < stacks.size(); ++w) threads.emplace_back(work, std::ref(*stacks[w]), static_cast<int>(w));
     for (std::thread& t : threads) t.join();
   }
   if (!failure.ok()) {

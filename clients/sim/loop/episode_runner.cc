@@ -193,6 +193,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     if (!ack.ok()) return ack.status();
     mapping_revision = ack->revision();
     if (!spec.camera_frames) return absl::OkStatus();
+    if (spec.on_camera_frame) spec.on_camera_frame(captured);
     absl::StatusOr<api::ConnectRequest> camera = EncodeCameraFrame(captured);
     return camera.ok() ? (*session)->Send(*camera) : camera.status();
   };

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "clients/sim/core/episode_metrics.h"
 #include "clients/sim/core/robot_config.h"
+#include "clients/sim/core/sensor_frame.h"
 #include "clients/sim/core/world.h"
 #include "clients/sim/loop/episode_trace.h"
 #include "clients/sim/loop/failure_taxonomy.h"
@@ -41,6 +43,9 @@ struct EpisodeSpec {
   // Send the colour image on the robot session every step (CameraFrame), for EROI_UTILITY's
   // vision-model loop (seed 000); turns the RGB render on.
   bool camera_frames = false;
+  // Called with each capture whose colour image goes to the gateway (the simulated VLM's frame
+  // log records what the camera sent); unset = nothing.
+  std::function<void(const SensorFrame&)> on_camera_frame;
   // Ground robots look down this much (rad) so low furniture in front of them reaches the map;
   // level (the Habitat agent's 0) leaves everything under 0.88 m unseen within ~1.9 m.
   double ground_camera_pitch = 0.35;

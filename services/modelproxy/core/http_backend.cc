@@ -1,6 +1,7 @@
 #include "services/modelproxy/core/http_backend.h"
 
 #include "absl/status/status.h"
+#include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "services/modelproxy/core/anthropic_wire.h"
 #include "services/modelproxy/core/dashscope_wire.h"
@@ -26,14 +27,24 @@ std::unique_ptr<WireFormat> MakeWire(BackendKind kind) {
 
 }  // namespace
 
+std::optional<absl::Duration> StatedLatency(const std::map<std::string, std::string>& headers) {
+  auto it = headers.find(kSimulatedLatencyHeader);
+  double seconds = 0.0;
+  // Finite, non-negative and at most a day: anything else is ignored (the wall time stands).
+  if (it == headers.end() || !absl::SimpleAtod(it->second, &seconds) || !(seconds >= 0.0) || seconds > 86400.0) {
+    return std::nullopt;
+  }
+  return absl::Seconds(seconds);
+}
+
 HttpBackend::HttpBackend(HttpBackendSpec spec, ApiKey key, std::shared_ptr<HttpTransport> transport)
     : spec_(std::move(spec)),
       key_(std::move(key)),
       transport_(std::move(transport)),
       wire_(MakeWire(spec_.kind)) {}
 
-absl::StatusOr<std::string> HttpBackend::PostForBody(const std::string& path,
-                                                     const std::string& body, absl::Time deadline) {
+absl::StatusOr<HttpResponse> HttpBackend::PostForBody(const std::string& path,
+                                                      const std::string& body, absl::Time deadline) {
   if (!configured()) {
     return absl::FailedPreconditionError(absl::StrCat("no API key (", key_.source(), " is empty)"));
   }
@@ -45,17 +56,19 @@ absl::StatusOr<std::string> HttpBackend::PostForBody(const std::string& path,
     if (detail.size() > kMaxVendorMessage) detail = detail.substr(0, kMaxVendorMessage) + "...";
     return StatusFromHttp(response->status, detail);
   }
-  return std::move(response->body);
+  return response;
 }
 
 absl::StatusOr<BackendReply> HttpBackend::Complete(const CompletionRequest& request,
                                                    absl::Time deadline) {
-  absl::StatusOr<std::string> body =
+  absl::StatusOr<HttpResponse> response =
       PostForBody(wire_->ChatPath(request),
                   wire_->ChatBody(request, spec_.model, spec_.default_max_tokens), deadline);
-  if (!body.ok()) return body.status();
-  absl::StatusOr<BackendReply> reply = wire_->ParseChat(*body);
-  if (reply.ok() && reply->model.empty()) reply->model = spec_.model;
+  if (!response.ok()) return response.status();
+  absl::StatusOr<BackendReply> reply = wire_->ParseChat(response->body);
+  if (!reply.ok()) return reply;
+  if (reply->model.empty()) reply->model = spec_.model;
+  reply->stated_latency = StatedLatency(response->headers);
   return reply;
 }
 
@@ -64,10 +77,11 @@ absl::StatusOr<EmbeddingReply> HttpBackend::Embed(const EmbeddingRequest& reques
   if (spec_.kind != BackendKind::kOpenAi) {
     return absl::UnimplementedError("only OpenAI-compatible backends serve /embeddings");
   }
-  absl::StatusOr<std::string> body = PostForBody(
+  absl::StatusOr<HttpResponse> response = PostForBody(
       OpenAiWire::EmbeddingsPath(), OpenAiWire::EmbeddingsBody(request, spec_.model), deadline);
-  if (!body.ok()) return body.status();
-  absl::StatusOr<EmbeddingReply> reply = OpenAiWire::ParseEmbeddings(*body, request.texts.size());
+  if (!response.ok()) return response.status();
+  absl::StatusOr<EmbeddingReply> reply =
+      OpenAiWire::ParseEmbeddings(response->body, request.texts.size());
   if (reply.ok() && reply->model.empty()) reply->model = spec_.model;
   return reply;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // A vendor API over HTTP(S): a wire format, a base URL, a model name and an optional key.
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "services/modelproxy/core/api_key.h"
@@ -9,6 +11,13 @@
 #include "services/modelproxy/core/wire_format.h"
 
 namespace semnav::modelproxy {
+
+// Response header in which a simulated vendor (clients/sim/vlm) states the latency of its answer
+// in seconds (simulated time); real vendors do not send it and their latency stays measured.
+inline constexpr char kSimulatedLatencyHeader[] = "x-semnav-simulated-latency-s";
+
+// The kSimulatedLatencyHeader value, if present and a sane number of seconds.
+std::optional<absl::Duration> StatedLatency(const std::map<std::string, std::string>& headers);
 
 // Vendor wire formats served over HTTP.
 enum class BackendKind { kOpenAi, kAnthropic, kDashScope };
@@ -36,8 +45,8 @@ class HttpBackend : public Backend {
 
  private:
   // POSTs and maps transport/HTTP errors; vendor text is redacted and truncated.
-  absl::StatusOr<std::string> PostForBody(const std::string& path, const std::string& body,
-                                          absl::Time deadline);
+  absl::StatusOr<HttpResponse> PostForBody(const std::string& path, const std::string& body,
+                                           absl::Time deadline);
 
   const HttpBackendSpec spec_;
   const ApiKey key_;

@@ -1,6 +1,7 @@
 #pragma once
 // Blocking HTTP(S) POST over libcurl, bounded by an absolute deadline. Easy handles are pooled
 // so keep-alive connections (and TLS sessions) are reused across calls. Thread-safe.
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@ namespace semnav::modelproxy {
 struct HttpResponse {
   long status = 0;  // HTTP status code
   std::string body;
+  std::map<std::string, std::string> headers;  // lower-case names
 };
 
 class HttpTransport {

@@ -1,5 +1,7 @@
 #include "services/modelproxy/core/model_proxy.h"
 
+#include <type_traits>
+
 #include <algorithm>
 #include <atomic>
 
@@ -173,7 +175,9 @@ ModelProxy::ChainOutcome<Reply> ModelProxy::RunChain(
       ++m->attempts;
       if (reply.ok()) {
         m->breaker.RecordSuccess();
-        out.attempts.push_back(Attempt{m->entry.name, absl::OkStatus(), latency});
+        absl::Duration reported = latency;
+        if constexpr (std::is_same_v<Reply, BackendReply>) reported = reply->stated_latency.value_or(latency);
+        out.attempts.push_back(Attempt{m->entry.name, absl::OkStatus(), reported});
         out.reply = std::move(reply);
         out.backend = m->entry.name;
         return out;
@@ -271,6 +275,8 @@ absl::StatusOr<CompletionResult> ModelProxy::Complete(CompletionRequest request,
   if (want_json) result.json = ParseJsonAnswer(result.reply.text)->dump();
   usage_.RecordAnswer(caller, result.backend, result.reply.usage, result.cached);
   result.latency = absl::Now() - start;
+  // A simulated backend's answer takes the time it states (simulated); a cache hit is immediate.
+  if (!result.cached && result.reply.stated_latency.has_value()) result.latency = *result.reply.stated_latency;
   return result;
 }
 

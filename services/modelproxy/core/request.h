@@ -1,6 +1,7 @@
 #pragma once
 // Value types of one model call: what the caller asks and what a backend answers.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,9 @@ struct BackendReply {
   Usage usage;
   bool offline = false;    // answered by the embedded offline prior
   std::string provenance;  // data source / licence note, empty for remote models
+  // The time the backend says the answer took, when it says so (a simulated model, whose time is
+  // simulated); the proxy then reports it instead of the wall time it measured.
+  std::optional<absl::Duration> stated_latency;
 };
 
 struct EmbeddingRequest {

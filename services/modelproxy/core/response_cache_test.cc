@@ -8,7 +8,7 @@ namespace {
 const absl::Time kT0 = absl::FromUnixSeconds(1000);
 
 CachedAnswer Answer(const std::string& text) {
-  return CachedAnswer{BackendReply{text, "m", {}, false, ""}, "b"};
+  return CachedAnswer{BackendReply{text, "m", {}, false, "", std::nullopt}, "b"};
 }
 
 TEST(ModelProxyResponseCacheTest, EvictsTheLeastRecentlyUsedEntry) {

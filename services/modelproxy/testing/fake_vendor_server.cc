@@ -64,6 +64,7 @@ FakeVendorServer::FakeVendorServer() : server_(std::make_unique<httplib::Server>
                                                                    : seen.headers["x-api-key"];
       const Action action = Next(r, std::move(seen));
       if (action.delay > absl::ZeroDuration()) absl::SleepFor(action.delay);
+      for (const auto& [name, value] : action.headers) res.set_header(name, value);
       switch (action.kind) {
         case Action::Kind::kAnswer:
           res.set_content(AnswerBody(r, action.text, req.body), "application/json");

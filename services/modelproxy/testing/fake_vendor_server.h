@@ -27,12 +27,18 @@ struct Action {
   std::string text = "ok";  // answer text (kAnswer)
   int status = 200;         // HTTP status (kStatus)
   absl::Duration delay;     // sleep before answering (any kind)
+  std::map<std::string, std::string> headers;  // extra response headers (any kind)
 
-  static Action Answer(std::string text) { return {Kind::kAnswer, std::move(text), 200, {}}; }
-  static Action Malformed() { return {Kind::kMalformedJson, "", 200, {}}; }
-  static Action Status(int http_status) { return {Kind::kStatus, "", http_status, {}}; }
-  static Action Truncated() { return {Kind::kTruncated, "", 200, {}}; }
-  static Action EchoKey() { return {Kind::kEchoKeyError, "", 401, {}}; }
+  static Action Answer(std::string text) { return {Kind::kAnswer, std::move(text), 200, {}, {}}; }
+  static Action Malformed() { return {Kind::kMalformedJson, "", 200, {}, {}}; }
+  static Action Status(int http_status) { return {Kind::kStatus, "", http_status, {}, {}}; }
+  static Action Truncated() { return {Kind::kTruncated, "", 200, {}, {}}; }
+  static Action EchoKey() { return {Kind::kEchoKeyError, "", 401, {}, {}}; }
+  Action WithHeader(std::string name, std::string value) const {
+    Action a = *this;
+    a.headers[std::move(name)] = std::move(value);
+    return a;
+  }
   Action Slow(absl::Duration d) const {
     Action a = *this;
     a.delay = d;

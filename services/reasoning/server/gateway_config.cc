@@ -1,5 +1,7 @@
 #include "services/reasoning/server/gateway_config.h"
 
+#include "services/common/status/field_error.h"
+
 namespace semnav::reasoning {
 
 std::string GatewayConfig::DefaultPriorPath() {
@@ -133,6 +135,17 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
     model.Check(c.model_proxy.deadline_ms > 0, "deadline_ms", "must be > 0");
     model.Check(c.model_proxy.max_in_flight >= 1 && c.model_proxy.max_in_flight <= 16, "max_in_flight", "must be in [1, 16]");
     model.Check(c.model_proxy.embedding_retry_s >= 0.0, "embedding_retry_s", "must be >= 0");
+    ConfigReader calls = model.Child("calls");
+    ModelCallPolicyConfig& p = c.model_proxy.calls;
+    calls.Read("new_view_move_m", &p.new_view_move_m)
+        .Read("new_view_turn_rad", &p.new_view_turn_rad)
+        .Read("backoff_initial_s", &p.backoff_initial_s)
+        .Read("backoff_multiplier", &p.backoff_multiplier)
+        .Read("backoff_max_s", &p.backoff_max_s)
+        .Read("max_calls", &p.max_calls)
+        .Read("max_tokens", &p.max_tokens);
+    const absl::Status valid = ValidateModelCallPolicy(p);
+    calls.Check(valid.ok(), ErrorField(valid).value_or("calls"), valid.message());
   }
 
   if (section.Has("eroi")) {

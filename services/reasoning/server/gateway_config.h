@@ -7,6 +7,7 @@
 #include "absl/status/statusor.h"
 #include "services/common/client/channel.h"
 #include "services/common/config/config_reader.h"
+#include "services/reasoning/core/model_call_policy.h"
 #include "services/reasoning/core/eroi_search.h"
 #include "services/reasoning/core/fast_resolver.h"
 #include "services/reasoning/core/slow_answer.h"
@@ -38,6 +39,7 @@ struct ModelSettings {
   int max_in_flight = 2;          // concurrent calls (worker threads)
   double embedding_retry_s = 60;  // after Embed is unavailable, answer that locally this long
   bool text_embeddings = true;    // ask Embed for each task's target text
+  ModelCallPolicyConfig calls;    // per-task call economy (section model_proxy.calls)
 };
 
 // The EROI search a volume starts from: 2 m edges, planning's default eroi_size_m (the seed's

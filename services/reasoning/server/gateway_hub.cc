@@ -295,6 +295,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   const std::string task_id = absl::StrCat("task-", next_task_++);
   Task& task = tasks_[task_id];
   task.task_id = task_id;
+  task.calls = ModelCallPolicy(config_.model_proxy.calls);
   task.robot_id = request.robot_id();
   task.instruction = request.instruction();
   task.source = decomposition.source;

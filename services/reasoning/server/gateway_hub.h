@@ -16,6 +16,7 @@
 #include "absl/time/time.h"
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "semnav/reasoning/v1/robot_session.pb.h"
+#include "services/reasoning/core/model_call_policy.h"
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/gateway_journal.h"
 #include "services/reasoning/core/lease_table.h"
@@ -159,6 +160,7 @@ class GatewayHub {
     std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
     std::optional<SearchArea> search_area;  // the operator's; unset = the whole map
     bool vision_busy = false;          // a VLM call of the EROI search is running
+    ModelCallPolicy calls;             // call economy: new views, back-off, budget, slow-path cache
     bool started = false;
     bool paused_by_session = false;
     bool resume_on_state = false;  // restored after a gateway crash: resumes on the robot's next state
@@ -213,13 +215,16 @@ class GatewayHub {
   // Runs the executor's pending slow-path request on the model, without waiting for it.
   void DispatchModelRequest(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void RequestTextEmbedding(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Call economy: true for kAsk; logs EVENT_KIND_MODEL_BUDGET the first time the budget is spent.
+  bool AllowModelCall(Task& task, CallVerdict verdict) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Model answers, on the model's threads.
   void OnModelAnswer(const std::string& task_id, uint64_t generation, const ModelRequest& request,
                      absl::StatusOr<std::string> answer) ABSL_LOCKS_EXCLUDED(mu_);
   void OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding)
       ABSL_LOCKS_EXCLUDED(mu_);
   ExplorationContext ContextFor(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer) ABSL_LOCKS_EXCLUDED(mu_);
+  void OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer, int64_t prompt_tokens)
+      ABSL_LOCKS_EXCLUDED(mu_);
   void OnRegionScore(const std::string& task_id, const RegionDue& region, absl::StatusOr<std::string> answer)
       ABSL_LOCKS_EXCLUDED(mu_);
   // The strategy a task explores with: its own, else the configured default.

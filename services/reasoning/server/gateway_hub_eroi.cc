@@ -39,6 +39,12 @@ absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& r
   }
   absl::StatusOr<DecodedCameraFrame> decoded = DecodeCameraFrame(frame);
   if (!decoded.ok()) return decoded.status();
+  // Call economy: only a new view, not while backing off after a failure, within the budget.
+  ModelCallPolicy& calls = task->second.calls;
+  if (!AllowModelCall(task->second, calls.MayAskVision(NowFor(robot_id), decoded->position, decoded->orientation))) {
+    return absl::OkStatus();
+  }
+  calls.OnAskedVision(decoded->position, decoded->orientation);
   const EroiObservation observation =
       task->second.eroi->Annotate(decoded->position, decoded->orientation, decoded->camera, decoded->image);
   task->second.vision_busy = true;
@@ -47,24 +53,30 @@ absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& r
   const std::string task_id = task->first;
   ModelCaller caller{robot_id, task_id};
   LanguageModel::AnswerDone done = AtSimulatedArrival<absl::StatusOr<std::string>>(
-      caller, [this, task_id](absl::StatusOr<std::string> answer) { OnVisionAnswer(task_id, std::move(answer)); });
+      caller, [this, task_id, prompt_tokens = EstimateTokens(observation.prompt, "", true)](
+                  absl::StatusOr<std::string> answer) { OnVisionAnswer(task_id, std::move(answer), prompt_tokens); });
   backends_.model->Ask(caller, {observation.prompt, EncodePng(decoded->image)}, std::move(done));
   return absl::OkStatus();
 }
 
-void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer) {
+void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer,
+                                int64_t prompt_tokens) {
   absl::MutexLock lock(&mu_);
   auto task = tasks_.find(task_id);
   if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
   Task& t = task->second;
   t.vision_busy = false;
   if (!answer.ok()) {
+    t.calls.OnFailure(NowFor(t.robot_id));  // back off: the next frame does not ask again at once (the 636-call storm)
     LogDebug("eroi_vision_failed", {{"task", task_id}, {"message", answer.status().message()}});
     return;
   }
+  t.calls.OnAnswer(prompt_tokens + EstimateTokens("", *answer, false));
   const EroiEvidence evidence = t.eroi->OnVlmAnswer(*answer);
   LogDebug("eroi_vision_answer", {{"task", task_id}, {"codes", evidence.codes_used}, {"regions_due", evidence.due.size()}});
   for (const RegionDue& region : evidence.due) {
+    if (!AllowModelCall(t, t.calls.MayAsk(NowFor(t.robot_id)))) break;
+    t.calls.OnAsked();
     ++t.model_calls;
     ++model_calls_;
     ModelCaller caller{t.robot_id, task_id};
@@ -81,6 +93,11 @@ void GatewayHub::OnRegionScore(const std::string& task_id, const RegionDue& regi
   absl::MutexLock lock(&mu_);
   auto task = tasks_.find(task_id);
   if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
+  if (answer.ok()) {
+    task->second.calls.OnAnswer(EstimateTokens(task->second.eroi->RegionPrompt(region), *answer, false));
+  } else {
+    task->second.calls.OnFailure(NowFor(task->second.robot_id));
+  }
   const absl::Status applied = answer.ok() ? task->second.eroi->OnRegionAnswer(region, *answer) : answer.status();
   if (!applied.ok()) {
     LogDebug("eroi_region_score_unused", {{"task", task_id}, {"region", region.region}, {"message", applied.message()}});

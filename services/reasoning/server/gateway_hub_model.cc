@@ -12,10 +12,52 @@ namespace semnav::reasoning {
 
 using namespace hub_internal;
 
+namespace {
+
+// A slow-path answer (or the call's error) as the executor's decision; failures keep exploring
+// (the executor re-asks on a newer graph).
+SlowDecision DecideSlow(const absl::StatusOr<std::string>& answer, const ModelRequest& request,
+                        const SlowPathConfig& config) {
+  SlowDecision decision;
+  if (!answer.ok()) {
+    decision.explanation = absl::StrCat("model call failed: ", answer.status().message());
+  } else if (absl::StatusOr<SlowDecision> parsed = ParseResolveAnswer(*answer, request.grounded, config); parsed.ok()) {
+    decision = *std::move(parsed);
+  } else {
+    decision.explanation = absl::StrCat("model answer rejected: ", parsed.status().message());
+  }
+  return decision;
+}
+
+}  // namespace
+
+// --- Call economy (issue 15; ModelCallPolicy) ------------------------------------------------
+bool GatewayHub::AllowModelCall(Task& task, CallVerdict verdict) {
+  if (verdict == CallVerdict::kBudgetSpent && task.calls.TakeBudgetSpentNotice()) {
+    Log(api::EVENT_KIND_MODEL_BUDGET, task.robot_id, task.task_id,
+        absl::StrCat("model budget spent (", task.calls.calls(), " calls, ", task.calls.tokens(),
+                     " tokens): continuing without the model"));
+  }
+  return verdict == CallVerdict::kAsk;
+}
+
 void GatewayHub::DispatchModelRequest(Task& task) {
   if (backends_.model == nullptr || shut_down_) return;
   std::optional<ModelRequest> request = task.executor->TakeModelRequest();
   if (!request.has_value()) return;
+  // Call economy: a question already answered is answered from the task's cache; none is asked
+  // while backing off or over budget (the executor keeps exploring and asks on a newer graph).
+  std::optional<absl::StatusOr<std::string>> settled = task.calls.CachedSlowAnswer(request->request.task_json);
+  if (const CallVerdict verdict = task.calls.MayAsk(NowFor(task.robot_id)); !settled.has_value() && !AllowModelCall(task, verdict)) {
+    settled = absl::ResourceExhaustedError(absl::StrCat("not asked (", CallVerdictName(verdict), ")"));
+  }
+  if (settled.has_value()) {
+    const std::vector<RobotCommand> commands = task.executor->OnSlowDecision(
+        NowFor(task.robot_id), request->graph_revision, DecideSlow(*settled, *request, config_.slow_path));
+    if (!commands.empty()) Apply(task, commands);
+    return;
+  }
+  task.calls.OnAsked();
   ++task.model_calls;
   ++model_calls_;
   const std::string task_id = task.task_id;
@@ -35,15 +77,13 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, 
   auto task = tasks_.find(task_id);
   // An answer for the rule plan's executor after the model's plan replaced it is not for this one.
   if (shut_down_ || task == tasks_.end() || task->second.executor_generation != generation) return;
-  SlowDecision decision;  // failures keep exploring (the executor re-asks on a newer graph)
-  if (!answer.ok()) {
-    decision.explanation = absl::StrCat("model call failed: ", answer.status().message());
-  } else if (absl::StatusOr<SlowDecision> parsed = ParseResolveAnswer(*answer, request.grounded, config_.slow_path);
-             parsed.ok()) {
-    decision = *std::move(parsed);
+  if (answer.ok()) {
+    task->second.calls.OnAnswer(EstimateTokens(request.request.prose + request.request.task_json, *answer, false));
+    task->second.calls.StoreSlowAnswer(request.request.task_json, *answer);
   } else {
-    decision.explanation = absl::StrCat("model answer rejected: ", parsed.status().message());
+    task->second.calls.OnFailure(NowFor(task->second.robot_id));
   }
+  const SlowDecision decision = DecideSlow(answer, request, config_.slow_path);
   LogDebug("slow_path_answer", {{"task", task_id},
                                 {"action", decision.action == SlowAction::kGoal           ? "goal"
                                            : decision.action == SlowAction::kVisionVerify ? "verify"
@@ -60,6 +100,7 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, 
 // call's deadline bounds how much rule progress that discards; the robot gets the new plan's
 // first command), anything else keeps the rules.
 void GatewayHub::RequestDecomposition(Task& task, Decomposition rules) {
+  task.calls.OnAsked();
   ++task.model_calls;
   ++model_calls_;
   const std::string task_id = task.task_id;

@@ -182,9 +182,15 @@ TEST_F(GatewayHubModelTest, OfflineAnswersAreWeighedLowerAndNotInGraphKeepsExplo
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
   EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
 
-  // A newer scene graph: the executor asks again; "not in the graph" -> keep exploring.
+  // A newer scene graph with the same candidates: the answer is reused, no call.
+  SceneGraph same = CupScene();
+  same.revision = 4;
+  hub_.OnSceneGraph(same);
+  ASSERT_EQ(model_.matches.size(), 1u);
+  // A newer scene graph that changes a candidate: the executor asks again; "not in the graph" -> keep exploring.
   SceneGraph graph = CupScene();
-  graph.revision = 4;
+  graph.revision = 5;
+  graph.objects[0].attributes.push_back("ceramic");
   hub_.OnSceneGraph(graph);
   ASSERT_EQ(model_.matches.size(), 2u);
   model_.Answer(1, R"({"best_id": "", "confidence": 0.0, "ranking": []})");
@@ -195,17 +201,24 @@ TEST_F(GatewayHubModelTest, OfflineAnswersAreWeighedLowerAndNotInGraphKeepsExplo
 
 TEST_F(GatewayHubModelTest, FailedOrMalformedAnswersKeepExploringAndSayWhy) {
   const std::string task_id = SubmitFindRedCup();
-  model_.Answer(0, absl::DeadlineExceededError("deadline passed during the chain"));
-  EXPECT_EQ(hub_.GetTask(task_id)->reason(),
-            "model: keep exploring (model call failed: deadline passed during the chain)");
-  SceneGraph graph = CupScene();
-  graph.revision = 4;
-  hub_.OnSceneGraph(graph);
-  ASSERT_EQ(model_.matches.size(), 2u);
-  model_.Answer(1, R"({"best_id": "99", "confidence": 0.9, "ranking": []})");  // not a candidate
+  model_.Answer(0, R"({"best_id": "99", "confidence": 0.9, "ranking": []})");  // not a candidate
   EXPECT_EQ(hub_.GetTask(task_id)->reason(),
             "model: keep exploring (model answer rejected: best_id: '99' is not a candidate)");
+  SceneGraph graph = CupScene();
+  graph.revision = 4;
+  graph.objects[0].attributes.push_back("ceramic");
+  hub_.OnSceneGraph(graph);
+  ASSERT_EQ(model_.matches.size(), 2u);
+  model_.Answer(1, absl::DeadlineExceededError("deadline passed during the chain"));
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(),
+            "model: keep exploring (model call failed: deadline passed during the chain)");
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
+  // Call economy: right after a failure the next revision is not asked about (back-off).
+  graph.revision = 5;
+  graph.objects[0].attributes.push_back("small");
+  hub_.OnSceneGraph(graph);
+  EXPECT_EQ(model_.matches.size(), 2u);
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(), "model: keep exploring (model call failed: not asked (backing_off))");
 }
 
 constexpr char kComplex[] = "go to the kitchen and then find the red cup";
@@ -380,6 +393,12 @@ api::CameraFrame Frame(common::v1::ImageEncoding encoding) {
   return frame;
 }
 
+// `frame` taken `dx` metres further along x (a new view for the call economy once dx >= 2 m).
+api::CameraFrame Moved(api::CameraFrame frame, double dx) {
+  frame.mutable_camera_pose()->mutable_position()->set_x(frame.camera_pose().position().x() + dx);
+  return frame;
+}
+
 // A hub with a scripted vision model and a recording explorer, a UAV session open at (0, 0).
 struct EroiHub {
   explicit EroiHub(const GatewayConfig& config)
@@ -432,10 +451,11 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   EXPECT_NE(model.asks[0].question.prompt.find("[red backpack]"), std::string::npos);
 
   // Three answers in region unit (i 2..3, j 0..1): the third asks the region score.
+  // (Each next frame from 2.5 m further on: the same view is not asked about twice.)
   model.Reply(0, "Code: C2A, Description: a bag by the bench");
-  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 2.5)).ok());
   model.Reply(1, "Code: C2A, Description: backpack strap");
-  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  ASSERT_TRUE(hub.OnCameraFrame(&session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 5.0)).ok());
   model.Reply(2, "Code: D1A, Description: bench");
   ASSERT_EQ(model.asks.size(), 4u);
   EXPECT_TRUE(model.asks[3].question.png.empty());  // the language model scores the region
@@ -449,6 +469,86 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   Reached(hub, session, session.Last());  // -> next exploration goal
   ASSERT_EQ(explorer.contexts.size(), 2u);
   EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
+}
+
+// Regression (issue 15, the 636-call storm): with the offline proxy every vision call failed
+// fast and the next camera frame asked again, 636 calls an episode. Now a failure backs off
+// (1 s, doubling) and only a new view asks: 300 frames over 30 m in well under a second of
+// gateway time make one call.
+TEST(GatewayHubEroiTest, FailingVisionCallsBackOffInsteadOfAskingOnEveryFrame) {
+  EroiHub fixture(GatewayConfig{});
+  api::SubmitInstructionRequest request = UavSearch("eroi-storm", "find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-10.0);
+  area->set_min_y(-10.0);
+  area->set_max_x(40.0);
+  area->set_max_y(10.0);
+  ASSERT_TRUE(fixture.hub.Submit(request).ok());
+  const absl::Time start = absl::Now();
+  for (int i = 0; i < 300; ++i) {
+    ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.1 * i)).ok());
+    if (fixture.model.asks.size() > static_cast<size_t>(i) || i == 0) {
+      const size_t last = fixture.model.asks.size() - 1;
+      if (fixture.model.asks[last].done) fixture.model.Reply(last, absl::UnavailableError("no vision backend"));
+      fixture.model.asks[last].done = nullptr;
+    }
+  }
+  ASSERT_LT(absl::Now() - start, absl::Seconds(1)) << "the machine is too slow for this test's timing";
+  EXPECT_EQ(fixture.model.asks.size(), 1u);
+}
+
+// A robot holding still sends the same view: one call, however many frames.
+TEST(GatewayHubEroiTest, OnlyANewViewIsAskedAbout) {
+  EroiHub fixture(GatewayConfig{});
+  api::SubmitInstructionRequest request = UavSearch("eroi-view", "find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-10.0);
+  area->set_min_y(-10.0);
+  area->set_max_x(40.0);
+  area->set_max_y(10.0);
+  ASSERT_TRUE(fixture.hub.Submit(request).ok());
+  for (int i = 0; i < 20; ++i) {
+    ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.05 * i)).ok());
+    if (fixture.model.asks.back().done) {
+      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
+      fixture.model.asks.back().done = nullptr;
+    }
+  }
+  EXPECT_EQ(fixture.model.asks.size(), 1u);  // 0.95 m moved, not turned: the same view
+  ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 2.0)).ok());
+  EXPECT_EQ(fixture.model.asks.size(), 2u);  // 2 m from the asked frame: a new view
+}
+
+// The budget: after max_calls the task goes on without the model and says so once.
+TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
+  GatewayConfig config;
+  config.model_proxy.calls.max_calls = 3;
+  EroiHub fixture(config);
+  api::SubmitInstructionRequest request = UavSearch("eroi-budget", "find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-10.0);
+  area->set_min_y(-10.0);
+  area->set_max_x(40.0);
+  area->set_max_y(10.0);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = fixture.hub.Submit(request);
+  ASSERT_TRUE(submitted.ok());
+  for (int i = 0; i < 10; ++i) {
+    ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 3.0 * i)).ok());
+    if (fixture.model.asks.back().done) {
+      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
+      fixture.model.asks.back().done = nullptr;
+    }
+  }
+  EXPECT_EQ(fixture.model.asks.size(), 3u);
+  int budget_events = 0;
+  const absl::StatusOr<api::ListEventsResponse> events = fixture.hub.ListEvents(api::ListEventsRequest());
+  ASSERT_TRUE(events.ok()) << events.status();
+  for (const api::Event& event : events->events()) budget_events += event.kind() == api::EVENT_KIND_MODEL_BUDGET;
+  EXPECT_EQ(budget_events, 1);
+  EXPECT_EQ(fixture.hub.GetTask(submitted->task_id())->status(), api::TASK_STATUS_RUNNING);
 }
 
 // With no configured volume, an EROI_UTILITY task's search area becomes its EROI grid (2 m

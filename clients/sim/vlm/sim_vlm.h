@@ -1,0 +1,95 @@
+// A sensor model of a vision-language model (issue 15): it answers the gateway's prompts from the
+// ground truth of the frame it was shown, with the error rates of SimVlmConfig.
+//   - seed 000's search prompt (image with printed EROI codes): "Code: X, Description: ..." naming
+//     the printed code nearest the chosen clue (the target, or an instance taken for it) or, when
+//     there is none, the passage (road, door) with the most pixels; "No clue or passage." otherwise;
+//   - seed 000's region score: an integer in [-5, 5] from the descriptions it was given;
+//   - the slow path's match_target task: the candidate whose label names the target.
+// Everything it knows about a frame comes from the pixels the camera saw (its re-rendered view);
+// an instance out of view gives no clue. Answers are a pure function of (config, prompt, frame).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "absl/status/statusor.h"
+#include "absl/strings/string_view.h"
+#include "clients/sim/core/rng.h"
+#include "clients/sim/core/scene.h"
+#include "clients/sim/core/world.h"
+#include "clients/sim/vlm/code_reader.h"
+#include "clients/sim/vlm/frame_log.h"
+#include "clients/sim/vlm/sim_vlm_config.h"
+
+namespace semnav::sim::vlm {
+
+// One chat request: its text parts joined by newlines, and its decoded images (8-bit BGR).
+struct VlmQuestion {
+  std::string text;
+  std::vector<cv::Mat> images;
+};
+
+struct VlmReply {
+  std::string text;
+  double latency_s = 0.0;  // simulated
+  int input_tokens = 0;
+  int output_tokens = 0;
+};
+
+// What the model makes out in one frame (before its errors).
+struct FrameSighting {
+  struct Instance {
+    int object_index = -1;  // World::objects
+    std::string label;
+    int pixels = 0;
+    cv::Point2d centroid;
+  };
+  struct Passage {
+    std::string kind;
+    int pixels = 0;
+    cv::Point2d centroid;
+  };
+  std::vector<Instance> instances;  // at least min_pixels visible, most pixels first
+  std::vector<Passage> passages;    // most pixels first
+};
+
+// True when the world label names the target as the operator said it ("red backpack" ~
+// "backpack"), compared as lower-case words.
+bool LabelNamesTarget(absl::string_view label, absl::string_view target);
+
+// The search-prompt answer for what was sighted and the codes read in the frame, with the error
+// model's draws from `rng` (a fixed number per call, so answers are reproducible by seed).
+// A clue or passage is named only by a code printed within `max_code_distance_px` of it (a code
+// further away labels another place).
+std::string ChooseSearchAnswer(const FrameSighting& sighting, const std::vector<PrintedCode>& codes,
+                               absl::string_view target, const SimVlmErrors& errors, Rng& rng,
+                               double max_code_distance_px = 1e9);
+
+class SimVlm {
+ public:
+  // `frames` must outlive the model. INVALID_ARGUMENT for a bad config.
+  static absl::StatusOr<std::unique_ptr<SimVlm>> Create(const World& world, const FrameLog* frames,
+                                                        SimVlmConfig config);
+
+  // INVALID_ARGUMENT for a prompt it does not know (the proxy then falls back).
+  absl::StatusOr<VlmReply> Answer(const VlmQuestion& question) const;
+
+  FrameSighting Sight(const RecordedFrame& frame) const;
+  const SimVlmConfig& config() const { return config_; }
+
+ private:
+  SimVlm(const World& world, const FrameLog* frames, SimVlmConfig config);
+  absl::StatusOr<std::string> AnswerSearch(absl::string_view target, const cv::Mat& image, uint64_t* frame_key) const;
+  std::string AnswerRegionScore(absl::string_view target, const std::vector<std::string>& descriptions) const;
+  absl::StatusOr<std::string> AnswerMatchTarget(absl::string_view task_json) const;
+
+  World world_;
+  Scene scene_;
+  const FrameLog* frames_;
+  SimVlmConfig config_;
+};
+
+}  // namespace semnav::sim::vlm

@@ -1,0 +1,54 @@
+// The simulated vision-language model's sensor model: what it can recognise in a frame, how it
+// errs, and how long it takes. Defaults and their sources: docs/simulation.md, "Simulated VLM".
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "absl/status/status.h"
+
+namespace semnav::sim::vlm {
+
+struct SimVlmErrors {
+  double miss_rate = 0.15;       // a visible target is not reported as a clue
+  double confusion_rate = 0.03;  // each visible non-target instance is taken for the target
+  double hallucination_rate = 0.05;  // a frame with no true clue gets one at a random printed code
+  double code_off_by_one_rate = 0.10;  // the reported code names a neighbouring cell
+};
+
+// Log-normal latency: median exp(mu), spread sigma (of the log), capped.
+struct SimVlmLatency {
+  double vision_median_s = 1.4;  // mean 1.51 s with sigma 0.4 (seed 000 table 6)
+  double text_median_s = 0.32;   // mean 0.35 s (seed 000 table 6)
+  double sigma = 0.4;
+  double max_s = 10.0;
+};
+
+struct SimVlmConfig {
+  SimVlmErrors errors;
+  SimVlmLatency latency;
+  uint64_t seed = 1;
+  int min_pixels = 12;          // pixels an instance needs to be recognisable (160 x 120 frames)
+  double max_range_m = 40.0;    // what the model can make out, metres of z-depth
+  // A clue is named by the printed code nearest it only within this many pixels (two code widths
+  // at the gateway's font on 160 x 120 frames); a farther clue lies beyond the codes' 3-12 m.
+  double max_code_distance_px = 40.0;
+  // Obstacle kinds the prompt's "passages (doors, windows, roads)" are.
+  std::vector<std::string> passage_kinds = {"road", "door", "window", "gate"};
+  // How the gateway prints the codes (services/reasoning InverseMappingConfig).
+  double font_scale = 0.5;
+  int font_thickness = 1;
+  // A received image is the recorded frame it differs least from, if at most this share of its
+  // pixels differ (the printed codes).
+  double max_changed_share = 0.5;
+  // Usage reported per call (seed 000 table 6: qwen3-vl-plus 1083 in / 18 out; qwen-plus 381 / 1).
+  int vision_input_tokens = 1083;
+  int text_input_tokens = 381;
+  std::string api_key;  // "" = no key required (a local server)
+};
+
+// INVALID_ARGUMENT naming the field: rates outside [0, 1], non-positive latencies, sizes < 1.
+absl::Status ValidateSimVlmConfig(const SimVlmConfig& config);
+
+}  // namespace semnav::sim::vlm

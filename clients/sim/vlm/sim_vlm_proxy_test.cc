@@ -1,0 +1,84 @@
+// The simulated VLM behind the model proxy exactly as a vendor: OpenAI-compatible backend, base
+// URL, model name, key; the answer's latency is the simulated one the endpoint states.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "absl/strings/match.h"
+#include "clients/sim/vlm/sim_vlm_server.h"
+#include "clients/sim/vlm/sim_vlm_test_world.h"
+#include "services/modelproxy/core/http_backend.h"
+#include "services/modelproxy/core/model_proxy.h"
+
+namespace semnav::sim::vlm {
+namespace {
+
+using namespace semnav::modelproxy;
+
+constexpr char kKeyEnv[] = "SEMNAV_TEST_SIM_VLM_KEY";
+
+std::unique_ptr<ModelProxy> ProxyFor(const std::string& base_url) {
+  auto proxy = std::make_unique<ModelProxy>(ProxyOptions());
+  HttpBackendSpec spec;
+  spec.base_url = base_url;
+  spec.model = "sim-vlm";
+  spec.require_key = true;
+  BackendPolicy policy;
+  policy.retry.max_attempts = 1;
+  EXPECT_TRUE(proxy->AddBackend(BackendEntry{"sim", "openai",
+                                             std::make_unique<HttpBackend>(spec, ApiKey::FromEnv(kKeyEnv),
+                                                                           std::make_shared<HttpTransport>()),
+                                             policy})
+                  .ok());
+  EXPECT_TRUE(proxy->AddAlias("default", {"sim"}).ok());
+  return proxy;
+}
+
+TEST(SimVlmProxyTest, SearchPromptThroughTheProxyGetsTheCodeAndTheStatedLatency) {
+  const World world = testing::SearchWorld();
+  FrameLog log;
+  const Eigen::Vector3d camera(0, 0, 1.5);
+  const SensorFrame frame = testing::Capture(Scene::Build(world), camera, 0.0, 11);
+  log.Record(frame);
+  SimVlmConfig config;
+  config.errors = SimVlmErrors{0, 0, 0, 0};
+  config.api_key = "sim-key-1";
+  auto model = SimVlm::Create(world, &log, config);
+  auto twin = SimVlm::Create(world, &log, config);  // the same model, asked directly
+  ASSERT_TRUE(model.ok() && twin.ok());
+  absl::StatusOr<std::unique_ptr<SimVlmServer>> server = SimVlmServer::Start(*std::move(model));
+  ASSERT_TRUE(server.ok()) << server.status();
+
+  absl::StatusOr<reasoning::EroiSearch> search = reasoning::EroiSearch::Create("backpack", testing::GatewayEroi());
+  ASSERT_TRUE(search.ok());
+  cv::Mat image = frame.rgb->clone();
+  const reasoning::EroiObservation observation =
+      search->Annotate(camera, testing::BodyOrientation(0.0), testing::Pinhole(), image);
+  std::vector<uchar> png;
+  cv::imencode(".png", image, png);
+  CompletionRequest request;
+  request.messages.push_back(
+      {Role::kUser, {ContentPart{observation.prompt, "", ""}, ContentPart{"", std::string(png.begin(), png.end()), "image/png"}}});
+
+  ::setenv(kKeyEnv, "sim-key-1", 1);
+  std::unique_ptr<ModelProxy> proxy = ProxyFor((*server)->base_url());
+  absl::StatusOr<CompletionResult> result = proxy->Complete(request, {"robot", "task"}, absl::Now() + absl::Seconds(10));
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(absl::StrContains(result->reply.text, "Description: backpack seen here")) << result->reply.text;
+  const absl::StatusOr<VlmReply> direct = (*twin)->Answer({observation.prompt, {image}});
+  ASSERT_TRUE(direct.ok());
+  EXPECT_EQ(result->reply.text, direct->text);
+  EXPECT_EQ(result->latency, absl::Seconds(direct->latency_s));
+  EXPECT_EQ(result->reply.usage.input_tokens, 1083);
+
+  ::setenv(kKeyEnv, "wrong-key", 1);
+  std::unique_ptr<ModelProxy> wrong = ProxyFor((*server)->base_url());
+  request.bypass_cache = true;
+  EXPECT_FALSE(wrong->Complete(request, {}, absl::Now() + absl::Seconds(10)).ok());
+  ::unsetenv(kKeyEnv);
+}
+
+}  // namespace
+}  // namespace semnav::sim::vlm

@@ -1,0 +1,280 @@
+#include "clients/sim/vlm/sim_vlm.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "absl/strings/match.h"
+#include "absl/strings/str_cat.h"
+#include "clients/sim/vlm/code_reader.h"
+#include "clients/sim/vlm/sim_vlm_test_world.h"
+#include "services/common/status/field_error.h"
+#include "services/reasoning/core/search_prompts.h"
+#include "services/reasoning/core/vlm_answer.h"
+
+namespace semnav::sim::vlm {
+namespace {
+
+using testing::Capture;
+using testing::GatewayEroi;
+using testing::Pinhole;
+using testing::SearchWorld;
+
+const Eigen::Vector3d kCamera(0, 0, 1.5);
+
+SimVlmConfig Perfect() {
+  SimVlmConfig config;
+  config.errors = SimVlmErrors{0, 0, 0, 0};
+  return config;
+}
+
+// The gateway's side: codes printed into the frame, the search prompt with it.
+struct Asked {
+  VlmQuestion question;
+  std::vector<reasoning::CodeLabel> labels;
+};
+
+Asked AskAbout(const SensorFrame& frame, double yaw, const std::string& target) {
+  absl::StatusOr<reasoning::EroiSearch> search = reasoning::EroiSearch::Create(target, GatewayEroi());
+  EXPECT_TRUE(search.ok()) << search.status();
+  cv::Mat image = frame.rgb->clone();
+  const reasoning::EroiObservation observation =
+      search->Annotate(kCamera, testing::BodyOrientation(yaw), Pinhole(), image);
+  return {VlmQuestion{observation.prompt, {image}}, observation.labels};
+}
+
+bool CutByBorder(const cv::Rect& box) { return box.x <= 0 || box.y <= 0 || box.x + box.width >= 160 || box.y + box.height >= 120; }
+
+TEST(SimVlmCodeReaderTest, ReadsEveryCodeTheGatewayPrinted) {
+  const World world = SearchWorld();
+  const Scene scene = Scene::Build(world);
+  const SensorFrame frame = Capture(scene, kCamera, 0.0, 1);
+  const Asked asked = AskAbout(frame, 0.0, "backpack");
+  std::set<std::string> printed;
+  for (const reasoning::CodeLabel& label : asked.labels) {
+    if (!CutByBorder(label.box)) printed.insert(label.code);
+  }
+  ASSERT_GE(printed.size(), 4u);  // enough labels for the check to mean something
+  std::set<std::string> read;
+  for (const PrintedCode& code : ReadPrintedCodes(asked.question.images[0], *frame.rgb, 0.5, 1)) read.insert(code.code);
+  EXPECT_EQ(read, printed);
+}
+
+TEST(SimVlmTest, TargetInViewIsNamedByThePrintedCodeNearestIt) {
+  const World world = SearchWorld();
+  FrameLog log;
+  const SensorFrame frame = Capture(Scene::Build(world), kCamera, 0.0, 7);
+  log.Record(frame);
+  auto model = SimVlm::Create(world, &log, Perfect());
+  ASSERT_TRUE(model.ok()) << model.status();
+  const Asked asked = AskAbout(frame, 0.0, "red backpack");
+  absl::StatusOr<VlmReply> reply = (*model)->Answer(asked.question);
+  ASSERT_TRUE(reply.ok()) << reply.status();
+  const std::vector<reasoning::CodeDescription> pairs = reasoning::ParseCodeDescriptions(reply->text);
+  ASSERT_EQ(pairs.size(), 1u) << reply->text;
+  EXPECT_EQ(pairs[0].description, "red backpack seen here");
+  // The named code is printed in the frame, and its EROI centre is near the backpack at (8, 0).
+  auto printed = std::find_if(asked.labels.begin(), asked.labels.end(),
+                              [&](const reasoning::CodeLabel& l) { return l.code == pairs[0].code; });
+  ASSERT_NE(printed, asked.labels.end()) << pairs[0].code;
+  EXPECT_LT((printed->world.head<2>() - Eigen::Vector2d(8, 0)).norm(), 4.5) << pairs[0].code;
+  EXPECT_GT(reply->latency_s, 0.0);
+  EXPECT_EQ(reply->input_tokens, 1083);
+}
+
+TEST(SimVlmTest, SameTargetOutOfViewGetsNoClue) {
+  for (const bool wall : {false, true}) {
+    const World world = SearchWorld(wall);
+    const Scene scene = Scene::Build(world);
+    FrameLog log;
+    auto model = SimVlm::Create(world, &log, Perfect());
+    ASSERT_TRUE(model.ok());
+    // Facing away (yaw pi) or facing it behind a wall: no "seen here".
+    for (const double yaw : wall ? std::vector<double>{0.0} : std::vector<double>{M_PI, M_PI / 2}) {
+      const SensorFrame frame = Capture(scene, kCamera, yaw, log.size() + 1);
+      log.Record(frame);
+      absl::StatusOr<VlmReply> reply = (*model)->Answer(AskAbout(frame, yaw, "backpack").question);
+      ASSERT_TRUE(reply.ok()) << reply.status();
+      EXPECT_FALSE(absl::StrContains(reply->text, "seen here")) << "wall " << wall << " yaw " << yaw << ": " << reply->text;
+    }
+  }
+}
+
+TEST(SimVlmTest, WithoutAClueThePassageInViewIsNamed) {
+  const World world = SearchWorld();
+  const Scene scene = Scene::Build(world);
+  FrameLog log;
+  const double yaw = -M_PI / 2;  // facing the road at y = -6, away from backpack and bench
+  const SensorFrame frame = Capture(scene, kCamera, yaw, 3);
+  log.Record(frame);
+  auto model = SimVlm::Create(world, &log, Perfect());
+  ASSERT_TRUE(model.ok());
+  absl::StatusOr<VlmReply> reply = (*model)->Answer(AskAbout(frame, yaw, "backpack").question);
+  ASSERT_TRUE(reply.ok()) << reply.status();
+  EXPECT_TRUE(absl::StrContains(reply->text, "road leading to another area")) << reply->text;
+}
+
+TEST(SimVlmTest, AnImageTheCameraNeverTookShowsNothing) {
+  const World world = SearchWorld();
+  FrameLog log;  // empty
+  auto model = SimVlm::Create(world, &log, Perfect());
+  ASSERT_TRUE(model.ok());
+  const SensorFrame frame = Capture(Scene::Build(world), kCamera, 0.0, 1);
+  absl::StatusOr<VlmReply> reply = (*model)->Answer(AskAbout(frame, 0.0, "backpack").question);
+  ASSERT_TRUE(reply.ok());
+  EXPECT_TRUE(reasoning::ParseCodeDescriptions(reply->text).empty()) << reply->text;
+}
+
+// --- The error model: each rate measured over 4000 draws (binomial sd <= 0.008; bounds +-0.03).
+
+FrameSighting Seen(std::vector<std::string> labels) {
+  FrameSighting sighting;
+  for (size_t i = 0; i < labels.size(); ++i) {
+    sighting.instances.push_back({static_cast<int>(i), labels[i], 100, cv::Point2d(40.0 + 50 * i, 60)});
+  }
+  return sighting;
+}
+
+const std::vector<PrintedCode> kCodes = {{"C5A", {}, {40, 60}}, {"D5A", {}, {90, 60}}, {"E7A", {}, {140, 100}}};
+
+double Share(const FrameSighting& sighting, const SimVlmErrors& errors, const std::function<bool(const std::string&)>& counted) {
+  constexpr int kDraws = 4000;
+  int hits = 0;
+  for (int i = 0; i < kDraws; ++i) {
+    Rng rng(MixSeed(42, i));
+    hits += counted(ChooseSearchAnswer(sighting, kCodes, "backpack", errors, rng));
+  }
+  return static_cast<double>(hits) / kDraws;
+}
+
+TEST(SimVlmErrorModelTest, MissRate) {
+  SimVlmErrors errors{0.2, 0, 0, 0};
+  const double missed = Share(Seen({"backpack"}), errors, [](const std::string& a) { return !absl::StrContains(a, "seen here"); });
+  EXPECT_NEAR(missed, 0.2, 0.03);
+  errors.miss_rate = 0.0;
+  EXPECT_EQ(Share(Seen({"backpack"}), errors, [](const std::string& a) { return a == "Code: C5A, Description: backpack seen here"; }), 1.0);
+}
+
+TEST(SimVlmErrorModelTest, ConfusionRate) {
+  const SimVlmErrors errors{0, 0.1, 0, 0};
+  // One bench and nothing else: it is taken for the backpack (named by its code D5A? no: C5A, its own pixel).
+  const double confused = Share(Seen({"bench"}), errors, [](const std::string& a) { return a == "Code: C5A, Description: backpack seen here"; });
+  EXPECT_NEAR(confused, 0.1, 0.03);
+}
+
+TEST(SimVlmErrorModelTest, HallucinationRate) {
+  const SimVlmErrors errors{0, 0, 0.05, 0};
+  const double invented = Share(FrameSighting{}, errors, [](const std::string& a) { return absl::StrContains(a, "seen here"); });
+  EXPECT_NEAR(invented, 0.05, 0.03);
+  EXPECT_GT(invented, 0.0);
+  // Never when the target is truly there: hallucinations stand in only for a missing clue.
+  const SimVlmErrors always{0, 0, 1.0, 0};
+  EXPECT_EQ(Share(Seen({"backpack"}), always, [](const std::string& a) { return absl::StrContains(a, "C5A"); }), 1.0);
+}
+
+TEST(SimVlmErrorModelTest, CodeOffByOneCell) {
+  const SimVlmErrors errors{0, 0, 0, 0.1};
+  const std::set<std::string> neighbours = {"B5A", "D5A", "C4A", "C6A"};
+  int off = 0, elsewhere = 0;
+  for (int i = 0; i < 4000; ++i) {
+    Rng rng(MixSeed(7, i));
+    const std::vector<reasoning::CodeDescription> pairs =
+        reasoning::ParseCodeDescriptions(ChooseSearchAnswer(Seen({"backpack"}), kCodes, "backpack", errors, rng));
+    ASSERT_EQ(pairs.size(), 1u);
+    off += neighbours.count(pairs[0].code);
+    elsewhere += pairs[0].code != "C5A" && !neighbours.count(pairs[0].code);
+  }
+  EXPECT_NEAR(off / 4000.0, 0.1, 0.03);
+  EXPECT_EQ(elsewhere, 0);
+}
+
+TEST(SimVlmErrorModelTest, AClueFarFromEveryPrintedCodeIsNotNamed) {
+  const SimVlmErrors errors{0, 0, 0, 0};
+  FrameSighting far = Seen({"backpack"});
+  far.instances[0].centroid = cv::Point2d(40, 5);  // 55 px above C5A, the nearest code
+  Rng rng(1);
+  EXPECT_EQ(ChooseSearchAnswer(far, kCodes, "backpack", errors, rng, 40.0), "No clue or passage.");
+  far.instances[0].centroid = cv::Point2d(40, 30);  // 30 px away: named
+  EXPECT_EQ(ChooseSearchAnswer(far, kCodes, "backpack", errors, rng, 40.0), "Code: C5A, Description: backpack seen here");
+}
+
+TEST(SimVlmErrorModelTest, LatencyIsLogNormalAroundTheConfiguredMedian) {
+  const World world = SearchWorld();
+  FrameLog log;
+  SimVlmConfig config = Perfect();
+  config.latency.text_median_s = 0.35;
+  config.latency.sigma = 0.4;
+  config.latency.max_s = 1.0;
+  auto model = SimVlm::Create(world, &log, config);
+  ASSERT_TRUE(model.ok());
+  std::vector<double> latencies;
+  for (int i = 0; i < 2000; ++i) {
+    const std::string prompt = reasoning::BuildRegionScorePrompt("backpack", {absl::StrCat("place ", i)});
+    absl::StatusOr<VlmReply> reply = (*model)->Answer({prompt, {}});
+    ASSERT_TRUE(reply.ok());
+    latencies.push_back(reply->latency_s);
+  }
+  std::sort(latencies.begin(), latencies.end());
+  EXPECT_NEAR(latencies[1000], 0.35, 0.02);  // the median
+  // P(X > 1.0) for log-normal(ln 0.35, 0.4) is 0.44 %: a capped tail, never above the cap.
+  EXPECT_LE(latencies.back(), 1.0);
+  EXPECT_NEAR(latencies[1680] / latencies[1000], std::exp(0.4), 0.08);  // the 84th percentile is median * e^sigma
+}
+
+TEST(SimVlmErrorModelTest, AnswersAreAFunctionOfTheSeed) {
+  SimVlmErrors errors{0.5, 0.5, 0.5, 0.5};
+  std::vector<std::string> first, again, other;
+  for (int i = 0; i < 50; ++i) {
+    Rng a(MixSeed(1, i)), b(MixSeed(1, i)), c(MixSeed(2, i));
+    first.push_back(ChooseSearchAnswer(Seen({"backpack", "bench"}), kCodes, "backpack", errors, a));
+    again.push_back(ChooseSearchAnswer(Seen({"backpack", "bench"}), kCodes, "backpack", errors, b));
+    other.push_back(ChooseSearchAnswer(Seen({"backpack", "bench"}), kCodes, "backpack", errors, c));
+  }
+  EXPECT_EQ(first, again);
+  EXPECT_NE(first, other);
+}
+
+TEST(SimVlmTest, RegionScoreAndMatchTarget) {
+  const World world = SearchWorld();
+  FrameLog log;
+  auto model = SimVlm::Create(world, &log, Perfect());
+  ASSERT_TRUE(model.ok());
+  auto score = [&](std::vector<std::string> descriptions) {
+    absl::StatusOr<VlmReply> reply = (*model)->Answer({reasoning::BuildRegionScorePrompt("backpack", descriptions), {}});
+    EXPECT_TRUE(reply.ok());
+    return reasoning::ParseRegionScore(reply->text);
+  };
+  EXPECT_EQ(*score({"backpack seen here", "no backpack here; road leading to another area"}), 3);
+  EXPECT_EQ(*score({"backpack seen here", "backpack seen here", "backpack seen here"}), 5);
+  EXPECT_EQ(*score({"no backpack here; road leading to another area"}), -2);
+  const std::string task =
+      R"({"candidates":[{"id":"4","label":"bench"},{"id":"9","label":"backpack"}],"target":"red backpack","task":"match_target"})";
+  absl::StatusOr<VlmReply> match = (*model)->Answer({absl::StrCat("You help a robot find objects.\n", task), {}});
+  ASSERT_TRUE(match.ok()) << match.status();
+  EXPECT_TRUE(absl::StrContains(match->text, R"("best_id":"9")")) << match->text;
+  EXPECT_EQ((*model)->Answer({"tell me a joke", {}}).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+TEST(SimVlmTest, ConfigIsValidated) {
+  const World world = SearchWorld();
+  FrameLog log;
+  SimVlmConfig config;
+  config.errors.miss_rate = 1.5;
+  const auto bad = SimVlm::Create(world, &log, config);
+  EXPECT_EQ(bad.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ErrorField(bad.status()), "errors.miss_rate");
+  config = SimVlmConfig();
+  config.latency.vision_median_s = -1;
+  EXPECT_EQ(ErrorField(SimVlm::Create(world, &log, config).status()), "latency.vision_median_s");
+}
+
+TEST(SimVlmTest, LabelNamesTargetByWholeWords) {
+  EXPECT_TRUE(LabelNamesTarget("backpack", "red backpack"));
+  EXPECT_TRUE(LabelNamesTarget("potted plant", "Potted Plant"));
+  EXPECT_FALSE(LabelNamesTarget("chair", "armchair"));
+  EXPECT_FALSE(LabelNamesTarget("bench", "backpack"));
+}
+
+}  // namespace
+}  // namespace semnav::sim::vlm
