@@ -177,6 +177,7 @@ int main(int argc, char** argv) {
     options.bin_dir = bin_dir;
     options.work_dir = absl::StrCat(out_dir, "/stack_", w);
     if (flags.contains("--model-config")) options.model_proxy_config = flags["--model-config"];
+    options.task_time_budget_s = std::atoi(flags["--max-steps"].c_str()) * loop::EpisodeSpec{}.step_s;
     if (sim_model) {
       frame_logs[w].push_back(std::make_unique<sim::vlm::FrameLog>());
       auto model = sim::vlm::SimVlm::Create(plan.front().world, frame_logs[w].back().get(), sim::vlm::SimVlmConfig());

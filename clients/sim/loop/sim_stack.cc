@@ -65,7 +65,8 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
                              WriteConfig(options.work_dir, "gateway",
                                          absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
                                                       "\n  planning:\n    address: ", *planning, "\n",
-                                                      model_proxy_section))});
+                                                      model_proxy_section, "  executor:\n    time_budget_s: ",
+                                                      options.task_time_budget_s, "\n"))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
   return stack;

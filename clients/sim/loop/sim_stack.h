@@ -21,6 +21,9 @@ struct SimStackOptions {
   // A semnav-model-proxy config (YAML) to run a model proxy in the stack and point the gateway
   // at it (gateway.model_proxy.address); empty = no model, the gateway resolves on its fast path only.
   std::string model_proxy_config;
+  // The episode budget in simulated seconds, given to the gateway's executor (executor.
+  // time_budget_s) so its endgame knows when the last steps come; 0 = no budget.
+  double task_time_budget_s = 0.0;
 };
 
 class SimStack {
