@@ -34,7 +34,9 @@ absl::Status ExpectSequence(const YAML::Node& node, const std::string& path) {
 absl::Status CheckKeys(const YAML::Node& node, const std::string& path,
                        std::initializer_list<std::string_view> allowed) {
   for (const auto& entry : node) {
-    const std::string key = entry.first.as<std::string>();
+    // A non-scalar key ("{[1]: 2}") is never allowed; as<std::string>() would throw on it.
+    if (!entry.first.IsScalar()) return Bad(path, "a key must be a plain name");
+    const std::string key = entry.first.Scalar();
     bool known = false;
     for (std::string_view a : allowed) known = known || a == key;
     if (!known) return Bad(Join(path, key), "unknown field");
