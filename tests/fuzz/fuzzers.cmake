@@ -30,13 +30,6 @@ semnav_fuzzer(rpc_relocalization DEPS semnav_relocalization_server semnav_fuzz_r
 semnav_fuzzer(rpc_modelproxy DEPS semnav_modelproxy_server semnav_fuzz_rpc)
 semnav_fuzzer(rpc_gateway DEPS semnav_reasoning_server semnav_fuzz_rpc)
 
-# Not a harness: writes the binary seeds (see make_seeds.cc); built with the harnesses.
-add_executable(fuzz_make_seeds make_seeds.cc)
-target_include_directories(fuzz_make_seeds PRIVATE ${CMAKE_SOURCE_DIR})
-target_link_libraries(fuzz_make_seeds PRIVATE semnav_mapping_core semnav_relocalization_core semnav_sim_worlds
-  semnav_proto_mapping semnav_proto_planning semnav_proto_relocalization semnav_proto_modelproxy
-  semnav_proto_reasoning)
-add_dependencies(semnav_fuzzers fuzz_make_seeds)
 
 # The request sweep (tests/contract/request_sweep_test.cc) against service binaries built here,
 # i.e. with ASan and UBSan: ctest `asan_request_sweep` (docs/dev/fuzzing.md).

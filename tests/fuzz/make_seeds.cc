@@ -1,7 +1,7 @@
 // Writes the binary seed inputs of tests/fuzz/corpus/ (the text ones are written by hand):
 // a small saved map, map file, landmark map file, OctoMap, world, and one request per RPC in
 // the rpc_* harnesses' format (rpc_harness.h). Run from the fuzz build after changing a format:
-//   build/fuzz/bin/fuzz_make_seeds tests/fuzz/corpus
+//   build/release/bin/fuzz_make_seeds tests/fuzz/corpus   (or build/fuzz/bin/...)
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -146,6 +146,10 @@ void RpcSeeds(const std::string& harness, const std::vector<std::string>& servic
   std::vector<const google::protobuf::MethodDescriptor*> methods;
   for (const std::string& name : services) {
     const auto* service = google::protobuf::DescriptorPool::generated_pool()->FindServiceByName(name);
+    if (service == nullptr) {
+      std::fprintf(stderr, "no descriptor for %s\n", name.c_str());
+      std::abort();
+    }
     for (int i = 0; i < service->method_count(); ++i) methods.push_back(service->method(i));
   }
   google::protobuf::DynamicMessageFactory factory;
@@ -171,6 +175,16 @@ void RpcSeeds(const std::string& harness, const std::vector<std::string>& servic
 }
 
 void AllRpcSeeds() {
+  // Referencing each generated file links its descriptors into the generated pool.
+  for (const google::protobuf::Descriptor* type :
+       {semnav::mapping::v1::GetGridMapRequest::descriptor(), semnav::common::v1::GetMetricsRequest::descriptor(),
+        semnav::planning::v1::PlanPathRequest::descriptor(),
+        semnav::relocalization::v1::RelocalizeRequest::descriptor(),
+        semnav::modelproxy::v1::CompleteRequest::descriptor(),
+        semnav::reasoning::v1::SubmitInstructionRequest::descriptor(),
+        semnav::reasoning::v1::ConnectRequest::descriptor()}) {
+    (void)type;
+  }
   const std::string depth = Repeat("\\000\\000\\000@", 16);
   RpcSeeds("rpc_mapping", {"semnav.mapping.v1.MappingService", "semnav.common.v1.MetricsService"},
            {{"StreamFrames",

@@ -27,7 +27,7 @@ fi
 mkdir -p "$scratch/corpus"
 echo "== fuzzing $name for ${seconds}s from $corpus (scratch: $scratch)"
 if ! "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-    -print_final_stats=1 -artifact_prefix="$scratch/" "$scratch/corpus" "$corpus"; then
+    -print_final_stats=1 -artifact_prefix="$scratch/" "$scratch/corpus" $([[ -d $corpus ]] && echo "$corpus"); then
   echo "FUZZ FAILURE in $name: the input is in $scratch (crash-*/leak-*/timeout-*/oom-*)."
   echo "Fix it, then keep the input: cp $scratch/<file> $regressions/"
   exit 1
