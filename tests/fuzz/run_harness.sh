@@ -4,7 +4,7 @@
 # entries go to a scratch folder (the committed corpus is never written); a crash leaves its
 # input in the scratch folder, whose path is printed, to be copied into the regressions folder.
 set -euo pipefail
-binary=$1 corpus=$2 regressions=$3 seconds=$4
+binary=$(realpath "$1") corpus=$(realpath -m "$2") regressions=$(realpath -m "$3") seconds=$4
 name=$(basename "$binary")
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/${name}.XXXXXX")
 cd "$scratch"  # harnesses that write files do it under their own temp folders; artifacts land here
