@@ -31,8 +31,9 @@ semnav_fuzzer(rpc_modelproxy DEPS semnav_modelproxy_server semnav_fuzz_rpc)
 semnav_fuzzer(rpc_gateway DEPS semnav_reasoning_server semnav_fuzz_rpc)
 
 
-# The request sweep against service binaries built here, i.e. with ASan and UBSan (not in
-# semnav_fuzzers, so the fuzz smoke runs do not wait for it; docs/dev/fuzzing.md).
+# The request sweep against service binaries built here, i.e. with ASan and UBSan
+# (ctest asan_request_sweep; docs/dev/fuzzing.md).
 add_custom_target(semnav_asan_sweep)
 add_dependencies(semnav_asan_sweep semnav-mapping semnav-planning semnav-relocalization semnav-model-proxy
                  semnav-gateway semnav_request_sweep_contract_test)
+add_dependencies(semnav_fuzzers semnav_asan_sweep)
