@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   # toolchain
   g++ cmake ninja-build ccache pkg-config git
+  # the fuzz preset's compiler and libFuzzer (tests/fuzz, docs/dev/fuzzing.md)
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
   # contracts and transport
   libgrpc++-dev protobuf-compiler-grpc libprotobuf-dev protobuf-compiler grpc-proto libabsl-dev
   # algorithms

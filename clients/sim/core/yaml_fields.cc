@@ -21,20 +21,24 @@ std::string Join(const std::string& path, std::string_view key) {
 
 std::string Index(const std::string& path, size_t i) { return absl::StrCat(path, "[", i, "]"); }
 
+// IsMap()/IsSequence() throw YAML::InvalidNode on the invalid node a lookup in a non-map gives
+// (found by tests/fuzz, world_yaml): IsDefined() is false for it and safe to ask.
 absl::Status ExpectMap(const YAML::Node& node, const std::string& path) {
-  if (!node.IsMap()) return Bad(path.empty() ? "world" : path, "expected a mapping");
+  if (!node.IsDefined() || !node.IsMap()) return Bad(path.empty() ? "world" : path, "expected a mapping");
   return absl::OkStatus();
 }
 
 absl::Status ExpectSequence(const YAML::Node& node, const std::string& path) {
-  if (!node.IsSequence()) return Bad(path, "expected a list");
+  if (!node.IsDefined() || !node.IsSequence()) return Bad(path, "expected a list");
   return absl::OkStatus();
 }
 
 absl::Status CheckKeys(const YAML::Node& node, const std::string& path,
                        std::initializer_list<std::string_view> allowed) {
   for (const auto& entry : node) {
-    const std::string key = entry.first.as<std::string>();
+    // A non-scalar key ("{[1]: 2}") is never allowed; as<std::string>() would throw on it.
+    if (!entry.first.IsScalar()) return Bad(path, "a key must be a plain name");
+    const std::string key = entry.first.Scalar();
     bool known = false;
     for (std::string_view a : allowed) known = known || a == key;
     if (!known) return Bad(Join(path, key), "unknown field");

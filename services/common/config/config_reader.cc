@@ -98,10 +98,16 @@ std::vector<ConfigReader> ConfigReader::Items(absl::string_view key) {
   return items;
 }
 
+std::string ConfigReader::KeyText(const YAML::Node& key) {
+  // A non-scalar key ("{[1]: 2}") has no string form: as<std::string>() would throw. It is shown
+  // as YAML, and no reader asks for it, so it is reported as unknown.
+  return key.IsScalar() ? key.Scalar() : Dump(key);
+}
+
 std::vector<std::string> ConfigReader::Keys() const {
   std::vector<std::string> keys;
   if (!node_ || !node_.IsMap()) return keys;
-  for (const auto& entry : node_) keys.push_back(entry.first.as<std::string>());
+  for (const auto& entry : node_) keys.push_back(KeyText(entry.first));
   return keys;
 }
 
@@ -119,7 +125,7 @@ absl::Status ConfigReader::Finish() const {
   for (const auto& [path, node] : shared_->mappings) {
     if (!node || !node.IsMap()) continue;
     for (const auto& entry : node) {
-      const std::string key = entry.first.as<std::string>();
+      const std::string key = KeyText(entry.first);
       const std::string full = path.empty() ? key : absl::StrCat(path, ".", key);
       if (!shared_->used.contains(full)) problems.push_back(absl::StrCat(full, ": unknown key"));
     }

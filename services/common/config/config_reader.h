@@ -66,6 +66,8 @@ class ConfigReader {
   void Fail(absl::string_view key, absl::string_view message);
   std::string KeyPath(absl::string_view key) const;
   static std::string Dump(const YAML::Node& node);
+  // A mapping key as text (non-scalar keys as YAML).
+  static std::string KeyText(const YAML::Node& key);
 
   YAML::Node node_;
   std::string path_;

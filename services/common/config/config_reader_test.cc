@@ -37,6 +37,17 @@ TEST(ConfigReaderTest, UnknownKeyIsNamedWithItsPath) {
   EXPECT_THAT(status.message(), HasSubstr("server.lisen: unknown key"));
 }
 
+// Found by tests/fuzz (service_config): a non-scalar key made Finish() throw.
+TEST(ConfigReaderTest, NonScalarKeyIsAnUnknownKeyNotAnException) {
+  auto reader = ConfigReader::FromString("mapping: {[1]: 2}\n");
+  ASSERT_TRUE(reader.ok());
+  ConfigReader mapping = reader->Child("mapping");
+  EXPECT_EQ(mapping.Keys(), std::vector<std::string>{"[1]"});
+  absl::Status status = reader->Finish();
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(status.message(), HasSubstr("mapping.[1]: unknown key"));
+}
+
 TEST(ConfigReaderTest, BadTypeAndFailedCheckAreNamed) {
   auto reader = ConfigReader::FromString("mapping: {resolution_m: fast, max_range_m: -1}\n");
   ASSERT_TRUE(reader.ok());

@@ -2,7 +2,9 @@
 
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -90,6 +92,40 @@ absl::StatusOr<SavedGrid> ParseGridSection(const std::string& section) {
   return grid;
 }
 
+// nlohmann's get<> turns a float into an integer or a float by a plain cast, undefined when the
+// value does not fit (a corrupt "count": 1e300): stored numbers are checked before conversion.
+struct MalformedNumber : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+template <typename Int>
+Int IntegerOf(const json& j, const char* name) {
+  if (j.is_number_unsigned()) {
+    const uint64_t v = j.get<uint64_t>();
+    if (v <= static_cast<uint64_t>(std::numeric_limits<Int>::max())) return static_cast<Int>(v);
+  } else if (j.is_number_integer()) {
+    const int64_t v = j.get<int64_t>();
+    if (v >= static_cast<int64_t>(std::numeric_limits<Int>::min()) &&
+        (v < 0 || static_cast<uint64_t>(v) <= static_cast<uint64_t>(std::numeric_limits<Int>::max()))) {
+      return static_cast<Int>(v);
+    }
+  }
+  throw MalformedNumber(absl::StrCat(name, " is not an integer in range"));
+}
+
+std::vector<float> FloatsOf(const json& j, const char* name) {
+  if (!j.is_array()) throw MalformedNumber(absl::StrCat(name, " is not a list of numbers"));
+  std::vector<float> values;
+  values.reserve(j.size());
+  for (const json& v : j) {
+    if (!v.is_number() || !(std::abs(v.get<double>()) <= std::numeric_limits<float>::max())) {
+      throw MalformedNumber(absl::StrCat(name, " holds a value that is not a float"));
+    }
+    values.push_back(static_cast<float>(v.get<double>()));
+  }
+  return values;
+}
+
 json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
 Eigen::Vector3d Vec(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
 
@@ -152,28 +188,30 @@ absl::StatusOr<MapContent> ParseMap(const std::string& payload) {
   content.tree.reset(oc_tree);
   try {
     const json scene_json = json::parse(*scene);
-    content.next_object_id = scene_json.at("next_id").get<uint64_t>();
+    content.next_object_id = IntegerOf<uint64_t>(scene_json.at("next_id"), "next_id");
     for (const json& j : scene_json.at("objects")) {
       SceneObject o;
-      o.id = j.at("id").get<uint64_t>();
+      o.id = IntegerOf<uint64_t>(j.at("id"), "id");
       o.label = j.at("label").get<std::string>();
       o.position = Vec(j.at("position"));
       o.size = Vec(j.at("size"));
       o.score = j.at("score").get<double>();
-      o.detection_count = j.at("count").get<int>();
-      o.embedding = j.at("embedding").get<std::vector<float>>();
-      o.first_seen_ns = j.at("first_seen_ns").get<int64_t>();
-      o.last_seen_ns = j.at("last_seen_ns").get<int64_t>();
+      o.detection_count = IntegerOf<int>(j.at("count"), "count");
+      o.embedding = FloatsOf(j.at("embedding"), "embedding");
+      o.first_seen_ns = IntegerOf<int64_t>(j.at("first_seen_ns"), "first_seen_ns");
+      o.last_seen_ns = IntegerOf<int64_t>(j.at("last_seen_ns"), "last_seen_ns");
       content.objects.push_back(std::move(o));
     }
     const json semantic_json = json::parse(*semantic);
     for (const auto& [label, flat] : semantic_json.items()) {
-      const std::vector<float> values = flat.get<std::vector<float>>();
+      const std::vector<float> values = FloatsOf(flat, "semantic points");
       if (values.size() % 3 != 0) return absl::DataLossError("map payload: semantic points not in xyz triples");
       auto& points = content.semantic_points[label];
       for (size_t i = 0; i + 2 < values.size(); i += 3) points.emplace_back(values[i], values[i + 1], values[i + 2]);
     }
   } catch (const json::exception& e) {
+    return absl::DataLossError(absl::StrCat("map payload: ", e.what()));
+  } catch (const MalformedNumber& e) {
     return absl::DataLossError(absl::StrCat("map payload: ", e.what()));
   }
   return content;

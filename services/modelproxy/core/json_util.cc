@@ -1,5 +1,7 @@
 #include "services/modelproxy/core/json_util.h"
 
+#include <cmath>
+
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 
@@ -20,7 +22,13 @@ const nlohmann::json& Field(const nlohmann::json& json, const char* key) {
 
 int64_t IntField(const nlohmann::json& json, const char* key) {
   const nlohmann::json& value = Field(json, key);
-  return value.is_number() ? value.get<int64_t>() : 0;
+  if (value.is_number_integer()) return value.get<int64_t>();
+  // A float outside int64's range (a vendor's 1e300 token count) must not reach the conversion.
+  if (value.is_number_float()) {
+    const double number = value.get<double>();
+    if (std::isfinite(number) && std::abs(number) < 9.2e18) return static_cast<int64_t>(number);
+  }
+  return 0;
 }
 
 std::string StringField(const nlohmann::json& json, const char* key) {

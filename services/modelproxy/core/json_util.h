@@ -12,7 +12,7 @@ namespace semnav::modelproxy {
 absl::StatusOr<nlohmann::json> ParseJson(const std::string& text, const std::string& what);
 // json[key] if json is an object holding key, else a null json.
 const nlohmann::json& Field(const nlohmann::json& json, const char* key);
-// Integer field or 0 when absent/not a number.
+// Integer field (a float one truncated) or 0 when absent, not a number or beyond int64.
 int64_t IntField(const nlohmann::json& json, const char* key);
 // String field or "" when absent/not a string.
 std::string StringField(const nlohmann::json& json, const char* key);

@@ -1,5 +1,8 @@
 #include "services/modelproxy/core/openai_wire.h"
 
+#include <cmath>
+#include <limits>
+
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "services/modelproxy/core/json_util.h"
@@ -101,7 +104,8 @@ absl::StatusOr<EmbeddingReply> OpenAiWire::ParseEmbeddings(const std::string& bo
       return absl::DataLossError(absl::StrCat("embeddings body: bad entry ", i));
     }
     for (const nlohmann::json& v : values) {
-      if (!v.is_number())
+      // A number beyond float's range would make the conversion undefined.
+      if (!v.is_number() || !(std::abs(v.get<double>()) <= std::numeric_limits<float>::max()))
         return absl::DataLossError(absl::StrCat("embeddings body: bad entry ", i));
       reply.vectors[slot].push_back(v.get<float>());
     }

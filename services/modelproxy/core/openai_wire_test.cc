@@ -66,6 +66,18 @@ TEST(ModelProxyOpenAiWireTest, MalformedBodiesAreDataLoss) {
   EXPECT_EQ(wire.ParseChat("[]").status().code(), absl::StatusCode::kDataLoss);
 }
 
+// Found by tests/fuzz (model_answer): numbers beyond the target type were converted anyway
+// (undefined behaviour).
+TEST(ModelProxyOpenAiWireTest, OutOfRangeNumbersAreRejectedOrIgnored) {
+  EXPECT_EQ(OpenAiWire::ParseEmbeddings(R"({"data":[{"index":0,"embedding":[1e300]}]})", 1).status().code(),
+            absl::StatusCode::kDataLoss);
+  const auto reply = OpenAiWire().ParseChat(
+      R"({"choices":[{"message":{"content":"hi"}}],"usage":{"prompt_tokens":1e300,"completion_tokens":7.9}})");
+  ASSERT_TRUE(reply.ok()) << reply.status();
+  EXPECT_EQ(reply->usage.input_tokens, 0);
+  EXPECT_EQ(reply->usage.output_tokens, 7);
+}
+
 TEST(ModelProxyOpenAiWireTest, ErrorMessageReadsTheErrorObject) {
   EXPECT_EQ(OpenAiWire().ErrorMessage(R"({"error":{"message":"rate limited"}})"), "rate limited");
   EXPECT_EQ(OpenAiWire().ErrorMessage("<html>"), "");

@@ -75,7 +75,9 @@ absl::StatusOr<SlowDecision> ParseResolveAnswer(std::string_view answer, const S
   const std::string best = root["best_id"].get<std::string>();
   if (root.contains("ranking") && root["ranking"].is_array()) {
     for (const nlohmann::json& item : root["ranking"]) {
-      if (item.is_object() && item.value("id", "") == best && item.contains("reason") && item["reason"].is_string()) {
+      // value("id", "") throws for an id that is not a string: check the type first.
+      if (item.is_object() && item.contains("id") && item["id"].is_string() && item["id"].get<std::string>() == best &&
+          item.contains("reason") && item["reason"].is_string()) {
         decision.explanation = item["reason"].get<std::string>();
       }
     }
