@@ -23,6 +23,7 @@
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "semnav/reasoning/v1/robot_session.pb.h"
 #include "semnav/relocalization/v1/relocalization.pb.h"
+#include "services/common/storage/durable_file.h"
 #include "services/mapping/core/map_serialization.h"
 #include "services/mapping/core/map_store.h"
 #include "services/relocalization/core/landmark_map.h"
@@ -78,8 +79,7 @@ void MapSeeds() {
   Write("map_payload", "small_map_without_grid", semnav::mapping::SerializeMap(tree, objects, 3, points));
   Write("map_store_file", "small_map_wrapped", "\x01" + payload);
   Write("map_store_file", "small_map_file",
-        std::string(1, '\0') + "SNMAP1\n" + LittleEndian(payload.size(), 8) +
-            LittleEndian(semnav::mapping::Crc32(payload), 4) + payload);
+        std::string(1, '\0') + semnav::storage::FrameWithChecksum("SNMAP1\n", payload));
   std::ostringstream bt;
   tree.writeBinaryConst(bt);
   Write("octomap_import", "small.bt", bt.str());
