@@ -43,7 +43,10 @@ bool FootprintTouches(const Shape& shape, const BoxShape& box) {
 // it stands on or in.
 std::vector<Shape> Blockers(const World& world, const ObjectInstance& target, double reach) {
   const double mid_z = target.box.base_z + target.box.size.z() / 2.0;
-  auto [lo, hi] = FootprintBounds(Shape(target.box));
+  // Plain locals, not a structured binding: clang 14 (the fuzz build) cannot capture one.
+  const auto bounds = FootprintBounds(Shape(target.box));
+  Eigen::Vector2d lo = bounds.first;
+  Eigen::Vector2d hi = bounds.second;
   lo.array() -= reach;
   hi.array() += reach;
   std::vector<Shape> blockers;

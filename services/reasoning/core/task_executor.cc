@@ -207,6 +207,10 @@ std::vector<RobotCommand> TaskExecutor::Refuse(const absl::Status& refused) {
 std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& reason) {
   if (phase_ == Phase::kBackingOff) return ResumeAfterBackoff(now);
   if (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) return ExplorationFailed(now, reason);
+  return CountedReplan(now, reason);
+}
+
+std::vector<RobotCommand> TaskExecutor::CountedReplan(double now, const std::string& reason) {
   if (++progress_.replans > config_.max_replans) {
     if (progress_.target.has_value()) {
       return SetTargetAside(now, absl::StrCat("could not reach it after ", config_.max_replans, " re-plans: ", reason));
@@ -667,10 +671,8 @@ std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_explorin
 }
 
 std::vector<RobotCommand> TaskExecutor::ResumeAfterBackoff(double now) {
-  if (!resume_exploring_) {
-    progress_.reason = "re-planning after backing off";
-    return EnterSubgoal(now);
-  }
+  // A blocked navigation planned again is a re-plan: it counts toward max_replans.
+  if (!resume_exploring_) return CountedReplan(now, "re-planning after backing off");
   if (!explore_goal_.has_value()) return Explore(now);  // after a fallback step with no path
   const Eigen::Vector3d goal = *explore_goal_;
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);

@@ -175,6 +175,8 @@ class TaskExecutor {
   // Fails the task instead of sending a command that CheckCommand refused.
   std::vector<RobotCommand> Refuse(const absl::Status& refused);
   std::vector<RobotCommand> Replan(double now, const std::string& reason);
+  // Counts the re-plan (failing or setting the target aside past max_replans) and plans again.
+  std::vector<RobotCommand> CountedReplan(double now, const std::string& reason);
   // The planner answered UNAVAILABLE: hold and pause (once), retry from OnPose.
   std::vector<RobotCommand> PauseForDependency(double now, const absl::Status& unavailable);
   std::vector<RobotCommand> RetryDependency(double now);
