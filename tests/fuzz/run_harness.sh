@@ -25,8 +25,11 @@ if ((${#saved[@]})); then
 fi
 
 mkdir -p "$scratch/corpus"
-echo "== fuzzing $name for ${seconds}s from $corpus (scratch: $scratch)"
-if ! "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+# A fixed seed by default, so a CI run explores the same inputs each time and a new finding is
+# reproducible; SEMNAV_FUZZ_SEED=0 picks a random one (longer runs, docs/dev/fuzzing.md).
+seed=${SEMNAV_FUZZ_SEED:-1}
+echo "== fuzzing $name for ${seconds}s from $corpus (seed $seed, scratch: $scratch)"
+if ! "$binary" -seed="$seed" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
     -print_final_stats=1 -artifact_prefix="$scratch/" "$scratch/corpus" $([[ -d $corpus ]] && echo "$corpus"); then
   echo "FUZZ FAILURE in $name: the input is in $scratch (crash-*/leak-*/timeout-*/oom-*)."
   echo "Fix it, then keep the input: cp $scratch/<file> $regressions/"
