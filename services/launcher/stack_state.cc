@@ -7,9 +7,7 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -46,11 +44,9 @@ absl::Status WriteStackState(const std::string& path, const StackState& state) {
 }
 
 absl::StatusOr<StackState> ReadLiveStackState(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return absl::NotFoundError(absl::StrCat(path, " not found"));
-  std::stringstream text;
-  text << in.rdbuf();
-  const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
+  absl::StatusOr<std::string> text = storage::ReadWholeFile(path);
+  if (!text.ok()) return absl::NotFoundError(absl::StrCat(path, " not found"));
+  const nlohmann::json json = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
   if (!json.is_object()) return absl::NotFoundError(absl::StrCat(path, " is not a stack state"));
   StackState state;
   state.launcher_pid = json.value("launcher_pid", -1);

@@ -29,10 +29,7 @@ TaskExecutor::TaskExecutor(std::string instruction, std::vector<Subgoal> subgoal
       memory_(memory),
       config_(config) {}
 
-bool TaskExecutor::finished() const {
-  return progress_.state == TaskState::kSucceeded || progress_.state == TaskState::kFailed ||
-         progress_.state == TaskState::kCancelled;
-}
+bool TaskExecutor::finished() const { return Ended(progress_.state); }
 
 const TargetSpec& TaskExecutor::ActiveTarget() const {
   const auto is_object = [](const Subgoal& goal) { return !goal.target.empty() && !goal.target.is_room; };

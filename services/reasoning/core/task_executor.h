@@ -93,6 +93,11 @@ struct ExecutorConfig {
 
 enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
 
+// SUCCEEDED, FAILED or CANCELLED: the task will not move the robot again.
+inline bool Ended(TaskState state) {
+  return state == TaskState::kSucceeded || state == TaskState::kFailed || state == TaskState::kCancelled;
+}
+
 struct LocatedTarget {
   int64_t object_id = -1;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();

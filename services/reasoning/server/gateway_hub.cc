@@ -194,6 +194,14 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   }
 }
 
+std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id, const std::string& strategy) {
+  return std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
+                                       [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
+                                         // Called by the executor, under mu_.
+                                         return ContextFor(task_id);
+                                       });
+}
+
 void GatewayHub::StartIfPossible(Task& task) {
   Robot& robot = RobotRecord(task.robot_id);
   if (task.started || robot.session == nullptr) {
@@ -307,11 +315,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
           ? ""
           : std::string(absl::StripPrefix(api::ExplorationStrategy_Name(request.exploration_strategy()),
                                           "EXPLORATION_STRATEGY_"));
-  task.planner = std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
-                                               [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
-                                                 // Called by the executor, under mu_.
-                                                 return ContextFor(task_id);
-                                               });
+  task.planner = PlannerFor(task_id, strategy);
   InstallExecutor(task, decomposition.subgoals);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());

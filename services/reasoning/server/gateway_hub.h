@@ -203,6 +203,9 @@ class GatewayHub {
   // Sends the executor's commands to the robot, bumps the revision and notifies watchers.
   void Apply(Task& task, const std::vector<RobotCommand>& commands) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The task's path planner with `strategy` ("" = the configured default) and its exploration
+  // context.
+  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, const std::string& strategy);
   // The executor's modality and footprint from the robot's latest hello.
   void SetMobility(Task& task, const Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // A new executor for `subgoals` (with the scene graph, the EROI search and the target's text

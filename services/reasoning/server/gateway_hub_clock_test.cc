@@ -39,17 +39,6 @@ api::SubmitInstructionRequest SubmitRequest(const std::string& instruction) {
   return request;
 }
 
-SceneGraph SofaScene() {
-  SceneGraph graph;
-  graph.revision = 1;
-  SceneObject sofa;
-  sofa.id = 5;
-  sofa.label = "sofa";
-  sofa.position = Eigen::Vector3d(1.0, 0.5, 0.4);
-  graph.objects.push_back(sofa);
-  return graph;
-}
-
 // Indices of the session's messages that are commands, and of StepDone messages.
 std::vector<std::size_t> CommandIndices(const std::vector<api::ConnectResponse>& messages) {
   std::vector<std::size_t> out;
@@ -181,20 +170,6 @@ class LatencyModel : public LanguageModel {
   absl::Mutex mu_;
   std::vector<Call> matches_;
 };
-
-// "Find the red cup": a cup the fast path is not sure of, so the slow path asks the model.
-SceneGraph CupScene() {
-  SceneGraph graph;
-  graph.revision = 3;
-  SceneObject cup;
-  cup.id = 7;
-  cup.label = "cup";
-  cup.position = Eigen::Vector3d(4.0, 0.0, 0.8);
-  cup.score = 0.9;
-  cup.detection_count = 10;
-  graph.objects.push_back(cup);
-  return graph;
-}
 
 TEST(SimulatedClockModelTest, AnAnswerIsUsedOnlyOnceItsSimulatedLatencyHasPassed) {
   RobotLocalPlanner planner;

@@ -48,14 +48,8 @@ void GatewayHub::RestoreTask(const JournaledTask& saved) {
   task.model_calls = saved.model_calls;
   task.created = saved.created;
   task.updated = saved.updated;
-  const std::string task_id = saved.task_id;
-  task.planner = std::make_unique<TaskPlanner>(planner_, backends_.explorer, saved.strategy,
-                                               [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
-                                                 return ContextFor(task_id);  // called under mu_
-                                               });
-  const bool ended = saved.progress.state == TaskState::kSucceeded || saved.progress.state == TaskState::kFailed ||
-                     saved.progress.state == TaskState::kCancelled;
-  if (ended) {
+  task.planner = PlannerFor(saved.task_id, saved.strategy);
+  if (Ended(saved.progress.state)) {
     // History only: no embedding, no EROI search, no model.
     task.executor = std::make_unique<TaskExecutor>(task.instruction, saved.subgoals, &resolver_, task.planner.get(),
                                                    RobotRecord(task.robot_id).memory.get(), config_.executor);

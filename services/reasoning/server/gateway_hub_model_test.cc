@@ -69,21 +69,6 @@ class ScriptedModel : public LanguageModel {
   int stops = 0;
 };
 
-// A cup without a colour: "red cup" scores label 0.5 (colour unknown), embedding 0.5 (fallback),
-// detector 0.9, spatial 0: fused 0.175 + 0.175 + 0.135 = 0.485 <= 0.75, so the slow path runs.
-SceneGraph CupScene() {
-  SceneGraph graph;
-  graph.revision = 3;
-  SceneObject cup;
-  cup.id = 7;
-  cup.label = "cup";
-  cup.position = Eigen::Vector3d(4.0, 0.0, 0.8);
-  cup.score = 0.9;
-  cup.detection_count = 10;
-  graph.objects.push_back(cup);
-  return graph;
-}
-
 // The DECOMPOSITION events the hub logs.
 class DecompositionEvents : public StreamSink<api::StreamEventsResponse> {
  public:

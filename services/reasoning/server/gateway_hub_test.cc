@@ -28,14 +28,7 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   RobotLocalPlanner planner;
   const GatewayConfig config;
   GatewayHub hub(config, &ShippedLexicon(), &planner);
-  SceneGraph graph;
-  graph.revision = 1;
-  SceneObject sofa;
-  sofa.id = 5;
-  sofa.label = "sofa";
-  sofa.position = Eigen::Vector3d(1.0, 0.5, 0.4);
-  graph.objects.push_back(sofa);
-  hub.OnSceneGraph(graph);
+  hub.OnSceneGraph(SofaScene());
 
   RecordingSink session;
   api::SessionHello hello;
