@@ -163,6 +163,7 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < plan.size(); ++i) jobs.push_back({strategy, i});
   }
   const int workers = std::clamp(std::atoi(flags["--jobs"].c_str()), 1, std::max<int>(1, jobs.size()));
+  const int max_steps = std::atoi(flags["--max-steps"].c_str());
   std::vector<std::unique_ptr<loop::SimStack>> stacks;
   // --model sim: one simulated VLM endpoint per stack, re-aimed at each episode's world.
   const bool sim_model = flags.contains("--model") && flags.at("--model") == "sim" && !plan.empty();
@@ -177,7 +178,7 @@ int main(int argc, char** argv) {
     options.bin_dir = bin_dir;
     options.work_dir = absl::StrCat(out_dir, "/stack_", w);
     if (flags.contains("--model-config")) options.model_proxy_config = flags["--model-config"];
-    options.task_time_budget_s = std::atoi(flags["--max-steps"].c_str()) * loop::EpisodeSpec{}.step_s;
+    options.task_time_budget_s = max_steps * loop::EpisodeSpec{}.step_s;
     if (sim_model) {
       frame_logs[w].push_back(std::make_unique<sim::vlm::FrameLog>());
       auto model = sim::vlm::SimVlm::Create(plan.front().world, frame_logs[w].back().get(), sim::vlm::SimVlmConfig());
@@ -211,7 +212,6 @@ int main(int argc, char** argv) {
       plot_grids.emplace(spec.world.name, sim::RasterizeOccupancy(spec.world, sim::RasterOptions{}));
     }
   }
-  const int max_steps = std::atoi(flags["--max-steps"].c_str());
   const auto started = std::chrono::steady_clock::now();
   std::vector<std::optional<sim::EpisodeRecord>> slots(jobs.size());
   absl::Mutex mutex;
