@@ -89,6 +89,9 @@ absl::StatusOr<LandmarkMap> ReadLandmarkMapFile(const std::string& path) {
   if (!r.Get(&magic) || !r.Get(&revision) || !r.Get(&next_id) || !r.Get(&dim) || !r.Get(&count)) {
     return corrupt("truncated header");
   }
+  // Bounded before it is multiplied (found by fuzz_landmark_map_file: a huge dim wrapped the
+  // per-landmark size and passed the size check).
+  if (dim > kMaxDescriptorDim) return corrupt("descriptor length beyond the limit");
   const uint64_t per_landmark = 8 + 3 * 8 + 8 + 4 + dim * 4;
   if (dim == 0 && count > 0) return corrupt("zero descriptor length");
   if (count > r.remaining() / per_landmark || r.remaining() != count * per_landmark) {
