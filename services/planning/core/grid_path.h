@@ -7,7 +7,8 @@
 namespace semnav::planning {
 
 // A path as waypoints; consecutive waypoints are joined by a straight or
-// 45-degree run of cells (A* gives every cell, JPS gives jump points only).
+// 45-degree run of cells (A* gives every cell, JPS gives jump points only),
+// except GridPlanner's clearance paths, whose legs are any-angle (ShortcutPath).
 struct GridPath {
   std::vector<Cell> waypoints;
   double length_cells = 0.0;  // octile length in cell units

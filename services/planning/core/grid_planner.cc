@@ -10,6 +10,7 @@
 #include "services/planning/core/inflation.h"
 #include "services/planning/core/plan_failure.h"
 #include "services/planning/core/reachability.h"
+#include "services/planning/core/path_shortcut.h"
 
 namespace semnav::planning {
 namespace {
@@ -74,20 +75,6 @@ std::optional<Cell> NearestFreeCell(const PassabilityGrid& grid, Cell start, Cel
   return best;
 }
 
-// Only the cells where the direction changes (and both ends): the runs between them stay
-// straight or 45-degree, as GridPath promises.
-std::vector<Cell> CornersOf(const std::vector<Cell>& cells) {
-  if (cells.size() <= 2) return cells;
-  std::vector<Cell> out{cells.front()};
-  for (size_t i = 1; i + 1 < cells.size(); ++i) {
-    const int dx0 = cells[i].x - cells[i - 1].x, dy0 = cells[i].y - cells[i - 1].y;
-    const int dx1 = cells[i + 1].x - cells[i].x, dy1 = cells[i + 1].y - cells[i].y;
-    if (dx0 != dx1 || dy0 != dy1) out.push_back(cells[i]);
-  }
-  out.push_back(cells.back());
-  return out;
-}
-
 // Cells the start lies beyond each edge of a width x height grid.
 struct Padding {
   int left = 0, right = 0, bottom = 0, top = 0;
@@ -97,6 +84,11 @@ struct Padding {
 Padding PaddingFor(const PassabilityGrid& grid, Cell start) {
   return {std::max(0, -start.x), std::max(0, start.x - (grid.width() - 1)),
           std::max(0, -start.y), std::max(0, start.y - (grid.height() - 1))};
+}
+
+Padding Union(const Padding& a, const Padding& b) {
+  return {std::max(a.left, b.left), std::max(a.right, b.right), std::max(a.bottom, b.bottom),
+          std::max(a.top, b.top)};
 }
 
 template <typename T>
@@ -117,7 +109,10 @@ absl::StatusOr<GridPath> GridPlanner::Search(const PassabilityGrid& grid, Cell s
                                              const GridPlanRequest& request) {
   if (!clearance_cost_.empty()) {
     absl::StatusOr<GridPath> path = astar_.Plan(grid, start, goal, request.limits, &clearance_cost_);
-    if (path.ok()) path->waypoints = CornersOf(path->waypoints);
+    if (path.ok()) {
+      path->waypoints = ShortcutPath(grid, clearance_cost_, path->waypoints);
+      path->length_cells = PolylineLengthCells(path->waypoints);
+    }
     return path;
   }
   return request.use_jps ? jps_.Plan(grid, start, goal, request.limits)
@@ -127,6 +122,14 @@ absl::StatusOr<GridPath> GridPlanner::Search(const PassabilityGrid& grid, Cell s
 absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original) {
   GridPlanRequest request = original;
   std::optional<Cell> requested_goal;
+  const double goal_outside_m =
+      std::hypot(std::clamp(request.goal.x, 0, request.free.width() - 1) - request.goal.x,
+                 std::clamp(request.goal.y, 0, request.free.height() - 1) - request.goal.y) *
+      request.resolution_m;
+  if (!request.free.Contains(request.goal) && request.outside_is_free &&
+      goal_outside_m <= config_.max_free_goal_outside_m) {
+    return PlanPadded(request, /*pad_to_goal=*/true);
+  }
   if (!request.free.Contains(request.goal)) {
     // A target seen just past the map's edge: plan to the edge cell nearest it, which the map
     // then grows past as the robot arrives.
@@ -142,7 +145,7 @@ absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original
     requested_goal = request.goal;
     request.goal = edge;
   }
-  absl::StatusOr<GridPlanResult> result = PlanPadded(request);
+  absl::StatusOr<GridPlanResult> result = PlanPadded(request, /*pad_to_goal=*/false);
   if (result.ok() && requested_goal) {
     result->goal_adjusted = true;
     result->adjustment_reason = result->adjustment_reason.empty()
@@ -153,10 +156,12 @@ absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original
   return result;
 }
 
-absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& request) {
-  const Padding pad = PaddingFor(request.free, request.start);
+absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& request, bool pad_to_goal) {
+  const Padding to_start = PaddingFor(request.free, request.start);
+  const Padding pad = pad_to_goal ? Union(to_start, PaddingFor(request.free, request.goal)) : to_start;
   if (!pad.any()) return PlanInside(request);
-  const double outside_m = std::hypot(std::max(pad.left, pad.right), std::max(pad.bottom, pad.top)) *
+  const double outside_m = std::hypot(std::max(to_start.left, to_start.right),
+                                      std::max(to_start.bottom, to_start.top)) *
                            request.resolution_m;
   if (outside_m > config_.max_start_outside_m) {
     return InvalidField("start", absl::StrCat("start (", request.start.x, ", ", request.start.y,
@@ -165,7 +170,8 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& re
                                               " grid (max_start_outside_m ",
                                               config_.max_start_outside_m, ")"));
   }
-  // The robot stands there, so the strip between it and the map is taken as free.
+  // The robot stands there, so the strip between it and the map is taken as free; so is the
+  // strip out to a goal beyond the map when outside counts as free.
   GridPlanRequest padded = request;
   padded.free = Padded<uint8_t>(request.free, pad, 1);
   padded.obstacle_probability = Padded<uint8_t>(request.obstacle_probability, pad, 0);

@@ -32,6 +32,10 @@ struct GridPlannerConfig {
   // A goal at most this far outside the grid (a target seen past the map's edge) is planned to
   // the nearest edge cell (goal_adjusted). 0 = a goal outside the grid is INVALID_ARGUMENT.
   double max_goal_outside_m = 1.0;
+  // With outside_is_free (unknown space counts as free, e.g. while exploring), a goal up to this
+  // far outside the grid is planned to itself: the grid is padded with free cells to reach it,
+  // as Nav2 plans through unknown space with allow_unknown. Bounds the padding's memory.
+  double max_free_goal_outside_m = 20.0;
   // Cost near obstacles beyond the hard inflation (Nav2 inflation layer style).
   ClearanceConfig clearance;
 };
@@ -51,6 +55,8 @@ struct GridPlanRequest {
   bool use_jps = true;  // false: A*
   // Add the config's clearance cost (the robot's paths); false = the shortest path.
   bool keep_clearance = false;
+  // Cells beyond the grid are free like its unknown cells (planning's grid.unknown_is_free).
+  bool outside_is_free = false;
   SearchLimits limits;
 };
 
@@ -71,7 +77,8 @@ struct GridPlanResult {
 // JPS or A*. A start just outside the grid pads the grid; an occupied start
 // snaps to the nearest free cell (both reported in the result). With
 // clearance enabled the search is A* over the clearance cost (JPS has no
-// costs) and the path keeps only the cells where its direction changes.
+// costs) and the cell path is shortened by any-angle shortcuts that keep
+// its clearance (ShortcutPath).
 // Failures carry the typed PlanFailure of the last attempt.
 class GridPlanner {
  public:
@@ -84,7 +91,8 @@ class GridPlanner {
                                   const GridPlanRequest& request);
   absl::StatusOr<GridPlanResult> PlanOn(const PassabilityGrid& grid,
                                         const GridPlanRequest& request);
-  absl::StatusOr<GridPlanResult> PlanPadded(const GridPlanRequest& request);
+  // Pads the grid out to a start outside it, and with pad_to_goal out to the goal too.
+  absl::StatusOr<GridPlanResult> PlanPadded(const GridPlanRequest& request, bool pad_to_goal);
   absl::StatusOr<GridPlanResult> PlanInside(const GridPlanRequest& request);
   absl::StatusOr<GridPlanResult> PlanStages(const PassabilityGrid& grid,
                                             const GridPlanRequest& request);

@@ -234,6 +234,32 @@ TEST(GridPlanner, StartJustOutsideTheGridPadsIt) {
   EXPECT_EQ(ErrorField(planner.Plan(request).status()), "goal");
 }
 
+TEST(GridPlanner, GoalBeyondTheGridPadsItWhenOutsideIsFree) {
+  // An exploration goal 3 cells past the right edge of a 5 x 5 map whose unknown counts as free.
+  const PassabilityGrid grid(5, 5, 1);
+  GridPlannerConfig config;
+  config.max_free_goal_outside_m = 4.0;
+  GridPlanner planner(config);
+  GridPlanRequest request = RequestOn(grid, {0, 2}, {7, 2});
+  request.outside_is_free = true;
+  absl::StatusOr<GridPlanResult> result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->grid_padded);
+  EXPECT_FALSE(result->goal_adjusted);
+  EXPECT_EQ(result->planned_goal, (Cell{7, 2}));
+  EXPECT_EQ(result->path.waypoints.back(), (Cell{7, 2}));
+  EXPECT_DOUBLE_EQ(result->path.length_cells, 7.0);
+  // Farther than the padding budget: as before, an error naming the goal.
+  request.goal = {10, 2};
+  EXPECT_EQ(ErrorField(planner.Plan(request).status()), "goal");
+  // Outside not free: the edge cell, as before.
+  request.outside_is_free = false;
+  request.goal = {5, 2};
+  result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->planned_goal, (Cell{4, 2}));
+}
+
 TEST(GridPlanner, ClearanceKeepsTheCorridorPathCentred) {
   // A corridor of 7 free rows (1..7) between walls; start and goal next to the lower wall.
   std::vector<std::string> rows(9, std::string(40, '.'));
@@ -246,12 +272,14 @@ TEST(GridPlanner, ClearanceKeepsTheCorridorPathCentred) {
   config.clearance = {.clearance_m = 0.4, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0};
   absl::StatusOr<GridPlanResult> centred = GridPlanner(config).Plan(request);
   ASSERT_TRUE(centred.ok()) << centred.status();
-  const std::vector<Cell> cells = ExpandWaypoints(centred->path.waypoints);
+  const std::vector<Cell> cells = CellsAlongLegs(centred->path.waypoints);
   for (const Cell& c : cells) {
     if (c.x == 20) {
       EXPECT_EQ(c.y, 4);  // the middle row, 4 cells from both walls
     }
   }
+  // Straight legs: up to the middle row, along it, down to the goal (not a staircase of cells).
+  EXPECT_LE(centred->path.waypoints.size(), 4u);
   // Not asked for (a metric's shortest path), or off in the config: the path runs along the wall.
   request.keep_clearance = false;
   absl::StatusOr<GridPlanResult> hugging = GridPlanner(config).Plan(request);
@@ -281,7 +309,7 @@ TEST(GridPlanner, GapNarrowerThanTheRobotIsRefusedWithClearanceOn) {
   absl::StatusOr<GridPlanResult> result = planner.Plan(request);
   ASSERT_TRUE(result.ok()) << result.status();
   bool through_middle = false;
-  for (const Cell& c : ExpandWaypoints(result->path.waypoints)) {
+  for (const Cell& c : CellsAlongLegs(result->path.waypoints)) {
     if (c.y == 5) through_middle = c.x == 5;
   }
   EXPECT_TRUE(through_middle);

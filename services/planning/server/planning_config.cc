@@ -12,7 +12,8 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section)
       .Read("max_low_probability_percent", &config.grid_planner.max_low_probability_percent)
       .Read("start_snap_radius_m", &config.grid_planner.start_snap_radius_m)
       .Read("max_start_outside_m", &config.grid_planner.max_start_outside_m)
-      .Read("max_goal_outside_m", &config.grid_planner.max_goal_outside_m);
+      .Read("max_goal_outside_m", &config.grid_planner.max_goal_outside_m)
+      .Read("max_free_goal_outside_m", &config.grid_planner.max_free_goal_outside_m);
   ClearanceConfig& clearance = config.grid_planner.clearance;
   ConfigReader clear = section.Child("clearance");
   clear.Read("clearance_m", &clearance.clearance_m)
@@ -39,6 +40,10 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section)
                  config.grid_planner.max_goal_outside_m >= 0 &&
                  config.grid_planner.max_goal_outside_m <= 10,
              "max_goal_outside_m", "must be in [0, 10]");
+  grid.Check(std::isfinite(config.grid_planner.max_free_goal_outside_m) &&
+                 config.grid_planner.max_free_goal_outside_m >= 0 &&
+                 config.grid_planner.max_free_goal_outside_m <= 100,
+             "max_free_goal_outside_m", "must be in [0, 100]");
   grid.Check(config.occupied_percent >= 1 && config.occupied_percent <= 100, "occupied_percent",
              "must be in 1..100");
   grid.Check(config.grid_planner.max_low_probability_percent >= 0 &&

@@ -259,6 +259,7 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     }
     plan.use_jps = request.planner() != pb::PLANNER_KIND_ASTAR;
     plan.keep_clearance = request.keep_clearance();
+    plan.outside_is_free = config_.unknown_is_free;
     plan.limits = limits;
     GridPlanner planner(config_.grid_planner);
     absl::StatusOr<GridPlanResult> result = planner.Plan(plan);

@@ -34,6 +34,9 @@ absl::Status MappingWatcher::CatchUp(absl::Duration timeout) {
   auto stub = mapping::v1::MappingService::NewStub(channel_);
   grpc::ClientContext context;
   context.set_deadline(absl::ToChronoTime(absl::Now() + timeout));
+  // Lock step: a channel still connecting (mapping started after the gateway, or a reconnect
+  // back-off) is waited for, so whether a step sees its frame never depends on wall time.
+  context.set_wait_for_ready(true);
   mapping::v1::GetSceneGraphResponse response;
   const grpc::Status status = stub->GetSceneGraph(&context, mapping::v1::GetSceneGraphRequest(), &response);
   if (!status.ok()) return absl::UnavailableError(absl::StrCat("mapping GetSceneGraph: ", status.error_message()));
