@@ -39,7 +39,7 @@ absl::StatusOr<api::TaskSnapshot> GetTask(api::OperatorService::Stub& op, const 
   request.set_task_id(task_id);
   api::GetTaskResponse response;
   grpc::ClientContext context;
-  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(60));
   const grpc::Status status = op.GetTask(&context, request, &response);
   if (!status.ok()) return absl::UnavailableError(absl::StrCat("GetTask: ", status.error_message()));
   return response.task();
@@ -74,7 +74,7 @@ absl::Status CancelUnfinished(api::OperatorService::Stub& op, const std::string&
   request.set_reason("episode budget spent");
   api::CancelTaskResponse response;
   grpc::ClientContext context;
-  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(60));
   const absl::Status status = FromGrpcStatus(op.CancelTask(&context, request, &response));
   return absl::IsFailedPrecondition(status) ? absl::OkStatus() : status;
 }
@@ -86,7 +86,7 @@ absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping, const Episo
   request.set_request_id(absl::StrCat("reset-", spec.robot_id, "-", std::chrono::steady_clock::now().time_since_epoch().count()));
   semnav::mapping::v1::ResetMapResponse response;
   grpc::ClientContext context;
-  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(60));
   const grpc::Status status = stub->ResetMap(&context, request, &response);
   if (!status.ok()) return absl::UnavailableError(absl::StrCat("ResetMap: ", status.error_message()));
   return absl::OkStatus();

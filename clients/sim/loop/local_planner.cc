@@ -42,7 +42,7 @@ LocalPlanFn LiveMapPlanner(const std::shared_ptr<grpc::Channel>& channel, double
     for (double radius : {robot_radius + kClearance, robot_radius, 0.0}) {
       request.set_robot_radius_m(radius);
       grpc::ClientContext context;
-      context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+      context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(60));
       status = stub->PlanPath(&context, request, &response);
       if (status.error_code() != grpc::StatusCode::FAILED_PRECONDITION) break;
     }

@@ -11,6 +11,12 @@
 namespace semnav::sim::loop {
 namespace {
 
+// Wall-clock deadlines of planning and model calls in the simulator's stack. Latency counts in
+// simulated time there (lock step), so a wall deadline may only catch a hung service: the 2 s
+// and 5 s defaults for real robots made a loaded machine pause tasks ("planning_unavailable:
+// Deadline Exceeded" at load 35), so episodes depended on machine load.
+constexpr int kWallDeadlineMs = 60000;
+
 absl::StatusOr<std::string> Address(bool free_port, int default_port) {
   int port = default_port;
   if (free_port) {
@@ -53,18 +59,21 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
                              WriteConfig(options.work_dir, "planning",
                                          // The robot's local planner treats unexplored space as free.
                                          absl::StrCat("planning:\n  grid:\n    unknown_is_free: true\n"
+                                                      "  max_planning_time_ms: ", kWallDeadlineMs, "\n"
                                                       "  mapping:\n    address: ", *mapping, "\n"))});
   std::string model_proxy_section;
   if (!options.model_proxy_config.empty()) {
     absl::StatusOr<std::string> model_proxy = Address(options.free_ports, 50054);
     if (!model_proxy.ok()) return model_proxy.status();
     config.services.push_back({"modelproxy", "semnav-model-proxy", *model_proxy, options.model_proxy_config});
-    model_proxy_section = absl::StrCat("  model_proxy:\n    address: ", *model_proxy, "\n");
+    model_proxy_section =
+        absl::StrCat("  model_proxy:\n    address: ", *model_proxy, "\n    deadline_ms: ", kWallDeadlineMs, "\n");
   }
   config.services.push_back({"gateway", "semnav-gateway", *gateway,
                              WriteConfig(options.work_dir, "gateway",
                                          absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
-                                                      "\n  planning:\n    address: ", *planning, "\n",
+                                                      "\n  planning:\n    address: ", *planning,
+                                                      "\n    deadline_ms: ", kWallDeadlineMs, "\n",
                                                       model_proxy_section, "  executor:\n    time_budget_s: ",
                                                       options.task_time_budget_s, "\n"))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);

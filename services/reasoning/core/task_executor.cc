@@ -304,6 +304,7 @@ std::optional<ModelRequest> TaskExecutor::TakeModelRequest() {
 
 std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   if (InEndgame(now) && current().type != SubgoalType::kExplore && TakeBestCandidate()) return GoToBestCandidate(now);
+  if (current().type != SubgoalType::kExplore && TakeLabelledCandidate()) return EnterSubgoal(now);
   if (progress_.explore_goals >= config_.max_explore_goals) {
     if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration budget used");
     return Fail(absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
@@ -389,17 +390,29 @@ bool TaskExecutor::InEndgame(double now) const {
   return config_.time_budget_s > 0.0 && now - start_time_ >= config_.time_budget_s - config_.endgame_s;
 }
 
-bool TaskExecutor::TakeBestCandidate() {
-  if (endgame_taken_ || progress_.target.has_value()) return false;
+std::optional<ScoredObject> TaskExecutor::BestCandidate() const {
   std::set<int64_t> skip = excluded_;
   skip.insert(set_aside_.begin(), set_aside_.end());
   const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
-  if (!resolution.best.has_value()) return false;
-  const SceneObject* object = graph_.FindObject(resolution.best->object_id);
-  if (object == nullptr) return false;
+  if (!resolution.best.has_value() || graph_.FindObject(resolution.best->object_id) == nullptr) return std::nullopt;
+  return resolution.best;
+}
+
+bool TaskExecutor::TakeBestCandidate() {
+  if (endgame_taken_ || progress_.target.has_value()) return false;
+  const std::optional<ScoredObject> best = BestCandidate();
+  if (!best.has_value()) return false;
   endgame_taken_ = true;
   // The fast path found it (below its threshold): reported as a fast-path resolution.
-  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "fast", 0};
+  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused, "fast", 0};
+  return true;
+}
+
+bool TaskExecutor::TakeLabelledCandidate() {
+  if (config_.model_available || progress_.target.has_value()) return false;
+  const std::optional<ScoredObject> best = BestCandidate();
+  if (!best.has_value() || best->label < config_.approach_label_match) return false;
+  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused, "fast", 0};
   return true;
 }
 
@@ -813,7 +826,7 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
   const bool searching = (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) &&
                          current().type != SubgoalType::kExplore;
   if (!searching) return {};
-  if (TryResolve()) return EnterSubgoal(now);
+  if (TryResolve() || TakeLabelledCandidate()) return EnterSubgoal(now);
   MaybeRequestModel();
   return {};
 }

@@ -89,6 +89,12 @@ struct ExecutorConfig {
   // seen (the fast path's best label match, even below its threshold) instead of a new frontier.
   double time_budget_s = 0.0;
   double endgame_s = 40.0;
+  // Without a model to ask (seed 002's slow path judges candidates below the fast path's
+  // threshold), a candidate whose label matches at least this well (1 = the target's name or a
+  // synonym) is driven to and verified instead of passed by: a target seen once at the edge of
+  // the view has too few detections to pass the threshold. VERIFY sets it aside when it is not
+  // confirmed. Above 1 = off.
+  double approach_label_match = 1.0;
 };
 
 enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
@@ -214,8 +220,13 @@ class TaskExecutor {
   void WatchProgress(double now);
   // Spends an exploration goal; an unreachable one with the region around it.
   void SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable);
+  // The fast path's best candidate (even below its threshold), skipping excluded and set-aside
+  // objects.
+  std::optional<ScoredObject> BestCandidate() const;
   // Endgame: with little budget left, the best candidate seen becomes the target.
   bool TakeBestCandidate();
+  // No model: a candidate matching the target's label (approach_label_match) becomes the target.
+  bool TakeLabelledCandidate();
   bool InEndgame(double now) const;
   std::vector<RobotCommand> GoToBestCandidate(double now);
   std::vector<RobotCommand> FallbackStep(double now);

@@ -1,5 +1,7 @@
 #include "services/reasoning/server/gateway_config.h"
 
+#include <cmath>
+
 #include "services/common/status/field_error.h"
 
 namespace semnav::reasoning {
@@ -70,7 +72,8 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("blocked_spot_radius_m", &c.executor.blocked_spot_radius_m)
       .Read("unreachable_region_m", &c.executor.unreachable_region_m)
       .Read("time_budget_s", &c.executor.time_budget_s)
-      .Read("endgame_s", &c.executor.endgame_s);
+      .Read("endgame_s", &c.executor.endgame_s)
+      .Read("approach_label_match", &c.executor.approach_label_match);
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
   executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m", "must be >= 0");
@@ -96,6 +99,8 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
                  "unreachable_region_m", "must be in [0, 20]");
   executor.Check(c.executor.time_budget_s >= 0.0, "time_budget_s", "must be >= 0 (0 = none)");
   executor.Check(c.executor.endgame_s >= 0.0, "endgame_s", "must be >= 0");
+  executor.Check(std::isfinite(c.executor.approach_label_match) && c.executor.approach_label_match >= 0.0,
+                 "approach_label_match", "must be a finite value >= 0 (above 1 = off)");
 
   ConfigReader memory = section.Child("memory");
   memory.Read("node_spacing_m", &c.memory.node_spacing_m)
