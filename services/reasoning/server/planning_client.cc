@@ -106,7 +106,9 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
     const std::optional<pb::PlanFailureDetail> detail =
         status.ok() ? std::nullopt : GetDetail<pb::PlanFailureDetail>(status);
     reason = detail.has_value() ? detail->reason() : pb::PLAN_FAILURE_REASON_UNSPECIFIED;
-    if (reason != pb::PLAN_FAILURE_REASON_START_OCCUPIED || query.clearance_m <= 0.0) break;
+    const bool footprint_may_help =
+        reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED || reason == pb::PLAN_FAILURE_REASON_NO_PATH;
+    if (!footprint_may_help || query.clearance_m <= 0.0) break;
   }
   if (!status.ok()) {
     if (reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED) return absl::FailedPreconditionError(status.error_message());

@@ -7,6 +7,7 @@
 
 #include "absl/synchronization/mutex.h"
 #include "gtest/gtest.h"
+#include "services/common/status/grpc_status.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -15,9 +16,18 @@ namespace pb = ::semnav::planning::v1;
 
 class RecordingPlanning final : public pb::PlanningService::Service {
  public:
-  grpc::Status PlanPath(grpc::ServerContext*, const pb::PlanPathRequest*,
-                        pb::PlanPathResponse*) override {
+  grpc::Status PlanPath(grpc::ServerContext*, const pb::PlanPathRequest* request,
+                        pb::PlanPathResponse* response) override {
     absl::MutexLock lock(&mu);
+    radii.push_back(request->robot_radius_m());
+    if (request->robot_radius_m() > no_path_above_m) {
+      absl::Status no_path = absl::NotFoundError("goal is not reachable from start");
+      pb::PlanFailureDetail detail;
+      detail.set_reason(pb::PLAN_FAILURE_REASON_NO_PATH);
+      AttachDetail(no_path, detail);
+      return ToGrpcStatus(no_path);
+    }
+    if (failure.ok()) *response->add_path() = request->goal();
     return failure;
   }
   grpc::Status SelectExplorationGoal(grpc::ServerContext*, const pb::SelectExplorationGoalRequest* request,
@@ -34,7 +44,9 @@ class RecordingPlanning final : public pb::PlanningService::Service {
   }
   absl::Mutex mu;
   bool refuse_values = false;
-  grpc::Status failure;  // every answer's (PlanPath answers OK with an empty path otherwise)
+  grpc::Status failure;  // every answer's (PlanPath answers OK with the goal as its path otherwise)
+  double no_path_above_m = 1e9;  // PlanPath: NO_PATH for a robot_radius_m above this
+  std::vector<double> radii;     // PlanPath's robot_radius_m, in call order
   std::vector<pb::SelectExplorationGoalRequest> requests;
 };
 
@@ -161,7 +173,7 @@ TEST_F(GatewayPlanningClientTest, PlanningOrMappingGoneIsUnavailableNamingIt) {
   answer(grpc::Status(grpc::StatusCode::FAILED_PRECONDITION, "no map yet"));
   planned = client_->Plan(path);
   ASSERT_TRUE(planned.ok()) << planned.status();
-  EXPECT_TRUE(planned->empty());
+  EXPECT_TRUE(planned->empty());  // the robot plans locally
   EXPECT_TRUE(absl::IsNotFound(client_->ExplorationGoal(explore).status()));
 
   server_->Shutdown();  // gone: the channel is not READY
@@ -170,6 +182,31 @@ TEST_F(GatewayPlanningClientTest, PlanningOrMappingGoneIsUnavailableNamingIt) {
   EXPECT_TRUE(absl::IsUnavailable(planned.status())) << planned.status();
   EXPECT_EQ(UnavailableDependency(planned.status()), "planning");
   EXPECT_TRUE(absl::IsUnavailable(client_->ExplorationGoal(explore).status()));
+}
+
+// Regression (hand-drawn office_kitchenette, start 2): pressed against a wall after a collision,
+// the robot's footprint plus clearance cut its cell off from every goal (NO_PATH), and it spent
+// the episode looking around in the corner. With the bare footprint it has a way out.
+TEST_F(GatewayPlanningClientTest, NoPathWithTheClearanceIsRetriedWithTheBareFootprint) {
+  {
+    absl::MutexLock lock(&planning_.mu);
+    planning_.no_path_above_m = 0.3;
+  }
+  const PathQuery query{Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.25, 0.15, std::nullopt};
+  absl::StatusOr<std::vector<Eigen::Vector3d>> planned = client_->Plan(query);
+  ASSERT_TRUE(planned.ok()) << planned.status();
+  ASSERT_EQ(planned->size(), 1u);
+  EXPECT_DOUBLE_EQ(planned->back().x(), 3.0);
+  {
+    absl::MutexLock lock(&planning_.mu);
+    EXPECT_EQ(planning_.radii, (std::vector<double>{0.4, 0.25}));
+    planning_.radii.clear();
+    planning_.no_path_above_m = 0.0;
+  }
+  // No path even for the bare footprint: NOT_FOUND, after the same two attempts.
+  EXPECT_TRUE(absl::IsNotFound(client_->Plan(query).status()));
+  absl::MutexLock lock(&planning_.mu);
+  EXPECT_EQ(planning_.radii.size(), 2u);
 }
 
 }  // namespace
