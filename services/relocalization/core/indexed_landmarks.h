@@ -27,6 +27,10 @@ class IndexedLandmarks {
   double DescriptorSimilarity(size_t i, const std::vector<float>& unit_descriptor) const;
   const std::vector<float>& unit_descriptor(size_t i) const { return unit_descriptors_[i]; }
 
+  // Whether another landmark within `radius_m` of landmark i has the same label and a
+  // descriptor cosine >= `min_cosine` to it: a look-alike twin (a box beside a box on a shelf).
+  bool HasLookalikeWithin(size_t i, double radius_m, double min_cosine) const;
+
   // N(P): up to k nearest other landmarks of landmark i, closest first.
   std::vector<size_t> Neighbourhood(size_t i, size_t k) const;
   const KdTree& tree() const { return tree_; }
