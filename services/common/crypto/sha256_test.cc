@@ -1,8 +1,8 @@
 #include "services/common/crypto/sha256.h"
 
-#include <string>
-
 #include <gtest/gtest.h>
+
+#include <string>
 
 namespace semnav {
 namespace {

@@ -1,9 +1,9 @@
 #include "services/common/geometry/kd_tree.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <random>
-
-#include <gtest/gtest.h>
 
 namespace semnav::geometry {
 namespace {
@@ -20,9 +20,9 @@ TEST(KdTreeTest, HandPlacedPoints) {
 TEST(KdTreeTest, CountCloserThanExcludesTheBoundary) {
   // Distances from the origin: 0, 1, 2, 3, 8.66.
   const KdTree<float> tree({{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {5, 5, 5}});
-  EXPECT_EQ(tree.CountCloserThan({0, 0, 0}, 2.0f), 2u);   // 0 and 1; 2 lies on the boundary
+  EXPECT_EQ(tree.CountCloserThan({0, 0, 0}, 2.0f), 2u);  // 0 and 1; 2 lies on the boundary
   EXPECT_EQ(tree.CountCloserThan({0, 0, 0}, 2.01f), 3u);
-  EXPECT_EQ(tree.CountCloserThan({0, 0, 0}, 0.5f), 1u);   // the query point itself
+  EXPECT_EQ(tree.CountCloserThan({0, 0, 0}, 0.5f), 1u);  // the query point itself
   EXPECT_EQ(tree.CountCloserThan({0, 0, 0}, 100.0f), 5u);
   EXPECT_EQ(KdTree<float>().CountCloserThan({0, 0, 0}, 1.0f), 0u);
 }

@@ -32,7 +32,8 @@ std::vector<bool> RadiusFilter(const std::vector<Eigen::Vector3f>& same_label_po
   const geometry::KdTree<float> tree(same_label_points);
   std::vector<bool> keep(same_label_points.size());
   for (size_t i = 0; i < same_label_points.size(); ++i) {
-    keep[i] = tree.CountCloserThan(same_label_points[i], radius) > static_cast<size_t>(min_neighbours);
+    keep[i] =
+        tree.CountCloserThan(same_label_points[i], radius) > static_cast<size_t>(min_neighbours);
   }
   return keep;
 }

@@ -154,7 +154,8 @@ eval::ScenarioParams HeavyLookalikeSeed3() {
 }
 
 bool WithinSuccessBounds(const Eigen::Isometry3d& estimate, const Eigen::Isometry3d& truth) {
-  return TranslationDifferenceM(estimate, truth) <= 0.5 && RotationDifferenceDeg(estimate, truth) <= 5.0;
+  return TranslationDifferenceM(estimate, truth) <= 0.5 &&
+         RotationDifferenceDeg(estimate, truth) <= 5.0;
 }
 
 TEST(RelocRelocalizerTest, ShelfViewsOnceReliableButWrongAreRejectedOrCorrected) {
@@ -168,8 +169,9 @@ TEST(RelocRelocalizerTest, ShelfViewsOnceReliableButWrongAreRejectedOrCorrected)
     const IndexedLandmarks query(keyframe.observed);
     const auto before = Relocalize(query, map, without_alias_check);
     ASSERT_TRUE(before.ok()) << before.status();
-    EXPECT_TRUE(before->reliable);  // the bug: reliable ...
-    EXPECT_FALSE(WithinSuccessBounds(before->map_from_query, keyframe.map_from_query));  // ... wrong
+    // The bug: reliable, but wrong.
+    EXPECT_TRUE(before->reliable);
+    EXPECT_FALSE(WithinSuccessBounds(before->map_from_query, keyframe.map_from_query));
   }
   // 197: the distinctive-inlier pose re-matched gets 24 inliers at RMS 0.17 m; not reliable.
   // 208: 3 distinctive inliers at RMS 0.146 m > 0.12 m; not reliable.
