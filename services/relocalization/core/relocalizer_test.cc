@@ -1,5 +1,7 @@
 #include "services/relocalization/core/relocalizer.h"
 
+#include <cmath>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -137,6 +139,41 @@ TEST(RelocRelocalizerTest, CollinearShelfRowIsNotReliable) {
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_EQ(r->inliers.size(), 14u);  // every pair agrees: count alone cannot tell
   EXPECT_FALSE(r->reliable);
+}
+
+TEST(RelocRelocalizerTest, ShelfBoxesAreNotDistinctiveInliers) {
+  // A shelf of 8 x 3 identical boxes (0.6 m pitch, cosine 1 to each other) and 8 distinct
+  // objects (labels 1-8) on a 3 m circle around it, seen without noise.
+  std::vector<Landmark> map;
+  for (size_t i = 0; i < 8; ++i) {
+    const double angle = 0.785 * static_cast<double>(i);
+    Landmark l;
+    l.position = {2.1 + 3.0 * std::cos(angle), 3.0 * std::sin(angle), 0.5 + 0.2 * (i % 3)};
+    l.scale = 0.3 + 0.1 * static_cast<double>(i);
+    l.descriptor = TwoLabelDescriptor(i + 1, 1.0f, 0.8f);
+    map.push_back(std::move(l));
+  }
+  for (size_t column = 0; column < 8; ++column) {
+    for (size_t level = 0; level < 3; ++level) {
+      Landmark box;
+      box.position = {0.6 * static_cast<double>(column), 0.0,
+                      0.3 + 0.6 * static_cast<double>(level)};
+      box.scale = 0.4;
+      box.descriptor = TwoLabelDescriptor(0, 1.0f, 0.8f);
+      map.push_back(std::move(box));
+    }
+  }
+  const Eigen::Isometry3d truth = YawAndShift(-1.2, {5.0, 1.0, 0.0});
+  std::vector<Landmark> query = map;
+  for (Landmark& l : query) l.position = truth.inverse() * l.position;
+  const auto r = Relocalize(IndexedLandmarks(query), IndexedLandmarks(map), RelocalizationParams{});
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_TRUE(r->reliable);
+  EXPECT_EQ(r->inliers.size(), 32u);
+  EXPECT_EQ(r->distinctive_inliers, 8u);  // every box has a twin 0.6 m away
+  EXPECT_LT(r->distinctive_rms_m, 1e-6);
+  EXPECT_LT(TranslationDifferenceM(r->map_from_query, truth), 1e-6);
+  EXPECT_LT(RotationDifferenceDeg(r->map_from_query, truth), 1e-6);
 }
 
 // The bench's heavy-lookalike scenario on seed 3 (scenario seed 1003, 1,000 keyframes):
