@@ -10,6 +10,10 @@ KdTree<Scalar>::KdTree(std::vector<Point> points)
     : points_(std::move(points)), order_(points_.size()), axis_(points_.size(), 0) {
   std::iota(order_.begin(), order_.end(), size_t{0});
   Build(0, order_.size());
+  // Store the points in tree layout: queries then walk contiguous memory.
+  std::vector<Point> laid_out(points_.size());
+  for (size_t slot = 0; slot < order_.size(); ++slot) laid_out[slot] = points_[order_[slot]];
+  points_ = std::move(laid_out);
 }
 
 template <typename Scalar>
@@ -37,8 +41,7 @@ void KdTree<Scalar>::SearchNearest(size_t lo, size_t hi, const Point& q, size_t 
                                    std::vector<Candidate>& heap) const {
   if (lo >= hi) return;
   const size_t mid = (lo + hi) / 2;
-  const size_t index = order_[mid];
-  const Candidate c{(points_[index] - q).squaredNorm(), index};
+  const Candidate c{(points_[mid] - q).squaredNorm(), order_[mid]};
   if (heap.size() < k) {
     heap.push_back(c);
     std::push_heap(heap.begin(), heap.end());
@@ -47,7 +50,7 @@ void KdTree<Scalar>::SearchNearest(size_t lo, size_t hi, const Point& q, size_t 
     heap.back() = c;
     std::push_heap(heap.begin(), heap.end());
   }
-  const Scalar delta = q[axis_[mid]] - points_[index][axis_[mid]];
+  const Scalar delta = q[axis_[mid]] - points_[mid][axis_[mid]];
   const bool left_first = delta < 0;
   SearchNearest(left_first ? lo : mid + 1, left_first ? mid : hi, q, k, heap);
   if (heap.size() < k || delta * delta <= heap.front().distance_sq) {
@@ -61,11 +64,10 @@ void KdTree<Scalar>::ForEachWithin(size_t lo, size_t hi, const Point& q, Scalar 
                                    Visit& visit) const {
   if (lo >= hi) return;
   const size_t mid = (lo + hi) / 2;
-  const size_t index = order_[mid];
-  const Scalar d2 = (points_[index] - q).squaredNorm();
-  if (d2 <= radius_sq) visit(Candidate{d2, index});
+  const Scalar d2 = (points_[mid] - q).squaredNorm();
+  if (d2 <= radius_sq) visit(Candidate{d2, order_[mid]});
   // Points left of mid have coordinate <= the node's on its axis, right of mid >=.
-  const Scalar delta = q[axis_[mid]] - points_[index][axis_[mid]];
+  const Scalar delta = q[axis_[mid]] - points_[mid][axis_[mid]];
   if (delta <= 0 || delta * delta <= radius_sq) ForEachWithin(lo, mid, q, radius_sq, visit);
   if (delta >= 0 || delta * delta <= radius_sq) ForEachWithin(mid + 1, hi, q, radius_sq, visit);
 }

@@ -41,8 +41,9 @@ class KdTree {
   template <typename Visit>
   void ForEachWithin(size_t lo, size_t hi, const Point& q, Scalar radius_sq, Visit& visit) const;
 
-  std::vector<Point> points_;
-  std::vector<size_t> order_;  // tree layout: node of range [lo, hi) sits at (lo + hi) / 2
+  // Tree layout: the node of range [lo, hi) sits at slot (lo + hi) / 2.
+  std::vector<Point> points_;  // in input order while building, then in slot order
+  std::vector<size_t> order_;  // input index of the point at each slot
   std::vector<int> axis_;      // split axis of the node stored at each slot
 };
 
