@@ -2,7 +2,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "services/mapping/core/kd_tree.h"
+#include "services/common/geometry/kd_tree.h"
 
 namespace semnav::mapping {
 
@@ -29,10 +29,11 @@ cv::Mat ErodeSemanticMask(const cv::Mat& mask, int kernel, double keep_above) {
 
 std::vector<bool> RadiusFilter(const std::vector<Eigen::Vector3f>& same_label_points, float radius,
                                int min_neighbours) {
-  const KdTree tree(same_label_points);
+  const geometry::KdTree<float> tree(same_label_points);
   std::vector<bool> keep(same_label_points.size());
   for (size_t i = 0; i < same_label_points.size(); ++i) {
-    keep[i] = tree.CountWithin(same_label_points[i], radius) > static_cast<size_t>(min_neighbours);
+    keep[i] =
+        tree.CountCloserThan(same_label_points[i], radius) > static_cast<size_t>(min_neighbours);
   }
   return keep;
 }

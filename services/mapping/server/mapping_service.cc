@@ -1,11 +1,9 @@
 #include "services/mapping/server/mapping_service.h"
 
-#include <openssl/evp.h>
-
 #include <algorithm>
-#include <cstdio>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/crypto/sha256.h"
 #include "services/common/status/grpc_status.h"
 #include "services/common/status/value_checks.h"
 #include "services/mapping/server/frame_stream_reactor.h"
@@ -54,19 +52,6 @@ void InfoToProto(const StoredMap& info, v1::MapInfo* proto) {
   proto->set_map_id(info.map_id);
   proto->set_size_bytes(info.size_bytes);
   proto->set_saved_ns(info.saved_ns);
-}
-
-std::string Sha256Hex(const std::string& data) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  EVP_Digest(data.data(), data.size(), digest, &length, EVP_sha256(), nullptr);
-  std::string hex;
-  char byte[3];
-  for (unsigned int i = 0; i < length; ++i) {
-    std::snprintf(byte, sizeof(byte), "%02x", digest[i]);
-    hex += byte;
-  }
-  return hex;
 }
 
 // Streams a prepared payload as DataChunks.

@@ -1,11 +1,8 @@
 #include "services/modelproxy/core/request_key.h"
 
-#include <openssl/sha.h>
-
 #include <cmath>
 
 #include "absl/strings/ascii.h"
-#include "absl/strings/str_format.h"
 #include "nlohmann/json.hpp"
 
 namespace semnav::modelproxy {
@@ -32,15 +29,6 @@ std::string CanonicalSchema(const std::string& schema) {
 }
 
 }  // namespace
-
-std::string Sha256Hex(absl::string_view bytes) {
-  unsigned char digest[SHA256_DIGEST_LENGTH];
-  SHA256(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), digest);
-  std::string hex;
-  hex.reserve(2 * SHA256_DIGEST_LENGTH);
-  for (unsigned char b : digest) absl::StrAppendFormat(&hex, "%02x", b);
-  return hex;
-}
 
 std::string NormalizedRequest(const CompletionRequest& request) {
   nlohmann::json messages = nlohmann::json::array();

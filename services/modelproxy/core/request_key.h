@@ -4,12 +4,10 @@
 #include <string>
 
 #include "absl/strings/string_view.h"
+#include "services/common/crypto/sha256.h"
 #include "services/modelproxy/core/request.h"
 
 namespace semnav::modelproxy {
-
-// Lower-case hex SHA-256 of `bytes`.
-std::string Sha256Hex(absl::string_view bytes);
 
 // Normalized request: alias, roles, texts trimmed with whitespace runs collapsed to one space,
 // images as mime + SHA-256, format, schema re-serialized with sorted keys, max tokens,

@@ -2,7 +2,7 @@
 // on seeded scenarios, side by side with the nearest-descriptor + RANSAC baseline, then
 // Google Benchmark timings of the hot steps.
 //   semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S] [--seed-method]
-//       [--retrieval-labels K] [--max-hypotheses H] [--benchmark_*]
+//       [--retrieval-labels K] [--max-hypotheses H] [--twin-radius R] [--benchmark_*]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -32,7 +32,8 @@ struct Options {
 
 constexpr char kUsage[] =
     "usage: semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S]"
-    " [--seed-method] [--retrieval-labels K] [--max-hypotheses H] [--benchmark_* flags]\n"
+    " [--seed-method] [--retrieval-labels K] [--max-hypotheses H] [--twin-radius R]"
+    " [--benchmark_* flags]\n"
     "Seed 001 relocalization vs the RANSAC + Umeyama baseline on seeded scenarios.\n";
 
 // Our flags and Google Benchmark's.
@@ -43,7 +44,8 @@ Options ParseOptions(int* argc, char** argv) {
                    {"seed", "S", ""},
                    {"seed-method", "", "the seed's method alone (SeedMethodParams)"},
                    {"retrieval-labels", "K", "hash buckets per query landmark"},
-                   {"max-hypotheses", "H", "stage-1 hypotheses tried"}},
+                   {"max-hypotheses", "H", "stage-1 hypotheses tried"},
+                   {"twin-radius", "R", "look-alike twin radius of the alias check (0 = off)"}},
       "semnav-bench-relocalization", kUsage);
   Options o;
   o.json_path = flags.Get("json").value_or(o.json_path);
@@ -58,6 +60,7 @@ Options ParseOptions(int* argc, char** argv) {
   if (auto v = flags.Get("max-hypotheses")) {
     o.method.max_hypotheses = static_cast<int>(std::strtol(v->c_str(), nullptr, 10));
   }
+  if (auto v = flags.Get("twin-radius")) o.method.twin.radius_m = std::strtod(v->c_str(), nullptr);
   return o;
 }
 
@@ -180,6 +183,9 @@ int Main(int argc, char** argv) {
         {"lookalike_recall", heavy.method.recall},
         {"lookalike_baseline_recall", heavy.baseline.recall},
         {"reliable_wrong_rate", reliable_wrong_rate},
+        {"reliable_wrong_rate_standard", ReliableWrongRate(standard.method)},
+        {"reliable_wrong_rate_lookalike", ReliableWrongRate(heavy.method)},
+        {"reliable_wrong_rate_smoke", ReliableWrongRate(smoke.method)},
         {"recall_standard", standard.method.recall},
         {"recall_lookalike", heavy.method.recall},
         {"recall_smoke", smoke.method.recall},

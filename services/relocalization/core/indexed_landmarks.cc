@@ -51,6 +51,16 @@ double IndexedLandmarks::DescriptorSimilarity(size_t i,
       .dot(Eigen::Map<const Eigen::VectorXf>(unit_descriptor.data(), n));
 }
 
+bool IndexedLandmarks::HasLookalikeWithin(size_t i, double radius_m, double min_cosine) const {
+  for (size_t j : tree_.WithinRadius(landmarks_[i].position, radius_m)) {
+    if (j != i && labels_[j] == labels_[i] &&
+        DescriptorSimilarity(j, unit_descriptors_[i]) >= min_cosine) {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<size_t> IndexedLandmarks::Neighbourhood(size_t i, size_t k) const {
   std::vector<size_t> nearest = tree_.Nearest(landmarks_[i].position, k + 1);
   std::erase(nearest, i);

@@ -3,7 +3,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "services/relocalization/core/kd_tree.h"
+#include "services/common/geometry/kd_tree.h"
 #include "services/relocalization/core/landmark.h"
 
 namespace semnav::relocalization {
@@ -27,16 +27,20 @@ class IndexedLandmarks {
   double DescriptorSimilarity(size_t i, const std::vector<float>& unit_descriptor) const;
   const std::vector<float>& unit_descriptor(size_t i) const { return unit_descriptors_[i]; }
 
+  // Whether another landmark within `radius_m` of landmark i has the same label and a
+  // descriptor cosine >= `min_cosine` to it: a look-alike twin (a box beside a box on a shelf).
+  bool HasLookalikeWithin(size_t i, double radius_m, double min_cosine) const;
+
   // N(P): up to k nearest other landmarks of landmark i, closest first.
   std::vector<size_t> Neighbourhood(size_t i, size_t k) const;
-  const KdTree& tree() const { return tree_; }
+  const geometry::KdTree<double>& tree() const { return tree_; }
 
  private:
   std::vector<Landmark> landmarks_;
   std::vector<int> labels_;
   std::vector<std::vector<float>> unit_descriptors_;
   std::unordered_map<int, std::vector<size_t>> by_label_;
-  KdTree tree_;
+  geometry::KdTree<double> tree_;
 };
 
 // The descriptor scaled to unit length (all zeros stays all zeros).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 
 #include <Eigen/Eigenvalues>
@@ -61,6 +62,7 @@ RelocalizationParams SeedMethodParams() {
   params.reliable_max_rms_m = 0.0;
   params.reliable_min_spread_m = 0.0;
   params.max_hypotheses = 1;
+  params.twin.radius_m = 0.0;
   params.reliable_rotation_deg = 10.0;
   return params;
 }
@@ -82,14 +84,16 @@ double SecondPrincipalSpread(const std::vector<Eigen::Vector3d>& positions) {
 
 namespace {
 
-// Stage 2 from one initial pose, then the reliability checks.
-absl::StatusOr<RelocalizationResult> RefineHypothesis(const IndexedLandmarks& query,
-                                                      const IndexedLandmarks& map,
-                                                      const Eigen::Isometry3d& initial,
-                                                      const RelocalizationParams& params) {
+// Stage 2 (rematch_rounds re-match + solve rounds) from `start`; `initial` is the stage-1
+// pose the reliability check compares against.
+absl::StatusOr<RelocalizationResult> RematchAndSolve(const IndexedLandmarks& query,
+                                                     const IndexedLandmarks& map,
+                                                     const Eigen::Isometry3d& initial,
+                                                     const Eigen::Isometry3d& start,
+                                                     const RelocalizationParams& params) {
   RelocalizationResult result;
   result.initial_map_from_query = initial;
-  result.map_from_query = initial;
+  result.map_from_query = start;
   for (int round = 0; round < std::max(1, params.rematch_rounds); ++round) {
     std::vector<Match> matches = MatchUnderPose(query, map, result.map_from_query, params.match);
     absl::StatusOr<PoseEstimate> solved = SolveFromMatches(query, map, matches, params.pose);
@@ -106,19 +110,107 @@ absl::StatusOr<RelocalizationResult> RefineHypothesis(const IndexedLandmarks& qu
     result.inliers = std::move(solved->inliers);
     result.rms_residual_m = solved->rms_residual_m;
   }
+  return result;
+}
+
+// Indices into result.matches of the inliers whose map landmark has no look-alike twin.
+std::vector<size_t> DistinctiveInliers(const IndexedLandmarks& map,
+                                       const RelocalizationResult& result,
+                                       const TwinParams& twin) {
+  std::vector<size_t> distinctive;
+  for (size_t i : result.inliers) {
+    if (!map.HasLookalikeWithin(result.matches[i].map, twin.radius_m, twin.min_cosine)) {
+      distinctive.push_back(i);
+    }
+  }
+  return distinctive;
+}
+
+// The pose solved (from the current one) from the distinctive inliers alone; nullopt when
+// fewer than 3 of them or when every inlier is distinctive (nothing can be aliased).
+std::optional<Eigen::Isometry3d> PoseFromDistinctiveInliers(
+    const IndexedLandmarks& query, const IndexedLandmarks& map,
+    const RelocalizationResult& result, const std::vector<size_t>& distinctive,
+    const PoseParams& params) {
+  if (distinctive.size() < 3 || distinctive.size() == result.inliers.size()) return std::nullopt;
+  std::vector<Eigen::Vector3d> p, q;
+  for (size_t i : distinctive) {
+    p.push_back(query.at(result.matches[i].query).position);
+    q.push_back(map.at(result.matches[i].map).position);
+  }
+  std::vector<size_t> all(p.size());
+  std::iota(all.begin(), all.end(), size_t{0});
+  int iterations = 0;
+  return RefinePoseLevenbergMarquardt(p, q, all, result.map_from_query, params, &iterations);
+}
+
+void CheckReliability(const IndexedLandmarks& query, const IndexedLandmarks& map,
+                      const RelocalizationParams& params, RelocalizationResult& result) {
   std::vector<Eigen::Vector3d> inlier_positions;
   for (size_t i : result.inliers) {
     inlier_positions.push_back(query.at(result.matches[i].query).position);
   }
   result.inlier_spread_m = SecondPrincipalSpread(inlier_positions);
+  result.distinctive_inliers = result.inliers.size();
+  result.distinctive_rms_m = result.rms_residual_m;
+  if (params.twin.radius_m > 0.0) {
+    const std::vector<size_t> distinctive = DistinctiveInliers(map, result, params.twin);
+    double squared = 0.0;
+    for (size_t i : distinctive) {
+      const Match& m = result.matches[i];
+      squared += (map.at(m.map).position - result.map_from_query * query.at(m.query).position)
+                     .squaredNorm();
+    }
+    result.distinctive_inliers = distinctive.size();
+    result.distinctive_rms_m =
+        distinctive.empty() ? 0.0 : std::sqrt(squared / static_cast<double>(distinctive.size()));
+  }
+  // Twins agree with each other at a pitch offset and dilute the RMS of a bent pose; the
+  // bound must also hold for the distinctive inliers once there are enough to judge (3).
+  const bool distinctive_fit =
+      params.reliable_max_rms_m <= 0.0 || result.distinctive_inliers < 3 ||
+      result.distinctive_rms_m <= params.reliable_max_rms_m;
   result.reliable =
       result.inliers.size() >= params.reliable_min_inliers &&
       (params.reliable_max_rms_m <= 0.0 || result.rms_residual_m <= params.reliable_max_rms_m) &&
-      result.inlier_spread_m >= params.reliable_min_spread_m &&
+      distinctive_fit && result.inlier_spread_m >= params.reliable_min_spread_m &&
       TranslationDifferenceM(result.map_from_query, result.initial_map_from_query) <=
           params.reliable_translation_m &&
       RotationDifferenceDeg(result.map_from_query, result.initial_map_from_query) <=
           params.reliable_rotation_deg;
+}
+
+// More inliers wins; equal counts: the lower RMS residual.
+bool BetterSupported(const RelocalizationResult& a, const RelocalizationResult& b) {
+  if (a.inliers.size() != b.inliers.size()) return a.inliers.size() > b.inliers.size();
+  return a.rms_residual_m < b.rms_residual_m;
+}
+
+// Stage 2 from one initial pose, the alias check, then the reliability checks.
+absl::StatusOr<RelocalizationResult> RefineHypothesis(const IndexedLandmarks& query,
+                                                      const IndexedLandmarks& map,
+                                                      const Eigen::Isometry3d& initial,
+                                                      const RelocalizationParams& params) {
+  absl::StatusOr<RelocalizationResult> result =
+      RematchAndSolve(query, map, initial, initial, params);
+  if (!result.ok()) return result;
+  // Repeated structure (boxes on a shelf) can pull the pose one pitch off, bending it
+  // through the few distinctive pairs. Re-solve from those alone and keep the better
+  // supported of the two stage-2 answers.
+  if (params.twin.radius_m > 0.0) {
+    if (const std::optional<Eigen::Isometry3d> alternative = PoseFromDistinctiveInliers(
+            query, map, *result, DistinctiveInliers(map, *result, params.twin), params.pose);
+        alternative &&
+        (TranslationDifferenceM(*alternative, result->map_from_query) >
+             params.twin.pose_tolerance_m ||
+         RotationDifferenceDeg(*alternative, result->map_from_query) >
+             params.twin.pose_tolerance_deg)) {
+      absl::StatusOr<RelocalizationResult> other =
+          RematchAndSolve(query, map, initial, *alternative, params);
+      if (other.ok() && BetterSupported(*other, *result)) result = std::move(other);
+    }
+  }
+  CheckReliability(query, map, params, *result);
   return result;
 }
 

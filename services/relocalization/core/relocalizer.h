@@ -11,6 +11,19 @@
 
 namespace semnav::relocalization {
 
+// Alias check on repeated structure (an addition to the seed, docs/algorithms/
+// relocalization.md 5.4): an inlier whose map landmark has a look-alike twin nearby (same
+// label, near-identical descriptor) can be matched one shelf pitch off. When a stage-2
+// answer has such inliers and >= 3 others, the pose is re-solved from the others alone,
+// stage 2 is run again from there, and the better supported answer is kept.
+struct TwinParams {
+  double radius_m = 1.0;      // twin search radius (> the 0.6 m shelf pitch); 0 = check off
+  double min_cosine = 0.95;   // same-label objects of one class: ~0.83; boxes of one kind: ~0.99
+  // The re-solved pose closer than this to the stage-2 pose needs no second stage 2.
+  double pose_tolerance_m = 0.1;
+  double pose_tolerance_deg = 1.0;
+};
+
 // Parameters of one relocalization (seed 001, 3.1-3.2).
 struct RelocalizationParams {
   MatchParams match;
@@ -34,6 +47,7 @@ struct RelocalizationParams {
   // Stage-1 hypotheses tried: when a hypothesis ends unreliable, retrieval continues with m
   // fresh matches for a new initial pose. The seed stops after the first (1).
   int max_hypotheses = 3;
+  TwinParams twin;
 };
 
 // The method as it was before the consistency checks (the seed's method with this project's
@@ -48,8 +62,12 @@ struct RelocalizationResult {
   std::vector<size_t> inliers;  // indices into `matches` kept by outlier rejection
   double rms_residual_m = 0.0;
   double inlier_spread_m = 0.0;  // second principal std. dev. of the inliers (query frame)
-  // Final pose within the thresholds of the initial one, enough inliers, RMS residual and
-  // spread of the inliers within their bounds.
+  // Inliers whose map landmark has no look-alike twin (all inliers when the check is off),
+  // and their RMS residual.
+  size_t distinctive_inliers = 0;
+  double distinctive_rms_m = 0.0;
+  // Final pose within the thresholds of the initial one, enough inliers, RMS residual (of
+  // all inliers, and of the distinctive ones when >= 3) and spread within their bounds.
   bool reliable = false;
 };
 
@@ -61,7 +79,9 @@ double SecondPrincipalSpread(const std::vector<Eigen::Vector3d>& positions);
 // in the map: stage-1 retrieval with early stop after m matches -> initial pose ->
 // stage-2 re-match of all query landmarks under it -> pose (repeated rematch_rounds
 // times, each round under the latest pose; pairs beyond final_residual_gate_m dropped) ->
-// reliability check (against the initial pose, inlier count, residual and spread).
+// alias check (TwinParams: stage 2 again from the distinctive inliers' pose, the better
+// supported answer kept) -> reliability check (against the initial pose, inlier count,
+// residual of all and of the distinctive inliers, spread).
 // If the first m matches are inconsistent, retrieval continues with m more; if a
 // hypothesis ends unreliable, with m fresh matches for another one (max_hypotheses): the
 // first reliable answer is returned, else the unreliable one with the most inliers.

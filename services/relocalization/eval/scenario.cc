@@ -6,7 +6,7 @@
 #include <random>
 
 #include "services/relocalization/core/indexed_landmarks.h"
-#include "services/relocalization/core/kd_tree.h"
+#include "services/common/geometry/kd_tree.h"
 
 namespace semnav::relocalization::eval {
 namespace {
@@ -145,7 +145,7 @@ Scenario GenerateScenario(const ScenarioParams& p) {
   }
   std::vector<Eigen::Vector3d> positions;
   for (const Landmark& l : s.map) positions.push_back(l.position);
-  const KdTree tree(positions);
+  const geometry::KdTree<double> tree(positions);
   const size_t in_view = static_cast<size_t>(
       std::ceil(static_cast<double>(p.observed_true) / (1.0 - p.missing_fraction)));
   std::vector<size_t> shelf_boxes, others;

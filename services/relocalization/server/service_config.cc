@@ -80,6 +80,17 @@ void ReadReliability(ConfigReader r, RelocalizationParams& p) {
   r.Check(p.reliable_min_spread_m >= 0, "min_spread_m", "must be >= 0 (0 = off)");
 }
 
+void ReadLookalikeTwins(ConfigReader r, TwinParams& t) {
+  r.Read("radius_m", &t.radius_m)
+      .Read("min_cosine", &t.min_cosine)
+      .Read("pose_tolerance_m", &t.pose_tolerance_m)
+      .Read("pose_tolerance_deg", &t.pose_tolerance_deg);
+  r.Check(t.radius_m >= 0, "radius_m", "must be >= 0 (0 = off)");
+  r.Check(t.min_cosine > 0 && t.min_cosine <= 1, "min_cosine", "must be in (0, 1]");
+  r.Check(t.pose_tolerance_m >= 0, "pose_tolerance_m", "must be >= 0");
+  r.Check(t.pose_tolerance_deg >= 0, "pose_tolerance_deg", "must be >= 0");
+}
+
 }  // namespace
 
 absl::StatusOr<ServiceConfig> ServiceConfig::FromYaml(ConfigReader& section) {
@@ -101,6 +112,7 @@ absl::StatusOr<ServiceConfig> ServiceConfig::FromYaml(ConfigReader& section) {
   ReadMatching(section.Child("matching"), c.relocalization.match);
   ReadPose(section.Child("pose"), c.relocalization.pose);
   ReadReliability(section.Child("reliability"), c.relocalization);
+  ReadLookalikeTwins(section.Child("lookalike_twins"), c.relocalization.twin);
   if (absl::Status s = section.Finish(); !s.ok()) return s;
   return c;
 }

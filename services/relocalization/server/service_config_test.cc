@@ -20,6 +20,8 @@ TEST(RelocServiceConfigTest, EmptySectionKeepsTheSeedDefaults) {
   EXPECT_EQ(c->relocalization.match.retrieval_labels, 3u);
   EXPECT_EQ(c->relocalization.max_hypotheses, 3);
   EXPECT_DOUBLE_EQ(c->relocalization.reliable_min_spread_m, 0.3);
+  EXPECT_DOUBLE_EQ(c->relocalization.twin.radius_m, 1.0);
+  EXPECT_DOUBLE_EQ(c->relocalization.twin.min_cosine, 0.95);
   EXPECT_TRUE(c->detector.model_path.empty());
 }
 
@@ -30,7 +32,8 @@ TEST(RelocServiceConfigTest, ReadsNestedSections) {
       "detector: {model_path: m.onnx, mean_rgb: [1, 2, 3]}\n"
       "reliability: {rotation_deg: 4, max_rms_m: 0.2, min_spread_m: 0}\n"
       "max_hypotheses: 1\n"
-      "final_residual_gate_m: 0.5\n");
+      "final_residual_gate_m: 0.5\n"
+      "lookalike_twins: {radius_m: 0, min_cosine: 0.9, pose_tolerance_deg: 2}\n");
   ASSERT_TRUE(r.ok());
   const auto c = ServiceConfig::FromYaml(*r);
   ASSERT_TRUE(c.ok()) << c.status();
@@ -45,15 +48,21 @@ TEST(RelocServiceConfigTest, ReadsNestedSections) {
   EXPECT_EQ(c->relocalization.max_hypotheses, 1);
   EXPECT_DOUBLE_EQ(c->relocalization.final_residual_gate_m, 0.5);
   EXPECT_EQ(c->relocalization.match.retrieval_labels, 1u);
+  EXPECT_DOUBLE_EQ(c->relocalization.twin.radius_m, 0.0);
+  EXPECT_DOUBLE_EQ(c->relocalization.twin.min_cosine, 0.9);
+  EXPECT_DOUBLE_EQ(c->relocalization.twin.pose_tolerance_deg, 2.0);
+  EXPECT_DOUBLE_EQ(c->relocalization.twin.pose_tolerance_m, 0.1);
 }
 
 TEST(RelocServiceConfigTest, BadValuesAndUnknownKeysNameTheKey) {
-  auto r = ConfigReader::FromString("pose: {min_inliers: 2}\nmatching: {bogus: 1}\n");
+  auto r = ConfigReader::FromString(
+      "pose: {min_inliers: 2}\nmatching: {bogus: 1}\nlookalike_twins: {min_cosine: 1.5}\n");
   ASSERT_TRUE(r.ok());
   const auto c = ServiceConfig::FromYaml(*r);
   EXPECT_EQ(c.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(c.status().message(), HasSubstr("pose.min_inliers"));
   EXPECT_THAT(c.status().message(), HasSubstr("matching.bogus"));
+  EXPECT_THAT(c.status().message(), HasSubstr("lookalike_twins.min_cosine"));
 }
 
 }  // namespace
