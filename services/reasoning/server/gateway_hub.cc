@@ -53,7 +53,10 @@ void GatewayHub::Tick() {
     for (auto& [robot_id, robot] : robots_) {
       if (robot.simulated_clock) continue;  // its states are its clock
       auto task = tasks_.find(robot.active_task);
-      if (task != tasks_.end() && task->second.started) Apply(task->second, task->second.executor->OnPose(Now(), robot.pose));
+      // A task inside a planning call is skipped: the next tick (or its robot's next state) checks it.
+      if (task != tasks_.end() && task->second.started && !task->second.in_remote_call) {
+        Apply(task->second, task->second.executor->OnPose(Now(), robot.pose));
+      }
     }
     const absl::Time now = absl::Now();
     for (auto& [sink, subscription] : slow_watchers_) {
@@ -83,6 +86,40 @@ absl::StatusOr<GatewayHub::Task*> GatewayHub::FindTask(const std::string& task_i
                       absl::StrCat("no task '", Preview(task_id), "'"), "NOT_FOUND");
   }
   return &it->second;
+}
+
+void GatewayHub::RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) {
+  Task& task = tasks_.at(task_id);
+  task.in_remote_call = true;
+  mu_.Unlock();
+  call();
+  mu_.Lock();
+  task.in_remote_call = false;
+}
+
+void GatewayHub::AwaitExecutor(const Task& task) {
+  if (!task.in_remote_call) return;
+  mu_.Await(absl::Condition(+[](const Task* waited) { return !waited->in_remote_call; }, &task));
+}
+
+GatewayHub::Task* GatewayHub::SettledActiveTask(Robot& robot) {
+  while (true) {
+    auto task = tasks_.find(robot.active_task);
+    if (task == tasks_.end()) return nullptr;
+    if (!task->second.in_remote_call) return &task->second;
+    AwaitExecutor(task->second);  // the robot's active task may change meanwhile: look again
+  }
+}
+
+GatewayHub::RequestInFlight GatewayHub::BeginRequest(const std::string& key) {
+  auto free = [this, &key]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return !requests_in_flight_.contains(key); };
+  mu_.Await(absl::Condition(&free));
+  return RequestInFlight(&requests_in_flight_, key);
+}
+
+api::TaskSnapshot GatewayHub::ReadableSnapshot(const Task& task) const {
+  if (task.in_remote_call && !task.published.task_id().empty()) return task.published;
+  return Snapshot(task);
 }
 
 absl::Status GatewayHub::CheckControl(const std::string& robot_id, const std::string& lease_id) {
@@ -147,7 +184,9 @@ api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
 void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   Robot& robot = RobotRecord(task.robot_id);
   for (const RobotCommand& command : commands) {
-    if (robot.session == nullptr) break;
+    // An emergency stop may have come while the task was inside a planning call: nothing the
+    // call led to reaches the robot.
+    if (robot.session == nullptr || robot.emergency_stop) break;
     api::ConnectResponse response;
     robot.last_session_command = robot.next_command_id++;
     robot.last_executor_command = command.id;
@@ -195,11 +234,12 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
 }
 
 std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id, const std::string& strategy) {
-  return std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
-                                       [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
-                                         // Called by the executor, under mu_.
-                                         return ContextFor(task_id);
-                                       });
+  // Both are called by the task's executor, under mu_.
+  return std::make_unique<TaskPlanner>(
+      planner_, backends_.explorer, strategy,
+      [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS { return ContextFor(task_id); },
+      [this, task_id](absl::FunctionRef<void()> call)
+          ABSL_NO_THREAD_SAFETY_ANALYSIS { RunRemoteCall(task_id, call); });
 }
 
 void GatewayHub::StartIfPossible(Task& task) {
@@ -255,6 +295,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat("Submit:", request.request_id());
+  const RequestInFlight in_flight = BeginRequest(key);
   if (auto cached = Cached<api::SubmitInstructionResponse>(requests_, key)) return *cached;
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   if (absl::Status s = Required(request.instruction(), "instruction"); !s.ok()) return s;
@@ -270,15 +311,15 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   }
   if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
   Robot& robot = RobotRecord(request.robot_id());
+  Task* const settled = SettledActiveTask(robot);  // before the checks: waiting releases mu_
   if (robot.emergency_stop) {
     return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", "emergency stop active", "EMERGENCY_STOP");
   }
   if (absl::Status s = CheckControl(request.robot_id(), request.lease_id()); !s.ok()) return s;
 
   api::SubmitInstructionResponse response;
-  auto active = tasks_.find(robot.active_task);
-  if (request.allow_correction() && active != tasks_.end() && !active->second.executor->finished()) {
-    Task& task = active->second;
+  if (request.allow_correction() && settled != nullptr && !settled->executor->finished()) {
+    Task& task = *settled;
     const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
     std::optional<Correction> correction =
         target != nullptr ? ReadCorrection(decomposer_->parser().Parse(request.instruction()), *target) : std::nullopt;
@@ -296,8 +337,8 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   if (decomposition.subgoals.empty()) {
     return FieldError(absl::StatusCode::kInvalidArgument, "instruction", "no actionable step understood");
   }
-  if (active != tasks_.end() && !active->second.executor->finished()) {
-    Task& previous = active->second;
+  if (settled != nullptr && !settled->executor->finished()) {
+    Task& previous = *settled;
     Apply(previous, previous.executor->Cancel("replaced by a new instruction"));
   }
   const std::string task_id = absl::StrCat("task-", next_task_++);
@@ -332,7 +373,7 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::GetTask(const std::string& task_id
   if (absl::Status s = CheckLength(task_id, "task_id", kMaxIdBytes); !s.ok()) return s;
   absl::StatusOr<Task*> task = FindTask(task_id);
   if (!task.ok()) return task.status();
-  return Snapshot(**task);
+  return ReadableSnapshot(**task);
 }
 
 absl::StatusOr<api::ListTasksResponse> GatewayHub::ListTasks(const api::ListTasksRequest& request) {
@@ -349,7 +390,7 @@ absl::StatusOr<api::ListTasksResponse> GatewayHub::ListTasks(const api::ListTask
     return std::make_pair(a->task_id.size(), a->task_id) < std::make_pair(b->task_id.size(), b->task_id);
   });
   api::ListTasksResponse response;
-  for (const Task* task : selected) *response.add_tasks() = Snapshot(*task);
+  for (const Task* task : selected) *response.add_tasks() = ReadableSnapshot(*task);
   return response;
 }
 
@@ -360,10 +401,12 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, co
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat(method, ":", request.request_id());
+  const RequestInFlight in_flight = BeginRequest(key);
   if (auto cached = Cached<api::TaskSnapshot>(requests_, key)) return *cached;
   absl::StatusOr<Task*> found = FindTask(request.task_id());
   if (!found.ok()) return found.status();
   Task& task = **found;
+  AwaitExecutor(task);
   if (task.executor->finished()) {
     // A retry of the call that ended the task was answered from the cache above.
     return FieldError(absl::StatusCode::kFailedPrecondition, "task_id",
@@ -419,7 +462,8 @@ void GatewayHub::OnSceneGraph(const SceneGraph& graph) {
   for (auto& [robot_id, robot] : robots_) {
     if (robot.simulated_clock) continue;  // its task gets the graph with its next state
     auto task = tasks_.find(robot.active_task);
-    if (task == tasks_.end()) continue;
+    // A task inside a planning call gets the graph with its robot's next state (HandlePose).
+    if (task == tasks_.end() || task->second.in_remote_call) continue;
     // Not-yet-started tasks keep the graph too, so they start with it.
     std::vector<RobotCommand> commands = GiveSceneGraph(task->second, Now());
     if (task->second.started) Apply(task->second, commands);
@@ -482,6 +526,7 @@ void GatewayHub::Shutdown() {
         // A stopped gateway ends its tasks (the robots get a stop) so a fresh start never drives
         // an old one; only a crash leaves tasks to resume.
         for (auto& [id, task] : tasks_) {
+          AwaitExecutor(task);
           if (!task.executor->finished()) Apply(task, task.executor->Cancel("gateway stopped"));
         }
       }

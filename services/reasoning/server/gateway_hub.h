@@ -1,6 +1,8 @@
 // The gateway's shared state behind both services: robots and their sessions, tasks and their
-// executors, leases, the event log and idempotency. One mutex guards everything; stream sinks
-// are called under it and only queue.
+// executors, leases, the event log and idempotency. One mutex guards the state; stream sinks are
+// called under it and only queue. No remote call runs under it: model calls are asynchronous,
+// and a task's planning call releases it (RunRemoteCall) while that task's other events wait
+// for the call to end, so one slow planner stalls only its own task.
 #pragma once
 
 #include <functional>
@@ -11,6 +13,7 @@
 #include <string>
 #include <thread>
 
+#include "absl/functional/function_ref.h"
 #include "absl/status/statusor.h"
 #include "absl/synchronization/mutex.h"
 #include "absl/time/time.h"
@@ -164,6 +167,9 @@ class GatewayHub {
     bool started = false;
     bool paused_by_session = false;
     bool resume_on_state = false;  // restored after a gateway crash: resumes on the robot's next state
+    // The executor is inside a planning call with mu_ released: nothing else may enter it until
+    // the call ends (AwaitExecutor); readers use `published`.
+    bool in_remote_call = false;
     uint64_t revision = 0;
     absl::Time created;
     absl::Time updated;
@@ -206,6 +212,20 @@ class GatewayHub {
   // The task's path planner with `strategy` ("" = the configured default) and its exploration
   // context.
   std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, const std::string& strategy);
+  // The task's RemoteCallRunner: called by its executor under mu_; runs `call` without mu_.
+  void RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Waits (mu_ released meanwhile) until the task's executor is out of its remote call; every
+  // event for an executor goes through this first. State may have changed on return.
+  void AwaitExecutor(const Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The robot's active task once its executor is free (AwaitExecutor), or null.
+  Task* SettledActiveTask(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Idempotency across a remote call: a retry of a request still running waits for its answer.
+  // Returns the key's guard; the key is in flight until it is destroyed (under mu_).
+  class RequestInFlight;
+  RequestInFlight BeginRequest(const std::string& key) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // What readers see of a task: its snapshot, or the last published one while its executor is
+  // inside a remote call.
+  api::TaskSnapshot ReadableSnapshot(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The executor's modality and footprint from the robot's latest hello.
   void SetMobility(Task& task, const Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // A new executor for `subgoals` (with the scene graph, the EROI search and the target's text
@@ -261,6 +281,7 @@ class GatewayHub {
   LeaseTable leases_ ABSL_GUARDED_BY(mu_);
   EventLog events_ ABSL_GUARDED_BY(mu_);
   RequestCache requests_ ABSL_GUARDED_BY(mu_);
+  std::set<std::string> requests_in_flight_ ABSL_GUARDED_BY(mu_);
   std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_ ABSL_GUARDED_BY(mu_);
   std::map<StreamSink<api::StreamFastTelemetryResponse>*, Subscription<api::StreamFastTelemetryResponse>>
       fast_watchers_ ABSL_GUARDED_BY(mu_);
@@ -283,6 +304,20 @@ class GatewayHub {
   std::vector<LoggedEvent> unjournaled_events_ ABSL_GUARDED_BY(mu_);
   bool journal_enabled_ = false;  // set before the threads start
   std::thread journal_flusher_;
+};
+
+class GatewayHub::RequestInFlight {
+ public:
+  RequestInFlight(std::set<std::string>* keys, std::string key) : keys_(keys), key_(std::move(key)) {
+    keys_->insert(key_);
+  }
+  RequestInFlight(const RequestInFlight&) = delete;
+  RequestInFlight& operator=(const RequestInFlight&) = delete;
+  ~RequestInFlight() { keys_->erase(key_); }
+
+ private:
+  std::set<std::string>* keys_;
+  std::string key_;
 };
 
 template <typename Answer>

@@ -75,8 +75,10 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, 
                                absl::StatusOr<std::string> answer) {
   absl::MutexLock lock(&mu_);
   auto task = tasks_.find(task_id);
+  if (task == tasks_.end()) return;
+  AwaitExecutor(task->second);
   // An answer for the rule plan's executor after the model's plan replaced it is not for this one.
-  if (shut_down_ || task == tasks_.end() || task->second.executor_generation != generation) return;
+  if (shut_down_ || task->second.executor_generation != generation) return;
   if (answer.ok()) {
     task->second.calls.OnAnswer(EstimateTokens(request.request.prose + request.request.task_json, *answer, false));
     task->second.calls.StoreSlowAnswer(request.request.task_json, *answer);
@@ -117,7 +119,9 @@ void GatewayHub::OnDecomposition(const std::string& task_id, const Decomposition
                                  absl::StatusOr<std::string> answer) {
   absl::MutexLock lock(&mu_);
   auto found = tasks_.find(task_id);
-  if (shut_down_ || found == tasks_.end()) return;
+  if (found == tasks_.end()) return;
+  AwaitExecutor(found->second);  // the executor is replaced below
+  if (shut_down_) return;
   Task& task = found->second;
   Decomposition chosen = rules;
   if (answer.ok()) {
@@ -161,7 +165,9 @@ void GatewayHub::RequestTextEmbedding(Task& task) {
 void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding) {
   absl::MutexLock lock(&mu_);
   auto task = tasks_.find(task_id);
-  if (shut_down_ || task == tasks_.end()) return;
+  if (task == tasks_.end()) return;
+  AwaitExecutor(task->second);
+  if (shut_down_) return;
   if (!embedding.ok()) {
     // The seed's fallback stays: the label match stands in for the embedding term.
     LogDebug("text_embedding_unavailable", {{"task", task_id}, {"message", embedding.status().message()}});
