@@ -1,5 +1,6 @@
-// The gateway's shared state behind both services: robots and their sessions, tasks and their
-// executors, leases, the event log and idempotency. One mutex guards the state; stream sinks are
+// The gateway's coordinator behind both services: robots and their sessions, the task registry
+// (core/task_registry.h), leases, the event log and idempotency, and the remote calls between
+// them. One mutex guards the state; stream sinks are
 // called under it and only queue. No remote call runs under it: model calls are asynchronous,
 // and a task's planning call releases it (RunRemoteCall) while that task's other events wait
 // for the call to end, so one slow planner stalls only its own task.
@@ -26,6 +27,7 @@
 #include "services/reasoning/core/request_cache.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
+#include "services/reasoning/core/task_registry.h"
 #include "services/reasoning/core/topological_memory.h"
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/server/gateway_config.h"
@@ -150,33 +152,7 @@ class GatewayHub {
     absl::Duration interval;
     absl::Time last_sent = absl::InfinitePast();
   };
-  struct Task {
-    std::string task_id;
-    std::string robot_id;
-    std::string instruction;
-    std::string source;
-    std::unique_ptr<TaskPlanner> planner;  // before the executor, which refers to it
-    std::unique_ptr<TaskExecutor> executor;
-    uint64_t executor_generation = 0;  // bumped when the model's plan replaces the executor
-    std::optional<uint64_t> graph_revision;  // scene graph revision the executor was last given
-    int model_calls = 0;
-    std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
-    std::optional<SearchArea> search_area;  // the operator's; unset = the whole map
-    bool vision_busy = false;          // a VLM call of the EROI search is running
-    ModelCallPolicy calls;             // call economy: new views, back-off, budget, slow-path cache
-    bool started = false;
-    bool paused_by_session = false;
-    bool resume_on_state = false;  // restored after a gateway crash: resumes on the robot's next state
-    // The executor is inside a planning call with mu_ released: nothing else may enter it until
-    // the call ends (AwaitExecutor); readers use `published`.
-    bool in_remote_call = false;
-    uint64_t revision = 0;
-    absl::Time created;
-    absl::Time updated;
-    std::set<StreamSink<api::WatchTaskResponse>*> watchers;
-    std::string fingerprint;      // snapshot without revision/time, to detect changes
-    api::TaskSnapshot published;  // last snapshot sent to watchers
-  };
+  using Task = TaskRecord;
 
   template <typename Request, typename Action>
   absl::StatusOr<api::TaskSnapshot> ControlTask(const char* method, const Request& request, Action action);
@@ -205,6 +181,8 @@ class GatewayHub {
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   Robot& RobotRecord(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   absl::StatusOr<Task*> FindTask(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The task's view now, and as the API's snapshot.
+  TaskView View(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   api::TaskSnapshot Snapshot(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Sends the executor's commands to the robot, bumps the revision and notifies watchers.
   void Apply(Task& task, const std::vector<RobotCommand>& commands) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
@@ -256,7 +234,7 @@ class GatewayHub {
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
   // shutdown, outside mu_ for the file writes.
   void RestoreFromJournal() ABSL_LOCKS_EXCLUDED(mu_);
-  void RestoreTask(const JournaledTask& saved) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void RestoreTask(const JournaledTask& saved, uint64_t next_number) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   JournaledTask JournalEntry(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void FlushJournalLoop() ABSL_LOCKS_EXCLUDED(mu_);
   void FlushJournal() ABSL_LOCKS_EXCLUDED(mu_);
@@ -277,7 +255,9 @@ class GatewayHub {
   absl::Mutex mu_;
   std::unique_ptr<TaskDecomposer> decomposer_ ABSL_GUARDED_BY(mu_);
   std::map<std::string, Robot> robots_ ABSL_GUARDED_BY(mu_);
-  std::map<std::string, Task> tasks_ ABSL_GUARDED_BY(mu_);
+  TaskRegistry tasks_ ABSL_GUARDED_BY(mu_);
+  // Operators watching each task (by id), until it ends.
+  std::map<std::string, std::set<StreamSink<api::WatchTaskResponse>*>> task_watchers_ ABSL_GUARDED_BY(mu_);
   LeaseTable leases_ ABSL_GUARDED_BY(mu_);
   EventLog events_ ABSL_GUARDED_BY(mu_);
   RequestCache requests_ ABSL_GUARDED_BY(mu_);
@@ -291,7 +271,6 @@ class GatewayHub {
   uint64_t fast_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t model_calls_ ABSL_GUARDED_BY(mu_) = 0;
-  uint64_t next_task_ ABSL_GUARDED_BY(mu_) = 1;
   uint64_t next_model_call_ ABSL_GUARDED_BY(mu_) = 0;  // issue order of held answers
   std::function<absl::Status(absl::Duration)> scene_sync_ ABSL_GUARDED_BY(mu_);
   bool shut_down_ ABSL_GUARDED_BY(mu_) = false;

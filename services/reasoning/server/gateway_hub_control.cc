@@ -77,13 +77,13 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
     // (it stays paused until the robot reconnects or the operator acts on it by id).
     if (request.robot_id().empty() && robot.session == nullptr) continue;
     robot.emergency_stop = true;
-    auto task = tasks_.find(robot.active_task);
-    if (task != tasks_.end() && task->second.in_remote_call) {
-      cancel_after_call.push_back(task->first);
-    } else if (task != tasks_.end() && !task->second.executor->finished()) {
-      task->second.executor->Cancel(absl::StrCat("emergency stop: ", request.reason()));
-      response.add_cancelled_task_ids(task->first);
-      Apply(task->second, {});
+    Task* task = tasks_.Find(robot.active_task);
+    if (task != nullptr && task->in_remote_call) {
+      cancel_after_call.push_back(task->task_id);
+    } else if (task != nullptr && !task->executor->finished()) {
+      task->executor->Cancel(absl::StrCat("emergency stop: ", request.reason()));
+      response.add_cancelled_task_ids(task->task_id);
+      Apply(*task, {});
     }
     if (robot.session != nullptr) {
       api::ConnectResponse stop;
@@ -98,7 +98,7 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
     Log(api::EVENT_KIND_EMERGENCY_STOP, robot_id, "", absl::StrCat("emergency stop: ", request.reason()));
   }
   for (const std::string& task_id : cancel_after_call) {
-    Task& task = tasks_.at(task_id);
+    Task& task = *tasks_.Find(task_id);
     AwaitExecutor(task);
     if (task.executor->finished()) continue;
     task.executor->Cancel(absl::StrCat("emergency stop: ", request.reason()));

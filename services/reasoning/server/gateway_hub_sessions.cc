@@ -69,19 +69,19 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   accepted.set_session_id(absl::StrCat(hello.robot_id(), "-", robot.next_command_id));
   Log(api::EVENT_KIND_SESSION, hello.robot_id(), "", "session opened");
   api::ConnectResponse first;
-  auto task = tasks_.find(robot.active_task);
-  if (task != tasks_.end() && (task->second.paused_by_session || task->second.resume_on_state)) {
-    accepted.set_resumed_task_id(task->first);
+  Task* task = tasks_.Find(robot.active_task);
+  if (task != nullptr && (task->paused_by_session || task->resume_on_state)) {
+    accepted.set_resumed_task_id(task->task_id);
   }
   *first.mutable_accepted() = accepted;
   sink->Send(first);
-  if (task != tasks_.end() && !task->second.executor->finished()) {
-    if (task->second.paused_by_session) {
-      task->second.paused_by_session = false;
-      SetMobility(task->second, robot);  // the robot may come back with other capabilities
-      Apply(task->second, task->second.executor->Resume(NowFor(task->second.robot_id)));
+  if (task != nullptr && !task->executor->finished()) {
+    if (task->paused_by_session) {
+      task->paused_by_session = false;
+      SetMobility(*task, robot);  // the robot may come back with other capabilities
+      Apply(*task, task->executor->Resume(NowFor(task->robot_id)));
     } else {
-      StartIfPossible(task->second);
+      StartIfPossible(*task);
     }
   }
   return accepted;

@@ -23,19 +23,19 @@ void GatewayHub::WatchTask(const api::WatchTaskRequest& request, StreamSink<api:
   Task& task = **found;
   if (task.revision > request.since_revision()) {
     api::WatchTaskResponse response;
-    *response.mutable_task() = Snapshot(task);
+    *response.mutable_task() = ReadableSnapshot(task);
     sink->Send(response);
   }
   if (task.executor->finished()) {
     sink->Close(grpc::Status::OK);
   } else {
-    task.watchers.insert(sink);
+    task_watchers_[task.task_id].insert(sink);
   }
 }
 
 void GatewayHub::UnwatchTask(StreamSink<api::WatchTaskResponse>* sink) {
   absl::MutexLock lock(&mu_);
-  for (auto& [id, task] : tasks_) task.watchers.erase(sink);
+  for (auto& [id, watchers] : task_watchers_) watchers.erase(sink);
 }
 
 void GatewayHub::WatchEvents(const api::StreamEventsRequest& request, StreamSink<api::StreamEventsResponse>* sink) {
