@@ -59,11 +59,7 @@ void GatewayHub::Tick() {
       }
     }
     const absl::Time now = absl::Now();
-    for (auto& [sink, subscription] : slow_watchers_) {
-      if (now - subscription.last_sent < subscription.interval) continue;
-      subscription.last_sent = now;
-      sink->Send(SlowSample(subscription.robot_id));
-    }
+    for (const auto& [sink, robot_id] : slow_watchers_.TakeDue(now)) sink->Send(SlowSample(robot_id));
   }
 }
 
@@ -252,10 +248,7 @@ std::vector<RobotCommand> GatewayHub::GiveSceneGraph(Task& task, double now) {
 }
 
 void GatewayHub::SetMobility(Task& task, const Robot& robot) {
-  const api::Capabilities& caps = robot.capabilities;
-  const bool fly_roll = std::find(caps.modes().begin(), caps.modes().end(), api::LOCOMOTION_MODE_FLY_ROLL) !=
-                        caps.modes().end();
-  task.executor->SetMobility(fly_roll, caps.footprint_radius_m());
+  task.executor->SetMobility(robot.fly_roll, robot.footprint_radius_m);
 }
 
 absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::SubmitInstructionRequest& request) {
@@ -498,10 +491,8 @@ void GatewayHub::Shutdown() {
       task_watchers_.clear();
       for (auto& [sink, filter] : event_watchers_) sink->Close(status);
       event_watchers_.clear();
-      for (auto& [sink, subscription] : fast_watchers_) sink->Close(status);
-      fast_watchers_.clear();
-      for (auto& [sink, subscription] : slow_watchers_) sink->Close(status);
-      slow_watchers_.clear();
+      for (auto* sink : fast_watchers_.TakeAll()) sink->Close(status);
+      for (auto* sink : slow_watchers_.TakeAll()) sink->Close(status);
       for (auto& [id, robot] : robots_) {
         if (robot.session != nullptr) robot.session->Close(status);
       }

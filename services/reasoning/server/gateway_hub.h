@@ -25,9 +25,11 @@
 #include "services/reasoning/core/gateway_journal.h"
 #include "services/reasoning/core/lease_table.h"
 #include "services/reasoning/core/request_cache.h"
+#include "services/reasoning/core/robot_record.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
 #include "services/reasoning/core/task_registry.h"
+#include "services/reasoning/core/telemetry_subscriptions.h"
 #include "services/reasoning/core/topological_memory.h"
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/server/gateway_config.h"
@@ -127,30 +129,15 @@ class GatewayHub {
     uint64_t order = 0;           // issue order: ties apply in the order the calls were made
     std::function<void()> apply;  // runs the answer's handler; takes mu_ itself
   };
-  struct Robot {
+  // The robot's state (core/robot_record.h) and what of it is the session's transport.
+  struct Robot : RobotRecord {
     StreamSink<api::ConnectResponse>* session = nullptr;
-    bool simulated_clock = false;   // the session's hello declared CLOCK_KIND_SIMULATED
-    double sim_now_s = 0.0;         // stamp of the last state (simulated clock)
-    uint64_t synced_mapping_revision = 0;  // frames the scene graph was brought up to
     std::vector<api::ConnectRequest> step_inputs;  // feedback / camera frames since the last state
     int model_calls_in_flight = 0;  // simulated clock: calls whose answer has not come back
     std::vector<HeldAnswer> held_answers;
-    api::Capabilities capabilities;
-    RobotPose pose;
-    bool emergency_stop = false;
-    std::string active_task;
-    std::unique_ptr<TopologicalMemory> memory;
-    uint64_t next_command_id = 1;
-    uint64_t last_session_command = 0;   // id sent on the session
-    uint64_t last_executor_command = 0;  // the executor's id for it
-    api::RobotState last_state;
+    api::Capabilities capabilities;  // as the hello sent them (slow telemetry)
+    api::RobotState last_state;      // as sent (fast telemetry)
     api::RobotCommand last_command;
-  };
-  template <typename Sink>
-  struct Subscription {
-    std::string robot_id;
-    absl::Duration interval;
-    absl::Time last_sent = absl::InfinitePast();
   };
   using Task = TaskRecord;
 
@@ -263,10 +250,8 @@ class GatewayHub {
   RequestCache requests_ ABSL_GUARDED_BY(mu_);
   std::set<std::string> requests_in_flight_ ABSL_GUARDED_BY(mu_);
   std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_ ABSL_GUARDED_BY(mu_);
-  std::map<StreamSink<api::StreamFastTelemetryResponse>*, Subscription<api::StreamFastTelemetryResponse>>
-      fast_watchers_ ABSL_GUARDED_BY(mu_);
-  std::map<StreamSink<api::StreamSlowTelemetryResponse>*, Subscription<api::StreamSlowTelemetryResponse>>
-      slow_watchers_ ABSL_GUARDED_BY(mu_);
+  TelemetrySubscriptions<StreamSink<api::StreamFastTelemetryResponse>*> fast_watchers_ ABSL_GUARDED_BY(mu_);
+  TelemetrySubscriptions<StreamSink<api::StreamSlowTelemetryResponse>*> slow_watchers_ ABSL_GUARDED_BY(mu_);
   SceneGraph scene_graph_ ABSL_GUARDED_BY(mu_);
   uint64_t fast_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;

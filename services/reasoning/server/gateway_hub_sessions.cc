@@ -60,6 +60,9 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   }
   robot.session = sink;
   robot.capabilities = hello.capabilities();
+  const auto& modes = hello.capabilities().modes();
+  robot.fly_roll = std::find(modes.begin(), modes.end(), api::LOCOMOTION_MODE_FLY_ROLL) != modes.end();
+  robot.footprint_radius_m = hello.capabilities().footprint_radius_m();
   robot.simulated_clock = hello.clock() == api::CLOCK_KIND_SIMULATED;
   // A new simulated session is a new simulation: its clock and frames start over.
   robot.sim_now_s = 0.0;
@@ -213,10 +216,7 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
     }
   }
   robot.memory->Update(robot.pose.position, nearby, {});
-  const absl::Time now = absl::Now();
-  for (auto& [watcher, subscription] : fast_watchers_) {
-    if (subscription.robot_id != robot_id || now - subscription.last_sent < subscription.interval) continue;
-    subscription.last_sent = now;
+  for (StreamSink<api::StreamFastTelemetryResponse>* watcher : fast_watchers_.TakeDue(robot_id, absl::Now())) {
     api::StreamFastTelemetryResponse sample;
     *sample.mutable_state() = state;
     sample.set_task_id(robot.active_task);

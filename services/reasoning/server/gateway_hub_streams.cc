@@ -118,12 +118,12 @@ void GatewayHub::WatchFastTelemetry(const api::StreamFastTelemetryRequest& reque
     return;
   }
   const uint32_t rate = request.max_rate_hz() == 0 ? 10 : request.max_rate_hz();
-  fast_watchers_[sink] = {request.robot_id(), absl::Seconds(1.0 / rate)};
+  fast_watchers_.Add(sink, request.robot_id(), absl::Seconds(1.0 / rate));
 }
 
 void GatewayHub::UnwatchFastTelemetry(StreamSink<api::StreamFastTelemetryResponse>* sink) {
   absl::MutexLock lock(&mu_);
-  fast_watchers_.erase(sink);
+  fast_watchers_.Remove(sink);
 }
 
 void GatewayHub::WatchSlowTelemetry(const api::StreamSlowTelemetryRequest& request,
@@ -142,12 +142,12 @@ void GatewayHub::WatchSlowTelemetry(const api::StreamSlowTelemetryRequest& reque
                                                      request.robot_id().empty() ? "is required" : "must be >= 100 ms")));
     return;
   }
-  slow_watchers_[sink] = {request.robot_id(), period};
+  slow_watchers_.Add(sink, request.robot_id(), period);
 }
 
 void GatewayHub::UnwatchSlowTelemetry(StreamSink<api::StreamSlowTelemetryResponse>* sink) {
   absl::MutexLock lock(&mu_);
-  slow_watchers_.erase(sink);
+  slow_watchers_.Remove(sink);
 }
 
 }  // namespace semnav::reasoning
