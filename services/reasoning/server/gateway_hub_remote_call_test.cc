@@ -145,5 +145,56 @@ TEST(GatewayHubRemoteCallTest, SlowPlanningForOneRobotDelaysNeitherAnotherRobotN
   planning_server->Shutdown();
 }
 
+// An emergency stop reaches a robot whose task is inside a planning call at once, and the plan
+// that comes back afterwards never reaches the robot; the task ends CANCELLED.
+TEST(GatewayHubRemoteCallTest, EmergencyStopDuringAPlanningCallIsSentAtOnceAndThePlanIsDropped) {
+  StallingPlanning planning;
+  int planning_port = 0;
+  std::unique_ptr<grpc::Server> planning_server = Serve(&planning, &planning_port);
+  PlanningSettings settings;
+  settings.deadline_ms = 10000;
+  PlanningClient planner(Connect(planning_port), settings);
+  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner, GatewayBackends{&planner, nullptr, nullptr});
+  hub.OnSceneGraph(SofaScene());
+  RecordingSink session;
+  api::SessionHello hello;
+  hello.set_robot_id("slow");
+  ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
+  ASSERT_TRUE(hub.OnRobotState(&session, At(-4.0, 0.5)).ok());
+
+  std::thread submit([&] { EXPECT_TRUE(hub.Submit(FindTheSofa("slow")).ok()); });
+  ASSERT_TRUE(planning.stall_started.WaitForNotificationWithTimeout(absl::Seconds(10)));
+  absl::StatusOr<api::EmergencyStopResponse> stopped;
+  std::thread stop([&] {
+    api::EmergencyStopRequest request;
+    request.set_request_id("stop-1");
+    request.set_robot_id("slow");
+    request.set_reason("operator");
+    stopped = hub.EmergencyStop(request);
+  });
+  const Clock::time_point asked = Clock::now();
+  while (Clock::now() - asked < kPrompt) {
+    const std::vector<api::ConnectResponse> sent = session.messages();
+    if (sent.back().command().stop().emergency()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_TRUE(session.Last().stop().emergency()) << "no stop within 200 ms of the request";
+  EXPECT_FALSE(planning.stall_ended);
+
+  submit.join();
+  stop.join();
+  ASSERT_TRUE(stopped.ok()) << stopped.status();
+  EXPECT_EQ(stopped->stopped_robot_ids_size(), 1);
+  ASSERT_EQ(stopped->cancelled_task_ids_size(), 1);  // cancelled once its planning call ended
+  EXPECT_EQ(stopped->cancelled_task_ids(0), "task-1");
+  EXPECT_TRUE(session.Last().stop().emergency()) << "the stalled plan reached a stopped robot: "
+                                                 << session.Last().ShortDebugString();
+  absl::StatusOr<api::TaskSnapshot> task = hub.GetTask("task-1");
+  ASSERT_TRUE(task.ok());
+  EXPECT_EQ(task->status(), api::TASK_STATUS_CANCELLED);
+  hub.Shutdown();
+  planning_server->Shutdown();
+}
+
 }  // namespace
 }  // namespace semnav::reasoning
