@@ -52,20 +52,19 @@ void GatewayHub::Tick() {
     if (shut_down_) break;
     for (auto& [robot_id, robot] : robots_) {
       if (robot.simulated_clock) continue;  // its states are its clock
-      auto task = tasks_.find(robot.active_task);
-      if (task != tasks_.end() && task->second.started) Apply(task->second, task->second.executor->OnPose(Now(), robot.pose));
+      Task* task = tasks_.Find(robot.active_task);
+      // A task inside a planning call is skipped: the next tick (or its robot's next state) checks it.
+      if (task != nullptr && task->started && !task->in_remote_call) {
+        Apply(*task, task->executor->OnPose(Now(), robot.pose));
+      }
     }
     const absl::Time now = absl::Now();
-    for (auto& [sink, subscription] : slow_watchers_) {
-      if (now - subscription.last_sent < subscription.interval) continue;
-      subscription.last_sent = now;
-      sink->Send(SlowSample(subscription.robot_id));
-    }
+    for (const auto& [sink, robot_id] : slow_watchers_.TakeDue(now)) sink->Send(SlowSample(robot_id));
   }
 }
 
 std::string GatewayHub::StrategyOf(const Task& task) const {
-  return task.planner->strategy().empty() ? config_.planning.exploration_strategy : task.planner->strategy();
+  return task.strategy.empty() ? config_.planning.exploration_strategy : task.strategy;
 }
 
 double GatewayHub::Now() const { return absl::ToDoubleSeconds(absl::Now() - start_); }
@@ -77,12 +76,46 @@ GatewayHub::Robot& GatewayHub::RobotRecord(const std::string& robot_id) {
 }
 
 absl::StatusOr<GatewayHub::Task*> GatewayHub::FindTask(const std::string& task_id) {
-  auto it = tasks_.find(task_id);
-  if (it == tasks_.end()) {
+  Task* task = tasks_.Find(task_id);
+  if (task == nullptr) {
     return FieldError(absl::StatusCode::kNotFound, "task_id",
                       absl::StrCat("no task '", Preview(task_id), "'"), "NOT_FOUND");
   }
-  return &it->second;
+  return task;
+}
+
+void GatewayHub::RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) {
+  Task& task = *tasks_.Find(task_id);  // tasks are never removed
+  task.in_remote_call = true;
+  mu_.Unlock();
+  call();
+  mu_.Lock();
+  task.in_remote_call = false;
+}
+
+void GatewayHub::AwaitExecutor(const Task& task) {
+  if (!task.in_remote_call) return;
+  mu_.Await(absl::Condition(+[](const Task* waited) { return !waited->in_remote_call; }, &task));
+}
+
+GatewayHub::Task* GatewayHub::SettledActiveTask(Robot& robot) {
+  while (true) {
+    Task* task = tasks_.Find(robot.active_task);
+    if (task == nullptr) return nullptr;
+    if (!task->in_remote_call) return task;
+    AwaitExecutor(*task);  // the robot's active task may change meanwhile: look again
+  }
+}
+
+GatewayHub::RequestInFlight GatewayHub::BeginRequest(const std::string& key) {
+  auto free = [this, &key]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return !requests_in_flight_.contains(key); };
+  mu_.Await(absl::Condition(&free));
+  return RequestInFlight(&requests_in_flight_, key);
+}
+
+api::TaskSnapshot GatewayHub::ReadableSnapshot(const Task& task) const {
+  if (task.in_remote_call && !task.published.task_id.empty()) return ToProto(task.published);
+  return Snapshot(task);
 }
 
 absl::Status GatewayHub::CheckControl(const std::string& robot_id, const std::string& lease_id) {
@@ -102,52 +135,18 @@ void GatewayHub::Log(api::EventKind kind, const std::string& robot_id, const std
   }
 }
 
-api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
-  api::TaskSnapshot out;
-  const TaskProgress& progress = task.executor->progress();
-  out.set_task_id(task.task_id);
-  out.set_robot_id(task.robot_id);
-  out.set_instruction(task.instruction);
-  out.set_status(!task.started && progress.state == TaskState::kRunning ? api::TASK_STATUS_PENDING
-                                                                          : ToProto(progress.state));
-  out.set_revision(task.revision);
-  for (const Subgoal& goal : task.executor->subgoals()) *out.add_subgoals() = ToProto(goal);
-  out.set_current_subgoal(progress.subgoal_index);
-  out.set_phase(progress.phase);
-  out.set_reason(progress.reason);
-  if (progress.target.has_value()) {
-    api::ResolvedTarget* target = out.mutable_target();
-    target->set_object_id(progress.target->object_id);
-    target->mutable_position()->set_x(progress.target->position.x());
-    target->mutable_position()->set_y(progress.target->position.y());
-    target->mutable_position()->set_z(progress.target->position.z());
-    target->set_confidence(progress.target->confidence);
-    target->set_path(progress.target->path == "fast" ? api::RESOLUTION_PATH_FAST : api::RESOLUTION_PATH_SLOW);
-  }
-  for (const Eigen::Vector3d& point : progress.path) {
-    common::v1::Vector3* p = out.add_path();
-    p->set_x(point.x());
-    p->set_y(point.y());
-    p->set_z(point.z());
-  }
-  const std::size_t count = task.executor->subgoals().size();
-  out.set_progress(count == 0 ? 1.0 : std::min(1.0, static_cast<double>(progress.subgoal_index) / count));
-  out.set_decomposition_source(task.source);
-  out.set_replans(progress.replans);
-  out.set_explore_goals(progress.explore_goals);
-  out.set_model_requests(progress.model_requests);
-  out.set_model_calls(task.model_calls);
-  if (backends_.explorer != nullptr) out.set_exploration_strategy(StrategyOf(task));
-  if (task.search_area.has_value()) *out.mutable_search_area() = ToProto(*task.search_area);
-  *out.mutable_created_at() = ToTimestamp(task.created);
-  *out.mutable_updated_at() = ToTimestamp(task.updated);
-  return out;
+TaskView GatewayHub::View(const Task& task) const {
+  return ViewOf(task, backends_.explorer != nullptr ? StrategyOf(task) : "");
 }
+
+api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const { return ToProto(View(task)); }
 
 void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   Robot& robot = RobotRecord(task.robot_id);
   for (const RobotCommand& command : commands) {
-    if (robot.session == nullptr) break;
+    // An emergency stop may have come while the task was inside a planning call: nothing the
+    // call led to reaches the robot.
+    if (robot.session == nullptr || robot.emergency_stop) break;
     api::ConnectResponse response;
     robot.last_session_command = robot.next_command_id++;
     robot.last_executor_command = command.id;
@@ -156,50 +155,55 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
     robot.session->Send(response);
   }
   DispatchModelRequest(task);
-  api::TaskSnapshot snapshot = Snapshot(task);
-  snapshot.clear_revision();
-  snapshot.clear_updated_at();
-  std::string fingerprint = snapshot.SerializeAsString();
-  if (fingerprint == task.fingerprint && commands.empty()) return;
-  const api::TaskSnapshot before = std::move(task.published);
-  task.fingerprint = std::move(fingerprint);
+  TaskView now = View(task);
+  if (SameContent(now, task.published) && commands.empty()) return;
+  TaskView before = std::move(task.published);
   ++task.revision;
   journal_dirty_ = true;
   task.updated = absl::Now();
+  now.revision = task.revision;
+  now.updated = task.updated;
   api::WatchTaskResponse response;
-  *response.mutable_task() = Snapshot(task);
-  const api::TaskSnapshot& now = response.task();
-  if (!before.has_target() && now.has_target()) {
-    ++(now.target().path() == api::RESOLUTION_PATH_FAST ? fast_resolutions_ : slow_resolutions_);
+  *response.mutable_task() = ToProto(now);
+  const api::TaskSnapshot& snapshot = response.task();
+  if (!before.target.has_value() && now.target.has_value()) {
+    ++(now.target->path == "fast" ? fast_resolutions_ : slow_resolutions_);
     Log(api::EVENT_KIND_GOAL_RESOLVED, task.robot_id, task.task_id,
-        absl::StrCat("object ", now.target().object_id(), " by the ", api::ResolutionPath_Name(now.target().path())));
+        absl::StrCat("object ", now.target->object_id, " by the ",
+                     api::ResolutionPath_Name(snapshot.target().path())));
   }
   // A dependency pause is logged even when the task was already PAUSED (an operator's resume
   // that found planning gone) or had no snapshot yet (it paused as it started).
-  const bool dependency_lost =
-      now.phase() == "dependency_unavailable" && before.phase() != "dependency_unavailable";
-  if ((before.status() != now.status() && before.status() != api::TASK_STATUS_UNSPECIFIED) ||
-      dependency_lost) {
+  const bool dependency_lost = now.phase == "dependency_unavailable" && before.phase != "dependency_unavailable";
+  const bool status_changed =
+      !before.task_id.empty() && (before.state != now.state || before.pending != now.pending);
+  if (status_changed || dependency_lost) {
     Log(api::EVENT_KIND_TASK_STATUS, task.robot_id, task.task_id,
-        absl::StrCat(api::TaskStatus_Name(now.status()), ": ", now.reason()));
-  } else if (before.current_subgoal() != now.current_subgoal()) {
-    Log(api::EVENT_KIND_SUBGOAL, task.robot_id, task.task_id, absl::StrCat("subgoal ", now.current_subgoal()));
+        absl::StrCat(api::TaskStatus_Name(snapshot.status()), ": ", now.reason));
+  } else if (before.current_subgoal != now.current_subgoal) {
+    Log(api::EVENT_KIND_SUBGOAL, task.robot_id, task.task_id, absl::StrCat("subgoal ", now.current_subgoal));
   }
-  task.published = now;
-  for (StreamSink<api::WatchTaskResponse>* watcher : task.watchers) watcher->Send(response);
+  task.published = std::move(now);
+  auto watchers = task_watchers_.find(task.task_id);
+  if (watchers != task_watchers_.end()) {
+    for (StreamSink<api::WatchTaskResponse>* watcher : watchers->second) watcher->Send(response);
+  }
   if (task.executor->finished()) {
-    for (StreamSink<api::WatchTaskResponse>* watcher : task.watchers) watcher->Close(grpc::Status::OK);
-    task.watchers.clear();
+    if (watchers != task_watchers_.end()) {
+      for (StreamSink<api::WatchTaskResponse>* watcher : watchers->second) watcher->Close(grpc::Status::OK);
+      task_watchers_.erase(watchers);
+    }
     if (robot.active_task == task.task_id) robot.active_task.clear();
   }
 }
 
 std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id, const std::string& strategy) {
-  return std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
-                                       [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
-                                         // Called by the executor, under mu_.
-                                         return ContextFor(task_id);
-                                       });
+  // Both are called by the task's executor, under mu_.
+  return std::make_unique<TaskPlanner>(
+      planner_, backends_.explorer, strategy,
+      [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS { return ContextFor(task_id); },
+      [this, task_id](absl::FunctionRef<void()> call)
+          ABSL_NO_THREAD_SAFETY_ANALYSIS { RunRemoteCall(task_id, call); });
 }
 
 void GatewayHub::StartIfPossible(Task& task) {
@@ -244,10 +248,7 @@ std::vector<RobotCommand> GatewayHub::GiveSceneGraph(Task& task, double now) {
 }
 
 void GatewayHub::SetMobility(Task& task, const Robot& robot) {
-  const api::Capabilities& caps = robot.capabilities;
-  const bool fly_roll = std::find(caps.modes().begin(), caps.modes().end(), api::LOCOMOTION_MODE_FLY_ROLL) !=
-                        caps.modes().end();
-  task.executor->SetMobility(fly_roll, caps.footprint_radius_m());
+  task.executor->SetMobility(robot.fly_roll, robot.footprint_radius_m);
 }
 
 absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::SubmitInstructionRequest& request) {
@@ -255,6 +256,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat("Submit:", request.request_id());
+  const RequestInFlight in_flight = BeginRequest(key);
   if (auto cached = Cached<api::SubmitInstructionResponse>(requests_, key)) return *cached;
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   if (absl::Status s = Required(request.instruction(), "instruction"); !s.ok()) return s;
@@ -270,15 +272,15 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   }
   if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
   Robot& robot = RobotRecord(request.robot_id());
+  Task* const settled = SettledActiveTask(robot);  // before the checks: waiting releases mu_
   if (robot.emergency_stop) {
     return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", "emergency stop active", "EMERGENCY_STOP");
   }
   if (absl::Status s = CheckControl(request.robot_id(), request.lease_id()); !s.ok()) return s;
 
   api::SubmitInstructionResponse response;
-  auto active = tasks_.find(robot.active_task);
-  if (request.allow_correction() && active != tasks_.end() && !active->second.executor->finished()) {
-    Task& task = active->second;
+  if (request.allow_correction() && settled != nullptr && !settled->executor->finished()) {
+    Task& task = *settled;
     const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
     std::optional<Correction> correction =
         target != nullptr ? ReadCorrection(decomposer_->parser().Parse(request.instruction()), *target) : std::nullopt;
@@ -296,13 +298,12 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   if (decomposition.subgoals.empty()) {
     return FieldError(absl::StatusCode::kInvalidArgument, "instruction", "no actionable step understood");
   }
-  if (active != tasks_.end() && !active->second.executor->finished()) {
-    Task& previous = active->second;
+  if (settled != nullptr && !settled->executor->finished()) {
+    Task& previous = *settled;
     Apply(previous, previous.executor->Cancel("replaced by a new instruction"));
   }
-  const std::string task_id = absl::StrCat("task-", next_task_++);
-  Task& task = tasks_[task_id];
-  task.task_id = task_id;
+  Task& task = tasks_.Create();
+  const std::string task_id = task.task_id;
   task.calls = ModelCallPolicy(config_.model_proxy.calls);
   task.robot_id = request.robot_id();
   task.instruction = request.instruction();
@@ -315,6 +316,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
           ? ""
           : std::string(absl::StripPrefix(api::ExplorationStrategy_Name(request.exploration_strategy()),
                                           "EXPLORATION_STRATEGY_"));
+  task.strategy = strategy;
   task.planner = PlannerFor(task_id, strategy);
   InstallExecutor(task, decomposition.subgoals);
   robot.active_task = task_id;
@@ -332,24 +334,16 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::GetTask(const std::string& task_id
   if (absl::Status s = CheckLength(task_id, "task_id", kMaxIdBytes); !s.ok()) return s;
   absl::StatusOr<Task*> task = FindTask(task_id);
   if (!task.ok()) return task.status();
-  return Snapshot(**task);
+  return ReadableSnapshot(**task);
 }
 
 absl::StatusOr<api::ListTasksResponse> GatewayHub::ListTasks(const api::ListTasksRequest& request) {
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
-  std::vector<const Task*> selected;
-  for (const auto& [id, task] : tasks_) {
-    if (!request.robot_id().empty() && task.robot_id != request.robot_id()) continue;
-    if (request.unfinished_only() && task.executor->finished()) continue;
-    selected.push_back(&task);
-  }
-  // Ids are "task-<n>" with n counting up, so (length, id) is submission order.
-  std::sort(selected.begin(), selected.end(), [](const Task* a, const Task* b) {
-    return std::make_pair(a->task_id.size(), a->task_id) < std::make_pair(b->task_id.size(), b->task_id);
-  });
   api::ListTasksResponse response;
-  for (const Task* task : selected) *response.add_tasks() = Snapshot(*task);
+  for (const Task* task : tasks_.Select(request.robot_id(), request.unfinished_only())) {
+    *response.add_tasks() = ReadableSnapshot(*task);
+  }
   return response;
 }
 
@@ -360,10 +354,12 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, co
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat(method, ":", request.request_id());
+  const RequestInFlight in_flight = BeginRequest(key);
   if (auto cached = Cached<api::TaskSnapshot>(requests_, key)) return *cached;
   absl::StatusOr<Task*> found = FindTask(request.task_id());
   if (!found.ok()) return found.status();
   Task& task = **found;
+  AwaitExecutor(task);
   if (task.executor->finished()) {
     // A retry of the call that ended the task was answered from the cache above.
     return FieldError(absl::StatusCode::kFailedPrecondition, "task_id",
@@ -418,11 +414,12 @@ void GatewayHub::OnSceneGraph(const SceneGraph& graph) {
   scene_graph_ = graph;
   for (auto& [robot_id, robot] : robots_) {
     if (robot.simulated_clock) continue;  // its task gets the graph with its next state
-    auto task = tasks_.find(robot.active_task);
-    if (task == tasks_.end()) continue;
+    Task* task = tasks_.Find(robot.active_task);
+    // A task inside a planning call gets the graph with its robot's next state (HandlePose).
+    if (task == nullptr || task->in_remote_call) continue;
     // Not-yet-started tasks keep the graph too, so they start with it.
-    std::vector<RobotCommand> commands = GiveSceneGraph(task->second, Now());
-    if (task->second.started) Apply(task->second, commands);
+    std::vector<RobotCommand> commands = GiveSceneGraph(*task, Now());
+    if (task->started) Apply(*task, commands);
   }
 }
 
@@ -481,22 +478,21 @@ void GatewayHub::Shutdown() {
       if (journal_enabled_) {
         // A stopped gateway ends its tasks (the robots get a stop) so a fresh start never drives
         // an old one; only a crash leaves tasks to resume.
-        for (auto& [id, task] : tasks_) {
+        for (auto& [id, task] : tasks_.all()) {
+          AwaitExecutor(task);
           if (!task.executor->finished()) Apply(task, task.executor->Cancel("gateway stopped"));
         }
       }
       shut_down_ = true;
       const grpc::Status status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down");
-      for (auto& [id, task] : tasks_) {
-        for (StreamSink<api::WatchTaskResponse>* watcher : task.watchers) watcher->Close(status);
-        task.watchers.clear();
+      for (auto& [id, watchers] : task_watchers_) {
+        for (StreamSink<api::WatchTaskResponse>* watcher : watchers) watcher->Close(status);
       }
+      task_watchers_.clear();
       for (auto& [sink, filter] : event_watchers_) sink->Close(status);
       event_watchers_.clear();
-      for (auto& [sink, subscription] : fast_watchers_) sink->Close(status);
-      fast_watchers_.clear();
-      for (auto& [sink, subscription] : slow_watchers_) sink->Close(status);
-      slow_watchers_.clear();
+      for (auto* sink : fast_watchers_.TakeAll()) sink->Close(status);
+      for (auto* sink : slow_watchers_.TakeAll()) sink->Close(status);
       for (auto& [id, robot] : robots_) {
         if (robot.session != nullptr) robot.session->Close(status);
       }

@@ -1,6 +1,9 @@
-// The gateway's shared state behind both services: robots and their sessions, tasks and their
-// executors, leases, the event log and idempotency. One mutex guards everything; stream sinks
-// are called under it and only queue.
+// The gateway's coordinator behind both services: robots and their sessions, the task registry
+// (core/task_registry.h), leases, the event log and idempotency, and the remote calls between
+// them. One mutex guards the state; stream sinks are
+// called under it and only queue. No remote call runs under it: model calls are asynchronous,
+// and a task's planning call releases it (RunRemoteCall) while that task's other events wait
+// for the call to end, so one slow planner stalls only its own task.
 #pragma once
 
 #include <functional>
@@ -11,6 +14,7 @@
 #include <string>
 #include <thread>
 
+#include "absl/functional/function_ref.h"
 #include "absl/status/statusor.h"
 #include "absl/synchronization/mutex.h"
 #include "absl/time/time.h"
@@ -21,8 +25,11 @@
 #include "services/reasoning/core/gateway_journal.h"
 #include "services/reasoning/core/lease_table.h"
 #include "services/reasoning/core/request_cache.h"
+#include "services/reasoning/core/robot_record.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
+#include "services/reasoning/core/task_registry.h"
+#include "services/reasoning/core/telemetry_subscriptions.h"
 #include "services/reasoning/core/topological_memory.h"
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/server/gateway_config.h"
@@ -122,55 +129,17 @@ class GatewayHub {
     uint64_t order = 0;           // issue order: ties apply in the order the calls were made
     std::function<void()> apply;  // runs the answer's handler; takes mu_ itself
   };
-  struct Robot {
+  // The robot's state (core/robot_record.h) and what of it is the session's transport.
+  struct Robot : RobotRecord {
     StreamSink<api::ConnectResponse>* session = nullptr;
-    bool simulated_clock = false;   // the session's hello declared CLOCK_KIND_SIMULATED
-    double sim_now_s = 0.0;         // stamp of the last state (simulated clock)
-    uint64_t synced_mapping_revision = 0;  // frames the scene graph was brought up to
     std::vector<api::ConnectRequest> step_inputs;  // feedback / camera frames since the last state
     int model_calls_in_flight = 0;  // simulated clock: calls whose answer has not come back
     std::vector<HeldAnswer> held_answers;
-    api::Capabilities capabilities;
-    RobotPose pose;
-    bool emergency_stop = false;
-    std::string active_task;
-    std::unique_ptr<TopologicalMemory> memory;
-    uint64_t next_command_id = 1;
-    uint64_t last_session_command = 0;   // id sent on the session
-    uint64_t last_executor_command = 0;  // the executor's id for it
-    api::RobotState last_state;
+    api::Capabilities capabilities;  // as the hello sent them (slow telemetry)
+    api::RobotState last_state;      // as sent (fast telemetry)
     api::RobotCommand last_command;
   };
-  template <typename Sink>
-  struct Subscription {
-    std::string robot_id;
-    absl::Duration interval;
-    absl::Time last_sent = absl::InfinitePast();
-  };
-  struct Task {
-    std::string task_id;
-    std::string robot_id;
-    std::string instruction;
-    std::string source;
-    std::unique_ptr<TaskPlanner> planner;  // before the executor, which refers to it
-    std::unique_ptr<TaskExecutor> executor;
-    uint64_t executor_generation = 0;  // bumped when the model's plan replaces the executor
-    std::optional<uint64_t> graph_revision;  // scene graph revision the executor was last given
-    int model_calls = 0;
-    std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
-    std::optional<SearchArea> search_area;  // the operator's; unset = the whole map
-    bool vision_busy = false;          // a VLM call of the EROI search is running
-    ModelCallPolicy calls;             // call economy: new views, back-off, budget, slow-path cache
-    bool started = false;
-    bool paused_by_session = false;
-    bool resume_on_state = false;  // restored after a gateway crash: resumes on the robot's next state
-    uint64_t revision = 0;
-    absl::Time created;
-    absl::Time updated;
-    std::set<StreamSink<api::WatchTaskResponse>*> watchers;
-    std::string fingerprint;      // snapshot without revision/time, to detect changes
-    api::TaskSnapshot published;  // last snapshot sent to watchers
-  };
+  using Task = TaskRecord;
 
   template <typename Request, typename Action>
   absl::StatusOr<api::TaskSnapshot> ControlTask(const char* method, const Request& request, Action action);
@@ -199,6 +168,8 @@ class GatewayHub {
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   Robot& RobotRecord(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   absl::StatusOr<Task*> FindTask(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The task's view now, and as the API's snapshot.
+  TaskView View(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   api::TaskSnapshot Snapshot(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Sends the executor's commands to the robot, bumps the revision and notifies watchers.
   void Apply(Task& task, const std::vector<RobotCommand>& commands) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
@@ -206,6 +177,20 @@ class GatewayHub {
   // The task's path planner with `strategy` ("" = the configured default) and its exploration
   // context.
   std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, const std::string& strategy);
+  // The task's RemoteCallRunner: called by its executor under mu_; runs `call` without mu_.
+  void RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Waits (mu_ released meanwhile) until the task's executor is out of its remote call; every
+  // event for an executor goes through this first. State may have changed on return.
+  void AwaitExecutor(const Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The robot's active task once its executor is free (AwaitExecutor), or null.
+  Task* SettledActiveTask(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Idempotency across a remote call: a retry of a request still running waits for its answer.
+  // Returns the key's guard; the key is in flight until it is destroyed (under mu_).
+  class RequestInFlight;
+  RequestInFlight BeginRequest(const std::string& key) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // What readers see of a task: its snapshot, or the last published one while its executor is
+  // inside a remote call.
+  api::TaskSnapshot ReadableSnapshot(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The executor's modality and footprint from the robot's latest hello.
   void SetMobility(Task& task, const Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // A new executor for `subgoals` (with the scene graph, the EROI search and the target's text
@@ -236,7 +221,7 @@ class GatewayHub {
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
   // shutdown, outside mu_ for the file writes.
   void RestoreFromJournal() ABSL_LOCKS_EXCLUDED(mu_);
-  void RestoreTask(const JournaledTask& saved) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void RestoreTask(const JournaledTask& saved, uint64_t next_number) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   JournaledTask JournalEntry(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void FlushJournalLoop() ABSL_LOCKS_EXCLUDED(mu_);
   void FlushJournal() ABSL_LOCKS_EXCLUDED(mu_);
@@ -257,20 +242,20 @@ class GatewayHub {
   absl::Mutex mu_;
   std::unique_ptr<TaskDecomposer> decomposer_ ABSL_GUARDED_BY(mu_);
   std::map<std::string, Robot> robots_ ABSL_GUARDED_BY(mu_);
-  std::map<std::string, Task> tasks_ ABSL_GUARDED_BY(mu_);
+  TaskRegistry tasks_ ABSL_GUARDED_BY(mu_);
+  // Operators watching each task (by id), until it ends.
+  std::map<std::string, std::set<StreamSink<api::WatchTaskResponse>*>> task_watchers_ ABSL_GUARDED_BY(mu_);
   LeaseTable leases_ ABSL_GUARDED_BY(mu_);
   EventLog events_ ABSL_GUARDED_BY(mu_);
   RequestCache requests_ ABSL_GUARDED_BY(mu_);
+  std::set<std::string> requests_in_flight_ ABSL_GUARDED_BY(mu_);
   std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_ ABSL_GUARDED_BY(mu_);
-  std::map<StreamSink<api::StreamFastTelemetryResponse>*, Subscription<api::StreamFastTelemetryResponse>>
-      fast_watchers_ ABSL_GUARDED_BY(mu_);
-  std::map<StreamSink<api::StreamSlowTelemetryResponse>*, Subscription<api::StreamSlowTelemetryResponse>>
-      slow_watchers_ ABSL_GUARDED_BY(mu_);
+  TelemetrySubscriptions<StreamSink<api::StreamFastTelemetryResponse>*> fast_watchers_ ABSL_GUARDED_BY(mu_);
+  TelemetrySubscriptions<StreamSink<api::StreamSlowTelemetryResponse>*> slow_watchers_ ABSL_GUARDED_BY(mu_);
   SceneGraph scene_graph_ ABSL_GUARDED_BY(mu_);
   uint64_t fast_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t model_calls_ ABSL_GUARDED_BY(mu_) = 0;
-  uint64_t next_task_ ABSL_GUARDED_BY(mu_) = 1;
   uint64_t next_model_call_ ABSL_GUARDED_BY(mu_) = 0;  // issue order of held answers
   std::function<absl::Status(absl::Duration)> scene_sync_ ABSL_GUARDED_BY(mu_);
   bool shut_down_ ABSL_GUARDED_BY(mu_) = false;
@@ -283,6 +268,20 @@ class GatewayHub {
   std::vector<LoggedEvent> unjournaled_events_ ABSL_GUARDED_BY(mu_);
   bool journal_enabled_ = false;  // set before the threads start
   std::thread journal_flusher_;
+};
+
+class GatewayHub::RequestInFlight {
+ public:
+  RequestInFlight(std::set<std::string>* keys, std::string key) : keys_(keys), key_(std::move(key)) {
+    keys_->insert(key_);
+  }
+  RequestInFlight(const RequestInFlight&) = delete;
+  RequestInFlight& operator=(const RequestInFlight&) = delete;
+  ~RequestInFlight() { keys_->erase(key_); }
+
+ private:
+  std::set<std::string>* keys_;
+  std::string key_;
 };
 
 template <typename Answer>

@@ -64,20 +64,26 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
   const std::string key = absl::StrCat("EmergencyStop:", request.request_id());
+  const RequestInFlight in_flight = BeginRequest(key);
   if (auto cached = Cached<api::EmergencyStopResponse>(requests_, key)) return *cached;
   if (!request.robot_id().empty()) RobotRecord(request.robot_id());
   api::EmergencyStopResponse response;
+  // Robots whose task is inside a planning call get the stop at once; their task is cancelled
+  // once the call ends (Apply sends nothing to a stopped robot meanwhile).
+  std::vector<std::string> cancel_after_call;
   for (auto& [robot_id, robot] : robots_) {
     if (!request.robot_id().empty() && robot_id != request.robot_id()) continue;
     // "" = every connected robot: a disconnected robot's paused task is not the stop's business
     // (it stays paused until the robot reconnects or the operator acts on it by id).
     if (request.robot_id().empty() && robot.session == nullptr) continue;
     robot.emergency_stop = true;
-    auto task = tasks_.find(robot.active_task);
-    if (task != tasks_.end() && !task->second.executor->finished()) {
-      task->second.executor->Cancel(absl::StrCat("emergency stop: ", request.reason()));
-      response.add_cancelled_task_ids(task->first);
-      Apply(task->second, {});
+    Task* task = tasks_.Find(robot.active_task);
+    if (task != nullptr && task->in_remote_call) {
+      cancel_after_call.push_back(task->task_id);
+    } else if (task != nullptr && !task->executor->finished()) {
+      task->executor->Cancel(absl::StrCat("emergency stop: ", request.reason()));
+      response.add_cancelled_task_ids(task->task_id);
+      Apply(*task, {});
     }
     if (robot.session != nullptr) {
       api::ConnectResponse stop;
@@ -90,6 +96,14 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
       response.add_stopped_robot_ids(robot_id);
     }
     Log(api::EVENT_KIND_EMERGENCY_STOP, robot_id, "", absl::StrCat("emergency stop: ", request.reason()));
+  }
+  for (const std::string& task_id : cancel_after_call) {
+    Task& task = *tasks_.Find(task_id);
+    AwaitExecutor(task);
+    if (task.executor->finished()) continue;
+    task.executor->Cancel(absl::StrCat("emergency stop: ", request.reason()));
+    response.add_cancelled_task_ids(task_id);
+    Apply(task, {});
   }
   requests_.Put(key, response.SerializeAsString());
   return response;

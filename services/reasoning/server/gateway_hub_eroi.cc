@@ -32,25 +32,25 @@ absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, c
 
 absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& robot, const api::CameraFrame& frame) {
   if (backends_.model == nullptr || shut_down_) return absl::OkStatus();
-  auto task = tasks_.find(robot.active_task);
-  if (task == tasks_.end() || task->second.eroi == nullptr || task->second.vision_busy ||
-      task->second.executor->progress().state != TaskState::kRunning) {
+  Task* task = tasks_.Find(robot.active_task);
+  if (task == nullptr || task->eroi == nullptr || task->vision_busy ||
+      task->executor->progress().state != TaskState::kRunning) {
     return absl::OkStatus();
   }
   absl::StatusOr<DecodedCameraFrame> decoded = DecodeCameraFrame(frame);
   if (!decoded.ok()) return decoded.status();
   // Call economy: only a new view, not while backing off after a failure, within the budget.
-  ModelCallPolicy& calls = task->second.calls;
-  if (!AllowModelCall(task->second, calls.MayAskVision(NowFor(robot_id), decoded->position, decoded->orientation))) {
+  ModelCallPolicy& calls = task->calls;
+  if (!AllowModelCall(*task, calls.MayAskVision(NowFor(robot_id), decoded->position, decoded->orientation))) {
     return absl::OkStatus();
   }
   calls.OnAskedVision(decoded->position, decoded->orientation);
   const EroiObservation observation =
-      task->second.eroi->Annotate(decoded->position, decoded->orientation, decoded->camera, decoded->image);
-  task->second.vision_busy = true;
-  ++task->second.model_calls;
+      task->eroi->Annotate(decoded->position, decoded->orientation, decoded->camera, decoded->image);
+  task->vision_busy = true;
+  ++task->model_calls;
   ++model_calls_;
-  const std::string task_id = task->first;
+  const std::string task_id = task->task_id;
   ModelCaller caller{robot_id, task_id};
   LanguageModel::AnswerDone done = AtSimulatedArrival<absl::StatusOr<std::string>>(
       caller, [this, task_id, prompt_tokens = EstimateTokens(observation.prompt, "", true)](
@@ -62,9 +62,9 @@ absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& r
 void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer,
                                 int64_t prompt_tokens) {
   absl::MutexLock lock(&mu_);
-  auto task = tasks_.find(task_id);
-  if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
-  Task& t = task->second;
+  Task* task = tasks_.Find(task_id);
+  if (shut_down_ || task == nullptr || task->eroi == nullptr) return;
+  Task& t = *task;
   t.vision_busy = false;
   if (!answer.ok()) {
     t.calls.OnFailure(NowFor(t.robot_id));  // back off: the next frame does not ask again at once (the 636-call storm)
@@ -91,14 +91,14 @@ void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::
 void GatewayHub::OnRegionScore(const std::string& task_id, const RegionDue& region,
                                absl::StatusOr<std::string> answer) {
   absl::MutexLock lock(&mu_);
-  auto task = tasks_.find(task_id);
-  if (shut_down_ || task == tasks_.end() || task->second.eroi == nullptr) return;
+  Task* task = tasks_.Find(task_id);
+  if (shut_down_ || task == nullptr || task->eroi == nullptr) return;
   if (answer.ok()) {
-    task->second.calls.OnAnswer(EstimateTokens(task->second.eroi->RegionPrompt(region), *answer, false));
+    task->calls.OnAnswer(EstimateTokens(task->eroi->RegionPrompt(region), *answer, false));
   } else {
-    task->second.calls.OnFailure(NowFor(task->second.robot_id));
+    task->calls.OnFailure(NowFor(task->robot_id));
   }
-  const absl::Status applied = answer.ok() ? task->second.eroi->OnRegionAnswer(region, *answer) : answer.status();
+  const absl::Status applied = answer.ok() ? task->eroi->OnRegionAnswer(region, *answer) : answer.status();
   if (!applied.ok()) {
     LogDebug("eroi_region_score_unused", {{"task", task_id}, {"region", region.region}, {"message", applied.message()}});
   }

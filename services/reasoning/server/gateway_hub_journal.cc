@@ -26,7 +26,7 @@ JournaledTask GatewayHub::JournalEntry(const Task& task) const {
   out.robot_id = task.robot_id;
   out.instruction = task.instruction;
   out.source = task.source;
-  out.strategy = task.planner->strategy();
+  out.strategy = task.strategy;
   out.search_area = task.search_area;
   out.subgoals = task.executor->subgoals();
   out.progress = task.executor->progress();
@@ -38,9 +38,8 @@ JournaledTask GatewayHub::JournalEntry(const Task& task) const {
   return out;
 }
 
-void GatewayHub::RestoreTask(const JournaledTask& saved) {
-  Task& task = tasks_[saved.task_id];
-  task.task_id = saved.task_id;
+void GatewayHub::RestoreTask(const JournaledTask& saved, uint64_t next_number) {
+  Task& task = tasks_.Restore(saved.task_id, next_number);
   task.robot_id = saved.robot_id;
   task.instruction = saved.instruction;
   task.source = saved.source;
@@ -48,6 +47,7 @@ void GatewayHub::RestoreTask(const JournaledTask& saved) {
   task.model_calls = saved.model_calls;
   task.created = saved.created;
   task.updated = saved.updated;
+  task.strategy = saved.strategy;
   task.planner = PlannerFor(saved.task_id, saved.strategy);
   if (Ended(saved.progress.state)) {
     // History only: no embedding, no EROI search, no model.
@@ -87,12 +87,10 @@ void GatewayHub::RestoreFromJournal() {
   absl::MutexLock lock(&mu_);
   events_.Restore(recovered->events);
   leases_.Restore(recovered->state.leases, absl::Now());
-  next_task_ = std::max(next_task_, recovered->state.next_task);
   int resumable = 0;
   for (const JournaledTask& saved : recovered->state.tasks) {
-    RestoreTask(saved);
-    Task& task = tasks_[saved.task_id];
-    task.fingerprint.clear();
+    RestoreTask(saved, recovered->state.next_task);
+    Task& task = *tasks_.Find(saved.task_id);
     Apply(task, {});  // publishes the restored snapshot (and logs PAUSED for unfinished tasks)
     if (!task.executor->finished()) {
       ++resumable;
@@ -120,8 +118,8 @@ void GatewayHub::FlushJournal() {
     if (journal_dirty_) {
       journal_dirty_ = false;
       state.emplace();
-      state->next_task = next_task_;
-      for (const auto& [id, task] : tasks_) state->tasks.push_back(JournalEntry(task));
+      state->next_task = tasks_.next_number();
+      for (const auto& [id, task] : tasks_.all()) state->tasks.push_back(JournalEntry(task));
       state->leases = leases_.Unexpired(absl::Now());
     }
   }

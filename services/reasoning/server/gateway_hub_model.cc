@@ -74,14 +74,16 @@ void GatewayHub::DispatchModelRequest(Task& task) {
 void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, const ModelRequest& request,
                                absl::StatusOr<std::string> answer) {
   absl::MutexLock lock(&mu_);
-  auto task = tasks_.find(task_id);
+  Task* task = tasks_.Find(task_id);
+  if (task == nullptr) return;
+  AwaitExecutor(*task);
   // An answer for the rule plan's executor after the model's plan replaced it is not for this one.
-  if (shut_down_ || task == tasks_.end() || task->second.executor_generation != generation) return;
+  if (shut_down_ || task->executor_generation != generation) return;
   if (answer.ok()) {
-    task->second.calls.OnAnswer(EstimateTokens(request.request.prose + request.request.task_json, *answer, false));
-    task->second.calls.StoreSlowAnswer(request.request.task_json, *answer);
+    task->calls.OnAnswer(EstimateTokens(request.request.prose + request.request.task_json, *answer, false));
+    task->calls.StoreSlowAnswer(request.request.task_json, *answer);
   } else {
-    task->second.calls.OnFailure(NowFor(task->second.robot_id));
+    task->calls.OnFailure(NowFor(task->robot_id));
   }
   const SlowDecision decision = DecideSlow(answer, request, config_.slow_path);
   LogDebug("slow_path_answer", {{"task", task_id},
@@ -91,7 +93,7 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, 
                                 {"object", decision.object_id},
                                 {"confidence", decision.confidence},
                                 {"explanation", decision.explanation}});
-  Apply(task->second, task->second.executor->OnSlowDecision(NowFor(task->second.robot_id), request.graph_revision,
+  Apply(*task, task->executor->OnSlowDecision(NowFor(task->robot_id), request.graph_revision,
                                                             decision));
 }
 
@@ -116,9 +118,11 @@ void GatewayHub::RequestDecomposition(Task& task, Decomposition rules) {
 void GatewayHub::OnDecomposition(const std::string& task_id, const Decomposition& rules,
                                  absl::StatusOr<std::string> answer) {
   absl::MutexLock lock(&mu_);
-  auto found = tasks_.find(task_id);
-  if (shut_down_ || found == tasks_.end()) return;
-  Task& task = found->second;
+  Task* found = tasks_.Find(task_id);
+  if (found == nullptr) return;
+  AwaitExecutor(*found);  // the executor is replaced below
+  if (shut_down_) return;
+  Task& task = *found;
   Decomposition chosen = rules;
   if (answer.ok()) {
     chosen = decomposer_->WithModelAnswer(rules, *answer);
@@ -160,15 +164,17 @@ void GatewayHub::RequestTextEmbedding(Task& task) {
 
 void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding) {
   absl::MutexLock lock(&mu_);
-  auto task = tasks_.find(task_id);
-  if (shut_down_ || task == tasks_.end()) return;
+  Task* task = tasks_.Find(task_id);
+  if (task == nullptr) return;
+  AwaitExecutor(*task);
+  if (shut_down_) return;
   if (!embedding.ok()) {
     // The seed's fallback stays: the label match stands in for the embedding term.
     LogDebug("text_embedding_unavailable", {{"task", task_id}, {"message", embedding.status().message()}});
     return;
   }
-  task->second.executor->SetTextEmbedding(*std::move(embedding));
-  Apply(task->second, GiveSceneGraph(task->second, NowFor(task->second.robot_id)));
+  task->executor->SetTextEmbedding(*std::move(embedding));
+  Apply(*task, GiveSceneGraph(*task, NowFor(task->robot_id)));
 }
 
 bool GatewayHub::WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const {
@@ -223,19 +229,19 @@ void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request, api::Reso
 }
 
 ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {
-  auto task = tasks_.find(task_id);
-  if (task == tasks_.end()) return {};
-  const TargetSpec* target = PrimaryTarget(task->second.executor->subgoals());
-  const Robot& robot = RobotRecord(task->second.robot_id);
+  Task* task = tasks_.Find(task_id);
+  if (task == nullptr) return {};
+  const TargetSpec* target = PrimaryTarget(task->executor->subgoals());
+  const Robot& robot = RobotRecord(task->robot_id);
   ExplorationContext context = BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, scene_graph_,
                                                        matcher_, backends_.prior, robot.memory.get());
-  if (const EroiSearch* search = task->second.eroi.get(); search != nullptr) {
+  if (const EroiSearch* search = task->eroi.get(); search != nullptr) {
     context.eroi_values = search->PlanarValues();
     context.eroi_window_min = search->WindowMin();
     context.eroi_window_max = search->WindowMax();
     context.eroi_edge_m = search->grid().spec().delta;
   }
-  context.search_area = task->second.search_area;
+  context.search_area = task->search_area;
   return context;
 }
 

@@ -53,11 +53,16 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
     return InvalidField("hello.clock", absl::StrCat("unknown value ", hello.clock()));
   }
   Robot& robot = RobotRecord(hello.robot_id());
+  SettledActiveTask(robot);  // before anything changes: waiting releases mu_
+  if (shut_down_) return absl::UnavailableError("gateway shutting down");
   if (robot.session != nullptr && robot.session != sink) {
     robot.session->Close(grpc::Status(grpc::StatusCode::ABORTED, "replaced by a new session"));
   }
   robot.session = sink;
   robot.capabilities = hello.capabilities();
+  const auto& modes = hello.capabilities().modes();
+  robot.fly_roll = std::find(modes.begin(), modes.end(), api::LOCOMOTION_MODE_FLY_ROLL) != modes.end();
+  robot.footprint_radius_m = hello.capabilities().footprint_radius_m();
   robot.simulated_clock = hello.clock() == api::CLOCK_KIND_SIMULATED;
   // A new simulated session is a new simulation: its clock and frames start over.
   robot.sim_now_s = 0.0;
@@ -67,19 +72,19 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   accepted.set_session_id(absl::StrCat(hello.robot_id(), "-", robot.next_command_id));
   Log(api::EVENT_KIND_SESSION, hello.robot_id(), "", "session opened");
   api::ConnectResponse first;
-  auto task = tasks_.find(robot.active_task);
-  if (task != tasks_.end() && (task->second.paused_by_session || task->second.resume_on_state)) {
-    accepted.set_resumed_task_id(task->first);
+  Task* task = tasks_.Find(robot.active_task);
+  if (task != nullptr && (task->paused_by_session || task->resume_on_state)) {
+    accepted.set_resumed_task_id(task->task_id);
   }
   *first.mutable_accepted() = accepted;
   sink->Send(first);
-  if (task != tasks_.end() && !task->second.executor->finished()) {
-    if (task->second.paused_by_session) {
-      task->second.paused_by_session = false;
-      SetMobility(task->second, robot);  // the robot may come back with other capabilities
-      Apply(task->second, task->second.executor->Resume(NowFor(task->second.robot_id)));
+  if (task != nullptr && !task->executor->finished()) {
+    if (task->paused_by_session) {
+      task->paused_by_session = false;
+      SetMobility(*task, robot);  // the robot may come back with other capabilities
+      Apply(*task, task->executor->Resume(NowFor(task->robot_id)));
     } else {
-      StartIfPossible(task->second);
+      StartIfPossible(*task);
     }
   }
   return accepted;
@@ -147,10 +152,10 @@ absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink,
   robot = RobotOfSink(sink, &robot_id);  // handlers ran without the lock
   if (robot == nullptr) return absl::OkStatus();
   // The graph a task knows changes only here, so every step sees the graph of its own frame.
-  auto task = tasks_.find(robot->active_task);
-  if (task != tasks_.end() && task->second.graph_revision != scene_graph_.revision) {
-    std::vector<RobotCommand> commands = GiveSceneGraph(task->second, *now);
-    if (task->second.started) Apply(task->second, commands);
+  Task* task = SettledActiveTask(*robot);
+  if (task != nullptr && task->graph_revision != scene_graph_.revision) {
+    std::vector<RobotCommand> commands = GiveSceneGraph(*task, *now);
+    if (task->started) Apply(*task, commands);
   }
   std::vector<api::ConnectRequest> inputs = std::move(robot->step_inputs);
   robot->step_inputs.clear();
@@ -201,6 +206,7 @@ void GatewayHub::ApplyDueAnswers(const std::string& robot_id) {
 
 void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api::RobotState& state,
                             const RobotPose& pose) {
+  Task* const task = SettledActiveTask(robot);
   robot.pose = pose;
   robot.last_state = state;
   std::vector<std::string> nearby;
@@ -210,25 +216,25 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
     }
   }
   robot.memory->Update(robot.pose.position, nearby, {});
-  const absl::Time now = absl::Now();
-  for (auto& [watcher, subscription] : fast_watchers_) {
-    if (subscription.robot_id != robot_id || now - subscription.last_sent < subscription.interval) continue;
-    subscription.last_sent = now;
+  for (StreamSink<api::StreamFastTelemetryResponse>* watcher : fast_watchers_.TakeDue(robot_id, absl::Now())) {
     api::StreamFastTelemetryResponse sample;
     *sample.mutable_state() = state;
     sample.set_task_id(robot.active_task);
     *sample.mutable_last_command() = robot.last_command;
     watcher->Send(sample);
   }
-  auto task = tasks_.find(robot.active_task);
-  if (task != tasks_.end() && task->second.resume_on_state) {
+  if (task != nullptr && task->resume_on_state) {
     // Restored after a gateway crash: this is the first pose the gateway can trust.
-    task->second.resume_on_state = false;
-    SetMobility(task->second, robot);
-    Apply(task->second, task->second.executor->OnPose(NowFor(robot_id), robot.pose));  // paused: only takes the pose
-    Apply(task->second, task->second.executor->Resume(NowFor(robot_id)));
-  } else if (task != tasks_.end() && task->second.started) {
-    Apply(task->second, task->second.executor->OnPose(NowFor(robot_id), robot.pose));
+    task->resume_on_state = false;
+    SetMobility(*task, robot);
+    Apply(*task, task->executor->OnPose(NowFor(robot_id), robot.pose));  // paused: only takes the pose
+    Apply(*task, task->executor->Resume(NowFor(robot_id)));
+  } else if (task != nullptr && task->started) {
+    // A graph that came while the task was inside a planning call (OnSceneGraph skipped it).
+    if (!robot.simulated_clock && task->graph_revision != scene_graph_.revision) {
+      Apply(*task, GiveSceneGraph(*task, NowFor(robot_id)));
+    }
+    Apply(*task, task->executor->OnPose(NowFor(robot_id), robot.pose));
   }
 }
 
@@ -251,10 +257,10 @@ absl::Status GatewayHub::OnFeedback(StreamSink<api::ConnectResponse>* sink,
 
 void GatewayHub::HandleFeedback(Robot& robot, const api::CommandFeedback& feedback) {
   const std::optional<RobotFeedback> kind = FromProto(feedback.kind());
+  Task* const task = SettledActiveTask(robot);  // its planning call may send the command this refers to
   if (feedback.command_id() != robot.last_session_command || !kind.has_value()) return;
-  auto task = tasks_.find(robot.active_task);
-  if (task == tasks_.end() || !task->second.started) return;
-  Apply(task->second, task->second.executor->OnFeedback(NowFor(task->second.robot_id), robot.last_executor_command, *kind));
+  if (task == nullptr || !task->started) return;
+  Apply(*task, task->executor->OnFeedback(NowFor(task->robot_id), robot.last_executor_command, *kind));
 }
 
 void GatewayHub::CloseSession(StreamSink<api::ConnectResponse>* sink) {
@@ -264,15 +270,15 @@ void GatewayHub::CloseSession(StreamSink<api::ConnectResponse>* sink) {
   if (robot == nullptr) return;
   robot->session = nullptr;
   Log(api::EVENT_KIND_SESSION, robot_id, "", "session closed");
-  auto task = tasks_.find(robot->active_task);
+  Task* const task = SettledActiveTask(*robot);
+  if (robot->session != nullptr) return;  // the robot came back while its task was planning
   // A task waiting for planning pauses for the session too, so the robot's return resumes it.
-  if (task == tasks_.end() || !task->second.started ||
-      (task->second.executor->progress().state != TaskState::kRunning &&
-       !task->second.executor->waiting_for_dependency())) {
+  if (task == nullptr || !task->started ||
+      (task->executor->progress().state != TaskState::kRunning && !task->executor->waiting_for_dependency())) {
     return;
   }
-  task->second.paused_by_session = true;
-  Apply(task->second, task->second.executor->Pause());
+  task->paused_by_session = true;
+  Apply(*task, task->executor->Pause());
 }
 
 }  // namespace semnav::reasoning

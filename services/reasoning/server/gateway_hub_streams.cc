@@ -23,19 +23,19 @@ void GatewayHub::WatchTask(const api::WatchTaskRequest& request, StreamSink<api:
   Task& task = **found;
   if (task.revision > request.since_revision()) {
     api::WatchTaskResponse response;
-    *response.mutable_task() = Snapshot(task);
+    *response.mutable_task() = ReadableSnapshot(task);
     sink->Send(response);
   }
   if (task.executor->finished()) {
     sink->Close(grpc::Status::OK);
   } else {
-    task.watchers.insert(sink);
+    task_watchers_[task.task_id].insert(sink);
   }
 }
 
 void GatewayHub::UnwatchTask(StreamSink<api::WatchTaskResponse>* sink) {
   absl::MutexLock lock(&mu_);
-  for (auto& [id, task] : tasks_) task.watchers.erase(sink);
+  for (auto& [id, watchers] : task_watchers_) watchers.erase(sink);
 }
 
 void GatewayHub::WatchEvents(const api::StreamEventsRequest& request, StreamSink<api::StreamEventsResponse>* sink) {
@@ -118,12 +118,12 @@ void GatewayHub::WatchFastTelemetry(const api::StreamFastTelemetryRequest& reque
     return;
   }
   const uint32_t rate = request.max_rate_hz() == 0 ? 10 : request.max_rate_hz();
-  fast_watchers_[sink] = {request.robot_id(), absl::Seconds(1.0 / rate)};
+  fast_watchers_.Add(sink, request.robot_id(), absl::Seconds(1.0 / rate));
 }
 
 void GatewayHub::UnwatchFastTelemetry(StreamSink<api::StreamFastTelemetryResponse>* sink) {
   absl::MutexLock lock(&mu_);
-  fast_watchers_.erase(sink);
+  fast_watchers_.Remove(sink);
 }
 
 void GatewayHub::WatchSlowTelemetry(const api::StreamSlowTelemetryRequest& request,
@@ -142,12 +142,12 @@ void GatewayHub::WatchSlowTelemetry(const api::StreamSlowTelemetryRequest& reque
                                                      request.robot_id().empty() ? "is required" : "must be >= 100 ms")));
     return;
   }
-  slow_watchers_[sink] = {request.robot_id(), period};
+  slow_watchers_.Add(sink, request.robot_id(), period);
 }
 
 void GatewayHub::UnwatchSlowTelemetry(StreamSink<api::StreamSlowTelemetryResponse>* sink) {
   absl::MutexLock lock(&mu_);
-  slow_watchers_.erase(sink);
+  slow_watchers_.Remove(sink);
 }
 
 }  // namespace semnav::reasoning

@@ -100,6 +100,39 @@ api::TaskStatus ToProto(TaskState state) {
   return api::TASK_STATUS_UNSPECIFIED;
 }
 
+api::TaskSnapshot ToProto(const TaskView& view) {
+  using google::protobuf::util::TimeUtil;
+  api::TaskSnapshot out;
+  out.set_task_id(view.task_id);
+  out.set_robot_id(view.robot_id);
+  out.set_instruction(view.instruction);
+  out.set_status(view.pending ? api::TASK_STATUS_PENDING : ToProto(view.state));
+  out.set_revision(view.revision);
+  for (const Subgoal& goal : view.subgoals) *out.add_subgoals() = ToProto(goal);
+  out.set_current_subgoal(view.current_subgoal);
+  out.set_phase(view.phase);
+  out.set_reason(view.reason);
+  if (view.target.has_value()) {
+    api::ResolvedTarget* target = out.mutable_target();
+    target->set_object_id(view.target->object_id);
+    SetVector(view.target->position, target->mutable_position());
+    target->set_confidence(view.target->confidence);
+    target->set_path(view.target->path == "fast" ? api::RESOLUTION_PATH_FAST : api::RESOLUTION_PATH_SLOW);
+  }
+  for (const Eigen::Vector3d& point : view.path) SetVector(point, out.add_path());
+  out.set_progress(view.progress);
+  out.set_decomposition_source(view.decomposition_source);
+  out.set_replans(view.replans);
+  out.set_explore_goals(view.explore_goals);
+  out.set_model_requests(view.model_requests);
+  out.set_model_calls(view.model_calls);
+  if (!view.exploration_strategy.empty()) out.set_exploration_strategy(view.exploration_strategy);
+  if (view.search_area.has_value()) *out.mutable_search_area() = ToProto(*view.search_area);
+  *out.mutable_created_at() = TimeUtil::NanosecondsToTimestamp(absl::ToUnixNanos(view.created));
+  *out.mutable_updated_at() = TimeUtil::NanosecondsToTimestamp(absl::ToUnixNanos(view.updated));
+  return out;
+}
+
 RobotPose FromProto(const api::RobotState& state) {
   RobotPose pose;
   const common::v1::Pose& p = state.pose();

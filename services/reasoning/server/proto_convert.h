@@ -13,6 +13,7 @@
 #include "services/reasoning/core/robot_types.h"
 #include "services/reasoning/core/subgoal.h"
 #include "services/reasoning/core/task_executor.h"
+#include "services/reasoning/core/task_registry.h"
 
 namespace semnav::reasoning {
 
@@ -24,6 +25,8 @@ api::Subgoal ToProto(const Subgoal& subgoal);
 api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id, const std::string& task_id);
 api::Event ToProto(const LoggedEvent& event);
 api::TaskStatus ToProto(TaskState state);
+// The operator's TaskSnapshot (the only place a task becomes a message).
+api::TaskSnapshot ToProto(const TaskView& view);
 // Pose and yaw (about z) from the robot's state message.
 RobotPose FromProto(const api::RobotState& state);
 // INVALID_ARGUMENT naming the coordinate ("search_area.min_x") when it is not finite or beyond

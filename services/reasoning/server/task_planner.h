@@ -1,10 +1,14 @@
 // The PathPlanner each task's executor gets: paths come from the shared planner unchanged;
 // exploration goals are asked with the task's strategy and its semantic context (target, scene
 // graph, visited places, commonsense co-occurrence), which the executor itself does not know.
+// Every call to planning goes through the task's RemoteCallRunner, which lets the gateway run it
+// without its lock (docs/algorithms/gateway.md, "Remote calls").
 #pragma once
 
 #include <functional>
 #include <string>
+
+#include "absl/functional/function_ref.h"
 
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/navigation_interfaces.h"
@@ -21,26 +25,53 @@ class ExplorationService {
                                                      const ExplorationContext& context) = 0;
 };
 
+// Runs one remote call (`call`) on the caller's thread; the gateway's runner releases its lock
+// around it and holds the task's other events back meanwhile. Null = run it as it is.
+using RemoteCallRunner = std::function<void(absl::FunctionRef<void()> call)>;
+
 class TaskPlanner final : public PathPlanner {
  public:
   // `explorer` may be null (no planning service: the shared planner's exploration fallback).
-  // `context` is called for every exploration goal, on the caller's thread.
+  // `context` is called for every exploration goal, on the caller's thread, before the call.
   TaskPlanner(PathPlanner* paths, ExplorationService* explorer, std::string strategy,
-              std::function<ExplorationContext()> context)
-      : paths_(paths), explorer_(explorer), strategy_(std::move(strategy)), context_(std::move(context)) {}
+              std::function<ExplorationContext()> context, RemoteCallRunner remote = nullptr)
+      : paths_(paths),
+        explorer_(explorer),
+        strategy_(std::move(strategy)),
+        context_(std::move(context)),
+        remote_(std::move(remote)) {}
 
-  absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override { return paths_->Plan(query); }
+  absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
+    absl::StatusOr<std::vector<Eigen::Vector3d>> path;
+    Remote([&] { path = paths_->Plan(query); });
+    return path;
+  }
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
-    if (explorer_ == nullptr) return paths_->ExplorationGoal(query);
-    return explorer_->SelectGoal(query, strategy_, context_());
+    absl::StatusOr<Eigen::Vector3d> goal;
+    if (explorer_ == nullptr) {
+      Remote([&] { goal = paths_->ExplorationGoal(query); });
+      return goal;
+    }
+    const ExplorationContext context = context_();
+    Remote([&] { goal = explorer_->SelectGoal(query, strategy_, context); });
+    return goal;
   }
   const std::string& strategy() const { return strategy_; }
 
  private:
+  void Remote(absl::FunctionRef<void()> call) {
+    if (remote_) {
+      remote_(call);
+    } else {
+      call();
+    }
+  }
+
   PathPlanner* paths_;
   ExplorationService* explorer_;
   std::string strategy_;
   std::function<ExplorationContext()> context_;
+  RemoteCallRunner remote_;
 };
 
 }  // namespace semnav::reasoning
