@@ -115,8 +115,11 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
       .Read("live_map_id", &p.live_map_id)
       .Read("interval_s", &p.interval_s)
       .Read("deadline_ms", &p.deadline_ms);
-  ConfigReader relocalization = landmarks.Child("relocalization");
-  p.relocalization = ClientOptions::FromConfig(relocalization, p.relocalization);
+  // Without the section no relocalization service is used (FromConfig wants an address).
+  if (landmarks.Has("relocalization")) {
+    ConfigReader relocalization = landmarks.Child("relocalization");
+    p.relocalization = ClientOptions::FromConfig(relocalization, p.relocalization);
+  }
   // Field errors name the key; the reader reports them under "landmarks.<key>".
   for (const absl::Status& s : {ValidateSceneLandmarkConfig(l), ValidateLandmarkPublisherConfig(p)}) {
     if (s.ok()) continue;
