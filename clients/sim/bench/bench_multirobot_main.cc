@@ -27,6 +27,8 @@ const std::vector<semnav::FlagSpec> kFlags = {
     {"worlds", "N", "generated homes, seeds 1..N (default 2)"},
     {"trials", "N", "robot B runs per home (default 5)"},
     {"seed", "N", "seed of B's starts, offsets and targets (default 1)"},
+    {"look-arounds", "N", "look-arounds B may take before a reliable alignment (default 3)"},
+    {"move-m", "M", "B's move between two look-arounds, metres by path (default 2)"},
     {"json", "FILE", "also write the figures as JSON"},
     {"help", "", "this text"},
 };
@@ -67,6 +69,16 @@ int main(int argc, char** argv) {
   if (auto v = flags.Get("seed"); v && !absl::SimpleAtoi(*v, &seed)) {
     return Fail(absl::InvalidArgumentError("--seed: not a number"));
   }
+  loop::TwoRobotOptions defaults;
+  if (auto v = flags.Get("look-arounds");
+      v && (!absl::SimpleAtoi(*v, &defaults.max_look_arounds) || defaults.max_look_arounds < 1 ||
+            defaults.max_look_arounds > 10)) {
+    return Fail(absl::InvalidArgumentError("--look-arounds: a number in [1, 10]"));
+  }
+  if (auto v = flags.Get("move-m");
+      v && (!absl::SimpleAtod(*v, &defaults.move_m) || !(defaults.move_m >= 0.5 && defaults.move_m <= 20))) {
+    return Fail(absl::InvalidArgumentError("--move-m: a number in [0.5, 20]"));
+  }
   const std::string work_dir =
       (std::filesystem::temp_directory_path() / absl::StrCat("semnav-bench-multirobot-", ::getpid())).string();
   absl::StatusOr<std::unique_ptr<loop::TwoRobotStack>> stack =
@@ -80,7 +92,7 @@ int main(int argc, char** argv) {
   std::printf("%-20s %5s %-14s %4s %5s %7s %8s %8s %7s %7s %6s  %s\n", "world", "trial", "target", "look", "inl", "err_m",
               "err_deg", "path_m", "short_m", "ratio", "ok", "failure");
   for (int w = 1; w <= worlds; ++w) {
-    loop::TwoRobotOptions options;
+    loop::TwoRobotOptions options = defaults;
     options.world_seed = static_cast<uint64_t>(w);
     options.trials = trials;
     options.trial_seed = seed;
@@ -133,6 +145,8 @@ int main(int argc, char** argv) {
   // The target counts a trial only when B reached the object with a path <= 1.3x.
   const double within_ratio_rate = total > 0 ? static_cast<double>(within_ratio) / total : 0.0;
   report["summary"] = {{"trials", total},
+                       {"max_look_arounds", defaults.max_look_arounds},
+                       {"move_m", defaults.move_m},
                        {"aligned", aligned},
                        {"reliable", reliable},
                        {"success_rate", success_rate},
