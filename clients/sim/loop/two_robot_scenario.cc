@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <optional>
-#include <thread>
-#include <cstdio>
-#include <cstdlib>
 
 #include <Eigen/Geometry>
 #include <grpcpp/grpcpp.h>
@@ -207,41 +205,6 @@ std::vector<Target> MatchTargets(const World& world, const std::vector<mv1::Scen
   return out;
 }
 
-std::vector<rv1::Landmark> ReadAll(const std::shared_ptr<grpc::Channel>& relocalization, const std::string& map_id) {
-  auto stub = rv1::RelocalizationService::NewStub(relocalization);
-  rv1::GetLandmarkMapRequest request;
-  request.set_map_id(map_id);
-  grpc::ClientContext context;
-  auto reader = stub->GetLandmarkMap(&context, request);
-  rv1::GetLandmarkMapResponse page;
-  std::vector<rv1::Landmark> out;
-  while (reader->Read(&page)) for (const auto& l : page.landmarks()) out.push_back(l);
-  reader->Finish();
-  return out;
-}
-
-void DebugPairs(const std::shared_ptr<grpc::Channel>& relocalization, const std::string& map_a, const std::string& map_b,
-                const Eigen::Isometry3d& world_from_b) {
-  const auto a = ReadAll(relocalization, map_a);
-  const auto b = ReadAll(relocalization, map_b);
-  for (const auto& lb : b) {
-    const Eigen::Vector3d pb = world_from_b * Eigen::Vector3d(lb.position().x(), lb.position().y(), lb.position().z());
-    double best = 1e9; const rv1::Landmark* m = nullptr;
-    for (const auto& la : a) {
-      const double d = (Eigen::Vector3d(la.position().x(), la.position().y(), la.position().z()) - pb).norm();
-      if (d < best) { best = d; m = &la; }
-    }
-    double dot = 0, na = 0, nb = 0; int arga = 0, argb = 0;
-    for (int i = 0; i < lb.embedding_size(); ++i) {
-      dot += lb.embedding(i) * m->embedding(i); na += m->embedding(i) * m->embedding(i); nb += lb.embedding(i) * lb.embedding(i);
-      if (m->embedding(i) > m->embedding(arga)) arga = i;
-      if (lb.embedding(i) > lb.embedding(argb)) argb = i;
-    }
-    std::fprintf(stderr, "B landmark: nearest A %.3f m, cos %.3f, scale %.2f vs %.2f, arg %d vs %d\n", best,
-                 dot / std::sqrt(na * nb + 1e-12), lb.scale_m(), m->scale_m(), argb, arga);
-  }
-}
-
 }  // namespace
 
 absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& options,
@@ -251,8 +214,9 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
         options.approach_margin_m < options.success_radius_m)) {
     return absl::InvalidArgumentError("need 0 <= approach_margin_m < success_radius_m");
   }
-  if (!(options.look_step_deg >= 5.0 && options.look_step_deg <= 90.0)) {
-    return absl::InvalidArgumentError("look_step_deg must be in [5, 90]");
+  if (!(options.look_step_deg >= 5.0 && options.look_step_deg <= 90.0 && options.survey_step_deg >= 5.0 &&
+        options.survey_step_deg <= 90.0)) {
+    return absl::InvalidArgumentError("look_step_deg and survey_step_deg must be in [5, 90]");
   }
   if (!(options.max_offset_m >= 0.0 && options.max_offset_m <= 1000.0)) {
     return absl::InvalidArgumentError("max_offset_m must be in [0, 1000]");
@@ -278,7 +242,7 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       const std::optional<Eigen::Vector2d> at = RoomViewpoint(world.rooms[i], grid, region);
       if (!at) continue;
       absl::StatusOr<int> sent = LookAround(world, scene, *at, 0.0, MixSeed(options.world_seed, i),
-                                            options.look_step_deg, Eigen::Isometry3d::Identity(), "robot_a",
+                                            options.survey_step_deg, Eigen::Isometry3d::Identity(), "robot_a",
                                             frames, clock_s);
       if (!sent.ok()) return sent.status();
       ++result.a_viewpoints;
@@ -368,9 +332,6 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       absl::StatusOr<int> b_landmarks = AwaitLandmarkMap(endpoints.relocalization, map_b);
       if (!b_landmarks.ok()) return b_landmarks.status();
       trial.b_landmarks = *b_landmarks;
-      if (std::getenv("SEMNAV_TWO_ROBOTS_DEBUG") != nullptr) {
-        DebugPairs(endpoints.relocalization, map_a, map_b, world_from_odom_b);
-      }
       rv1::AlignMapsRequest align;
       align.set_reference_map_id(map_a);
       align.set_moving_map_id(map_b);
@@ -432,6 +393,12 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       continue;
     }
     trial.path_m = moved_m + route->length_m;
+    trial.look_m = moved_m;
+    const std::optional<NearestGoal> straight =
+        NearestReachableGoal(grid, at, [&](const Eigen::Vector2d& p) {
+          return DistanceToBoxFootprint(target.object->box, p) <= options.success_radius_m;
+        });
+    trial.route_ratio = straight && straight->length_m > 0.0 ? route->length_m / straight->length_m : 1.0;
     trial.path_ratio = trial.shortest_m > 0.0 ? trial.path_m / trial.shortest_m : (trial.path_m > 0.0 ? 1e9 : 1.0);
     trial.distance_to_target_m = DistanceToBoxFootprint(target.object->box, route->goal);
     trial.success = trial.distance_to_target_m <= options.success_radius_m;

@@ -24,12 +24,13 @@ struct TwoRobotOptions {
   double success_radius_m = 1.0;  // B succeeds stopping this close to the target's footprint
   // B aims this much inside the success radius, to absorb the alignment error.
   double approach_margin_m = 0.25;
-  double look_step_deg = 10.0;   // heading step of a look-around (A at every viewpoint, B once)
+  double look_step_deg = 10.0;   // heading step of B's look-arounds
+  double survey_step_deg = 10.0;  // heading step of A's look-around in every room
   double max_offset_m = 30.0;    // B's unknown offset: translation up to this, any heading
   // Look-arounds B may take before giving up on a reliable alignment; between two, B moves to
   // the nearest place (by path) at least move_m from every place it looked from.
-  int max_look_arounds = 3;
-  double move_m = 2.0;
+  int max_look_arounds = 5;
+  double move_m = 3.0;
 };
 
 struct TwoRobotTrial {
@@ -48,6 +49,10 @@ struct TwoRobotTrial {
   double path_m = 0.0;       // B's route: start to its believed goal region
   double shortest_m = 0.0;   // geodesic from B's start to the true success region of the target
   double path_ratio = 0.0;   // path_m / shortest_m
+  double look_m = 0.0;       // part of path_m spent moving between look-arounds
+  // The route after the reliable alignment against the geodesic from where B was aligned: how
+  // straight B goes once it trusts its pose.
+  double route_ratio = 0.0;
   double distance_to_target_m = 0.0;  // from where B stops to the target's footprint
   bool success = false;
   std::string failure;       // why not, empty on success

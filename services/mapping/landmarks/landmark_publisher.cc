@@ -74,11 +74,6 @@ void LandmarkPublisher::SceneReplaced() {
   scene_replaced_ = true;
 }
 
-uint64_t LandmarkPublisher::live_pushes() const {
-  absl::MutexLock lock(&mu_);
-  return live_pushes_;
-}
-
 void LandmarkPublisher::Run() {
   const absl::Duration interval = absl::Seconds(config_.interval_s);
   absl::MutexLock lock(&mu_);
@@ -156,8 +151,6 @@ void LandmarkPublisher::PushLive() {
     published_revision_ = scene.revision;
     have_published_ = true;
   }
-  absl::MutexLock lock(&mu_);
-  ++live_pushes_;
 }
 
 void LandmarkPublisher::PushSnapshot(const Snapshot& snapshot) {

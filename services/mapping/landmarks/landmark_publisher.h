@@ -52,9 +52,6 @@ class LandmarkPublisher {
   void SceneReplaced();
   void Stop();
 
-  // Pushes done so far (for tests and logs): live upserts and snapshots that succeeded.
-  uint64_t live_pushes() const;
-
  private:
   struct Snapshot {
     std::string map_id;
@@ -78,7 +75,6 @@ class LandmarkPublisher {
   bool stopping_ ABSL_GUARDED_BY(mu_) = false;
   std::deque<Snapshot> snapshots_ ABSL_GUARDED_BY(mu_);
   bool scene_replaced_ ABSL_GUARDED_BY(mu_) = false;
-  uint64_t live_pushes_ ABSL_GUARDED_BY(mu_) = 0;
 
   // Owned by the background thread.
   uint64_t published_revision_ = 0;
