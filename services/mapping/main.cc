@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     if (!store.ok()) return store.status();
     auto service = std::make_unique<semnav::mapping::MappingServiceImpl>(config, *std::move(store));
     if (absl::Status live = service->StartLiveSnapshots(); !live.ok()) return live;
+    if (absl::Status pushed = service->StartLandmarkPublisher(); !pushed.ok()) return pushed;
     semnav::mapping::MappingServiceImpl* raw = service.get();
     host.OnShutdown([raw] { raw->Shutdown(); });
     host.AddService(std::move(service), "semnav.mapping.v1.MappingService");

@@ -104,6 +104,30 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
   section.Check(config.live_snapshot_interval_s >= 0 && config.live_snapshot_interval_s <= 3600,
                 "live_snapshot_interval_s", "must be in [0, 3600]");
   section.Check(config.window_limits.max_abs_coordinate_m > 0, "max_abs_coordinate_m", "must be > 0");
+
+  ConfigReader landmarks = section.Child("landmarks");
+  SceneLandmarkConfig& l = config.landmarks;
+  LandmarkPublisherConfig& p = config.landmark_publisher;
+  landmarks.Read("min_detections", &l.min_detections)
+      .Read("labels", &l.labels)
+      .Read("embedding_dim", &l.embedding_dim)
+      .Read("embedding_weight", &l.embedding_weight)
+      .Read("live_map_id", &p.live_map_id)
+      .Read("interval_s", &p.interval_s)
+      .Read("deadline_ms", &p.deadline_ms);
+  // Without the section no relocalization service is used (FromConfig wants an address).
+  if (landmarks.Has("relocalization")) {
+    ConfigReader relocalization = landmarks.Child("relocalization");
+    p.relocalization = ClientOptions::FromConfig(relocalization, p.relocalization);
+  }
+  // Field errors name the key; the reader reports them under "landmarks.<key>".
+  for (const absl::Status& s : {ValidateSceneLandmarkConfig(l), ValidateLandmarkPublisherConfig(p)}) {
+    if (s.ok()) continue;
+    const std::string message(s.message());
+    const size_t colon = message.find(": ");
+    landmarks.Check(false, colon == std::string::npos ? "landmarks" : message.substr(0, colon),
+                    colon == std::string::npos ? message : message.substr(colon + 2));
+  }
   return config;
 }
 

@@ -5,6 +5,8 @@
 #include "services/common/config/config_reader.h"
 #include "services/mapping/core/mapping_config.h"
 #include "services/mapping/core/window_validation.h"
+#include "services/mapping/landmarks/landmark_publisher.h"
+#include "services/mapping/landmarks/scene_landmarks.h"
 
 namespace semnav::mapping {
 
@@ -18,6 +20,8 @@ struct MappingServiceConfig {
   int occupancy_chunk_bytes = 1 << 20;       // GetOccupancy DataChunk size (protocol max 1 MiB)
   WindowLimits window_limits;                // GetGridMap / WatchGridMap window bounds
   double live_snapshot_interval_s = 5.0;     // crash-recovery snapshot of the live map; 0 = off
+  SceneLandmarkConfig landmarks;             // scene-graph instances -> relocalization landmarks
+  LandmarkPublisherConfig landmark_publisher;  // where and how often they are pushed
 };
 
 // Reads the "mapping" YAML section. Keys (defaults in brackets):
@@ -37,6 +41,10 @@ struct MappingServiceConfig {
 //   occupancy_chunk_bytes [1048576, in 1024..1048576]
 //   max_window_cells [16777216]   max_abs_coordinate_m [100000]: grid-window request bounds
 //   live_snapshot_interval_s [5, 0 = off]: crash-recovery snapshot in <store_directory>/live
+//   landmarks: {min_detections [3], labels [[]], embedding_dim [64], embedding_weight [0.5],
+//               live_map_id [live], interval_s [2], deadline_ms [2000],
+//               relocalization: {address [empty = no push], tls..., auth...}}: the landmark map
+//               that builds itself from the scene graph (docs/algorithms/relocalization.md)
 // Errors are recorded on `section` (reported with their key path by the caller's Finish()).
 MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section);
 

@@ -47,5 +47,33 @@ TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.grid.p_threshold"));
 }
 
+// Regression: a landmarks section without `relocalization` (or none at all, as in deploy/k8s)
+// must not demand a relocalization address; mapping then pushes nothing.
+TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString("mapping:\n  landmarks: {min_detections: 5, labels: [chair, table], embedding_dim: 0}\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
+  ASSERT_TRUE(root->Finish().ok()) << root->Finish();
+  EXPECT_EQ(config.landmarks.min_detections, 5);
+  EXPECT_EQ(config.landmarks.labels, (std::vector<std::string>{"chair", "table"}));
+  EXPECT_EQ(config.landmarks.embedding_dim, 0);
+  EXPECT_TRUE(config.landmark_publisher.relocalization.address.empty());
+  EXPECT_EQ(config.landmark_publisher.live_map_id, "live");
+}
+
+TEST(MappingConfigYamlTest, LandmarkSettingsAreCheckedWithTheirKeyPath) {
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
+      "mapping:\n  landmarks: {live_map_id: '../x', relocalization: {address: '127.0.0.1:50053'}}\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
+  EXPECT_EQ(config.landmark_publisher.relocalization.address, "127.0.0.1:50053");
+  const absl::Status status = root->Finish();
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.landmarks.live_map_id"));
+}
+
 }  // namespace
 }  // namespace semnav::mapping

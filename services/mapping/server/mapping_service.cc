@@ -6,6 +6,8 @@
 #include "services/common/crypto/sha256.h"
 #include "services/common/status/grpc_status.h"
 #include "services/common/status/value_checks.h"
+#include "services/common/logging/log.h"
+#include "services/mapping/landmarks/saved_landmarks.h"
 #include "services/mapping/server/frame_stream_reactor.h"
 #include "services/mapping/server/proto_convert.h"
 #include "services/mapping/server/watch_reactor.h"
@@ -122,8 +124,18 @@ absl::Status MappingServiceImpl::StartLiveSnapshots() {
   return absl::OkStatus();
 }
 
+absl::Status MappingServiceImpl::StartLandmarkPublisher() {
+  if (config_.landmark_publisher.relocalization.address.empty()) return absl::OkStatus();
+  absl::StatusOr<std::unique_ptr<LandmarkPublisher>> started =
+      LandmarkPublisher::Start(engine_, config_.landmarks, config_.landmark_publisher);
+  if (!started.ok()) return started.status();
+  landmark_publisher_ = *std::move(started);
+  return absl::OkStatus();
+}
+
 void MappingServiceImpl::Shutdown() {
   stopping_.store(true);
+  if (landmark_publisher_ != nullptr) landmark_publisher_->Stop();
   if (live_snapshot_ != nullptr) live_snapshot_->StopAndDiscard();
 }
 
@@ -284,11 +296,43 @@ grpc::ServerUnaryReactor* MappingServiceImpl::QueryObjects(grpc::CallbackServerC
 grpc::ServerUnaryReactor* MappingServiceImpl::SaveMap(grpc::CallbackServerContext* context,
                                                       const v1::SaveMapRequest* request, v1::SaveMapResponse* response) {
   return Reply(context, Idempotent("SaveMap", request->request_id(), response, [&] {
+                 if (absl::Status s = MapStore::ValidateMapId(request->map_id()); !s.ok()) return FromCore(s);
+                 // The landmarks first: a saved occupancy map always has its landmark map.
+                 const std::vector<SceneLandmark> landmarks =
+                     LandmarksFromScene(engine_.Scene().objects, config_.landmarks);
+                 if (absl::Status s = SaveLandmarks(config_.store_directory, request->map_id(), landmarks); !s.ok()) {
+                   return FromCore(s);
+                 }
                  absl::StatusOr<StoredMap> saved = store_.Save(request->map_id(), engine_.Serialize());
                  if (!saved.ok()) return FromCore(saved.status());
+                 if (landmark_publisher_ != nullptr) {
+                   std::vector<relocalization::Landmark> pushed;
+                   for (const SceneLandmark& l : landmarks) pushed.push_back(l.landmark);
+                   landmark_publisher_->PublishSnapshot(request->map_id(), std::move(pushed));
+                 }
                  InfoToProto(*saved, response->mutable_map());
                  return grpc::Status::OK;
                }));
+}
+
+void MappingServiceImpl::PublishLoadedLandmarks(const std::string& map_id) {
+  if (landmark_publisher_ == nullptr) return;
+  landmark_publisher_->SceneReplaced();
+  std::vector<relocalization::Landmark> landmarks;
+  absl::StatusOr<relocalization::LandmarkMap> saved = LoadLandmarks(config_.store_directory, map_id);
+  if (saved.ok()) {
+    landmarks = saved->landmarks();
+  } else {
+    // Saved before landmark maps existed, or the file is damaged: the restored scene graph
+    // holds the same instances, so its landmarks are the ones SaveMap would have written.
+    if (!absl::IsNotFound(saved.status())) {
+      LogWarning("saved_landmarks_unreadable", {{"map_id", map_id}, {"message", saved.status().message()}});
+    }
+    for (SceneLandmark& l : LandmarksFromScene(engine_.Scene().objects, config_.landmarks)) {
+      landmarks.push_back(std::move(l.landmark));
+    }
+  }
+  landmark_publisher_->PublishSnapshot(map_id, std::move(landmarks));
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::LoadMap(grpc::CallbackServerContext* context,
@@ -299,6 +343,7 @@ grpc::ServerUnaryReactor* MappingServiceImpl::LoadMap(grpc::CallbackServerContex
                  if (absl::Status restored = engine_.Restore(*payload); !restored.ok()) {
                    return FromCore(absl::Status(restored.code(), absl::StrCat("map_id: ", restored.message())));
                  }
+                 PublishLoadedLandmarks(request->map_id());
                  absl::StatusOr<StoredMap> info = store_.Stat(request->map_id());
                  if (info.ok()) InfoToProto(*info, response->mutable_map());
                  response->set_revision(engine_.revision());
@@ -317,13 +362,18 @@ grpc::ServerUnaryReactor* MappingServiceImpl::ListMaps(grpc::CallbackServerConte
 grpc::ServerUnaryReactor* MappingServiceImpl::DeleteMap(grpc::CallbackServerContext* context,
                                                         const v1::DeleteMapRequest* request, v1::DeleteMapResponse* response) {
   return Reply(context, Idempotent("DeleteMap", request->request_id(), response,
-                                   [&] { return FromCore(store_.Delete(request->map_id())); }));
+                                   [&] {
+                                     const absl::Status deleted = store_.Delete(request->map_id());
+                                     if (!deleted.ok()) return FromCore(deleted);
+                                     return FromCore(DeleteLandmarks(config_.store_directory, request->map_id()));
+                                   }));
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::ResetMap(grpc::CallbackServerContext* context,
                                                        const v1::ResetMapRequest* request, v1::ResetMapResponse* response) {
   return Reply(context, Idempotent("ResetMap", request->request_id(), response, [&] {
                  engine_.Reset();
+                 if (landmark_publisher_ != nullptr) landmark_publisher_->SceneReplaced();
                  response->set_revision(engine_.revision());
                  return grpc::Status::OK;
                }));

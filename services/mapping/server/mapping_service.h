@@ -8,6 +8,7 @@
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "services/mapping/core/map_store.h"
 #include "services/mapping/core/mapping_engine.h"
+#include "services/mapping/landmarks/landmark_publisher.h"
 #include "services/mapping/server/idempotency_cache.h"
 #include "services/mapping/server/live_snapshot.h"
 #include "services/mapping/server/mapping_config_yaml.h"
@@ -22,6 +23,9 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
   // Restores the live map a crashed predecessor left and snapshots it from now on
   // (config live_snapshot_interval_s; 0 = off).
   absl::Status StartLiveSnapshots();
+  // Pushes the scene graph's landmarks to the relocalization service configured in
+  // landmarks.relocalization.address (no-op when empty).
+  absl::Status StartLandmarkPublisher();
   // Server shutdown hook: ends every watch stream; a clean stop discards the live snapshot.
   void Shutdown();
 
@@ -55,6 +59,9 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
   template <typename Response, typename Call>
   grpc::Status Idempotent(const std::string& method, const std::string& request_id, Response* response, Call call);
 
+  // After LoadMap: hands the map's saved landmarks (or its scene graph's) to relocalization.
+  void PublishLoadedLandmarks(const std::string& map_id);
+
   MappingServiceConfig config_;
   MapStore store_;
   MappingEngine engine_;
@@ -62,6 +69,7 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
   absl::Mutex store_mu_;  // one save/load/delete at a time
   std::atomic<bool> stopping_{false};
   std::unique_ptr<LiveSnapshot> live_snapshot_;
+  std::unique_ptr<LandmarkPublisher> landmark_publisher_;  // null without a relocalization service
 };
 
 }  // namespace semnav::mapping

@@ -1,0 +1,86 @@
+// Mapping's client of the relocalization service: keeps the landmark map of the live scene graph
+// (map id `live_map_id`) up to date, and hands saved/loaded maps' landmarks over under their map
+// id. All pushes run on one background thread with a deadline: frame ingestion and map RPCs never
+// wait for relocalization, and an absent relocalization service is logged, not fatal.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <grpcpp/channel.h>
+
+#include "absl/base/thread_annotations.h"
+#include "absl/status/statusor.h"
+#include "absl/synchronization/mutex.h"
+#include "absl/time/time.h"
+#include "semnav/relocalization/v1/relocalization.grpc.pb.h"
+#include "services/common/client/channel.h"
+#include "services/mapping/core/mapping_engine.h"
+#include "services/mapping/landmarks/scene_landmarks.h"
+
+namespace semnav::mapping {
+
+struct LandmarkPublisherConfig {
+  ClientOptions relocalization;       // address empty = no relocalization service (nothing pushed)
+  std::string live_map_id = "live";   // landmark map of the live scene graph
+  double interval_s = 2.0;            // debounce: at most one live push per interval
+  int deadline_ms = 2000;             // per relocalization call
+};
+
+// INVALID_ARGUMENT naming live_map_id / interval_s / deadline_ms.
+absl::Status ValidateLandmarkPublisherConfig(const LandmarkPublisherConfig& config);
+
+class LandmarkPublisher {
+ public:
+  // Starts the background thread; FAILED_PRECONDITION when the channel cannot be made (bad TLS
+  // files). `engine` must outlive the publisher.
+  static absl::StatusOr<std::unique_ptr<LandmarkPublisher>> Start(const MappingEngine& engine,
+                                                                  const SceneLandmarkConfig& landmarks,
+                                                                  const LandmarkPublisherConfig& config);
+  ~LandmarkPublisher();
+
+  // Queues a whole landmark map to replace the relocalization service's map `map_id` (SaveMap,
+  // LoadMap). Returns at once.
+  void PublishSnapshot(const std::string& map_id, std::vector<relocalization::Landmark> landmarks);
+  // The live scene graph was replaced (LoadMap, ResetMap): its instance ids start over, so the
+  // live landmarks are inserted afresh instead of replacing the old instances' landmarks.
+  void SceneReplaced();
+  void Stop();
+
+ private:
+  struct Snapshot {
+    std::string map_id;
+    std::vector<relocalization::Landmark> landmarks;
+  };
+  LandmarkPublisher(const MappingEngine& engine, const SceneLandmarkConfig& landmarks,
+                    const LandmarkPublisherConfig& config, std::shared_ptr<grpc::Channel> channel);
+  void Run();
+  void PushLive();
+  void PushSnapshot(const Snapshot& snapshot);
+  // Logs a change of reachability once (not every interval).
+  void NoteResult(const grpc::Status& status, absl::string_view what);
+
+  const MappingEngine& engine_;
+  const SceneLandmarkConfig landmarks_;
+  const LandmarkPublisherConfig config_;
+  std::unique_ptr<relocalization::v1::RelocalizationService::Stub> stub_;
+  std::thread thread_;
+
+  mutable absl::Mutex mu_;
+  bool stopping_ ABSL_GUARDED_BY(mu_) = false;
+  std::deque<Snapshot> snapshots_ ABSL_GUARDED_BY(mu_);
+  bool scene_replaced_ ABSL_GUARDED_BY(mu_) = false;
+
+  // Owned by the background thread.
+  uint64_t published_revision_ = 0;
+  bool have_published_ = false;
+  std::map<uint64_t, uint64_t> landmark_of_object_;  // scene instance id -> landmark id
+  bool reachable_ = true;
+};
+
+}  // namespace semnav::mapping
