@@ -2,6 +2,8 @@
 
 #include "absl/strings/cord.h"
 #include "absl/strings/escaping.h"
+#include "absl/strings/match.h"
+#include "absl/strings/strip.h"
 #include "absl/strings/str_cat.h"
 
 namespace semnav {
@@ -28,6 +30,31 @@ std::optional<std::string> ErrorReason(const absl::Status& status) {
   absl::optional<absl::Cord> payload = status.GetPayload(kReasonPayloadUrl);
   if (!payload) return std::nullopt;
   return std::string(*payload);
+}
+
+absl::Status WithField(const absl::Status& status, absl::string_view field) {
+  if (status.ok()) return status;
+  absl::string_view why = status.message();
+  if (const std::optional<std::string> old_field = ErrorField(status)) {
+    absl::ConsumePrefix(&why, absl::StrCat(*old_field, ": "));
+  }
+  absl::Status out(status.code(), absl::StrCat(field, ": ", why));
+  status.ForEachPayload(
+      [&](absl::string_view url, const absl::Cord& payload) { out.SetPayload(url, payload); });
+  out.SetPayload(kFieldPayloadUrl, absl::Cord(field));
+  return out;
+}
+
+absl::Status WithReason(const absl::Status& status, absl::string_view reason) {
+  if (status.ok()) return status;
+  absl::Status out = status;
+  out.SetPayload(kReasonPayloadUrl, absl::Cord(reason));
+  return out;
+}
+
+absl::Status WithDefaultReason(const absl::Status& status, absl::string_view reason) {
+  if (status.ok() || ErrorReason(status).has_value()) return status;
+  return WithReason(status, reason);
 }
 
 std::string Preview(absl::string_view value, size_t max_chars) {

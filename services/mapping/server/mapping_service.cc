@@ -22,7 +22,7 @@ grpc::Status Invalid(absl::string_view field, absl::string_view message) {
   return ToGrpcStatus(FieldError(absl::StatusCode::kInvalidArgument, field, message));
 }
 
-grpc::Status FromCore(const absl::Status& status) { return ToGrpcStatus(WithFieldDetail(status)); }
+grpc::Status FromCore(const absl::Status& status) { return ToGrpcStatus(status); }
 
 grpc::ServerUnaryReactor* Reply(grpc::CallbackServerContext* context, const grpc::Status& status) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
