@@ -64,8 +64,8 @@ void GatewayHub::Tick() {
   }
 }
 
-std::string GatewayHub::StrategyOf(const Task& task) const {
-  return task.planner->strategy().empty() ? config_.planning.exploration_strategy : task.planner->strategy();
+ExplorationStrategy GatewayHub::StrategyOf(const Task& task) const {
+  return task.planner->strategy().value_or(config_.planning.exploration_strategy);
 }
 
 double GatewayHub::Now() const { return absl::ToDoubleSeconds(absl::Now() - start_); }
@@ -122,7 +122,7 @@ api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
     target->mutable_position()->set_y(progress.target->position.y());
     target->mutable_position()->set_z(progress.target->position.z());
     target->set_confidence(progress.target->confidence);
-    target->set_path(progress.target->path == "fast" ? api::RESOLUTION_PATH_FAST : api::RESOLUTION_PATH_SLOW);
+    target->set_path(ToProto(progress.target->path));
   }
   for (const Eigen::Vector3d& point : progress.path) {
     common::v1::Vector3* p = out.add_path();
@@ -137,7 +137,7 @@ api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const {
   out.set_explore_goals(progress.explore_goals);
   out.set_model_requests(progress.model_requests);
   out.set_model_calls(task.model_calls);
-  if (backends_.explorer != nullptr) out.set_exploration_strategy(StrategyOf(task));
+  if (backends_.explorer != nullptr) out.set_exploration_strategy(std::string(ExplorationStrategyName(StrategyOf(task))));
   if (task.search_area.has_value()) *out.mutable_search_area() = ToProto(*task.search_area);
   *out.mutable_created_at() = ToTimestamp(task.created);
   *out.mutable_updated_at() = ToTimestamp(task.updated);
@@ -194,7 +194,8 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   }
 }
 
-std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id, const std::string& strategy) {
+std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id,
+                                                    std::optional<ExplorationStrategy> strategy) {
   return std::make_unique<TaskPlanner>(planner_, backends_.explorer, strategy,
                                        [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
                                          // Called by the executor, under mu_.
@@ -230,7 +231,7 @@ void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
     fitted.grid = GridOverArea(fitted.grid, task.search_area->min, task.search_area->max);
     eroi = fitted;
   }
-  if (StrategyOf(task) == "EROI_UTILITY" && eroi.has_value() && target != nullptr) {
+  if (StrategyOf(task) == ExplorationStrategy::kEroiUtility && eroi.has_value() && target != nullptr) {
     absl::StatusOr<EroiSearch> search =
         EroiSearch::Create(target->text.empty() ? target->name : target->text, *eroi);
     if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
@@ -309,13 +310,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.source = decomposition.source;
   task.search_area = search_area;
   task.created = task.updated = absl::Now();
-  // "" = the configured default; otherwise planning's name ("EROI_UTILITY").
-  const std::string strategy =
-      request.exploration_strategy() == api::EXPLORATION_STRATEGY_UNSPECIFIED
-          ? ""
-          : std::string(absl::StripPrefix(api::ExplorationStrategy_Name(request.exploration_strategy()),
-                                          "EXPLORATION_STRATEGY_"));
-  task.planner = PlannerFor(task_id, strategy);
+  task.planner = PlannerFor(task_id, StrategyFromProto(request.exploration_strategy()));
   InstallExecutor(task, decomposition.subgoals);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());

@@ -205,7 +205,7 @@ class GatewayHub {
   void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The task's path planner with `strategy` ("" = the configured default) and its exploration
   // context.
-  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, const std::string& strategy);
+  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, std::optional<ExplorationStrategy> strategy);
   // The executor's modality and footprint from the robot's latest hello.
   void SetMobility(Task& task, const Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // A new executor for `subgoals` (with the scene graph, the EROI search and the target's text
@@ -231,7 +231,7 @@ class GatewayHub {
   void OnRegionScore(const std::string& task_id, const RegionDue& region, absl::StatusOr<std::string> answer)
       ABSL_LOCKS_EXCLUDED(mu_);
   // The strategy a task explores with: its own, else the configured default.
-  std::string StrategyOf(const Task& task) const;
+  ExplorationStrategy StrategyOf(const Task& task) const;
   void Tick() ABSL_LOCKS_EXCLUDED(mu_);
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
   // shutdown, outside mu_ for the file writes.

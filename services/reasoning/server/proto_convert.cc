@@ -100,6 +100,24 @@ api::TaskStatus ToProto(TaskState state) {
   return api::TASK_STATUS_UNSPECIFIED;
 }
 
+api::ResolutionPath ToProto(ResolutionPath path) {
+  switch (path) {
+    case ResolutionPath::kFast: return api::RESOLUTION_PATH_FAST;
+    case ResolutionPath::kSlow: return api::RESOLUTION_PATH_SLOW;
+  }
+  return api::RESOLUTION_PATH_UNSPECIFIED;
+}
+
+std::optional<ExplorationStrategy> StrategyFromProto(api::ExplorationStrategy strategy) {
+  switch (strategy) {
+    case api::EXPLORATION_STRATEGY_NEAREST_FRONTIER: return ExplorationStrategy::kNearestFrontier;
+    case api::EXPLORATION_STRATEGY_COVERAGE_MAX: return ExplorationStrategy::kCoverageMax;
+    case api::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER: return ExplorationStrategy::kSemanticFrontier;
+    case api::EXPLORATION_STRATEGY_EROI_UTILITY: return ExplorationStrategy::kEroiUtility;
+    default: return std::nullopt;
+  }
+}
+
 RobotPose FromProto(const api::RobotState& state) {
   RobotPose pose;
   const common::v1::Pose& p = state.pose();

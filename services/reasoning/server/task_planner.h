@@ -4,9 +4,10 @@
 #pragma once
 
 #include <functional>
-#include <string>
+#include <optional>
 
 #include "services/reasoning/core/exploration_context.h"
+#include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/navigation_interfaces.h"
 
 namespace semnav::reasoning {
@@ -15,9 +16,9 @@ namespace semnav::reasoning {
 class ExplorationService {
  public:
   virtual ~ExplorationService() = default;
-  // `strategy`: NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY; "" = the
-  // configured default. NOT_FOUND when planning has no goal.
-  virtual absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query, const std::string& strategy,
+  // `strategy`: nullopt = the configured default. NOT_FOUND when planning has no goal.
+  virtual absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query,
+                                                     std::optional<ExplorationStrategy> strategy,
                                                      const ExplorationContext& context) = 0;
 };
 
@@ -25,21 +26,22 @@ class TaskPlanner final : public PathPlanner {
  public:
   // `explorer` may be null (no planning service: the shared planner's exploration fallback).
   // `context` is called for every exploration goal, on the caller's thread.
-  TaskPlanner(PathPlanner* paths, ExplorationService* explorer, std::string strategy,
+  // `strategy`: nullopt = the configured default.
+  TaskPlanner(PathPlanner* paths, ExplorationService* explorer, std::optional<ExplorationStrategy> strategy,
               std::function<ExplorationContext()> context)
-      : paths_(paths), explorer_(explorer), strategy_(std::move(strategy)), context_(std::move(context)) {}
+      : paths_(paths), explorer_(explorer), strategy_(strategy), context_(std::move(context)) {}
 
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override { return paths_->Plan(query); }
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
     if (explorer_ == nullptr) return paths_->ExplorationGoal(query);
     return explorer_->SelectGoal(query, strategy_, context_());
   }
-  const std::string& strategy() const { return strategy_; }
+  std::optional<ExplorationStrategy> strategy() const { return strategy_; }
 
  private:
   PathPlanner* paths_;
   ExplorationService* explorer_;
-  std::string strategy_;
+  std::optional<ExplorationStrategy> strategy_;
   std::function<ExplorationContext()> context_;
 };
 
