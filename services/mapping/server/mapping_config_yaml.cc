@@ -4,7 +4,7 @@
 
 namespace semnav::mapping {
 
-MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
+absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader& section) {
   MappingServiceConfig config;
   MappingConfig& c = config.core;
 
@@ -104,6 +104,7 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
   section.Check(config.live_snapshot_interval_s >= 0 && config.live_snapshot_interval_s <= 3600,
                 "live_snapshot_interval_s", "must be in [0, 3600]");
   section.Check(config.window_limits.max_abs_coordinate_m > 0, "max_abs_coordinate_m", "must be > 0");
+  if (absl::Status s = section.Finish(); !s.ok()) return s;
   return config;
 }
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "absl/status/statusor.h"
 #include "services/common/config/config_reader.h"
 #include "services/mapping/core/mapping_config.h"
 #include "services/mapping/core/window_validation.h"
@@ -18,6 +19,10 @@ struct MappingServiceConfig {
   int occupancy_chunk_bytes = 1 << 20;       // GetOccupancy DataChunk size (protocol max 1 MiB)
   WindowLimits window_limits;                // GetGridMap / WatchGridMap window bounds
   double live_snapshot_interval_s = 5.0;     // crash-recovery snapshot of the live map; 0 = off
+
+  // The settings of `section` (keys below); a bad value, a failed check or an unknown key fails
+  // with its key path (bad values are also recorded on `section`).
+  static absl::StatusOr<MappingServiceConfig> FromYaml(ConfigReader& section);
 };
 
 // Reads the "mapping" YAML section. Keys (defaults in brackets):
@@ -37,7 +42,5 @@ struct MappingServiceConfig {
 //   occupancy_chunk_bytes [1048576, in 1024..1048576]
 //   max_window_cells [16777216]   max_abs_coordinate_m [100000]: grid-window request bounds
 //   live_snapshot_interval_s [5, 0 = off]: crash-recovery snapshot in <store_directory>/live
-// Errors are recorded on `section` (reported with their key path by the caller's Finish()).
-MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section);
 
 }  // namespace semnav::mapping
