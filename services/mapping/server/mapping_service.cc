@@ -151,12 +151,13 @@ grpc::Status MappingServiceImpl::Idempotent(const std::string& method, const std
     return ToGrpcStatus(s);
   }
   absl::MutexLock lock(&store_mu_);
-  if (std::optional<IdempotencyCache::Answer> answer = idempotency_.Find(method, request_id)) {
+  const std::string key = absl::StrCat(method, "/", request_id);
+  if (std::optional<IdempotentAnswer> answer = idempotency_.Find(key)) {
     if (answer->status.ok()) response->ParseFromString(answer->response);
     return answer->status;
   }
   const grpc::Status status = call();
-  idempotency_.Remember(method, request_id, {status, status.ok() ? response->SerializeAsString() : std::string()});
+  idempotency_.Remember(key, {status, status.ok() ? response->SerializeAsString() : std::string()});
   return status;
 }
 

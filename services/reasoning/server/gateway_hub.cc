@@ -25,7 +25,7 @@ GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner
       matcher_(lexicon, config.fast_path.unknown_colour_factor),
       start_(absl::Now()),
       events_(static_cast<std::size_t>(config.retained_events)),
-      requests_(static_cast<std::size_t>(config.idempotency_entries)) {
+      requests_(static_cast<std::size_t>(std::max(1, config.idempotency_entries))) {
   absl::StatusOr<TextSegmenter> segmenter = TextSegmenter::Create();
   if (segmenter.ok()) {
     decomposer_ = std::make_unique<TaskDecomposer>(InstructionParser(lexicon, *std::move(segmenter)), config.decomposer);
@@ -289,7 +289,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
       response.set_task_id(task.task_id);
       response.set_correction_applied(true);
       *response.mutable_task() = Snapshot(task);
-      requests_.Put(key, response.SerializeAsString());
+      requests_.Remember(key, response.SerializeAsString());
       return response;
     }
   }
@@ -318,7 +318,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   StartIfPossible(task);
   response.set_task_id(task_id);
   *response.mutable_task() = Snapshot(task);
-  requests_.Put(key, response.SerializeAsString());
+  requests_.Remember(key, response.SerializeAsString());
   return response;
 }
 
@@ -369,7 +369,7 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, co
   if (absl::Status s = CheckControl(task.robot_id, request.lease_id()); !s.ok()) return s;
   action(task);
   api::TaskSnapshot snapshot = Snapshot(task);
-  requests_.Put(key, snapshot.SerializeAsString());
+  requests_.Remember(key, snapshot.SerializeAsString());
   return snapshot;
 }
 

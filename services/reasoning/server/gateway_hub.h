@@ -20,7 +20,7 @@
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/gateway_journal.h"
 #include "services/reasoning/core/lease_table.h"
-#include "services/reasoning/core/request_cache.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
 #include "services/reasoning/core/topological_memory.h"
@@ -260,7 +260,7 @@ class GatewayHub {
   std::map<std::string, Task> tasks_ ABSL_GUARDED_BY(mu_);
   LeaseTable leases_ ABSL_GUARDED_BY(mu_);
   EventLog events_ ABSL_GUARDED_BY(mu_);
-  RequestCache requests_ ABSL_GUARDED_BY(mu_);
+  FirstAnswerCache<std::string> requests_ ABSL_GUARDED_BY(mu_);  // serialized first answers
   std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_ ABSL_GUARDED_BY(mu_);
   std::map<StreamSink<api::StreamFastTelemetryResponse>*, Subscription<api::StreamFastTelemetryResponse>>
       fast_watchers_ ABSL_GUARDED_BY(mu_);
