@@ -7,6 +7,13 @@
 #include "absl/strings/str_cat.h"
 
 namespace semnav {
+namespace {
+
+// The typed ErrorInfo an adapter's FieldError attaches (grpc_status.h). ToGrpcStatus prefers it
+// to the payloads, so a renamed field or a new reason must not leave a stale one behind.
+constexpr absl::string_view kTypedErrorInfoUrl = "type.googleapis.com/semnav.common.v1.ErrorInfo";
+
+}  // namespace
 
 absl::Status FieldStatus(absl::StatusCode code, absl::string_view field, absl::string_view why,
                          absl::string_view reason) {
@@ -39,8 +46,9 @@ absl::Status WithField(const absl::Status& status, absl::string_view field) {
     absl::ConsumePrefix(&why, absl::StrCat(*old_field, ": "));
   }
   absl::Status out(status.code(), absl::StrCat(field, ": ", why));
-  status.ForEachPayload(
-      [&](absl::string_view url, const absl::Cord& payload) { out.SetPayload(url, payload); });
+  status.ForEachPayload([&](absl::string_view url, const absl::Cord& payload) {
+    if (url != kTypedErrorInfoUrl) out.SetPayload(url, payload);
+  });
   out.SetPayload(kFieldPayloadUrl, absl::Cord(field));
   return out;
 }
@@ -48,6 +56,7 @@ absl::Status WithField(const absl::Status& status, absl::string_view field) {
 absl::Status WithReason(const absl::Status& status, absl::string_view reason) {
   if (status.ok()) return status;
   absl::Status out = status;
+  out.ErasePayload(kTypedErrorInfoUrl);
   out.SetPayload(kReasonPayloadUrl, absl::Cord(reason));
   return out;
 }
