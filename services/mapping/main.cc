@@ -13,10 +13,12 @@ int main(int argc, char** argv) {
   spec.default_listen = "127.0.0.1:50051";
   spec.config_section = "mapping";
   spec.setup = [](semnav::ConfigReader& section, semnav::ServiceHost& host) -> absl::Status {
-    const semnav::mapping::MappingServiceConfig config = semnav::mapping::MappingServiceConfigFromYaml(section);
-    absl::StatusOr<semnav::mapping::MapStore> store = semnav::mapping::MapStore::Open(config.store_directory);
+    absl::StatusOr<semnav::mapping::MappingServiceConfig> config =
+        semnav::mapping::MappingServiceConfig::FromYaml(section);
+    if (!config.ok()) return config.status();
+    absl::StatusOr<semnav::mapping::MapStore> store = semnav::mapping::MapStore::Open(config->store_directory);
     if (!store.ok()) return store.status();
-    auto service = std::make_unique<semnav::mapping::MappingServiceImpl>(config, *std::move(store));
+    auto service = std::make_unique<semnav::mapping::MappingServiceImpl>(*std::move(config), *std::move(store));
     if (absl::Status live = service->StartLiveSnapshots(); !live.ok()) return live;
     if (absl::Status pushed = service->StartLandmarkPublisher(); !pushed.ok()) return pushed;
     semnav::mapping::MappingServiceImpl* raw = service.get();

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   spec.config_section = "planning";
   spec.setup = [](semnav::ConfigReader& section, semnav::ServiceHost& host) -> absl::Status {
     absl::StatusOr<semnav::planning::PlanningConfig> config =
-        semnav::planning::PlanningConfig::FromConfig(section);
+        semnav::planning::PlanningConfig::FromYaml(section);
     if (!config.ok()) return config.status();
     absl::StatusOr<std::shared_ptr<grpc::Channel>> mapping =
         semnav::MakeChannel(config->mapping);

@@ -17,46 +17,64 @@
 
 namespace {
 
+using namespace semnav::reasoning;
+
+// Everything the hub refers to, owned in one place. The hub is declared last, so it is destroyed
+// first; every shared_ptr to it (services, shutdown hooks) keeps the whole stack alive.
+struct GatewayStack {
+  std::unique_ptr<Lexicon> lexicon;
+  std::unique_ptr<RobotLocalPlanner> local_planner;  // paths without a planning service
+  std::unique_ptr<PlanningClient> planning;          // null: no planning service configured
+  std::unique_ptr<ModelProxyClient> model;           // null: offline default
+  std::unique_ptr<ConceptNetCooccurrence> prior;     // null: explore without co-occurrence
+  std::unique_ptr<GatewayHub> hub;
+};
+
 absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
-  using namespace semnav::reasoning;
-  const GatewayConfig config = GatewayConfig::FromYaml(section);
-  absl::StatusOr<Lexicon> lexicon = Lexicon::Load(config.lexicon_path);
+  absl::StatusOr<GatewayConfig> config = GatewayConfig::FromYaml(section);
+  if (!config.ok()) return config.status();
+  auto stack = std::make_shared<GatewayStack>();
+  absl::StatusOr<Lexicon> lexicon = Lexicon::Load(config->lexicon_path);
   if (!lexicon.ok()) return lexicon.status();
-  // Lexicon and planner live as long as the process; the hub refers to them.
-  static const Lexicon* shared_lexicon = new Lexicon(*std::move(lexicon));
-  static PathPlanner* planner = new RobotLocalPlanner();
+  stack->lexicon = std::make_unique<Lexicon>(*std::move(lexicon));
+  stack->local_planner = std::make_unique<RobotLocalPlanner>();
+  PathPlanner* planner = stack->local_planner.get();
   GatewayBackends backends;
-  if (!config.planning.channel.address.empty()) {
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.planning.channel);
+  if (!config->planning.channel.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config->planning.channel);
     if (!channel.ok()) return channel.status();
-    auto* planning = new PlanningClient(*channel, config.planning);
-    planner = planning;
-    backends.explorer = planning;
+    stack->planning = std::make_unique<PlanningClient>(*channel, config->planning);
+    planner = stack->planning.get();
+    backends.explorer = stack->planning.get();
   }
-  if (!config.model_proxy.channel.address.empty()) {
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.model_proxy.channel);
+  if (!config->model_proxy.channel.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config->model_proxy.channel);
     if (!channel.ok()) return channel.status();
-    backends.model = new ModelProxyClient(*channel, config.model_proxy);
+    stack->model = std::make_unique<ModelProxyClient>(*channel, config->model_proxy);
+    backends.model = stack->model.get();
   }
-  if (!config.prior_path.empty()) {
-    absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(config.prior_path);
+  if (!config->prior_path.empty()) {
+    absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(config->prior_path);
     if (prior.ok()) {
-      backends.prior = new ConceptNetCooccurrence(*std::move(prior));
-    } else if (config.prior_path == GatewayConfig::DefaultPriorPath()) {
+      stack->prior = std::make_unique<ConceptNetCooccurrence>(*std::move(prior));
+      backends.prior = stack->prior.get();
+    } else if (config->prior_path == GatewayConfig::DefaultPriorPath()) {
       // The build-time default (the source tree's shared data) may not exist where the binary is
       // installed: explore without co-occurrence rather than not start.
       semnav::LogWarning("commonsense_prior_unavailable",
-                         {{"prior_path", config.prior_path}, {"message", prior.status().message()}});
+                         {{"prior_path", config->prior_path}, {"message", prior.status().message()}});
     } else {
       return absl::Status(prior.status().code(), absl::StrCat("prior_path: ", prior.status().message()));
     }
   }
-  auto hub = std::make_shared<GatewayHub>(config, shared_lexicon, planner, backends);
+  const semnav::ClientOptions mapping = config->mapping;
+  stack->hub = std::make_unique<GatewayHub>(*std::move(config), stack->lexicon.get(), planner, backends);
+  const std::shared_ptr<GatewayHub> hub(stack, stack->hub.get());  // shares the stack's lifetime
   host.AddService(std::make_unique<OperatorServiceImpl>(hub), "semnav.reasoning.v1.OperatorService");
   host.AddService(std::make_unique<RobotSessionServiceImpl>(hub), "semnav.reasoning.v1.RobotSessionService");
   host.OnShutdown([hub] { hub->Shutdown(); });
-  if (!config.mapping.address.empty()) {
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.mapping);
+  if (!mapping.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(mapping);
     if (!channel.ok()) return channel.status();
     auto watcher = std::make_shared<MappingWatcher>(*channel, [hub](const SceneGraph& graph) { hub->OnSceneGraph(graph); });
     hub->SetSceneGraphSync([watcher](absl::Duration timeout) { return watcher->CatchUp(timeout); });
@@ -68,8 +86,11 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return semnav::RunServiceBinary(
-      argc, argv,
-      {"semnav-gateway", "semantic reasoning gateway: instructions -> subgoals -> goals -> robot commands",
-       "127.0.0.1:50050", "gateway", Setup});
+  semnav::ServiceBinarySpec spec;
+  spec.binary = "semnav-gateway";
+  spec.summary = "semantic reasoning gateway: instructions -> subgoals -> goals -> robot commands";
+  spec.default_listen = "127.0.0.1:50050";
+  spec.config_section = "gateway";
+  spec.setup = Setup;
+  return semnav::RunServiceBinary(argc, argv, spec);
 }

@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace semnav::reasoning;
   static semnav::fuzz::RpcHarness* harness = [] {
     semnav::ConfigReader section = semnav::ConfigReader::Empty();
-    GatewayConfig config = GatewayConfig::FromYaml(section);
+    GatewayConfig config = *GatewayConfig::FromYaml(section);
     config.mapping.address.clear();
     config.planning.channel.address.clear();
     config.model_proxy.channel.address.clear();

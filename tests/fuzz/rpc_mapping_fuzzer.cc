@@ -12,7 +12,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static semnav::fuzz::RpcHarness* harness = [] {
     semnav::ConfigReader section = semnav::ConfigReader::Empty();
-    semnav::mapping::MappingServiceConfig config = semnav::mapping::MappingServiceConfigFromYaml(section);
+    semnav::mapping::MappingServiceConfig config = *semnav::mapping::MappingServiceConfig::FromYaml(section);
     config.store_directory = semnav::fuzz::ScratchDir() + "/maps";
     config.live_snapshot_interval_s = 0;
     absl::StatusOr<semnav::mapping::MapStore> store = semnav::mapping::MapStore::Open(config.store_directory);

@@ -13,7 +13,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static semnav::fuzz::RpcHarness* harness = [] {
     semnav::ConfigReader section = semnav::ConfigReader::Empty();
-    absl::StatusOr<semnav::planning::PlanningConfig> config = semnav::planning::PlanningConfig::FromConfig(section);
+    absl::StatusOr<semnav::planning::PlanningConfig> config = semnav::planning::PlanningConfig::FromYaml(section);
     if (!config.ok()) std::abort();
     config->mapping.address = "127.0.0.1:1";
     absl::StatusOr<std::shared_ptr<grpc::Channel>> mapping = semnav::MakeChannel(config->mapping);

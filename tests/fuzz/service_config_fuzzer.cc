@@ -21,12 +21,12 @@ void ReadServiceSection(uint8_t service, ConfigReader& root) {
   switch (service % 5) {
     case 0: {
       ConfigReader section = root.Child("mapping");
-      (void)semnav::mapping::MappingServiceConfigFromYaml(section);
+      (void)semnav::mapping::MappingServiceConfig::FromYaml(section);
       break;
     }
     case 1: {
       ConfigReader section = root.Child("planning");
-      (void)semnav::planning::PlanningConfig::FromConfig(section);
+      (void)semnav::planning::PlanningConfig::FromYaml(section);
       break;
     }
     case 2: {

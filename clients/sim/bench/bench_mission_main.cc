@@ -139,13 +139,12 @@ int main(int argc, char** argv) {
   std::vector<std::string> strategies;
   const std::vector<std::string> requested = absl::StrSplit(flags["--strategies"], ',', absl::SkipEmpty());
   for (const std::string& strategy : requested) {
-    semnav::reasoning::v1::ExplorationStrategy parsed;
-    if (!semnav::reasoning::v1::ExplorationStrategy_Parse(absl::StrCat("EXPLORATION_STRATEGY_", strategy), &parsed) ||
-        parsed == semnav::reasoning::v1::EXPLORATION_STRATEGY_UNSPECIFIED) {
+    const semnav::reasoning::v1::ExplorationStrategy parsed = loop::RequestedStrategy(strategy);
+    if (parsed == semnav::reasoning::v1::EXPLORATION_STRATEGY_UNSPECIFIED) {
       std::cerr << "semnav-bench-mission: --strategies: unknown strategy " << strategy << "\n" << kUsage;
       return 2;
     }
-    if (strategy == "EROI_UTILITY" && !flags.contains("--model-config") && !flags.contains("--model")) {
+    if (parsed == semnav::reasoning::v1::EXPLORATION_STRATEGY_EROI_UTILITY && !flags.contains("--model-config") && !flags.contains("--model")) {
       not_run[strategy] = "no model configured (--model-config): EROI_UTILITY's semantic values come from the "
                           "vision model (seed 000)";
       continue;
@@ -230,7 +229,9 @@ int main(int argc, char** argv) {
       // One robot id per episode: the gateway keeps a robot's topological memory across
       // sessions, and which episodes ran before on this stack depends on --jobs.
       spec.robot_id = absl::StrCat(spec.robot_id, "-", spec.strategy, "-", jobs[j].episode);
-      spec.camera_frames = spec.strategy == "EROI_UTILITY";  // the VLM's input (seed 000)
+      // The VLM's input (seed 000).
+      spec.camera_frames =
+          loop::RequestedStrategy(spec.strategy) == semnav::reasoning::v1::EXPLORATION_STRATEGY_EROI_UTILITY;
       spec.max_steps = max_steps;
       sim::vlm::SimVlmServer::Served model_before;
       if (sim_model) {  // this episode's world and frames (the worker's episodes run one at a time)

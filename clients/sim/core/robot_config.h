@@ -4,7 +4,7 @@
 #include "clients/sim/core/camera_model.h"
 #include "clients/sim/core/depth_noise.h"
 #include "clients/sim/core/detector.h"
-#include "clients/sim/core/energy_model.h"
+#include "services/planning/core/energy_model.h"
 #include "clients/sim/core/odometry.h"
 #include "clients/sim/core/world.h"
 
@@ -23,7 +23,7 @@ struct RobotConfig {
   double camera_height = 0.88;      // above the base (the Habitat agent's camera height)
   double camera_pitch = 0.0;        // rad, positive looks down
   double collision_step = 0.05;     // m between collision checks along a motion
-  EnergyModel energy;
+  planning::EnergyModel energy;  // seed 003: 400 J/m rolling, 800 J/m flying
 
   // Defaults per modality: ground robot; UAV (seed 000 limits: 1 m/s, 2 rad/s; camera
   // pitched 0.3 rad down); fly-roll sphere (seed 003: 330 mm frame, 1 m/s flight).

@@ -52,10 +52,7 @@ absl::StatusOr<api::TaskSnapshot> Submit(api::OperatorService::Stub& op, const E
                                       std::chrono::steady_clock::now().time_since_epoch().count()));
   request.set_robot_id(spec.robot_id);
   request.set_instruction(SearchInstruction(spec.target));
-  api::ExplorationStrategy strategy;
-  if (api::ExplorationStrategy_Parse(absl::StrCat("EXPLORATION_STRATEGY_", spec.strategy), &strategy)) {
-    request.set_exploration_strategy(strategy);
-  }
+  request.set_exploration_strategy(RequestedStrategy(spec.strategy));
   *request.mutable_search_area() = SearchAreaOf(spec.world);
   api::SubmitInstructionResponse response;
   grpc::ClientContext context;
@@ -148,6 +145,14 @@ absl::Status ExecuteCommands(RobotSession& session, CommandExecutor& executor, c
 }
 
 }  // namespace
+
+api::ExplorationStrategy RequestedStrategy(const std::string& label) {
+  api::ExplorationStrategy strategy = api::EXPLORATION_STRATEGY_UNSPECIFIED;
+  if (!api::ExplorationStrategy_Parse(absl::StrCat("EXPLORATION_STRATEGY_", label), &strategy)) {
+    return api::EXPLORATION_STRATEGY_UNSPECIFIED;
+  }
+  return strategy;
+}
 
 absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoints& endpoints,
                                          const StepObserver& observer) {

@@ -8,11 +8,16 @@
 
 #include "absl/status/statusor.h"
 #include "clients/sim/loop/episode_spec.h"
+#include "semnav/reasoning/v1/operator.pb.h"
 
 namespace semnav::sim::loop {
 
 // Called after every step (progress display); may be empty.
 using StepObserver = std::function<void(int step, const EpisodeResult& so_far)>;
+
+// The strategy an episode's label names ("EROI_UTILITY"); UNSPECIFIED for another label
+// ("smoke"), which leaves the gateway's configured default.
+reasoning::v1::ExplorationStrategy RequestedStrategy(const std::string& label);
 
 absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoints& endpoints,
                                          const StepObserver& observer = {});

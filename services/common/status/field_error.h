@@ -25,6 +25,16 @@ absl::Status InvalidField(absl::string_view field, absl::string_view why);
 std::optional<std::string> ErrorField(const absl::Status& status);
 std::optional<std::string> ErrorReason(const absl::Status& status);
 
+// The same error about `field` instead: for an adapter whose request names the field
+// differently from core (two map ids in one request). The "<old field>: " message prefix core
+// wrote is replaced; an error that named no field gets one. Code and reason are kept.
+absl::Status WithField(const absl::Status& status, absl::string_view field);
+// The same error with `reason` as its stable reason (the field, if any, is kept).
+absl::Status WithReason(const absl::Status& status, absl::string_view reason);
+// The same error with `reason` only where core gave none: adapters name the failing step
+// (ALIGNMENT_FAILED, ...) while field errors keep the reason core chose.
+absl::Status WithDefaultReason(const absl::Status& status, absl::string_view reason);
+
 // A bad value as it may appear in a message: at most `max_chars` characters, then the size, so
 // a 1 MB id is never echoed back (clients have an 8 KB metadata limit).
 std::string Preview(absl::string_view value, size_t max_chars = 32);

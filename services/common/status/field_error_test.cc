@@ -24,6 +24,29 @@ TEST(FieldErrorTest, CarriesFieldAndReasonBesideTheMessage) {
   EXPECT_FALSE(ErrorField(absl::InternalError("x")).has_value());
 }
 
+TEST(FieldErrorTest, WithFieldRenamesTheFieldAndKeepsCodeAndReason) {
+  const absl::Status core = FieldStatus(absl::StatusCode::kNotFound, "map_id", "no map \"a\"", "MAP_NOT_FOUND");
+  const absl::Status renamed = WithField(core, "reference_map_id");
+  EXPECT_EQ(renamed.code(), absl::StatusCode::kNotFound);
+  EXPECT_EQ(renamed.message(), "reference_map_id: no map \"a\"");
+  EXPECT_EQ(ErrorField(renamed), "reference_map_id");
+  EXPECT_EQ(ErrorReason(renamed), "MAP_NOT_FOUND");
+  // An error that named no field gets one in front of its whole message.
+  const absl::Status unnamed = WithField(absl::DataLossError("file x is corrupt"), "map_id");
+  EXPECT_EQ(unnamed.message(), "map_id: file x is corrupt");
+  EXPECT_EQ(ErrorField(unnamed), "map_id");
+  EXPECT_EQ(ErrorReason(unnamed), std::nullopt);
+}
+
+TEST(FieldErrorTest, DefaultReasonNeverOverridesTheOneCoreChose) {
+  EXPECT_EQ(ErrorReason(WithDefaultReason(InvalidField("top_k", "must be > 0"), "STEP_FAILED")), "FIELD_INVALID");
+  const absl::Status plain = WithDefaultReason(absl::NotFoundError("no consistent match"), "STEP_FAILED");
+  EXPECT_EQ(ErrorReason(plain), "STEP_FAILED");
+  EXPECT_EQ(ErrorField(plain), std::nullopt);
+  EXPECT_EQ(ErrorReason(WithReason(InvalidField("a", "b"), "OTHER")), "OTHER");
+  EXPECT_TRUE(WithReason(absl::OkStatus(), "OTHER").ok());
+}
+
 TEST(FieldErrorTest, PreviewKeepsAShortEscapedPrefixAndTheSize) {
   EXPECT_EQ(Preview("robot-1"), "robot-1");
   EXPECT_EQ(Preview(std::string(100, 'a'), 4), "aaaa... (100 bytes)");

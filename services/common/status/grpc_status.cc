@@ -66,7 +66,9 @@ void AttachDetail(absl::Status& status, const google::protobuf::Message& detail)
 
 absl::Status FieldError(absl::StatusCode code, absl::string_view field, absl::string_view message,
                         absl::string_view reason) {
-  absl::Status status(code, absl::StrCat(field, ": ", message));
+  // Core's FieldStatus plus the typed detail, for adapters and clients that read it before
+  // ToGrpcStatus.
+  absl::Status status = FieldStatus(code, field, message, reason);
   semnav::common::v1::ErrorInfo info;
   info.set_reason(std::string(reason));
   info.set_field(std::string(field));

@@ -45,6 +45,17 @@ TEST(GrpcStatusTest, FieldErrorCarriesTypedDetailAcrossTheAdapter) {
   EXPECT_EQ(again->field(), "frame.depth.width");
 }
 
+TEST(GrpcStatusTest, RenamingAnAdapterFieldErrorLeavesNoStaleDetail) {
+  const absl::Status adapter = FieldError(absl::StatusCode::kNotFound, "map_id", "no map", "MAP_NOT_FOUND");
+  EXPECT_EQ(ErrorField(adapter), "map_id");  // the same payloads core's FieldStatus carries
+  const grpc::Status wire = ToGrpcStatus(WithReason(WithField(adapter, "moving_map_id"), "OTHER"));
+  EXPECT_EQ(wire.error_message(), "moving_map_id: no map");
+  std::optional<ErrorInfo> info = GetDetail<ErrorInfo>(wire);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "moving_map_id");
+  EXPECT_EQ(info->reason(), "OTHER");
+}
+
 TEST(GrpcStatusTest, AttachDetailReplacesSameTypeAndIgnoresOk) {
   absl::Status status = absl::FailedPreconditionError("no map");
   ErrorInfo first;

@@ -120,9 +120,10 @@ absl::Status ValidateFrame(const SensorFrame& frame, const ValidationContext& co
   if (frame.robot_id.empty()) return InvalidField("robot_id", "must not be empty");
   if (absl::Status s = CheckLength(frame.robot_id, "robot_id", kMaxIdBytes); !s.ok()) return s;
   if (context.last_stamp_ns.has_value() && frame.stamp_ns < *context.last_stamp_ns) {
-    return absl::FailedPreconditionError(absl::StrCat(
-        "stamp: ", frame.stamp_ns, " ns goes backwards for robot ", frame.robot_id,
-        " (last accepted ", *context.last_stamp_ns, " ns)"));
+    return FieldStatus(absl::StatusCode::kFailedPrecondition, "stamp",
+                       absl::StrCat(frame.stamp_ns, " ns goes backwards for robot ", frame.robot_id,
+                                    " (last accepted ", *context.last_stamp_ns, " ns)"),
+                       "FAILED_PRECONDITION");
   }
   if (absl::Status s = ValidateGeometry(frame); !s.ok()) return s;
   if (absl::Status s = CheckCount(frame.lidar_points.size(), "lidar_points", kMaxLidarPoints);

@@ -15,6 +15,11 @@ namespace {
 constexpr char kMagic[] = "SNMAP1\n";
 constexpr char kSuffix[] = ".snmap";
 
+absl::Status NoStoredMap(absl::string_view map_id) {
+  return FieldStatus(absl::StatusCode::kNotFound, "map_id", absl::StrCat("no stored map '", map_id, "'"),
+                     "NOT_FOUND");
+}
+
 }  // namespace
 
 absl::Status MapStore::ValidateMapId(const std::string& map_id) {
@@ -47,16 +52,19 @@ absl::StatusOr<StoredMap> MapStore::Save(const std::string& map_id, const std::s
 absl::StatusOr<std::string> MapStore::Load(const std::string& map_id) const {
   if (absl::Status s = ValidateMapId(map_id); !s.ok()) return s;
   absl::StatusOr<std::string> file = storage::ReadWholeFile(PathOf(map_id));
-  if (absl::IsNotFound(file.status())) return absl::NotFoundError(absl::StrCat("map_id: no stored map '", map_id, "'"));
+  if (absl::IsNotFound(file.status())) return NoStoredMap(map_id);
   if (!file.ok()) return file.status();
-  return storage::PayloadOfFrame(kMagic, *file, absl::StrCat("map_id: stored map '", map_id, "'"));
+  absl::StatusOr<std::string> payload =
+      storage::PayloadOfFrame(kMagic, *file, absl::StrCat("stored map '", map_id, "'"));
+  if (!payload.ok()) return WithField(payload.status(), "map_id");
+  return payload;
 }
 
 absl::StatusOr<StoredMap> MapStore::Stat(const std::string& map_id) const {
   std::error_code error;
   const std::string path = PathOf(map_id);
   const uintmax_t size = std::filesystem::file_size(path, error);
-  if (error) return absl::NotFoundError(absl::StrCat("map_id: no stored map '", map_id, "'"));
+  if (error) return NoStoredMap(map_id);
   const auto written = std::filesystem::last_write_time(path, error);
   const auto system_time = std::chrono::file_clock::to_sys(written);
   return StoredMap{map_id, size,
@@ -81,7 +89,7 @@ absl::StatusOr<std::vector<StoredMap>> MapStore::List() const {
 absl::Status MapStore::Delete(const std::string& map_id) const {
   if (absl::Status s = ValidateMapId(map_id); !s.ok()) return s;
   const absl::Status removed = storage::RemoveFileDurably(PathOf(map_id));
-  if (absl::IsNotFound(removed)) return absl::NotFoundError(absl::StrCat("map_id: no stored map '", map_id, "'"));
+  if (absl::IsNotFound(removed)) return NoStoredMap(map_id);
   return removed;
 }
 

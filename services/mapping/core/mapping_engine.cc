@@ -101,7 +101,7 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
     const cv::Mat encoded(1, static_cast<int>(frame.rgb_encoded.size()), CV_8U,
                           const_cast<char*>(frame.rgb_encoded.data()));
     const cv::Mat gray = cv::imdecode(encoded, cv::IMREAD_GRAYSCALE);
-    if (gray.empty()) return absl::InvalidArgumentError("rgb.data: not a decodable PNG or JPEG image");
+    if (gray.empty()) return InvalidField("rgb.data", "not a decodable PNG or JPEG image");
     result.blurred = LaplacianVariance(gray) < config_.blur_min_laplacian_variance;
   }
 
@@ -308,8 +308,8 @@ absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQ
   absl::MutexLock lock(&mu_);
   if (!query.embedding.empty() && state_->embedding_dim != 0 &&
       static_cast<int>(query.embedding.size()) != state_->embedding_dim) {
-    return absl::InvalidArgumentError(absl::StrCat("embedding: length ", query.embedding.size(),
-                                                   " != map embedding length ", state_->embedding_dim));
+    return InvalidField("embedding", absl::StrCat("length ", query.embedding.size(),
+                                                  " != map embedding length ", state_->embedding_dim));
   }
   std::vector<ObjectHit> hits;
   for (const SceneObject& o : state_->scene.objects()) {
@@ -356,8 +356,10 @@ absl::Status MappingEngine::Restore(const std::string& payload) {
   absl::StatusOr<MapContent> content = ParseMap(payload);
   if (!content.ok()) return content.status();
   if (content->tree->getResolution() != config_.octomap_resolution_m) {
-    return absl::FailedPreconditionError(absl::StrCat("map_id: stored octree resolution ", content->tree->getResolution(),
-                                                      " m differs from the configured ", config_.octomap_resolution_m, " m"));
+    return FieldStatus(absl::StatusCode::kFailedPrecondition, "map_id",
+                       absl::StrCat("stored octree resolution ", content->tree->getResolution(),
+                                    " m differs from the configured ", config_.octomap_resolution_m, " m"),
+                       "FAILED_PRECONDITION");
   }
   absl::MutexLock lock(&mu_);
   state_->Adopt(std::move(*content), config_);

@@ -3,6 +3,7 @@
 #include "absl/status/statusor.h"
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
+#include "services/common/status/field_error.h"
 #include "services/mapping/server/proto_convert.h"
 
 namespace semnav::mapping {
@@ -27,11 +28,10 @@ void FrameStreamReactor::OnReadDone(bool ok) {
     ack->set_blurred(result->blurred);
   } else {
     const absl::string_view message = result.status().message();
-    const size_t colon = message.find(':');
     ack->set_accepted(false);
     ack->set_revision(engine_.revision());
     ack->mutable_error()->set_reason(absl::StatusCodeToString(result.status().code()));
-    ack->mutable_error()->set_field(std::string(colon == absl::string_view::npos ? "" : message.substr(0, colon)));
+    ack->mutable_error()->set_field(ErrorField(result.status()).value_or(""));
     (*ack->mutable_error()->mutable_metadata())["message"] = std::string(message);
     LogInfo("frame_rejected", {{"sequence", ack->sequence()}, {"error", message}});
   }

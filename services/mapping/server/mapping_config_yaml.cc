@@ -1,10 +1,14 @@
 #include "services/mapping/server/mapping_config_yaml.h"
 
 #include <algorithm>
+#include <string>
+
+#include "absl/strings/strip.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::mapping {
 
-MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
+absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader& section) {
   MappingServiceConfig config;
   MappingConfig& c = config.core;
 
@@ -120,14 +124,15 @@ MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section) {
     ConfigReader relocalization = landmarks.Child("relocalization");
     p.relocalization = ClientOptions::FromConfig(relocalization, p.relocalization);
   }
-  // Field errors name the key; the reader reports them under "landmarks.<key>".
+  // Core names the key in the error's payload; the reader reports it as "landmarks.<key>".
   for (const absl::Status& s : {ValidateSceneLandmarkConfig(l), ValidateLandmarkPublisherConfig(p)}) {
     if (s.ok()) continue;
-    const std::string message(s.message());
-    const size_t colon = message.find(": ");
-    landmarks.Check(false, colon == std::string::npos ? "landmarks" : message.substr(0, colon),
-                    colon == std::string::npos ? message : message.substr(colon + 2));
+    const std::string key = ErrorField(s).value_or("landmarks");
+    absl::string_view why = s.message();
+    absl::ConsumePrefix(&why, key + ": ");
+    landmarks.Check(false, key, std::string(why));
   }
+  if (absl::Status s = section.Finish(); !s.ok()) return s;
   return config;
 }
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "absl/status/statusor.h"
 #include "services/common/config/config_reader.h"
 #include "services/mapping/core/mapping_config.h"
 #include "services/mapping/core/window_validation.h"
@@ -22,6 +23,10 @@ struct MappingServiceConfig {
   double live_snapshot_interval_s = 5.0;     // crash-recovery snapshot of the live map; 0 = off
   SceneLandmarkConfig landmarks;             // scene-graph instances -> relocalization landmarks
   LandmarkPublisherConfig landmark_publisher;  // where and how often they are pushed
+
+  // The settings of `section` (keys below); a bad value, a failed check or an unknown key fails
+  // with its key path (bad values are also recorded on `section`).
+  static absl::StatusOr<MappingServiceConfig> FromYaml(ConfigReader& section);
 };
 
 // Reads the "mapping" YAML section. Keys (defaults in brackets):
@@ -45,7 +50,5 @@ struct MappingServiceConfig {
 //               live_map_id [live], interval_s [2], deadline_ms [2000],
 //               relocalization: {address [empty = no push], tls..., auth...}}: the landmark map
 //               that builds itself from the scene graph (docs/algorithms/relocalization.md)
-// Errors are recorded on `section` (reported with their key path by the caller's Finish()).
-MappingServiceConfig MappingServiceConfigFromYaml(ConfigReader& section);
 
 }  // namespace semnav::mapping

@@ -11,8 +11,9 @@ using ::testing::HasSubstr;
 TEST(MappingConfigYamlTest, DefaultsFollowTheSeeds) {
   ConfigReader root = ConfigReader::Empty();
   ConfigReader section = root.Child("mapping");
-  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
-  ASSERT_TRUE(root.Finish().ok());
+  const absl::StatusOr<MappingServiceConfig> loaded = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const MappingServiceConfig& config = *loaded;
   EXPECT_EQ(config.core.grid.p_threshold, 0.65);       // seed 003 eq. 9
   EXPECT_EQ(config.core.layers.obstacle_kernel, 9);    // seed 004
   EXPECT_EQ(config.core.lift.erosion_keep_above, 23.5);  // seed 004
@@ -28,21 +29,24 @@ TEST(MappingConfigYamlTest, ChunkSizeStaysWithinTheProtocolLimit) {
   absl::StatusOr<ConfigReader> root = ConfigReader::FromString("mapping:\n  occupancy_chunk_bytes: 2097152\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
-  MappingServiceConfigFromYaml(section);
-  const absl::Status status = root->Finish();
+  const absl::Status status = MappingServiceConfig::FromYaml(section).status();
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.occupancy_chunk_bytes"));
 }
 
 TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
-  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
-      "mapping:\n  octomap: {resolution_m: 0.1}\n  synonyms: {sofa: [couch, settee]}\n  grid: {p_threshold: 1.5}\n");
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString("mapping:\n  octomap: {resolution_m: 0.1}\n  synonyms: {sofa: [couch, settee]}\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
-  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
-  EXPECT_EQ(config.core.octomap_resolution_m, 0.1);
-  EXPECT_EQ(config.core.synonyms.at("sofa"), (std::vector<std::string>{"couch", "settee"}));
-  const absl::Status status = root->Finish();
+  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->core.octomap_resolution_m, 0.1);
+  EXPECT_EQ(config->core.synonyms.at("sofa"), (std::vector<std::string>{"couch", "settee"}));
+  absl::StatusOr<ConfigReader> bad = ConfigReader::FromString("mapping:\n  grid: {p_threshold: 1.5}\n");
+  ASSERT_TRUE(bad.ok());
+  ConfigReader bad_section = bad->Child("mapping");
+  const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.grid.p_threshold"));
 }
@@ -54,13 +58,13 @@ TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
       ConfigReader::FromString("mapping:\n  landmarks: {min_detections: 5, labels: [chair, table], embedding_dim: 0}\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
-  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
-  ASSERT_TRUE(root->Finish().ok()) << root->Finish();
-  EXPECT_EQ(config.landmarks.min_detections, 5);
-  EXPECT_EQ(config.landmarks.labels, (std::vector<std::string>{"chair", "table"}));
-  EXPECT_EQ(config.landmarks.embedding_dim, 0);
-  EXPECT_TRUE(config.landmark_publisher.relocalization.address.empty());
-  EXPECT_EQ(config.landmark_publisher.live_map_id, "live");
+  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->landmarks.min_detections, 5);
+  EXPECT_EQ(config->landmarks.labels, (std::vector<std::string>{"chair", "table"}));
+  EXPECT_EQ(config->landmarks.embedding_dim, 0);
+  EXPECT_TRUE(config->landmark_publisher.relocalization.address.empty());
+  EXPECT_EQ(config->landmark_publisher.live_map_id, "live");
 }
 
 TEST(MappingConfigYamlTest, LandmarkSettingsAreCheckedWithTheirKeyPath) {
@@ -68,9 +72,7 @@ TEST(MappingConfigYamlTest, LandmarkSettingsAreCheckedWithTheirKeyPath) {
       "mapping:\n  landmarks: {live_map_id: '../x', relocalization: {address: '127.0.0.1:50053'}}\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
-  const MappingServiceConfig config = MappingServiceConfigFromYaml(section);
-  EXPECT_EQ(config.landmark_publisher.relocalization.address, "127.0.0.1:50053");
-  const absl::Status status = root->Finish();
+  const absl::Status status = MappingServiceConfig::FromYaml(section).status();
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.landmarks.live_map_id"));
 }

@@ -22,7 +22,7 @@ grpc::Status Invalid(absl::string_view field, absl::string_view message) {
   return ToGrpcStatus(FieldError(absl::StatusCode::kInvalidArgument, field, message));
 }
 
-grpc::Status FromCore(const absl::Status& status) { return ToGrpcStatus(WithFieldDetail(status)); }
+grpc::Status FromCore(const absl::Status& status) { return ToGrpcStatus(status); }
 
 grpc::ServerUnaryReactor* Reply(grpc::CallbackServerContext* context, const grpc::Status& status) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
@@ -148,12 +148,13 @@ grpc::Status MappingServiceImpl::Idempotent(const std::string& method, const std
     return ToGrpcStatus(s);
   }
   absl::MutexLock lock(&store_mu_);
-  if (std::optional<IdempotencyCache::Answer> answer = idempotency_.Find(method, request_id)) {
+  const std::string key = absl::StrCat(method, "/", request_id);
+  if (std::optional<IdempotentAnswer> answer = idempotency_.Find(key)) {
     if (answer->status.ok()) response->ParseFromString(answer->response);
     return answer->status;
   }
   const grpc::Status status = call();
-  idempotency_.Remember(method, request_id, {status, status.ok() ? response->SerializeAsString() : std::string()});
+  idempotency_.Remember(key, {status, status.ok() ? response->SerializeAsString() : std::string()});
   return status;
 }
 

@@ -8,8 +8,8 @@
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "services/mapping/core/map_store.h"
 #include "services/mapping/core/mapping_engine.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/mapping/landmarks/landmark_publisher.h"
-#include "services/mapping/server/idempotency_cache.h"
 #include "services/mapping/server/live_snapshot.h"
 #include "services/mapping/server/mapping_config_yaml.h"
 
@@ -61,11 +61,16 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
 
   // After LoadMap: hands the map's saved landmarks (or its scene graph's) to relocalization.
   void PublishLoadedLandmarks(const std::string& map_id);
+  // A transactional call's first answer: its status and, when OK, the serialized response.
+  struct IdempotentAnswer {
+    grpc::Status status;
+    std::string response;
+  };
 
   MappingServiceConfig config_;
   MapStore store_;
   MappingEngine engine_;
-  IdempotencyCache idempotency_;
+  FirstAnswerCache<IdempotentAnswer> idempotency_;  // by "<method>/<request_id>", under store_mu_
   absl::Mutex store_mu_;  // one save/load/delete at a time
   std::atomic<bool> stopping_{false};
   std::unique_ptr<LiveSnapshot> live_snapshot_;

@@ -79,7 +79,7 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
   if (proto.has_rgb()) {
     const ImageEncoding e = proto.rgb().encoding();
     if (e != semnav::common::v1::IMAGE_ENCODING_PNG && e != semnav::common::v1::IMAGE_ENCODING_JPEG) {
-      return absl::InvalidArgumentError("rgb.encoding: must be IMAGE_ENCODING_PNG or IMAGE_ENCODING_JPEG");
+      return InvalidField("rgb.encoding", "must be IMAGE_ENCODING_PNG or IMAGE_ENCODING_JPEG");
     }
     frame.rgb_encoded = proto.rgb().data();
   }
@@ -93,8 +93,8 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
       const auto& m = d.mask();
       if (m.encoding() != semnav::common::v1::IMAGE_ENCODING_MONO8 || m.width() != k.width() ||
           m.height() != k.height() || m.data().size() != static_cast<size_t>(k.width()) * k.height()) {
-        return absl::InvalidArgumentError(absl::StrCat(
-            "detections[", i, "].mask: must be an IMAGE_ENCODING_MONO8 image of the depth image's size"));
+        return InvalidField(absl::StrCat("detections[", i, "].mask"),
+                            "must be an IMAGE_ENCODING_MONO8 image of the depth image's size");
       }
       det.mask.assign(m.data().begin(), m.data().end());
     }
@@ -108,7 +108,7 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
 absl::Status CheckLayerKinds(const google::protobuf::RepeatedField<int>& kinds, absl::string_view field) {
   for (int kind : kinds) {
     if (!semnav::common::v1::GridLayerKind_IsValid(kind) || kind == semnav::common::v1::GRID_LAYER_KIND_UNSPECIFIED) {
-      return absl::InvalidArgumentError(absl::StrCat(field, ": unknown or unspecified layer kind ", kind));
+      return InvalidField(field, absl::StrCat("unknown or unspecified layer kind ", kind));
     }
   }
   return absl::OkStatus();
@@ -196,16 +196,6 @@ void SceneToProto(const SceneSnapshot& scene, v1::SceneGraph* proto) {
     SetVec(r.centre, region->mutable_centre());
   }
   proto->set_summary(scene.summary);
-}
-
-absl::Status WithFieldDetail(absl::Status status) {
-  // Core errors made with InvalidField/FieldStatus already name their field and reason.
-  if (status.ok() || ErrorField(status).has_value()) return status;
-  const absl::string_view message = status.message();
-  const size_t colon = message.find(':');
-  if (colon == absl::string_view::npos) return status;
-  return FieldError(status.code(), message.substr(0, colon), absl::StripLeadingAsciiWhitespace(message.substr(colon + 1)),
-                    absl::StatusCodeToString(status.code()));
 }
 
 }  // namespace semnav::mapping

@@ -25,8 +25,5 @@ v1::RelationKind RelationToProto(RelationKind kind);
 // INVALID_ARGUMENT naming `field` unless every kind is a defined, specified GridLayerKind.
 absl::Status CheckLayerKinds(const google::protobuf::RepeatedField<int>& kinds, absl::string_view field);
 
-// Adds an ErrorInfo detail {reason = code name, field = text before the first ':'} to a core
-// error whose message starts with the field path ("depth.width: ...").
-absl::Status WithFieldDetail(absl::Status status);
 
 }  // namespace semnav::mapping

@@ -47,13 +47,14 @@ TEST(ProtoConvertTest, RejectsWrongRgbEncodingAndMaskSize) {
   EXPECT_EQ(FrameFromProto(proto).status().message().substr(0, 19), "detections[0].mask:");
 }
 
-TEST(ProtoConvertTest, FieldDetailNamesTheField) {
-  const absl::Status status = WithFieldDetail(absl::InvalidArgumentError("depth.width: depth is 2x1"));
-  const std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(status);
+TEST(ProtoConvertTest, ConversionErrorsNameTheirFieldInErrorInfo) {
+  v1::SensorFrame proto = TinyFrame();
+  proto.mutable_rgb()->set_encoding(semnav::common::v1::IMAGE_ENCODING_RGB8);
+  const grpc::Status wire = ToGrpcStatus(FrameFromProto(proto).status());
+  const std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(wire);
   ASSERT_TRUE(info.has_value());
-  EXPECT_EQ(info->field(), "depth.width");
-  EXPECT_EQ(info->reason(), "INVALID_ARGUMENT");
-  EXPECT_EQ(status.message(), "depth.width: depth is 2x1");
+  EXPECT_EQ(info->field(), "rgb.encoding");
+  EXPECT_EQ(info->reason(), "FIELD_INVALID");
 }
 
 }  // namespace

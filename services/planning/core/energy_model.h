@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cmath>
+
 namespace semnav::planning {
 
 // Energy per metre of the flying-rolling robot (seed 003, sec. 3.1).
@@ -16,6 +18,15 @@ struct EnergyModel {
 
   // Eq. 12: E2(d) = P_hover / v * d.
   double FlyingJPerM() const { return hover_power_w / flight_speed_mps; }
+
+  // Joules to roll / fly `metres`.
+  double Roll(double metres) const { return rolling_j_per_m * metres; }
+  double Fly(double metres) const { return FlyingJPerM() * metres; }
 };
+
+// Eq. 11: ideal hover power of a rotorcraft, P = (m g)^(3/2) / sqrt(2 rho A_r).
+inline double HoverPower(double mass_kg, double gravity, double air_density, double rotor_area_m2) {
+  return std::pow(mass_kg * gravity, 1.5) / std::sqrt(2.0 * air_density * rotor_area_m2);
+}
 
 }  // namespace semnav::planning

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 #include "services/planning/core/plan_failure.h"
 
 namespace semnav::planning {
@@ -10,8 +11,8 @@ namespace {
 
 absl::Status CheckInside(const PassabilityGrid& grid, Cell c, absl::string_view field) {
   if (grid.Contains(c)) return absl::OkStatus();
-  return absl::InvalidArgumentError(absl::StrCat(field, " (", c.x, ", ", c.y, ") is outside the ",
-                                                 grid.width(), " x ", grid.height(), " grid"));
+  return InvalidField(field, absl::StrCat(field, " (", c.x, ", ", c.y, ") is outside the ",
+                                          grid.width(), " x ", grid.height(), " grid"));
 }
 
 }  // namespace

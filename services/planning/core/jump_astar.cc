@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 #include "services/planning/core/grid_path.h"
 #include "services/planning/core/grid_search_common.h"
 #include "services/planning/core/jump_scan.h"
@@ -73,8 +74,7 @@ void Summarise(const LayeredGrid& grid, const JumpAStarOptions& options, MultiMo
 absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell goal) {
   for (auto [cell, field] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
     if (!grid.Contains(cell)) {
-      return absl::InvalidArgumentError(
-          absl::StrCat(field, " (", cell.x, ", ", cell.y, ") is outside the grid"));
+      return InvalidField(field, absl::StrCat(field, " (", cell.x, ", ", cell.y, ") is outside the grid"));
     }
   }
   if (grid.at(start) >= kStructureValue) {

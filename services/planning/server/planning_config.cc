@@ -4,7 +4,7 @@
 
 namespace semnav::planning {
 
-absl::StatusOr<PlanningConfig> PlanningConfig::FromConfig(ConfigReader& section) {
+absl::StatusOr<PlanningConfig> PlanningConfig::FromYaml(ConfigReader& section) {
   PlanningConfig config;
   ConfigReader grid = section.Child("grid");
   grid.Read("occupied_percent", &config.occupied_percent)

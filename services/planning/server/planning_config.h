@@ -48,7 +48,7 @@ struct PlanningConfig {
     return options;
   }();
 
-  static absl::StatusOr<PlanningConfig> FromConfig(ConfigReader& section);
+  static absl::StatusOr<PlanningConfig> FromYaml(ConfigReader& section);
 };
 
 }  // namespace semnav::planning

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -95,19 +96,19 @@ std::string EroiGrid::Encode(const Eigen::Vector3d& centre) const {
 absl::StatusOr<Eigen::Vector3d> EroiGrid::Decode(std::string_view code) const {
   if (code.size() < 3 || !std::isalpha(static_cast<unsigned char>(code.front())) ||
       !std::isalpha(static_cast<unsigned char>(code.back()))) {
-    return absl::InvalidArgumentError(absl::StrCat("code: '", std::string(code), "' is not letter-digits-letter"));
+    return InvalidField("code", absl::StrCat("'", std::string(code), "' is not letter-digits-letter"));
   }
   int iy = 0;
   for (char c : code.substr(1, code.size() - 2)) {
     if (!std::isdigit(static_cast<unsigned char>(c)) || iy > 100000) {
-      return absl::InvalidArgumentError(absl::StrCat("code: '", std::string(code), "' is not letter-digits-letter"));
+      return InvalidField("code", absl::StrCat("'", std::string(code), "' is not letter-digits-letter"));
     }
     iy = iy * 10 + (c - '0');
   }
   const EroiIndex index{std::toupper(static_cast<unsigned char>(code.front())) - 'A', iy - 1,
                         std::toupper(static_cast<unsigned char>(code.back())) - 'A'};
   if (!Contains(index)) {
-    return absl::InvalidArgumentError(absl::StrCat("code: '", std::string(code), "' is outside the EROI grid"));
+    return InvalidField("code", absl::StrCat("'", std::string(code), "' is outside the EROI grid"));
   }
   return Centre(index);
 }

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 
+#include "services/common/status/field_error.h"
 #include "services/reasoning/core/search_prompts.h"
 #include "services/reasoning/core/vlm_answer.h"
 
 namespace semnav::reasoning {
 
 absl::StatusOr<EroiSearch> EroiSearch::Create(std::string target, const EroiSearchConfig& config) {
-  if (target.empty()) return absl::InvalidArgumentError("target: is required for the EROI search");
+  if (target.empty()) return InvalidField("target", "is required for the EROI search");
   absl::StatusOr<EroiGrid> grid = EroiGrid::Create(config.grid);
   if (!grid.ok()) return grid.status();
   return EroiSearch(std::move(target), *std::move(grid), config);

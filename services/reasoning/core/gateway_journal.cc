@@ -56,7 +56,7 @@ json TaskJson(const JournaledTask& t) {
               {"robot_id", t.robot_id},
               {"instruction", t.instruction},
               {"source", t.source},
-              {"strategy", t.strategy},
+              {"strategy", t.strategy.has_value() ? std::string(ExplorationStrategyName(*t.strategy)) : ""},
               {"subgoals", subgoals},
               {"state", std::string(TaskStateName(t.progress.state))},
               {"subgoal_index", t.progress.subgoal_index},
@@ -137,7 +137,7 @@ absl::StatusOr<JournaledTask> TaskFrom(const json& j, const std::string& path) {
   t.robot_id = f.Get<std::string>("robot_id");
   t.instruction = f.Get<std::string>("instruction");
   t.source = f.Get<std::string>("source");
-  t.strategy = f.Get<std::string>("strategy");
+  const std::string strategy = f.Get<std::string>("strategy");  // "" = the configured default
   const json subgoals = f.Get<json>("subgoals");
   const std::optional<TaskState> state = ParseState(f.Get<std::string>("state"));
   t.progress.subgoal_index = f.Get<int>("subgoal_index");
@@ -157,6 +157,12 @@ absl::StatusOr<JournaledTask> TaskFrom(const json& j, const std::string& path) {
   if (!f.status().ok()) return f.status();
   if (!state.has_value()) return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".state is unknown"));
   t.progress.state = *state;
+  if (!strategy.empty()) {
+    t.strategy = ParseExplorationStrategy(strategy);
+    if (!t.strategy.has_value()) {
+      return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".strategy is unknown"));
+    }
+  }
   if (t.task_id.empty() || t.robot_id.empty()) {
     return absl::DataLossError(absl::StrCat("gateway journal: ", path, " has no task or robot id"));
   }

@@ -17,6 +17,7 @@
 #include "absl/time/time.h"
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/exploration_context.h"
+#include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/lease_table.h"
 #include "services/reasoning/core/subgoal.h"
 #include "services/reasoning/core/task_executor.h"
@@ -28,7 +29,7 @@ struct JournaledTask {
   std::string robot_id;
   std::string instruction;
   std::string source;    // decomposition source ("rules", "model", ...)
-  std::string strategy;  // "" = the configured default
+  std::optional<ExplorationStrategy> strategy;  // nullopt = the configured default
   std::optional<SearchArea> search_area;
   std::vector<Subgoal> subgoals;
   // state, subgoal_index, phase, reason, replans, explore_goals, model_requests (not the path

@@ -23,7 +23,7 @@ JournaledTask FindCupTask() {
   t.robot_id = "go2";
   t.instruction = "去厨房找红色杯子";
   t.source = "rules";
-  t.strategy = "SEMANTIC_FRONTIER";
+  t.strategy = ExplorationStrategy::kSemanticFrontier;
   t.search_area = SearchArea{{-1.0, -2.0}, {8.5, 6.0}};
   Subgoal kitchen;
   kitchen.type = SubgoalType::kNavigate;

@@ -2,7 +2,6 @@
 #include "gtest/gtest.h"
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/lease_table.h"
-#include "services/reasoning/core/request_cache.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -62,17 +61,6 @@ TEST(GatewayEventLogTest, OneTasksEventsFromTheFirst) {
   EXPECT_EQ(task1[1].message, "succeeded");
   EXPECT_TRUE(log.After(0, "r2", "task-1", &truncated).empty());
   ASSERT_EQ(log.After(1, "r1", "task-1", &truncated).size(), 1u);
-}
-
-TEST(GatewayRequestCacheTest, FirstAnswerWinsAndOldestIsForgotten) {
-  RequestCache cache(2);
-  cache.Put("a", "1");
-  cache.Put("a", "other");
-  EXPECT_EQ(*cache.Find("a"), "1");
-  cache.Put("b", "2");
-  cache.Put("c", "3");
-  EXPECT_FALSE(cache.Find("a").has_value());
-  EXPECT_EQ(*cache.Find("c"), "3");
 }
 
 }  // namespace

@@ -272,7 +272,7 @@ bool TaskExecutor::TryResolve() {
   const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
   if (!resolution.accepted) return false;
   const SceneObject* object = graph_.FindObject(resolution.best->object_id);
-  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, "fast", 0};
+  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, ResolutionPath::kFast, 0};
   return true;
 }
 
@@ -404,7 +404,8 @@ bool TaskExecutor::TakeBestCandidate() {
   if (!best.has_value()) return false;
   endgame_taken_ = true;
   // The fast path found it (below its threshold): reported as a fast-path resolution.
-  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused, "fast", 0};
+  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused,
+                                   ResolutionPath::kFast, 0};
   return true;
 }
 
@@ -412,7 +413,8 @@ bool TaskExecutor::TakeLabelledCandidate() {
   if (config_.model_available || progress_.target.has_value()) return false;
   const std::optional<ScoredObject> best = BestCandidate();
   if (!best.has_value() || best->label < config_.approach_label_match) return false;
-  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused, "fast", 0};
+  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused,
+                                   ResolutionPath::kFast, 0};
   return true;
 }
 
@@ -850,7 +852,7 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
     return {};
   }
   // A vision-verify answer is only a candidate: the VERIFY subgoal confirms or rejects it.
-  progress_.target = LocatedTarget{object->id, object->position, decision.confidence, "slow", 0};
+  progress_.target = LocatedTarget{object->id, object->position, decision.confidence, ResolutionPath::kSlow, 0};
   const bool searching = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
   return searching ? EnterSubgoal(now) : std::vector<RobotCommand>{};
 }

@@ -104,11 +104,14 @@ inline bool Ended(TaskState state) {
   return state == TaskState::kSucceeded || state == TaskState::kFailed || state == TaskState::kCancelled;
 }
 
+// How the target was resolved: the scene-graph match (fast) or the language model's choice (slow).
+enum class ResolutionPath { kFast, kSlow };
+
 struct LocatedTarget {
   int64_t object_id = -1;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   double confidence = 0.0;
-  std::string path;  // "fast" or "slow"
+  ResolutionPath path = ResolutionPath::kFast;
   int detections_at_verify = 0;
 };
 

@@ -114,7 +114,7 @@ TEST_F(GatewayTaskExecutorTest, NavigateApproachVerifySucceedsWithinOneMetre) {
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4, 0, 0)));  // 1 m stand-off
   EXPECT_DOUBLE_EQ(out[0].goal_yaw, 0.0);                       // facing the target
   EXPECT_EQ(out[0].path.size(), 2u);
-  EXPECT_EQ(task.progress().target->path, "fast");
+  EXPECT_EQ(task.progress().target->path, ResolutionPath::kFast);
 
   task.OnPose(5, At(4));
   out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
@@ -191,7 +191,7 @@ TEST_F(GatewayTaskExecutorTest, SlowPathAnswerProvidesTheGoal) {
   std::vector<RobotCommand> out = task.OnSlowDecision(2, 1, decision);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4, 0, 0)));
-  EXPECT_EQ(task.progress().target->path, "slow");
+  EXPECT_EQ(task.progress().target->path, ResolutionPath::kSlow);
 }
 
 // Regression (dashboard, "find a bed"): the model named the object that had just been set aside

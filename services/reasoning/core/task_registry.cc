@@ -33,7 +33,7 @@ bool SameContent(const TaskView& a, const TaskView& b) {
          SameTarget(a.target, b.target) && SameArea(a.search_area, b.search_area);
 }
 
-TaskView ViewOf(const TaskRecord& task, const std::string& exploration_strategy) {
+TaskView ViewOf(const TaskRecord& task, std::optional<ExplorationStrategy> exploration_strategy) {
   const TaskProgress& progress = task.executor->progress();
   TaskView view;
   view.task_id = task.task_id;

@@ -16,6 +16,7 @@
 #include "absl/time/time.h"
 #include "services/reasoning/core/eroi_search.h"
 #include "services/reasoning/core/exploration_context.h"
+#include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/model_call_policy.h"
 #include "services/reasoning/core/navigation_interfaces.h"
 #include "services/reasoning/core/subgoal.h"
@@ -43,7 +44,7 @@ struct TaskView {
   int explore_goals = 0;
   int model_requests = 0;
   int model_calls = 0;
-  std::string exploration_strategy;  // empty = not reported (no planning service)
+  std::optional<ExplorationStrategy> exploration_strategy;  // nullopt = not reported (no planning service)
   std::optional<SearchArea> search_area;
   absl::Time created;
   absl::Time updated;
@@ -57,7 +58,7 @@ struct TaskRecord {
   std::string robot_id;
   std::string instruction;
   std::string source;    // decomposition source: "rules" or "model"
-  std::string strategy;  // the operator's exploration strategy; "" = the configured default
+  std::optional<ExplorationStrategy> strategy;  // the operator's; nullopt = the configured default
   std::unique_ptr<PathPlanner> planner;  // before the executor, which refers to it
   std::unique_ptr<TaskExecutor> executor;
   uint64_t executor_generation = 0;  // bumped when the model's plan replaces the executor
@@ -79,8 +80,8 @@ struct TaskRecord {
   TaskView published;  // the last view sent to watchers
 };
 
-// The task's view now; `exploration_strategy` is reported as given ("" = none).
-TaskView ViewOf(const TaskRecord& task, const std::string& exploration_strategy);
+// The task's view now; `exploration_strategy` is reported as given (nullopt = none).
+TaskView ViewOf(const TaskRecord& task, std::optional<ExplorationStrategy> exploration_strategy);
 
 class TaskRegistry {
  public:

@@ -64,7 +64,7 @@ TEST_F(TaskRegistryTest, SelectIsSubmissionOrderNotStringOrder) {
 
 TEST_F(TaskRegistryTest, ViewsDifferInContentOnlyByWhatAnOperatorSees) {
   TaskRecord& task = Add("r1");
-  const TaskView first = ViewOf(task, "SEMANTIC_FRONTIER");
+  const TaskView first = ViewOf(task, ExplorationStrategy::kSemanticFrontier);
   EXPECT_TRUE(first.pending);  // not started: its robot has no session yet
   EXPECT_EQ(first.progress, 0.0);
 
@@ -74,11 +74,11 @@ TEST_F(TaskRegistryTest, ViewsDifferInContentOnlyByWhatAnOperatorSees) {
   EXPECT_TRUE(SameContent(first, bumped));
 
   task.started = true;
-  EXPECT_FALSE(SameContent(first, ViewOf(task, "SEMANTIC_FRONTIER")));  // PENDING -> RUNNING
-  EXPECT_FALSE(SameContent(first, ViewOf(task, "")));  // strategy no longer reported
+  EXPECT_FALSE(SameContent(first, ViewOf(task, ExplorationStrategy::kSemanticFrontier)));  // PENDING -> RUNNING
+  EXPECT_FALSE(SameContent(first, ViewOf(task, std::nullopt)));  // strategy no longer reported
   task.started = false;
   task.executor->Cancel("operator");
-  const TaskView cancelled = ViewOf(task, "SEMANTIC_FRONTIER");
+  const TaskView cancelled = ViewOf(task, ExplorationStrategy::kSemanticFrontier);
   EXPECT_EQ(cancelled.state, TaskState::kCancelled);
   EXPECT_FALSE(cancelled.pending);
   EXPECT_FALSE(SameContent(first, cancelled));

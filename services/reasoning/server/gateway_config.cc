@@ -16,7 +16,7 @@ EroiSearchConfig DefaultEroiSearch() {
   return search;
 }
 
-GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
+absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   GatewayConfig c;
   ConfigReader decomposer = section.Child("decomposer");
   decomposer.Read("approach_distance_m", &c.decomposer.approach_distance_m)
@@ -116,13 +116,14 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
   if (section.Has("planning")) {  // absent: the robot plans locally
     ConfigReader planning = section.Child("planning");
     c.planning.channel = ClientOptions::FromConfig(planning, ClientOptions{});
-    planning.Read("exploration_strategy", &c.planning.exploration_strategy)
+    std::string strategy(ExplorationStrategyName(c.planning.exploration_strategy));
+    planning.Read("exploration_strategy", &strategy)
         .Read("deadline_ms", &c.planning.deadline_ms)
         .Read("goal_tolerance_m", &c.planning.goal_tolerance_m);
-    const std::string& strategy = c.planning.exploration_strategy;
-    planning.Check(strategy == "NEAREST_FRONTIER" || strategy == "COVERAGE_MAX" || strategy == "SEMANTIC_FRONTIER" ||
-                       strategy == "EROI_UTILITY",
-                   "exploration_strategy", "must be NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY");
+    const std::optional<ExplorationStrategy> parsed = ParseExplorationStrategy(strategy);
+    planning.Check(parsed.has_value(), "exploration_strategy",
+                   "must be NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY");
+    if (parsed.has_value()) c.planning.exploration_strategy = *parsed;
     planning.Check(c.planning.deadline_ms > 0, "deadline_ms", "must be > 0");
     planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
   }
@@ -190,6 +191,7 @@ GatewayConfig GatewayConfig::FromYaml(ConfigReader& section) {
   section.Check(c.retained_events > 0, "retained_events", "must be > 0");
   section.Check(c.journal_flush_interval_s >= 0.05 && c.journal_flush_interval_s <= 60.0,
                 "journal_flush_interval_s", "must be in [0.05, 60]");
+  if (absl::Status s = section.Finish(); !s.ok()) return s;
   return c;
 }
 

@@ -12,6 +12,7 @@
 #include "services/reasoning/core/fast_resolver.h"
 #include "services/reasoning/core/slow_answer.h"
 #include "services/reasoning/core/task_decomposer.h"
+#include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/task_executor.h"
 #include "services/reasoning/core/topological_memory.h"
 
@@ -21,8 +22,7 @@ namespace semnav::reasoning {
 // path locally and exploration steps toward the topological memory's least-explored sector.
 struct PlanningSettings {
   ClientOptions channel;                                 // address empty = no planning service
-  std::string exploration_strategy = "SEMANTIC_FRONTIER";  // NEAREST_FRONTIER, COVERAGE_MAX,
-                                                         // SEMANTIC_FRONTIER or EROI_UTILITY
+  ExplorationStrategy exploration_strategy = ExplorationStrategy::kSemanticFrontier;
   int deadline_ms = 2000;                                // per PlanPath / SelectExplorationGoal
   double goal_tolerance_m = 0.0;  // an occupied goal may move this far; 0 = use the alternative point
 };
@@ -75,8 +75,9 @@ struct GatewayConfig {
                                        // node (no per-frame visibility reaches the gateway)
 
   static std::string DefaultPriorPath();
-  // Reads the keys it knows and records bad values on `section` (reported by Finish()).
-  static GatewayConfig FromYaml(ConfigReader& section);
+  // The settings of `section`; a bad value, a failed check or an unknown key fails with its
+  // key path (bad values are also recorded on `section`).
+  static absl::StatusOr<GatewayConfig> FromYaml(ConfigReader& section);
 };
 
 }  // namespace semnav::reasoning

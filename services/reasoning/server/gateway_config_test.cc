@@ -8,8 +8,9 @@ namespace {
 
 TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
   ConfigReader empty = ConfigReader::Empty();
-  const GatewayConfig config = GatewayConfig::FromYaml(empty);
-  ASSERT_TRUE(empty.Finish().ok());
+  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(empty);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const GatewayConfig& config = *loaded;
   EXPECT_DOUBLE_EQ(config.fast_path.label_weight, 0.35);
   EXPECT_DOUBLE_EQ(config.fast_path.embedding_weight, 0.35);
   EXPECT_DOUBLE_EQ(config.fast_path.detector_weight, 0.15);
@@ -26,7 +27,7 @@ TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
   EXPECT_EQ(config.memory.max_nodes, 500);
   EXPECT_TRUE(config.mapping.address.empty());
   EXPECT_TRUE(config.planning.channel.address.empty());  // no planning: the robot plans locally
-  EXPECT_EQ(config.planning.exploration_strategy, "SEMANTIC_FRONTIER");
+  EXPECT_EQ(config.planning.exploration_strategy, ExplorationStrategy::kSemanticFrontier);
   EXPECT_TRUE(config.model_proxy.channel.address.empty());  // offline default: no slow-path calls
   EXPECT_EQ(config.model_proxy.deadline_ms, 5000);
   EXPECT_EQ(config.model_proxy.max_in_flight, 2);
@@ -39,8 +40,9 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
       "model_proxy: {address: 127.0.0.1:50054, deadline_ms: 800, vision_alias: vision}\n"
       "eroi: {min: [-10, -20, 0], nx: 9, ny: 19, nz: 2, theta: 4}\n");
   ASSERT_TRUE(reader.ok());
-  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
-  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const GatewayConfig& config = *loaded;
   EXPECT_EQ(config.model_proxy.channel.address, "127.0.0.1:50054");
   EXPECT_EQ(config.model_proxy.deadline_ms, 800);
   EXPECT_EQ(config.model_proxy.vision_alias, "vision");
@@ -54,8 +56,7 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
                            "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
-    GatewayConfig::FromYaml(*bad);
-    const absl::Status status = bad->Finish();
+    const absl::Status status = GatewayConfig::FromYaml(*bad).status();
     EXPECT_FALSE(status.ok()) << yaml;
     EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'm' ? "model_proxy." : "eroi.")) << status;
   }
@@ -65,17 +66,17 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
       "planning: {address: 127.0.0.1:50052, exploration_strategy: EROI_UTILITY, deadline_ms: 500}\n");
   ASSERT_TRUE(reader.ok());
-  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
-  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const GatewayConfig& config = *loaded;
   EXPECT_EQ(config.planning.channel.address, "127.0.0.1:50052");
-  EXPECT_EQ(config.planning.exploration_strategy, "EROI_UTILITY");
+  EXPECT_EQ(config.planning.exploration_strategy, ExplorationStrategy::kEroiUtility);
   EXPECT_EQ(config.planning.deadline_ms, 500);
 
   absl::StatusOr<ConfigReader> bad =
       ConfigReader::FromString("planning: {address: 127.0.0.1:50052, exploration_strategy: RANDOM}\n");
   ASSERT_TRUE(bad.ok());
-  GatewayConfig::FromYaml(*bad);
-  const absl::Status status = bad->Finish();
+  const absl::Status status = GatewayConfig::FromYaml(*bad).status();
   EXPECT_FALSE(status.ok());
   EXPECT_TRUE(absl::StrContains(status.message(), "planning.exploration_strategy")) << status;
 }
@@ -88,8 +89,9 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
       "           time_budget_s: 250, endgame_s: 30, max_blocks_per_goal: 3}\n"
       "mapping: {address: 127.0.0.1:50051}\n");
   ASSERT_TRUE(reader.ok());
-  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
-  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const GatewayConfig& config = *loaded;
   EXPECT_DOUBLE_EQ(config.fast_path.fast_threshold, 0.8);
   EXPECT_DOUBLE_EQ(config.executor.success_radius_m, 0.5);
   EXPECT_DOUBLE_EQ(config.executor.dependency_retry_s, 0.5);
@@ -110,8 +112,7 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
                            "executor: {time_budget_s: -1}", "executor: {max_blocks_per_goal: 0}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
-    GatewayConfig::FromYaml(*bad);
-    const absl::Status status = bad->Finish();
+    const absl::Status status = GatewayConfig::FromYaml(*bad).status();
     EXPECT_FALSE(status.ok()) << yaml;
     EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'f' ? "fast_path." : "executor.")) << status;
   }
@@ -121,16 +122,17 @@ TEST(GatewayConfigTest, ReadsTheJournalKeysAndBoundsTheFlushInterval) {
   absl::StatusOr<ConfigReader> reader =
       ConfigReader::FromString("state_directory: /var/lib/semnav/gateway\njournal_flush_interval_s: 0.25\n");
   ASSERT_TRUE(reader.ok());
-  const GatewayConfig config = GatewayConfig::FromYaml(*reader);
-  ASSERT_TRUE(reader->Finish().ok()) << reader->Finish();
+  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const GatewayConfig& config = *loaded;
   EXPECT_EQ(config.state_directory, "/var/lib/semnav/gateway");
   EXPECT_DOUBLE_EQ(config.journal_flush_interval_s, 0.25);
   EXPECT_EQ(GatewayConfig{}.state_directory, "");  // memory only unless configured
   for (const char* yaml : {"journal_flush_interval_s: 0", "journal_flush_interval_s: 61"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
-    GatewayConfig::FromYaml(*bad);
-    EXPECT_TRUE(absl::StrContains(bad->Finish().message(), "journal_flush_interval_s")) << yaml;
+    EXPECT_TRUE(absl::StrContains(GatewayConfig::FromYaml(*bad).status().message(), "journal_flush_interval_s"))
+        << yaml;
   }
 }
 

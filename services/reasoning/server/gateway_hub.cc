@@ -25,7 +25,7 @@ GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner
       matcher_(lexicon, config.fast_path.unknown_colour_factor),
       start_(absl::Now()),
       events_(static_cast<std::size_t>(config.retained_events)),
-      requests_(static_cast<std::size_t>(config.idempotency_entries)) {
+      requests_(static_cast<std::size_t>(std::max(1, config.idempotency_entries))) {
   absl::StatusOr<TextSegmenter> segmenter = TextSegmenter::Create();
   if (segmenter.ok()) {
     decomposer_ = std::make_unique<TaskDecomposer>(InstructionParser(lexicon, *std::move(segmenter)), config.decomposer);
@@ -63,8 +63,8 @@ void GatewayHub::Tick() {
   }
 }
 
-std::string GatewayHub::StrategyOf(const Task& task) const {
-  return task.strategy.empty() ? config_.planning.exploration_strategy : task.strategy;
+ExplorationStrategy GatewayHub::StrategyOf(const Task& task) const {
+  return task.strategy.value_or(config_.planning.exploration_strategy);
 }
 
 double GatewayHub::Now() const { return absl::ToDoubleSeconds(absl::Now() - start_); }
@@ -136,7 +136,7 @@ void GatewayHub::Log(api::EventKind kind, const std::string& robot_id, const std
 }
 
 TaskView GatewayHub::View(const Task& task) const {
-  return ViewOf(task, backends_.explorer != nullptr ? StrategyOf(task) : "");
+  return ViewOf(task, backends_.explorer != nullptr ? std::optional<ExplorationStrategy>(StrategyOf(task)) : std::nullopt);
 }
 
 api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const { return ToProto(View(task)); }
@@ -167,7 +167,7 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   *response.mutable_task() = ToProto(now);
   const api::TaskSnapshot& snapshot = response.task();
   if (!before.target.has_value() && now.target.has_value()) {
-    ++(now.target->path == "fast" ? fast_resolutions_ : slow_resolutions_);
+    ++(now.target->path == ResolutionPath::kFast ? fast_resolutions_ : slow_resolutions_);
     Log(api::EVENT_KIND_GOAL_RESOLVED, task.robot_id, task.task_id,
         absl::StrCat("object ", now.target->object_id, " by the ",
                      api::ResolutionPath_Name(snapshot.target().path())));
@@ -197,7 +197,8 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   }
 }
 
-std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id, const std::string& strategy) {
+std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id,
+                                                    std::optional<ExplorationStrategy> strategy) {
   // Both are called by the task's executor, under mu_.
   return std::make_unique<TaskPlanner>(
       planner_, backends_.explorer, strategy,
@@ -234,7 +235,7 @@ void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
     fitted.grid = GridOverArea(fitted.grid, task.search_area->min, task.search_area->max);
     eroi = fitted;
   }
-  if (StrategyOf(task) == "EROI_UTILITY" && eroi.has_value() && target != nullptr) {
+  if (StrategyOf(task) == ExplorationStrategy::kEroiUtility && eroi.has_value() && target != nullptr) {
     absl::StatusOr<EroiSearch> search =
         EroiSearch::Create(target->text.empty() ? target->name : target->text, *eroi);
     if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
@@ -290,7 +291,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
       response.set_task_id(task.task_id);
       response.set_correction_applied(true);
       *response.mutable_task() = Snapshot(task);
-      requests_.Put(key, response.SerializeAsString());
+      requests_.Remember(key, response.SerializeAsString());
       return response;
     }
   }
@@ -310,14 +311,8 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.source = decomposition.source;
   task.search_area = search_area;
   task.created = task.updated = absl::Now();
-  // "" = the configured default; otherwise planning's name ("EROI_UTILITY").
-  const std::string strategy =
-      request.exploration_strategy() == api::EXPLORATION_STRATEGY_UNSPECIFIED
-          ? ""
-          : std::string(absl::StripPrefix(api::ExplorationStrategy_Name(request.exploration_strategy()),
-                                          "EXPLORATION_STRATEGY_"));
-  task.strategy = strategy;
-  task.planner = PlannerFor(task_id, strategy);
+  task.strategy = StrategyFromProto(request.exploration_strategy());  // nullopt = the configured default
+  task.planner = PlannerFor(task_id, task.strategy);
   InstallExecutor(task, decomposition.subgoals);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());
@@ -325,7 +320,7 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   StartIfPossible(task);
   response.set_task_id(task_id);
   *response.mutable_task() = Snapshot(task);
-  requests_.Put(key, response.SerializeAsString());
+  requests_.Remember(key, response.SerializeAsString());
   return response;
 }
 
@@ -370,7 +365,7 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, co
   if (absl::Status s = CheckControl(task.robot_id, request.lease_id()); !s.ok()) return s;
   action(task);
   api::TaskSnapshot snapshot = Snapshot(task);
-  requests_.Put(key, snapshot.SerializeAsString());
+  requests_.Remember(key, snapshot.SerializeAsString());
   return snapshot;
 }
 

@@ -24,7 +24,7 @@
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/gateway_journal.h"
 #include "services/reasoning/core/lease_table.h"
-#include "services/reasoning/core/request_cache.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/reasoning/core/robot_record.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
@@ -174,9 +174,9 @@ class GatewayHub {
   // Sends the executor's commands to the robot, bumps the revision and notifies watchers.
   void Apply(Task& task, const std::vector<RobotCommand>& commands) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  // The task's path planner with `strategy` ("" = the configured default) and its exploration
+  // The task's path planner with `strategy` (nullopt = the configured default) and its exploration
   // context.
-  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, const std::string& strategy);
+  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, std::optional<ExplorationStrategy> strategy);
   // The task's RemoteCallRunner: called by its executor under mu_; runs `call` without mu_.
   void RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Waits (mu_ released meanwhile) until the task's executor is out of its remote call; every
@@ -216,7 +216,7 @@ class GatewayHub {
   void OnRegionScore(const std::string& task_id, const RegionDue& region, absl::StatusOr<std::string> answer)
       ABSL_LOCKS_EXCLUDED(mu_);
   // The strategy a task explores with: its own, else the configured default.
-  std::string StrategyOf(const Task& task) const;
+  ExplorationStrategy StrategyOf(const Task& task) const;
   void Tick() ABSL_LOCKS_EXCLUDED(mu_);
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
   // shutdown, outside mu_ for the file writes.
@@ -247,7 +247,7 @@ class GatewayHub {
   std::map<std::string, std::set<StreamSink<api::WatchTaskResponse>*>> task_watchers_ ABSL_GUARDED_BY(mu_);
   LeaseTable leases_ ABSL_GUARDED_BY(mu_);
   EventLog events_ ABSL_GUARDED_BY(mu_);
-  RequestCache requests_ ABSL_GUARDED_BY(mu_);
+  FirstAnswerCache<std::string> requests_ ABSL_GUARDED_BY(mu_);  // serialized first answers
   std::set<std::string> requests_in_flight_ ABSL_GUARDED_BY(mu_);
   std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_ ABSL_GUARDED_BY(mu_);
   TelemetrySubscriptions<StreamSink<api::StreamFastTelemetryResponse>*> fast_watchers_ ABSL_GUARDED_BY(mu_);

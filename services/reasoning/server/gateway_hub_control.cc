@@ -31,7 +31,7 @@ absl::StatusOr<api::Lease> GatewayHub::AcquireLease(const api::AcquireLeaseReque
   Log(api::EVENT_KIND_LEASE, request.robot_id(), "", absl::StrCat("lease acquired by ", request.holder()));
   journal_dirty_ = true;
   api::Lease out = ToProto(*lease);
-  requests_.Put(key, out.SerializeAsString());
+  requests_.Remember(key, out.SerializeAsString());
   return out;
 }
 
@@ -105,7 +105,7 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
     response.add_cancelled_task_ids(task_id);
     Apply(task, {});
   }
-  requests_.Put(key, response.SerializeAsString());
+  requests_.Remember(key, response.SerializeAsString());
   return response;
 }
 

@@ -333,13 +333,13 @@ TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
 // Records the context of every exploration request; planning has no goal to offer.
 class RecordingExplorer : public ExplorationService {
  public:
-  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery&, const std::string& strategy,
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery&, std::optional<ExplorationStrategy> strategy,
                                              const ExplorationContext& context) override {
     strategies.push_back(strategy);
     contexts.push_back(context);
     return absl::NotFoundError("no frontier");
   }
-  std::vector<std::string> strategies;
+  std::vector<std::optional<ExplorationStrategy>> strategies;
   std::vector<ExplorationContext> contexts;
 };
 
@@ -420,7 +420,7 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   ASSERT_TRUE(submitted.ok()) << submitted.status();
   EXPECT_EQ(submitted->task().exploration_strategy(), "EROI_UTILITY");
   ASSERT_EQ(explorer.strategies.size(), 1u);
-  EXPECT_EQ(explorer.strategies[0], "EROI_UTILITY");
+  EXPECT_EQ(explorer.strategies[0], ExplorationStrategy::kEroiUtility);
   ASSERT_EQ(explorer.contexts[0].eroi_values.size(), 20u);  // uniform 1/N before any evidence
   EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_values[7], 0.05);
   EXPECT_TRUE(explorer.contexts[0].eroi_window_min.isApprox(Eigen::Vector2d(-1, -1)));

@@ -12,7 +12,7 @@
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "services/common/status/grpc_status.h"
 #include "services/reasoning/core/lease_table.h"
-#include "services/reasoning/core/request_cache.h"
+#include "services/common/idempotency/first_answer_cache.h"
 
 namespace semnav::reasoning::hub_internal {
 
@@ -39,7 +39,7 @@ inline api::Lease ToProto(const LeaseInfo& lease) {
 
 // A repeated request_id returns the first answer, parsed back from the cache.
 template <typename Response>
-std::optional<Response> Cached(const RequestCache& cache, const std::string& key) {
+std::optional<Response> Cached(const FirstAnswerCache<std::string>& cache, const std::string& key) {
   std::optional<std::string> bytes = cache.Find(key);
   if (!bytes.has_value()) return std::nullopt;
   Response response;

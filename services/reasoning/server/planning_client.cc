@@ -43,6 +43,17 @@ absl::Status Unavailable(const char* call, const grpc::Status& status) {
                                     absl::StrCat(call, ": ", status.error_message()));
 }
 
+// The one place a core strategy becomes planning's proto enum.
+pb::ExplorationStrategy ToProto(ExplorationStrategy strategy) {
+  switch (strategy) {
+    case ExplorationStrategy::kNearestFrontier: return pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER;
+    case ExplorationStrategy::kCoverageMax: return pb::EXPLORATION_STRATEGY_COVERAGE_MAX;
+    case ExplorationStrategy::kSemanticFrontier: return pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER;
+    case ExplorationStrategy::kEroiUtility: return pb::EXPLORATION_STRATEGY_EROI_UTILITY;
+  }
+  return pb::EXPLORATION_STRATEGY_UNSPECIFIED;
+}
+
 }  // namespace
 
 void AddEroiValues(const ExplorationContext& context, pb::SelectExplorationGoalRequest* request) {
@@ -60,8 +71,6 @@ void AddEroiValues(const ExplorationContext& context, pb::SelectExplorationGoalR
 PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings)
     : channel_(channel), stub_(pb::PlanningService::NewStub(channel)), settings_(std::move(settings)) {
   channel_->GetState(/*try_to_connect=*/true);
-  // GatewayConfig validated the name.
-  pb::ExplorationStrategy_Parse("EXPLORATION_STRATEGY_" + settings_.exploration_strategy, &strategy_);
 }
 
 absl::Status PlanningClient::Ready(const char* call) {
@@ -136,10 +145,11 @@ grpc::Status PlanningClient::Select(const pb::SelectExplorationGoalRequest& requ
 }
 
 absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const ExplorationQuery& query) {
-  return SelectGoal(query, "", ExplorationContext{});
+  return SelectGoal(query, std::nullopt, ExplorationContext{});
 }
 
-absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuery& query, const std::string& strategy,
+absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuery& query,
+                                                           std::optional<ExplorationStrategy> strategy,
                                                            const ExplorationContext& context) {
   if (absl::Status ready = Ready("SelectExplorationGoal"); !ready.ok()) return ready;
   const RobotPose& pose = query.pose;
@@ -147,10 +157,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuer
   request.mutable_source()->mutable_live_map();
   SetPose(pose.position, request.mutable_robot());
   request.mutable_robot()->set_yaw(pose.yaw);
-  pb::ExplorationStrategy chosen = strategy_;
-  if (!strategy.empty() && !pb::ExplorationStrategy_Parse("EXPLORATION_STRATEGY_" + strategy, &chosen)) {
-    return absl::InvalidArgumentError(absl::StrCat("exploration strategy '", strategy, "' is unknown"));
-  }
+  const pb::ExplorationStrategy chosen = ToProto(strategy.value_or(settings_.exploration_strategy));
   request.set_strategy(chosen);
   for (const ExplorationHint& hint : context.objects) {
     pb::SemanticObject* object = request.mutable_semantics()->add_objects();

@@ -32,7 +32,8 @@ class PlanningClient : public PathPlanner, public ExplorationService {
 
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override;
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override;
-  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query, const std::string& strategy,
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query,
+                                             std::optional<ExplorationStrategy> strategy,
                                              const ExplorationContext& context) override;
 
  private:
@@ -43,7 +44,6 @@ class PlanningClient : public PathPlanner, public ExplorationService {
   std::shared_ptr<grpc::Channel> channel_;
   std::unique_ptr<planning::v1::PlanningService::Stub> stub_;
   PlanningSettings settings_;
-  planning::v1::ExplorationStrategy strategy_;
 };
 
 }  // namespace semnav::reasoning

@@ -78,7 +78,7 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   RobotPose pose;
   pose.position = Eigen::Vector3d(1.0, 2.0, 0.3);
   const ExplorationQuery query{pose, {Eigen::Vector3d(5.0, 6.0, 0.3)}, 1.5};
-  absl::StatusOr<Eigen::Vector3d> goal = client_->SelectGoal(query, "COVERAGE_MAX", context);
+  absl::StatusOr<Eigen::Vector3d> goal = client_->SelectGoal(query, ExplorationStrategy::kCoverageMax, context);
   ASSERT_TRUE(goal.ok()) << goal.status();
   EXPECT_TRUE(goal->isApprox(Eigen::Vector3d(4.0, -1.0, 0.3)));  // z stays the robot's
 
@@ -105,7 +105,7 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
 TEST_F(GatewayPlanningClientTest, SearchAreaReachesPlanning) {
   ExplorationContext context;
   context.search_area = SearchArea{Eigen::Vector2d(-1.0, -2.0), Eigen::Vector2d(44.0, 46.0)};
-  ASSERT_TRUE(client_->SelectGoal(ExplorationQuery{}, "", context).ok());
+  ASSERT_TRUE(client_->SelectGoal(ExplorationQuery{}, std::nullopt, context).ok());
   absl::MutexLock lock(&planning_.mu);
   ASSERT_EQ(planning_.requests.size(), 1u);
   const pb::SearchArea& area = planning_.requests[0].search_area();
@@ -121,7 +121,7 @@ TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIs
   context.eroi_window_min = Eigen::Vector2d(-1.0, -1.0);
   context.eroi_window_max = Eigen::Vector2d(3.0, 1.0);
   context.eroi_edge_m = 2.0;
-  ASSERT_TRUE(client_->SelectGoal({}, "EROI_UTILITY", context).ok());
+  ASSERT_TRUE(client_->SelectGoal({}, ExplorationStrategy::kEroiUtility, context).ok());
   {
     absl::MutexLock lock(&planning_.mu);
     const pb::SelectExplorationGoalRequest& request = planning_.requests.back();
@@ -132,12 +132,11 @@ TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIs
     EXPECT_DOUBLE_EQ(request.source().live_map().window_max().y(), 0.5);
     planning_.refuse_values = true;
   }
-  ASSERT_TRUE(client_->SelectGoal({}, "EROI_UTILITY", context).ok());
+  ASSERT_TRUE(client_->SelectGoal({}, ExplorationStrategy::kEroiUtility, context).ok());
   absl::MutexLock lock(&planning_.mu);
   ASSERT_EQ(planning_.requests.size(), 3u);  // refused, then asked again without values
   EXPECT_EQ(planning_.requests[2].eroi_semantic_values_size(), 0);
   EXPECT_FALSE(planning_.requests[2].source().live_map().has_window_min());
-  EXPECT_EQ(client_->SelectGoal({}, "RANDOM", context).status().code(), absl::StatusCode::kInvalidArgument);
 }
 
 // Issue "Fleet and faults": planning or mapping gone is UNAVAILABLE naming it, so the task

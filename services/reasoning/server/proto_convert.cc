@@ -100,6 +100,24 @@ api::TaskStatus ToProto(TaskState state) {
   return api::TASK_STATUS_UNSPECIFIED;
 }
 
+api::ResolutionPath ToProto(ResolutionPath path) {
+  switch (path) {
+    case ResolutionPath::kFast: return api::RESOLUTION_PATH_FAST;
+    case ResolutionPath::kSlow: return api::RESOLUTION_PATH_SLOW;
+  }
+  return api::RESOLUTION_PATH_UNSPECIFIED;
+}
+
+std::optional<ExplorationStrategy> StrategyFromProto(api::ExplorationStrategy strategy) {
+  switch (strategy) {
+    case api::EXPLORATION_STRATEGY_NEAREST_FRONTIER: return ExplorationStrategy::kNearestFrontier;
+    case api::EXPLORATION_STRATEGY_COVERAGE_MAX: return ExplorationStrategy::kCoverageMax;
+    case api::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER: return ExplorationStrategy::kSemanticFrontier;
+    case api::EXPLORATION_STRATEGY_EROI_UTILITY: return ExplorationStrategy::kEroiUtility;
+    default: return std::nullopt;
+  }
+}
+
 api::TaskSnapshot ToProto(const TaskView& view) {
   using google::protobuf::util::TimeUtil;
   api::TaskSnapshot out;
@@ -117,7 +135,7 @@ api::TaskSnapshot ToProto(const TaskView& view) {
     target->set_object_id(view.target->object_id);
     SetVector(view.target->position, target->mutable_position());
     target->set_confidence(view.target->confidence);
-    target->set_path(view.target->path == "fast" ? api::RESOLUTION_PATH_FAST : api::RESOLUTION_PATH_SLOW);
+    target->set_path(ToProto(view.target->path));
   }
   for (const Eigen::Vector3d& point : view.path) SetVector(point, out.add_path());
   out.set_progress(view.progress);
@@ -126,7 +144,9 @@ api::TaskSnapshot ToProto(const TaskView& view) {
   out.set_explore_goals(view.explore_goals);
   out.set_model_requests(view.model_requests);
   out.set_model_calls(view.model_calls);
-  if (!view.exploration_strategy.empty()) out.set_exploration_strategy(view.exploration_strategy);
+  if (view.exploration_strategy.has_value()) {
+    out.set_exploration_strategy(std::string(ExplorationStrategyName(*view.exploration_strategy)));
+  }
   if (view.search_area.has_value()) *out.mutable_search_area() = ToProto(*view.search_area);
   *out.mutable_created_at() = TimeUtil::NanosecondsToTimestamp(absl::ToUnixNanos(view.created));
   *out.mutable_updated_at() = TimeUtil::NanosecondsToTimestamp(absl::ToUnixNanos(view.updated));

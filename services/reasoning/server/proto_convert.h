@@ -10,6 +10,7 @@
 #include "absl/status/statusor.h"
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/exploration_context.h"
+#include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/robot_types.h"
 #include "services/reasoning/core/subgoal.h"
 #include "services/reasoning/core/task_executor.h"
@@ -35,5 +36,8 @@ absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area);
 api::SearchArea ToProto(const SearchArea& area);
 // nullopt for ACCEPTED and UNSPECIFIED, which need no reaction.
 std::optional<RobotFeedback> FromProto(api::FeedbackKind kind);
+api::ResolutionPath ToProto(ResolutionPath path);
+// nullopt for UNSPECIFIED (the configured default) and for values the caller has checked away.
+std::optional<ExplorationStrategy> StrategyFromProto(api::ExplorationStrategy strategy);
 
 }  // namespace semnav::reasoning

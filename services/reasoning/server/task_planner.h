@@ -6,11 +6,12 @@
 #pragma once
 
 #include <functional>
-#include <string>
+#include <optional>
 
 #include "absl/functional/function_ref.h"
 
 #include "services/reasoning/core/exploration_context.h"
+#include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/navigation_interfaces.h"
 
 namespace semnav::reasoning {
@@ -19,9 +20,9 @@ namespace semnav::reasoning {
 class ExplorationService {
  public:
   virtual ~ExplorationService() = default;
-  // `strategy`: NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY; "" = the
-  // configured default. NOT_FOUND when planning has no goal.
-  virtual absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query, const std::string& strategy,
+  // `strategy`: nullopt = the configured default. NOT_FOUND when planning has no goal.
+  virtual absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery& query,
+                                                     std::optional<ExplorationStrategy> strategy,
                                                      const ExplorationContext& context) = 0;
 };
 
@@ -33,11 +34,12 @@ class TaskPlanner final : public PathPlanner {
  public:
   // `explorer` may be null (no planning service: the shared planner's exploration fallback).
   // `context` is called for every exploration goal, on the caller's thread, before the call.
-  TaskPlanner(PathPlanner* paths, ExplorationService* explorer, std::string strategy,
+  // `strategy`: nullopt = the configured default.
+  TaskPlanner(PathPlanner* paths, ExplorationService* explorer, std::optional<ExplorationStrategy> strategy,
               std::function<ExplorationContext()> context, RemoteCallRunner remote = nullptr)
       : paths_(paths),
         explorer_(explorer),
-        strategy_(std::move(strategy)),
+        strategy_(strategy),
         context_(std::move(context)),
         remote_(std::move(remote)) {}
 
@@ -56,7 +58,7 @@ class TaskPlanner final : public PathPlanner {
     Remote([&] { goal = explorer_->SelectGoal(query, strategy_, context); });
     return goal;
   }
-  const std::string& strategy() const { return strategy_; }
+  std::optional<ExplorationStrategy> strategy() const { return strategy_; }
 
  private:
   void Remote(absl::FunctionRef<void()> call) {
@@ -69,7 +71,7 @@ class TaskPlanner final : public PathPlanner {
 
   PathPlanner* paths_;
   ExplorationService* explorer_;
-  std::string strategy_;
+  std::optional<ExplorationStrategy> strategy_;
   std::function<ExplorationContext()> context_;
   RemoteCallRunner remote_;
 };

@@ -14,6 +14,11 @@ namespace {
 
 constexpr char kExtension[] = ".lmap";
 
+absl::Status MapNotFound(absl::string_view map_id) {
+  return FieldStatus(absl::StatusCode::kNotFound, "map_id",
+                     absl::StrCat("no landmark map \"", map_id, "\""), "MAP_NOT_FOUND");
+}
+
 }  // namespace
 
 absl::Status ValidateMapId(absl::string_view map_id) {
@@ -66,7 +71,7 @@ absl::StatusOr<std::shared_ptr<const LandmarkMap>> LandmarkStore::Get(
   if (auto s = CheckNotCorrupt(map_id); !s.ok()) return s;
   const auto it = maps_.find(map_id);
   if (it == maps_.end()) {
-    return absl::NotFoundError(absl::StrCat("map_id: no landmark map \"", map_id, "\""));
+    return MapNotFound(map_id);
   }
   return it->second;
 }
@@ -93,7 +98,7 @@ absl::Status LandmarkStore::Delete(absl::string_view map_id) {
   const auto it = maps_.find(map_id);
   const auto bad = corrupt_.find(map_id);
   if (it == maps_.end() && bad == corrupt_.end()) {
-    return absl::NotFoundError(absl::StrCat("map_id: no landmark map \"", map_id, "\""));
+    return MapNotFound(map_id);
   }
   if (!folder_.empty()) {
     std::error_code ec;

@@ -49,7 +49,7 @@ absl::Status Validate(const HeadTensors& h, const ObjectPointParams& p) {
   if (h.stride_x <= 0.0) return InvalidField("tensors.stride_x", "must be > 0");
   if (h.stride_y <= 0.0) return InvalidField("tensors.stride_y", "must be > 0");
   if (p.top_k <= 0) return InvalidField("top_k", "must be > 0");
-  if (p.nms_kernel < 0) return absl::InvalidArgumentError("params: nms_kernel must be >= 0");
+  if (p.nms_kernel < 0) return InvalidField("params", "nms_kernel must be >= 0");
   const size_t cells = static_cast<size_t>(h.width) * static_cast<size_t>(h.height);
   if (auto s = CheckPlane(h.heatmap, static_cast<size_t>(h.heatmap_channels), cells, "heatmap");
       !s.ok()) {

@@ -5,6 +5,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/string_view.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav::relocalization {
 namespace {
@@ -50,7 +51,7 @@ absl::StatusOr<std::unique_ptr<OnnxHeads>> OnnxHeads::Load(const OnnxHeadsConfig
 
 absl::StatusOr<HeadTensors> OnnxHeads::Run(const cv::Mat& image) {
   if (image.empty() || image.type() != CV_8UC3) {
-    return absl::InvalidArgumentError("image: must be a non-empty 8-bit 3-channel image");
+    return InvalidField("image", "must be a non-empty 8-bit 3-channel image");
   }
   const cv::Mat blob = cv::dnn::blobFromImage(
       image, config_.pixel_scale, cv::Size(config_.input_width, config_.input_height),

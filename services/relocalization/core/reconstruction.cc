@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "services/common/status/field_error.h"
 #include "services/relocalization/core/hungarian.h"
 
 namespace semnav::relocalization {
@@ -11,11 +12,11 @@ absl::StatusOr<Landmark> ReconstructLandmark(const ObjectPoint& point, double de
                                              const PinholeCamera& camera,
                                              const Eigen::Isometry3d& world_from_camera) {
   if (!std::isfinite(depth_m) || depth_m <= 0.0) {
-    return absl::InvalidArgumentError("depth_m: must be finite and > 0");
+    return InvalidField("depth_m", "must be finite and > 0");
   }
   if (!(camera.fx > 0.0) || !(camera.fy > 0.0) || !std::isfinite(camera.cx) ||
       !std::isfinite(camera.cy)) {
-    return absl::InvalidArgumentError("camera: fx, fy must be > 0 and cx, cy finite");
+    return InvalidField("camera", "fx, fy must be > 0 and cx, cy finite");
   }
   const Eigen::Vector3d in_camera(depth_m * (point.u - camera.cx) / camera.fx,
                                   depth_m * (point.v - camera.cy) / camera.fy, depth_m);

@@ -113,22 +113,10 @@ void SolutionToProto(const RelocalizationResult& result, const std::vector<uint6
   proto->set_reliable(result.reliable);
 }
 
-absl::Status WithErrorInfo(const absl::Status& status, absl::string_view reason,
-                           absl::string_view field_prefix) {
-  if (status.ok()) return status;
-  // Core named the field itself (InvalidField / FieldStatus): ToGrpcStatus reads its payloads.
-  if (ErrorField(status).has_value()) return status;
-  const absl::string_view message = status.message();
-  const size_t colon = message.find(": ");
-  const absl::string_view head = colon == absl::string_view::npos ? "" : message.substr(0, colon);
-  if (!head.empty() && head.find(' ') == absl::string_view::npos) {
-    return FieldError(status.code(), absl::StrCat(field_prefix, head), message.substr(colon + 2), reason);
-  }
-  absl::Status out(status.code(), message);
-  common::v1::ErrorInfo info;
-  info.set_reason(std::string(reason));
-  AttachDetail(out, info);
-  return out;
+absl::Status WithErrorInfo(const absl::Status& status, absl::string_view reason) {
+  // Core names its fields (InvalidField / FieldStatus); ToGrpcStatus turns the payloads into
+  // ErrorInfo{reason, field}. Errors core gave no reason get the step's.
+  return WithDefaultReason(status, reason);
 }
 
 }  // namespace semnav::relocalization

@@ -33,10 +33,8 @@ void SolutionToProto(const RelocalizationResult& result, const std::vector<uint6
                      const std::vector<uint64_t>& map_ids, v1::PoseSolution* proto);
 void PoseToProto(const Eigen::Isometry3d& pose, common::v1::Pose* proto);
 
-// A core error whose message starts with "<field path>: " -> the same error with an
-// ErrorInfo{reason, field} detail (field prefixed by `field_prefix`); other errors get
-// ErrorInfo{reason} only.
-absl::Status WithErrorInfo(const absl::Status& status, absl::string_view reason,
-                           absl::string_view field_prefix = "");
+// A core error with `reason` as its ErrorInfo.reason unless core chose one (field errors keep
+// their field and reason).
+absl::Status WithErrorInfo(const absl::Status& status, absl::string_view reason);
 
 }  // namespace semnav::relocalization

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "semnav/common/v1/errors.pb.h"
+#include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
 
 namespace semnav::relocalization {
@@ -55,14 +56,15 @@ TEST(RelocProtoConvertTest, ErrorsCarryTheRequestFieldPath) {
   EXPECT_EQ(FieldOf(all.status()), "landmarks[1].embedding");
 }
 
-TEST(RelocProtoConvertTest, WithErrorInfoOnlyTreatsASingleTokenPrefixAsAField) {
-  const absl::Status named = WithErrorInfo(absl::InvalidArgumentError("tensors.offset: must be finite"), "FIELD_INVALID");
+TEST(RelocProtoConvertTest, WithErrorInfoKeepsTheFieldCoreNamedAndNeverParsesMessages) {
+  const absl::Status named = WithErrorInfo(InvalidField("tensors.offset", "must be finite"), "DETECTOR_FAILED");
   EXPECT_EQ(FieldOf(named), "tensors.offset");
   EXPECT_EQ(named.message(), "tensors.offset: must be finite");
+  EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(FromGrpcStatus(ToGrpcStatus(named)))->reason(), "FIELD_INVALID");
   const absl::Status reason_only =
-      WithErrorInfo(absl::NotFoundError("no consistent match: 2 of 9 pairs agree"), "RELOCALIZATION_FAILED");
+      WithErrorInfo(absl::NotFoundError("no_field: 2 of 9 pairs agree"), "RELOCALIZATION_FAILED");
   EXPECT_EQ(FieldOf(reason_only), "");
-  const auto info = GetDetail<common::v1::ErrorInfo>(reason_only);
+  const auto info = GetDetail<common::v1::ErrorInfo>(FromGrpcStatus(ToGrpcStatus(reason_only)));
   ASSERT_TRUE(info.has_value());
   EXPECT_EQ(info->reason(), "RELOCALIZATION_FAILED");
 }

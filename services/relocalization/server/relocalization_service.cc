@@ -106,10 +106,8 @@ absl::StatusOr<std::shared_ptr<const LandmarkMap>> RelocalizationServiceImpl::Ge
   const absl::string_view reason = code == absl::StatusCode::kNotFound   ? "MAP_NOT_FOUND"
                                    : code == absl::StatusCode::kDataLoss ? "MAP_CORRUPT"
                                                                          : "FIELD_INVALID";
-  // Store messages name "map_id"; requests with two maps need the real field name.
-  absl::string_view message = map.status().message();
-  absl::ConsumePrefix(&message, "map_id: ");
-  return FieldError(code, field, message, reason);
+  // The store names "map_id"; requests with two maps need the real field name.
+  return WithReason(WithField(map.status(), field), reason);
 }
 
 absl::Status RelocalizationServiceImpl::DoExtract(const v1::ExtractObjectPointsRequest& request,

@@ -9,7 +9,7 @@
 #include "semnav/relocalization/v1/relocalization.grpc.pb.h"
 #include "services/relocalization/core/landmark_store.h"
 #include "services/relocalization/core/onnx_heads.h"
-#include "services/relocalization/server/request_cache.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/relocalization/server/service_config.h"
 
 namespace semnav::relocalization {
@@ -53,8 +53,8 @@ class RelocalizationServiceImpl final : public v1::RelocalizationService::Callba
   const std::unique_ptr<LandmarkStore> store_;
   const std::unique_ptr<OnnxHeads> detector_;
   absl::Mutex transaction_mu_;  // upserts/deletes: idempotency check + apply + remember
-  RequestCache<v1::UpsertLandmarksResponse> upsert_answers_ ABSL_GUARDED_BY(transaction_mu_);
-  RequestCache<v1::DeleteLandmarkMapResponse> delete_answers_ ABSL_GUARDED_BY(transaction_mu_);
+  FirstAnswerCache<v1::UpsertLandmarksResponse> upsert_answers_ ABSL_GUARDED_BY(transaction_mu_);
+  FirstAnswerCache<v1::DeleteLandmarkMapResponse> delete_answers_ ABSL_GUARDED_BY(transaction_mu_);
 };
 
 }  // namespace semnav::relocalization
