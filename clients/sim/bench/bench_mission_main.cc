@@ -258,6 +258,9 @@ int main(int argc, char** argv) {
                                      result->record.model_calls, after.answers - model_before.answers,
                                      after.tokens - model_before.tokens, after.latency_s - model_before.latency_s);
         log << "model:" << model_line << "\n";
+        result->record.model_tokens = after.tokens - model_before.tokens;
+        result->record.model_wait_s = after.latency_s - model_before.latency_s;
+        result->record.vision_calls = after.vision_answers - model_before.vision_answers;
       }
       if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, plot_grids.at(spec.world.name),
                                                                 spec.target_label, *result,

@@ -67,6 +67,9 @@ nlohmann::json StrategyJson(const StrategySummary& s) {
           {"path_m", s.path_m},
           {"time_s", s.time_s},
           {"model_calls", s.model_calls},
+          {"model_tokens", s.model_tokens},
+          {"model_wait_s", s.model_wait_s},
+          {"vision_calls", s.vision_calls},
           {"fast_path_share", s.fast_path_share},
           {"episodes", s.episodes},
           {"failures", failures}};
@@ -135,7 +138,9 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
     rows.push_back({{"strategy", r.strategy}, {"group", r.group}, {"world", r.world}, {"target", r.target},
                     {"success", r.success}, {"shortest_path_m", r.shortest_path_m}, {"path_m", r.path_m},
                     {"dtg_m", r.distance_to_goal_m}, {"time_s", r.time_s}, {"energy_j", r.energy_j},
-                    {"model_calls", r.model_calls}, {"fast_path", r.goals_fast_path},
+                    {"model_calls", r.model_calls}, {"model_tokens", r.model_tokens},
+                    {"model_wait_s", r.model_wait_s}, {"vision_calls", r.vision_calls},
+                    {"fast_path", r.goals_fast_path},
                     {"failure_cause", r.failure_cause}});
   }
   out["episodes"] = rows;

@@ -17,7 +17,8 @@ inline constexpr char kExplorationOnly[] = "NEAREST_FRONTIER";
 using NotRun = std::map<std::string, std::string>;
 
 // {"success_radius_m": r,
-//  "strategies": {NAME: {sr, spl, dtg, path_m, time_s, model_calls, fast_path_share, episodes,
+//  "strategies": {NAME: {sr, spl, dtg, path_m, time_s, model_calls, model_tokens,
+//                        model_wait_s (simulated s), vision_calls, fast_path_share, episodes,
 //                        failures: {CAUSE: n}}},
 //      (the indoor group, the headline)
 //  "groups": {GROUP: {"strategies": {NAME: {the same keys}}, "energy_j": {NAME: mean},
