@@ -1,5 +1,7 @@
 #include "services/modelproxy/core/offline/offline_tasks.h"
 
+#include "services/modelproxy/core/offline/offline_decompose.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <set>
@@ -138,6 +140,7 @@ absl::StatusOr<nlohmann::json> RunOfflineTask(const nlohmann::json& task, const 
   if (!task.is_object()) return absl::InvalidArgumentError("task must be a JSON object");
   absl::StatusOr<std::string> kind = RequiredString(task, "task", "");
   if (!kind.ok()) return kind.status();
+  if (*kind == "decompose") return DecomposeOffline(task);
   absl::StatusOr<std::string> target_text = RequiredString(task, "target", "");
   if (!target_text.ok()) return target_text.status();
   Target target{CanonicalTerm(*target_text), ""};
@@ -156,7 +159,7 @@ absl::StatusOr<nlohmann::json> RunOfflineTask(const nlohmann::json& task, const 
       ranking.push_back(ScoreRegion(r, target, prior, params));
   } else {
     return absl::InvalidArgumentError(
-        absl::StrCat("task '", *kind, "' is not one of match_target, rank_regions"));
+        absl::StrCat("task '", *kind, "' is not one of match_target, rank_regions, decompose"));
   }
   std::stable_sort(ranking.begin(), ranking.end(),
                    [](const Scored& a, const Scored& b) { return a.score > b.score; });

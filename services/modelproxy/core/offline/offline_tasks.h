@@ -17,7 +17,8 @@ struct OfflineParams {
   size_t max_items = 512;           // candidates / regions per request
 };
 
-// Runs a task object ({"task": "match_target" | "rank_regions", ...}). INVALID_ARGUMENT naming
+// Runs a task object ({"task": "match_target" | "rank_regions" | "decompose", ...}; decompose:
+// offline_decompose.h). INVALID_ARGUMENT naming
 // the offending field for a malformed task. The answer has task, target, best_id, confidence,
 // target_in_prior (false: only lexical evidence was possible), ranking [{id, score, reason}],
 // offline = true and provenance.
