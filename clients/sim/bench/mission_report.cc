@@ -103,6 +103,35 @@ std::string FailureTable(const std::vector<StrategySummary>& summaries) {
 
 }  // namespace
 
+std::string SweepLabel(const std::string& strategy, double accuracy) {
+  return absl::StrFormat("%s@%.2f", strategy, accuracy);
+}
+
+std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records, const std::string& group,
+                                     const std::string& strategy, const std::vector<double>& accuracies) {
+  const std::vector<EpisodeRecord> in_group = InGroup(records, group);
+  const std::vector<StrategySummary> summaries = SummariseByStrategy(in_group);
+  std::vector<SweepPoint> points;
+  for (double accuracy : accuracies) {
+    const std::string label = SweepLabel(strategy, accuracy);
+    SweepPoint point;
+    point.accuracy = accuracy;
+    for (const StrategySummary& s : summaries) {
+      if (s.strategy != label) continue;
+      point.episodes = s.episodes;
+      point.sr = s.sr;
+      point.vision_calls = s.vision_calls;
+      point.model_calls = s.model_calls;
+    }
+    if (const std::optional<PairedRatio> paired = PathVsExplorationOnlyBothFound(in_group, label)) {
+      point.path_ratio = paired->ratio;
+      point.paired_episodes = paired->episodes;
+    }
+    points.push_back(point);
+  }
+  return points;
+}
+
 absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double success_radius,
                               const NotRun& not_run, const std::string& path) {
   nlohmann::json out;
