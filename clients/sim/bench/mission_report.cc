@@ -122,6 +122,7 @@ std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records, 
       point.sr = s.sr;
       point.vision_calls = s.vision_calls;
       point.model_calls = s.model_calls;
+      point.mean_path_ratio = PathVsExplorationOnly(summaries, s);
     }
     if (const std::optional<PairedRatio> paired = PathVsExplorationOnlyBothFound(in_group, label)) {
       point.path_ratio = paired->ratio;

@@ -40,6 +40,9 @@ struct SweepPoint {
   // none did.
   std::optional<double> path_ratio;
   int paired_episodes = 0;
+  // Mean path over the baseline's mean path on all episodes (unset without the baseline): the
+  // only path figure when the baseline found nothing.
+  std::optional<double> mean_path_ratio;
   double vision_calls = 0.0;  // mean per episode
   double model_calls = 0.0;   // mean per episode
 };

@@ -35,6 +35,8 @@ TEST(SimBenchVlmSweepTest, SummaryPairsEachAccuracyWithTheBaseline) {
   EXPECT_DOUBLE_EQ(*points[0].path_ratio, 0.75);  // 30 / 40 on the one episode both found
   EXPECT_EQ(points[0].paired_episodes, 1);
   EXPECT_DOUBLE_EQ(points[0].vision_calls, 25.0);
+  ASSERT_TRUE(points[0].mean_path_ratio.has_value());
+  EXPECT_DOUBLE_EQ(*points[0].mean_path_ratio, 1.2);  // mean 60 m / mean 50 m
   EXPECT_EQ(points[1].episodes, 0);  // 0.7 was not run
   EXPECT_FALSE(points[1].path_ratio.has_value());
   EXPECT_DOUBLE_EQ(points[2].sr, 1.0);
@@ -47,7 +49,7 @@ TEST(SimBenchVlmSweepTest, PlotIsAPngOfTheStatedSize) {
   const cv::Mat image = cv::imread(path);
   ASSERT_FALSE(image.empty());
   EXPECT_EQ(image.cols, 640);
-  EXPECT_EQ(image.rows, 420);
+  EXPECT_EQ(image.rows, 460);
   EXPECT_EQ(WriteVlmSweepPlot({}, "empty", path).code(), absl::StatusCode::kInvalidArgument);
 }
 
