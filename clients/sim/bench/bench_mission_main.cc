@@ -16,10 +16,12 @@
 #include "absl/strings/str_format.h"
 #include "absl/synchronization/mutex.h"
 #include "absl/strings/str_split.h"
+#include "absl/strings/numbers.h"
 #include "clients/sim/bench/episode_plan.h"
 #include "clients/sim/bench/mission_plot.h"
 #include "clients/sim/vlm/sim_vlm_server.h"
 #include "clients/sim/bench/mission_report.h"
+#include "clients/sim/bench/vlm_sweep_plot.h"
 #include "clients/sim/core/occupancy_raster.h"
 #include "clients/sim/core/world_yaml.h"
 #include "clients/sim/loop/episode_runner.h"
@@ -37,7 +39,8 @@ namespace sim = semnav::sim;
 constexpr char kUsage[] =
     "usage: semnav-bench-mission [--suite DIR] [--episodes N] [--outdoor-episodes N] [--flyroll-episodes N]\n"
     "                            [--json FILE] [--out DIR] [--seed N] [--max-steps N] [--strategies LIST]\n"
-    "                            [--model-config FILE | --model sim] [--bin-dir DIR] [--jobs N]\n"
+    "                            [--model-config FILE | --model sim [--vlm-sweep LIST]] [--bin-dir DIR]\n"
+    "                            [--jobs N]\n"
     "  --suite DIR            folder of world YAML files, or of suite folders (semnav-sim-worlds --out DIR\n"
     "                         writes indoor, outdoor, flyroll, houseexpo, fr079); default: 4 generated homes\n"
     "  --episodes N           indoor (ground robot) episodes per strategy (default 4)\n"
@@ -54,6 +57,10 @@ constexpr char kUsage[] =
     "  --model sim            run the simulated VLM (clients/sim/vlm) per stack and a model proxy\n"
     "                         pointed at it; adds EROI_UTILITY and prints model calls, tokens and\n"
     "                         simulated model time per episode\n"
+    "  --vlm-sweep LIST       with --model sim: run EROI_UTILITY once per VLM recognition accuracy of\n"
+    "                         the comma list (e.g. 0.5,0.7,0.9; clients/sim/vlm ErrorsAtAccuracy), each\n"
+    "                         labelled EROI_UTILITY@ACC beside the other strategies (run once), and\n"
+    "                         write vlm_sweep.png (outdoor SR and path ratio against accuracy) to --out\n"
     "  --bin-dir DIR          folder with the service binaries (default: this program's folder)\n"
     "  --jobs N               episodes run at once, each on its own stack of services (default 2, one\n"
     "                         per core of the reference machine; 1 = one after another)\n";
@@ -70,6 +77,7 @@ const std::vector<semnav::FlagSpec> kFlags = {{"suite", "DIR", ""},
                                               {"strategies", "LIST", ""},
                                               {"model-config", "FILE", ""},
                                               {"model", "NAME", ""},
+                                              {"vlm-sweep", "LIST", ""},
                                               {"bin-dir", "DIR", ""},
                                               {"jobs", "N", ""}};
 
@@ -153,13 +161,36 @@ int main(int argc, char** argv) {
   }
   // Every (strategy, episode) pair is one job; `--jobs` stacks take jobs from one queue. Each
   // task asks for its own strategy, so any stack runs any job, and the records keep plan order.
+  // --vlm-sweep: EROI_UTILITY once per recognition accuracy (the other strategies do not read
+  // the VLM's clues, so they run once).
+  std::vector<double> accuracies;
+  for (absl::string_view item : absl::StrSplit(flags.contains("--vlm-sweep") ? flags["--vlm-sweep"] : "", ',',
+                                               absl::SkipEmpty())) {
+    double accuracy = -1.0;
+    if (!absl::SimpleAtod(item, &accuracy) || !(accuracy >= 0.0 && accuracy <= 1.0)) {
+      std::cerr << "semnav-bench-mission: --vlm-sweep: " << item << " is not an accuracy in [0, 1]\n" << kUsage;
+      return 2;
+    }
+    accuracies.push_back(accuracy);
+  }
+  if (!accuracies.empty() && (flags["--model"] != "sim" ||
+                              std::find(strategies.begin(), strategies.end(), "EROI_UTILITY") == strategies.end())) {
+    std::cerr << "semnav-bench-mission: --vlm-sweep needs --model sim and EROI_UTILITY in --strategies\n" << kUsage;
+    return 2;
+  }
   struct Job {
     std::string strategy;
     size_t episode;
+    std::optional<double> accuracy;  // the sweep's VLM accuracy; unset = the default error model
   };
   std::vector<Job> jobs;
   for (const std::string& strategy : strategies) {
-    for (size_t i = 0; i < plan.size(); ++i) jobs.push_back({strategy, i});
+    const bool swept = strategy == "EROI_UTILITY" && !accuracies.empty();
+    for (const std::optional<double> accuracy :
+         swept ? std::vector<std::optional<double>>(accuracies.begin(), accuracies.end())
+               : std::vector<std::optional<double>>{std::nullopt}) {
+      for (size_t i = 0; i < plan.size(); ++i) jobs.push_back({strategy, i, accuracy});
+    }
   }
   const int workers = std::clamp(std::atoi(flags["--jobs"].c_str()), 1, std::max<int>(1, jobs.size()));
   const int max_steps = std::atoi(flags["--max-steps"].c_str());
@@ -236,7 +267,9 @@ int main(int argc, char** argv) {
       sim::vlm::SimVlmServer::Served model_before;
       if (sim_model) {  // this episode's world and frames (the worker's episodes run one at a time)
         sim::vlm::FrameLog* frames = frame_logs[worker].emplace_back(std::make_unique<sim::vlm::FrameLog>()).get();
-        auto model = sim::vlm::SimVlm::Create(spec.world, frames, sim::vlm::SimVlmConfig());
+        sim::vlm::SimVlmConfig config;
+        if (jobs[j].accuracy) config.errors = sim::vlm::ErrorsAtAccuracy(*jobs[j].accuracy);
+        auto model = sim::vlm::SimVlm::Create(spec.world, frames, config);
         if (model.ok()) endpoints[worker]->Replace(*std::move(model));
         spec.on_camera_frame = [frames](const sim::SensorFrame& frame) { frames->Record(frame); };
         model_before = endpoints[worker]->served();
@@ -248,8 +281,11 @@ int main(int argc, char** argv) {
         failure = result.status();
         return;
       }
+      const std::string label =
+          jobs[j].accuracy ? semnav::sim::bench::SweepLabel(spec.strategy, *jobs[j].accuracy) : spec.strategy;
+      result->record.strategy = label;
       const std::string stem =
-          absl::StrFormat("%s/%s_episode_%02d_%s", out_dir, spec.strategy, jobs[j].episode, spec.world.name);
+          absl::StrFormat("%s/%s_episode_%02d_%s", out_dir, label, jobs[j].episode, spec.world.name);
       std::ofstream log(stem + ".log");
       for (const std::string& line : result->timeline) log << line << "\n";
       std::string model_line;
@@ -259,6 +295,9 @@ int main(int argc, char** argv) {
                                      result->record.model_calls, after.answers - model_before.answers,
                                      after.tokens - model_before.tokens, after.latency_s - model_before.latency_s);
         log << "model:" << model_line << "\n";
+        result->record.model_tokens = after.tokens - model_before.tokens;
+        result->record.model_wait_s = after.latency_s - model_before.latency_s;
+        result->record.vision_calls = after.vision_answers - model_before.vision_answers;
       }
       if (absl::Status s = semnav::sim::bench::WriteEpisodePlot(spec.world, plot_grids.at(spec.world.name),
                                                                 spec.target_label, *result,
@@ -276,7 +315,7 @@ int main(int argc, char** argv) {
       std::cout << absl::StrFormat(
           "[%d/%d] %s %s %s start %d: find %s: %s in %d steps, DTG %.2f m, path %.1f m, l %.1f m (%s) "
           "[%.0f s wall, %.0f s left]%s\n",
-          done, jobs.size(), spec.strategy, sim::ReportGroup(spec.world.starts[spec.start_index].modality),
+          done, jobs.size(), label, sim::ReportGroup(spec.world.starts[spec.start_index].modality),
           spec.world.name, spec.start_index, spec.target, result->record.success ? "SUCCESS" : "fail",
           result->steps, result->record.distance_to_goal_m, result->record.path_m, result->record.shortest_path_m,
           result->final_reason, wall_s, eta_s, model_line)
@@ -302,6 +341,27 @@ int main(int argc, char** argv) {
   if (flags.contains("--json")) {
     if (absl::Status s = semnav::sim::bench::WriteMissionJson(records, sim::kDefaultSuccessRadius, not_run,
                                                               flags["--json"]);
+        !s.ok()) {
+      std::cerr << "semnav-bench-mission: " << s << "\n";
+      return 1;
+    }
+  }
+  if (!accuracies.empty()) {
+    const std::vector<semnav::sim::bench::SweepPoint> points =
+        semnav::sim::bench::SweepSummary(records, "outdoor", "EROI_UTILITY", accuracies);
+    std::cout << "\nVLM-quality sweep, outdoor EROI_UTILITY:\n\n| accuracy | episodes | SR | path / "
+              << semnav::sim::bench::kExplorationOnly << " (both found) | vision calls | model calls |\n"
+              << "|---|---|---|---|---|---|\n";
+    for (const semnav::sim::bench::SweepPoint& p : points) {
+      std::cout << absl::StrFormat("| %.2f | %d | %.3f | %s | %.1f | %.1f |\n", p.accuracy, p.episodes, p.sr,
+                                   p.path_ratio ? absl::StrFormat("%.2f (%d)", *p.path_ratio, p.paired_episodes)
+                                                : "-",
+                                   p.vision_calls, p.model_calls);
+    }
+    if (absl::Status s = semnav::sim::bench::WriteVlmSweepPlot(
+            points, absl::StrFormat("outdoor EROI_UTILITY, %d episodes per accuracy (simulated VLM)",
+                                    points.front().episodes),
+            out_dir + "/vlm_sweep.png");
         !s.ok()) {
       std::cerr << "semnav-bench-mission: " << s << "\n";
       return 1;

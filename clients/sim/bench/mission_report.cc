@@ -67,6 +67,9 @@ nlohmann::json StrategyJson(const StrategySummary& s) {
           {"path_m", s.path_m},
           {"time_s", s.time_s},
           {"model_calls", s.model_calls},
+          {"model_tokens", s.model_tokens},
+          {"model_wait_s", s.model_wait_s},
+          {"vision_calls", s.vision_calls},
           {"fast_path_share", s.fast_path_share},
           {"episodes", s.episodes},
           {"failures", failures}};
@@ -99,6 +102,36 @@ std::string FailureTable(const std::vector<StrategySummary>& summaries) {
 }
 
 }  // namespace
+
+std::string SweepLabel(const std::string& strategy, double accuracy) {
+  return absl::StrFormat("%s@%.2f", strategy, accuracy);
+}
+
+std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records, const std::string& group,
+                                     const std::string& strategy, const std::vector<double>& accuracies) {
+  const std::vector<EpisodeRecord> in_group = InGroup(records, group);
+  const std::vector<StrategySummary> summaries = SummariseByStrategy(in_group);
+  std::vector<SweepPoint> points;
+  for (double accuracy : accuracies) {
+    const std::string label = SweepLabel(strategy, accuracy);
+    SweepPoint point;
+    point.accuracy = accuracy;
+    for (const StrategySummary& s : summaries) {
+      if (s.strategy != label) continue;
+      point.episodes = s.episodes;
+      point.sr = s.sr;
+      point.vision_calls = s.vision_calls;
+      point.model_calls = s.model_calls;
+      point.mean_path_ratio = PathVsExplorationOnly(summaries, s);
+    }
+    if (const std::optional<PairedRatio> paired = PathVsExplorationOnlyBothFound(in_group, label)) {
+      point.path_ratio = paired->ratio;
+      point.paired_episodes = paired->episodes;
+    }
+    points.push_back(point);
+  }
+  return points;
+}
 
 absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double success_radius,
                               const NotRun& not_run, const std::string& path) {
@@ -135,7 +168,9 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
     rows.push_back({{"strategy", r.strategy}, {"group", r.group}, {"world", r.world}, {"target", r.target},
                     {"success", r.success}, {"shortest_path_m", r.shortest_path_m}, {"path_m", r.path_m},
                     {"dtg_m", r.distance_to_goal_m}, {"time_s", r.time_s}, {"energy_j", r.energy_j},
-                    {"model_calls", r.model_calls}, {"fast_path", r.goals_fast_path},
+                    {"model_calls", r.model_calls}, {"model_tokens", r.model_tokens},
+                    {"model_wait_s", r.model_wait_s}, {"vision_calls", r.vision_calls},
+                    {"fast_path", r.goals_fast_path},
                     {"failure_cause", r.failure_cause}});
   }
   out["episodes"] = rows;

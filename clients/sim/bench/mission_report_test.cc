@@ -21,6 +21,9 @@ std::vector<EpisodeRecord> Episodes() {
   EpisodeRecord uav_hit{"SEMANTIC_FRONTIER", "outdoor_river_bridge", "boat", true, 10.0, 10.0, 0.4, 20.0, 0.0, 0, 1, 1,
                         "outdoor", ""};
   miss.failure_cause = "budget_spent_exploring";
+  hit.model_tokens = 1000;  // the simulated VLM's figures: the miss had none
+  hit.model_wait_s = 2.5;
+  hit.vision_calls = 3;
   uav_base_miss.failure_cause = "collision_loop";
   return {hit, miss, uav_base, uav_base_miss, uav, uav_hit};
 }
@@ -31,7 +34,7 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   const nlohmann::json json = nlohmann::json::parse(std::ifstream(path));
   // The headline is the indoor group, with exactly the keys.
   const nlohmann::json& s = json["strategies"]["NEAREST_FRONTIER"];
-  EXPECT_EQ(s.size(), 9u);
+  EXPECT_EQ(s.size(), 12u);
   EXPECT_EQ(s["episodes"], 2);
   EXPECT_DOUBLE_EQ(s["sr"], 0.5);
   EXPECT_DOUBLE_EQ(s["spl"], 0.25);  // (2 / max(4, 2) + 0) / 2
@@ -40,6 +43,9 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   EXPECT_DOUBLE_EQ(s["time_s"], 30.0);
   EXPECT_DOUBLE_EQ(s["model_calls"], 2.0);
   EXPECT_DOUBLE_EQ(s["fast_path_share"], 0.5);
+  EXPECT_DOUBLE_EQ(s["model_tokens"], 500.0);  // (1000 + 0) / 2
+  EXPECT_DOUBLE_EQ(s["model_wait_s"], 1.25);
+  EXPECT_DOUBLE_EQ(s["vision_calls"], 1.5);
   EXPECT_EQ(s["failures"], nlohmann::json({{"budget_spent_exploring", 1}}));
   EXPECT_FALSE(json["strategies"].contains("SEMANTIC_FRONTIER"));  // outdoor only
   EXPECT_DOUBLE_EQ(json["groups"]["indoor"]["energy_j"]["NEAREST_FRONTIER"], 2000.0);
@@ -58,6 +64,10 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   EXPECT_TRUE(outdoor["strategies"]["SEMANTIC_FRONTIER"]["failures"].empty());
   EXPECT_EQ(json["episodes"][1]["failure_cause"], "budget_spent_exploring");
   EXPECT_EQ(json["episodes"][0]["failure_cause"], "");
+  EXPECT_EQ(json["episodes"][0]["model_tokens"], 1000);
+  EXPECT_DOUBLE_EQ(json["episodes"][0]["model_wait_s"], 2.5);
+  EXPECT_EQ(json["episodes"][0]["vision_calls"], 3);
+  EXPECT_EQ(json["episodes"][1]["model_tokens"], 0);
 }
 
 TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategyAndGroup) {

@@ -212,6 +212,9 @@ std::vector<StrategySummary> SummariseByStrategy(const std::vector<EpisodeRecord
     it->time_s += r.time_s;
     it->energy_j += r.energy_j;
     it->model_calls += r.model_calls;
+    it->model_tokens += static_cast<double>(r.model_tokens);
+    it->model_wait_s += r.model_wait_s;
+    it->vision_calls += r.vision_calls;
     resolved[k] += r.goals_resolved;
     fast[k] += r.goals_fast_path;
     if (!r.success) ++it->failures[r.failure_cause.empty() ? "unclassified" : r.failure_cause];
@@ -220,7 +223,8 @@ std::vector<StrategySummary> SummariseByStrategy(const std::vector<EpisodeRecord
     StrategySummary& s = summaries[k];
     const double n = s.episodes;
     for (double* mean :
-         {&s.sr, &s.spl, &s.dtg_m, &s.path_m, &s.time_s, &s.energy_j, &s.model_calls}) {
+         {&s.sr, &s.spl, &s.dtg_m, &s.path_m, &s.time_s, &s.energy_j, &s.model_calls, &s.model_tokens,
+          &s.model_wait_s, &s.vision_calls}) {
       *mean /= n;
     }
     s.fast_path_share = resolved[k] > 0 ? static_cast<double>(fast[k]) / resolved[k] : 0.0;

@@ -90,6 +90,11 @@ struct EpisodeRecord {
   // Why a failed episode failed (the loop's failure taxonomy, e.g. "budget_spent_exploring");
   // empty for a success.
   std::string failure_cause;
+  // What the model served this episode (known with the simulated VLM; 0 otherwise): tokens in
+  // and out, the simulated seconds its answers took, and the answers about an image.
+  int64_t model_tokens = 0;
+  double model_wait_s = 0.0;
+  int vision_calls = 0;
 };
 
 // The report section of an episode by the robot's modality: ground = "indoor", uav = "outdoor",
@@ -106,6 +111,9 @@ struct StrategySummary {
   double time_s = 0.0;           // mean
   double energy_j = 0.0;         // mean
   double model_calls = 0.0;      // mean per episode
+  double model_tokens = 0.0;     // mean per episode
+  double model_wait_s = 0.0;     // mean per episode, simulated seconds
+  double vision_calls = 0.0;     // mean per episode
   double fast_path_share = 0.0;  // fast-path resolutions / all resolutions (0 if none)
   // Failed episodes per cause (EpisodeRecord::failure_cause; "unclassified" when empty).
   std::map<std::string, int> failures;

@@ -1,9 +1,18 @@
 #include "clients/sim/vlm/sim_vlm_config.h"
 
+#include <algorithm>
+
 #include "services/common/status/field_error.h"
 #include "services/common/status/value_checks.h"
 
 namespace semnav::sim::vlm {
+
+SimVlmErrors ErrorsAtAccuracy(double accuracy) {
+  const SimVlmErrors defaults;
+  const double scale = (1.0 - std::clamp(accuracy, 0.0, 1.0)) / defaults.miss_rate;
+  return {std::min(1.0, defaults.miss_rate * scale), std::min(1.0, defaults.confusion_rate * scale),
+          std::min(1.0, defaults.hallucination_rate * scale), std::min(1.0, defaults.code_off_by_one_rate * scale)};
+}
 
 absl::Status ValidateSimVlmConfig(const SimVlmConfig& config) {
   const SimVlmErrors& e = config.errors;

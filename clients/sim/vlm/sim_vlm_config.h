@@ -48,6 +48,11 @@ struct SimVlmConfig {
   std::string api_key;  // "" = no key required (a local server)
 };
 
+// The error model at recognition accuracy `accuracy` in [0, 1] (the VLM-quality sweep): miss rate
+// 1 - accuracy, and the other three rates scaled with it in the defaults' proportions, so the
+// defaults are accuracy 0.85 (miss 0.15: confusion 0.03, hallucination 0.05, off by one 0.10).
+SimVlmErrors ErrorsAtAccuracy(double accuracy);
+
 // INVALID_ARGUMENT naming the field: rates outside [0, 1], non-positive latencies, sizes < 1.
 absl::Status ValidateSimVlmConfig(const SimVlmConfig& config);
 

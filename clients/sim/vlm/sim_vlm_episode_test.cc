@@ -15,10 +15,10 @@
 namespace semnav::sim::vlm {
 namespace {
 
-// DISABLED_ until it passes (docs/performance/mission.md, "EROI_UTILITY with the simulated VLM"):
-// the loop runs end to end (57 VLM answers in 400 steps, the budget of 60 calls spent) but the UAV
-// does not find the car. Run it by hand with --gtest_also_run_disabled_tests.
-TEST(SimVlmEpisodeTest, DISABLED_EroiUtilityFindsTheCarThroughTheProxyAndTheSimulatedVlm) {
+// It used to fail: planning's roadmap could not reach any viewpoint from the middle of explored
+// space and the gateway's blind fallback steps took the UAV east out of the world (planning's
+// EroiUtility regression tests, docs/performance/mission.md).
+TEST(SimVlmEpisodeTest, EroiUtilityFindsTheCarThroughTheProxyAndTheSimulatedVlm) {
   loop::EpisodeSpec spec;
   spec.world = RoadVehiclesScene(1);
   spec.start_index = -1;

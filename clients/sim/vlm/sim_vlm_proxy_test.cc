@@ -72,6 +72,12 @@ TEST(SimVlmProxyTest, SearchPromptThroughTheProxyGetsTheCodeAndTheStatedLatency)
   EXPECT_EQ(result->reply.text, direct->text);
   EXPECT_EQ(result->latency, absl::Seconds(direct->latency_s));
   EXPECT_EQ(result->reply.usage.input_tokens, 1083);
+  // The bench's per-episode model figures: one answer, about an image, its tokens and time.
+  const SimVlmServer::Served served = (*server)->served();
+  EXPECT_EQ(served.answers, 1);
+  EXPECT_EQ(served.vision_answers, 1);
+  EXPECT_EQ(served.tokens, direct->input_tokens + direct->output_tokens);
+  EXPECT_DOUBLE_EQ(served.latency_s, direct->latency_s);
 
   ::setenv(kKeyEnv, "wrong-key", 1);
   std::unique_ptr<ModelProxy> wrong = ProxyFor((*server)->base_url());

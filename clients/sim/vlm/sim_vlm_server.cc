@@ -105,6 +105,7 @@ absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_pt
     {
       absl::MutexLock lock(&self->mu_);
       ++self->served_.answers;
+      if (!question->images.empty()) ++self->served_.vision_answers;
       self->served_.tokens += reply->input_tokens + reply->output_tokens;
       self->served_.latency_s += reply->latency_s;
       self->answers_.push_back(reply->text.substr(0, 200));

@@ -36,6 +36,7 @@ class SimVlmServer {
   // Totals over the answers served (for per-episode reports: take differences).
   struct Served {
     int answers = 0;
+    int vision_answers = 0;   // of which about an image (the seed-000 search prompt)
     int64_t tokens = 0;       // input + output
     double latency_s = 0.0;   // simulated model time
   };

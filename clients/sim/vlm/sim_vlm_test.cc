@@ -46,6 +46,27 @@ Asked AskAbout(const SensorFrame& frame, double yaw, const std::string& target) 
 
 bool CutByBorder(const cv::Rect& box) { return box.x <= 0 || box.y <= 0 || box.x + box.width >= 160 || box.y + box.height >= 120; }
 
+// The sweep's accuracy scale: the defaults are accuracy 0.85; the other rates scale with the miss
+// rate, and accuracy 1 is an error-free model.
+TEST(SimVlmConfigTest, ErrorsAtAccuracyScaleTheDefaults) {
+  const SimVlmErrors defaults = ErrorsAtAccuracy(0.85);
+  EXPECT_NEAR(defaults.miss_rate, 0.15, 1e-12);
+  EXPECT_NEAR(defaults.confusion_rate, 0.03, 1e-12);
+  EXPECT_NEAR(defaults.hallucination_rate, 0.05, 1e-12);
+  EXPECT_NEAR(defaults.code_off_by_one_rate, 0.10, 1e-12);
+  const SimVlmErrors half = ErrorsAtAccuracy(0.5);
+  EXPECT_NEAR(half.miss_rate, 0.5, 1e-12);
+  EXPECT_NEAR(half.confusion_rate, 0.1, 1e-12);
+  EXPECT_NEAR(half.hallucination_rate, 0.5 / 3, 1e-12);
+  EXPECT_NEAR(half.code_off_by_one_rate, 1.0 / 3, 1e-12);
+  const SimVlmErrors perfect = ErrorsAtAccuracy(1.0);
+  EXPECT_EQ(perfect.miss_rate + perfect.confusion_rate + perfect.hallucination_rate + perfect.code_off_by_one_rate, 0.0);
+  const SimVlmErrors blind = ErrorsAtAccuracy(0.0);  // scale 1 / 0.15
+  EXPECT_NEAR(blind.miss_rate, 1.0, 1e-12);
+  EXPECT_NEAR(blind.code_off_by_one_rate, 2.0 / 3, 1e-12);
+  EXPECT_NEAR(ErrorsAtAccuracy(-3.0).miss_rate, 1.0, 1e-12);  // clamped into [0, 1]
+}
+
 TEST(SimVlmCodeReaderTest, ReadsEveryCodeTheGatewayPrinted) {
   const World world = SearchWorld();
   const Scene scene = Scene::Build(world);

@@ -127,6 +127,38 @@ TEST_F(ModelProxyContractTest, OfflineDefaultAnswersStructuredTasksWithProvenanc
   EXPECT_EQ(backends.aliases(0).chain(0), "offline");
 }
 
+// Issue 15 through the real proxy with no vendor: a complex Chinese instruction is decomposed,
+// and open-vocabulary targets resolve to a detector class or a place.
+TEST_F(ModelProxyContractTest, OfflineDecomposesAndResolvesOpenVocabularyTargets) {
+  Start({});
+  auto ask = [&](const std::string& task) {
+    v1::CompleteRequest request = TaskRequest();
+    request.mutable_messages(0)->mutable_parts(0)->set_text(task);
+    v1::CompleteResponse response;
+    const grpc::Status status = Complete(request, &response);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+    EXPECT_TRUE(response.offline());
+    return nlohmann::json::parse(response.json(), nullptr, false);
+  };
+  const nlohmann::json plan = ask(R"({"task": "decompose", "instruction": "先去厨房，然后找红色的杯子"})");
+  ASSERT_EQ(plan["subgoals"].size(), 2u);
+  EXPECT_EQ(plan["subgoals"][0]["type"], "NAVIGATE");
+  EXPECT_EQ(plan["subgoals"][0]["target"], "kitchen");
+  EXPECT_EQ(plan["subgoals"][1]["type"], "FIND");
+  EXPECT_EQ(plan["subgoals"][1]["target"], "cup");
+  EXPECT_EQ(plan["subgoals"][1]["colours"], nlohmann::json::array({"red"}));
+  const nlohmann::json cabinet = ask(
+      R"({"task": "match_target", "target": "灭火器箱",
+          "candidates": [{"id": "7", "label": "door"}, {"id": "9", "label": "fire extinguisher"}]})");
+  EXPECT_EQ(cabinet["best_id"], "9");
+  EXPECT_DOUBLE_EQ(cabinet["confidence"].get<double>(), 0.85);
+  const nlohmann::json coffee = ask(
+      R"({"task": "rank_regions", "target": "coffee machine",
+          "regions": [{"id": "a", "name": "bedroom"}, {"id": "b", "name": "kitchen"}]})");
+  EXPECT_EQ(coffee["best_id"], "b");
+  EXPECT_EQ(coffee["open_vocabulary"]["place"], "kitchen");
+}
+
 TEST_F(ModelProxyContractTest, CloudFailureFallsBackToOfflineAndUsageIsPerCaller) {
   vendor_.SetDefault(Route::kOpenAiChat, Action::Status(503));
   Start({"--config", WriteConfig(vendor_.base_url())});

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "services/planning/core/alternative_point.h"
+#include "services/planning/core/distance_field.h"
 
 namespace semnav::planning {
 namespace {
@@ -94,13 +95,27 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
   }
   const double tau = config.k * s_max;
 
-  // Dijkstra over the sparse roadmap (edges built on demand).
+  // Dijkstra over the sparse roadmap (edges built on demand). The seed's roadmap is always
+  // connected; straight edges up to the connect radius alone are not once the robot stands in
+  // explored space wider than that radius (no active EROI near it: nothing reachable, and the
+  // gateway fell back to blind 3 m steps). So the robot also reaches every viewpoint by its
+  // octile path through explored free space, which straight roadmap edges may then shorten.
   std::vector<double> dist(nodes.size(), INFINITY);
   std::vector<int> parent(nodes.size(), -1);
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
   dist[0] = 0.0;
   open.push({0.0, 0});
+  if (layers.free.Contains(robot)) {
+    const std::vector<double> field = OctileDistanceField(layers.free, robot);
+    for (size_t j = 1; j < nodes.size(); ++j) {
+      const double path = field[layers.free.Index(nodes[j].cell)];
+      if (path == kUnreachable) continue;
+      dist[j] = path;
+      parent[j] = 0;
+      open.push({path, static_cast<int>(j)});
+    }
+  }
   std::optional<EroiChoice> best;
   while (!open.empty()) {
     const auto [l, i] = open.top();

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "services/planning/core/exploration_goal.h"
+
 namespace semnav::planning {
 namespace {
 
@@ -75,6 +77,59 @@ TEST(EroiUtility, PathCostFavoursTheNearerEroiBelowTheThreshold) {
   std::optional<EroiChoice> uniform = SelectEroiGoal(layers, {2, 15}, {}, SmallConfig());
   ASSERT_TRUE(uniform.has_value());
   EXPECT_DOUBLE_EQ(uniform->utility, uniform->gain / 3.0);
+}
+
+// Regression (issue 15, the UAV's closed loop): a robot standing in explored space wider than
+// the connect radius had no straight roadmap edge to any viewpoint, so no goal at all; the
+// gateway then took blind 3 m steps east. 100 x 20 cells, all explored and free but the strip
+// x >= 90; the robot at (2, 10) is 80+ cells (> 60) from EROI 4's viewpoints.
+TEST(EroiUtility, ReachesViewpointsBeyondTheConnectRadiusThroughExploredSpace) {
+  ExplorationLayers layers = AllUnknown(100, 20);
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 90; ++x) MarkFree(&layers, x, y);
+  }
+  EroiConfig config = SmallConfig();
+  ASSERT_EQ(config.connect_radius_cells, 60.0);
+  std::optional<EroiChoice> choice = SelectEroiGoal(layers, {2, 10}, {}, config);
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_EQ(choice->eroi, 4);  // the only active EROI (x 80-99)
+  // Viewpoints at radius 5 round (90, 10) on explored cells: x 85 or 86.5 -> path 83-85 cells.
+  EXPECT_GE(choice->path_cells, 83.0);
+  EXPECT_LE(choice->path_cells, 86.0);
+  EXPECT_EQ(choice->route.front(), (Cell{2, 10}));
+  EXPECT_EQ(choice->route.back(), choice->viewpoint);
+}
+
+// Regression (issue 15): a UAV's map reaches past the search area's edge; a viewpoint there took
+// it out of the world. 100 x 20 cells of 5 cm, explored and free except a 5 x 5 pocket at the
+// origin and the band x 84-91, y 0-15; the area ends at x = 4.6 m, so cells x >= 92 lie outside.
+// EROI 4's (centre (90, 10)) only explored viewpoints, x 94-95, are outside.
+TEST(EroiUtility, ViewpointsStayInsideTheSearchArea) {
+  ExplorationGrid grid;
+  grid.resolution_m = 0.05;
+  grid.explored = CellGrid<uint8_t>(100, 20, 0);
+  grid.free = PassabilityGrid(100, 20, 0);
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 100; ++x) {
+      if ((x < 5 && y < 5) || (x >= 84 && x <= 91 && y <= 15)) continue;
+      grid.explored.at(x, y) = 1;
+      grid.free.at(x, y) = 1;
+    }
+  }
+  ExplorationQuery query;
+  query.robot = {50, 10};
+  ExplorationGoalConfig config;
+  config.eroi = SmallConfig();
+  absl::StatusOr<ExplorationChoice> unbounded =
+      SelectExplorationGoal(grid, query, ExplorationStrategy::kEroiUtility, config);
+  ASSERT_TRUE(unbounded.ok()) << unbounded.status();
+  EXPECT_GE(unbounded->goal.x, 92);  // without an area the band's bigger gain wins
+  query.outside_area = [](Point2 p) { return p.x > 4.6; };
+  absl::StatusOr<ExplorationChoice> bounded =
+      SelectExplorationGoal(grid, query, ExplorationStrategy::kEroiUtility, config);
+  ASSERT_TRUE(bounded.ok()) << bounded.status();
+  EXPECT_LT(bounded->goal.x, 20);  // EROI 0, round the pocket
+  EXPECT_LT(bounded->goal.y, 20);
 }
 
 }  // namespace

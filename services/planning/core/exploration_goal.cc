@@ -114,17 +114,22 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
                             absl::StrCat("eroi_semantic_values has ", query.eroi_values.size(),
                                          " values; this grid has ", count, " EROIs"));
       }
-      // Outside the search area counts as explored: no information to gain there.
+      // Outside the search area counts as explored (no information to gain there) and blocked:
+      // no viewpoint there and no roadmap edge through it. A UAV's map reaches past the area's
+      // edge, and a free viewpoint there used to take it out of the world.
       CellGrid<uint8_t> explored = grid.explored;
+      PassabilityGrid free = grid.free;
       if (query.outside_area) {
         for (int y = 0; y < explored.height(); ++y) {
           for (int x = 0; x < explored.width(); ++x) {
-            if (query.outside_area(grid.CentreOf(Cell{x, y}))) explored.at(x, y) = 1;
+            if (!query.outside_area(grid.CentreOf(Cell{x, y}))) continue;
+            explored.at(x, y) = 1;
+            free.at(x, y) = 0;
           }
         }
       }
       const std::optional<EroiChoice> choice =
-          SelectEroiGoal({explored, grid.free}, query.robot, query.eroi_values, config.eroi);
+          SelectEroiGoal({explored, free}, query.robot, query.eroi_values, config.eroi);
       if (!choice) return NotFound("no reachable EROI viewpoint");
       return ExplorationChoice{choice->viewpoint, choice->utility, choice->route};
     }

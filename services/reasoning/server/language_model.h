@@ -42,7 +42,7 @@ class LanguageModel {
   // when the proxy's commonsense prior answered) or the call's error.
   virtual void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) = 0;
   // The decompose request; `done` gets the {"subgoals": [...]} answer as JSON text or the call's
-  // error (the proxy's offline backend has no decompose task and fails it: rules are kept).
+  // error (the proxy's offline backend answers it by rules; when it fails, the gateway's rules are kept).
   virtual void Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) = 0;
   // A free-text answer (the EROI search's VLM and region-score prompts).
   virtual void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) = 0;

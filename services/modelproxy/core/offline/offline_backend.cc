@@ -30,7 +30,7 @@ absl::StatusOr<BackendReply> OfflineBackend::Complete(const CompletionRequest& r
   if (task == nullptr) {
     return absl::InvalidArgumentError(
         "messages[-1].parts: the offline backend needs a JSON task object "
-        "(match_target or rank_regions) as a text part of the last user message");
+        "(match_target, rank_regions or decompose) as a text part of the last user message");
   }
   absl::StatusOr<nlohmann::json> answer = RunOfflineTask(*task, prior_, params_);
   if (!answer.ok()) return answer.status();

@@ -1,6 +1,9 @@
 #include "services/modelproxy/core/offline/offline_tasks.h"
 
+#include "services/modelproxy/core/offline/offline_decompose.h"
+
 #include <algorithm>
+#include <optional>
 #include <cstdint>
 #include <set>
 #include <string>
@@ -35,6 +38,7 @@ std::string PriorName(const std::string& target, const PlacePrior& prior) {
 struct Target {
   std::string canonical;   // for lexical matching
   std::string prior_name;  // for the place prior
+  std::optional<StandIn> stand_in;  // open vocabulary: only for targets the prior does not know
 };
 
 // Keeps the larger score and its reason.
@@ -98,6 +102,19 @@ void ScoreLabel(Scored& item, const Target& target, const std::string& label,
   Consider(
       item, related,
       absl::StrFormat("'%s' is found in the same places as the target (%.2f)", label, related));
+  if (!target.stand_in) return;
+  const StandIn& stand_in = *target.stand_in;
+  if (!stand_in.known_class.empty()) {
+    const double s = params.stand_in_class_weight *
+                     LexicalMatch(CanonicalTerm(stand_in.known_class), label, params.lexical);
+    Consider(item, s, absl::StrFormat("open vocabulary: a '%s' is seen as a '%s' (%.2f)", stand_in.phrase,
+                                      stand_in.known_class, s));
+  }
+  if (!stand_in.place.empty()) {
+    const double s = params.stand_in_place_weight * prior.Affinity(label, stand_in.place);
+    Consider(item, s, absl::StrFormat("open vocabulary: '%s' is typical of the %s, where a '%s' is kept (%.2f)",
+                                      label, stand_in.place, stand_in.phrase, s));
+  }
 }
 
 Scored ScoreCandidate(const nlohmann::json& c, const Target& target, const PlacePrior& prior,
@@ -127,6 +144,11 @@ Scored ScoreRegion(const nlohmann::json& r, const Target& target, const PlacePri
         ScoreLabel(item, target, CanonicalTerm(o.get<std::string>()), prior, params);
     }
   }
+  if (target.stand_in && !target.stand_in->place.empty()) {
+    const double s = params.place_weight * LexicalMatch(name, CanonicalTerm(target.stand_in->place), params.lexical);
+    Consider(item, s, absl::StrFormat("open vocabulary: a '%s' is kept in the %s (%.2f)", target.stand_in->phrase,
+                                      target.stand_in->place, s));
+  }
   ScoreDescription(item, target, OptionalString(r, "description"), params);
   return item;
 }
@@ -138,10 +160,12 @@ absl::StatusOr<nlohmann::json> RunOfflineTask(const nlohmann::json& task, const 
   if (!task.is_object()) return absl::InvalidArgumentError("task must be a JSON object");
   absl::StatusOr<std::string> kind = RequiredString(task, "task", "");
   if (!kind.ok()) return kind.status();
+  if (*kind == "decompose") return DecomposeOffline(task);
   absl::StatusOr<std::string> target_text = RequiredString(task, "target", "");
   if (!target_text.ok()) return target_text.status();
-  Target target{CanonicalTerm(*target_text), ""};
+  Target target{CanonicalTerm(*target_text), "", std::nullopt};
   target.prior_name = PriorName(target.canonical, prior);
+  if (!prior.Knows(target.prior_name)) target.stand_in = OpenVocabularyStandIn(*target_text);
 
   std::vector<Scored> ranking;
   if (*kind == "match_target") {
@@ -156,7 +180,7 @@ absl::StatusOr<nlohmann::json> RunOfflineTask(const nlohmann::json& task, const 
       ranking.push_back(ScoreRegion(r, target, prior, params));
   } else {
     return absl::InvalidArgumentError(
-        absl::StrCat("task '", *kind, "' is not one of match_target, rank_regions"));
+        absl::StrCat("task '", *kind, "' is not one of match_target, rank_regions, decompose"));
   }
   std::stable_sort(ranking.begin(), ranking.end(),
                    [](const Scored& a, const Scored& b) { return a.score > b.score; });
@@ -166,8 +190,15 @@ absl::StatusOr<nlohmann::json> RunOfflineTask(const nlohmann::json& task, const 
     items.push_back({{"id", s.id}, {"score", s.score}, {"reason", s.reason}});
   }
   const bool useful = ranking.front().score >= params.min_score;
+  nlohmann::json open_vocabulary = nullptr;
+  if (target.stand_in) {
+    open_vocabulary = {{"phrase", target.stand_in->phrase},
+                       {"known_class", target.stand_in->known_class},
+                       {"place", target.stand_in->place}};
+  }
   return nlohmann::json{{"task", *kind},
                         {"target", *target_text},
+                        {"open_vocabulary", std::move(open_vocabulary)},
                         {"best_id", useful ? ranking.front().id : ""},
                         {"confidence", ranking.front().score},
                         {"target_in_prior", prior.Knows(target.prior_name)},
