@@ -12,6 +12,7 @@
 #include "services/reasoning/server/model_proxy_client.h"
 #include "services/reasoning/server/operator_service.h"
 #include "services/reasoning/server/planning_client.h"
+#include "services/reasoning/server/relocalization_client.h"
 #include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/server/robot_session_service.h"
 
@@ -37,6 +38,11 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
     absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.model_proxy.channel);
     if (!channel.ok()) return channel.status();
     backends.model = new ModelProxyClient(*channel, config.model_proxy);
+  }
+  if (!config.relocalization.channel.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config.relocalization.channel);
+    if (!channel.ok()) return channel.status();
+    backends.relocalizer = new RelocalizationClient(*channel, config.relocalization.deadline_ms);
   }
   if (!config.prior_path.empty()) {
     absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(config.prior_path);

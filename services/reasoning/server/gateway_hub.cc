@@ -51,7 +51,7 @@ void GatewayHub::Tick() {
     mu_.AwaitWithTimeout(absl::Condition(&shut_down_), absl::Milliseconds(100));
     if (shut_down_) break;
     for (auto& [robot_id, robot] : robots_) {
-      if (robot.simulated_clock) continue;  // its states are its clock
+      if (robot.simulated_clock || !PoseTrusted(robot)) continue;  // its states are its clock / relocalizing
       auto task = tasks_.find(robot.active_task);
       if (task != tasks_.end() && task->second.started) Apply(task->second, task->second.executor->OnPose(Now(), robot.pose));
     }
@@ -148,10 +148,11 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   Robot& robot = RobotRecord(task.robot_id);
   for (const RobotCommand& command : commands) {
     if (robot.session == nullptr) break;
+    if (!MayCommand(robot, command)) continue;  // no motion on an untrusted pose
     api::ConnectResponse response;
     robot.last_session_command = robot.next_command_id++;
     robot.last_executor_command = command.id;
-    *response.mutable_command() = ToProto(command, robot.last_session_command, task.task_id);
+    *response.mutable_command() = ToProto(InRobotFrame(robot, command), robot.last_session_command, task.task_id);
     robot.last_command = response.command();
     robot.session->Send(response);
   }
