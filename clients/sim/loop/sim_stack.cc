@@ -61,11 +61,23 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
     config.services.push_back({"modelproxy", "semnav-model-proxy", *model_proxy, options.model_proxy_config});
     model_proxy_section = absl::StrCat("  model_proxy:\n    address: ", *model_proxy, "\n");
   }
+  std::string relocalization_section;
+  if (options.relocalization) {
+    absl::StatusOr<std::string> relocalization = Address(options.free_ports, 50053);
+    if (!relocalization.ok()) return relocalization.status();
+    stack->relocalization_ = *relocalization;
+    config.services.push_back({"relocalization", "semnav-relocalization", *relocalization,
+                               WriteConfig(options.work_dir, "relocalization",
+                                           absl::StrCat("relocalization:\n  storage_dir: ", options.work_dir,
+                                                        "/landmarks\n"))});
+    relocalization_section = absl::StrCat("  relocalization:\n    address: ", *relocalization, "\n");
+  }
   config.services.push_back({"gateway", "semnav-gateway", *gateway,
                              WriteConfig(options.work_dir, "gateway",
                                          absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
                                                       "\n  planning:\n    address: ", *planning, "\n",
-                                                      model_proxy_section, "  executor:\n    time_budget_s: ",
+                                                      model_proxy_section, relocalization_section,
+                                                      "  executor:\n    time_budget_s: ",
                                                       options.task_time_budget_s, "\n"))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
@@ -80,7 +92,8 @@ Endpoints SimStack::endpoints() const {
   auto channel = [](const std::string& address) {
     return grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
   };
-  return Endpoints{channel(gateway_), channel(mapping_), channel(planning_)};
+  return Endpoints{channel(gateway_), channel(mapping_), channel(planning_),
+                   relocalization_.empty() ? nullptr : channel(relocalization_)};
 }
 
 }  // namespace semnav::sim::loop
