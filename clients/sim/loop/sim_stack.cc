@@ -68,8 +68,10 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
     stack->relocalization_ = *relocalization;
     config.services.push_back({"relocalization", "semnav-relocalization", *relocalization,
                                WriteConfig(options.work_dir, "relocalization",
+                                           // A room's look-around sees 5-15 objects, not the seed's
+                                           // 38 per keyframe: 5 inliers make a reliable answer.
                                            absl::StrCat("relocalization:\n  storage_dir: ", options.work_dir,
-                                                        "/landmarks\n"))});
+                                                        "/landmarks\n  reliability:\n    min_inliers: 5\n"))});
     relocalization_section = absl::StrCat("  relocalization:\n    address: ", *relocalization, "\n");
   }
   config.services.push_back({"gateway", "semnav-gateway", *gateway,

@@ -23,15 +23,6 @@ LocalizationReport ReportOf(api::LocalizationStatus status) {
   }
 }
 
-api::LocalizationStatus StatusOf(LocalizationReport report) {
-  switch (report) {
-    case LocalizationReport::kLost: return api::LOCALIZATION_STATUS_LOST;
-    case LocalizationReport::kUncertain: return api::LOCALIZATION_STATUS_UNCERTAIN;
-    case LocalizationReport::kOk: break;
-  }
-  return api::LOCALIZATION_STATUS_OK;
-}
-
 bool IsIdentity(const PlanarTransform& t) { return t.translation.isZero(0.0) && t.yaw == 0.0; }
 
 }  // namespace
@@ -70,9 +61,7 @@ void GatewayHub::OnLocalizationSession(Robot& robot) {
 
 api::RobotLocalization GatewayHub::LocalizationOf(const Robot& robot) const {
   api::RobotLocalization out;
-  out.set_reported(robot.last_state.localization() == api::LOCALIZATION_STATUS_UNSPECIFIED
-                       ? api::LOCALIZATION_STATUS_UNSPECIFIED
-                       : robot.last_state.localization());
+  out.set_reported(robot.last_state.localization());
   const PlanarTransform correction =
       robot.localization != nullptr ? robot.localization->map_from_odom() : PlanarTransform{};
   *out.mutable_map_from_odom() = ToProtoPose(RobotPose{correction.translation, correction.yaw});
