@@ -93,8 +93,9 @@ class HubRelocalizationTest : public ::testing::Test {
     hello.set_clock(api::CLOCK_KIND_SIMULATED);
     ASSERT_TRUE(hub_->OpenSession(hello, &session_).ok());
     ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(0, 0, 1.0, 1)).ok());
-    ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(6, 0, 2.0, 2)).ok());
-    ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 3.0, 3)).ok());
+    ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(6, 0, 7.0, 2)).ok());
+    ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 13.0, 3)).ok());
+    // A walk at the default top speed (1 m/s): no pose jump.
     api::SubmitInstructionRequest request;
     request.set_request_id("back");
     request.set_robot_id("r1");
@@ -118,7 +119,7 @@ class HubRelocalizationTest : public ::testing::Test {
 
 TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResumedInItsOwnFrame) {
   std::size_t mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 4.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 14.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
   std::vector<api::ConnectResponse> step = Since(session_, mark);
   std::optional<api::ConnectResponse> rotate =
       Find(step, [](const api::ConnectResponse& m) { return m.has_command() && m.command().has_rotate(); });
@@ -130,7 +131,7 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
   EXPECT_TRUE(update->localization().relocalizing());
   EXPECT_EQ(hub_->GetTask(task_id_)->status(), api::TASK_STATUS_PAUSED);
 
-  // During the turn mapping finds three objects; the turn ends at 4 + 12 s.
+  // During the turn mapping finds three objects; the turn ends at 14 + 12 s.
   SceneGraph seen = SofaScene();
   seen.revision = 2;
   seen.objects.push_back(Landmark(11, "chair", 13, 1));
@@ -138,10 +139,10 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
   seen.objects.push_back(Landmark(13, "lamp", 10, 2));
   hub_->OnSceneGraph(seen);
   mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 10.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 20.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
   EXPECT_TRUE(relocalizer_.calls.empty());  // still turning
   for (const api::ConnectResponse& m : Since(session_, mark)) EXPECT_FALSE(m.command().has_navigate());
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 16.0, 6, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 26.0, 6, api::LOCALIZATION_STATUS_LOST)).ok());
   ASSERT_EQ(relocalizer_.calls.size(), 1u);
   EXPECT_EQ(relocalizer_.map_ids[0], "r1");  // the robot's own map by default
   ASSERT_EQ(relocalizer_.calls[0].size(), 3u);
@@ -154,12 +155,12 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
   answer.reliable = true;
   answer.inliers = 3;
   relocalizer_.Answer(answer);
-  // Held until its simulated arrival (16 + 0.5 s).
+  // Held until its simulated arrival (26 + 0.5 s).
   mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 16.2, 7, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 26.2, 7, api::LOCALIZATION_STATUS_LOST)).ok());
   EXPECT_FALSE(Find(Since(session_, mark), [](const api::ConnectResponse& m) { return m.has_localization(); }));
   mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 16.5, 8, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 26.5, 8, api::LOCALIZATION_STATUS_LOST)).ok());
   step = Since(session_, mark);
   update = Find(step, [](const api::ConnectResponse& m) { return m.has_localization(); });
   ASSERT_TRUE(update.has_value());
@@ -188,13 +189,13 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
 }
 
 TEST_F(HubRelocalizationTest, AnOperatorResumeDuringTheTurnMovesNothing) {
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 4.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 14.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
   const std::size_t mark = session_.messages().size();
   api::ResumeTaskRequest resume;
   resume.set_request_id("resume");
   resume.set_task_id(task_id_);
   ASSERT_TRUE(hub_->Resume(resume).ok());
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 5.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 15.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
   for (const api::ConnectResponse& m : Since(session_, mark)) {
     EXPECT_FALSE(m.command().has_navigate()) << m.ShortDebugString();
   }
