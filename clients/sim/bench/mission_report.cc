@@ -36,20 +36,14 @@ nlohmann::json PoseLossJson(const PoseLossSummary& s) {
 
 std::string PoseLossTable(const std::vector<PoseLossSummary>& summaries) {
   std::string table = absl::StrFormat(
-      "
-Localization (a recovery on target: within %.0f s, %.1f m and %.0f deg):
-
-"
+      "\nLocalization (a recovery on target: within %.0f s, %.1f m and %.0f deg):\n\n"
       "| strategy | episodes | losses | recoveries | on target | median time (s) | error after (m / deg) | "
-      "final error (m) | SR / SPL | same episodes without drift: SR / SPL (episodes) |
-"
-      "|---|---|---|---|---|---|---|---|---|---|
-",
+      "final error (m) | SR / SPL | same episodes without drift: SR / SPL (episodes) |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n",
       kRecoveryTimeTargetS, kRecoveryErrorTargetM, kRecoveryErrorTargetDeg);
   for (const PoseLossSummary& s : summaries) {
     absl::StrAppend(&table, absl::StrFormat("| %s | %d | %d | %d | %d | %.1f | %.2f / %.1f | %.2f | %.3f / %.3f | "
-                                            "%.3f / %.3f (%d) |
-",
+                                            "%.3f / %.3f (%d) |\n",
                                             s.strategy, s.episodes, s.losses, s.recoveries, s.recovered_on_target,
                                             s.median_recovery_time_s, s.mean_recovery_error_m,
                                             s.mean_recovery_error_deg, s.mean_final_pose_error_m, s.sr, s.spl,

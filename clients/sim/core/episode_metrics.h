@@ -95,9 +95,9 @@ struct EpisodeRecord {
   // recoveries (a gateway correction closing a loss) with each one's time since the loss and the
   // believed pose's error right after it, and the error at the episode's end.
   int losses = 0;
-  std::vector<double> recovery_times_s;
-  std::vector<double> recovery_errors_m;
-  std::vector<double> recovery_errors_deg;
+  std::vector<double> recovery_times_s{};
+  std::vector<double> recovery_errors_m{};
+  std::vector<double> recovery_errors_deg{};
   double final_pose_error_m = 0.0;
 };
 
