@@ -69,9 +69,13 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
     config.services.push_back({"relocalization", "semnav-relocalization", *relocalization,
                                WriteConfig(options.work_dir, "relocalization",
                                            // A room's look-around sees 5-15 objects, not the seed's
-                                           // 38 per keyframe: 5 inliers make a reliable answer.
+                                           // 38 per keyframe: 5 inliers make a reliable answer. The
+                                           // observed scales are mapping's extents of what was seen
+                                           // (0.04-0.75 m measured), the oracle map's whole boxes: the
+                                           // scale gate (0.5 ratio) is relaxed to 0.05.
                                            absl::StrCat("relocalization:\n  storage_dir: ", options.work_dir,
-                                                        "/landmarks\n  reliability:\n    min_inliers: 5\n"))});
+                                                        "/landmarks\n  reliability:\n    min_inliers: 5\n"
+                                                        "  matching:\n    scale_threshold: 0.05\n"))});
     relocalization_section = absl::StrCat("  relocalization:\n    address: ", *relocalization, "\n");
   }
   config.services.push_back({"gateway", "semnav-gateway", *gateway,

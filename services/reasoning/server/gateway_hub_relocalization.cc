@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
+#include "services/common/logging/log.h"
 #include "services/common/status/field_error.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_internal.h"
@@ -152,6 +154,12 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
                                             }});
           };
         }
+        std::string observed;  // for the log: what the turn saw, in the robot's odometry frame
+        for (const ObservedObject& o : action.observed) {
+          absl::StrAppend(&observed, o.object_id, "@(", absl::StrFormat("%.2f,%.2f", o.position.x(), o.position.y()),
+                          ") s", absl::StrFormat("%.2f", o.scale_m), " n", o.observations, "; ");
+        }
+        LogWarning("relocalization_request", {{"robot", robot_id}, {"map_id", map_id}, {"observed", observed}});
         backends_.relocalizer->Relocalize(map_id, action.observed, std::move(handler));
         break;
       }
