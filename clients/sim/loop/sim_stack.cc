@@ -72,10 +72,12 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
                                            // 38 per keyframe: 5 inliers make a reliable answer. The
                                            // observed scales are mapping's extents of what was seen
                                            // (0.04-0.75 m measured), the oracle map's whole boxes: the
-                                           // scale gate (0.5 ratio) is relaxed to 0.05.
+                                           // scale gate (0.5 ratio) is relaxed to 0.05; mapping's centres
+                                           // are those of the seen surfaces, the oracle's the boxes':
+                                           // position sigma 0.5 m instead of 0.2.
                                            absl::StrCat("relocalization:\n  storage_dir: ", options.work_dir,
                                                         "/landmarks\n  reliability:\n    min_inliers: 5\n"
-                                                        "  matching:\n    scale_threshold: 0.05\n"))});
+                                                        "  matching:\n    scale_threshold: 0.05\n    pos_sigma_m: 0.5\n"))});
     relocalization_section = absl::StrCat("  relocalization:\n    address: ", *relocalization, "\n");
   }
   config.services.push_back({"gateway", "semnav-gateway", *gateway,
