@@ -32,6 +32,7 @@ std::vector<Command> SceneCommands();
 std::vector<Command> MapCommands();
 std::vector<Command> PlanCommands();
 std::vector<Command> RelocalizationCommands();
+std::vector<Command> RobotCommands();
 std::vector<Command> HealthCommands();
 
 }  // namespace semnav::cli

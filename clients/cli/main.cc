@@ -14,7 +14,7 @@ namespace {
 std::vector<Command> AllCommands() {
   std::vector<Command> all;
   for (auto group : {TaskCommands, LeaseCommands, EventCommands, SceneCommands, MapCommands, PlanCommands,
-                     RelocalizationCommands, HealthCommands}) {
+                     RelocalizationCommands, RobotCommands, HealthCommands}) {
     for (Command& command : group()) all.push_back(std::move(command));
   }
   return all;

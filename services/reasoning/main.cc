@@ -12,6 +12,7 @@
 #include "services/reasoning/server/model_proxy_client.h"
 #include "services/reasoning/server/operator_service.h"
 #include "services/reasoning/server/planning_client.h"
+#include "services/reasoning/server/relocalization_client.h"
 #include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/server/robot_session_service.h"
 
@@ -27,6 +28,7 @@ struct GatewayStack {
   std::unique_ptr<PlanningClient> planning;          // null: no planning service configured
   std::unique_ptr<ModelProxyClient> model;           // null: offline default
   std::unique_ptr<ConceptNetCooccurrence> prior;     // null: explore without co-occurrence
+  std::unique_ptr<RelocalizationClient> relocalizer;  // null: no relocalization loop
   std::unique_ptr<GatewayHub> hub;
 };
 
@@ -52,6 +54,12 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
     if (!channel.ok()) return channel.status();
     stack->model = std::make_unique<ModelProxyClient>(*channel, config->model_proxy);
     backends.model = stack->model.get();
+  }
+  if (!config->relocalization.channel.address.empty()) {
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config->relocalization.channel);
+    if (!channel.ok()) return channel.status();
+    stack->relocalizer = std::make_unique<RelocalizationClient>(*channel, config->relocalization.deadline_ms);
+    backends.relocalizer = stack->relocalizer.get();
   }
   if (!config->prior_path.empty()) {
     absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(config->prior_path);

@@ -40,7 +40,8 @@ constexpr char kUsage[] =
     "usage: semnav-bench-mission [--suite DIR] [--episodes N] [--outdoor-episodes N] [--flyroll-episodes N]\n"
     "                            [--json FILE] [--out DIR] [--seed N] [--max-steps N] [--strategies LIST]\n"
     "                            [--model-config FILE | --model sim [--vlm-sweep LIST]] [--bin-dir DIR]\n"
-    "                            [--jobs N]\n"
+    "                            [--jobs N] [--drift-episodes N] [--kidnapped-episodes N]\n"
+    "                            [--landmarks oracle|mapping]\n"
     "  --suite DIR            folder of world YAML files, or of suite folders (semnav-sim-worlds --out DIR\n"
     "                         writes indoor, outdoor, flyroll, houseexpo, fr079); default: 4 generated homes\n"
     "  --episodes N           indoor (ground robot) episodes per strategy (default 4)\n"
@@ -62,6 +63,11 @@ constexpr char kUsage[] =
     "                         labelled EROI_UTILITY@ACC beside the other strategies (run once), and\n"
     "                         write vlm_sweep.png (outdoor SR and path ratio against accuracy) to --out\n"
     "  --bin-dir DIR          folder with the service binaries (default: this program's folder)\n"
+    "  --drift-episodes N     the first N indoor episodes again with odometry drift, the localizer model and\n"
+    "                         the gateway's relocalization loop: group \"drift\" (default 0)\n"
+    "  --kidnapped-episodes N the same with a kidnap 60 s in: group \"kidnapped\" (default 0)\n"
+    "  --landmarks L          the pose-loss groups' landmark maps: oracle (the world's objects, upserted\n"
+    "                         before each episode; default) or mapping (filled by mapping)\n"
     "  --jobs N               episodes run at once, each on its own stack of services (default 2, one\n"
     "                         per core of the reference machine; 1 = one after another)\n";
 
@@ -79,7 +85,10 @@ const std::vector<semnav::FlagSpec> kFlags = {{"suite", "DIR", ""},
                                               {"model", "NAME", ""},
                                               {"vlm-sweep", "LIST", ""},
                                               {"bin-dir", "DIR", ""},
-                                              {"jobs", "N", ""}};
+                                              {"jobs", "N", ""},
+                                              {"drift-episodes", "N", ""},
+                                              {"kidnapped-episodes", "N", ""},
+                                              {"landmarks", "KIND", ""}};
 
 // Compared side by side on the same episodes. EROI_UTILITY needs a vision model, so it joins
 // only on request.
@@ -120,7 +129,10 @@ int main(int argc, char** argv) {
                                               {"--seed", "1"},
                                               {"--max-steps", "500"},
                                               {"--strategies", kDefaultStrategies},
-                                              {"--jobs", "2"}};
+                                              {"--jobs", "2"},
+                                              {"--drift-episodes", "0"},
+                                              {"--kidnapped-episodes", "0"},
+                                              {"--landmarks", "oracle"}};
   const semnav::ParsedFlags given =
       semnav::ParseFlagsOrExit(argc, argv, kFlags, "semnav-bench-mission", kUsage);
   for (const auto& [name, value] : given.values) flags["--" + name] = value;
@@ -132,9 +144,19 @@ int main(int argc, char** argv) {
   }
   const semnav::sim::bench::EpisodeCounts counts{std::atoi(flags["--episodes"].c_str()),
                                                  std::atoi(flags["--outdoor-episodes"].c_str()),
-                                                 std::atoi(flags["--flyroll-episodes"].c_str())};
+                                                 std::atoi(flags["--flyroll-episodes"].c_str()),
+                                                 std::atoi(flags["--drift-episodes"].c_str()),
+                                                 std::atoi(flags["--kidnapped-episodes"].c_str())};
+  if (flags["--landmarks"] != "oracle" && flags["--landmarks"] != "mapping") {
+    std::cerr << "semnav-bench-mission: --landmarks: oracle or mapping\n" << kUsage;
+    return 2;
+  }
+  const bool pose_loss = counts.drift > 0 || counts.kidnapped > 0;
   std::vector<std::string> unscorable;
-  const std::vector<loop::EpisodeSpec> plan = semnav::sim::bench::PlanEpisodes(*worlds, counts, seed, &unscorable);
+  std::vector<loop::EpisodeSpec> plan = semnav::sim::bench::PlanEpisodes(*worlds, counts, seed, &unscorable);
+  for (loop::EpisodeSpec& spec : plan) {
+    if (!spec.landmarks.empty()) spec.landmarks = flags["--landmarks"];
+  }
   for (const std::string& line : unscorable) std::cerr << "semnav-bench-mission: " << line << "\n";
   if (plan.empty()) {
     std::cerr << "semnav-bench-mission: no episode: no world with objects and a start of a requested modality\n";
@@ -209,6 +231,7 @@ int main(int argc, char** argv) {
     options.work_dir = absl::StrCat(out_dir, "/stack_", w);
     if (flags.contains("--model-config")) options.model_proxy_config = flags["--model-config"];
     options.task_time_budget_s = max_steps * loop::EpisodeSpec{}.step_s;
+    options.relocalization = pose_loss;
     if (sim_model) {
       frame_logs[w].push_back(std::make_unique<sim::vlm::FrameLog>());
       auto model = sim::vlm::SimVlm::Create(plan.front().world, frame_logs[w].back().get(), sim::vlm::SimVlmConfig());
@@ -315,7 +338,7 @@ int main(int argc, char** argv) {
       std::cout << absl::StrFormat(
           "[%d/%d] %s %s %s start %d: find %s: %s in %d steps, DTG %.2f m, path %.1f m, l %.1f m (%s) "
           "[%.0f s wall, %.0f s left]%s\n",
-          done, jobs.size(), label, sim::ReportGroup(spec.world.starts[spec.start_index].modality),
+          done, jobs.size(), label, result->record.group,
           spec.world.name, spec.start_index, spec.target, result->record.success ? "SUCCESS" : "fail",
           result->steps, result->record.distance_to_goal_m, result->record.path_m, result->record.shortest_path_m,
           result->final_reason, wall_s, eta_s, model_line)

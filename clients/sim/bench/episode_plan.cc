@@ -1,5 +1,8 @@
 #include "clients/sim/bench/episode_plan.h"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -81,12 +84,63 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
   }
 }
 
+// A free cell of the body's true raster between min and max distance from `from`, drawn by `rng`
+// (nullopt when 200 draws find none).
+std::optional<Pose> KidnapDestination(const World& world, const StartPose& start, const KidnapPlan& kidnap, Rng& rng) {
+  const GroundTruthGrid grid =
+      RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    const double angle = rng.Uniform(-M_PI, M_PI);
+    const double distance = rng.Uniform(kidnap.min_distance_m, kidnap.max_distance_m);
+    const Eigen::Vector2d at = start.position.head<2>() + distance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    const std::optional<Eigen::Vector2i> cell = grid.CellOf(at);
+    if (!cell.has_value() || grid.at(cell->x(), cell->y()) != 0) continue;
+    return Pose{Eigen::Vector3d(at.x(), at.y(), start.position.z()), rng.Uniform(-M_PI, M_PI)};
+  }
+  return std::nullopt;
+}
+
+// Copies of the first `count` ground episodes for a pose-loss group.
+void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count, const std::string& group, uint64_t seed,
+                       const KidnapPlan* kidnap, std::vector<loop::EpisodeSpec>& plan,
+                       std::vector<std::string>* unscorable) {
+  for (int i = 0; i < count && i < static_cast<int>(ground.size()); ++i) {
+    loop::EpisodeSpec spec = ground[static_cast<size_t>(i)];
+    spec.sensors.odometry.enabled = true;  // the simulator's default noise (OdometryDriftConfig)
+    spec.localizer.enabled = true;
+    spec.landmarks = "oracle";
+    spec.robot_id = absl::StrCat("sim-", group, "-", i);
+    spec.report_group = group;
+    if (kidnap != nullptr) {
+      Rng rng(MixSeed(MixSeed(seed, 200), static_cast<uint64_t>(i)));
+      spec.kidnap_to = KidnapDestination(spec.world, spec.world.starts[spec.start_index], *kidnap, rng);
+      spec.kidnap_at_s = kidnap->at_s;
+      if (!spec.kidnap_to.has_value()) {
+        if (unscorable != nullptr) {
+          unscorable->push_back(absl::StrCat(group, " episode ", i, ": ", spec.world.name,
+                                             ": no free kidnap destination; left out"));
+        }
+        continue;
+      }
+    }
+    plan.push_back(std::move(spec));
+  }
+}
+
 }  // namespace
 
 std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
-                                            uint64_t seed, std::vector<std::string>* unscorable) {
+                                            uint64_t seed, std::vector<std::string>* unscorable,
+                                            const KidnapPlan& kidnap) {
   std::vector<loop::EpisodeSpec> plan;
   PlanGroup(worlds, Modality::kGround, counts.indoor, seed, plan, unscorable);
+  if (counts.drift > 0 || counts.kidnapped > 0) {
+    // The pose-loss groups rerun the indoor episodes (the same draw, so pairs line up).
+    std::vector<loop::EpisodeSpec> ground;
+    PlanGroup(worlds, Modality::kGround, std::max(counts.drift, counts.kidnapped), seed, ground, nullptr);
+    PlanPoseLossGroup(ground, counts.drift, "drift", seed, nullptr, plan, unscorable);
+    PlanPoseLossGroup(ground, counts.kidnapped, "kidnapped", seed, &kidnap, plan, unscorable);
+  }
   PlanGroup(worlds, Modality::kUav, counts.outdoor, seed, plan, unscorable);
   PlanGroup(worlds, Modality::kFlyRoll, counts.flyroll, seed, plan, unscorable);
   return plan;

@@ -16,6 +16,18 @@ struct EpisodeCounts {
   int indoor = 4;
   int outdoor = 0;
   int flyroll = 0;
+  // Losing the pose (docs/simulation.md): the first `drift` indoor episodes again with odometry
+  // drift at the simulator's default noise, the localizer model and the relocalization loop
+  // ("drift" group); the first `kidnapped` again with drift and a kidnap as well ("kidnapped").
+  int drift = 0;
+  int kidnapped = 0;
+};
+
+// Where the kidnapped group's robots are carried and when.
+struct KidnapPlan {
+  double at_s = 60.0;        // simulated seconds into the episode
+  double min_distance_m = 2.0;  // from the start, on free space of the body's true raster
+  double max_distance_m = 5.0;
 };
 
 // Per group, episode i uses world i mod W (of the worlds with a start of the group's modality and
@@ -27,6 +39,7 @@ struct EpisodeCounts {
 // a line saying which world and start. Every fourth episode (i mod 4 = 3) names its target in
 // Chinese (ChineseName). Groups come in the order indoor, outdoor, flyroll.
 std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
-                                            uint64_t seed, std::vector<std::string>* unscorable = nullptr);
+                                            uint64_t seed, std::vector<std::string>* unscorable = nullptr,
+                                            const KidnapPlan& kidnap = {});
 
 }  // namespace semnav::sim::bench

@@ -82,5 +82,35 @@ TEST(SimBenchEpisodePlanTest, GroupWithoutWorldsPlansNothing) {
   EXPECT_EQ(PlanEpisodes(worlds, {0, 15, 10}, 1).size(), 0u);
 }
 
+TEST(SimBenchEpisodePlanTest, PoseLossGroupsRerunTheIndoorEpisodesWithDriftAndAKidnap) {
+  const std::vector<World> worlds = {WithObject("home", Modality::kGround, "sink")};
+  EpisodeCounts counts{2, 0, 0};
+  counts.drift = 1;
+  counts.kidnapped = 2;
+  const std::vector<loop::EpisodeSpec> plan = PlanEpisodes(worlds, counts, 1);
+  ASSERT_EQ(plan.size(), 5u);
+  const loop::EpisodeSpec& drift = plan[2];
+  EXPECT_EQ(drift.report_group, "drift");
+  EXPECT_EQ(drift.world.name, plan[0].world.name);
+  EXPECT_EQ(drift.start_index, plan[0].start_index);
+  EXPECT_EQ(drift.target, plan[0].target);
+  EXPECT_TRUE(drift.sensors.odometry.enabled);
+  EXPECT_TRUE(drift.localizer.enabled);
+  EXPECT_EQ(drift.landmarks, "oracle");
+  EXPECT_FALSE(drift.kidnap_to.has_value());
+  EXPECT_FALSE(plan[0].sensors.odometry.enabled);  // the indoor group is unchanged
+  for (int k = 3; k < 5; ++k) {
+    ASSERT_TRUE(plan[k].kidnap_to.has_value());
+    EXPECT_EQ(plan[k].report_group, "kidnapped");
+    const double distance =
+        (plan[k].kidnap_to->position.head<2>() - worlds[0].starts[plan[k].start_index].position.head<2>()).norm();
+    EXPECT_GE(distance, 2.0);
+    EXPECT_LE(distance, 5.0);
+    EXPECT_DOUBLE_EQ(plan[k].kidnap_at_s, 60.0);
+  }
+  // Deterministic by seed.
+  EXPECT_EQ(PlanEpisodes(worlds, counts, 1)[3].kidnap_to->position, plan[3].kidnap_to->position);
+}
+
 }  // namespace
 }  // namespace semnav::sim::bench

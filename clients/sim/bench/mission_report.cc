@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -12,7 +13,44 @@
 namespace semnav::sim::bench {
 namespace {
 
-constexpr const char* kGroups[] = {"indoor", "outdoor", "flyroll"};
+constexpr const char* kGroups[] = {"indoor", "outdoor", "flyroll", "drift", "kidnapped"};
+
+bool PoseLossGroup(const std::string& group) { return group == "drift" || group == "kidnapped"; }
+
+nlohmann::json PoseLossJson(const PoseLossSummary& s) {
+  return {{"episodes", s.episodes},
+          {"losses", s.losses},
+          {"recoveries", s.recoveries},
+          {"recovered_on_target", s.recovered_on_target},
+          {"recovered_on_target_share", s.losses > 0 ? static_cast<double>(s.recovered_on_target) / s.losses : 0.0},
+          {"median_recovery_time_s", s.median_recovery_time_s},
+          {"mean_recovery_error_m", s.mean_recovery_error_m},
+          {"mean_recovery_error_deg", s.mean_recovery_error_deg},
+          {"mean_final_pose_error_m", s.mean_final_pose_error_m},
+          {"paired", s.paired},
+          {"sr", s.sr},
+          {"spl", s.spl},
+          {"sr_without_drift", s.sr_without_drift},
+          {"spl_without_drift", s.spl_without_drift}};
+}
+
+std::string PoseLossTable(const std::vector<PoseLossSummary>& summaries) {
+  std::string table = absl::StrFormat(
+      "\nLocalization (a recovery on target: within %.0f s, %.1f m and %.0f deg):\n\n"
+      "| strategy | episodes | losses | recoveries | on target | median time (s) | error after (m / deg) | "
+      "final error (m) | SR / SPL | same episodes without drift: SR / SPL (episodes) |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n",
+      kRecoveryTimeTargetS, kRecoveryErrorTargetM, kRecoveryErrorTargetDeg);
+  for (const PoseLossSummary& s : summaries) {
+    absl::StrAppend(&table, absl::StrFormat("| %s | %d | %d | %d | %d | %.1f | %.2f / %.1f | %.2f | %.3f / %.3f | "
+                                            "%.3f / %.3f (%d) |\n",
+                                            s.strategy, s.episodes, s.losses, s.recoveries, s.recovered_on_target,
+                                            s.median_recovery_time_s, s.mean_recovery_error_m,
+                                            s.mean_recovery_error_deg, s.mean_final_pose_error_m, s.sr, s.spl,
+                                            s.sr_without_drift, s.spl_without_drift, s.paired));
+  }
+  return table;
+}
 
 std::vector<EpisodeRecord> InGroup(const std::vector<EpisodeRecord>& records, const std::string& group) {
   std::vector<EpisodeRecord> out;
@@ -133,6 +171,61 @@ std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records, 
   return points;
 }
 
+std::vector<PoseLossSummary> SummarisePoseLoss(const std::vector<EpisodeRecord>& group,
+                                               const std::vector<EpisodeRecord>& indoor) {
+  std::vector<PoseLossSummary> out;
+  std::map<std::string, std::vector<double>> times;
+  for (const EpisodeRecord& r : group) {
+    auto it = std::find_if(out.begin(), out.end(), [&](const PoseLossSummary& s) { return s.strategy == r.strategy; });
+    if (it == out.end()) {
+      out.emplace_back();
+      out.back().strategy = r.strategy;
+      it = out.end() - 1;
+    }
+    PoseLossSummary& s = *it;
+    ++s.episodes;
+    s.losses += r.losses;
+    for (size_t k = 0; k < r.recovery_times_s.size(); ++k) {
+      ++s.recoveries;
+      times[r.strategy].push_back(r.recovery_times_s[k]);
+      s.mean_recovery_error_m += r.recovery_errors_m[k];
+      s.mean_recovery_error_deg += r.recovery_errors_deg[k];
+      if (r.recovery_times_s[k] <= kRecoveryTimeTargetS && r.recovery_errors_m[k] <= kRecoveryErrorTargetM &&
+          r.recovery_errors_deg[k] <= kRecoveryErrorTargetDeg) {
+        ++s.recovered_on_target;
+      }
+    }
+    s.mean_final_pose_error_m += r.final_pose_error_m;
+    // The indoor twin: same strategy, world, start and target.
+    for (const EpisodeRecord& twin : indoor) {
+      if (twin.strategy != r.strategy || twin.world != r.world || twin.start_index != r.start_index ||
+          twin.target != r.target) {
+        continue;
+      }
+      ++s.paired;
+      s.sr += r.success ? 1.0 : 0.0;
+      s.spl += SuccessWeightedPathLength(r.success, r.shortest_path_m, r.path_m);
+      s.sr_without_drift += twin.success ? 1.0 : 0.0;
+      s.spl_without_drift += SuccessWeightedPathLength(twin.success, twin.shortest_path_m, twin.path_m);
+      break;
+    }
+  }
+  for (PoseLossSummary& s : out) {
+    std::vector<double>& t = times[s.strategy];
+    if (!t.empty()) {
+      std::sort(t.begin(), t.end());
+      s.median_recovery_time_s = t.size() % 2 == 1 ? t[t.size() / 2] : 0.5 * (t[t.size() / 2 - 1] + t[t.size() / 2]);
+      s.mean_recovery_error_m /= static_cast<double>(t.size());
+      s.mean_recovery_error_deg /= static_cast<double>(t.size());
+    }
+    s.mean_final_pose_error_m /= std::max(1, s.episodes);
+    if (s.paired > 0) {
+      for (double* mean : {&s.sr, &s.spl, &s.sr_without_drift, &s.spl_without_drift}) *mean /= s.paired;
+    }
+  }
+  return out;
+}
+
 absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double success_radius,
                               const NotRun& not_run, const std::string& path) {
   nlohmann::json out;
@@ -159,6 +252,13 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
                             {"energy_j", energy},
                             {"path_vs_exploration_only", ratio},
                             {"path_vs_exploration_only_both_found", both_found}};
+    if (PoseLossGroup(group)) {
+      nlohmann::json localization = nlohmann::json::object();
+      for (const PoseLossSummary& s : SummarisePoseLoss(in_group, InGroup(records, "indoor"))) {
+        localization[s.strategy] = PoseLossJson(s);
+      }
+      out["groups"][group]["localization"] = localization;
+    }
     if (std::string(group) == "indoor") out["strategies"] = strategies;
   }
   out["not_run"] = nlohmann::json::object();
@@ -171,7 +271,9 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
                     {"model_calls", r.model_calls}, {"model_tokens", r.model_tokens},
                     {"model_wait_s", r.model_wait_s}, {"vision_calls", r.vision_calls},
                     {"fast_path", r.goals_fast_path},
-                    {"failure_cause", r.failure_cause}});
+                    {"failure_cause", r.failure_cause}, {"start_index", r.start_index}, {"losses", r.losses},
+                    {"recovery_times_s", r.recovery_times_s}, {"recovery_errors_m", r.recovery_errors_m},
+                    {"recovery_errors_deg", r.recovery_errors_deg}, {"final_pose_error_m", r.final_pose_error_m}});
   }
   out["episodes"] = rows;
   std::ofstream file(path);
@@ -202,6 +304,9 @@ std::string MissionTable(const std::vector<EpisodeRecord>& records, double succe
                                               s.time_s, s.energy_j, s.model_calls, s.fast_path_share));
     }
     absl::StrAppend(&table, FailureTable(summaries));
+    if (PoseLossGroup(group)) {
+      absl::StrAppend(&table, PoseLossTable(SummarisePoseLoss(in_group, InGroup(records, "indoor"))));
+    }
   }
   for (const auto& [strategy, reason] : not_run) absl::StrAppend(&table, "\n", strategy, " not run: ", reason, "\n");
   return table;

@@ -89,5 +89,56 @@ TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategyAndGroup
       << table;
 }
 
+TEST(SimBenchMissionReportTest, PoseLossGroupsReportRecoveriesAndTheSameEpisodesWithoutDrift) {
+  EpisodeRecord indoor{"SEMANTIC_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 0.0, 0, 1, 1, "indoor", ""};
+  indoor.start_index = 0;
+  EpisodeRecord indoor_other = indoor;  // another start: not the twin
+  indoor_other.start_index = 1;
+  indoor_other.success = false;
+  EpisodeRecord kidnapped = indoor;
+  kidnapped.group = "kidnapped";
+  kidnapped.success = false;
+  kidnapped.losses = 2;
+  kidnapped.recovery_times_s = {9.0, 20.0};    // the second is too slow
+  kidnapped.recovery_errors_m = {0.1, 0.1};
+  kidnapped.recovery_errors_deg = {1.0, 1.0};
+  kidnapped.final_pose_error_m = 0.3;
+  EpisodeRecord kidnapped2 = kidnapped;
+  kidnapped2.start_index = 1;
+  kidnapped2.success = true;
+  kidnapped2.losses = 1;
+  kidnapped2.recovery_times_s = {5.0};
+  kidnapped2.recovery_errors_m = {0.5};       // too far off
+  kidnapped2.recovery_errors_deg = {1.0};
+  kidnapped2.final_pose_error_m = 0.1;
+  const std::vector<PoseLossSummary> summaries =
+      SummarisePoseLoss({kidnapped, kidnapped2}, {indoor, indoor_other});
+  ASSERT_EQ(summaries.size(), 1u);
+  const PoseLossSummary& s = summaries[0];
+  EXPECT_EQ(s.episodes, 2);
+  EXPECT_EQ(s.losses, 3);
+  EXPECT_EQ(s.recoveries, 3);
+  EXPECT_EQ(s.recovered_on_target, 1);
+  EXPECT_DOUBLE_EQ(s.median_recovery_time_s, 9.0);
+  EXPECT_NEAR(s.mean_recovery_error_m, 0.7 / 3, 1e-12);
+  EXPECT_DOUBLE_EQ(s.mean_final_pose_error_m, 0.2);
+  EXPECT_EQ(s.paired, 2);
+  EXPECT_DOUBLE_EQ(s.sr, 0.5);
+  EXPECT_DOUBLE_EQ(s.sr_without_drift, 0.5);  // the twins: start 0 succeeded, start 1 did not
+  EXPECT_DOUBLE_EQ(s.spl_without_drift, 0.25);
+
+  const std::string path = ::testing::TempDir() + "/mission_report_pose_loss.json";
+  ASSERT_TRUE(WriteMissionJson({indoor, indoor_other, kidnapped, kidnapped2}, 1.0, {}, path).ok());
+  const nlohmann::json json = nlohmann::json::parse(std::ifstream(path));
+  const nlohmann::json& l = json["groups"]["kidnapped"]["localization"]["SEMANTIC_FRONTIER"];
+  EXPECT_EQ(l["recovered_on_target"], 1);
+  EXPECT_NEAR(l["recovered_on_target_share"].get<double>(), 1.0 / 3, 1e-12);
+  EXPECT_EQ(json["episodes"][2]["losses"], 2);
+  EXPECT_EQ(json["episodes"][2]["recovery_times_s"].size(), 2u);
+  // The indoor headline is unchanged by the pose-loss records.
+  EXPECT_EQ(json["strategies"]["SEMANTIC_FRONTIER"]["episodes"], 2);
+  EXPECT_NE(MissionTable({indoor, kidnapped}, 1.0).find("same episodes without drift"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace semnav::sim::bench

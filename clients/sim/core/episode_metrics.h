@@ -95,6 +95,15 @@ struct EpisodeRecord {
   int64_t model_tokens = 0;
   double model_wait_s = 0.0;
   int vision_calls = 0;
+  int start_index = -1;  // World::starts index: pairs an episode with the same one in another group
+  // Losing the pose (drift / kidnapped groups): losses (a kidnap, or the localizer reporting LOST),
+  // recoveries (a gateway correction closing a loss) with each one's time since the loss and the
+  // believed pose's error right after it, and the error at the episode's end.
+  int losses = 0;
+  std::vector<double> recovery_times_s{};
+  std::vector<double> recovery_errors_m{};
+  std::vector<double> recovery_errors_deg{};
+  double final_pose_error_m = 0.0;
 };
 
 // The report section of an episode by the robot's modality: ground = "indoor", uav = "outdoor",

@@ -151,6 +151,12 @@ StepReport SimRobot::Step(double dt) {
   return report;
 }
 
+void SimRobot::Kidnap(const Pose& to) {
+  pose_ = Pose{to.position, WrapAngle(to.yaw)};
+  path_.clear();
+  turn_target_.reset();
+}
+
 SensorFrame SimRobot::Capture() {
   SensorFrame frame;
   frame.index = frame_index_++;

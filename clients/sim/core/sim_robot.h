@@ -47,6 +47,9 @@ class SimRobot {
   StepReport Step(double dt);
   // Renders the sensors at the current time; frame indices count up from 0.
   SensorFrame Capture();
+  // "Kidnapped robot": carried to `to` at once, without telling it. Its odometry does not see the
+  // move, and the motion it was executing ends (it was picked up).
+  void Kidnap(const Pose& to);
 
   const Pose& pose() const { return pose_; }
   const Pose& odometry_pose() const { return odometry_.pose(); }

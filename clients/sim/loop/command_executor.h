@@ -32,6 +32,11 @@ class CommandExecutor {
   // GOAL_REACHED (navigate arrived and faced goal_yaw, rotation/hold duration elapsed),
   // BLOCKED (collision that backing up and re-planning could not get past).
   std::optional<Feedback> Step(double dt);
+  // The robot was carried away (SimRobot::Kidnap): the command in progress ends without feedback.
+  void Interrupt() {
+    phase_ = Phase::kIdle;
+    local_goal_.reset();
+  }
   // True once a (non-emergency) STOP was executed: the episode's stop action.
   bool stop_issued() const { return robot_.stopped(); }
 

@@ -16,7 +16,10 @@
 #include "clients/sim/loop/robot_messages.h"
 #include "clients/sim/loop/robot_session.h"
 #include "clients/sim/loop/shortest_path.h"
+#include "clients/sim/core/class_embedding.h"
+#include "clients/sim/loop/localization_model.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
+#include "semnav/relocalization/v1/relocalization.grpc.pb.h"
 #include "services/common/status/grpc_status.h"
 
 namespace semnav::sim::loop {
@@ -89,6 +92,49 @@ absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping, const Episo
   return absl::OkStatus();
 }
 
+// "oracle" landmarks: the world's objects as the robot's landmark map (map id = robot id), in the
+// map frame (the world frame: odometry starts at the true start pose), with the descriptor the
+// simulated detector gives each class. Stands in for mapping filling the map from its scene graph.
+absl::Status UpsertOracleLandmarks(const std::shared_ptr<grpc::Channel>& relocalization, const EpisodeSpec& spec) {
+  namespace reloc = semnav::relocalization::v1;
+  auto stub = reloc::RelocalizationService::NewStub(relocalization);
+  {
+    reloc::DeleteLandmarkMapRequest request;
+    request.set_map_id(spec.robot_id);
+    request.set_request_id(absl::StrCat("delete-", spec.robot_id, "-", std::chrono::steady_clock::now().time_since_epoch().count()));
+    reloc::DeleteLandmarkMapResponse response;
+    grpc::ClientContext context;
+    context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+    const absl::Status deleted = FromGrpcStatus(stub->DeleteLandmarkMap(&context, request, &response));
+    if (!deleted.ok() && !absl::IsNotFound(deleted)) return deleted;
+  }
+  reloc::UpsertLandmarksRequest request;
+  request.set_map_id(spec.robot_id);
+  request.set_request_id(absl::StrCat("oracle-", spec.robot_id, "-", std::chrono::steady_clock::now().time_since_epoch().count()));
+  const DetectorConfig& detector = spec.sensors.detector;
+  for (const ObjectInstance& object : spec.world.objects) {
+    reloc::Landmark* landmark = request.add_landmarks();
+    landmark->mutable_position()->set_x(object.box.center.x());
+    landmark->mutable_position()->set_y(object.box.center.y());
+    landmark->mutable_position()->set_z(object.box.base_z + object.box.size.z() / 2.0);
+    landmark->set_scale_m(object.box.size.maxCoeff());
+    const std::vector<float> embedding = ClassEmbedding(object.label, detector.embedding_dim, detector.embedding_seed);
+    landmark->mutable_embedding()->Assign(embedding.begin(), embedding.end());
+    landmark->set_observations(1);
+  }
+  reloc::UpsertLandmarksResponse response;
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(30));
+  return FromGrpcStatus(stub->UpsertLandmarks(&context, request, &response));
+}
+
+Eigen::Isometry3d ToIsometry(const Pose& pose) {
+  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+  out.translate(pose.position);
+  out.rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
+  return out;
+}
+
 // The gateway answered and said no (a target it cannot parse, a robot it does not know): the
 // episode is a failure to score, not a broken benchmark. Transport errors still stop the run.
 bool Refused(const absl::Status& status) {
@@ -127,10 +173,15 @@ std::string Describe(const api::RobotCommand& command) {
   }
 }
 
-// Executes the gateway's commands and answers each with its feedback.
+// Executes the gateway's commands and answers each with its feedback. Navigate goals are in the
+// robot's odometry frame: `truth_from_odom` (set when odometry and truth differ) moves them into
+// the world the simulator drives in.
 absl::Status ExecuteCommands(RobotSession& session, CommandExecutor& executor, const SimRobot& robot,
-                             const std::vector<api::RobotCommand>& commands, EpisodeResult& result) {
-  for (const api::RobotCommand& command : commands) {
+                             const std::vector<api::RobotCommand>& commands, EpisodeResult& result,
+                             const std::optional<Pose>& truth_from_odom = std::nullopt) {
+  for (const api::RobotCommand& sent : commands) {
+    api::RobotCommand command = sent;
+    if (truth_from_odom.has_value()) ToTruthFrame(command, *truth_from_odom);
     const Feedback feedback = executor.Start(command);
     RecordFeedback(result.trace, robot.time_s(), feedback.kind, feedback.detail);
     result.timeline.push_back(absl::StrCat(Stamp(robot), "command ", command.command_id(), ": ", Describe(command),
@@ -173,6 +224,17 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   CommandExecutor executor(robot, LiveMapPlanner(endpoints.planning, robot_config.radius));
 
   if (absl::Status s = ResetMap(endpoints.mapping, spec); !s.ok()) return s;
+  if (spec.landmarks == "oracle") {
+    if (endpoints.relocalization == nullptr) return absl::InvalidArgumentError("oracle landmarks need relocalization");
+    if (absl::Status s = UpsertOracleLandmarks(endpoints.relocalization, spec); !s.ok()) return s;
+  }
+  // Losing the pose: what the robot believes is the gateway's correction applied to its odometry.
+  SimLocalizer localizer(spec.localizer);
+  RecoveryTracker recovery;
+  Pose map_from_odom;
+  bool kidnapped = false;
+  const bool frames_differ = spec.sensors.odometry.enabled || spec.kidnap_to.has_value();
+  auto believed = [&]() { return Compose(map_from_odom, robot.odometry_pose()); };
   api::SessionHello hello = Hello(spec.robot_id, start.modality, robot_config);
   hello.set_clock(api::CLOCK_KIND_SIMULATED);
   absl::StatusOr<std::unique_ptr<RobotSession>> session = RobotSession::Open(endpoints.gateway, hello);
@@ -184,12 +246,16 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.record.strategy = spec.strategy;
   result.record.world = spec.world.name;
   result.record.target = spec.target;
-  result.record.group = ReportGroup(start.modality);
+  result.record.group = spec.report_group.empty() ? ReportGroup(start.modality) : spec.report_group;
   // One capture per step: depth and detections to mapping (acknowledged), the colour image to
   // the gateway when asked for.
   uint64_t mapping_revision = 0;  // of the last acknowledged frame
   auto send_frame = [&]() -> absl::Status {
-    const SensorFrame captured = robot.Capture();
+    SensorFrame captured = robot.Capture();
+    if (!IsIdentity(map_from_odom)) {  // the robot maps where it believes it is
+      captured.odometry_pose = believed();
+      captured.odom_from_camera = ToIsometry(map_from_odom) * captured.odom_from_camera;
+    }
     for (const Detection& d : captured.detections.detections) {
       if (d.object_index >= 0) result.seen_objects.insert(d.object_index);
       RecordDetection(result.trace, robot.time_s(), spec.world, label, d.object_index);
@@ -207,13 +273,30 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   uint64_t step_number = 0;
   auto exchange = [&]() -> absl::Status {
     ++step_number;
-    if (absl::Status s = (*session)->Send(StepStateMessage(robot, spec.robot_id, step_number, mapping_revision));
-        !s.ok()) {
-      return s;
-    }
+    api::ConnectRequest state = StepStateMessage(robot, spec.robot_id, step_number, mapping_revision);
+    const api::LocalizationStatus status = localizer.Update(robot.time_s(), believed(), robot.pose());
+    state.mutable_state()->set_localization(status);
+    recovery.OnReport(robot.time_s(), status);
+    if (absl::Status s = (*session)->Send(state); !s.ok()) return s;
     absl::StatusOr<std::vector<api::RobotCommand>> commands = (*session)->TakeStepCommands(step_number, kStepDoneTimeout);
     if (!commands.ok()) return commands.status();
-    return ExecuteCommands(**session, executor, robot, *commands, result);
+    if (std::optional<api::LocalizationUpdate> update = (*session)->TakeLocalization()) {
+      const Pose corrected = FromProto(update->map_from_odom());
+      const bool changed = (corrected.position - map_from_odom.position).norm() > 1e-9 ||
+                           std::abs(corrected.yaw - map_from_odom.yaw) > 1e-12;
+      map_from_odom = corrected;
+      if (changed) {
+        recovery.OnCorrection(robot.time_s(), believed(), robot.pose());
+        result.timeline.push_back(absl::StrCat(
+            Stamp(robot), absl::StrFormat("gateway correction map_from_odom (%.2f, %.2f, %.1f deg); believed pose off "
+                                          "by %.2f m",
+                                          corrected.position.x(), corrected.position.y(), corrected.yaw * 180.0 / M_PI,
+                                          (believed().position - robot.pose().position).head<2>().norm())));
+      }
+    }
+    std::optional<Pose> truth_from_odom;
+    if (frames_differ) truth_from_odom = Compose(robot.pose(), Inverse(robot.odometry_pose()));
+    return ExecuteCommands(**session, executor, robot, *commands, result, truth_from_odom);
   };
   // The gateway must know where the robot is and what it sees before it plans.
   if (absl::Status s = send_frame(); !s.ok()) return s;
@@ -241,6 +324,16 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     RecordTask(*task, robot, result);
     // The agent's stop action ends the episode; a task that ended without one ends it too.
     if (executor.stop_issued() || Terminal(result.final_status) || step == spec.max_steps) break;
+    if (spec.kidnap_to.has_value() && !kidnapped && robot.time_s() >= spec.kidnap_at_s) {
+      kidnapped = true;
+      robot.Kidnap(*spec.kidnap_to);
+      executor.Interrupt();
+      recovery.OnKidnap(robot.time_s());
+      result.timeline.push_back(absl::StrCat(Stamp(robot), absl::StrFormat("kidnapped to (%.2f, %.2f, %.0f deg)",
+                                                                         spec.kidnap_to->position.x(),
+                                                                         spec.kidnap_to->position.y(),
+                                                                         spec.kidnap_to->yaw * 180.0 / M_PI)));
+    }
     const std::optional<Feedback> outcome = executor.Step(spec.step_s);
     result.steps = step + 1;
     result.trajectory.push_back(robot.pose().position.head<2>());
@@ -284,6 +377,12 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   result.trace.bounds_min = spec.world.bounds_min;
   result.trace.bounds_max = spec.world.bounds_max;
   result.record.failure_cause = FailureCauseName(ClassifyFailure(result.trace, spec.taxonomy));
+  result.record.start_index = spec.start_index;
+  result.record.losses = recovery.losses();
+  result.record.recovery_times_s = recovery.times_s();
+  result.record.recovery_errors_m = recovery.errors_m();
+  result.record.recovery_errors_deg = recovery.errors_deg();
+  result.record.final_pose_error_m = (believed().position - robot.pose().position).head<2>().norm();
   return result;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "clients/sim/core/world.h"
 #include "clients/sim/loop/episode_trace.h"
 #include "clients/sim/loop/failure_taxonomy.h"
+#include "clients/sim/loop/localization_model.h"
 #include "semnav/reasoning/v1/task.pb.h"
 
 namespace semnav::sim::loop {
@@ -51,12 +53,25 @@ struct EpisodeSpec {
   double ground_camera_pitch = 0.35;
   // Thresholds that name a failed episode's cause (EpisodeRecord::failure_cause).
   FailureTaxonomyConfig taxonomy;
+  // Losing the pose (docs/simulation.md): odometry drift is sensors.odometry; the localizer model
+  // reports LOST when the believed pose departs from the truth; a kidnap carries the robot to
+  // kidnap_to at kidnap_at_s without telling it (unset = never).
+  LocalizerConfig localizer;
+  std::optional<Pose> kidnap_to;
+  double kidnap_at_s = 0.0;
+  // The robot's landmark map for relocalization (map id = robot_id): "oracle" upserts the world's
+  // objects (true centres, largest box extent, the detector's class embedding) before the
+  // episode; "mapping" leaves it to mapping filling landmark maps from its scene graph; "" = none.
+  std::string landmarks;
+  // The report group (EpisodeRecord::group); empty = by the start's modality (ReportGroup).
+  std::string report_group;
 };
 
 struct Endpoints {
   std::shared_ptr<grpc::Channel> gateway;
   std::shared_ptr<grpc::Channel> mapping;
   std::shared_ptr<grpc::Channel> planning;  // the robot's local planner (live map) and l_i (true map)
+  std::shared_ptr<grpc::Channel> relocalization;  // landmark maps (EpisodeSpec::landmarks); null = none
 };
 
 struct EpisodeResult {

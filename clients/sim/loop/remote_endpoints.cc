@@ -23,7 +23,7 @@ absl::StatusOr<Endpoints> LoadRemoteEndpoints(const std::string& yaml_path) {
     if (!channel.ok()) return absl::Status(channel.status().code(), absl::StrCat(names[i], ".", channel.status().message()));
     channels[i] = *channel;
   }
-  return Endpoints{channels[0], channels[1], channels[2]};
+  return Endpoints{channels[0], channels[1], channels[2], nullptr};
 }
 
 }  // namespace semnav::sim::loop

@@ -43,6 +43,7 @@ void RobotSession::ReadLoop() {
       commands_before_done_ = commands_.size();
     }
     if (response.has_command()) commands_.push_back({response.command(), absl::Now()});
+    if (response.has_localization()) localization_ = response.localization();
   }
   absl::MutexLock lock(&mu_);
   closed_ = true;
@@ -95,6 +96,17 @@ absl::StatusOr<std::vector<api::RobotCommand>> RobotSession::TakeStepCommands(ui
 bool RobotSession::closed() {
   absl::MutexLock lock(&mu_);
   return closed_;
+}
+
+}  // namespace semnav::sim::loop
+
+namespace semnav::sim::loop {
+
+std::optional<semnav::reasoning::v1::LocalizationUpdate> RobotSession::TakeLocalization() {
+  absl::MutexLock lock(&mu_);
+  std::optional<semnav::reasoning::v1::LocalizationUpdate> out = std::move(localization_);
+  localization_.reset();
+  return out;
 }
 
 }  // namespace semnav::sim::loop

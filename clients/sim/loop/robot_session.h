@@ -4,6 +4,7 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -41,6 +42,9 @@ class RobotSession {
                                                                                     absl::Duration timeout);
   // True once the gateway ended the stream (or it broke).
   bool closed();
+  // The gateway's latest LocalizationUpdate since the last call (lock step: those sent before the
+  // last StepDone); nullopt when none came.
+  std::optional<semnav::reasoning::v1::LocalizationUpdate> TakeLocalization();
 
  private:
   RobotSession() = default;
@@ -58,6 +62,7 @@ class RobotSession {
   uint64_t last_step_done_ ABSL_GUARDED_BY(mu_) = 0;
   std::size_t commands_before_done_ ABSL_GUARDED_BY(mu_) = 0;  // leading commands_ sent before it
   bool closed_ ABSL_GUARDED_BY(mu_) = false;
+  std::optional<semnav::reasoning::v1::LocalizationUpdate> localization_ ABSL_GUARDED_BY(mu_);
 };
 
 }  // namespace semnav::sim::loop

@@ -69,12 +69,32 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
     model_proxy_section =
         absl::StrCat("  model_proxy:\n    address: ", *model_proxy, "\n    deadline_ms: ", kWallDeadlineMs, "\n");
   }
+  std::string relocalization_section;
+  if (options.relocalization) {
+    absl::StatusOr<std::string> relocalization = Address(options.free_ports, 50053);
+    if (!relocalization.ok()) return relocalization.status();
+    stack->relocalization_ = *relocalization;
+    config.services.push_back({"relocalization", "semnav-relocalization", *relocalization,
+                               WriteConfig(options.work_dir, "relocalization",
+                                           // A room's look-around sees 5-15 objects, not the seed's
+                                           // 38 per keyframe: 5 inliers make a reliable answer. The
+                                           // observed scales are mapping's extents of what was seen
+                                           // (0.04-0.75 m measured), the oracle map's whole boxes: the
+                                           // scale gate (0.5 ratio) is relaxed to 0.05; mapping's centres
+                                           // are those of the seen surfaces, the oracle's the boxes':
+                                           // position sigma 0.5 m instead of 0.2.
+                                           absl::StrCat("relocalization:\n  storage_dir: ", options.work_dir,
+                                                        "/landmarks\n  reliability:\n    min_inliers: 5\n"
+                                                        "  matching:\n    scale_threshold: 0.05\n    pos_sigma_m: 0.5\n"))});
+    relocalization_section = absl::StrCat("  relocalization:\n    address: ", *relocalization, "\n");
+  }
   config.services.push_back({"gateway", "semnav-gateway", *gateway,
                              WriteConfig(options.work_dir, "gateway",
                                          absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
                                                       "\n  planning:\n    address: ", *planning,
                                                       "\n    deadline_ms: ", kWallDeadlineMs, "\n",
-                                                      model_proxy_section, "  executor:\n    time_budget_s: ",
+                                                      model_proxy_section, relocalization_section,
+                                                      "  executor:\n    time_budget_s: ",
                                                       options.task_time_budget_s, "\n"))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
@@ -89,7 +109,8 @@ Endpoints SimStack::endpoints() const {
   auto channel = [](const std::string& address) {
     return grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
   };
-  return Endpoints{channel(gateway_), channel(mapping_), channel(planning_)};
+  return Endpoints{channel(gateway_), channel(mapping_), channel(planning_),
+                   relocalization_.empty() ? nullptr : channel(relocalization_)};
 }
 
 }  // namespace semnav::sim::loop

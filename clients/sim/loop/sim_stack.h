@@ -24,6 +24,9 @@ struct SimStackOptions {
   // The episode budget in simulated seconds, given to the gateway's executor (executor.
   // time_budget_s) so its endgame knows when the last steps come; 0 = no budget.
   double task_time_budget_s = 0.0;
+  // Run semnav-relocalization and the gateway's relocalization loop (gateway.relocalization;
+  // the drift and kidnapped groups of the mission bench).
+  bool relocalization = false;
 };
 
 class SimStack {
@@ -43,6 +46,7 @@ class SimStack {
   SimStack() = default;
   std::unique_ptr<semnav::launcher::StackRunner> runner_;
   std::string gateway_, mapping_, planning_;
+  std::string relocalization_;  // empty = not run
 };
 
 }  // namespace semnav::sim::loop

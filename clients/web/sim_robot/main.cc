@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   auto channel = [](const std::string& address) {
     return grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
   };
-  const loop::Endpoints endpoints{channel(gateway), channel(mapping), channel(planning)};
+  const loop::Endpoints endpoints{channel(gateway), channel(mapping), channel(planning), nullptr};
 
   const sim::StartPose& start = spec->world.starts[spec->start_index];
   const sim::Scene scene = sim::Scene::Build(spec->world);

@@ -20,6 +20,7 @@ struct SceneObject {
   int64_t region_id = -1;               // -1: no region.
   std::vector<std::string> attributes;  // e.g. colours reported by the detector/captioner.
   std::vector<float> embedding;         // visual embedding (CLIP-like); empty: none.
+  double scale_m = 0.0;                 // largest extent of mapping's box, metres; 0: unknown.
 };
 
 struct SceneRelation {

@@ -153,6 +153,12 @@ std::vector<RobotCommand> TaskExecutor::Halt(TaskState state, CommandKind kind, 
   return {NewCommand(kind, reason)};
 }
 
+std::vector<RobotCommand> TaskExecutor::Abandon(const std::string& reason) {
+  if (Ended(progress_.state)) return {};
+  dependency_wait_.reset();
+  return Fail(reason);
+}
+
 std::vector<RobotCommand> TaskExecutor::Fail(const std::string& reason) {
   return Halt(TaskState::kFailed, CommandKind::kStop, reason);
 }

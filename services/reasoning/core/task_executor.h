@@ -153,6 +153,9 @@ class TaskExecutor {
   // Also retries the planner at once during a dependency pause.
   std::vector<RobotCommand> Resume(double now);
   std::vector<RobotCommand> Cancel(const std::string& reason);
+  // Fails the task from outside with `reason` (the gateway could not relocalize the robot); the
+  // robot stops. Nothing for a task that has ended.
+  std::vector<RobotCommand> Abandon(const std::string& reason);
   // A task the gateway kept across its own restart (GatewayJournal): its subgoal, counters and
   // end state. A task that had not ended comes back PAUSED with `reason` and goes on from its
   // subgoal on Resume; nothing is commanded until then.

@@ -128,6 +128,40 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
   }
 
+  if (section.Has("relocalization")) {  // absent: no relocalization loop
+    ConfigReader reloc = section.Child("relocalization");
+    c.relocalization.channel = ClientOptions::FromConfig(reloc, ClientOptions{});
+    RelocalizationLoopConfig& loop = c.relocalization.loop;
+    reloc.Read("map_id", &c.relocalization.map_id)
+        .Read("deadline_ms", &c.relocalization.deadline_ms)
+        .Read("simulated_latency_s", &c.relocalization.simulated_latency_s)
+        .Read("jump_distance_m", &loop.jump_distance_m)
+        .Read("jump_yaw_rad", &loop.jump_yaw_rad)
+        .Read("look_around_rate_rps", &loop.look_around_rate_rps)
+        .Read("look_around_duration_s", &loop.look_around_duration_s)
+        .Read("answer_timeout_s", &loop.answer_timeout_s)
+        .Read("min_observed_objects", &loop.min_observed_objects)
+        .Read("max_observed_objects", &loop.max_observed_objects)
+        .Read("max_attempts", &loop.max_attempts)
+        .Read("retrigger_after_s", &loop.retrigger_after_s)
+        .Read("default_object_scale_m", &loop.default_object_scale_m);
+    reloc.Check(c.relocalization.map_id.size() <= 128, "map_id", "must be at most 128 characters");
+    reloc.Check(c.relocalization.deadline_ms > 0, "deadline_ms", "must be > 0");
+    reloc.Check(c.relocalization.simulated_latency_s >= 0.0 && c.relocalization.simulated_latency_s < loop.answer_timeout_s,
+                "simulated_latency_s", "must be in [0, answer_timeout_s)");
+    reloc.Check(loop.jump_distance_m > 0.0, "jump_distance_m", "must be > 0");
+    reloc.Check(loop.jump_yaw_rad > 0.0, "jump_yaw_rad", "must be > 0");
+    reloc.Check(loop.look_around_rate_rps > 0.0 && loop.look_around_rate_rps <= 10.0, "look_around_rate_rps",
+                "must be in (0, 10]");
+    reloc.Check(loop.look_around_duration_s > 0.0, "look_around_duration_s", "must be > 0");
+    reloc.Check(loop.answer_timeout_s > 0.0, "answer_timeout_s", "must be > 0");
+    reloc.Check(loop.min_observed_objects >= 3, "min_observed_objects", "must be >= 3 (a pose needs 3 objects)");
+    reloc.Check(loop.max_observed_objects >= loop.min_observed_objects && loop.max_observed_objects <= 1000,
+                "max_observed_objects", "must be in [min_observed_objects, 1000]");
+    reloc.Check(loop.max_attempts >= 1, "max_attempts", "must be >= 1");
+    reloc.Check(loop.retrigger_after_s >= 0.0, "retrigger_after_s", "must be >= 0");
+    reloc.Check(loop.default_object_scale_m > 0.0, "default_object_scale_m", "must be > 0");
+  }
   if (section.Has("model_proxy")) {  // absent: offline default, no slow-path calls
     ConfigReader model = section.Child("model_proxy");
     c.model_proxy.channel = ClientOptions::FromConfig(model, ClientOptions{});

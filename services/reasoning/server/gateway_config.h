@@ -13,6 +13,7 @@
 #include "services/reasoning/core/slow_answer.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/exploration_strategy.h"
+#include "services/reasoning/core/relocalization_loop.h"
 #include "services/reasoning/core/task_executor.h"
 #include "services/reasoning/core/topological_memory.h"
 
@@ -42,6 +43,19 @@ struct ModelSettings {
   ModelCallPolicyConfig calls;    // per-task call economy (section model_proxy.calls)
 };
 
+// The relocalization service and the gateway's relocalization loop (section "relocalization";
+// docs/algorithms/relocalization.md, "The loop"). No address = no loop: robot reports and pose
+// jumps are ignored and RelocalizeRobot is FAILED_PRECONDITION, as before the loop existed.
+struct RelocalizationSettings {
+  ClientOptions channel;             // address empty = no relocalization service
+  std::string map_id;                // landmark map robots relocalize in; "" = the robot's id
+  int deadline_ms = 2000;            // per Relocalize call (wall clock)
+  // Simulated-clock robots get the answer this many simulated seconds after the call (the
+  // service's median is ~5 ms; the rest is the robot's link), so episodes replay exactly.
+  double simulated_latency_s = 0.5;
+  RelocalizationLoopConfig loop;
+};
+
 // The EROI search a volume starts from: 2 m edges, planning's default eroi_size_m (the seed's
 // example uses 3 m), everything else as EroiSearchConfig has it.
 EroiSearchConfig DefaultEroiSearch();
@@ -63,6 +77,7 @@ struct GatewayConfig {
   std::string lexicon_path = Lexicon::DefaultPath();  // bilingual lexicon (TSV); default: the source tree's
   ClientOptions mapping;              // mapping service; empty address = no scene graph
   PlanningSettings planning;
+  RelocalizationSettings relocalization;
   ModelSettings model_proxy;
   // Seed-000 search volume for EROI_UTILITY tasks (section "eroi"); a task's search area replaces
   // its x / y extent. Absent and no search area = those tasks explore with planning's uniform

@@ -51,7 +51,7 @@ void GatewayHub::Tick() {
     mu_.AwaitWithTimeout(absl::Condition(&shut_down_), absl::Milliseconds(100));
     if (shut_down_) break;
     for (auto& [robot_id, robot] : robots_) {
-      if (robot.simulated_clock) continue;  // its states are its clock
+      if (robot.simulated_clock || !PoseTrusted(robot)) continue;  // its states are its clock / relocalizing
       Task* task = tasks_.Find(robot.active_task);
       // A task inside a planning call is skipped: the next tick (or its robot's next state) checks it.
       if (task != nullptr && task->started && !task->in_remote_call) {
@@ -147,10 +147,11 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
     // An emergency stop may have come while the task was inside a planning call: nothing the
     // call led to reaches the robot.
     if (robot.session == nullptr || robot.emergency_stop) break;
+    if (!MayCommand(robot, command)) continue;  // no motion on an untrusted pose
     api::ConnectResponse response;
     robot.last_session_command = robot.next_command_id++;
     robot.last_executor_command = command.id;
-    *response.mutable_command() = ToProto(command, robot.last_session_command, task.task_id);
+    *response.mutable_command() = ToProto(InRobotFrame(robot, command), robot.last_session_command, task.task_id);
     robot.last_command = response.command();
     robot.session->Send(response);
   }

@@ -34,6 +34,7 @@
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/server/gateway_config.h"
 #include "services/reasoning/server/language_model.h"
+#include "services/reasoning/server/relocalization_client.h"
 #include "services/reasoning/server/stream_sink.h"
 #include "services/reasoning/server/task_planner.h"
 
@@ -46,6 +47,7 @@ struct GatewayBackends {
   ExplorationService* explorer = nullptr;  // planning's SelectExplorationGoal with task context
   LanguageModel* model = nullptr;          // model proxy: slow path and text embeddings
   const CooccurrencePrior* prior = nullptr;  // commonsense co-occurrence for exploration
+  Relocalizer* relocalizer = nullptr;        // relocalization: the lost-robot loop (null = no loop)
 };
 
 class GatewayHub {
@@ -69,6 +71,8 @@ class GatewayHub {
   absl::Status ClearEmergencyStop(const api::ClearEmergencyStopRequest& request);
   absl::StatusOr<api::DecomposeInstructionResponse> Decompose(const api::DecomposeInstructionRequest& request);
   absl::StatusOr<api::ResolveTargetResponse> ResolveTarget(const api::ResolveTargetRequest& request);
+  // The operator's relocalization request (gateway_hub_relocalization.cc).
+  absl::StatusOr<api::RelocalizeRobotResponse> RelocalizeRobot(const api::RelocalizeRobotRequest& request);
   // True when `fast` (ResolveTarget's answer) should go on to the slow path: allow_slow_path, no
   // fast-path target and a model proxy configured.
   bool WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const;
@@ -138,6 +142,9 @@ class GatewayHub {
     api::Capabilities capabilities;  // as the hello sent them (slow telemetry)
     api::RobotState last_state;      // as sent (fast telemetry)
     api::RobotCommand last_command;
+    // The relocalization loop (gateway_hub_relocalization.cc); null without a relocalizer.
+    std::unique_ptr<RelocalizationLoop> localization;
+    std::string localization_paused_task;  // the task the loop paused, resumed after it
   };
   using Task = TaskRecord;
 
@@ -218,6 +225,22 @@ class GatewayHub {
   // The strategy a task explores with: its own, else the configured default.
   ExplorationStrategy StrategyOf(const Task& task) const;
   void Tick() ABSL_LOCKS_EXCLUDED(mu_);
+  // The relocalization loop (gateway_hub_relocalization.cc). TrackLocalization feeds a state
+  // (pose in the robot's odometry frame), sets robot.pose to the map pose and says whether the
+  // executor may use it; MayCommand keeps motion off an untrusted pose; InRobotFrame moves a
+  // command's goal into the robot's odometry frame.
+  bool TrackLocalization(const std::string& robot_id, Robot& robot, const api::RobotState& state,
+                         const RobotPose& odom_pose) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  bool PoseTrusted(const Robot& robot) const;
+  bool MayCommand(const Robot& robot, const RobotCommand& command) const;
+  RobotCommand InRobotFrame(const Robot& robot, const RobotCommand& command) const;
+  void OnLocalizationSession(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  api::RobotLocalization LocalizationOf(const Robot& robot) const;
+  void RunLocalizationActions(const std::string& robot_id, Robot& robot, std::vector<RelocalizationAction> actions)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void SendLocalizationUpdate(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void OnRelocalizationAnswer(const std::string& robot_id, absl::StatusOr<RelocalizationAnswer> answer)
+      ABSL_LOCKS_EXCLUDED(mu_);
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
   // shutdown, outside mu_ for the file writes.
   void RestoreFromJournal() ABSL_LOCKS_EXCLUDED(mu_);

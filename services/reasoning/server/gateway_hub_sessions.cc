@@ -68,6 +68,7 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   robot.sim_now_s = 0.0;
   robot.synced_mapping_revision = 0;
   robot.step_inputs.clear();
+  OnLocalizationSession(robot);
   api::SessionAccepted accepted;
   accepted.set_session_id(absl::StrCat(hello.robot_id(), "-", robot.next_command_id));
   Log(api::EVENT_KIND_SESSION, hello.robot_id(), "", "session opened");
@@ -207,8 +208,8 @@ void GatewayHub::ApplyDueAnswers(const std::string& robot_id) {
 void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api::RobotState& state,
                             const RobotPose& pose) {
   Task* const task = SettledActiveTask(robot);
-  robot.pose = pose;
   robot.last_state = state;
+  const bool pose_trusted = TrackLocalization(robot_id, robot, state, pose);  // sets robot.pose (map frame)
   std::vector<std::string> nearby;
   for (const SceneObject& object : scene_graph_.objects) {
     if ((object.position - robot.pose.position).head<2>().norm() <= config_.memory_label_radius_m) {
@@ -221,8 +222,10 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
     *sample.mutable_state() = state;
     sample.set_task_id(robot.active_task);
     *sample.mutable_last_command() = robot.last_command;
+    *sample.mutable_localization() = LocalizationOf(robot);
     watcher->Send(sample);
   }
+  if (!pose_trusted) return;  // the task waits for relocalization
   if (task != nullptr && task->resume_on_state) {
     // Restored after a gateway crash: this is the first pose the gateway can trust.
     task->resume_on_state = false;

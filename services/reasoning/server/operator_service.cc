@@ -133,6 +133,12 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::EmergencyStop(grpc::CallbackServe
   return Reply(context, hub_->EmergencyStop(*request), [&](api::EmergencyStopResponse r) { *response = std::move(r); });
 }
 
+grpc::ServerUnaryReactor* OperatorServiceImpl::RelocalizeRobot(grpc::CallbackServerContext* context,
+                                                               const api::RelocalizeRobotRequest* request,
+                                                               api::RelocalizeRobotResponse* response) {
+  return Reply(context, hub_->RelocalizeRobot(*request), [&](api::RelocalizeRobotResponse r) { *response = std::move(r); });
+}
+
 grpc::ServerUnaryReactor* OperatorServiceImpl::ClearEmergencyStop(grpc::CallbackServerContext* context,
                                                                   const api::ClearEmergencyStopRequest* request,
                                                                   api::ClearEmergencyStopResponse*) {

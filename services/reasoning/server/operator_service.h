@@ -54,6 +54,9 @@ class OperatorServiceImpl : public api::OperatorService::CallbackService {
                                                  api::DecomposeInstructionResponse* response) override;
   grpc::ServerUnaryReactor* ResolveTarget(grpc::CallbackServerContext* context, const api::ResolveTargetRequest* request,
                                           api::ResolveTargetResponse* response) override;
+  grpc::ServerUnaryReactor* RelocalizeRobot(grpc::CallbackServerContext* context,
+                                            const api::RelocalizeRobotRequest* request,
+                                            api::RelocalizeRobotResponse* response) override;
 
  private:
   std::shared_ptr<GatewayHub> hub_;

@@ -153,13 +153,24 @@ api::TaskSnapshot ToProto(const TaskView& view) {
   return out;
 }
 
-RobotPose FromProto(const api::RobotState& state) {
+RobotPose FromProto(const api::RobotState& state) { return FromProto(state.pose()); }
+
+RobotPose FromProto(const common::v1::Pose& p) {
   RobotPose pose;
-  const common::v1::Pose& p = state.pose();
   pose.position = Eigen::Vector3d(p.position().x(), p.position().y(), p.position().z());
   const common::v1::Quaternion& q = p.orientation();
   pose.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
   return pose;
+}
+
+common::v1::Pose ToProtoPose(const RobotPose& pose) {
+  common::v1::Pose out;
+  out.mutable_position()->set_x(pose.position.x());
+  out.mutable_position()->set_y(pose.position.y());
+  out.mutable_position()->set_z(pose.position.z());
+  out.mutable_orientation()->set_z(std::sin(pose.yaw / 2.0));
+  out.mutable_orientation()->set_w(std::cos(pose.yaw / 2.0));
+  return out;
 }
 
 absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area) {

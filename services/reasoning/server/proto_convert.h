@@ -30,6 +30,9 @@ api::TaskStatus ToProto(TaskState state);
 api::TaskSnapshot ToProto(const TaskView& view);
 // Pose and yaw (about z) from the robot's state message.
 RobotPose FromProto(const api::RobotState& state);
+// A pose's position and yaw about z (roll and pitch dropped), and back (a rotation about z).
+RobotPose FromProto(const common::v1::Pose& pose);
+common::v1::Pose ToProtoPose(const RobotPose& pose);
 // INVALID_ARGUMENT naming the coordinate ("search_area.min_x") when it is not finite or beyond
 // kMaxCoordinateM, or naming `search_area` when min >= max.
 absl::StatusOr<SearchArea> FromProto(const api::SearchArea& area);

@@ -136,6 +136,16 @@ absl::Status Validate(const api::EmergencyStopRequest& request) {
   return CheckLength(request.reason(), "reason", kMaxTextBytes);
 }
 
+absl::Status Validate(const api::RelocalizeRobotRequest& request) {
+  if (absl::Status s = CheckIds({{&request.request_id(), "request_id"},
+                                 {&request.robot_id(), "robot_id"},
+                                 {&request.lease_id(), "lease_id"}});
+      !s.ok()) {
+    return s;
+  }
+  return CheckLength(request.reason(), "reason", kMaxTextBytes);
+}
+
 absl::Status Validate(const api::ClearEmergencyStopRequest& request) {
   return CheckIds({{&request.request_id(), "request_id"},
                    {&request.robot_id(), "robot_id"},
@@ -251,6 +261,9 @@ absl::StatusOr<RobotPose> ValidatedPose(const api::RobotState& state) {
     return s;
   if (!api::LocomotionMode_IsValid(state.mode())) {
     return InvalidField("state.mode", absl::StrCat("unknown mode ", state.mode()));
+  }
+  if (!api::LocalizationStatus_IsValid(state.localization())) {
+    return InvalidField("state.localization", absl::StrCat("unknown status ", state.localization()));
   }
   // In [0, 1]; any negative value means unknown.
   const double lowest = std::numeric_limits<double>::lowest();

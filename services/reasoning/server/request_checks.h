@@ -37,6 +37,7 @@ absl::Status Validate(const api::AcquireLeaseRequest& request);
 absl::Status Validate(const api::RenewLeaseRequest& request);
 absl::Status Validate(const api::ReleaseLeaseRequest& request);
 absl::Status Validate(const api::EmergencyStopRequest& request);
+absl::Status Validate(const api::RelocalizeRobotRequest& request);
 absl::Status Validate(const api::ClearEmergencyStopRequest& request);
 absl::Status Validate(const api::StreamFastTelemetryRequest& request);
 absl::Status Validate(const api::StreamSlowTelemetryRequest& request);

@@ -77,6 +77,7 @@ function watchRobot(): void {
     request: () => ({ robot_id: state.robotId, period: { seconds: 1 } }),
     onMessage: (sample) => {
       state.emergencyStop = sample.emergency_stop_active;
+      if (sample.localization) state.localization = sample.localization;
       $("robot-id").textContent = `${state.robotId}${sample.session_connected ? "" : " (offline)"}`;
       renderTask(state);
     },
@@ -214,6 +215,12 @@ function wireControls(): void {
   $("estop").addEventListener("click", guarded("Emergency stop", async () => {
     await call("operator", "EmergencyStop", { request_id: requestId(), robot_id: state.robotId, reason: "dashboard emergency stop" }, 3000);
     state.emergencyStop = true;
+    renderTask(state);
+  }));
+  $("relocalize").addEventListener("click", guarded("Relocalization", async () => {
+    const reply = await call<{ localization: semnav.reasoning.v1.RobotLocalization | null }>("operator", "RelocalizeRobot",
+      { request_id: requestId(), robot_id: state.robotId, reason: "operator (dashboard)" });
+    state.localization = reply.localization;
     renderTask(state);
   }));
   $("clear-estop").addEventListener("click", guarded("Clearing the e-stop", async () => {

@@ -37,6 +37,9 @@ export function renderTask(state: DashboardState): void {
   estop.classList.toggle("active", state.emergencyStop);
   estop.textContent = state.emergencyStop ? "E-STOPPED" : "EMERGENCY STOP";
   $("clear-estop").hidden = !state.emergencyStop;
+  const l = state.localization;
+  $("localization").textContent = l === null ? "" : l.relocalizing ? `relocalizing (${l.trigger})`
+    : !l.trusted ? "pose NOT trusted" : l.recoveries > 0 ? `relocalized ×${l.recoveries}` : "";
   if (task === null) return;
   $("task-card").dataset.taskId = task.task_id;
   $("task-instruction").textContent = `“${task.instruction}”`;

@@ -21,6 +21,7 @@ export class DashboardState {
   commandLegs: Leg[] = [];  // the navigate command the robot is executing, by mode
   task: semnav.reasoning.v1.TaskSnapshot | null = null;
   emergencyStop = false;
+  localization: semnav.reasoning.v1.RobotLocalization | null = null;
   frontiers: semnav.planning.v1.Frontier[] = [];
   objects = new Map<string, semnav.mapping.v1.SceneObject>();
   relations: semnav.mapping.v1.Relation[] = [];
@@ -42,7 +43,10 @@ export class DashboardState {
   }
 
   applyFastTelemetry(sample: semnav.reasoning.v1.StreamFastTelemetryResponse): void {
-    const pose = sample.state?.pose;
+    // The gateway's map pose (its map -> odom correction applied); the robot's own pose from
+    // gateways without the relocalization loop.
+    if (sample.localization) this.localization = sample.localization;
+    const pose = sample.localization?.map_pose ?? sample.state?.pose;
     if (pose?.position && pose.orientation) {
       const q = pose.orientation;
       const yaw = Math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
@@ -53,7 +57,9 @@ export class DashboardState {
       this.pose = { ...point, yaw };
     }
     const navigate = sample.last_command?.navigate;
-    this.commandLegs = navigate && this.pose ? legs(this.pose, navigate.path) : [];
+    // Navigate paths are in the robot's odometry frame: into the map frame for drawing.
+    const path = navigate ? navigate.path.map((w) => ({ ...w, position: toMap(sample.localization?.map_from_odom, w.position) })) : [];
+    this.commandLegs = navigate && this.pose ? legs(this.pose, path) : [];
   }
 }
 
@@ -74,4 +80,14 @@ function legs(from: Point, path: semnav.reasoning.v1.PathWaypoint[]): Leg[] {
     previous = point;
   }
   return result;
+}
+
+// A point of the robot's odometry frame in the map frame (planar map_from_odom; unset = identity).
+function toMap(t: semnav.common.v1.Pose | null | undefined, p: semnav.common.v1.Vector3 | null): semnav.common.v1.Vector3 | null {
+  if (!t?.position || !t.orientation || p === null) return p;
+  const q = t.orientation;
+  const yaw = Math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+  const c = Math.cos(yaw);
+  const s = Math.sin(yaw);
+  return { x: c * p.x - s * p.y + t.position.x, y: s * p.x + c * p.y + t.position.y, z: p.z + t.position.z };
 }

@@ -1,0 +1,90 @@
+#include "clients/sim/loop/localization_model.h"
+
+#include <cmath>
+
+namespace semnav::sim::loop {
+
+namespace api = semnav::reasoning::v1;
+
+Pose Compose(const Pose& a, const Pose& b) {
+  const double c = std::cos(a.yaw);
+  const double s = std::sin(a.yaw);
+  Pose out;
+  out.position = a.position + Eigen::Vector3d(c * b.position.x() - s * b.position.y(),
+                                              s * b.position.x() + c * b.position.y(), b.position.z());
+  out.yaw = WrapAngle(a.yaw + b.yaw);
+  return out;
+}
+
+Pose Inverse(const Pose& a) {
+  const double c = std::cos(a.yaw);
+  const double s = std::sin(a.yaw);
+  Pose out;
+  out.position = Eigen::Vector3d(-(c * a.position.x() + s * a.position.y()), -(-s * a.position.x() + c * a.position.y()),
+                                 -a.position.z());
+  out.yaw = WrapAngle(-a.yaw);
+  return out;
+}
+
+bool IsIdentity(const Pose& a) { return a.position.isZero(0.0) && a.yaw == 0.0; }
+
+Pose FromProto(const semnav::common::v1::Pose& pose) {
+  const auto& q = pose.orientation();
+  Pose out;
+  out.position = Eigen::Vector3d(pose.position().x(), pose.position().y(), pose.position().z());
+  out.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
+  return out;
+}
+
+void ToTruthFrame(api::RobotCommand& command, const Pose& truth_from_odom) {
+  if (!command.has_navigate()) return;
+  auto move = [&truth_from_odom](semnav::common::v1::Vector3* p) {
+    const Pose moved = Compose(truth_from_odom, Pose{Eigen::Vector3d(p->x(), p->y(), p->z()), 0.0});
+    p->set_x(moved.position.x());
+    p->set_y(moved.position.y());
+    p->set_z(moved.position.z());
+  };
+  api::NavigateAction* navigate = command.mutable_navigate();
+  move(navigate->mutable_goal());
+  navigate->set_goal_yaw(WrapAngle(navigate->goal_yaw() + truth_from_odom.yaw));
+  for (api::PathWaypoint& w : *navigate->mutable_path()) move(w.mutable_position());
+}
+
+api::LocalizationStatus SimLocalizer::Update(double time_s, const Pose& believed, const Pose& truth) {
+  if (!config_.enabled) return api::LOCALIZATION_STATUS_UNSPECIFIED;
+  const bool mismatch = (believed.position - truth.position).head<2>().norm() > config_.lost_distance_m ||
+                        std::abs(WrapAngle(believed.yaw - truth.yaw)) > config_.lost_yaw_rad;
+  if (mismatch == lost_) {
+    changing_since_.reset();
+  } else {
+    if (!changing_since_.has_value()) changing_since_ = time_s;
+    if (time_s - *changing_since_ >= config_.latency_s) {
+      lost_ = mismatch;
+      changing_since_.reset();
+    }
+  }
+  return lost_ ? api::LOCALIZATION_STATUS_LOST : api::LOCALIZATION_STATUS_OK;
+}
+
+void RecoveryTracker::OnKidnap(double time_s) {
+  if (open_since_.has_value()) return;
+  open_since_ = time_s;
+  ++losses_;
+}
+
+void RecoveryTracker::OnReport(double time_s, api::LocalizationStatus status) {
+  if (status == api::LOCALIZATION_STATUS_LOST && !open_since_.has_value()) {
+    open_since_ = time_s;
+    ++losses_;
+  }
+}
+
+void RecoveryTracker::OnCorrection(double time_s, const Pose& believed, const Pose& truth) {
+  if (!open_since_.has_value()) return;  // a correction without a loss (operator request, drift check)
+  times_s_.push_back(time_s - *open_since_);
+  errors_m_.push_back((believed.position - truth.position).head<2>().norm());
+  errors_deg_.push_back(std::abs(WrapAngle(believed.yaw - truth.yaw)) * 180.0 / M_PI);
+  open_since_.reset();
+}
+
+}  // namespace semnav::sim::loop

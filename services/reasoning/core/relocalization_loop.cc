@@ -1,0 +1,255 @@
+#include "services/reasoning/core/relocalization_loop.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "absl/strings/str_format.h"
+
+namespace semnav::reasoning {
+namespace {
+
+double Wrap(double angle) { return std::remainder(angle, 2.0 * M_PI); }
+
+RobotCommand Rotate(uint64_t id, double rate, double duration, const std::string& reason) {
+  RobotCommand command;
+  command.kind = CommandKind::kRotate;
+  command.id = id;
+  command.angular_speed = rate;
+  command.duration_s = duration;
+  command.reason = reason;
+  return command;
+}
+
+}  // namespace
+
+Eigen::Vector3d PlanarTransform::Apply(const Eigen::Vector3d& point) const {
+  const double c = std::cos(yaw);
+  const double s = std::sin(yaw);
+  return Eigen::Vector3d(c * point.x() - s * point.y(), s * point.x() + c * point.y(), point.z()) + translation;
+}
+
+RobotPose PlanarTransform::Apply(const RobotPose& pose) const {
+  return RobotPose{Apply(pose.position), Wrap(pose.yaw + yaw)};
+}
+
+PlanarTransform PlanarTransform::Inverse() const {
+  PlanarTransform inverse;
+  inverse.yaw = Wrap(-yaw);
+  inverse.translation = -PlanarTransform{Eigen::Vector3d::Zero(), -yaw}.Apply(translation);  // -R^T t
+  return inverse;
+}
+
+RelocalizationLoop::RelocalizationLoop(RelocalizationLoopConfig config)
+    : config_(config), max_speed_mps_(config.default_speed_mps), max_yaw_rate_rps_(config.default_yaw_rate_rps) {}
+
+void RelocalizationLoop::SetLimits(double max_speed_mps, double max_yaw_rate_rps) {
+  max_speed_mps_ = max_speed_mps > 0.0 ? max_speed_mps : config_.default_speed_mps;
+  max_yaw_rate_rps_ = max_yaw_rate_rps > 0.0 ? max_yaw_rate_rps : config_.default_yaw_rate_rps;
+}
+
+void RelocalizationLoop::OnSessionOpened() { last_state_time_.reset(); }
+
+bool RelocalizationLoop::Jumped(double now, const RobotPose& odom_pose) const {
+  if (!last_state_time_.has_value()) return false;
+  const double dt = std::max(0.0, now - *last_state_time_);
+  const double moved = (odom_pose.position - last_pose_.position).head<2>().norm();
+  const double turned = std::abs(Wrap(odom_pose.yaw - last_pose_.yaw));
+  return moved > max_speed_mps_ * dt + config_.jump_distance_m ||
+         turned > max_yaw_rate_rps_ * dt + config_.jump_yaw_rad;
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now, const RobotPose& odom_pose,
+                                                              LocalizationReport report, const SceneGraph& graph,
+                                                              bool task_running) {
+  const bool jumped = Jumped(now, odom_pose);
+  const LocalizationReport previous = reported_;
+  reported_ = report;
+  last_state_time_ = now;
+  last_pose_ = odom_pose;
+  pose_ = odom_pose;
+  switch (phase_) {
+    case Phase::kLookingAround:
+      if (now >= phase_deadline_) return LookAround(now, graph);
+      return {};
+    case Phase::kAwaitingAnswer:
+      if (now >= phase_deadline_) {
+        return AttemptFailed(now, absl::StrFormat("relocalization did not answer within %.1f s", config_.answer_timeout_s),
+                             graph);
+      }
+      return {};
+    case Phase::kTracking:
+      break;
+  }
+  if (jumped) return Start(now, "pose jumped beyond the commanded motion", graph);
+  if (report != LocalizationReport::kOk &&
+      (previous == LocalizationReport::kOk || now - last_ended_ >= config_.retrigger_after_s)) {
+    return Start(now, report == LocalizationReport::kLost ? "robot reports LOST" : "robot reports UNCERTAIN", graph);
+  }
+  if (!trusted_ && task_running) return Start(now, "a task started on an untrusted pose", graph);
+  return {};
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::OnRequest(double now, const std::string& reason,
+                                                                const SceneGraph& graph) {
+  if (phase_ != Phase::kTracking) return {};
+  return Start(now, reason.empty() ? "operator request" : "operator request: " + reason, graph);
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::Start(double now, const std::string& trigger,
+                                                            const SceneGraph& graph) {
+  trigger_ = trigger;
+  attempt_ = 0;
+  paused_task_ = true;  // the hub pauses only a running task; resuming a task it did not pause is a no-op there
+  std::vector<RelocalizationAction> actions;
+  RelocalizationAction pause;
+  pause.kind = RelocalizationAction::Kind::kPauseTask;
+  pause.message = absl::StrFormat("relocalizing: %s", trigger);
+  actions.push_back(pause);
+  std::vector<RelocalizationAction> look = LookAround(now, graph);
+  actions.insert(actions.end(), look.begin(), look.end());
+  return actions;
+}
+
+// Starts a look-around (phase kTracking or a failed attempt), or, when one has just ended,
+// sends what it saw to relocalization.
+std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now, const SceneGraph& graph) {
+  std::vector<RelocalizationAction> actions;
+  if (phase_ == Phase::kLookingAround) {
+    std::vector<ObservedObject> observed = Observed(graph);
+    if (static_cast<int>(observed.size()) < config_.min_observed_objects) {
+      return AttemptFailed(now, absl::StrFormat("the look-around saw %d objects, %d needed", observed.size(),
+                                                config_.min_observed_objects),
+                           graph);
+    }
+    RelocalizationAction hold;
+    hold.kind = RelocalizationAction::Kind::kCommand;
+    hold.command.kind = CommandKind::kHold;
+    hold.command.id = next_command_id_++;
+    hold.command.reason = "relocalizing: waiting for the answer";
+    actions.push_back(hold);
+    RelocalizationAction call;
+    call.kind = RelocalizationAction::Kind::kRelocalize;
+    call.observed = std::move(observed);
+    call.message = absl::StrFormat("%d observed objects", call.observed.size());
+    actions.push_back(std::move(call));
+    phase_ = Phase::kAwaitingAnswer;
+    phase_deadline_ = now + config_.answer_timeout_s;
+    return actions;
+  }
+  ++attempt_;
+  baseline_.clear();
+  for (const SceneObject& object : graph.objects) baseline_[object.id] = object.detection_count;
+  RelocalizationAction rotate;
+  rotate.kind = RelocalizationAction::Kind::kCommand;
+  rotate.command = Rotate(next_command_id_++, config_.look_around_rate_rps, config_.look_around_duration_s,
+                          absl::StrFormat("relocalizing: looking around (attempt %d)", attempt_));
+  actions.push_back(rotate);
+  phase_ = Phase::kLookingAround;
+  phase_deadline_ = now + config_.look_around_duration_s;
+  return actions;
+}
+
+std::vector<ObservedObject> RelocalizationLoop::Observed(const SceneGraph& graph) const {
+  // Objects first found during the look-around carry only what the robot saw from here (in the
+  // frame it believes); objects seen again may mix older observations, so they come second.
+  const PlanarTransform odom_from_map = map_from_odom_.Inverse();
+  std::vector<std::pair<int, ObservedObject>> ranked;  // (0 = new, 1 = seen again), object
+  for (const SceneObject& object : graph.objects) {
+    auto before = baseline_.find(object.id);
+    const bool fresh = before == baseline_.end();
+    if (!fresh && object.detection_count <= before->second) continue;
+    if (object.embedding.empty()) continue;
+    ObservedObject observed;
+    observed.object_id = object.id;
+    observed.position = odom_from_map.Apply(object.position);
+    observed.scale_m = object.scale_m > 0.0 ? object.scale_m : config_.default_object_scale_m;
+    observed.embedding = object.embedding;
+    observed.observations = fresh ? std::max(1, object.detection_count)
+                                  : std::max(1, object.detection_count - before->second);
+    ranked.emplace_back(fresh ? 0 : 1, std::move(observed));
+  }
+  const Eigen::Vector3d here = pose_.position;
+  std::stable_sort(ranked.begin(), ranked.end(), [&here](const auto& a, const auto& b) {
+    if (a.first != b.first) return a.first < b.first;
+    return (a.second.position - here).squaredNorm() < (b.second.position - here).squaredNorm();
+  });
+  // With enough new objects, re-seen ones (possibly fused with pre-loss observations) stay out.
+  int fresh_count = 0;
+  for (const auto& entry : ranked) fresh_count += entry.first == 0 ? 1 : 0;
+  std::vector<ObservedObject> out;
+  for (auto& entry : ranked) {
+    if (entry.first == 1 && fresh_count >= config_.min_observed_objects) break;
+    if (static_cast<int>(out.size()) >= config_.max_observed_objects) break;
+    out.push_back(std::move(entry.second));
+  }
+  return out;
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(double now,
+                                                               const absl::StatusOr<RelocalizationAnswer>& answer) {
+  if (phase_ != Phase::kAwaitingAnswer) return {};  // late answer of an attempt that timed out
+  if (!answer.ok()) {
+    return AttemptFailed(now, absl::StrFormat("relocalization failed: %s", answer.status().message()), SceneGraph{});
+  }
+  if (!answer->reliable) {
+    return AttemptFailed(now,
+                         absl::StrFormat("relocalization answer not reliable (%d inliers, rms %.2f m)", answer->inliers,
+                                         answer->rms_residual_m),
+                         SceneGraph{});
+  }
+  const PlanarTransform previous = map_from_odom_;
+  map_from_odom_ = answer->map_from_odom;
+  trusted_ = true;
+  ++recoveries_;
+  phase_ = Phase::kTracking;
+  last_ended_ = now;
+  std::vector<RelocalizationAction> actions;
+  RelocalizationAction correct;
+  correct.kind = RelocalizationAction::Kind::kCorrect;
+  correct.map_from_odom = map_from_odom_;
+  correct.message = absl::StrFormat(
+      "relocalized (%s): map_from_odom moved by %.2f m, %.1f deg (%d inliers, rms %.2f m)", trigger_,
+      (map_from_odom_.translation - previous.translation).head<2>().norm(),
+      Wrap(map_from_odom_.yaw - previous.yaw) * 180.0 / M_PI, answer->inliers, answer->rms_residual_m);
+  actions.push_back(correct);
+  if (paused_task_) {
+    RelocalizationAction resume;
+    resume.kind = RelocalizationAction::Kind::kResumeTask;
+    resume.message = "relocalized: task resumes";
+    actions.push_back(resume);
+    paused_task_ = false;
+  }
+  return actions;
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::AttemptFailed(double now, const std::string& why,
+                                                                    const SceneGraph& graph) {
+  if (attempt_ < config_.max_attempts) {
+    phase_ = Phase::kTracking;  // LookAround from here starts a new look-around
+    // A new look-around: its baseline is the graph of now (an answer's failure has no graph:
+    // the old baseline stays, so objects seen in the first turn still count).
+    std::map<int64_t, int> keep = baseline_;
+    std::vector<RelocalizationAction> actions = LookAround(now, graph);
+    if (graph.objects.empty()) baseline_ = std::move(keep);
+    return actions;
+  }
+  phase_ = Phase::kTracking;
+  trusted_ = false;
+  ++failures_;
+  last_ended_ = now;
+  std::vector<RelocalizationAction> actions;
+  RelocalizationAction hold;
+  hold.kind = RelocalizationAction::Kind::kCommand;
+  hold.command.kind = CommandKind::kStop;
+  hold.command.id = next_command_id_++;
+  hold.command.reason = "relocalization failed: the pose is not trusted";
+  actions.push_back(hold);
+  RelocalizationAction fail;
+  fail.kind = RelocalizationAction::Kind::kFailTask;
+  fail.message = absl::StrFormat("relocalization failed after %d attempts (%s): %s", attempt_, trigger_, why);
+  actions.push_back(fail);
+  paused_task_ = false;
+  return actions;
+}
+
+}  // namespace semnav::reasoning

@@ -1,0 +1,156 @@
+// The gateway's relocalization loop for one robot (docs/algorithms/relocalization.md, "The loop"):
+// a trigger (the robot reports LOST/UNCERTAIN, its pose jumps beyond what it was commanded to do,
+// or the operator asks) pauses the task, the robot looks around in place, the objects it observed
+// go to relocalization (seed 001) against the robot's landmark map, and the answer becomes the
+// robot's map -> odom correction before the task resumes. Events in, actions out, no transport:
+// the hub runs the actions (services/reasoning/server/gateway_hub_relocalization.cc).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "absl/status/statusor.h"
+#include "services/reasoning/core/robot_types.h"
+#include "services/reasoning/core/scene_graph.h"
+
+namespace semnav::reasoning {
+
+struct RelocalizationLoopConfig {
+  // Pose jump: between two states the reported pose may move this much more than the robot's top
+  // speed allows over the elapsed time (and turn this much more than its yaw rate allows).
+  double jump_distance_m = 1.0;
+  double jump_yaw_rad = 0.6;
+  double default_speed_mps = 1.0;    // top speed when the robot's hello gave none
+  double default_yaw_rate_rps = 1.5;
+  // Look-around: one full turn at the executor's LOOK_AROUND rate (seed 002's 12 s at 0.5 rad/s).
+  double look_around_rate_rps = 0.5;
+  double look_around_duration_s = 12.6;
+  // Relocalization answer: a call without an answer this long after it was made fails the
+  // attempt (simulated seconds for simulated-clock robots).
+  double answer_timeout_s = 10.0;
+  // Observed objects a relocalization needs (seed 001 needs >= 3 for a pose); fewer after a
+  // look-around counts as a failed attempt.
+  int min_observed_objects = 3;
+  int max_observed_objects = 64;  // nearest first; bounds the request
+  // Attempts (look-around + relocalize) before the task fails.
+  int max_attempts = 2;
+  // A LOST/UNCERTAIN report starts a relocalization when the robot's status turns bad, and again
+  // when it still reports it this long after the last relocalization ended (the robot's own
+  // localizer may need a while to agree with the correction).
+  double retrigger_after_s = 15.0;
+  // Size of an observed object whose scene-graph entry has no size: landmark scale (metres).
+  double default_object_scale_m = 0.5;
+};
+
+enum class LocalizationReport { kOk, kUncertain, kLost };
+
+// Planar rigid transform (translation and yaw), the map -> odom correction of a ground robot.
+struct PlanarTransform {
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  double yaw = 0.0;
+
+  Eigen::Vector3d Apply(const Eigen::Vector3d& point) const;
+  RobotPose Apply(const RobotPose& pose) const;
+  PlanarTransform Inverse() const;
+};
+
+// An observed object in the robot's odometry frame, for RelocalizeRequest.observed.
+struct ObservedObject {
+  int64_t object_id = 0;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // odometry frame
+  double scale_m = 0.0;
+  std::vector<float> embedding;
+  int observations = 1;
+};
+
+// Relocalization's answer: map_from_query of the pose solution.
+struct RelocalizationAnswer {
+  PlanarTransform map_from_odom;
+  bool reliable = false;
+  int inliers = 0;
+  double rms_residual_m = 0.0;
+};
+
+// What the hub does for the loop, in order.
+struct RelocalizationAction {
+  enum class Kind {
+    kPauseTask,      // pause the robot's task (reason in message); logs EVENT_KIND_RELOCALIZING
+    kCommand,        // send `command` (rotate in place or hold)
+    kRelocalize,     // call relocalization with `observed`
+    kCorrect,        // `map_from_odom` is the robot's new correction; logs EVENT_KIND_RELOCALIZED
+    kResumeTask,     // resume the task the loop paused
+    kFailTask,       // the task fails with `message`; logs EVENT_KIND_RELOCALIZATION_FAILED
+  };
+  Kind kind = Kind::kCommand;
+  std::string message;
+  RobotCommand command;
+  std::vector<ObservedObject> observed;
+  PlanarTransform map_from_odom;
+};
+
+class RelocalizationLoop {
+ public:
+  explicit RelocalizationLoop(RelocalizationLoopConfig config);
+
+  // The robot's top speed and yaw rate from its hello (0 = unknown: the config's defaults).
+  void SetLimits(double max_speed_mps, double max_yaw_rate_rps);
+  // A robot state: `odom_pose` in the robot's odometry frame, `now` the robot's clock, `graph`
+  // the gateway's scene graph (map frame) and whether a task of the robot is running.
+  std::vector<RelocalizationAction> OnState(double now, const RobotPose& odom_pose, LocalizationReport report,
+                                            const SceneGraph& graph, bool task_running);
+  // The operator asked (RelocalizeRobot). A relocalization already running goes on.
+  std::vector<RelocalizationAction> OnRequest(double now, const std::string& reason, const SceneGraph& graph);
+  // Relocalization answered (or failed: NOT_FOUND, UNAVAILABLE, ...).
+  std::vector<RelocalizationAction> OnAnswer(double now, const absl::StatusOr<RelocalizationAnswer>& answer);
+  // A new session: the robot's odometry starts over, so the last pose is no reference for jumps.
+  void OnSessionOpened();
+
+  bool relocalizing() const { return phase_ != Phase::kTracking; }
+  // False after a failed relocalization until a successful one.
+  bool trusted() const { return trusted_; }
+  const PlanarTransform& map_from_odom() const { return map_from_odom_; }
+  LocalizationReport reported() const { return reported_; }
+  int recoveries() const { return recoveries_; }
+  int failures() const { return failures_; }
+  const std::string& trigger() const { return trigger_; }
+  // Commands the loop issued carry ids from here on (disjoint from the executor's).
+  static constexpr uint64_t kFirstCommandId = uint64_t{1} << 62;
+
+ private:
+  enum class Phase { kTracking, kLookingAround, kAwaitingAnswer };
+
+  std::vector<RelocalizationAction> Start(double now, const std::string& trigger, const SceneGraph& graph);
+  std::vector<RelocalizationAction> LookAround(double now, const SceneGraph& graph);
+  std::vector<RelocalizationAction> AttemptFailed(double now, const std::string& why, const SceneGraph& graph);
+  std::vector<ObservedObject> Observed(const SceneGraph& graph) const;
+  bool Jumped(double now, const RobotPose& odom_pose) const;
+
+  RelocalizationLoopConfig config_;
+  double max_speed_mps_;
+  double max_yaw_rate_rps_;
+  Phase phase_ = Phase::kTracking;
+  PlanarTransform map_from_odom_;
+  LocalizationReport reported_ = LocalizationReport::kOk;
+  bool trusted_ = true;
+  bool paused_task_ = false;
+  int attempt_ = 0;
+  double phase_deadline_ = 0.0;
+  double last_ended_ = -1e18;
+  std::optional<double> last_state_time_;
+  RobotPose last_pose_;
+  RobotPose pose_;  // latest odometry pose
+  // Detections per scene-graph object when the look-around started: objects new or seen again
+  // since are the look-around's observations.
+  std::map<int64_t, int> baseline_;
+  uint64_t next_command_id_ = kFirstCommandId;
+  int recoveries_ = 0;
+  int failures_ = 0;
+  std::string trigger_;
+};
+
+}  // namespace semnav::reasoning

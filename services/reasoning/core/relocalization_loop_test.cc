@@ -1,0 +1,207 @@
+#include "services/reasoning/core/relocalization_loop.h"
+
+#include <cmath>
+
+#include "absl/strings/match.h"
+#include "gtest/gtest.h"
+
+namespace semnav::reasoning {
+namespace {
+
+using Kind = RelocalizationAction::Kind;
+
+std::vector<Kind> Kinds(const std::vector<RelocalizationAction>& actions) {
+  std::vector<Kind> kinds;
+  for (const RelocalizationAction& action : actions) kinds.push_back(action.kind);
+  return kinds;
+}
+
+SceneObject Object(int64_t id, double x, double y, int detections) {
+  SceneObject object;
+  object.id = id;
+  object.label = "chair";
+  object.position = Eigen::Vector3d(x, y, 0.4);
+  object.detection_count = detections;
+  object.embedding = {1.0f, 0.0f};
+  return object;
+}
+
+RobotPose Pose(double x, double y, double yaw = 0.0) { return RobotPose{Eigen::Vector3d(x, y, 0.0), yaw}; }
+
+RelocalizationLoopConfig Config() {
+  RelocalizationLoopConfig config;
+  config.look_around_duration_s = 12.0;
+  config.answer_timeout_s = 5.0;
+  config.min_observed_objects = 3;
+  config.max_attempts = 2;
+  return config;
+}
+
+// Before the loss the map has objects 1 and 2; the look-around finds 3, 4, 5 (new) and sees 1 again.
+SceneGraph Before() { return SceneGraph{1, {Object(1, 1, 0, 4), Object(2, 5, 0, 3)}, {}, {}}; }
+SceneGraph After() {
+  return SceneGraph{2, {Object(1, 1, 0, 6), Object(2, 5, 0, 3), Object(3, 2, 2, 1), Object(4, -1, 3, 2),
+                        Object(5, 0, -2, 1)},
+                    {}, {}};
+}
+
+TEST(PlanarTransformTest, InverseUndoesApply) {
+  const PlanarTransform t{Eigen::Vector3d(2.0, -1.0, 0.0), 0.7};
+  const Eigen::Vector3d p(0.3, 4.0, 1.0);
+  const Eigen::Vector3d back = t.Inverse().Apply(t.Apply(p));
+  EXPECT_NEAR((back - p).norm(), 0.0, 1e-12);
+  // Hand-checked: 90 deg turn then (1, 0) shift maps (1, 0) to (1, 1).
+  const PlanarTransform quarter{Eigen::Vector3d(1.0, 0.0, 0.0), M_PI / 2};
+  EXPECT_NEAR(quarter.Apply(Eigen::Vector3d(1, 0, 0)).x(), 1.0, 1e-12);
+  EXPECT_NEAR(quarter.Apply(Eigen::Vector3d(1, 0, 0)).y(), 1.0, 1e-12);
+  EXPECT_NEAR(quarter.Apply(Pose(0, 0, 0.5)).yaw, 0.5 + M_PI / 2, 1e-12);
+}
+
+TEST(RelocalizationLoopTest, LostReportPausesLooksAroundRelocalizesCorrectsAndResumes) {
+  RelocalizationLoop loop(Config());
+  EXPECT_TRUE(loop.OnState(0.0, Pose(0, 0), LocalizationReport::kOk, Before(), true).empty());
+  // t = 1: the robot reports LOST.
+  std::vector<RelocalizationAction> actions = loop.OnState(1.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kPauseTask, Kind::kCommand}));
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "LOST"));
+  EXPECT_EQ(actions[1].command.kind, CommandKind::kRotate);
+  EXPECT_DOUBLE_EQ(actions[1].command.angular_speed, 0.5);
+  EXPECT_DOUBLE_EQ(actions[1].command.duration_s, 12.0);
+  EXPECT_TRUE(loop.relocalizing());
+  // Still LOST while turning: nothing new until the turn's 12 s are over.
+  EXPECT_TRUE(loop.OnState(7.0, Pose(0, 0, 3.0), LocalizationReport::kLost, After(), true).empty());
+  actions = loop.OnState(13.0, Pose(0, 0, 6.0), LocalizationReport::kLost, After(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kHold);
+  // The three new objects only (object 1 was seen again but is not needed), nearest first.
+  ASSERT_EQ(actions[1].observed.size(), 3u);
+  EXPECT_EQ(actions[1].observed[0].object_id, 5);  // (0, -2): 2.0 m
+  EXPECT_EQ(actions[1].observed[1].object_id, 3);  // (2, 2): 2.83 m
+  EXPECT_EQ(actions[1].observed[2].object_id, 4);  // (-1, 3): 3.16 m
+  EXPECT_DOUBLE_EQ(actions[1].observed[0].scale_m, Config().default_object_scale_m);
+  // The answer: the odometry frame sits 3 m along +x, turned 90 deg, in the map.
+  RelocalizationAnswer answer;
+  answer.map_from_odom = PlanarTransform{Eigen::Vector3d(3.0, 0.0, 0.0), M_PI / 2};
+  answer.reliable = true;
+  answer.inliers = 3;
+  actions = loop.OnAnswer(13.5, answer);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_NEAR(actions[0].map_from_odom.translation.x(), 3.0, 1e-12);
+  EXPECT_FALSE(loop.relocalizing());
+  EXPECT_TRUE(loop.trusted());
+  EXPECT_EQ(loop.recoveries(), 1);
+  // The robot's localizer takes a moment to agree: the same LOST report does not restart at once.
+  EXPECT_TRUE(loop.OnState(14.0, Pose(0, 0), LocalizationReport::kLost, After(), true).empty());
+  EXPECT_TRUE(loop.OnState(15.0, Pose(0, 0), LocalizationReport::kOk, After(), true).empty());
+}
+
+TEST(RelocalizationLoopTest, ObservedObjectsAreInTheOdometryFrameOfTheCurrentCorrection) {
+  RelocalizationLoop loop(Config());
+  loop.OnRequest(0.0, "", Before());
+  RelocalizationAnswer answer;
+  answer.map_from_odom = PlanarTransform{Eigen::Vector3d(10.0, 0.0, 0.0), 0.0};
+  answer.reliable = true;
+  loop.OnState(12.0, Pose(0, 0), LocalizationReport::kOk, After(), false);
+  loop.OnAnswer(12.1, answer);
+  // A second request: objects the mapping graph has at map x = 12 are at odometry x = 2.
+  SceneGraph before{3, {}, {}, {}};
+  loop.OnRequest(20.0, "check", before);
+  SceneGraph after{4, {Object(7, 12, 0, 1), Object(8, 11, 1, 1), Object(9, 10, -1, 1)}, {}, {}};
+  std::vector<RelocalizationAction> actions = loop.OnState(32.0, Pose(0, 0), LocalizationReport::kOk, after, false);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
+  EXPECT_NEAR(actions[1].observed[2].position.x(), 2.0, 1e-12);  // object 7, farthest
+  EXPECT_NEAR(actions[1].observed[0].position.x(), 0.0, 1e-12);  // object 9
+}
+
+TEST(RelocalizationLoopTest, PoseJumpBeyondTopSpeedTriggersButFastMotionWithinItDoesNot) {
+  RelocalizationLoop loop(Config());
+  loop.SetLimits(1.0, 1.0);
+  EXPECT_TRUE(loop.OnState(0.0, Pose(0, 0), LocalizationReport::kOk, Before(), true).empty());
+  // 1.4 m in 0.5 s: top speed allows 0.5 m + 1.0 m jump margin.
+  EXPECT_TRUE(loop.OnState(0.5, Pose(1.4, 0), LocalizationReport::kOk, Before(), true).empty());
+  // 1.6 m in 0.5 s: beyond.
+  std::vector<RelocalizationAction> actions = loop.OnState(1.0, Pose(3.0, 0), LocalizationReport::kOk, Before(), true);
+  ASSERT_FALSE(actions.empty());
+  EXPECT_EQ(actions[0].kind, Kind::kPauseTask);
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "jumped"));
+}
+
+TEST(RelocalizationLoopTest, YawJumpTriggersAndANewSessionIsNoJump) {
+  RelocalizationLoop loop(Config());
+  loop.SetLimits(1.0, 1.0);
+  loop.OnState(0.0, Pose(0, 0, 0.0), LocalizationReport::kOk, Before(), false);
+  loop.OnSessionOpened();
+  EXPECT_TRUE(loop.OnState(0.1, Pose(20, 0, 3.0), LocalizationReport::kOk, Before(), false).empty());
+  // 0.1 s: 0.1 rad allowed + 0.6 rad margin; 1.0 rad is a jump.
+  EXPECT_FALSE(loop.OnState(0.2, Pose(20, 0, 2.0), LocalizationReport::kOk, Before(), false).empty());
+}
+
+TEST(RelocalizationLoopTest, TooFewObjectsRetriesThenFailsTheTaskAndLeavesThePoseUntrusted) {
+  RelocalizationLoop loop(Config());
+  loop.OnState(0.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), true);
+  // The first turn saw nothing new: a second look-around.
+  std::vector<RelocalizationAction> actions = loop.OnState(12.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kRotate);
+  EXPECT_TRUE(absl::StrContains(actions[0].command.reason, "attempt 2"));
+  actions = loop.OnState(24.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kFailTask}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kStop);
+  EXPECT_TRUE(absl::StrContains(actions[1].message, "saw 0 objects, 3 needed"));
+  EXPECT_TRUE(absl::StrContains(actions[1].message, "UNCERTAIN"));
+  EXPECT_FALSE(loop.trusted());
+  EXPECT_EQ(loop.failures(), 1);
+  // Idle on an untrusted pose: nothing; a new task on it relocalizes first.
+  EXPECT_TRUE(loop.OnState(25.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), false).empty());
+  actions = loop.OnState(26.0, Pose(0, 0), LocalizationReport::kOk, Before(), true);
+  ASSERT_FALSE(actions.empty());
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "untrusted"));
+}
+
+TEST(RelocalizationLoopTest, UnreliableAnswerRetriesAndATimeoutFailsInTheRobotsClock) {
+  RelocalizationLoop loop(Config());
+  loop.OnRequest(0.0, "drifted", Before());
+  ASSERT_EQ(Kinds(loop.OnState(12.0, Pose(0, 0), LocalizationReport::kOk, After(), true)),
+            (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
+  RelocalizationAnswer unreliable;
+  unreliable.reliable = false;
+  unreliable.inliers = 2;
+  std::vector<RelocalizationAction> actions = loop.OnAnswer(12.2, unreliable);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kRotate);
+  // The second turn sees the first turn's objects once more: they count (the baseline stayed).
+  actions = loop.OnState(24.2, Pose(0, 0), LocalizationReport::kOk, After(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
+  // No answer within 5 s of the robot's clock: the task fails; a late answer changes nothing.
+  EXPECT_TRUE(loop.OnState(29.0, Pose(0, 0), LocalizationReport::kOk, After(), true).empty());
+  actions = loop.OnState(29.3, Pose(0, 0), LocalizationReport::kOk, After(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kFailTask}));
+  EXPECT_TRUE(absl::StrContains(actions[1].message, "did not answer within 5.0 s"));
+  RelocalizationAnswer late;
+  late.reliable = true;
+  EXPECT_TRUE(loop.OnAnswer(30.0, late).empty());
+  EXPECT_EQ(loop.recoveries(), 0);
+}
+
+TEST(RelocalizationLoopTest, OperatorRequestWhileRelocalizingChangesNothing) {
+  RelocalizationLoop loop(Config());
+  ASSERT_FALSE(loop.OnRequest(0.0, "", Before()).empty());
+  EXPECT_EQ(loop.trigger(), "operator request");
+  EXPECT_TRUE(loop.OnRequest(1.0, "again", Before()).empty());
+  EXPECT_EQ(loop.trigger(), "operator request");
+}
+
+TEST(RelocalizationLoopTest, ServiceErrorIsARetryThenTheTaskFailsNamingIt) {
+  RelocalizationLoopConfig config = Config();
+  config.max_attempts = 1;
+  RelocalizationLoop loop(config);
+  loop.OnState(0.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  loop.OnState(12.0, Pose(0, 0), LocalizationReport::kLost, After(), true);
+  std::vector<RelocalizationAction> actions =
+      loop.OnAnswer(12.1, absl::NotFoundError("too few landmarks in map 'kitchen'"));
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kFailTask}));
+  EXPECT_TRUE(absl::StrContains(actions[1].message, "too few landmarks in map 'kitchen'"));
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
