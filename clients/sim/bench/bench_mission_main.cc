@@ -232,6 +232,7 @@ int main(int argc, char** argv) {
     if (flags.contains("--model-config")) options.model_proxy_config = flags["--model-config"];
     options.task_time_budget_s = max_steps * loop::EpisodeSpec{}.step_s;
     options.relocalization = pose_loss;
+    options.mapping_landmarks = flags["--landmarks"] == "mapping";
     if (sim_model) {
       frame_logs[w].push_back(std::make_unique<sim::vlm::FrameLog>());
       auto model = sim::vlm::SimVlm::Create(plan.front().world, frame_logs[w].back().get(), sim::vlm::SimVlmConfig());

@@ -27,6 +27,9 @@ struct SimStackOptions {
   // Run semnav-relocalization and the gateway's relocalization loop (gateway.relocalization;
   // the drift and kidnapped groups of the mission bench).
   bool relocalization = false;
+  // With relocalization: mapping fills the landmark map the gateway relocalizes in ("live",
+  // pushed every 0.05 s of wall time) instead of the episode's oracle map under the robot's id.
+  bool mapping_landmarks = false;
 };
 
 class SimStack {

@@ -89,12 +89,16 @@ void LandmarkPublisher::Run() {
       mu_.Lock();
       continue;
     }
+    const bool replaced = scene_replaced_;
     if (scene_replaced_) {
       scene_replaced_ = false;
       landmark_of_object_.clear();
       have_published_ = false;
     }
     mu_.Unlock();
+    // The live map started over (ResetMap, LoadMap): so does its landmark map, or landmarks of
+    // the old scene (another building, for the simulator's next episode) would stay in it.
+    if (replaced) DeleteLiveMap();
     PushLive();
     mu_.Lock();
   }
@@ -151,6 +155,16 @@ void LandmarkPublisher::PushLive() {
     published_revision_ = scene.revision;
     have_published_ = true;
   }
+}
+
+void LandmarkPublisher::DeleteLiveMap() {
+  rv1::DeleteLandmarkMapRequest request;
+  request.set_map_id(config_.live_map_id);
+  rv1::DeleteLandmarkMapResponse response;
+  grpc::ClientContext context;
+  SetDeadline(context, config_.deadline_ms);
+  const grpc::Status status = stub_->DeleteLandmarkMap(&context, request, &response);
+  if (!status.ok() && status.error_code() != grpc::StatusCode::NOT_FOUND) NoteResult(status, config_.live_map_id);
 }
 
 void LandmarkPublisher::PushSnapshot(const Snapshot& snapshot) {

@@ -48,7 +48,7 @@ class LandmarkPublisher {
   // LoadMap). Returns at once.
   void PublishSnapshot(const std::string& map_id, std::vector<relocalization::Landmark> landmarks);
   // The live scene graph was replaced (LoadMap, ResetMap): its instance ids start over, so the
-  // live landmarks are inserted afresh instead of replacing the old instances' landmarks.
+  // live landmark map is deleted and its landmarks are inserted afresh.
   void SceneReplaced();
   void Stop();
 
@@ -61,6 +61,7 @@ class LandmarkPublisher {
                     const LandmarkPublisherConfig& config, std::shared_ptr<grpc::Channel> channel);
   void Run();
   void PushLive();
+  void DeleteLiveMap();  // after the scene was replaced
   void PushSnapshot(const Snapshot& snapshot);
   // Logs a change of reachability once (not every interval).
   void NoteResult(const grpc::Status& status, absl::string_view what);

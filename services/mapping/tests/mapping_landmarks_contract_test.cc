@@ -160,6 +160,32 @@ TEST_F(MappingLandmarksContractTest, LiveSceneGraphFillsTheLandmarkMapWithoutAnO
   EXPECT_EQ(again[0].observations(), 6u);
 }
 
+// Regression (kidnapped episodes with --landmarks mapping): ResetMap left the old scene's
+// landmarks in the live landmark map, so the next building was matched against the last one.
+TEST_F(MappingLandmarksContractTest, ResetMapEmptiesTheLiveLandmarkMap) {
+  ASSERT_NO_FATAL_FAILURE(StartServices());
+  StreamTableFrames(4);
+  ASSERT_EQ(AwaitLandmarks("robot_x").size(), 1u);
+  v1::ResetMapRequest reset;
+  reset.set_request_id("reset-1");
+  v1::ResetMapResponse reset_done;
+  ASSERT_TRUE(Call([&](grpc::ClientContext* c) { return stub_->ResetMap(c, reset, &reset_done); }).ok());
+  bool emptied = false;
+  for (int i = 0; i < 100 && !emptied; ++i) {
+    rv1::GetLandmarkMapRequest request;
+    request.set_map_id("robot_x");
+    grpc::ClientContext context;
+    auto reader = reloc_stub_->GetLandmarkMap(&context, request);
+    rv1::GetLandmarkMapResponse page;
+    int count = 0;
+    while (reader->Read(&page)) count += page.landmarks_size();
+    const grpc::Status status = reader->Finish();
+    emptied = status.error_code() == grpc::StatusCode::NOT_FOUND || (status.ok() && count == 0);
+    if (!emptied) absl::SleepFor(absl::Milliseconds(50));
+  }
+  EXPECT_TRUE(emptied);
+}
+
 TEST_F(MappingLandmarksContractTest, UnstableInstancesAreNoLandmarks) {
   ASSERT_NO_FATAL_FAILURE(StartServices());
   StreamTableFrames(2);  // seen twice: below min_detections
