@@ -8,6 +8,8 @@ packages=(
   g++ cmake ninja-build ccache pkg-config git
   # the fuzz preset's compiler and libFuzzer (tests/fuzz, docs/dev/fuzzing.md)
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
+  # the format check (tests/format/check_format.sh)
+  clang-format-14
   # contracts and transport
   libgrpc++-dev protobuf-compiler-grpc libprotobuf-dev protobuf-compiler grpc-proto libabsl-dev
   # algorithms

@@ -1,9 +1,9 @@
 // Unary calls with the invocation's deadline, and the plumbing every command shares.
 #pragma once
 
-#include <iostream>
-
 #include <grpcpp/client_context.h>
+
+#include <iostream>
 
 #include "clients/cli/core/exit_codes.h"
 #include "clients/cli/invocation.h"
@@ -14,7 +14,8 @@ namespace semnav::cli {
 
 template <typename Stub, typename Request, typename Response>
 absl::Status CallUnary(const Invocation& invocation, Stub& stub,
-                       grpc::Status (Stub::*method)(grpc::ClientContext*, const Request&, Response*),
+                       grpc::Status (Stub::*method)(grpc::ClientContext*, const Request&,
+                                                    Response*),
                        const Request& request, Response* response) {
   grpc::ClientContext context;
   invocation.SetDeadline(context, kDefaultUnaryDeadline);
@@ -35,11 +36,13 @@ int WithStub(const Invocation& invocation, Service service, Body body) {
 // as the text describe(response) returns.
 template <typename GrpcService, typename Request, typename Response, typename Describe>
 int RunUnary(const Invocation& invocation, Service service,
-             grpc::Status (GrpcService::Stub::*method)(grpc::ClientContext*, const Request&, Response*),
+             grpc::Status (GrpcService::Stub::*method)(grpc::ClientContext*, const Request&,
+                                                       Response*),
              const Request& request, Describe describe) {
   return WithStub<GrpcService>(invocation, service, [&](typename GrpcService::Stub& stub) {
     Response response;
-    if (absl::Status status = CallUnary(invocation, stub, method, request, &response); !status.ok()) {
+    if (absl::Status status = CallUnary(invocation, stub, method, request, &response);
+        !status.ok()) {
       return Fail(status);
     }
     if (invocation.json()) {

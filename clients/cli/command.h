@@ -18,11 +18,12 @@ struct Command {
   Service service;      // the service --addr names
   std::vector<FlagSpec> flags;
   std::function<int(const Invocation&)> run;  // returns the exit code
-  std::size_t positional_count = 0;           // exact number of positional arguments (instruction: >= 1)
-  bool variadic = false;                      // positional_count is a minimum
+  std::size_t positional_count = 0;  // exact number of positional arguments (instruction: >= 1)
+  bool variadic = false;             // positional_count is a minimum
 };
 
-inline const FlagSpec kRequestIdFlag = {"request-id", "ID", "idempotency key (default: a fresh random id)"};
+inline const FlagSpec kRequestIdFlag = {"request-id", "ID",
+                                        "idempotency key (default: a fresh random id)"};
 
 // The command groups, each in its own file.
 std::vector<Command> TaskCommands();

@@ -16,10 +16,11 @@ namespace {
 namespace api = ::semnav::reasoning::v1;
 
 std::string EventLine(const api::Event& event) {
-  const absl::Time time = absl::FromUnixNanos(event.time().seconds() * 1000000000 + event.time().nanos());
-  std::string line = absl::StrCat(event.event_id(), "  ",
-                                  absl::FormatTime("%Y-%m-%dT%H:%M:%E3SZ", time, absl::UTCTimeZone()), "  ",
-                                  ShortEnumName(api::EventKind_Name(event.kind()), "EVENT_KIND_"));
+  const absl::Time time =
+      absl::FromUnixNanos(event.time().seconds() * 1000000000 + event.time().nanos());
+  std::string line = absl::StrCat(
+      event.event_id(), "  ", absl::FormatTime("%Y-%m-%dT%H:%M:%E3SZ", time, absl::UTCTimeZone()),
+      "  ", ShortEnumName(api::EventKind_Name(event.kind()), "EVENT_KIND_"));
   if (!event.robot_id().empty()) absl::StrAppend(&line, "  robot=", event.robot_id());
   if (!event.task_id().empty()) absl::StrAppend(&line, "  task=", event.task_id());
   absl::StrAppend(&line, "  ", event.message());
@@ -40,41 +41,48 @@ int Watch(const Invocation& invocation) {
     if (!parsed.ok()) return UsageError(std::string(parsed.status().message()));
     count = *parsed;
   }
-  return WithStub<api::OperatorService>(invocation, Service::kGateway, [&](api::OperatorService::Stub& stub) {
-    grpc::ClientContext context;
-    invocation.SetDeadline(context, std::nullopt);
-    InterruptScope interrupt(&context);
-    auto reader = stub.StreamEvents(&context, request);
-    int64_t seen = 0;
-    for (api::StreamEventsResponse response; (count == 0 || seen < count) && reader->Read(&response); ++seen) {
-      if (invocation.json()) {
-        PrintJson(response);
-        continue;
-      }
-      if (response.replay_truncated()) std::cout << "(events before " << response.event().event_id() << " dropped)\n";
-      std::cout << EventLine(response.event()) << std::endl;
-    }
-    if (count > 0 && seen == count) {
-      context.TryCancel();
-      reader->Finish();
-      return ToInt(ExitCode::kOk);
-    }
-    const grpc::Status finished = reader->Finish();
-    if (interrupt.interrupted() || finished.ok()) return ToInt(ExitCode::kOk);
-    return Fail(FromGrpcStatus(finished));
-  });
+  return WithStub<api::OperatorService>(
+      invocation, Service::kGateway, [&](api::OperatorService::Stub& stub) {
+        grpc::ClientContext context;
+        invocation.SetDeadline(context, std::nullopt);
+        InterruptScope interrupt(&context);
+        auto reader = stub.StreamEvents(&context, request);
+        int64_t seen = 0;
+        for (api::StreamEventsResponse response;
+             (count == 0 || seen < count) && reader->Read(&response); ++seen) {
+          if (invocation.json()) {
+            PrintJson(response);
+            continue;
+          }
+          if (response.replay_truncated())
+            std::cout << "(events before " << response.event().event_id() << " dropped)\n";
+          std::cout << EventLine(response.event()) << std::endl;
+        }
+        if (count > 0 && seen == count) {
+          context.TryCancel();
+          reader->Finish();
+          return ToInt(ExitCode::kOk);
+        }
+        const grpc::Status finished = reader->Finish();
+        if (interrupt.interrupted() || finished.ok()) return ToInt(ExitCode::kOk);
+        return Fail(FromGrpcStatus(finished));
+      });
 }
 
 }  // namespace
 
 std::vector<Command> EventCommands() {
   return {
-      {"events", "watch", "", "the event log: events after --since, then live ones (Ctrl-C stops)",
+      {"events",
+       "watch",
+       "",
+       "the event log: events after --since, then live ones (Ctrl-C stops)",
        Service::kGateway,
        {{"robot", "ROBOT_ID", "only this robot's events"},
         {"since", "EVENT_ID", "replay retained events after this id (default 0: only live events)"},
         {"count", "N", "stop after N events"}},
-       Watch, 0},
+       Watch,
+       0},
   };
 }
 

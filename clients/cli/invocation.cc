@@ -31,27 +31,33 @@ const ServiceInfo& InfoOf(Service service) {
 
 const std::vector<FlagSpec>& ConnectionFlags() {
   static const std::vector<FlagSpec> flags = [] {
-    std::vector<FlagSpec> specs = {{"addr", "HOST:PORT", "address of the service this command talks to"}};
+    std::vector<FlagSpec> specs = {
+        {"addr", "HOST:PORT", "address of the service this command talks to"}};
     for (const ServiceInfo& info : AllServices()) {
-      specs.push_back({info.address_flag, "HOST:PORT", absl::StrCat(info.name, " address (", info.default_address, ")")});
+      specs.push_back({info.address_flag, "HOST:PORT",
+                       absl::StrCat(info.name, " address (", info.default_address, ")")});
     }
-    specs.insert(specs.end(), {
-        {"tls-ca", "FILE", "PEM CA to verify the servers (enables TLS)"},
-        {"tls-cert", "FILE", "PEM client certificate for mTLS (with --tls-key)"},
-        {"tls-key", "FILE", "PEM client key for mTLS"},
-        {"tls-server-name", "NAME", "expected server name when addresses are IPs"},
-        {"token-file", "FILE", "bearer token from a 0600 file"},
-        {"token-env", "VAR", "bearer token from an environment variable (default SEMNAV_TOKEN when set)"},
-        {"deadline", "SECONDS", "give up after this long (unary calls default 10 s; streams wait)"},
-        {"json", "", "machine-readable JSON output (one object per line for streams)"},
-    });
+    specs.insert(specs.end(),
+                 {
+                     {"tls-ca", "FILE", "PEM CA to verify the servers (enables TLS)"},
+                     {"tls-cert", "FILE", "PEM client certificate for mTLS (with --tls-key)"},
+                     {"tls-key", "FILE", "PEM client key for mTLS"},
+                     {"tls-server-name", "NAME", "expected server name when addresses are IPs"},
+                     {"token-file", "FILE", "bearer token from a 0600 file"},
+                     {"token-env", "VAR",
+                      "bearer token from an environment variable (default SEMNAV_TOKEN when set)"},
+                     {"deadline", "SECONDS",
+                      "give up after this long (unary calls default 10 s; streams wait)"},
+                     {"json", "", "machine-readable JSON output (one object per line for streams)"},
+                 });
     return specs;
   }();
   return flags;
 }
 
 absl::StatusOr<Invocation> Invocation::Parse(int argc, char** argv, int first,
-                                             const std::vector<FlagSpec>& command_flags, Service primary) {
+                                             const std::vector<FlagSpec>& command_flags,
+                                             Service primary) {
   std::vector<FlagSpec> specs = command_flags;
   specs.insert(specs.end(), ConnectionFlags().begin(), ConnectionFlags().end());
   absl::StatusOr<ParsedFlags> flags = ParseFlags(argc, argv, first, specs);
@@ -67,7 +73,8 @@ absl::StatusOr<Invocation> Invocation::Parse(int argc, char** argv, int first,
   if (invocation.Has("tls-cert") != invocation.Has("tls-key")) {
     return absl::InvalidArgumentError("--tls-cert and --tls-key must be given together");
   }
-  if ((invocation.Has("tls-cert") || invocation.Has("tls-server-name")) && !invocation.Has("tls-ca")) {
+  if ((invocation.Has("tls-cert") || invocation.Has("tls-server-name")) &&
+      !invocation.Has("tls-ca")) {
     return absl::InvalidArgumentError("--tls-cert and --tls-server-name need --tls-ca");
   }
   return invocation;
@@ -92,15 +99,18 @@ absl::StatusOr<std::shared_ptr<grpc::Channel>> Invocation::Channel(Service servi
   options.server_name = Flag("tls-server-name");
   options.token_file = Flag("token-file");
   options.token_env = Flag("token-env");
-  if (options.token_file.empty() && options.token_env.empty() && std::getenv("SEMNAV_TOKEN") != nullptr) {
+  if (options.token_file.empty() && options.token_env.empty() &&
+      std::getenv("SEMNAV_TOKEN") != nullptr) {
     options.token_env = "SEMNAV_TOKEN";
   }
   return MakeChannel(options);
 }
 
-void Invocation::SetDeadline(grpc::ClientContext& context, std::optional<absl::Duration> fallback) const {
+void Invocation::SetDeadline(grpc::ClientContext& context,
+                             std::optional<absl::Duration> fallback) const {
   const std::optional<absl::Duration> deadline = deadline_ ? deadline_ : fallback;
-  if (deadline) context.set_deadline(std::chrono::system_clock::now() + absl::ToChronoNanoseconds(*deadline));
+  if (deadline)
+    context.set_deadline(std::chrono::system_clock::now() + absl::ToChronoNanoseconds(*deadline));
 }
 
 std::string Invocation::RequestId() const {

@@ -2,13 +2,13 @@
 // call deadline and the output format, shared by every command.
 #pragma once
 
+#include <grpcpp/channel.h>
+#include <grpcpp/client_context.h>
+
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <grpcpp/channel.h>
-#include <grpcpp/client_context.h>
 
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
@@ -35,7 +35,8 @@ class Invocation {
   // Parses argv[first..) against `command_flags` plus ConnectionFlags(). `primary` is the service
   // that --addr names.
   static absl::StatusOr<Invocation> Parse(int argc, char** argv, int first,
-                                          const std::vector<FlagSpec>& command_flags, Service primary);
+                                          const std::vector<FlagSpec>& command_flags,
+                                          Service primary);
 
   const ParsedFlags& flags() const { return flags_; }
   const std::vector<std::string>& positional() const { return flags_.positional; }

@@ -13,8 +13,8 @@ namespace {
 
 std::vector<Command> AllCommands() {
   std::vector<Command> all;
-  for (auto group : {TaskCommands, LeaseCommands, EventCommands, SceneCommands, MapCommands, PlanCommands,
-                     RelocalizationCommands, RobotCommands, HealthCommands}) {
+  for (auto group : {TaskCommands, LeaseCommands, EventCommands, SceneCommands, MapCommands,
+                     PlanCommands, RelocalizationCommands, RobotCommands, HealthCommands}) {
     for (Command& command : group()) all.push_back(std::move(command));
   }
   return all;
@@ -25,10 +25,13 @@ std::string Name(const Command& command) {
 }
 
 std::string Usage(const std::vector<Command>& commands) {
-  std::string out = "Usage: semnavctl <group> <verb> [ARGS] [flags]   (semnavctl <group> <verb> --help for details)\n\n";
+  std::string out =
+      "Usage: semnavctl <group> <verb> [ARGS] [flags]   (semnavctl <group> <verb> --help for "
+      "details)\n\n";
   absl::StrAppend(&out, "Commands:\n");
   for (const Command& command : commands) {
-    std::string left = absl::StrCat("  ", Name(command), command.args.empty() ? "" : " ", command.args);
+    std::string left =
+        absl::StrCat("  ", Name(command), command.args.empty() ? "" : " ", command.args);
     if (left.size() < 34) left.resize(34, ' ');
     absl::StrAppend(&out, left, " ", command.summary, "\n");
   }
@@ -39,11 +42,13 @@ std::string Usage(const std::vector<Command>& commands) {
 }
 
 std::string CommandHelp(const Command& command) {
-  std::string out = absl::StrCat("Usage: semnavctl ", Name(command), command.args.empty() ? "" : " ", command.args,
-                                 " [flags]\n\n", command.summary, "\n");
+  std::string out =
+      absl::StrCat("Usage: semnavctl ", Name(command), command.args.empty() ? "" : " ",
+                   command.args, " [flags]\n\n", command.summary, "\n");
   if (!command.flags.empty()) absl::StrAppend(&out, "\nFlags:\n", FlagsHelp(command.flags));
-  absl::StrAppend(&out, "\nConnection and output flags (", InfoOf(command.service).name, " is the --addr service):\n",
-                  FlagsHelp(ConnectionFlags()), "\nExit codes:\n", ExitCodeHelp());
+  absl::StrAppend(&out, "\nConnection and output flags (", InfoOf(command.service).name,
+                  " is the --addr service):\n", FlagsHelp(ConnectionFlags()), "\nExit codes:\n",
+                  ExitCodeHelp());
   return out;
 }
 
@@ -62,7 +67,8 @@ int Main(int argc, char** argv) {
     if (command.group == group && (command.verb.empty() || command.verb == verb)) found = &command;
   }
   if (found == nullptr) {
-    std::cerr << "semnavctl: unknown command '" << group << (verb.empty() ? "" : " ") << verb << "'\n\n"
+    std::cerr << "semnavctl: unknown command '" << group << (verb.empty() ? "" : " ") << verb
+              << "'\n\n"
               << Usage(commands);
     return ToInt(ExitCode::kUsage);
   }
@@ -77,7 +83,8 @@ int Main(int argc, char** argv) {
     std::cerr << "\n" << CommandHelp(*found);
     return code;
   };
-  absl::StatusOr<Invocation> invocation = Invocation::Parse(argc, argv, first, found->flags, found->service);
+  absl::StatusOr<Invocation> invocation =
+      Invocation::Parse(argc, argv, first, found->flags, found->service);
   if (!invocation.ok()) return usage_error(std::string(invocation.status().message()));
   const std::size_t given = invocation->positional().size();
   if (given < found->positional_count || (!found->variadic && given > found->positional_count)) {

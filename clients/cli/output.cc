@@ -1,10 +1,10 @@
 #include "clients/cli/output.h"
 
+#include <google/protobuf/util/json_util.h>
+
 #include <fstream>
 #include <iostream>
 #include <sstream>
-
-#include <google/protobuf/util/json_util.h>
 
 #include "absl/strings/str_cat.h"
 #include "clients/cli/core/exit_codes.h"
@@ -22,12 +22,15 @@ std::string ToJson(const google::protobuf::Message& message) {
   return json;
 }
 
-void PrintJson(const google::protobuf::Message& message) { std::cout << ToJson(message) << std::endl; }
+void PrintJson(const google::protobuf::Message& message) {
+  std::cout << ToJson(message) << std::endl;
+}
 
 int Fail(const absl::Status& status) {
   std::cerr << "semnavctl: " << absl::StatusCodeToString(status.code()) << ": " << status.message();
   std::optional<common::v1::ErrorInfo> info = GetDetail<common::v1::ErrorInfo>(status);
-  if (info && !info->reason().empty() && info->reason() != absl::StatusCodeToString(status.code())) {
+  if (info && !info->reason().empty() &&
+      info->reason() != absl::StatusCodeToString(status.code())) {
     std::cerr << " [" << info->reason() << "]";
   }
   std::cerr << std::endl;
@@ -40,16 +43,19 @@ int UsageError(const std::string& message) {
   return ToInt(ExitCode::kUsage);
 }
 
-absl::Status ReadJsonFile(const std::string& flag, const std::string& path, google::protobuf::Message* message) {
+absl::Status ReadJsonFile(const std::string& flag, const std::string& path,
+                          google::protobuf::Message* message) {
   std::ifstream in(path);
-  if (!in) return absl::InvalidArgumentError(absl::StrCat("--", flag, ": cannot read '", path, "'"));
+  if (!in)
+    return absl::InvalidArgumentError(absl::StrCat("--", flag, ": cannot read '", path, "'"));
   std::stringstream content;
   content << in.rdbuf();
   google::protobuf::util::JsonParseOptions options;
   auto parsed = google::protobuf::util::JsonStringToMessage(content.str(), message, options);
   if (!parsed.ok()) {
-    return absl::InvalidArgumentError(absl::StrCat("--", flag, ": '", path, "' is not a ", message->GetTypeName(),
-                                                    " in JSON: ", parsed.message().ToString()));
+    return absl::InvalidArgumentError(absl::StrCat("--", flag, ": '", path, "' is not a ",
+                                                   message->GetTypeName(),
+                                                   " in JSON: ", parsed.message().ToString()));
   }
   return absl::OkStatus();
 }

@@ -2,9 +2,9 @@
 // stderr, and the exit code of a status.
 #pragma once
 
-#include <string>
-
 #include <google/protobuf/message.h>
+
+#include <string>
 
 #include "absl/status/status.h"
 
@@ -14,12 +14,14 @@ namespace semnav::cli {
 std::string ToJson(const google::protobuf::Message& message);
 void PrintJson(const google::protobuf::Message& message);
 
-// Prints "semnavctl: CODE: message [ErrorInfo reason]" to stderr and returns the exit code for the status.
+// Prints "semnavctl: CODE: message [ErrorInfo reason]" to stderr and returns the exit code for the
+// status.
 int Fail(const absl::Status& status);
 // Prints "semnavctl: message" to stderr and returns the usage exit code.
 int UsageError(const std::string& message);
 
 // Reads a file whose content is the JSON form of `message` (unknown fields are errors).
-absl::Status ReadJsonFile(const std::string& flag, const std::string& path, google::protobuf::Message* message);
+absl::Status ReadJsonFile(const std::string& flag, const std::string& path,
+                          google::protobuf::Message* message);
 
 }  // namespace semnav::cli

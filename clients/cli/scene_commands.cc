@@ -16,17 +16,19 @@ namespace api = ::semnav::mapping::v1;
 std::string Metres(double value) { return FormatFixed(value, 2); }
 
 std::string RenderGraph(const api::SceneGraph& graph) {
-  std::string out = absl::StrCat("scene graph revision ", graph.revision(), ": ", graph.objects_size(), " objects, ",
-                                 graph.relations_size(), " relations, ", graph.regions_size(), " regions\n");
+  std::string out = absl::StrCat("scene graph revision ", graph.revision(), ": ",
+                                 graph.objects_size(), " objects, ", graph.relations_size(),
+                                 " relations, ", graph.regions_size(), " regions\n");
   if (!graph.summary().empty()) absl::StrAppend(&out, graph.summary(), "\n");
   std::map<uint64_t, std::string> labels;
-  Table objects({"ID", "LABEL", "X", "Y", "Z", "SIZE_X", "SIZE_Y", "SIZE_Z", "SCORE", "SEEN", "REGION"});
+  Table objects(
+      {"ID", "LABEL", "X", "Y", "Z", "SIZE_X", "SIZE_Y", "SIZE_Z", "SCORE", "SEEN", "REGION"});
   for (const api::SceneObject& object : graph.objects()) {
     labels[object.id()] = object.label();
     objects.AddRow({std::to_string(object.id()), object.label(), Metres(object.position().x()),
-                    Metres(object.position().y()), Metres(object.position().z()), Metres(object.size().x()),
-                    Metres(object.size().y()), Metres(object.size().z()), FormatFixed(object.score(), 2),
-                    std::to_string(object.observation_count()),
+                    Metres(object.position().y()), Metres(object.position().z()),
+                    Metres(object.size().x()), Metres(object.size().y()), Metres(object.size().z()),
+                    FormatFixed(object.score(), 2), std::to_string(object.observation_count()),
                     object.region_id() < 0 ? "" : std::to_string(object.region_id())});
   }
   if (!objects.empty()) absl::StrAppend(&out, "\n", objects.Render());
@@ -48,16 +50,23 @@ std::string RenderGraph(const api::SceneGraph& graph) {
 }
 
 int Show(const Invocation& invocation) {
-  return RunUnary<api::MappingService>(invocation, Service::kMapping, &api::MappingService::Stub::GetSceneGraph,
-                                       api::GetSceneGraphRequest(),
-                                       [](const api::GetSceneGraphResponse& r) { return RenderGraph(r.graph()); });
+  return RunUnary<api::MappingService>(
+      invocation, Service::kMapping, &api::MappingService::Stub::GetSceneGraph,
+      api::GetSceneGraphRequest(),
+      [](const api::GetSceneGraphResponse& r) { return RenderGraph(r.graph()); });
 }
 
 }  // namespace
 
 std::vector<Command> SceneCommands() {
   return {
-      {"scene", "show", "", "the scene graph: objects, relations and regions as tables", Service::kMapping, {}, Show,
+      {"scene",
+       "show",
+       "",
+       "the scene graph: objects, relations and regions as tables",
+       Service::kMapping,
+       {},
+       Show,
        0},
   };
 }

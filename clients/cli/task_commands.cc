@@ -17,7 +17,8 @@ namespace {
 using reasoning_api::OperatorService;
 using OperatorStub = OperatorService::Stub;
 
-const FlagSpec kLeaseFlag = {"lease", "LEASE_ID", "lease id, needed when the robot's lease is held"};
+const FlagSpec kLeaseFlag = {"lease", "LEASE_ID",
+                             "lease id, needed when the robot's lease is held"};
 
 // Follows a task's snapshots until it finishes, Ctrl-C or --deadline.
 int FollowTask(const Invocation& invocation, OperatorStub& stub, const std::string& task_id) {
@@ -57,7 +58,8 @@ int Submit(const Invocation& invocation) {
     request.set_lease_id(invocation.Flag("lease"));
     request.set_allow_correction(invocation.Has("correction"));
     reasoning_api::SubmitInstructionResponse response;
-    if (auto s = CallUnary(invocation, stub, &OperatorStub::SubmitInstruction, request, &response); !s.ok()) {
+    if (auto s = CallUnary(invocation, stub, &OperatorStub::SubmitInstruction, request, &response);
+        !s.ok()) {
       return Fail(s);
     }
     if (invocation.Has("no-follow")) {
@@ -69,7 +71,8 @@ int Submit(const Invocation& invocation) {
       }
       return ToInt(ExitCode::kOk);
     }
-    if (!invocation.json()) std::cerr << "following " << response.task_id() << "; Ctrl-C detaches" << std::endl;
+    if (!invocation.json())
+      std::cerr << "following " << response.task_id() << "; Ctrl-C detaches" << std::endl;
     return FollowTask(invocation, stub, response.task_id());
   });
 }
@@ -77,8 +80,9 @@ int Submit(const Invocation& invocation) {
 int Get(const Invocation& invocation) {
   reasoning_api::GetTaskRequest request;
   request.set_task_id(invocation.positional()[0]);
-  return RunUnary<OperatorService>(invocation, Service::kGateway, &OperatorStub::GetTask, request,
-                                   [](const reasoning_api::GetTaskResponse& r) { return DescribeTask(r.task()); });
+  return RunUnary<OperatorService>(
+      invocation, Service::kGateway, &OperatorStub::GetTask, request,
+      [](const reasoning_api::GetTaskResponse& r) { return DescribeTask(r.task()); });
 }
 
 int List(const Invocation& invocation) {
@@ -86,21 +90,23 @@ int List(const Invocation& invocation) {
   request.set_robot_id(invocation.Flag("robot"));
   request.set_unfinished_only(invocation.Has("unfinished"));
   return RunUnary<OperatorService>(
-      invocation, Service::kGateway, &OperatorStub::ListTasks, request, [](const reasoning_api::ListTasksResponse& r) {
+      invocation, Service::kGateway, &OperatorStub::ListTasks, request,
+      [](const reasoning_api::ListTasksResponse& r) {
         Table table({"TASK", "ROBOT", "STATUS", "PROGRESS", "STEP", "INSTRUCTION"});
         for (const reasoning_api::TaskSnapshot& task : r.tasks()) {
           const TaskProgress progress = ToProgress(task);
           table.AddRow({task.task_id(), task.robot_id(), progress.status,
-                        std::to_string(static_cast<int>(task.progress() * 100.0 + 0.5)), progress.step,
-                        task.instruction()});
+                        std::to_string(static_cast<int>(task.progress() * 100.0 + 0.5)),
+                        progress.step, task.instruction()});
         }
         return table.Render();
       });
 }
 
 int Watch(const Invocation& invocation) {
-  return WithStub<OperatorService>(invocation, Service::kGateway,
-                      [&](OperatorStub& stub) { return FollowTask(invocation, stub, invocation.positional()[0]); });
+  return WithStub<OperatorService>(invocation, Service::kGateway, [&](OperatorStub& stub) {
+    return FollowTask(invocation, stub, invocation.positional()[0]);
+  });
 }
 
 // cancel, pause and resume: same request fields, a snapshot back.
@@ -113,9 +119,9 @@ int Control(const Invocation& invocation,
   request.set_task_id(invocation.positional()[0]);
   request.set_lease_id(invocation.Flag("lease"));
   if (extra != nullptr) extra(invocation, request);
-  return RunUnary<OperatorService>(invocation, Service::kGateway, method, request, [](const Response& r) {
-    return FormatProgressLine(ToProgress(r.task())) + "\n";
-  });
+  return RunUnary<OperatorService>(
+      invocation, Service::kGateway, method, request,
+      [](const Response& r) { return FormatProgressLine(ToProgress(r.task())) + "\n"; });
 }
 
 void SetReason(const Invocation& invocation, reasoning_api::CancelTaskRequest& request) {
@@ -126,36 +132,73 @@ void SetReason(const Invocation& invocation, reasoning_api::CancelTaskRequest& r
 
 std::vector<Command> TaskCommands() {
   return {
-      {"task", "submit", "INSTRUCTION...",
-       "submit an instruction and follow the task with a live progress line until it ends (Ctrl-C detaches)",
+      {"task",
+       "submit",
+       "INSTRUCTION...",
+       "submit an instruction and follow the task with a live progress line until it ends (Ctrl-C "
+       "detaches)",
        Service::kGateway,
        {{"robot", "ROBOT_ID", "robot to drive (required)"},
         kLeaseFlag,
-        {"correction", "", "let the text refine the robot's active task when it reads as a correction"},
+        {"correction", "",
+         "let the text refine the robot's active task when it reads as a correction"},
         {"no-follow", "", "print the new task and return at once"},
         kRequestIdFlag},
-       Submit, 1, true},
-      {"task", "get", "TASK_ID", "a task's state, subgoals and resolved target", Service::kGateway, {}, Get, 1},
-      {"task", "list", "", "the gateway's tasks, oldest first", Service::kGateway,
-       {{"robot", "ROBOT_ID", "only this robot's tasks"}, {"unfinished", "", "only PENDING, RUNNING, PAUSED tasks"}},
-       List, 0},
-      {"task", "watch", "TASK_ID", "follow a task with a live progress line until it ends (Ctrl-C detaches)",
-       Service::kGateway, {}, Watch, 1},
-      {"task", "cancel", "TASK_ID", "cancel a task; the robot stops", Service::kGateway,
+       Submit,
+       1,
+       true},
+      {"task",
+       "get",
+       "TASK_ID",
+       "a task's state, subgoals and resolved target",
+       Service::kGateway,
+       {},
+       Get,
+       1},
+      {"task",
+       "list",
+       "",
+       "the gateway's tasks, oldest first",
+       Service::kGateway,
+       {{"robot", "ROBOT_ID", "only this robot's tasks"},
+        {"unfinished", "", "only PENDING, RUNNING, PAUSED tasks"}},
+       List,
+       0},
+      {"task",
+       "watch",
+       "TASK_ID",
+       "follow a task with a live progress line until it ends (Ctrl-C detaches)",
+       Service::kGateway,
+       {},
+       Watch,
+       1},
+      {"task",
+       "cancel",
+       "TASK_ID",
+       "cancel a task; the robot stops",
+       Service::kGateway,
        {kLeaseFlag, {"reason", "TEXT", "why, for the event log"}, kRequestIdFlag},
        [](const Invocation& i) {
          return Control<reasoning_api::CancelTaskRequest, reasoning_api::CancelTaskResponse>(
              i, &OperatorStub::CancelTask, SetReason);
        },
        1},
-      {"task", "pause", "TASK_ID", "pause a running task; the robot holds", Service::kGateway,
+      {"task",
+       "pause",
+       "TASK_ID",
+       "pause a running task; the robot holds",
+       Service::kGateway,
        {kLeaseFlag, kRequestIdFlag},
        [](const Invocation& i) {
          return Control<reasoning_api::PauseTaskRequest, reasoning_api::PauseTaskResponse>(
              i, &OperatorStub::PauseTask, nullptr);
        },
        1},
-      {"task", "resume", "TASK_ID", "resume a paused task from its current subgoal", Service::kGateway,
+      {"task",
+       "resume",
+       "TASK_ID",
+       "resume a paused task from its current subgoal",
+       Service::kGateway,
        {kLeaseFlag, kRequestIdFlag},
        [](const Invocation& i) {
          return Control<reasoning_api::ResumeTaskRequest, reasoning_api::ResumeTaskResponse>(

@@ -11,7 +11,8 @@ std::string StatusName(reasoning_api::TaskStatus status) {
 }
 
 std::string SubgoalLabel(const reasoning_api::Subgoal& subgoal) {
-  std::string label = ShortEnumName(reasoning_api::SubgoalType_Name(subgoal.type()), "SUBGOAL_TYPE_");
+  std::string label =
+      ShortEnumName(reasoning_api::SubgoalType_Name(subgoal.type()), "SUBGOAL_TYPE_");
   const reasoning_api::TargetSpec& target = subgoal.target();
   std::vector<std::string> words(target.colours().begin(), target.colours().end());
   if (!target.name().empty()) words.push_back(target.name());
@@ -38,7 +39,8 @@ TaskProgress ToProgress(const reasoning_api::TaskSnapshot& task) {
 }
 
 bool IsFinished(reasoning_api::TaskStatus status) {
-  return status == reasoning_api::TASK_STATUS_SUCCEEDED || status == reasoning_api::TASK_STATUS_FAILED ||
+  return status == reasoning_api::TASK_STATUS_SUCCEEDED ||
+         status == reasoning_api::TASK_STATUS_FAILED ||
          status == reasoning_api::TASK_STATUS_CANCELLED;
 }
 
@@ -56,22 +58,27 @@ ExitCode ExitCodeForTask(reasoning_api::TaskStatus status) {
 }
 
 std::string DescribeTask(const reasoning_api::TaskSnapshot& task) {
-  std::string out = absl::StrCat(FormatProgressLine(ToProgress(task)), "\n", "robot:        ", task.robot_id(), "\n",
-                                 "instruction:  ", task.instruction(), "\n", "revision:     ", task.revision(),
-                                 "\n", "decomposed:   ", task.decomposition_source(), "\n", "replans:      ",
-                                 task.replans(), ", explore goals ", task.explore_goals(), ", model requests ",
-                                 task.model_requests(), "\n");
+  std::string out = absl::StrCat(
+      FormatProgressLine(ToProgress(task)), "\n", "robot:        ", task.robot_id(), "\n",
+      "instruction:  ", task.instruction(), "\n", "revision:     ", task.revision(), "\n",
+      "decomposed:   ", task.decomposition_source(), "\n", "replans:      ", task.replans(),
+      ", explore goals ", task.explore_goals(), ", model requests ", task.model_requests(), "\n");
   if (task.has_target()) {
     const reasoning_api::ResolvedTarget& target = task.target();
-    absl::StrAppend(&out, "target:       object ", target.object_id(), " '", target.label(), "' at (",
-                    FormatFixed(target.position().x(), 2), ", ", FormatFixed(target.position().y(), 2), ", ",
-                    FormatFixed(target.position().z(), 2), ") confidence ", FormatFixed(target.confidence(), 2), " ",
-                    ShortEnumName(reasoning_api::ResolutionPath_Name(target.path()), "RESOLUTION_PATH_"), "\n");
+    absl::StrAppend(
+        &out, "target:       object ", target.object_id(), " '", target.label(), "' at (",
+        FormatFixed(target.position().x(), 2), ", ", FormatFixed(target.position().y(), 2), ", ",
+        FormatFixed(target.position().z(), 2), ") confidence ", FormatFixed(target.confidence(), 2),
+        " ", ShortEnumName(reasoning_api::ResolutionPath_Name(target.path()), "RESOLUTION_PATH_"),
+        "\n");
   }
   Table subgoals({"#", "STEP", "STATE", "REASON"});
   for (int i = 0; i < task.subgoals_size(); ++i) {
-    const char* state = i < task.current_subgoal() ? "done" : i == task.current_subgoal() ? "active" : "";
-    subgoals.AddRow({std::to_string(i + 1), SubgoalLabel(task.subgoals(i)), state, task.subgoals(i).reason()});
+    const char* state = i < task.current_subgoal()    ? "done"
+                        : i == task.current_subgoal() ? "active"
+                                                      : "";
+    subgoals.AddRow(
+        {std::to_string(i + 1), SubgoalLabel(task.subgoals(i)), state, task.subgoals(i).reason()});
   }
   if (!subgoals.empty()) absl::StrAppend(&out, "\n", subgoals.Render());
   return out;

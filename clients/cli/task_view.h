@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "clients/cli/core/progress_line.h"
 #include "clients/cli/core/exit_codes.h"
+#include "clients/cli/core/progress_line.h"
 #include "semnav/reasoning/v1/task.pb.h"
 
 namespace semnav::cli {

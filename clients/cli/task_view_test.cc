@@ -31,7 +31,8 @@ TEST(TaskViewTest, ProgressShowsTheActiveStepWithItsTarget) {
   EXPECT_EQ(progress.status, "RUNNING");
   EXPECT_EQ(progress.step, "FIND red cup near door");
   EXPECT_EQ(progress.subgoal_count, 4);
-  EXPECT_EQ(FormatProgressLine(progress, 4), "task-7  RUNNING    [#---]   25%  step 2/4 FIND red cup near door  exploring");
+  EXPECT_EQ(FormatProgressLine(progress, 4),
+            "task-7  RUNNING    [#---]   25%  step 2/4 FIND red cup near door  exploring");
 }
 
 TEST(TaskViewTest, FinishedTaskHasNoActiveStep) {
@@ -58,7 +59,8 @@ TEST(TaskViewTest, DescriptionMarksDoneActiveAndTheResolvedTarget) {
   task.mutable_target()->set_confidence(0.875);
   task.mutable_target()->set_path(reasoning_api::RESOLUTION_PATH_FAST);
   const std::string text = DescribeTask(task);
-  EXPECT_NE(text.find("target:       object 12 'cup' at (1.50, 0.00, 0.00) confidence 0.88 FAST"), std::string::npos)
+  EXPECT_NE(text.find("target:       object 12 'cup' at (1.50, 0.00, 0.00) confidence 0.88 FAST"),
+            std::string::npos)
       << text;
   EXPECT_NE(text.find("1  NAVIGATE kitchen        done"), std::string::npos) << text;
   EXPECT_NE(text.find("2  FIND red cup near door  active"), std::string::npos) << text;

@@ -14,7 +14,8 @@
 
 namespace semnav::launcher {
 
-absl::StatusOr<pid_t> SpawnChild(const std::vector<std::string>& argv, const std::string& output_file) {
+absl::StatusOr<pid_t> SpawnChild(const std::vector<std::string>& argv,
+                                 const std::string& output_file) {
   if (argv.empty()) return absl::InvalidArgumentError("argv: empty");
   // Prepared before fork: the child may only call async-signal-safe functions.
   std::vector<std::string> args = argv;
@@ -54,7 +55,8 @@ std::string FindOnPath(const std::string& program) {
 std::string DescribeExit(int wait_status) {
   if (WIFEXITED(wait_status)) return absl::StrCat("exit code ", WEXITSTATUS(wait_status));
   if (WIFSIGNALED(wait_status)) {
-    return absl::StrCat("killed by signal ", WTERMSIG(wait_status), " (", ::strsignal(WTERMSIG(wait_status)), ")");
+    return absl::StrCat("killed by signal ", WTERMSIG(wait_status), " (",
+                        ::strsignal(WTERMSIG(wait_status)), ")");
   }
   return absl::StrCat("wait status ", wait_status);
 }

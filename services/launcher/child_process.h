@@ -13,7 +13,8 @@ namespace semnav::launcher {
 // SIGTERM when the launcher exits, even by SIGKILL, so no service outlives `semnav up`. The
 // child gets its own process group (Ctrl-C reaches only the launcher, which stops children in
 // order) and an empty signal mask. With `output_file`, the child's stdout goes there.
-absl::StatusOr<pid_t> SpawnChild(const std::vector<std::string>& argv, const std::string& output_file = "");
+absl::StatusOr<pid_t> SpawnChild(const std::vector<std::string>& argv,
+                                 const std::string& output_file = "");
 
 // A program found on PATH ("" if none), e.g. FindOnPath("node").
 std::string FindOnPath(const std::string& program);

@@ -1,13 +1,12 @@
 #include "services/launcher/health_probe.h"
 
-#include <iostream>
-
+#include <grpcpp/client_context.h>
 #include <netdb.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <unistd.h>
 
-#include <grpcpp/client_context.h>
+#include <iostream>
 
 #include "absl/strings/match.h"
 #include "absl/strings/numbers.h"
@@ -29,7 +28,8 @@ absl::StatusOr<std::string> ProbeHealth(const ClientOptions& client, const std::
   grpc::health::v1::HealthCheckResponse response;
   grpc::Status status = stub->Check(&context, request, &response);
   // grpc::StatusCode and absl::StatusCode share their numbering.
-  if (!status.ok()) return absl::Status(static_cast<absl::StatusCode>(status.error_code()), status.error_message());
+  if (!status.ok())
+    return absl::Status(static_cast<absl::StatusCode>(status.error_code()), status.error_message());
   return grpc::health::v1::HealthCheckResponse::ServingStatus_Name(response.status());
 }
 
@@ -62,12 +62,15 @@ absl::Status ProbeHttp(const std::string& url, absl::Duration timeout) {
     if (fd >= 0) ::close(fd);
     return absl::UnavailableError("connection refused");
   }
-  const std::string request = absl::StrCat("GET ", path, " HTTP/1.0\r\nHost: ", authority, "\r\n\r\n");
+  const std::string request =
+      absl::StrCat("GET ", path, " HTTP/1.0\r\nHost: ", authority, "\r\n\r\n");
   std::string reply;
-  if (::send(fd, request.data(), request.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(request.size())) {
+  if (::send(fd, request.data(), request.size(), MSG_NOSIGNAL) ==
+      static_cast<ssize_t>(request.size())) {
     char buffer[256];
     ssize_t n;
-    while (reply.size() < 64 && (n = ::recv(fd, buffer, sizeof(buffer), 0)) > 0) reply.append(buffer, static_cast<size_t>(n));
+    while (reply.size() < 64 && (n = ::recv(fd, buffer, sizeof(buffer), 0)) > 0)
+      reply.append(buffer, static_cast<size_t>(n));
   }
   ::close(fd);
   // "HTTP/1.1 200 OK"
@@ -83,7 +86,8 @@ absl::Status ProbeHttp(const std::string& url, absl::Duration timeout) {
 const std::vector<FlagSpec>& ProbeFlags() {
   static const std::vector<FlagSpec> flags = {
       {"addr", "HOST:PORT", "the server to check (required)"},
-      {"service", "NAME", "health service name, e.g. semnav.mapping.v1.MappingService (default: whole server)"},
+      {"service", "NAME",
+       "health service name, e.g. semnav.mapping.v1.MappingService (default: whole server)"},
       {"ca_file", "FILE", "PEM CA that signed the server certificate: TLS on"},
       {"cert_file", "FILE", "PEM client certificate for mTLS (with --key_file)"},
       {"key_file", "FILE", "PEM key of --cert_file"},
@@ -103,7 +107,8 @@ std::string ProbeUsage() {
 int RunProbe(int argc, char** argv, int first) {
   absl::StatusOr<ParsedFlags> flags = ParseFlags(argc, argv, first, ProbeFlags());
   double timeout_s = 3;
-  if (flags.ok() && flags->Has("timeout_s") && !absl::SimpleAtod(*flags->Get("timeout_s"), &timeout_s)) {
+  if (flags.ok() && flags->Has("timeout_s") &&
+      !absl::SimpleAtod(*flags->Get("timeout_s"), &timeout_s)) {
     flags = absl::InvalidArgumentError("--timeout_s: not a number");
   }
   if (flags.ok() && !flags->positional.empty()) {

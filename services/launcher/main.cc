@@ -44,7 +44,6 @@ Without --config the embedded localhost stack (same as deploy/local.yaml) is use
 keys, no network, the offline reasoner.
 )";
 
-
 struct StackCommand {
   StackConfig stack;
   semnav::launcher::RunnerOptions options;
@@ -52,7 +51,8 @@ struct StackCommand {
 
 absl::StatusOr<StackCommand> StackFromFlags(const std::string& command, int argc, char** argv) {
   std::vector<semnav::FlagSpec> specs = {{"config", "FILE", "stack YAML"}};
-  if (command == "up") specs.push_back({"sim-robot", "", "also run a simulated robot in a generated home"});
+  if (command == "up")
+    specs.push_back({"sim-robot", "", "also run a simulated robot in a generated home"});
   absl::StatusOr<semnav::ParsedFlags> flags = semnav::ParseFlags(argc, argv, 2, specs);
   if (!flags.ok()) return flags.status();
   if (!flags->positional.empty()) {
@@ -85,12 +85,13 @@ int Up(const StackConfig& stack, const semnav::launcher::RunnerOptions& options)
   }
   std::cout << "semnav stack is up:\n";
   for (const auto& service : stack.services) {
-    std::cout << "  " << service.name << std::string(16 - std::min<std::size_t>(15, service.name.size()), ' ')
+    std::cout << "  " << service.name
+              << std::string(16 - std::min<std::size_t>(15, service.name.size()), ' ')
               << service.listen << "\n";
   }
   if (options.sim_robot) {
-    std::cout << "  sim-robot       robot id '" << stack.sim_robot.robot_id << "' in a generated home (seed "
-              << stack.sim_robot.world_seed << ")\n";
+    std::cout << "  sim-robot       robot id '" << stack.sim_robot.robot_id
+              << "' in a generated home (seed " << stack.sim_robot.world_seed << ")\n";
   }
   for (const std::string& note : runner.notes()) std::cout << note << "\n";
   if (runner.dashboard_url()) std::cout << "dashboard: " << *runner.dashboard_url() << "\n";
@@ -148,7 +149,8 @@ int main(int argc, char** argv) {
   if (command == "bench") return Bench(argc, argv);
   if (command == "probe") {
     if (argc > 2 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
-      std::cout << "Usage: semnav probe --addr HOST:PORT [flags]\n\nFlags:\n" << semnav::FlagsHelp(semnav::launcher::ProbeFlags());
+      std::cout << "Usage: semnav probe --addr HOST:PORT [flags]\n\nFlags:\n"
+                << semnav::FlagsHelp(semnav::launcher::ProbeFlags());
       return 0;
     }
     return semnav::launcher::RunProbe(argc, argv, 2);

@@ -15,12 +15,14 @@ absl::Status CheckListenAddressFree(const std::string& listen) {
   if (colon == std::string::npos) return absl::OkStatus();
   std::string host = listen.substr(0, colon);
   const std::string port = listen.substr(colon + 1);
-  if (host.size() >= 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
+  if (host.size() >= 2 && host.front() == '[' && host.back() == ']')
+    host = host.substr(1, host.size() - 2);
   addrinfo hints{};
   hints.ai_socktype = SOCK_STREAM;
   hints.ai_flags = AI_PASSIVE;
   addrinfo* found = nullptr;
-  if (::getaddrinfo(host.empty() ? nullptr : host.c_str(), port.c_str(), &hints, &found) != 0) return absl::OkStatus();
+  if (::getaddrinfo(host.empty() ? nullptr : host.c_str(), port.c_str(), &hints, &found) != 0)
+    return absl::OkStatus();
   absl::Status result = absl::OkStatus();
   const int fd = ::socket(found->ai_family, found->ai_socktype, found->ai_protocol);
   if (fd >= 0) {

@@ -7,7 +7,6 @@
 #include <fstream>
 
 #include "absl/strings/str_cat.h"
-
 #include "services/common/config/config_reader.h"
 #include "services/launcher/default_stack.h"
 
@@ -26,7 +25,8 @@ absl::StatusOr<std::string> WriteSettings(const std::string& name, const std::st
   std::ofstream out(path);
   out << yaml << "\n";
   if (error || !out) {
-    return absl::InternalError(absl::StrCat("services.", name, ".settings: cannot write ", path.string()));
+    return absl::InternalError(
+        absl::StrCat("services.", name, ".settings: cannot write ", path.string()));
   }
   return path.string();
 }
@@ -59,13 +59,16 @@ absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem
       .Read("speed", &stack.sim_robot.speed);
   sim_robot.Check(!stack.sim_robot.robot_id.empty(), "robot_id", "must not be empty");
   sim_robot.Check(stack.sim_robot.world_seed >= 0, "world_seed", "must be >= 0");
-  sim_robot.Check(stack.sim_robot.speed > 0 && stack.sim_robot.speed <= 100, "speed", "must be in (0, 100]");
+  sim_robot.Check(stack.sim_robot.speed > 0 && stack.sim_robot.speed <= 100, "speed",
+                  "must be in (0, 100]");
   ConfigReader services = root.Child("services");
   for (const std::string& name : services.Keys()) {
     ConfigReader entry = services.Child(name);
     StackService service{.name = name, .binary = "", .listen = "", .config = ""};
     std::string settings;
-    entry.Read("binary", &service.binary).Read("listen", &service.listen).Read("config", &service.config);
+    entry.Read("binary", &service.binary)
+        .Read("listen", &service.listen)
+        .Read("config", &service.config);
     entry.ReadSubtree("settings", &settings);
     entry.Check(service.config.empty() || settings.empty(), "settings",
                 "give a config file or inline settings, not both");
@@ -97,7 +100,8 @@ std::string StackConfig::AddressOf(const std::string& name) const {
 
 std::optional<StackConfig::ClientEndpoints> StackConfig::ClientEndpointsOf() const {
   ClientEndpoints endpoints{AddressOf("gateway"), AddressOf("mapping"), AddressOf("planning")};
-  if (endpoints.gateway.empty() || endpoints.mapping.empty() || endpoints.planning.empty()) return std::nullopt;
+  if (endpoints.gateway.empty() || endpoints.mapping.empty() || endpoints.planning.empty())
+    return std::nullopt;
   return endpoints;
 }
 

@@ -10,10 +10,10 @@ namespace semnav::launcher {
 
 // One service of the stack as `semnav up` starts it.
 struct StackService {
-  std::string name;     // e.g. "mapping"
-  std::string binary;   // e.g. "semnav-mapping", looked up beside the launcher
-  std::string listen;   // host:port
-  std::string config;   // absolute path of its YAML, or empty for embedded defaults
+  std::string name;    // e.g. "mapping"
+  std::string binary;  // e.g. "semnav-mapping", looked up beside the launcher
+  std::string listen;  // host:port
+  std::string config;  // absolute path of its YAML, or empty for embedded defaults
 };
 
 // How `semnav up` restarts a child that exited by itself: after initial_backoff_s, doubling up

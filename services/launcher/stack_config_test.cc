@@ -1,13 +1,13 @@
 #include "services/launcher/stack_config.h"
 
-#include "services/common/config/config_reader.h"
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
+#include "services/common/config/config_reader.h"
 
 namespace semnav::launcher {
 namespace {
@@ -23,7 +23,8 @@ std::string ReadFile(const std::string& path) {
 }
 
 TEST(StackConfigTest, EmbeddedDefaultIsDeployLocalYaml) {
-  absl::StatusOr<StackConfig> file = LoadStackConfig(std::string(SEMNAV_SOURCE_DIR) + "/deploy/local.yaml");
+  absl::StatusOr<StackConfig> file =
+      LoadStackConfig(std::string(SEMNAV_SOURCE_DIR) + "/deploy/local.yaml");
   ASSERT_TRUE(file.ok()) << file.status();
   StackConfig embedded = DefaultStackConfig();
   ASSERT_EQ(file->services.size(), 5u);

@@ -69,7 +69,8 @@ absl::Status StackRunner::WaitHealthy(Child& child, absl::Time deadline) {
     int status = 0;
     if (::waitpid(child.pid, &status, WNOHANG) == child.pid) {
       child.pid = -1;
-      return absl::UnavailableError(absl::StrCat(child.argv[0], " exited during start-up (", DescribeExit(status), ")"));
+      return absl::UnavailableError(
+          absl::StrCat(child.argv[0], " exited during start-up (", DescribeExit(status), ")"));
     }
     if (absl::Now() > deadline) {
       return absl::DeadlineExceededError(
@@ -81,10 +82,13 @@ absl::Status StackRunner::WaitHealthy(Child& child, absl::Time deadline) {
 
 void StackRunner::AddDashboard() {
   if (!config_.dashboard.enabled) return;
-  const std::string bundle = (std::filesystem::path(bin_dir_).parent_path() / "web" / "semnav-dashboard.js").string();
+  const std::string bundle =
+      (std::filesystem::path(bin_dir_).parent_path() / "web" / "semnav-dashboard.js").string();
   const std::string node = FindOnPath("node");
   if (node.empty()) {
-    notes_.push_back("dashboard: not started: Node.js (`node`) is not on PATH; bash deploy/install-deps.sh installs it");
+    notes_.push_back(
+        "dashboard: not started: Node.js (`node`) is not on PATH; bash deploy/install-deps.sh "
+        "installs it");
     return;
   }
   if (!std::filesystem::exists(bundle)) {
@@ -94,14 +98,18 @@ void StackRunner::AddDashboard() {
   }
   const std::optional<StackConfig::ClientEndpoints> endpoints = config_.ClientEndpointsOf();
   if (!endpoints) {
-    notes_.push_back("dashboard: not started: the stack needs gateway, mapping and planning services");
+    notes_.push_back(
+        "dashboard: not started: the stack needs gateway, mapping and planning services");
     return;
   }
   Child child;
   child.name = "dashboard";
-  child.argv = {node,       bundle,          "--listen",   config_.dashboard.listen,
-                "--gateway", endpoints->gateway, "--mapping", endpoints->mapping,
-                "--planning", endpoints->planning, "--robot-id", config_.dashboard.robot_id};
+  child.argv = {node,         bundle,
+                "--listen",   config_.dashboard.listen,
+                "--gateway",  endpoints->gateway,
+                "--mapping",  endpoints->mapping,
+                "--planning", endpoints->planning,
+                "--robot-id", config_.dashboard.robot_id};
   child.health = Health::kHttp;
   child.health_target = DashboardUrl(config_.dashboard.listen);
   // The proxy prints its bound address as JSON on stdout; the URL line below says it for people.
@@ -142,36 +150,42 @@ absl::Status StackRunner::Start() {
   absl::StatusOr<StackLock> lock = StackLock::Acquire(StackLockPath(config_));
   if (!lock.ok()) {
     return absl::FailedPreconditionError(
-        absl::StrCat(lock.status().message(), "; stop it first, or give this one other ports with --config FILE"));
+        absl::StrCat(lock.status().message(),
+                     "; stop it first, or give this one other ports with --config FILE"));
   }
   lock_.emplace(std::move(*lock));
   for (const StackService& service : config_.services) {
     if (absl::Status free = CheckListenAddressFree(service.listen); !free.ok()) {
-      return absl::FailedPreconditionError(absl::StrCat(service.name, ": ", free.message(),
-                                                        " (another stack or program?); stop it, or choose other "
-                                                        "ports with --config FILE"));
+      return absl::FailedPreconditionError(
+          absl::StrCat(service.name, ": ", free.message(),
+                       " (another stack or program?); stop it, or choose other "
+                       "ports with --config FILE"));
     }
   }
   // The page is optional: a port taken by another program (a web server on 8080) costs the
   // dashboard, not the stack.
   if (config_.dashboard.enabled) {
     if (absl::Status free = CheckListenAddressFree(config_.dashboard.listen); !free.ok()) {
-      notes_.push_back(absl::StrCat("dashboard: not started: ", free.message(),
-                                    "; give it another address (dashboard.listen) with --config FILE"));
+      notes_.push_back(
+          absl::StrCat("dashboard: not started: ", free.message(),
+                       "; give it another address (dashboard.listen) with --config FILE"));
       config_.dashboard.enabled = false;
     }
   }
   if (options_.sim_robot && !config_.ClientEndpointsOf()) {
-    return absl::InvalidArgumentError("--sim-robot needs the stack's gateway, mapping and planning services");
+    return absl::InvalidArgumentError(
+        "--sim-robot needs the stack's gateway, mapping and planning services");
   }
   state_path_ = StackStatePath(config_);
-  work_dir_ = absl::StrCat(state_path_, ".d");  // one per stack: a bench runs several in one process
+  work_dir_ =
+      absl::StrCat(state_path_, ".d");  // one per stack: a bench runs several in one process
   std::filesystem::create_directories(work_dir_);
 
   for (const StackService& service : config_.services) {
     const std::string path = absl::StrCat(bin_dir_, "/", service.binary);
     if (::access(path.c_str(), X_OK) != 0) {
-      return absl::NotFoundError(absl::StrCat("services.", service.name, ".binary: ", path, " not found"));
+      return absl::NotFoundError(
+          absl::StrCat("services.", service.name, ".binary: ", path, " not found"));
     }
     Child child;
     child.name = service.name;
@@ -228,8 +242,8 @@ void StackRunner::ReapExited() {
         child.backoff_s = config_.restart.initial_backoff_s;
       }
       child.restart_at = absl::Now() + absl::Seconds(child.backoff_s);
-      std::cerr << "semnav up: " << child.name << " exited (" << child.last_exit << "); restarting in "
-                << child.backoff_s << " s" << std::endl;
+      std::cerr << "semnav up: " << child.name << " exited (" << child.last_exit
+                << "); restarting in " << child.backoff_s << " s" << std::endl;
       child.backoff_s = std::min(child.backoff_s * 2, config_.restart.max_backoff_s);
     }
   }
@@ -246,8 +260,8 @@ void StackRunner::RestartDue() {
     }
     ++child.restarts;
     changed = true;
-    std::cerr << "semnav up: restarted " << child.name << " (pid " << child.pid << ", restart " << child.restarts
-              << ")" << std::endl;
+    std::cerr << "semnav up: restarted " << child.name << " (pid " << child.pid << ", restart "
+              << child.restarts << ")" << std::endl;
   }
   if (changed) PublishState();
 }
@@ -256,8 +270,10 @@ void StackRunner::PublishState() {
   StackState state;
   state.launcher_pid = ::getpid();
   state.dashboard_url = dashboard_url_.value_or("");
-  for (const Child& child : children_) state.children[child.name] = {child.pid, child.restarts, child.last_exit};
-  if (absl::Status s = WriteStackState(state_path_, state); !s.ok()) std::cerr << "semnav up: " << s.message() << "\n";
+  for (const Child& child : children_)
+    state.children[child.name] = {child.pid, child.restarts, child.last_exit};
+  if (absl::Status s = WriteStackState(state_path_, state); !s.ok())
+    std::cerr << "semnav up: " << s.message() << "\n";
 }
 
 absl::Status StackRunner::Supervise() {
@@ -269,7 +285,8 @@ absl::Status StackRunner::Supervise() {
   while (true) {
     absl::Duration wait = absl::Seconds(1);
     for (const Child& child : children_) {
-      if (child.restart_at) wait = std::min(wait, std::max(absl::ZeroDuration(), *child.restart_at - absl::Now()));
+      if (child.restart_at)
+        wait = std::min(wait, std::max(absl::ZeroDuration(), *child.restart_at - absl::Now()));
     }
     const timespec timeout = absl::ToTimespec(wait);
     const int signal_number = sigtimedwait(&signals, nullptr, &timeout);
@@ -300,17 +317,20 @@ absl::Status StackRunner::Stop() {
       absl::SleepFor(absl::Milliseconds(20));
     }
     // Node exits with 143 (128 + SIGTERM) or by the signal itself: both are a clean stop.
-    const bool clean = (WIFEXITED(status) && (WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 128 + SIGTERM)) ||
-                       (WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM && child.health != Health::kGrpc);
+    const bool clean =
+        (WIFEXITED(status) && (WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 128 + SIGTERM)) ||
+        (WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM && child.health != Health::kGrpc);
     if (result.ok() && !clean) {
-      result = absl::InternalError(absl::StrCat(child.name, " stopped with ", DescribeExit(status)));
+      result =
+          absl::InternalError(absl::StrCat(child.name, " stopped with ", DescribeExit(status)));
     }
     child.pid = -1;
   }
   if (!state_path_.empty()) {
     std::error_code ignored;
     std::filesystem::remove(state_path_, ignored);
-    std::filesystem::remove(StackLockPath(config_), ignored);  // still held: no one else can take it now
+    std::filesystem::remove(StackLockPath(config_),
+                            ignored);  // still held: no one else can take it now
     std::filesystem::remove_all(work_dir_, ignored);
     state_path_.clear();
   }
@@ -323,18 +343,22 @@ absl::Status PrintStatus(const StackConfig& config) {
   for (const StackService& service : config.services) {
     const std::string health = CheckHealth(service.listen, absl::Seconds(2));
     all_serving &= health == "SERVING";
-    std::cout << std::left << std::setw(16) << service.name << std::setw(22) << service.listen << health;
+    std::cout << std::left << std::setw(16) << service.name << std::setw(22) << service.listen
+              << health;
     if (state.ok() && state->children.contains(service.name)) {
       const ChildState& child = state->children.at(service.name);
-      if (child.restarts > 0) std::cout << "  restarts " << child.restarts << " (last: " << child.last_exit << ")";
+      if (child.restarts > 0)
+        std::cout << "  restarts " << child.restarts << " (last: " << child.last_exit << ")";
     }
     std::cout << "\n";
   }
   if (config.dashboard.enabled) {
     const std::string url = DashboardUrl(config.dashboard.listen);
     const absl::Status http = ProbeHttp(url, absl::Seconds(2));
-    std::cout << std::left << std::setw(16) << "dashboard" << std::setw(22) << config.dashboard.listen
-              << (http.ok() ? std::string("SERVING ") + url : absl::StrCat("UNAVAILABLE (", http.message(), ")"))
+    std::cout << std::left << std::setw(16) << "dashboard" << std::setw(22)
+              << config.dashboard.listen
+              << (http.ok() ? std::string("SERVING ") + url
+                            : absl::StrCat("UNAVAILABLE (", http.message(), ")"))
               << "\n";
   }
   if (all_serving) return absl::OkStatus();

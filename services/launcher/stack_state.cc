@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <filesystem>
 #include <functional>
-
 #include <nlohmann/json.hpp>
 
 #include "absl/strings/str_cat.h"
@@ -19,18 +18,23 @@ namespace {
 
 std::string StackKey(const StackConfig& config) {
   std::string addresses;
-  for (const StackService& service : config.services) absl::StrAppend(&addresses, service.listen, ";");
+  for (const StackService& service : config.services)
+    absl::StrAppend(&addresses, service.listen, ";");
   return absl::StrCat(absl::Hex(std::hash<std::string>{}(addresses), absl::kZeroPad16));
 }
 
 }  // namespace
 
 std::string StackStatePath(const StackConfig& config) {
-  return (std::filesystem::temp_directory_path() / absl::StrCat("semnav-up-", StackKey(config), ".json")).string();
+  return (std::filesystem::temp_directory_path() /
+          absl::StrCat("semnav-up-", StackKey(config), ".json"))
+      .string();
 }
 
 std::string StackLockPath(const StackConfig& config) {
-  return (std::filesystem::temp_directory_path() / absl::StrCat("semnav-up-", StackKey(config), ".lock")).string();
+  return (std::filesystem::temp_directory_path() /
+          absl::StrCat("semnav-up-", StackKey(config), ".lock"))
+      .string();
 }
 
 absl::Status WriteStackState(const std::string& path, const StackState& state) {
@@ -38,7 +42,8 @@ absl::Status WriteStackState(const std::string& path, const StackState& state) {
   json["launcher_pid"] = state.launcher_pid;
   json["dashboard_url"] = state.dashboard_url;
   for (const auto& [name, child] : state.children) {
-    json["children"][name] = {{"pid", child.pid}, {"restarts", child.restarts}, {"last_exit", child.last_exit}};
+    json["children"][name] = {
+        {"pid", child.pid}, {"restarts", child.restarts}, {"last_exit", child.last_exit}};
   }
   return storage::WriteFileAtomically(path, json.dump() + "\n");
 }
@@ -56,7 +61,8 @@ absl::StatusOr<StackState> ReadLiveStackState(const std::string& path) {
   }
   if (json.contains("children") && json["children"].is_object()) {
     for (const auto& [name, child] : json["children"].items()) {
-      state.children[name] = {child.value("pid", -1), child.value("restarts", 0), child.value("last_exit", "")};
+      state.children[name] = {child.value("pid", -1), child.value("restarts", 0),
+                              child.value("last_exit", "")};
     }
   }
   return state;
@@ -69,12 +75,13 @@ absl::StatusOr<StackLock> StackLock::Acquire(const std::string& path) {
     char holder[32] = {};
     const ssize_t n = ::pread(fd, holder, sizeof(holder) - 1, 0);
     ::close(fd);
-    return absl::FailedPreconditionError(
-        absl::StrCat("another `semnav up` (pid ", n > 0 ? std::string(holder, static_cast<size_t>(n)) : "?",
-                     ") already runs this stack"));
+    return absl::FailedPreconditionError(absl::StrCat(
+        "another `semnav up` (pid ", n > 0 ? std::string(holder, static_cast<size_t>(n)) : "?",
+        ") already runs this stack"));
   }
   const std::string pid = std::to_string(::getpid());
-  if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
+  if (::ftruncate(fd, 0) != 0 ||
+      ::pwrite(fd, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
     ::close(fd);
     return absl::InternalError(absl::StrCat("cannot write ", path));
   }

@@ -16,9 +16,11 @@ int main(int argc, char** argv) {
     absl::StatusOr<semnav::mapping::MappingServiceConfig> config =
         semnav::mapping::MappingServiceConfig::FromYaml(section);
     if (!config.ok()) return config.status();
-    absl::StatusOr<semnav::mapping::MapStore> store = semnav::mapping::MapStore::Open(config->store_directory);
+    absl::StatusOr<semnav::mapping::MapStore> store =
+        semnav::mapping::MapStore::Open(config->store_directory);
     if (!store.ok()) return store.status();
-    auto service = std::make_unique<semnav::mapping::MappingServiceImpl>(*std::move(config), *std::move(store));
+    auto service = std::make_unique<semnav::mapping::MappingServiceImpl>(*std::move(config),
+                                                                         *std::move(store));
     if (absl::Status live = service->StartLiveSnapshots(); !live.ok()) return live;
     if (absl::Status pushed = service->StartLandmarkPublisher(); !pushed.ok()) return pushed;
     semnav::mapping::MappingServiceImpl* raw = service.get();

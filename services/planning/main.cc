@@ -20,8 +20,7 @@ int main(int argc, char** argv) {
     absl::StatusOr<semnav::planning::PlanningConfig> config =
         semnav::planning::PlanningConfig::FromYaml(section);
     if (!config.ok()) return config.status();
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> mapping =
-        semnav::MakeChannel(config->mapping);
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> mapping = semnav::MakeChannel(config->mapping);
     if (!mapping.ok()) return mapping.status();
     auto service = std::make_unique<semnav::planning::PlanningServiceImpl>(*std::move(config),
                                                                            *std::move(mapping));

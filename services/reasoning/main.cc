@@ -2,12 +2,11 @@
 #include <memory>
 
 #include "absl/strings/str_cat.h"
-
-#include "services/common/server/service_binary.h"
 #include "services/common/client/channel.h"
 #include "services/common/logging/log.h"
-#include "services/reasoning/server/gateway_hub.h"
+#include "services/common/server/service_binary.h"
 #include "services/reasoning/core/conceptnet_cooccurrence.h"
+#include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/mapping_watcher.h"
 #include "services/reasoning/server/model_proxy_client.h"
 #include "services/reasoning/server/operator_service.h"
@@ -24,10 +23,10 @@ using namespace semnav::reasoning;
 // first; every shared_ptr to it (services, shutdown hooks) keeps the whole stack alive.
 struct GatewayStack {
   std::unique_ptr<Lexicon> lexicon;
-  std::unique_ptr<RobotLocalPlanner> local_planner;  // paths without a planning service
-  std::unique_ptr<PlanningClient> planning;          // null: no planning service configured
-  std::unique_ptr<ModelProxyClient> model;           // null: offline default
-  std::unique_ptr<ConceptNetCooccurrence> prior;     // null: explore without co-occurrence
+  std::unique_ptr<RobotLocalPlanner> local_planner;   // paths without a planning service
+  std::unique_ptr<PlanningClient> planning;           // null: no planning service configured
+  std::unique_ptr<ModelProxyClient> model;            // null: offline default
+  std::unique_ptr<ConceptNetCooccurrence> prior;      // null: explore without co-occurrence
   std::unique_ptr<RelocalizationClient> relocalizer;  // null: no relocalization loop
   std::unique_ptr<GatewayHub> hub;
 };
@@ -43,22 +42,26 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
   PathPlanner* planner = stack->local_planner.get();
   GatewayBackends backends;
   if (!config->planning.channel.address.empty()) {
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config->planning.channel);
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel =
+        semnav::MakeChannel(config->planning.channel);
     if (!channel.ok()) return channel.status();
     stack->planning = std::make_unique<PlanningClient>(*channel, config->planning);
     planner = stack->planning.get();
     backends.explorer = stack->planning.get();
   }
   if (!config->model_proxy.channel.address.empty()) {
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config->model_proxy.channel);
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel =
+        semnav::MakeChannel(config->model_proxy.channel);
     if (!channel.ok()) return channel.status();
     stack->model = std::make_unique<ModelProxyClient>(*channel, config->model_proxy);
     backends.model = stack->model.get();
   }
   if (!config->relocalization.channel.address.empty()) {
-    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(config->relocalization.channel);
+    absl::StatusOr<std::shared_ptr<grpc::Channel>> channel =
+        semnav::MakeChannel(config->relocalization.channel);
     if (!channel.ok()) return channel.status();
-    stack->relocalizer = std::make_unique<RelocalizationClient>(*channel, config->relocalization.deadline_ms);
+    stack->relocalizer =
+        std::make_unique<RelocalizationClient>(*channel, config->relocalization.deadline_ms);
     backends.relocalizer = stack->relocalizer.get();
   }
   if (!config->prior_path.empty()) {
@@ -69,22 +72,27 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
     } else if (config->prior_path == GatewayConfig::DefaultPriorPath()) {
       // The build-time default (the source tree's shared data) may not exist where the binary is
       // installed: explore without co-occurrence rather than not start.
-      semnav::LogWarning("commonsense_prior_unavailable",
-                         {{"prior_path", config->prior_path}, {"message", prior.status().message()}});
+      semnav::LogWarning("commonsense_prior_unavailable", {{"prior_path", config->prior_path},
+                                                           {"message", prior.status().message()}});
     } else {
-      return absl::Status(prior.status().code(), absl::StrCat("prior_path: ", prior.status().message()));
+      return absl::Status(prior.status().code(),
+                          absl::StrCat("prior_path: ", prior.status().message()));
     }
   }
   const semnav::ClientOptions mapping = config->mapping;
-  stack->hub = std::make_unique<GatewayHub>(*std::move(config), stack->lexicon.get(), planner, backends);
+  stack->hub =
+      std::make_unique<GatewayHub>(*std::move(config), stack->lexicon.get(), planner, backends);
   const std::shared_ptr<GatewayHub> hub(stack, stack->hub.get());  // shares the stack's lifetime
-  host.AddService(std::make_unique<OperatorServiceImpl>(hub), "semnav.reasoning.v1.OperatorService");
-  host.AddService(std::make_unique<RobotSessionServiceImpl>(hub), "semnav.reasoning.v1.RobotSessionService");
+  host.AddService(std::make_unique<OperatorServiceImpl>(hub),
+                  "semnav.reasoning.v1.OperatorService");
+  host.AddService(std::make_unique<RobotSessionServiceImpl>(hub),
+                  "semnav.reasoning.v1.RobotSessionService");
   host.OnShutdown([hub] { hub->Shutdown(); });
   if (!mapping.address.empty()) {
     absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = semnav::MakeChannel(mapping);
     if (!channel.ok()) return channel.status();
-    auto watcher = std::make_shared<MappingWatcher>(*channel, [hub](const SceneGraph& graph) { hub->OnSceneGraph(graph); });
+    auto watcher = std::make_shared<MappingWatcher>(
+        *channel, [hub](const SceneGraph& graph) { hub->OnSceneGraph(graph); });
     hub->SetSceneGraphSync([watcher](absl::Duration timeout) { return watcher->CatchUp(timeout); });
     host.OnShutdown([watcher] { watcher->Stop(); });  // runs before the hub's hook
   }

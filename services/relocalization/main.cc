@@ -23,8 +23,9 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
     if (!loaded.ok()) return loaded.status();
     detector = *std::move(loaded);
   }
-  host.AddService(std::make_unique<RelocalizationServiceImpl>(*config, *std::move(store), std::move(detector)),
-                  "semnav.relocalization.v1.RelocalizationService");
+  host.AddService(
+      std::make_unique<RelocalizationServiceImpl>(*config, *std::move(store), std::move(detector)),
+      "semnav.relocalization.v1.RelocalizationService");
   return absl::OkStatus();
 }
 

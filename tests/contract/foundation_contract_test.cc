@@ -1,15 +1,14 @@
 // Every semnav server binary, started for real on a loopback port: the bootstrap promises of
 // the foundation (health, reflection, metrics, graceful stop, config errors, TLS, tokens).
+#include <gmock/gmock.h>
+#include <grpcpp/create_channel.h>
+#include <grpcpp/security/credentials.h>
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-
-#include <gmock/gmock.h>
-#include <grpcpp/create_channel.h>
-#include <grpcpp/security/credentials.h>
-#include <gtest/gtest.h>
 
 #include "absl/time/clock.h"
 #include "grpc/health/v1/health.grpc.pb.h"
@@ -43,7 +42,8 @@ const std::vector<Binary>& AllBinaries() {
 }
 
 std::filesystem::path TempDir() {
-  auto dir = std::filesystem::temp_directory_path() / ("semnav_foundation_" + std::to_string(::getpid()));
+  auto dir =
+      std::filesystem::temp_directory_path() / ("semnav_foundation_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir;
 }
@@ -68,7 +68,8 @@ std::vector<std::string> ReflectedServices(const std::shared_ptr<grpc::Channel>&
   std::vector<std::string> names;
   grpc::reflection::v1alpha::ServerReflectionResponse response;
   while (stream->Read(&response)) {
-    for (const auto& service : response.list_services_response().service()) names.push_back(service.name());
+    for (const auto& service : response.list_services_response().service())
+      names.push_back(service.name());
   }
   EXPECT_TRUE(stream->Finish().ok());
   return names;
@@ -124,7 +125,8 @@ TEST_P(EveryBinaryTest, ServesHealthReflectionAndMetricsThenStopsOnSigterm) {
 }
 
 TEST_P(EveryBinaryTest, BadConfigFailsAtStartNamingTheKey) {
-  const std::string config = WriteFile(GetParam().name + "_bad.yaml", "server:\n  lisen: 127.0.0.1:1\n");
+  const std::string config =
+      WriteFile(GetParam().name + "_bad.yaml", "server:\n  lisen: 127.0.0.1:1\n");
   absl::StatusOr<ProcessResult> result = RunToCompletion(GetParam().name, {"--config", config});
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_EQ(result->exit_code, 2);
@@ -176,7 +178,8 @@ TEST(SecurityTest, TlsOnlyServerRefusesPlaintextAndServesTls) {
   const std::string cert = (dir / "server.crt").string();
   const std::string command =
       "openssl req -x509 -newkey rsa:2048 -nodes -days 2 -subj /CN=localhost -addext "
-      "subjectAltName=DNS:localhost,IP:127.0.0.1 -keyout " + key + " -out " + cert + " 2>/dev/null";
+      "subjectAltName=DNS:localhost,IP:127.0.0.1 -keyout " +
+      key + " -out " + cert + " 2>/dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << "openssl is needed (deploy/install-deps.sh)";
   const std::string config = WriteFile(
       "tls.yaml", "server:\n  tls:\n    cert_file: " + cert + "\n    key_file: " + key + "\n");

@@ -2,17 +2,16 @@
 // stops them all cleanly; a killed service comes back while the others keep running, a second
 // stack on the same ports refuses to start, and no child outlives the launcher.
 #include <arpa/inet.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 #include <netinet/in.h>
-#include <sys/socket.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -24,17 +23,17 @@
 namespace semnav::testing {
 namespace {
 
-using ::testing::HasSubstr;
 using semnav::launcher::StackState;
+using ::testing::HasSubstr;
 
 std::string WriteStack() {
-  const auto path = std::filesystem::temp_directory_path() /
-                    absl::StrCat("semnav_stack_", ::getpid(), ".yaml");
+  const auto path =
+      std::filesystem::temp_directory_path() / absl::StrCat("semnav_stack_", ::getpid(), ".yaml");
   std::ofstream out(path);
   out << "services:\n";
   for (const char* name : {"gateway", "mapping", "planning", "relocalization", "model-proxy"}) {
-    out << "  " << name << ": {binary: semnav-" << name << ", listen: '127.0.0.1:" << *semnav::launcher::FreeLoopbackPort()
-        << "'}\n";
+    out << "  " << name << ": {binary: semnav-" << name
+        << ", listen: '127.0.0.1:" << *semnav::launcher::FreeLoopbackPort() << "'}\n";
   }
   return path.string();
 }
@@ -139,7 +138,8 @@ bool Alive(pid_t pid) {
 StackState LiveState(const std::string& stack) {
   absl::StatusOr<semnav::launcher::StackConfig> config = semnav::launcher::LoadStackConfig(stack);
   if (!config.ok()) return {};
-  absl::StatusOr<StackState> state = semnav::launcher::ReadLiveStackState(semnav::launcher::StackStatePath(*config));
+  absl::StatusOr<StackState> state =
+      semnav::launcher::ReadLiveStackState(semnav::launcher::StackStatePath(*config));
   return state.ok() ? *state : StackState{};
 }
 
@@ -188,17 +188,20 @@ TEST(LauncherTest, SecondStackOnTheSamePortsRefusesToStart) {
   // Another stack file that reuses one port: refused by the port check, naming the service.
   absl::StatusOr<semnav::launcher::StackConfig> config = semnav::launcher::LoadStackConfig(stack);
   ASSERT_TRUE(config.ok());
-  const auto other = std::filesystem::temp_directory_path() / absl::StrCat("semnav_stack_other_", ::getpid(), ".yaml");
+  const auto other = std::filesystem::temp_directory_path() /
+                     absl::StrCat("semnav_stack_other_", ::getpid(), ".yaml");
   std::ofstream(other) << "services:\n  planning: {binary: semnav-planning, listen: '"
                        << config->AddressOf("planning") << "'}\n";
-  absl::StatusOr<ProcessResult> overlap = RunToCompletion("semnav", {"up", "--config", other.string()});
+  absl::StatusOr<ProcessResult> overlap =
+      RunToCompletion("semnav", {"up", "--config", other.string()});
   ASSERT_TRUE(overlap.ok());
   EXPECT_EQ(overlap->exit_code, 1);
-  EXPECT_THAT(overlap->output, HasSubstr("planning: " + config->AddressOf("planning") + " is already in use"));
+  EXPECT_THAT(overlap->output,
+              HasSubstr("planning: " + config->AddressOf("planning") + " is already in use"));
 
   // A service binary started by hand on a taken port fails instead of sharing it.
-  absl::StatusOr<ProcessResult> twin =
-      RunToCompletion("semnav-planning", {"--listen", config->AddressOf("planning")}, absl::Seconds(10));
+  absl::StatusOr<ProcessResult> twin = RunToCompletion(
+      "semnav-planning", {"--listen", config->AddressOf("planning")}, absl::Seconds(10));
   ASSERT_TRUE(twin.ok());
   EXPECT_NE(twin->exit_code, 0);
   EXPECT_THAT(twin->output, HasSubstr("cannot bind"));
@@ -223,11 +226,12 @@ TEST(LauncherTest, NoServiceOutlivesAKilledLauncher) {
 
 TEST(LauncherTest, WithoutNodeTheStackStartsAndSaysWhyThereIsNoDashboard) {
   const std::string stack = WriteStack();
-  std::ofstream(stack, std::ios::app) << "dashboard: {listen: '127.0.0.1:" << *semnav::launcher::FreeLoopbackPort()
-                                      << "'}\n";
+  std::ofstream(stack, std::ios::app)
+      << "dashboard: {listen: '127.0.0.1:" << *semnav::launcher::FreeLoopbackPort() << "'}\n";
   RunningStack running = StartUp(stack, "/nonexistent");
   EXPECT_THAT(running.printed, HasSubstr("semnav stack is up"));
-  EXPECT_THAT(running.printed, HasSubstr("dashboard: not started: Node.js (`node`) is not on PATH"));
+  EXPECT_THAT(running.printed,
+              HasSubstr("dashboard: not started: Node.js (`node`) is not on PATH"));
   EXPECT_THAT(running.printed, ::testing::Not(HasSubstr("dashboard: http")));
   const int code = StopUp(running);
   EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
@@ -259,7 +263,8 @@ TEST(LauncherTest, ATakenDashboardPortCostsTheDashboardNotTheStack) {
   std::ofstream(stack, std::ios::app) << "dashboard: {listen: '127.0.0.1:" << port << "'}\n";
   RunningStack running = StartUp(stack);
   EXPECT_THAT(running.printed, HasSubstr("semnav stack is up"));
-  EXPECT_THAT(running.printed, HasSubstr(absl::StrCat("dashboard: not started: 127.0.0.1:", port, " is already in use")));
+  EXPECT_THAT(running.printed, HasSubstr(absl::StrCat("dashboard: not started: 127.0.0.1:", port,
+                                                      " is already in use")));
   const int code = StopUp(running);
   EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
   ::close(blocker);
@@ -275,7 +280,8 @@ TEST(LauncherTest, UnknownBenchAreaListsTheBuiltOnes) {
 TEST(LauncherTest, BadStackConfigIsNamed) {
   const auto path = std::filesystem::temp_directory_path() / "semnav_bad_stack.yaml";
   std::ofstream(path) << "services: {mapping: {binary: semnav-mapping}}\n";
-  absl::StatusOr<ProcessResult> result = RunToCompletion("semnav", {"up", "--config", path.string()});
+  absl::StatusOr<ProcessResult> result =
+      RunToCompletion("semnav", {"up", "--config", path.string()});
   ASSERT_TRUE(result.ok());
   EXPECT_EQ(result->exit_code, 2);
   EXPECT_THAT(result->output, HasSubstr("services.mapping.listen: is required"));

@@ -3,12 +3,12 @@
 // LOST (RobotState.localization) gets its task paused, a look-around and the gateway's
 // relocalizing flag; with nothing to relocalize on, the task fails with the reason. The operator's
 // RelocalizeRobot starts the same loop, answers idempotently and names its errors' fields.
+#include <grpcpp/grpcpp.h>
+
 #include <chrono>
 #include <memory>
 #include <optional>
 #include <thread>
-
-#include <grpcpp/grpcpp.h>
 
 #include "absl/strings/match.h"
 #include "gtest/gtest.h"
@@ -78,7 +78,8 @@ class Robot {
 
 // The loop's look-around (the task's own LOOK_AROUND turns say otherwise).
 bool IsRotate(const api::ConnectResponse& m) {
-  return m.has_command() && m.command().has_rotate() && absl::StartsWith(m.command().reason(), "relocalizing");
+  return m.has_command() && m.command().has_rotate() &&
+         absl::StartsWith(m.command().reason(), "relocalizing");
 }
 
 std::vector<api::Event> Events(api::OperatorService::Stub& op, const std::string& robot_id) {
@@ -90,7 +91,8 @@ std::vector<api::Event> Events(api::OperatorService::Stub& op, const std::string
   return {response.events().begin(), response.events().end()};
 }
 
-std::optional<api::Event> FindEvent(api::OperatorService::Stub& op, const std::string& robot_id, api::EventKind kind) {
+std::optional<api::Event> FindEvent(api::OperatorService::Stub& op, const std::string& robot_id,
+                                    api::EventKind kind) {
   for (const api::Event& event : Events(op, robot_id)) {
     if (event.kind() == kind) return event;
   }
@@ -106,9 +108,10 @@ class RelocalizationLoopContractTest : public ::testing::Test {
     ASSERT_TRUE(reloc.ok()) << reloc.status();
     reloc_ = *std::move(reloc);
     // A short look-around keeps the wall-clock test short; one attempt.
-    auto gateway = rt::StartWithConfig("semnav-gateway", dir_, "gateway.yaml",
-                                       "gateway:\n  relocalization:\n    address: " + reloc_->address() +
-                                           "\n    look_around_duration_s: 0.3\n    max_attempts: 1\n");
+    auto gateway =
+        rt::StartWithConfig("semnav-gateway", dir_, "gateway.yaml",
+                            "gateway:\n  relocalization:\n    address: " + reloc_->address() +
+                                "\n    look_around_duration_s: 0.3\n    max_attempts: 1\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
@@ -134,9 +137,11 @@ TEST_F(RelocalizationLoopContractTest, LostReportPausesTheTaskLooksAroundAndFail
   Robot robot(gateway_->channel(), "r1");
   ASSERT_TRUE(robot.State(1.0, 1.0, api::LOCALIZATION_STATUS_OK));
   ASSERT_TRUE(rt::WaitUntilPoseSeen(*operator_, "r1", 5000));
-  const absl::StatusOr<std::string> task_id = rt::Submit(*operator_, "find-chair", "r1", "find the chair");
+  const absl::StatusOr<std::string> task_id =
+      rt::Submit(*operator_, "find-chair", "r1", "find the chair");
   ASSERT_TRUE(task_id.ok()) << task_id.status();
-  ASSERT_TRUE(robot.ReadUntil([](const api::ConnectResponse& m) { return m.has_command(); }).has_value());
+  ASSERT_TRUE(
+      robot.ReadUntil([](const api::ConnectResponse& m) { return m.has_command(); }).has_value());
 
   ASSERT_TRUE(robot.State(1.0, 1.0, api::LOCALIZATION_STATUS_LOST));
   // The look-around: rotate in place at the LOOK_AROUND rate, and the gateway's relocalizing flag.
@@ -151,16 +156,18 @@ TEST_F(RelocalizationLoopContractTest, LostReportPausesTheTaskLooksAroundAndFail
   absl::StatusOr<api::TaskSnapshot> paused = rt::FetchTask(*operator_, *task_id);
   ASSERT_TRUE(paused.ok());
   EXPECT_EQ(paused->status(), api::TASK_STATUS_PAUSED);
-  std::optional<api::Event> relocalizing = FindEvent(*operator_, "r1", api::EVENT_KIND_RELOCALIZING);
+  std::optional<api::Event> relocalizing =
+      FindEvent(*operator_, "r1", api::EVENT_KIND_RELOCALIZING);
   ASSERT_TRUE(relocalizing.has_value());
-  EXPECT_TRUE(absl::StrContains(relocalizing->message(), "robot reports LOST")) << relocalizing->message();
+  EXPECT_TRUE(absl::StrContains(relocalizing->message(), "robot reports LOST"))
+      << relocalizing->message();
   EXPECT_EQ(relocalizing->task_id(), *task_id);
 
   // The turn ends with no scene graph (no mapping): nothing to relocalize on, the task fails.
   std::this_thread::sleep_for(std::chrono::milliseconds(400));
   ASSERT_TRUE(robot.State(1.0, 1.0, api::LOCALIZATION_STATUS_LOST));
-  std::optional<api::ConnectResponse> stop =
-      robot.ReadUntil([](const api::ConnectResponse& m) { return m.has_command() && m.command().has_stop(); });
+  std::optional<api::ConnectResponse> stop = robot.ReadUntil(
+      [](const api::ConnectResponse& m) { return m.has_command() && m.command().has_stop(); });
   ASSERT_TRUE(stop.has_value());
   absl::StatusOr<api::TaskSnapshot> failed = rt::FetchTask(*operator_, *task_id);
   ASSERT_TRUE(failed.ok());
@@ -186,7 +193,8 @@ TEST_F(RelocalizationLoopContractTest, RelocalizeRobotStartsTheLoopIdempotentlyA
   EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(missing)->field(), "request_id");
 
   Robot robot(gateway_->channel(), "r2");
-  ASSERT_TRUE(robot.State(2.0, 0.0, api::LOCALIZATION_STATUS_UNSPECIFIED));  // an old robot: read as OK
+  ASSERT_TRUE(
+      robot.State(2.0, 0.0, api::LOCALIZATION_STATUS_UNSPECIFIED));  // an old robot: read as OK
   ASSERT_TRUE(rt::WaitUntilPoseSeen(*operator_, "r2", 5000));
   ASSERT_TRUE(Relocalize("req-2", "r2", &response, "drill").ok());
   EXPECT_TRUE(response.localization().relocalizing());

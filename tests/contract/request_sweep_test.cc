@@ -9,13 +9,20 @@
 // infinity, 1e300 or an unknown enum must be rejected, and by the mutated field's name. A body
 // that does not parse must be INVALID_ARGUMENT "could not be parsed" (unary and server streams).
 // SEMNAV_SWEEP_ONLY=<Service>/<Method>:<mutation prefix> replays one case.
+#include <google/protobuf/descriptor.h>
+#include <google/protobuf/dynamic_message.h>
+#include <google/protobuf/message.h>
+#include <google/protobuf/text_format.h>
+#include <grpcpp/generic/generic_stub.h>
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -24,14 +31,6 @@
 #include <set>
 #include <string>
 #include <vector>
-
-#include <google/protobuf/descriptor.h>
-#include <google/protobuf/dynamic_message.h>
-#include <google/protobuf/message.h>
-#include <google/protobuf/text_format.h>
-#include <grpcpp/generic/generic_stub.h>
-#include <grpcpp/grpcpp.h>
-#include <gtest/gtest.h>
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
@@ -104,7 +103,8 @@ std::vector<SweptBinary> SweptBinaries() {
       {"semnav-relocalization", {"semnav.relocalization.v1.RelocalizationService"}, ""},
       {"semnav-model-proxy", {"semnav.modelproxy.v1.ModelProxyService"}, ""},
       {"semnav-gateway",
-       {"semnav.reasoning.v1.OperatorService", "semnav.reasoning.v1.RobotSessionService"}, ""},
+       {"semnav.reasoning.v1.OperatorService", "semnav.reasoning.v1.RobotSessionService"},
+       ""},
   };
 }
 
@@ -117,14 +117,16 @@ std::string ThreeLandmarks(absl::string_view field) {
   const char* corners[] = {"x: 1 y: 1 z: 0", "x: 4 y: 1 z: 0", "x: 1 y: 5 z: 1"};
   const char* embeddings[] = {"1, 0, 0, 0", "0, 1, 0, 0", "0, 0, 1, 0"};
   for (int i = 0; i < 3; ++i) {
-    absl::StrAppend(&text, field, " { position { ", corners[i], " } scale_m: 0.5 embedding: [ ", embeddings[i],
-                    " ] observations: 1 } ");
+    absl::StrAppend(&text, field, " { position { ", corners[i], " } scale_m: 0.5 embedding: [ ",
+                    embeddings[i], " ] observations: 1 } ");
   }
   return text;
 }
 
 const std::map<std::string, std::string>& SensibleBases() {
   // 8 x 8 cells of 0.5 m, all free; rows 0-3 explored, so there is a frontier at y = 2 m.
+  // The quotes split across the raw strings below are one data string each: not reformatted.
+  // clang-format off
   static const std::string kGrid = absl::StrCat(
       R"pb(grid {
              resolution: 0.5
@@ -134,17 +136,17 @@ const std::map<std::string, std::string>& SensibleBases() {
       "@ZEROS@", R"pb(" }
              layers { kind: GRID_LAYER_KIND_EXPLORED data: ")pb", "@EXPLORED@", R"pb(" }
            })pb");
+  // clang-format on
   static const auto* bases = new std::map<std::string, std::string>{
       {"semnav.mapping.v1.MappingService/StreamFrames",
        R"pb(frame {
-              header { stamp { seconds: 1 } frame_id: "camera" robot_id: "@UNIQUE@" }
-              intrinsics { width: 4 height: 4 fx: 2 fy: 2 cx: 2 cy: 2 }
-              depth {
-                width: 4
-                height: 4
-                encoding: IMAGE_ENCODING_DEPTH_32FC1_M
-                data: "@DEPTH@"
+              header {
+                stamp { seconds: 1 }
+                frame_id: "camera"
+                robot_id: "@UNIQUE@"
               }
+              intrinsics { width: 4 height: 4 fx: 2 fy: 2 cx: 2 cy: 2 }
+              depth { width: 4 height: 4 encoding: IMAGE_ENCODING_DEPTH_32FC1_M data: "@DEPTH@" }
               camera_pose {
                 position { x: 1 y: 1 z: 1 }
                 orientation { w: 1 }
@@ -157,18 +159,18 @@ const std::map<std::string, std::string>& SensibleBases() {
               }
               lidar_points { x: 2 y: 1 z: 1 }
             })pb"},
-      {"semnav.mapping.v1.MappingService/GetOccupancy",
-       R"pb(min { x: 0 y: 0 z: 0 } max { x: 1 y: 1 z: 1 })pb"},
-      {"semnav.mapping.v1.MappingService/QueryObjects",
-       R"pb(labels: "chair" near { x: 1 y: 1 z: 0 } near_radius: 5)pb"},
+      {"semnav.mapping.v1.MappingService/GetOccupancy", R"pb(min { x: 0 y: 0 z: 0 }
+                                                             max { x: 1 y: 1 z: 1 })pb"},
+      {"semnav.mapping.v1.MappingService/QueryObjects", R"pb(labels: "chair"
+                                                             near { x: 1 y: 1 z: 0 }
+                                                             near_radius: 5)pb"},
       {"semnav.mapping.v1.MappingService/SaveMap", R"pb(request_id: "@UNIQUE@" map_id: "sweep")pb"},
       {"semnav.mapping.v1.MappingService/LoadMap", R"pb(request_id: "@UNIQUE@" map_id: "sweep")pb"},
       {"semnav.mapping.v1.MappingService/DeleteMap",
        R"pb(request_id: "@UNIQUE@" map_id: "sweep")pb"},
       {"semnav.mapping.v1.MappingService/ResetMap", R"pb(request_id: "@UNIQUE@")pb"},
-      {"semnav.planning.v1.PlanningService/PlanPath",
-       absl::StrCat("source {", kGrid, R"pb(}
-                    start { x: 0.6 y: 0.6 }
+      {"semnav.planning.v1.PlanningService/PlanPath", absl::StrCat("source {", kGrid, R"pb(}
+                                                                                           start { x: 0.6 y: 0.6 }
                     goal { x: 3.2 y: 3.2 }
                     robot_radius_m: 0.1
                     goal_tolerance_m: 0.2)pb")},
@@ -179,11 +181,11 @@ const std::map<std::string, std::string>& SensibleBases() {
       {"semnav.planning.v1.PlanningService/SmoothTrajectory",
        absl::StrCat("source {", kGrid, "} path { x: 0.6 y: 0.6 } path { x: 3.2 y: 1.6 }")},
       {"semnav.relocalization.v1.RelocalizationService/UpsertLandmarks",
-       absl::StrCat(R"pb(map_id: "sweep" request_id: "@UNIQUE@" )pb", ThreeLandmarks("landmarks"))},
-      {"semnav.relocalization.v1.RelocalizationService/GetLandmarkMap",
-       R"pb(map_id: "sweep" page_size: 10)pb"},
+       absl::StrCat(R"pb(map_id: "sweep" request_id: "@UNIQUE@")pb", ThreeLandmarks("landmarks"))},
+      {"semnav.relocalization.v1.RelocalizationService/GetLandmarkMap", R"pb(map_id: "sweep"
+                                                                             page_size: 10)pb"},
       {"semnav.relocalization.v1.RelocalizationService/Relocalize",
-       absl::StrCat(R"pb(map_id: "sweep" )pb", ThreeLandmarks("observed"))},
+       absl::StrCat(R"pb(map_id: "sweep")pb", ThreeLandmarks("observed"))},
       {"semnav.modelproxy.v1.ModelProxyService/Complete",
        R"pb(messages {
               role: ROLE_USER
@@ -192,13 +194,18 @@ const std::map<std::string, std::string>& SensibleBases() {
       {"semnav.modelproxy.v1.ModelProxyService/Embed", R"pb(texts: "chair")pb"},
       {"semnav.reasoning.v1.OperatorService/SubmitInstruction",
        R"pb(request_id: "@UNIQUE@" robot_id: "sweep-robot" instruction: "find the chair")pb"},
-      {"semnav.reasoning.v1.OperatorService/AcquireLease",
-       R"pb(request_id: "@UNIQUE@" robot_id: "@UNIQUE@" holder: "sweep" ttl { seconds: 5 })pb"},
+      {"semnav.reasoning.v1.OperatorService/AcquireLease", R"pb(request_id: "@UNIQUE@"
+                                                                robot_id: "@UNIQUE@"
+                                                                holder: "sweep"
+                                                                ttl { seconds: 5 })pb"},
       {"semnav.reasoning.v1.OperatorService/DecomposeInstruction",
        R"pb(instruction: "find the chair")pb"},
       {"semnav.reasoning.v1.RobotSessionService/Connect",
        R"pb(state {
-              header { stamp { seconds: 1 } robot_id: "@UNIQUE@" }
+              header {
+                stamp { seconds: 1 }
+                robot_id: "@UNIQUE@"
+              }
               pose {
                 position { x: 1 y: 1 z: 0 }
                 orientation { w: 1 }
@@ -349,34 +356,46 @@ std::vector<std::pair<std::string, Setter>> HostileValues(const FieldDescriptor*
   auto number = [&](double value) {
     return set_or_add(
         [value](const Reflection* r, Message* m, const FieldDescriptor* f) {
-          if (f->cpp_type() == FieldDescriptor::CPPTYPE_DOUBLE) r->SetDouble(m, f, value);
-          else r->SetFloat(m, f, static_cast<float>(value));
+          if (f->cpp_type() == FieldDescriptor::CPPTYPE_DOUBLE)
+            r->SetDouble(m, f, value);
+          else
+            r->SetFloat(m, f, static_cast<float>(value));
         },
         [value](const Reflection* r, Message* m, const FieldDescriptor* f) {
-          if (f->cpp_type() == FieldDescriptor::CPPTYPE_DOUBLE) r->AddDouble(m, f, value);
-          else r->AddFloat(m, f, static_cast<float>(value));
+          if (f->cpp_type() == FieldDescriptor::CPPTYPE_DOUBLE)
+            r->AddDouble(m, f, value);
+          else
+            r->AddFloat(m, f, static_cast<float>(value));
         });
   };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   switch (field->cpp_type()) {
     case FieldDescriptor::CPPTYPE_DOUBLE:
-      return {{"nan", number(nan)}, {"+inf", number(inf)}, {"-inf", number(-inf)},
+      return {{"nan", number(nan)},
+              {"+inf", number(inf)},
+              {"-inf", number(-inf)},
               {"1e300", number(1e300)}};
     case FieldDescriptor::CPPTYPE_FLOAT:
-      return {{"nan", number(nan)}, {"+inf", number(inf)}, {"-inf", number(-inf)},
+      return {{"nan", number(nan)},
+              {"+inf", number(inf)},
+              {"-inf", number(-inf)},
               {"3e38", number(3e38)}};
     case FieldDescriptor::CPPTYPE_INT32:
     case FieldDescriptor::CPPTYPE_INT64: {
       auto integer = [&](int64_t value) {
         return set_or_add(
             [value](const Reflection* r, Message* m, const FieldDescriptor* f) {
-              if (f->cpp_type() == FieldDescriptor::CPPTYPE_INT64) r->SetInt64(m, f, value);
-              else r->SetInt32(m, f, static_cast<int32_t>(value));
+              if (f->cpp_type() == FieldDescriptor::CPPTYPE_INT64)
+                r->SetInt64(m, f, value);
+              else
+                r->SetInt32(m, f, static_cast<int32_t>(value));
             },
             [value](const Reflection* r, Message* m, const FieldDescriptor* f) {
-              if (f->cpp_type() == FieldDescriptor::CPPTYPE_INT64) r->AddInt64(m, f, value);
-              else r->AddInt32(m, f, static_cast<int32_t>(value));
+              if (f->cpp_type() == FieldDescriptor::CPPTYPE_INT64)
+                r->AddInt64(m, f, value);
+              else
+                r->AddInt32(m, f, static_cast<int32_t>(value));
             });
       };
       const int64_t max = field->cpp_type() == FieldDescriptor::CPPTYPE_INT64
@@ -391,33 +410,31 @@ std::vector<std::pair<std::string, Setter>> HostileValues(const FieldDescriptor*
                           [](const Reflection* r, Message* m, const FieldDescriptor* f) {
                             if (f->cpp_type() == FieldDescriptor::CPPTYPE_UINT64)
                               r->SetUInt64(m, f, std::numeric_limits<uint64_t>::max());
-                            else r->SetUInt32(m, f, std::numeric_limits<uint32_t>::max());
+                            else
+                              r->SetUInt32(m, f, std::numeric_limits<uint32_t>::max());
                           },
                           [](const Reflection* r, Message* m, const FieldDescriptor* f) {
                             if (f->cpp_type() == FieldDescriptor::CPPTYPE_UINT64)
                               r->AddUInt64(m, f, std::numeric_limits<uint64_t>::max());
-                            else r->AddUInt32(m, f, std::numeric_limits<uint32_t>::max());
+                            else
+                              r->AddUInt32(m, f, std::numeric_limits<uint32_t>::max());
                           })}};
     case FieldDescriptor::CPPTYPE_STRING: {
       const std::string huge(kHugeStringBytes, 'x');
-      return {{"1MiB", set_or_add(
-                           [huge](const Reflection* r, Message* m, const FieldDescriptor* f) {
-                             r->SetString(m, f, huge);
-                           },
-                           [huge](const Reflection* r, Message* m, const FieldDescriptor* f) {
-                             r->AddString(m, f, huge);
-                           })}};
+      return {{"1MiB", set_or_add([huge](const Reflection* r, Message* m,
+                                         const FieldDescriptor* f) { r->SetString(m, f, huge); },
+                                  [huge](const Reflection* r, Message* m,
+                                         const FieldDescriptor* f) { r->AddString(m, f, huge); })}};
     }
     case FieldDescriptor::CPPTYPE_ENUM:
       // Proto3 enums are open: an unknown number arrives as is.
       if (field->file()->syntax() != google::protobuf::FileDescriptor::SYNTAX_PROTO3) return {};
-      return {{"enum9999", set_or_add(
-                               [](const Reflection* r, Message* m, const FieldDescriptor* f) {
-                                 r->SetEnumValue(m, f, 9999);
-                               },
-                               [](const Reflection* r, Message* m, const FieldDescriptor* f) {
-                                 r->AddEnumValue(m, f, 9999);
-                               })}};
+      return {
+          {"enum9999", set_or_add([](const Reflection* r, Message* m,
+                                     const FieldDescriptor* f) { r->SetEnumValue(m, f, 9999); },
+                                  [](const Reflection* r, Message* m, const FieldDescriptor* f) {
+                                    r->AddEnumValue(m, f, 9999);
+                                  })}};
     default:
       return {};  // bools have no hostile value
   }
@@ -434,14 +451,30 @@ void FillPlausibly(Message* message, int depth) {
       case FieldDescriptor::CPPTYPE_MESSAGE:
         if (depth < 2) FillPlausibly(reflection->MutableMessage(message, field), depth + 1);
         break;
-      case FieldDescriptor::CPPTYPE_STRING: reflection->SetString(message, field, "sweep"); break;
-      case FieldDescriptor::CPPTYPE_DOUBLE: reflection->SetDouble(message, field, 1.0); break;
-      case FieldDescriptor::CPPTYPE_FLOAT: reflection->SetFloat(message, field, 1.0f); break;
-      case FieldDescriptor::CPPTYPE_INT32: reflection->SetInt32(message, field, 1); break;
-      case FieldDescriptor::CPPTYPE_INT64: reflection->SetInt64(message, field, 1); break;
-      case FieldDescriptor::CPPTYPE_UINT32: reflection->SetUInt32(message, field, 1); break;
-      case FieldDescriptor::CPPTYPE_UINT64: reflection->SetUInt64(message, field, 1); break;
-      case FieldDescriptor::CPPTYPE_BOOL: reflection->SetBool(message, field, true); break;
+      case FieldDescriptor::CPPTYPE_STRING:
+        reflection->SetString(message, field, "sweep");
+        break;
+      case FieldDescriptor::CPPTYPE_DOUBLE:
+        reflection->SetDouble(message, field, 1.0);
+        break;
+      case FieldDescriptor::CPPTYPE_FLOAT:
+        reflection->SetFloat(message, field, 1.0f);
+        break;
+      case FieldDescriptor::CPPTYPE_INT32:
+        reflection->SetInt32(message, field, 1);
+        break;
+      case FieldDescriptor::CPPTYPE_INT64:
+        reflection->SetInt64(message, field, 1);
+        break;
+      case FieldDescriptor::CPPTYPE_UINT32:
+        reflection->SetUInt32(message, field, 1);
+        break;
+      case FieldDescriptor::CPPTYPE_UINT64:
+        reflection->SetUInt64(message, field, 1);
+        break;
+      case FieldDescriptor::CPPTYPE_BOOL:
+        reflection->SetBool(message, field, true);
+        break;
       case FieldDescriptor::CPPTYPE_ENUM:
         if (field->enum_type()->value_count() > 1) {
           reflection->SetEnum(message, field, field->enum_type()->value(1));
@@ -470,8 +503,8 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
   std::vector<Request> requests;
   requests.push_back({"empty", "", "", true, false, true, "", ""});
 
-  const auto base_text = SensibleBases().find(absl::StrCat(
-      method->service()->full_name(), "/", method->name()));
+  const auto base_text =
+      SensibleBases().find(absl::StrCat(method->service()->full_name(), "/", method->name()));
   auto base = [&]() {
     std::unique_ptr<Message> message = NewMessage(type);
     if (base_text != SensibleBases().end()) {
@@ -483,8 +516,7 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
   };
   if (base_text != SensibleBases().end()) {
     requests.front().is_base = false;
-    requests.push_back(
-        {"sensible", "", base()->SerializeAsString(), true, false, true, "", ""});
+    requests.push_back({"sensible", "", base()->SerializeAsString(), true, false, true, "", ""});
   }
 
   std::vector<FieldPath> paths;
@@ -501,8 +533,8 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
                                    value_label == "1e300" || value_label == "3e38" ||
                                    value_label == "enum9999";
       requests.push_back({absl::StrCat(field, "=", value_label), field,
-                          message->SerializeAsString(), true, unrepresentable, false,
-                          created_root, ""});
+                          message->SerializeAsString(), true, unrepresentable, false, created_root,
+                          ""});
     }
   }
 
@@ -511,7 +543,10 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
   std::string whole = plausible->SerializeAsString();
   // Dropping the last byte always leaves the last field incomplete; a message type without
   // fields gets field 1 announcing 5 bytes and carrying 2.
-  std::string truncated = whole.empty() ? std::string("\x0a\x05" "ab", 4)
+  std::string truncated = whole.empty() ? std::string(
+                                              "\x0a\x05"
+                                              "ab",
+                                              4)
                                         : whole.substr(0, whole.size() - 1);
   requests.push_back({"truncated", "", truncated, NewMessage(type)->ParseFromString(truncated),
                       false, false, "", ""});
@@ -519,11 +554,11 @@ std::vector<Request> SweepRequests(const MethodDescriptor* method, int method_in
   std::mt19937 random(20261124u + static_cast<unsigned>(method_index));
   std::string noise(48, '\0');
   for (char& byte : noise) byte = static_cast<char>(random() & 0xff);
-  requests.push_back({"random", "", noise, NewMessage(type)->ParseFromString(noise), false, false,
-                      "", ""});
+  requests.push_back(
+      {"random", "", noise, NewMessage(type)->ParseFromString(noise), false, false, "", ""});
 
-  const auto preamble = SessionPreambles().find(absl::StrCat(
-      method->service()->full_name(), "/", method->name()));
+  const auto preamble =
+      SessionPreambles().find(absl::StrCat(method->service()->full_name(), "/", method->name()));
   if (preamble != SessionPreambles().end()) {
     for (size_t i = 0; i < requests.size(); ++i) {
       std::unique_ptr<Message> first = NewMessage(type);
@@ -545,8 +580,7 @@ struct CallOutcome {
 // One call with raw bytes, the same way for unary, server- and bidi-streaming methods: one
 // message, WritesDone, read until the end (or cancel a stream still open after the grace).
 CallOutcome CallRaw(const std::shared_ptr<grpc::Channel>& channel, const std::string& path,
-                    const std::string& preamble, const std::string& bytes,
-                    bool may_stay_open) {
+                    const std::string& preamble, const std::string& bytes, bool may_stay_open) {
   CallOutcome outcome;
   grpc::GenericStub stub(channel);
   grpc::CompletionQueue queue;
@@ -700,9 +734,9 @@ bool NamesMutatedField(absl::string_view error_field, const Request& request) {
   if (absl::StartsWith(error, field + ".")) return true;
   // Inside a message the mutation created, a default sibling may be the one that fails.
   const std::string root = request.created_root;
-  return !root.empty() && (error == root || absl::StartsWith(error, root + ".") ||
-                           absl::StrContains(error, "." + root + ".") ||
-                           absl::EndsWith(error, "." + root));
+  return !root.empty() &&
+         (error == root || absl::StartsWith(error, root + ".") ||
+          absl::StrContains(error, "." + root + ".") || absl::EndsWith(error, "." + root));
 }
 
 // "" while the process runs, else how it ended.
@@ -807,8 +841,8 @@ TEST_P(RequestSweepTest, EveryRpcSurvivesHostileRequests) {
         const CallOutcome outcome =
             CallRaw(channel_, path, request.preamble, request.bytes, may_stay_open);
         const grpc::Status& status = outcome.status;
-        const std::string code_name = absl::StatusCodeToString(
-            static_cast<absl::StatusCode>(status.error_code()));
+        const std::string code_name =
+            absl::StatusCodeToString(static_cast<absl::StatusCode>(status.error_code()));
 
         const std::optional<common::v1::ErrorInfo> status_info =
             GetDetail<common::v1::ErrorInfo>(status);
@@ -825,8 +859,7 @@ TEST_P(RequestSweepTest, EveryRpcSurvivesHostileRequests) {
           problems.push_back("an error without ErrorInfo");
         }
         if (status.error_message().size() > kMaxMessageBytes) {
-          problems.push_back(
-              absl::StrCat("message of ", status.error_message().size(), " bytes"));
+          problems.push_back(absl::StrCat("message of ", status.error_message().size(), " bytes"));
         }
         std::vector<common::v1::ErrorInfo> errors;
         bool rejected = !status.ok() && !outcome.cancelled_by_test;

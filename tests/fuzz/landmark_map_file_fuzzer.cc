@@ -26,6 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const uint64_t sum = Fnv1a64(file);
     file.append(reinterpret_cast<const char*>(&sum), sizeof(sum));
   }
-  (void)semnav::relocalization::ReadLandmarkMapFile(semnav::fuzz::WriteScratchFile("landmarks.snlm", file));
+  (void)semnav::relocalization::ReadLandmarkMapFile(
+      semnav::fuzz::WriteScratchFile("landmarks.snlm", file));
   return 0;
 }

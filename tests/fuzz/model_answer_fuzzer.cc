@@ -17,8 +17,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const AnthropicWire anthropic;
   static const DashScopeWire dashscope;
   const std::string body = semnav::fuzz::AsString(data, size);
-  for (const WireFormat* wire : {static_cast<const WireFormat*>(&openai), static_cast<const WireFormat*>(&anthropic),
-                                 static_cast<const WireFormat*>(&dashscope)}) {
+  for (const WireFormat* wire :
+       {static_cast<const WireFormat*>(&openai), static_cast<const WireFormat*>(&anthropic),
+        static_cast<const WireFormat*>(&dashscope)}) {
     (void)wire->ParseChat(body);
     (void)wire->ErrorMessage(body);
   }

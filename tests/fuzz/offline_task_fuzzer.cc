@@ -12,14 +12,16 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace semnav::modelproxy::offline;
   static const PlacePrior* prior = [] {
-    absl::StatusOr<PlacePrior> loaded = PlacePrior::Load(SEMNAV_MODELPROXY_PRIOR_DIR "/conceptnet-data.json");
+    absl::StatusOr<PlacePrior> loaded =
+        PlacePrior::Load(SEMNAV_MODELPROXY_PRIOR_DIR "/conceptnet-data.json");
     if (!loaded.ok()) {
       std::fprintf(stderr, "offline prior: %s\n", std::string(loaded.status().message()).c_str());
       std::abort();
     }
     return new PlacePrior(*std::move(loaded));
   }();
-  const nlohmann::json task = nlohmann::json::parse(data, data + size, nullptr, /*allow_exceptions=*/false);
+  const nlohmann::json task =
+      nlohmann::json::parse(data, data + size, nullptr, /*allow_exceptions=*/false);
   if (task.is_discarded()) return 0;
   (void)RunOfflineTask(task, *prior, OfflineParams());
   return 0;

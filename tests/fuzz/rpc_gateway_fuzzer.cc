@@ -30,10 +30,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     static PathPlanner* planner = new RobotLocalPlanner();
     auto hub = std::make_shared<GatewayHub>(config, shared_lexicon, planner, GatewayBackends());
     std::unique_ptr<semnav::ServiceHost> host = semnav::fuzz::LoopbackHost("semnav-gateway");
-    host->AddService(std::make_unique<OperatorServiceImpl>(hub), "semnav.reasoning.v1.OperatorService");
-    host->AddService(std::make_unique<RobotSessionServiceImpl>(hub), "semnav.reasoning.v1.RobotSessionService");
-    return new semnav::fuzz::RpcHarness(std::move(host), {"semnav.reasoning.v1.OperatorService",
-                                                          "semnav.reasoning.v1.RobotSessionService"});
+    host->AddService(std::make_unique<OperatorServiceImpl>(hub),
+                     "semnav.reasoning.v1.OperatorService");
+    host->AddService(std::make_unique<RobotSessionServiceImpl>(hub),
+                     "semnav.reasoning.v1.RobotSessionService");
+    return new semnav::fuzz::RpcHarness(
+        std::move(host),
+        {"semnav.reasoning.v1.OperatorService", "semnav.reasoning.v1.RobotSessionService"});
   }();
   harness->Call(data, size);
   return 0;

@@ -1,12 +1,12 @@
 #include "tests/fuzz/rpc_harness.h"
 
+#include <grpcpp/generic/generic_stub.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
-
-#include <grpcpp/generic/generic_stub.h>
 
 #include "absl/strings/str_cat.h"
 
@@ -47,7 +47,8 @@ RpcHarness::RpcHarness(std::unique_ptr<ServiceHost> host, const std::vector<std:
     std::fprintf(stderr, "service host: %s\n", started.ToString().c_str());
     std::abort();
   }
-  channel_ = grpc::CreateChannel(absl::StrCat("127.0.0.1:", host_->port()), grpc::InsecureChannelCredentials());
+  channel_ = grpc::CreateChannel(absl::StrCat("127.0.0.1:", host_->port()),
+                                 grpc::InsecureChannelCredentials());
   for (const std::string& name : services) {
     const google::protobuf::ServiceDescriptor* service =
         google::protobuf::DescriptorPool::generated_pool()->FindServiceByName(name);
@@ -67,7 +68,8 @@ void RpcHarness::Call(const uint8_t* data, size_t size) {
   grpc::CompletionQueue queue;
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + kCallDeadline);
-  std::unique_ptr<grpc::GenericClientAsyncReaderWriter> call = stub.PrepareCall(&context, path, &queue);
+  std::unique_ptr<grpc::GenericClientAsyncReaderWriter> call =
+      stub.PrepareCall(&context, path, &queue);
   // One operation is outstanding at a time, so the next event is the one awaited.
   auto await = [&](std::chrono::system_clock::time_point until) -> std::optional<bool> {
     void* tag = nullptr;
@@ -75,7 +77,8 @@ void RpcHarness::Call(const uint8_t* data, size_t size) {
     if (queue.AsyncNext(&tag, &ok, until) == grpc::CompletionQueue::TIMEOUT) return std::nullopt;
     return ok;
   };
-  const auto hard_limit = std::chrono::system_clock::now() + kCallDeadline + std::chrono::seconds(2);
+  const auto hard_limit =
+      std::chrono::system_clock::now() + kCallDeadline + std::chrono::seconds(2);
   bool hung = false;
   auto step = [&] {
     std::optional<bool> ok = await(hard_limit);
@@ -86,7 +89,8 @@ void RpcHarness::Call(const uint8_t* data, size_t size) {
   step();
   const std::vector<std::string> messages =
       method->client_streaming() ? SplitStreamMessages(data + 1, size - 1)
-                                 : std::vector<std::string>{std::string(reinterpret_cast<const char*>(data + 1), size - 1)};
+                                 : std::vector<std::string>{std::string(
+                                       reinterpret_cast<const char*>(data + 1), size - 1)};
   for (const std::string& message : messages) {
     grpc::Slice slice(message);
     grpc::ByteBuffer request(&slice, 1);
@@ -99,7 +103,8 @@ void RpcHarness::Call(const uint8_t* data, size_t size) {
     grpc::ByteBuffer response;
     call->Read(&response, nullptr);
     std::optional<bool> ok =
-        await(method->server_streaming() ? std::chrono::system_clock::now() + kOpenStreamGrace : hard_limit);
+        await(method->server_streaming() ? std::chrono::system_clock::now() + kOpenStreamGrace
+                                         : hard_limit);
     if (!ok && method->server_streaming()) {
       context.TryCancel();
       ok = await(hard_limit);
@@ -120,8 +125,10 @@ void RpcHarness::Call(const uint8_t* data, size_t size) {
     std::fprintf(stderr, "%s: the call did not end by its deadline\n", path.c_str());
     std::abort();
   }
-  if (status.error_code() == grpc::StatusCode::INTERNAL || status.error_code() == grpc::StatusCode::UNKNOWN) {
-    std::fprintf(stderr, "%s: %d %s\n", path.c_str(), status.error_code(), status.error_message().c_str());
+  if (status.error_code() == grpc::StatusCode::INTERNAL ||
+      status.error_code() == grpc::StatusCode::UNKNOWN) {
+    std::fprintf(stderr, "%s: %d %s\n", path.c_str(), status.error_code(),
+                 status.error_message().c_str());
     std::abort();
   }
 }

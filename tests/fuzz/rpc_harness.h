@@ -9,14 +9,14 @@
 // (a last incomplete one is sent as it is), so a session's hello can precede its state.
 #pragma once
 
+#include <google/protobuf/descriptor.h>
+#include <grpcpp/grpcpp.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <google/protobuf/descriptor.h>
-#include <grpcpp/grpcpp.h>
 
 #include "services/common/server/service_host.h"
 

@@ -19,10 +19,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       std::abort();
     }
     std::unique_ptr<semnav::ServiceHost> host = semnav::fuzz::LoopbackHost("semnav-model-proxy");
-    host->AddService(std::make_unique<ModelProxyServiceImpl>(std::move(built->proxy), built->default_alias,
-                                                             built->server.worker_threads),
-                     "semnav.modelproxy.v1.ModelProxyService");
-    return new semnav::fuzz::RpcHarness(std::move(host), {"semnav.modelproxy.v1.ModelProxyService"});
+    host->AddService(
+        std::make_unique<ModelProxyServiceImpl>(std::move(built->proxy), built->default_alias,
+                                                built->server.worker_threads),
+        "semnav.modelproxy.v1.ModelProxyService");
+    return new semnav::fuzz::RpcHarness(std::move(host),
+                                        {"semnav.modelproxy.v1.ModelProxyService"});
   }();
   harness->Call(data, size);
   return 0;

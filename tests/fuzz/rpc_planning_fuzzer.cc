@@ -13,13 +13,15 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static semnav::fuzz::RpcHarness* harness = [] {
     semnav::ConfigReader section = semnav::ConfigReader::Empty();
-    absl::StatusOr<semnav::planning::PlanningConfig> config = semnav::planning::PlanningConfig::FromYaml(section);
+    absl::StatusOr<semnav::planning::PlanningConfig> config =
+        semnav::planning::PlanningConfig::FromYaml(section);
     if (!config.ok()) std::abort();
     config->mapping.address = "127.0.0.1:1";
     absl::StatusOr<std::shared_ptr<grpc::Channel>> mapping = semnav::MakeChannel(config->mapping);
     if (!mapping.ok()) std::abort();
     std::unique_ptr<semnav::ServiceHost> host = semnav::fuzz::LoopbackHost("semnav-planning");
-    host->AddService(std::make_unique<semnav::planning::PlanningServiceImpl>(*std::move(config), *std::move(mapping)),
+    host->AddService(std::make_unique<semnav::planning::PlanningServiceImpl>(*std::move(config),
+                                                                             *std::move(mapping)),
                      "semnav.planning.v1.PlanningService");
     return new semnav::fuzz::RpcHarness(std::move(host), {"semnav.planning.v1.PlanningService"});
   }();

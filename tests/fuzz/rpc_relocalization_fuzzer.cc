@@ -15,12 +15,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     semnav::ConfigReader section = semnav::ConfigReader::Empty();
     absl::StatusOr<ServiceConfig> config = ServiceConfig::FromYaml(section);
     if (!config.ok()) std::abort();
-    absl::StatusOr<std::unique_ptr<LandmarkStore>> store = LandmarkStore::Open(config->storage_dir, config->merge);
+    absl::StatusOr<std::unique_ptr<LandmarkStore>> store =
+        LandmarkStore::Open(config->storage_dir, config->merge);
     if (!store.ok()) std::abort();
     std::unique_ptr<semnav::ServiceHost> host = semnav::fuzz::LoopbackHost("semnav-relocalization");
-    host->AddService(std::make_unique<RelocalizationServiceImpl>(*config, *std::move(store), nullptr),
-                     "semnav.relocalization.v1.RelocalizationService");
-    return new semnav::fuzz::RpcHarness(std::move(host), {"semnav.relocalization.v1.RelocalizationService"});
+    host->AddService(
+        std::make_unique<RelocalizationServiceImpl>(*config, *std::move(store), nullptr),
+        "semnav.relocalization.v1.RelocalizationService");
+    return new semnav::fuzz::RpcHarness(std::move(host),
+                                        {"semnav.relocalization.v1.RelocalizationService"});
   }();
   harness->Call(data, size);
   return 0;

@@ -51,7 +51,8 @@ void ReadServiceSection(uint8_t service, ConfigReader& root) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
-  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(semnav::fuzz::AsString(data + 1, size - 1));
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString(semnav::fuzz::AsString(data + 1, size - 1));
   if (!root.ok()) return 0;
   std::string level = "warning";
   root->Read("log_level", &level);

@@ -5,7 +5,8 @@
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string path = semnav::fuzz::WriteScratchFile("stack.yaml", semnav::fuzz::AsString(data, size));
+  const std::string path =
+      semnav::fuzz::WriteScratchFile("stack.yaml", semnav::fuzz::AsString(data, size));
   (void)semnav::launcher::LoadStackConfig(path);
   return 0;
 }

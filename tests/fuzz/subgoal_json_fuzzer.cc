@@ -33,7 +33,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   absl::StatusOr<std::vector<Subgoal>> subgoals = ParseModelSubgoals(text);
   if (subgoals.ok() && (subgoals->empty() || subgoals->size() > kMaxModelSubgoals)) std::abort();
   absl::StatusOr<SlowDecision> decision = ParseResolveAnswer(text, graph, SlowPathConfig());
-  if (decision.ok() && decision->action != SlowAction::kExplore && graph.FindObject(decision->object_id) == nullptr) {
+  if (decision.ok() && decision->action != SlowAction::kExplore &&
+      graph.FindObject(decision->object_id) == nullptr) {
     std::abort();  // a goal must be one of the graph's objects
   }
   return 0;

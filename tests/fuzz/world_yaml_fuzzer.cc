@@ -7,7 +7,8 @@
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  absl::StatusOr<semnav::sim::World> world = semnav::sim::ParseWorldYaml(semnav::fuzz::AsString(data, size));
+  absl::StatusOr<semnav::sim::World> world =
+      semnav::sim::ParseWorldYaml(semnav::fuzz::AsString(data, size));
   if (!world.ok()) return 0;
   // What was accepted must survive its own round trip.
   if (!semnav::sim::ParseWorldYaml(semnav::sim::WorldToYaml(*world)).ok()) std::abort();

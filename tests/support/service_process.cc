@@ -1,6 +1,7 @@
 #include "tests/support/service_process.h"
 
 #include <fcntl.h>
+#include <grpcpp/create_channel.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -10,8 +11,6 @@
 #include <algorithm>
 #include <cstring>
 #include <thread>
-
-#include <grpcpp/create_channel.h>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -55,10 +54,12 @@ ReadEnd ReadUntil(int fd, std::string& out, absl::Time deadline, Stop stop) {
 
 }  // namespace
 
-std::string BinaryPath(const std::string& binary) { return absl::StrCat(SEMNAV_BIN_DIR, "/", binary); }
+std::string BinaryPath(const std::string& binary) {
+  return absl::StrCat(SEMNAV_BIN_DIR, "/", binary);
+}
 
-absl::Status WaitForServing(const std::shared_ptr<grpc::Channel>& channel, const std::string& service,
-                            absl::Duration timeout) {
+absl::Status WaitForServing(const std::shared_ptr<grpc::Channel>& channel,
+                            const std::string& service, absl::Duration timeout) {
   auto stub = grpc::health::v1::Health::NewStub(channel);
   const absl::Time deadline = absl::Now() + timeout;
   std::string last = "no answer";
@@ -86,7 +87,8 @@ absl::StatusOr<std::unique_ptr<ServiceProcess>> ServiceProcess::Start(
     extra_args.push_back("127.0.0.1:0");
   }
   const std::string path = BinaryPath(binary);
-  if (::access(path.c_str(), X_OK) != 0) return absl::NotFoundError(absl::StrCat(path, " not built"));
+  if (::access(path.c_str(), X_OK) != 0)
+    return absl::NotFoundError(absl::StrCat(path, " not built"));
   int out[2];
   if (::pipe2(out, O_CLOEXEC) != 0) return absl::InternalError("pipe failed");
   const pid_t parent = ::getpid();

@@ -1,12 +1,11 @@
 #pragma once
 
+#include <grpcpp/channel.h>
 #include <sys/types.h>
 
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <grpcpp/channel.h>
 
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
@@ -56,7 +55,7 @@ absl::StatusOr<ProcessResult> RunToCompletion(const std::string& binary,
 std::string BinaryPath(const std::string& binary);
 
 // Waits until grpc.health.v1 on `channel` answers SERVING for `service` ("" = whole server).
-absl::Status WaitForServing(const std::shared_ptr<grpc::Channel>& channel, const std::string& service,
-                            absl::Duration timeout);
+absl::Status WaitForServing(const std::shared_ptr<grpc::Channel>& channel,
+                            const std::string& service, absl::Duration timeout);
 
 }  // namespace semnav::testing

@@ -19,8 +19,8 @@ absl::Status Bad(const std::string& flag, const std::string& text, absl::string_
 absl::StatusOr<Point2> ParsePoint(const std::string& flag, const std::string& text) {
   std::vector<std::string> parts = absl::StrSplit(text, ',');
   Point2 point;
-  if (parts.size() != 2 || !absl::SimpleAtod(parts[0], &point.x) || !absl::SimpleAtod(parts[1], &point.y) ||
-      !std::isfinite(point.x) || !std::isfinite(point.y)) {
+  if (parts.size() != 2 || !absl::SimpleAtod(parts[0], &point.x) ||
+      !absl::SimpleAtod(parts[1], &point.y) || !std::isfinite(point.x) || !std::isfinite(point.y)) {
     return Bad(flag, text, "a point X,Y in metres");
   }
   return point;
@@ -36,7 +36,8 @@ absl::StatusOr<double> ParseNumber(const std::string& flag, const std::string& t
 
 absl::StatusOr<int64_t> ParseCount(const std::string& flag, const std::string& text, int64_t min) {
   int64_t value = 0;
-  if (!absl::SimpleAtoi(text, &value) || value < min) return Bad(flag, text, absl::StrCat("a whole number >= ", min));
+  if (!absl::SimpleAtoi(text, &value) || value < min)
+    return Bad(flag, text, absl::StrCat("a whole number >= ", min));
   return value;
 }
 

@@ -46,13 +46,15 @@ std::string ExitCodeHelp() {
       {ExitCode::kInvalidArgument, "the service rejected a field (INVALID_ARGUMENT, OUT_OF_RANGE)"},
       {ExitCode::kFailedPrecondition,
        "failed precondition: lease held by another, e-stop active, task finished"},
-      {ExitCode::kPermissionDenied, "missing or wrong token or certificate (UNAUTHENTICATED, PERMISSION_DENIED)"},
+      {ExitCode::kPermissionDenied,
+       "missing or wrong token or certificate (UNAUTHENTICATED, PERMISSION_DENIED)"},
       {ExitCode::kResourceExhausted, "rate or size limit (RESOURCE_EXHAUSTED)"},
       {ExitCode::kTaskFailed, "the followed task ended FAILED"},
       {ExitCode::kTaskCancelled, "the followed task ended CANCELLED"},
   };
   std::string out;
-  for (const Row& row : kRows) absl::StrAppendFormat(&out, "  %2d  %s\n", ToInt(row.code), row.meaning);
+  for (const Row& row : kRows)
+    absl::StrAppendFormat(&out, "  %2d  %s\n", ToInt(row.code), row.meaning);
   return out;
 }
 

@@ -27,8 +27,9 @@ TEST(ExitCodesTest, EachStatusCodeMapsToItsDocumentedExitCode) {
 
 TEST(ExitCodesTest, HelpListsEveryCodeOnce) {
   const std::string help = ExitCodeHelp();
-  for (const char* line : {"   0  ok", "   2  usage error", "   3  service unreachable", "   5  not found",
-                           "  10  the followed task ended FAILED", "  11  the followed task ended CANCELLED"}) {
+  for (const char* line :
+       {"   0  ok", "   2  usage error", "   3  service unreachable", "   5  not found",
+        "  10  the followed task ended FAILED", "  11  the followed task ended CANCELLED"}) {
     EXPECT_NE(help.find(line), std::string::npos) << line << "\n" << help;
   }
   EXPECT_EQ(std::count(help.begin(), help.end(), '\n'), 12);

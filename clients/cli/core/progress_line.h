@@ -14,9 +14,9 @@ struct TaskProgress {
   double progress = 0.0;    // [0, 1]
   int current_subgoal = 0;  // 0-based index; == subgoal_count when done
   int subgoal_count = 0;
-  std::string step;         // active subgoal, e.g. "FIND cup"; empty when done
-  std::string phase;        // e.g. "exploring"; empty before start
-  std::string reason;       // latest decision or failure reason
+  std::string step;    // active subgoal, e.g. "FIND cup"; empty when done
+  std::string phase;   // e.g. "exploring"; empty before start
+  std::string reason;  // latest decision or failure reason
 };
 
 // "task-3  RUNNING    [######--------------]  30%  step 2/5 FIND cup  exploring  -- reason".

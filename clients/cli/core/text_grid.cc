@@ -30,13 +30,14 @@ absl::StatusOr<uint8_t> CellValue(char c) {
       return kUnknown;
     default:
       if (c >= '1' && c <= '9') return static_cast<uint8_t>(c - '0');
-      return absl::InvalidArgumentError(absl::StrCat("unknown cell character '", std::string(1, c), "'"));
+      return absl::InvalidArgumentError(
+          absl::StrCat("unknown cell character '", std::string(1, c), "'"));
   }
 }
 
 // Reads "height H" / "width W" header lines; returns the lines after "map".
-absl::StatusOr<std::vector<absl::string_view>> SkipHeader(std::vector<absl::string_view> lines, int* height,
-                                                         int* width) {
+absl::StatusOr<std::vector<absl::string_view>> SkipHeader(std::vector<absl::string_view> lines,
+                                                          int* height, int* width) {
   std::size_t i = 0;
   for (; i < lines.size() && lines[i] != "map"; ++i) {
     std::vector<absl::string_view> words = absl::StrSplit(lines[i], ' ', absl::SkipEmpty());
@@ -62,7 +63,8 @@ absl::StatusOr<TextGrid> ParseTextGrid(std::string_view text) {
   int header_height = -1;
   int header_width = -1;
   if (!lines.empty() && absl::StartsWith(lines[0], "type")) {
-    absl::StatusOr<std::vector<absl::string_view>> rows = SkipHeader(lines, &header_height, &header_width);
+    absl::StatusOr<std::vector<absl::string_view>> rows =
+        SkipHeader(lines, &header_height, &header_width);
     if (!rows.ok()) return rows.status();
     lines = *std::move(rows);
   }
@@ -78,14 +80,16 @@ absl::StatusOr<TextGrid> ParseTextGrid(std::string_view text) {
     for (int col = 0; col < grid.width; ++col) {
       absl::StatusOr<uint8_t> value = CellValue(lines[row][col]);
       if (!value.ok()) {
-        return absl::InvalidArgumentError(absl::StrCat("row ", row, " column ", col, ": ", value.status().message()));
+        return absl::InvalidArgumentError(
+            absl::StrCat("row ", row, " column ", col, ": ", value.status().message()));
       }
       grid.cells.push_back(*value);
     }
   }
-  if ((header_height >= 0 && header_height != grid.height) || (header_width >= 0 && header_width != grid.width)) {
-    return absl::InvalidArgumentError(absl::StrCat("header says ", header_width, "x", header_height, ", rows are ",
-                                                   grid.width, "x", grid.height));
+  if ((header_height >= 0 && header_height != grid.height) ||
+      (header_width >= 0 && header_width != grid.width)) {
+    return absl::InvalidArgumentError(absl::StrCat("header says ", header_width, "x", header_height,
+                                                   ", rows are ", grid.width, "x", grid.height));
   }
   return grid;
 }

@@ -14,7 +14,8 @@ TEST(TextGridTest, PlainRowsMapToHierarchicalValues) {
 }
 
 TEST(TextGridTest, MovingAiHeaderIsSkippedAndChecked) {
-  absl::StatusOr<TextGrid> grid = ParseTextGrid("type octile\nheight 2\nwidth 3\nmap\n.T.\r\nS.W\n");
+  absl::StatusOr<TextGrid> grid =
+      ParseTextGrid("type octile\nheight 2\nwidth 3\nmap\n.T.\r\nS.W\n");
   ASSERT_TRUE(grid.ok()) << grid.status();
   EXPECT_EQ(grid->cells, (std::vector<uint8_t>{0, 100, 0, 0, 0, 100}));
   EXPECT_EQ(ParseTextGrid("type octile\nheight 3\nwidth 3\nmap\n...\n").status().message(),
@@ -23,7 +24,8 @@ TEST(TextGridTest, MovingAiHeaderIsSkippedAndChecked) {
 
 TEST(TextGridTest, RaggedRowsAndUnknownCharactersAreRejected) {
   EXPECT_EQ(ParseTextGrid("...\n..\n").status().message(), "row 1 has 2 cells, row 0 has 3");
-  EXPECT_EQ(ParseTextGrid("..x\n").status().message(), "row 0 column 2: unknown cell character 'x'");
+  EXPECT_EQ(ParseTextGrid("..x\n").status().message(),
+            "row 0 column 2: unknown cell character 'x'");
   EXPECT_FALSE(ParseTextGrid("\n\n").ok());
 }
 

@@ -10,7 +10,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "absl/strings/str_split.h"
@@ -43,7 +42,8 @@ std::string WriteFile(const std::string& name, const std::string& content, mode_
   return path;
 }
 
-std::unique_ptr<ServiceProcess> StartService(const std::string& binary, const std::string& config_name = "",
+std::unique_ptr<ServiceProcess> StartService(const std::string& binary,
+                                             const std::string& config_name = "",
                                              const std::string& config = "") {
   std::vector<std::string> args;
   if (!config.empty()) args = {"--config", WriteFile(config_name, config)};
@@ -56,7 +56,8 @@ std::unique_ptr<ServiceProcess> StartService(const std::string& binary, const st
 std::vector<nlohmann::json> JsonLines(const std::string& output) {
   std::vector<nlohmann::json> objects;
   for (absl::string_view line : absl::StrSplit(output, '\n')) {
-    if (!line.empty() && line.front() == '{') objects.push_back(nlohmann::json::parse(std::string(line)));
+    if (!line.empty() && line.front() == '{')
+      objects.push_back(nlohmann::json::parse(std::string(line)));
   }
   return objects;
 }
@@ -134,7 +135,8 @@ class CliContractTest : public ::testing::Test {
         {"--relocalization-addr", relocalization_->address()},
         {"--modelproxy-addr", modelproxy_->address()}};
     for (const auto& [flag, address] : addresses) {
-      if (std::find(args.begin(), args.end(), flag) == args.end()) args.insert(args.end(), {flag, address});
+      if (std::find(args.begin(), args.end(), flag) == args.end())
+        args.insert(args.end(), {flag, address});
     }
     absl::StatusOr<ProcessResult> result = semnav::testing::RunToCompletion("semnavctl", args);
     EXPECT_TRUE(result.ok()) << result.status();
@@ -168,14 +170,15 @@ TEST_F(CliContractTest, HealthOfEveryServiceAndUnreachableExitCode) {
   for (const auto& service : json["services"]) EXPECT_EQ(service["status"], "SERVING") << service;
 
   // Nothing listens on port 1.
-  const ProcessResult down = Ctl({"health", "--service", "planning", "--planning-addr", "127.0.0.1:1"});
+  const ProcessResult down =
+      Ctl({"health", "--service", "planning", "--planning-addr", "127.0.0.1:1"});
   EXPECT_EQ(down.exit_code, 3) << down.output;
   EXPECT_THAT(down.output, HasSubstr("UNAVAILABLE"));
 }
 
 TEST_F(CliContractTest, SubmittedTaskWaitsForTheRobotAndCanBeListedWatchedAndCancelled) {
-  const nlohmann::json submitted = CtlJson({"task", "submit", "go", "to", "the", "kitchen", "--robot", "lonely",
-                                            "--no-follow"});
+  const nlohmann::json submitted =
+      CtlJson({"task", "submit", "go", "to", "the", "kitchen", "--robot", "lonely", "--no-follow"});
   const std::string task_id = submitted["task_id"];
   ASSERT_FALSE(task_id.empty());
   // No robot session: the task waits.
@@ -207,12 +210,13 @@ TEST_F(CliContractTest, SubmittedTaskWaitsForTheRobotAndCanBeListedWatchedAndCan
   // Control calls on a finished task are refused as a failed precondition naming the task.
   const ProcessResult paused = Ctl({"task", "pause", task_id});
   EXPECT_EQ(paused.exit_code, 7) << paused.output;
-  EXPECT_THAT(paused.output, HasSubstr("FAILED_PRECONDITION: task_id: task " + task_id + " already finished"));
+  EXPECT_THAT(paused.output,
+              HasSubstr("FAILED_PRECONDITION: task_id: task " + task_id + " already finished"));
 }
 
 TEST_F(CliContractTest, CtrlCDetachesFromAFollowedTaskWhichGoesOn) {
-  std::vector<std::string> args = {"task", "submit", "wait", "--robot", "detach", "--gateway-addr",
-                                   gateway_->address()};
+  std::vector<std::string> args = {
+      "task", "submit", "wait", "--robot", "detach", "--gateway-addr", gateway_->address()};
   const ProcessResult detached = InterruptWhenReady(args, "PENDING");
   EXPECT_EQ(detached.exit_code, 0) << detached.output;
   EXPECT_THAT(detached.output, HasSubstr("detached; the task goes on"));
@@ -220,9 +224,12 @@ TEST_F(CliContractTest, CtrlCDetachesFromAFollowedTaskWhichGoesOn) {
   ASSERT_EQ(listed["tasks"].size(), 1u) << listed;
   EXPECT_EQ(listed["tasks"][0]["status"], "TASK_STATUS_PENDING");
   // Ctrl-C ends an event watch cleanly too (a second task makes sure events follow id 1).
-  ASSERT_EQ(Ctl({"task", "submit", "look", "around", "--robot", "detach", "--no-follow"}).exit_code, 0);
-  const ProcessResult stopped = InterruptWhenReady(
-      {"events", "watch", "--gateway-addr", gateway_->address(), "--robot", "detach", "--since", "1"}, "TASK_CREATED");
+  ASSERT_EQ(Ctl({"task", "submit", "look", "around", "--robot", "detach", "--no-follow"}).exit_code,
+            0);
+  const ProcessResult stopped =
+      InterruptWhenReady({"events", "watch", "--gateway-addr", gateway_->address(), "--robot",
+                          "detach", "--since", "1"},
+                         "TASK_CREATED");
   EXPECT_EQ(stopped.exit_code, 0) << stopped.output;
 }
 
@@ -247,23 +254,29 @@ TEST_F(CliContractTest, TypedErrorExitCodes) {
 }
 
 TEST_F(CliContractTest, LeaseAndEmergencyStop) {
-  const nlohmann::json lease = CtlJson({"lease", "acquire", "--robot", "r2", "--holder", "alice", "--ttl", "60"});
+  const nlohmann::json lease =
+      CtlJson({"lease", "acquire", "--robot", "r2", "--holder", "alice", "--ttl", "60"});
   const std::string lease_id = lease["lease"]["lease_id"];
   ASSERT_FALSE(lease_id.empty());
   EXPECT_EQ(Ctl({"lease", "acquire", "--robot", "r2", "--holder", "bob"}).exit_code, 7);
   // The robot's lease is held: submitting without it is refused, with it accepted.
   EXPECT_EQ(Ctl({"task", "submit", "wait", "--robot", "r2", "--no-follow"}).exit_code, 7);
-  const nlohmann::json submitted =
-      CtlJson({"task", "submit", "look", "around", "--robot", "r2", "--lease", lease_id, "--no-follow"});
+  const nlohmann::json submitted = CtlJson(
+      {"task", "submit", "look", "around", "--robot", "r2", "--lease", lease_id, "--no-follow"});
   const std::string task_id = submitted["task_id"];
 
-  const nlohmann::json stopped = CtlJson({"estop", "trigger", "--robot", "r2", "--reason", "drill"});
-  EXPECT_THAT(stopped["cancelled_task_ids"].get<std::vector<std::string>>(), ::testing::Contains(task_id));
+  const nlohmann::json stopped =
+      CtlJson({"estop", "trigger", "--robot", "r2", "--reason", "drill"});
+  EXPECT_THAT(stopped["cancelled_task_ids"].get<std::vector<std::string>>(),
+              ::testing::Contains(task_id));
   EXPECT_EQ(CtlJson({"task", "get", task_id})["task"]["status"], "TASK_STATUS_CANCELLED");
-  const ProcessResult refused = Ctl({"task", "submit", "wait", "--robot", "r2", "--lease", lease_id, "--no-follow"});
+  const ProcessResult refused =
+      Ctl({"task", "submit", "wait", "--robot", "r2", "--lease", lease_id, "--no-follow"});
   EXPECT_EQ(refused.exit_code, 7) << refused.output;
   EXPECT_EQ(Ctl({"estop", "clear", "--robot", "r2", "--lease", lease_id}).exit_code, 0);
-  EXPECT_EQ(Ctl({"task", "submit", "wait", "--robot", "r2", "--lease", lease_id, "--no-follow"}).exit_code, 0);
+  EXPECT_EQ(Ctl({"task", "submit", "wait", "--robot", "r2", "--lease", lease_id, "--no-follow"})
+                .exit_code,
+            0);
   EXPECT_EQ(Ctl({"lease", "release", lease_id}).exit_code, 0);
   EXPECT_EQ(Ctl({"lease", "acquire", "--robot", "r2", "--holder", "bob"}).exit_code, 0);
 }
@@ -272,7 +285,8 @@ TEST_F(CliContractTest, EventsReplayAfterAnId) {
   for (const char* text : {"wait", "look around"}) {
     ASSERT_EQ(Ctl({"task", "submit", text, "--robot", "ev", "--no-follow"}).exit_code, 0);
   }
-  const ProcessResult replay = Ctl({"events", "watch", "--robot", "ev", "--since", "1", "--count", "2", "--json"});
+  const ProcessResult replay =
+      Ctl({"events", "watch", "--robot", "ev", "--since", "1", "--count", "2", "--json"});
   EXPECT_EQ(replay.exit_code, 0) << replay.output;
   const std::vector<nlohmann::json> events = JsonLines(replay.output);
   ASSERT_EQ(events.size(), 2u) << replay.output;
@@ -281,7 +295,8 @@ TEST_F(CliContractTest, EventsReplayAfterAnId) {
   EXPECT_GT(first, 1u);
   EXPECT_GT(std::stoull(events[1]["event"]["event_id"].get<std::string>()), first);
   for (const auto& event : events) EXPECT_EQ(event["event"]["robot_id"], "ev") << event;
-  const ProcessResult text = Ctl({"events", "watch", "--robot", "ev", "--since", "1", "--count", "1"});
+  const ProcessResult text =
+      Ctl({"events", "watch", "--robot", "ev", "--since", "1", "--count", "1"});
   EXPECT_EQ(text.exit_code, 0) << text.output;
   EXPECT_THAT(text.output, HasSubstr("robot=ev"));
 }
@@ -312,22 +327,23 @@ TEST_F(CliContractTest, SceneGraphTableMapsAndPlanOnTheLiveMap) {
 TEST_F(CliContractTest, PlanOnATextGridPrintsLengthAndRollFlySplit) {
   // A wall in the middle row: the 2D planner goes round it, 1 + 4 + 1 = 6 cells.
   const std::string wall = WriteFile("wall.txt", ".....\n.###.\n.....\n");
-  const nlohmann::json around =
-      CtlJson({"plan", "path", "--grid", wall, "--planner", "astar", "--from", "0.5,1.5", "--to", "4.5,1.5"});
+  const nlohmann::json around = CtlJson({"plan", "path", "--grid", wall, "--planner", "astar",
+                                         "--from", "0.5,1.5", "--to", "4.5,1.5"});
   EXPECT_DOUBLE_EQ(around["length_m"].get<double>(), 6.0) << around;
-  const ProcessResult text =
-      Ctl({"plan", "path", "--grid", wall, "--planner", "astar", "--from", "0.5,1.5", "--to", "4.5,1.5"});
+  const ProcessResult text = Ctl({"plan", "path", "--grid", wall, "--planner", "astar", "--from",
+                                  "0.5,1.5", "--to", "4.5,1.5"});
   EXPECT_THAT(text.output, HasSubstr("length 6.00 m  (roll 6.00 m, fly 0.00 m"));
 
   // One corridor with a low obstacle: jump-astar must fly over it.
   const std::string corridor = WriteFile("corridor.txt", "..2..\n");
-  const nlohmann::json over =
-      CtlJson({"plan", "path", "--grid", corridor, "--planner", "jump-astar", "--from", "0.5,0.5", "--to", "4.5,0.5"});
+  const nlohmann::json over = CtlJson({"plan", "path", "--grid", corridor, "--planner",
+                                       "jump-astar", "--from", "0.5,0.5", "--to", "4.5,0.5"});
   EXPECT_GT(over["fly_m"].get<double>(), 0.0) << over;
-  EXPECT_NEAR(over["fly_m"].get<double>() + over["roll_m"].get<double>(), over["length_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(over["fly_m"].get<double>() + over["roll_m"].get<double>(),
+              over["length_m"].get<double>(), 1e-9);
   EXPECT_GT(over["energy_j"].get<double>(), 0.0);
-  EXPECT_THAT(Ctl({"plan", "path", "--grid", corridor, "--planner", "jump-astar", "--from", "0.5,0.5", "--to",
-                   "4.5,0.5"})
+  EXPECT_THAT(Ctl({"plan", "path", "--grid", corridor, "--planner", "jump-astar", "--from",
+                   "0.5,0.5", "--to", "4.5,0.5"})
                   .output,
               HasSubstr("FLYING"));
 
@@ -341,44 +357,57 @@ TEST_F(CliContractTest, PlanOnATextGridPrintsLengthAndRollFlySplit) {
 
 TEST_F(CliContractTest, RelocalizeObservedLandmarksInALandmarkMap) {
   // Six objects with distinct one-hot descriptors; the robot sees them shifted by (-1, -2, 0).
-  const double positions[6][3] = {{0, 0, 0.5}, {3, 0, 0.8}, {0, 4, 0.4}, {3, 4, 1.2}, {1.5, 2, 0.3}, {5, 1, 0.9}};
+  const double positions[6][3] = {{0, 0, 0.5}, {3, 0, 0.8},   {0, 4, 0.4},
+                                  {3, 4, 1.2}, {1.5, 2, 0.3}, {5, 1, 0.9}};
   nlohmann::json landmarks = nlohmann::json::array();
   nlohmann::json observed = nlohmann::json::array();
   for (int i = 0; i < 6; ++i) {
     std::vector<float> embedding(6, 0.0f);
     embedding[i] = 1.0f;
-    landmarks.push_back({{"position", {{"x", positions[i][0]}, {"y", positions[i][1]}, {"z", positions[i][2]}}},
-                         {"scale_m", 0.5 + 0.1 * i},
-                         {"embedding", embedding}});
-    observed.push_back({{"position", {{"x", positions[i][0] - 1}, {"y", positions[i][1] - 2}, {"z", positions[i][2]}}},
-                        {"scale_m", 0.5 + 0.1 * i},
-                        {"embedding", embedding}});
+    landmarks.push_back(
+        {{"position", {{"x", positions[i][0]}, {"y", positions[i][1]}, {"z", positions[i][2]}}},
+         {"scale_m", 0.5 + 0.1 * i},
+         {"embedding", embedding}});
+    observed.push_back(
+        {{"position",
+          {{"x", positions[i][0] - 1}, {"y", positions[i][1] - 2}, {"z", positions[i][2]}}},
+         {"scale_m", 0.5 + 0.1 * i},
+         {"embedding", embedding}});
   }
-  const std::string map_file = WriteFile("landmarks.json", nlohmann::json{{"landmarks", landmarks}}.dump());
-  const std::string observed_file = WriteFile("observed.json", nlohmann::json{{"observed", observed}}.dump());
-  EXPECT_EQ(CtlJson({"reloc", "upsert", "--map-id", "office", "--landmarks", map_file})["inserted"], 6);
+  const std::string map_file =
+      WriteFile("landmarks.json", nlohmann::json{{"landmarks", landmarks}}.dump());
+  const std::string observed_file =
+      WriteFile("observed.json", nlohmann::json{{"observed", observed}}.dump());
+  EXPECT_EQ(CtlJson({"reloc", "upsert", "--map-id", "office", "--landmarks", map_file})["inserted"],
+            6);
   EXPECT_THAT(Ctl({"reloc", "show", "--map-id", "office"}).output, HasSubstr("6 landmarks"));
 
-  const nlohmann::json pose = CtlJson({"reloc", "relocalize", "--map-id", "office", "--observed", observed_file});
+  const nlohmann::json pose =
+      CtlJson({"reloc", "relocalize", "--map-id", "office", "--observed", observed_file});
   const nlohmann::json& position = pose["solution"]["map_from_query"]["position"];
   EXPECT_NEAR(position["x"].get<double>(), 1.0, 1e-3) << pose;
   EXPECT_NEAR(position["y"].get<double>(), 2.0, 1e-3) << pose;
   EXPECT_GE(pose["solution"]["inlier_count"].get<int>(), 3);
-  EXPECT_THAT(Ctl({"reloc", "relocalize", "--map-id", "office", "--observed", observed_file}).output,
-              HasSubstr("translation (1.000, 2.000, 0.000) m"));
-  EXPECT_EQ(Ctl({"reloc", "relocalize", "--map-id", "nowhere", "--observed", observed_file}).exit_code, 5);
+  EXPECT_THAT(
+      Ctl({"reloc", "relocalize", "--map-id", "office", "--observed", observed_file}).output,
+      HasSubstr("translation (1.000, 2.000, 0.000) m"));
+  EXPECT_EQ(
+      Ctl({"reloc", "relocalize", "--map-id", "nowhere", "--observed", observed_file}).exit_code,
+      5);
 }
 
 // semnavctl health of one service at `address` with extra flags, without the suite's addresses.
 ProcessResult HealthOf(const std::string& address, const std::vector<std::string>& extra) {
-  std::vector<std::string> args = {"health", "--service", "relocalization", "--relocalization-addr", address};
+  std::vector<std::string> args = {"health", "--service", "relocalization", "--relocalization-addr",
+                                   address};
   args.insert(args.end(), extra.begin(), extra.end());
   absl::StatusOr<ProcessResult> result = semnav::testing::RunToCompletion("semnavctl", args);
   EXPECT_TRUE(result.ok()) << result.status();
   return result.ok() ? *result : ProcessResult{};
 }
 
-std::unique_ptr<ServiceProcess> StartSecured(const std::string& config_name, const std::string& config) {
+std::unique_ptr<ServiceProcess> StartSecured(const std::string& config_name,
+                                             const std::string& config) {
   absl::StatusOr<std::unique_ptr<ServiceProcess>> process = ServiceProcess::Start(
       "semnav-relocalization", {"--config", WriteFile(config_name, config)}, absl::Seconds(20),
       /*wait_for_health=*/false);
@@ -391,10 +420,11 @@ TEST_F(CliContractTest, TlsServiceNeedsTheCa) {
   const std::string cert = Folder() + "/server.crt";
   const std::string command =
       "openssl req -x509 -newkey rsa:2048 -nodes -days 2 -subj /CN=localhost -addext "
-      "subjectAltName=DNS:localhost,IP:127.0.0.1 -keyout " + key + " -out " + cert + " 2>/dev/null";
+      "subjectAltName=DNS:localhost,IP:127.0.0.1 -keyout " +
+      key + " -out " + cert + " 2>/dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << "openssl is needed (deploy/install-deps.sh)";
-  std::unique_ptr<ServiceProcess> secured =
-      StartSecured("tls.yaml", "server:\n  tls:\n    cert_file: " + cert + "\n    key_file: " + key + "\n");
+  std::unique_ptr<ServiceProcess> secured = StartSecured(
+      "tls.yaml", "server:\n  tls:\n    cert_file: " + cert + "\n    key_file: " + key + "\n");
   ASSERT_NE(secured, nullptr);
   const ProcessResult verified = HealthOf(secured->address(), {"--tls-ca", cert});
   EXPECT_EQ(verified.exit_code, 0) << verified.output;

@@ -60,10 +60,12 @@ int main(int argc, char** argv) {
   int worlds = 2;
   int trials = 5;
   uint64_t seed = 1;
-  if (auto v = flags.Get("worlds"); v && (!absl::SimpleAtoi(*v, &worlds) || worlds < 1 || worlds > 100)) {
+  if (auto v = flags.Get("worlds");
+      v && (!absl::SimpleAtoi(*v, &worlds) || worlds < 1 || worlds > 100)) {
     return Fail(absl::InvalidArgumentError("--worlds: a number in [1, 100]"));
   }
-  if (auto v = flags.Get("trials"); v && (!absl::SimpleAtoi(*v, &trials) || trials < 1 || trials > 1000)) {
+  if (auto v = flags.Get("trials");
+      v && (!absl::SimpleAtoi(*v, &trials) || trials < 1 || trials > 1000)) {
     return Fail(absl::InvalidArgumentError("--trials: a number in [1, 1000]"));
   }
   if (auto v = flags.Get("seed"); v && !absl::SimpleAtoi(*v, &seed)) {
@@ -75,12 +77,13 @@ int main(int argc, char** argv) {
             defaults.max_look_arounds > 10)) {
     return Fail(absl::InvalidArgumentError("--look-arounds: a number in [1, 10]"));
   }
-  if (auto v = flags.Get("move-m");
-      v && (!absl::SimpleAtod(*v, &defaults.move_m) || !(defaults.move_m >= 0.5 && defaults.move_m <= 20))) {
+  if (auto v = flags.Get("move-m"); v && (!absl::SimpleAtod(*v, &defaults.move_m) ||
+                                          !(defaults.move_m >= 0.5 && defaults.move_m <= 20))) {
     return Fail(absl::InvalidArgumentError("--move-m: a number in [0.5, 20]"));
   }
-  const std::string work_dir =
-      (std::filesystem::temp_directory_path() / absl::StrCat("semnav-bench-multirobot-", ::getpid())).string();
+  const std::string work_dir = (std::filesystem::temp_directory_path() /
+                                absl::StrCat("semnav-bench-multirobot-", ::getpid()))
+                                   .string();
   absl::StatusOr<std::unique_ptr<loop::TwoRobotStack>> stack =
       loop::TwoRobotStack::Start(semnav::ExecutableDir(), work_dir);
   if (!stack.ok()) return Fail(stack.status());
@@ -89,14 +92,15 @@ int main(int argc, char** argv) {
   report["worlds"] = nlohmann::json::array();
   std::vector<double> error_m, error_deg, ratios, route_ratios, align_ms;
   int total = 0, aligned = 0, reliable = 0, succeeded = 0, within_ratio = 0;
-  std::printf("%-20s %5s %-14s %4s %5s %7s %8s %8s %7s %7s %6s  %s\n", "world", "trial", "target", "look", "inl", "err_m",
-              "err_deg", "path_m", "short_m", "ratio", "ok", "failure");
+  std::printf("%-20s %5s %-14s %4s %5s %7s %8s %8s %7s %7s %6s  %s\n", "world", "trial", "target",
+              "look", "inl", "err_m", "err_deg", "path_m", "short_m", "ratio", "ok", "failure");
   for (int w = 1; w <= worlds; ++w) {
     loop::TwoRobotOptions options = defaults;
     options.world_seed = static_cast<uint64_t>(w);
     options.trials = trials;
     options.trial_seed = seed;
-    absl::StatusOr<loop::TwoRobotWorldResult> result = loop::RunTwoRobotWorld(options, (*stack)->endpoints());
+    absl::StatusOr<loop::TwoRobotWorldResult> result =
+        loop::RunTwoRobotWorld(options, (*stack)->endpoints());
     if (!result.ok()) return Fail(result.status());
     nlohmann::json world = {{"world", result->world},
                             {"a_viewpoints", result->a_viewpoints},
@@ -118,9 +122,13 @@ int main(int argc, char** argv) {
         route_ratios.push_back(t.route_ratio);
         within_ratio += t.path_ratio <= 1.3 ? 1 : 0;
       }
-      std::printf("%-20s %5d %-14s %4d %5d %7.3f %8.2f %8.2f %7.2f %7.3f %6s  %s\n", result->world.c_str(), t.index,
-                  t.target_label.c_str(), t.look_arounds, t.inliers, t.alignment_error_m, t.alignment_error_deg, t.path_m,
-                  t.shortest_m, t.path_ratio, t.success ? "yes" : "no", absl::StrCat(t.failure, t.aligned ? absl::StrFormat(" (rms %.3f m)", t.rms_residual_m) : "").c_str());
+      std::printf("%-20s %5d %-14s %4d %5d %7.3f %8.2f %8.2f %7.2f %7.3f %6s  %s\n",
+                  result->world.c_str(), t.index, t.target_label.c_str(), t.look_arounds, t.inliers,
+                  t.alignment_error_m, t.alignment_error_deg, t.path_m, t.shortest_m, t.path_ratio,
+                  t.success ? "yes" : "no",
+                  absl::StrCat(t.failure,
+                               t.aligned ? absl::StrFormat(" (rms %.3f m)", t.rms_residual_m) : "")
+                      .c_str());
       world["trials"].push_back({{"trial", t.index},
                                  {"target_id", t.target_id},
                                  {"target_label", t.target_label},
@@ -165,10 +173,12 @@ int main(int argc, char** argv) {
                        {"median_align_ms", Median(align_ms)}};
   std::printf(
       "\ntrials %d  aligned %d  reliable %d  success %.3f  success with path <= 1.3x %.3f\n"
-      "alignment error median %.3f m / %.2f deg, max %.3f m / %.2f deg; path ratio median %.3f, max %.3f; "
+      "alignment error median %.3f m / %.2f deg, max %.3f m / %.2f deg; path ratio median %.3f, "
+      "max %.3f; "
       "route ratio after alignment median %.3f, max %.3f; AlignMaps median %.2f ms\n",
-      total, aligned, reliable, success_rate, within_ratio_rate, Median(error_m), Median(error_deg), Max(error_m),
-      Max(error_deg), Median(ratios), Max(ratios), Median(route_ratios), Max(route_ratios), Median(align_ms));
+      total, aligned, reliable, success_rate, within_ratio_rate, Median(error_m), Median(error_deg),
+      Max(error_m), Max(error_deg), Median(ratios), Max(ratios), Median(route_ratios),
+      Max(route_ratios), Median(align_ms));
   if (auto path = flags.Get("json")) {
     std::ofstream(*path) << report.dump(2) << "\n";
   }

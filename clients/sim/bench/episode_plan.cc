@@ -19,7 +19,8 @@ namespace {
 // A target an episode can score: reachable from the start on the body's true raster (l_i
 // exists) and not already within the success radius there (l_i > 0). Object-navigation
 // datasets drop the other draws the same way.
-bool Scorable(const World& world, const GroundTruthGrid& grid, const StartPose& start, const std::string& label) {
+bool Scorable(const World& world, const GroundTruthGrid& grid, const StartPose& start,
+              const std::string& label) {
   const Eigen::Vector2d at = start.position.head<2>();
   const SuccessRegion region = SuccessRegion::Build(world, label, grid, kDefaultSuccessRadius);
   return !region.Contains(at) && loop::NearestSuccessPoint(region, grid, at).has_value();
@@ -49,19 +50,21 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
     for (const ObjectInstance& o : world.objects) label_set.insert(o.label);
     const std::vector<std::string> labels(label_set.begin(), label_set.end());
     // The indoor group keeps the draw it always had, so earlier indoor numbers stay comparable.
-    Rng rng(modality == Modality::kGround ? MixSeed(seed, static_cast<uint64_t>(i))
-                                          : MixSeed(MixSeed(seed, static_cast<uint64_t>(modality) + 100),
-                                                    static_cast<uint64_t>(i)));
+    Rng rng(modality == Modality::kGround
+                ? MixSeed(seed, static_cast<uint64_t>(i))
+                : MixSeed(MixSeed(seed, static_cast<uint64_t>(modality) + 100),
+                          static_cast<uint64_t>(i)));
     loop::EpisodeSpec spec;
     spec.world = world;
     spec.start_index = starts[(i / count) % starts.size()];
     const StartPose& start = world.starts[spec.start_index];
-    const GroundTruthGrid grid =
-        RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
+    const GroundTruthGrid grid = RasterizeOccupancy(
+        world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
     // Draw again while the label cannot be scored; a scorable first draw is what it always was.
     bool scorable = false;
     for (size_t attempt = 0; attempt < 4 * labels.size() && !scorable; ++attempt) {
-      spec.target_label = labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];
+      spec.target_label =
+          labels[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(labels.size()) - 1))];
       scorable = Scorable(world, grid, start, spec.target_label);
     }
     for (size_t k = 0; k < labels.size() && !scorable; ++k) {
@@ -70,9 +73,10 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
     }
     if (!scorable) {
       if (unscorable != nullptr) {
-        unscorable->push_back(absl::StrCat(group, " episode ", i, ": ", world.name, " start ", spec.start_index,
-                                           ": no scorable target (every label is unreachable from the start or "
-                                           "already within its success region); left out"));
+        unscorable->push_back(
+            absl::StrCat(group, " episode ", i, ": ", world.name, " start ", spec.start_index,
+                         ": no scorable target (every label is unreachable from the start or "
+                         "already within its success region); left out"));
       }
       continue;
     }
@@ -86,13 +90,15 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
 
 // A free cell of the body's true raster between min and max distance from `from`, drawn by `rng`
 // (nullopt when 200 draws find none).
-std::optional<Pose> KidnapDestination(const World& world, const StartPose& start, const KidnapPlan& kidnap, Rng& rng) {
-  const GroundTruthGrid grid =
-      RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
+std::optional<Pose> KidnapDestination(const World& world, const StartPose& start,
+                                      const KidnapPlan& kidnap, Rng& rng) {
+  const GroundTruthGrid grid = RasterizeOccupancy(
+      world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
   for (int attempt = 0; attempt < 200; ++attempt) {
     const double angle = rng.Uniform(-M_PI, M_PI);
     const double distance = rng.Uniform(kidnap.min_distance_m, kidnap.max_distance_m);
-    const Eigen::Vector2d at = start.position.head<2>() + distance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    const Eigen::Vector2d at =
+        start.position.head<2>() + distance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
     const std::optional<Eigen::Vector2i> cell = grid.CellOf(at);
     if (!cell.has_value() || grid.at(cell->x(), cell->y()) != 0) continue;
     return Pose{Eigen::Vector3d(at.x(), at.y(), start.position.z()), rng.Uniform(-M_PI, M_PI)};
@@ -101,9 +107,9 @@ std::optional<Pose> KidnapDestination(const World& world, const StartPose& start
 }
 
 // Copies of the first `count` ground episodes for a pose-loss group.
-void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count, const std::string& group, uint64_t seed,
-                       const KidnapPlan* kidnap, std::vector<loop::EpisodeSpec>& plan,
-                       std::vector<std::string>* unscorable) {
+void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count,
+                       const std::string& group, uint64_t seed, const KidnapPlan* kidnap,
+                       std::vector<loop::EpisodeSpec>& plan, std::vector<std::string>* unscorable) {
   for (int i = 0; i < count && i < static_cast<int>(ground.size()); ++i) {
     loop::EpisodeSpec spec = ground[static_cast<size_t>(i)];
     spec.sensors.odometry.enabled = true;  // the simulator's default noise (OdometryDriftConfig)
@@ -113,7 +119,8 @@ void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count, 
     spec.report_group = group;
     if (kidnap != nullptr) {
       Rng rng(MixSeed(MixSeed(seed, 200), static_cast<uint64_t>(i)));
-      spec.kidnap_to = KidnapDestination(spec.world, spec.world.starts[spec.start_index], *kidnap, rng);
+      spec.kidnap_to =
+          KidnapDestination(spec.world, spec.world.starts[spec.start_index], *kidnap, rng);
       spec.kidnap_at_s = kidnap->at_s;
       if (!spec.kidnap_to.has_value()) {
         if (unscorable != nullptr) {
@@ -129,15 +136,17 @@ void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count, 
 
 }  // namespace
 
-std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
-                                            uint64_t seed, std::vector<std::string>* unscorable,
+std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds,
+                                            const EpisodeCounts& counts, uint64_t seed,
+                                            std::vector<std::string>* unscorable,
                                             const KidnapPlan& kidnap) {
   std::vector<loop::EpisodeSpec> plan;
   PlanGroup(worlds, Modality::kGround, counts.indoor, seed, plan, unscorable);
   if (counts.drift > 0 || counts.kidnapped > 0) {
     // The pose-loss groups rerun the indoor episodes (the same draw, so pairs line up).
     std::vector<loop::EpisodeSpec> ground;
-    PlanGroup(worlds, Modality::kGround, std::max(counts.drift, counts.kidnapped), seed, ground, nullptr);
+    PlanGroup(worlds, Modality::kGround, std::max(counts.drift, counts.kidnapped), seed, ground,
+              nullptr);
     PlanPoseLossGroup(ground, counts.drift, "drift", seed, nullptr, plan, unscorable);
     PlanPoseLossGroup(ground, counts.kidnapped, "kidnapped", seed, &kidnap, plan, unscorable);
   }

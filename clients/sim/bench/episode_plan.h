@@ -25,7 +25,7 @@ struct EpisodeCounts {
 
 // Where the kidnapped group's robots are carried and when.
 struct KidnapPlan {
-  double at_s = 60.0;        // simulated seconds into the episode
+  double at_s = 60.0;           // simulated seconds into the episode
   double min_distance_m = 2.0;  // from the start, on free space of the body's true raster
   double max_distance_m = 5.0;
 };
@@ -38,8 +38,9 @@ struct KidnapPlan {
 // name order; when none can be scored the episode is left out and `unscorable` (if given) gets
 // a line saying which world and start. Every fourth episode (i mod 4 = 3) names its target in
 // Chinese (ChineseName). Groups come in the order indoor, outdoor, flyroll.
-std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds, const EpisodeCounts& counts,
-                                            uint64_t seed, std::vector<std::string>* unscorable = nullptr,
+std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds,
+                                            const EpisodeCounts& counts, uint64_t seed,
+                                            std::vector<std::string>* unscorable = nullptr,
                                             const KidnapPlan& kidnap = {});
 
 }  // namespace semnav::sim::bench

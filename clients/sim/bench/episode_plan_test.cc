@@ -14,7 +14,8 @@ World WithObject(const std::string& name, Modality modality, const std::string& 
   World world = testing::OpenWorld();
   world.name = name;
   world.starts[0].modality = modality;
-  world.objects.push_back(testing::Object(label + "_1", label, testing::Box(3.0, 3.0, 0.5, 0.5, 0.8)));
+  world.objects.push_back(
+      testing::Object(label + "_1", label, testing::Box(3.0, 3.0, 0.5, 0.5, 0.8)));
   return world;
 }
 
@@ -47,13 +48,18 @@ TEST(SimBenchEpisodePlanTest, TargetsAreReachableAndNotAtTheStart) {
   // OpenWorld's start is at the origin. A chair walled in on all sides, a bottle 0.5 m from the
   // start: only the sink can be an episode's target.
   World world = WithObject("home", Modality::kGround, "sink");
-  world.objects.push_back(testing::Object("chair_1", "chair", testing::Box(-3.0, 3.0, 0.5, 0.5, 0.8)));
-  for (const auto& [x, y, sx, sy] : std::vector<std::array<double, 4>>{
-           {-3.0, 4.0, 2.1, 0.1}, {-3.0, 2.0, 2.1, 0.1}, {-4.0, 3.0, 0.1, 2.1}, {-2.0, 3.0, 0.1, 2.1}}) {
+  world.objects.push_back(
+      testing::Object("chair_1", "chair", testing::Box(-3.0, 3.0, 0.5, 0.5, 0.8)));
+  for (const auto& [x, y, sx, sy] : std::vector<std::array<double, 4>>{{-3.0, 4.0, 2.1, 0.1},
+                                                                       {-3.0, 2.0, 2.1, 0.1},
+                                                                       {-4.0, 3.0, 0.1, 2.1},
+                                                                       {-2.0, 3.0, 0.1, 2.1}}) {
     world.obstacles.push_back(Obstacle{"wall", Rgb{}, testing::Box(x, y, sx, sy, 2.0)});
   }
-  world.objects.push_back(testing::Object("bottle_1", "bottle", testing::Box(0.6, 0.0, 0.2, 0.2, 0.3)));
-  for (const loop::EpisodeSpec& spec : PlanEpisodes({world}, {12, 0, 0}, 3)) EXPECT_EQ(spec.target_label, "sink");
+  world.objects.push_back(
+      testing::Object("bottle_1", "bottle", testing::Box(0.6, 0.0, 0.2, 0.2, 0.3)));
+  for (const loop::EpisodeSpec& spec : PlanEpisodes({world}, {12, 0, 0}, 3))
+    EXPECT_EQ(spec.target_label, "sink");
 }
 
 // A world whose only object is walled in: no draw can be scored, so the plan leaves the
@@ -61,9 +67,12 @@ TEST(SimBenchEpisodePlanTest, TargetsAreReachableAndNotAtTheStart) {
 TEST(SimBenchEpisodePlanTest, UnscorableEpisodesAreLeftOutAndNamed) {
   World world = testing::OpenWorld();
   world.name = "sealed";
-  world.objects.push_back(testing::Object("chair_1", "chair", testing::Box(-3.0, 3.0, 0.5, 0.5, 0.8)));
-  for (const auto& [x, y, sx, sy] : std::vector<std::array<double, 4>>{
-           {-3.0, 4.0, 2.1, 0.1}, {-3.0, 2.0, 2.1, 0.1}, {-4.0, 3.0, 0.1, 2.1}, {-2.0, 3.0, 0.1, 2.1}}) {
+  world.objects.push_back(
+      testing::Object("chair_1", "chair", testing::Box(-3.0, 3.0, 0.5, 0.5, 0.8)));
+  for (const auto& [x, y, sx, sy] : std::vector<std::array<double, 4>>{{-3.0, 4.0, 2.1, 0.1},
+                                                                       {-3.0, 2.0, 2.1, 0.1},
+                                                                       {-4.0, 3.0, 0.1, 2.1},
+                                                                       {-2.0, 3.0, 0.1, 2.1}}) {
     world.obstacles.push_back(Obstacle{"wall", Rgb{}, testing::Box(x, y, sx, sy, 2.0)});
   }
   std::vector<std::string> unscorable;
@@ -73,7 +82,8 @@ TEST(SimBenchEpisodePlanTest, UnscorableEpisodesAreLeftOutAndNamed) {
   ASSERT_EQ(plan.size(), 2u);
   for (const loop::EpisodeSpec& spec : plan) EXPECT_EQ(spec.world.name, "home");
   ASSERT_EQ(unscorable.size(), 2u);
-  EXPECT_NE(unscorable[0].find("indoor episode 0: sealed start 0: no scorable target"), std::string::npos)
+  EXPECT_NE(unscorable[0].find("indoor episode 0: sealed start 0: no scorable target"),
+            std::string::npos)
       << unscorable[0];
 }
 
@@ -102,8 +112,9 @@ TEST(SimBenchEpisodePlanTest, PoseLossGroupsRerunTheIndoorEpisodesWithDriftAndAK
   for (int k = 3; k < 5; ++k) {
     ASSERT_TRUE(plan[k].kidnap_to.has_value());
     EXPECT_EQ(plan[k].report_group, "kidnapped");
-    const double distance =
-        (plan[k].kidnap_to->position.head<2>() - worlds[0].starts[plan[k].start_index].position.head<2>()).norm();
+    const double distance = (plan[k].kidnap_to->position.head<2>() -
+                             worlds[0].starts[plan[k].start_index].position.head<2>())
+                                .norm();
     EXPECT_GE(distance, 2.0);
     EXPECT_LE(distance, 5.0);
     EXPECT_DOUBLE_EQ(plan[k].kidnap_at_s, 60.0);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 
@@ -22,7 +22,8 @@ nlohmann::json PoseLossJson(const PoseLossSummary& s) {
           {"losses", s.losses},
           {"recoveries", s.recoveries},
           {"recovered_on_target", s.recovered_on_target},
-          {"recovered_on_target_share", s.losses > 0 ? static_cast<double>(s.recovered_on_target) / s.losses : 0.0},
+          {"recovered_on_target_share",
+           s.losses > 0 ? static_cast<double>(s.recovered_on_target) / s.losses : 0.0},
           {"median_recovery_time_s", s.median_recovery_time_s},
           {"mean_recovery_error_m", s.mean_recovery_error_m},
           {"mean_recovery_error_deg", s.mean_recovery_error_deg},
@@ -37,22 +38,26 @@ nlohmann::json PoseLossJson(const PoseLossSummary& s) {
 std::string PoseLossTable(const std::vector<PoseLossSummary>& summaries) {
   std::string table = absl::StrFormat(
       "\nLocalization (a recovery on target: within %.0f s, %.1f m and %.0f deg):\n\n"
-      "| strategy | episodes | losses | recoveries | on target | median time (s) | error after (m / deg) | "
+      "| strategy | episodes | losses | recoveries | on target | median time (s) | error after (m "
+      "/ deg) | "
       "final error (m) | SR / SPL | same episodes without drift: SR / SPL (episodes) |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n",
       kRecoveryTimeTargetS, kRecoveryErrorTargetM, kRecoveryErrorTargetDeg);
   for (const PoseLossSummary& s : summaries) {
-    absl::StrAppend(&table, absl::StrFormat("| %s | %d | %d | %d | %d | %.1f | %.2f / %.1f | %.2f | %.3f / %.3f | "
-                                            "%.3f / %.3f (%d) |\n",
-                                            s.strategy, s.episodes, s.losses, s.recoveries, s.recovered_on_target,
-                                            s.median_recovery_time_s, s.mean_recovery_error_m,
-                                            s.mean_recovery_error_deg, s.mean_final_pose_error_m, s.sr, s.spl,
-                                            s.sr_without_drift, s.spl_without_drift, s.paired));
+    absl::StrAppend(
+        &table,
+        absl::StrFormat("| %s | %d | %d | %d | %d | %.1f | %.2f / %.1f | %.2f | %.3f / %.3f | "
+                        "%.3f / %.3f (%d) |\n",
+                        s.strategy, s.episodes, s.losses, s.recoveries, s.recovered_on_target,
+                        s.median_recovery_time_s, s.mean_recovery_error_m,
+                        s.mean_recovery_error_deg, s.mean_final_pose_error_m, s.sr, s.spl,
+                        s.sr_without_drift, s.spl_without_drift, s.paired));
   }
   return table;
 }
 
-std::vector<EpisodeRecord> InGroup(const std::vector<EpisodeRecord>& records, const std::string& group) {
+std::vector<EpisodeRecord> InGroup(const std::vector<EpisodeRecord>& records,
+                                   const std::string& group) {
   std::vector<EpisodeRecord> out;
   for (const EpisodeRecord& r : records) {
     if (r.group == group) out.push_back(r);
@@ -145,8 +150,9 @@ std::string SweepLabel(const std::string& strategy, double accuracy) {
   return absl::StrFormat("%s@%.2f", strategy, accuracy);
 }
 
-std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records, const std::string& group,
-                                     const std::string& strategy, const std::vector<double>& accuracies) {
+std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records,
+                                     const std::string& group, const std::string& strategy,
+                                     const std::vector<double>& accuracies) {
   const std::vector<EpisodeRecord> in_group = InGroup(records, group);
   const std::vector<StrategySummary> summaries = SummariseByStrategy(in_group);
   std::vector<SweepPoint> points;
@@ -176,7 +182,8 @@ std::vector<PoseLossSummary> SummarisePoseLoss(const std::vector<EpisodeRecord>&
   std::vector<PoseLossSummary> out;
   std::map<std::string, std::vector<double>> times;
   for (const EpisodeRecord& r : group) {
-    auto it = std::find_if(out.begin(), out.end(), [&](const PoseLossSummary& s) { return s.strategy == r.strategy; });
+    auto it = std::find_if(out.begin(), out.end(),
+                           [&](const PoseLossSummary& s) { return s.strategy == r.strategy; });
     if (it == out.end()) {
       out.emplace_back();
       out.back().strategy = r.strategy;
@@ -190,7 +197,8 @@ std::vector<PoseLossSummary> SummarisePoseLoss(const std::vector<EpisodeRecord>&
       times[r.strategy].push_back(r.recovery_times_s[k]);
       s.mean_recovery_error_m += r.recovery_errors_m[k];
       s.mean_recovery_error_deg += r.recovery_errors_deg[k];
-      if (r.recovery_times_s[k] <= kRecoveryTimeTargetS && r.recovery_errors_m[k] <= kRecoveryErrorTargetM &&
+      if (r.recovery_times_s[k] <= kRecoveryTimeTargetS &&
+          r.recovery_errors_m[k] <= kRecoveryErrorTargetM &&
           r.recovery_errors_deg[k] <= kRecoveryErrorTargetDeg) {
         ++s.recovered_on_target;
       }
@@ -198,15 +206,16 @@ std::vector<PoseLossSummary> SummarisePoseLoss(const std::vector<EpisodeRecord>&
     s.mean_final_pose_error_m += r.final_pose_error_m;
     // The indoor twin: same strategy, world, start and target.
     for (const EpisodeRecord& twin : indoor) {
-      if (twin.strategy != r.strategy || twin.world != r.world || twin.start_index != r.start_index ||
-          twin.target != r.target) {
+      if (twin.strategy != r.strategy || twin.world != r.world ||
+          twin.start_index != r.start_index || twin.target != r.target) {
         continue;
       }
       ++s.paired;
       s.sr += r.success ? 1.0 : 0.0;
       s.spl += SuccessWeightedPathLength(r.success, r.shortest_path_m, r.path_m);
       s.sr_without_drift += twin.success ? 1.0 : 0.0;
-      s.spl_without_drift += SuccessWeightedPathLength(twin.success, twin.shortest_path_m, twin.path_m);
+      s.spl_without_drift +=
+          SuccessWeightedPathLength(twin.success, twin.shortest_path_m, twin.path_m);
       break;
     }
   }
@@ -214,13 +223,15 @@ std::vector<PoseLossSummary> SummarisePoseLoss(const std::vector<EpisodeRecord>&
     std::vector<double>& t = times[s.strategy];
     if (!t.empty()) {
       std::sort(t.begin(), t.end());
-      s.median_recovery_time_s = t.size() % 2 == 1 ? t[t.size() / 2] : 0.5 * (t[t.size() / 2 - 1] + t[t.size() / 2]);
+      s.median_recovery_time_s =
+          t.size() % 2 == 1 ? t[t.size() / 2] : 0.5 * (t[t.size() / 2 - 1] + t[t.size() / 2]);
       s.mean_recovery_error_m /= static_cast<double>(t.size());
       s.mean_recovery_error_deg /= static_cast<double>(t.size());
     }
     s.mean_final_pose_error_m /= std::max(1, s.episodes);
     if (s.paired > 0) {
-      for (double* mean : {&s.sr, &s.spl, &s.sr_without_drift, &s.spl_without_drift}) *mean /= s.paired;
+      for (double* mean : {&s.sr, &s.spl, &s.sr_without_drift, &s.spl_without_drift})
+        *mean /= s.paired;
     }
   }
   return out;
@@ -243,8 +254,10 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
     for (const StrategySummary& s : summaries) {
       strategies[s.strategy] = StrategyJson(s);
       energy[s.strategy] = s.energy_j;
-      if (const std::optional<double> r = PathVsExplorationOnly(summaries, s)) ratio[s.strategy] = *r;
-      if (const std::optional<PairedRatio> p = PathVsExplorationOnlyBothFound(in_group, s.strategy)) {
+      if (const std::optional<double> r = PathVsExplorationOnly(summaries, s))
+        ratio[s.strategy] = *r;
+      if (const std::optional<PairedRatio> p =
+              PathVsExplorationOnlyBothFound(in_group, s.strategy)) {
         both_found[s.strategy] = {{"ratio", p->ratio}, {"episodes", p->episodes}};
       }
     }
@@ -265,15 +278,28 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
   for (const auto& [strategy, reason] : not_run) out["not_run"][strategy] = reason;
   nlohmann::json rows = nlohmann::json::array();
   for (const EpisodeRecord& r : records) {
-    rows.push_back({{"strategy", r.strategy}, {"group", r.group}, {"world", r.world}, {"target", r.target},
-                    {"success", r.success}, {"shortest_path_m", r.shortest_path_m}, {"path_m", r.path_m},
-                    {"dtg_m", r.distance_to_goal_m}, {"time_s", r.time_s}, {"energy_j", r.energy_j},
-                    {"model_calls", r.model_calls}, {"model_tokens", r.model_tokens},
-                    {"model_wait_s", r.model_wait_s}, {"vision_calls", r.vision_calls},
+    rows.push_back({{"strategy", r.strategy},
+                    {"group", r.group},
+                    {"world", r.world},
+                    {"target", r.target},
+                    {"success", r.success},
+                    {"shortest_path_m", r.shortest_path_m},
+                    {"path_m", r.path_m},
+                    {"dtg_m", r.distance_to_goal_m},
+                    {"time_s", r.time_s},
+                    {"energy_j", r.energy_j},
+                    {"model_calls", r.model_calls},
+                    {"model_tokens", r.model_tokens},
+                    {"model_wait_s", r.model_wait_s},
+                    {"vision_calls", r.vision_calls},
                     {"fast_path", r.goals_fast_path},
-                    {"failure_cause", r.failure_cause}, {"start_index", r.start_index}, {"losses", r.losses},
-                    {"recovery_times_s", r.recovery_times_s}, {"recovery_errors_m", r.recovery_errors_m},
-                    {"recovery_errors_deg", r.recovery_errors_deg}, {"final_pose_error_m", r.final_pose_error_m}});
+                    {"failure_cause", r.failure_cause},
+                    {"start_index", r.start_index},
+                    {"losses", r.losses},
+                    {"recovery_times_s", r.recovery_times_s},
+                    {"recovery_errors_m", r.recovery_errors_m},
+                    {"recovery_errors_deg", r.recovery_errors_deg},
+                    {"final_pose_error_m", r.final_pose_error_m}});
   }
   out["episodes"] = rows;
   std::ofstream file(path);
@@ -282,33 +308,40 @@ absl::Status WriteMissionJson(const std::vector<EpisodeRecord>& records, double 
   return absl::OkStatus();
 }
 
-std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius, const NotRun& not_run) {
+std::string MissionTable(const std::vector<EpisodeRecord>& records, double success_radius,
+                         const NotRun& not_run) {
   std::string table = absl::StrFormat("Success radius %.2f m\n", success_radius);
   for (const char* group : kGroups) {
     const std::vector<EpisodeRecord> in_group = InGroup(records, group);
     const std::vector<StrategySummary> summaries = SummariseByStrategy(in_group);
     if (summaries.empty()) continue;
-    absl::StrAppend(&table, "\n### ", group, "\n\n",
-                    "| strategy | episodes | SR | SPL | DTG (m) | path (m) | path / exploration-only | "
-                    "same, both found (episodes) | time (s) | energy (J) | model calls | fast-path share |\n"
-                    "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    absl::StrAppend(
+        &table, "\n### ", group, "\n\n",
+        "| strategy | episodes | SR | SPL | DTG (m) | path (m) | path / exploration-only | "
+        "same, both found (episodes) | time (s) | energy (J) | model calls | fast-path share |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const StrategySummary& s : summaries) {
       const std::optional<double> ratio = PathVsExplorationOnly(summaries, s);
-      const std::optional<PairedRatio> paired = PathVsExplorationOnlyBothFound(in_group, s.strategy);
-      absl::StrAppend(&table, absl::StrFormat("| %s | %d | %.3f | %.3f | %.2f | %.2f | %s | %s | %.1f | %.0f | %.2f | %.2f |\n",
-                                              s.strategy, s.episodes, s.sr, s.spl, s.dtg_m, s.path_m,
-                                              ratio.has_value() ? absl::StrFormat("%.2f", *ratio) : "-",
-                                              paired.has_value()
-                                                  ? absl::StrFormat("%.2f (%d)", paired->ratio, paired->episodes)
-                                                  : "-",
-                                              s.time_s, s.energy_j, s.model_calls, s.fast_path_share));
+      const std::optional<PairedRatio> paired =
+          PathVsExplorationOnlyBothFound(in_group, s.strategy);
+      absl::StrAppend(
+          &table,
+          absl::StrFormat(
+              "| %s | %d | %.3f | %.3f | %.2f | %.2f | %s | %s | %.1f | %.0f | %.2f | %.2f |\n",
+              s.strategy, s.episodes, s.sr, s.spl, s.dtg_m, s.path_m,
+              ratio.has_value() ? absl::StrFormat("%.2f", *ratio) : "-",
+              paired.has_value() ? absl::StrFormat("%.2f (%d)", paired->ratio, paired->episodes)
+                                 : "-",
+              s.time_s, s.energy_j, s.model_calls, s.fast_path_share));
     }
     absl::StrAppend(&table, FailureTable(summaries));
     if (PoseLossGroup(group)) {
-      absl::StrAppend(&table, PoseLossTable(SummarisePoseLoss(in_group, InGroup(records, "indoor"))));
+      absl::StrAppend(&table,
+                      PoseLossTable(SummarisePoseLoss(in_group, InGroup(records, "indoor"))));
     }
   }
-  for (const auto& [strategy, reason] : not_run) absl::StrAppend(&table, "\n", strategy, " not run: ", reason, "\n");
+  for (const auto& [strategy, reason] : not_run)
+    absl::StrAppend(&table, "\n", strategy, " not run: ", reason, "\n");
   return table;
 }
 

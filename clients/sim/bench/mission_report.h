@@ -26,13 +26,13 @@ struct PoseLossSummary {
   int episodes = 0;
   int losses = 0;
   int recoveries = 0;
-  int recovered_on_target = 0;       // recoveries within the time and error targets
+  int recovered_on_target = 0;          // recoveries within the time and error targets
   double median_recovery_time_s = 0.0;  // over recoveries; 0 when none
   double mean_recovery_error_m = 0.0;
   double mean_recovery_error_deg = 0.0;
   double mean_final_pose_error_m = 0.0;
-  int paired = 0;  // episodes with an indoor twin
-  double sr = 0.0, spl = 0.0;                            // over the paired episodes
+  int paired = 0;                                          // episodes with an indoor twin
+  double sr = 0.0, spl = 0.0;                              // over the paired episodes
   double sr_without_drift = 0.0, spl_without_drift = 0.0;  // their indoor twins
 };
 std::vector<PoseLossSummary> SummarisePoseLoss(const std::vector<EpisodeRecord>& group,
@@ -76,8 +76,9 @@ struct SweepPoint {
   double model_calls = 0.0;   // mean per episode
 };
 // One point per accuracy (in the order given) from the records of `group`.
-std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records, const std::string& group,
-                                     const std::string& strategy, const std::vector<double>& accuracies);
+std::vector<SweepPoint> SweepSummary(const std::vector<EpisodeRecord>& records,
+                                     const std::string& group, const std::string& strategy,
+                                     const std::vector<double>& accuracies);
 
 // One table per group (Markdown, also printed to the console) followed by its failed episodes
 // by cause, then the strategies not run.

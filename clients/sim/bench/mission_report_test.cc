@@ -9,17 +9,69 @@ namespace semnav::sim::bench {
 namespace {
 
 std::vector<EpisodeRecord> Episodes() {
-  EpisodeRecord hit{"NEAREST_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 1600.0, 1, 1, 1, "indoor", ""};
-  EpisodeRecord miss{"NEAREST_FRONTIER", "home_2", "tv", false, 3.0, 6.0, 2.5, 40.0, 2400.0, 3, 1, 0, "indoor", ""};
-  EpisodeRecord uav_base{"NEAREST_FRONTIER", "outdoor_road_vehicles", "car", true, 10.0, 40.0, 0.8, 50.0, 0.0, 0, 1, 1,
-                         "outdoor", ""};
-  EpisodeRecord uav{"SEMANTIC_FRONTIER", "outdoor_road_vehicles", "car", true, 10.0, 20.0, 0.6, 30.0, 0.0, 0, 1, 1,
-                    "outdoor", ""};
+  EpisodeRecord hit{
+      "NEAREST_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 1600.0, 1, 1, 1,
+      "indoor",           ""};
+  EpisodeRecord miss{
+      "NEAREST_FRONTIER", "home_2", "tv", false, 3.0, 6.0, 2.5, 40.0, 2400.0, 3, 1, 0,
+      "indoor",           ""};
+  EpisodeRecord uav_base{"NEAREST_FRONTIER",
+                         "outdoor_road_vehicles",
+                         "car",
+                         true,
+                         10.0,
+                         40.0,
+                         0.8,
+                         50.0,
+                         0.0,
+                         0,
+                         1,
+                         1,
+                         "outdoor",
+                         ""};
+  EpisodeRecord uav{"SEMANTIC_FRONTIER",
+                    "outdoor_road_vehicles",
+                    "car",
+                    true,
+                    10.0,
+                    20.0,
+                    0.6,
+                    30.0,
+                    0.0,
+                    0,
+                    1,
+                    1,
+                    "outdoor",
+                    ""};
   // The baseline gave up after 80 m here: only the first outdoor pair counts as "both found".
-  EpisodeRecord uav_base_miss{"NEAREST_FRONTIER", "outdoor_river_bridge", "boat", false, 10.0, 80.0, 9.0, 250.0, 0.0,
-                              0, 0, 0, "outdoor", ""};
-  EpisodeRecord uav_hit{"SEMANTIC_FRONTIER", "outdoor_river_bridge", "boat", true, 10.0, 10.0, 0.4, 20.0, 0.0, 0, 1, 1,
-                        "outdoor", ""};
+  EpisodeRecord uav_base_miss{"NEAREST_FRONTIER",
+                              "outdoor_river_bridge",
+                              "boat",
+                              false,
+                              10.0,
+                              80.0,
+                              9.0,
+                              250.0,
+                              0.0,
+                              0,
+                              0,
+                              0,
+                              "outdoor",
+                              ""};
+  EpisodeRecord uav_hit{"SEMANTIC_FRONTIER",
+                        "outdoor_river_bridge",
+                        "boat",
+                        true,
+                        10.0,
+                        10.0,
+                        0.4,
+                        20.0,
+                        0.0,
+                        0,
+                        1,
+                        1,
+                        "outdoor",
+                        ""};
   miss.failure_cause = "budget_spent_exploring";
   hit.model_tokens = 1000;  // the simulated VLM's figures: the miss had none
   hit.model_wait_s = 2.5;
@@ -30,7 +82,8 @@ std::vector<EpisodeRecord> Episodes() {
 
 TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   const std::string path = ::testing::TempDir() + "/mission_report_test.json";
-  ASSERT_TRUE(WriteMissionJson(Episodes(), 1.0, {{"EROI_UTILITY", "no model configured"}}, path).ok());
+  ASSERT_TRUE(
+      WriteMissionJson(Episodes(), 1.0, {{"EROI_UTILITY", "no model configured"}}, path).ok());
   const nlohmann::json json = nlohmann::json::parse(std::ifstream(path));
   // The headline is the indoor group, with exactly the keys.
   const nlohmann::json& s = json["strategies"]["NEAREST_FRONTIER"];
@@ -50,17 +103,20 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
   EXPECT_FALSE(json["strategies"].contains("SEMANTIC_FRONTIER"));  // outdoor only
   EXPECT_DOUBLE_EQ(json["groups"]["indoor"]["energy_j"]["NEAREST_FRONTIER"], 2000.0);
   const nlohmann::json& outdoor = json["groups"]["outdoor"];
-  EXPECT_DOUBLE_EQ(outdoor["strategies"]["SEMANTIC_FRONTIER"]["spl"], 0.75);  // (10 / 20 + 10 / 10) / 2
+  EXPECT_DOUBLE_EQ(outdoor["strategies"]["SEMANTIC_FRONTIER"]["spl"],
+                   0.75);  // (10 / 20 + 10 / 10) / 2
   EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only"]["SEMANTIC_FRONTIER"], 0.25);  // 15 m / 60 m
   EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only"]["NEAREST_FRONTIER"], 1.0);
-  EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only_both_found"]["SEMANTIC_FRONTIER"]["ratio"], 0.5);  // 20 / 40
+  EXPECT_DOUBLE_EQ(outdoor["path_vs_exploration_only_both_found"]["SEMANTIC_FRONTIER"]["ratio"],
+                   0.5);  // 20 / 40
   EXPECT_EQ(outdoor["path_vs_exploration_only_both_found"]["SEMANTIC_FRONTIER"]["episodes"], 1);
   EXPECT_EQ(json["not_run"]["EROI_UTILITY"], "no model configured");
   EXPECT_DOUBLE_EQ(json["success_radius_m"], 1.0);
   EXPECT_EQ(json["episodes"].size(), 6u);
   EXPECT_EQ(json["episodes"][2]["group"], "outdoor");
   // Failures by cause per strategy and group; a strategy without failures has an empty map.
-  EXPECT_EQ(outdoor["strategies"]["NEAREST_FRONTIER"]["failures"], nlohmann::json({{"collision_loop", 1}}));
+  EXPECT_EQ(outdoor["strategies"]["NEAREST_FRONTIER"]["failures"],
+            nlohmann::json({{"collision_loop", 1}}));
   EXPECT_TRUE(outdoor["strategies"]["SEMANTIC_FRONTIER"]["failures"].empty());
   EXPECT_EQ(json["episodes"][1]["failure_cause"], "budget_spent_exploring");
   EXPECT_EQ(json["episodes"][0]["failure_cause"], "");
@@ -71,26 +127,45 @@ TEST(SimBenchMissionReportTest, JsonHoldsTheSeedFormulasPerStrategyAndGroup) {
 }
 
 TEST(SimBenchMissionReportTest, TableStatesTheRadiusAndOneRowPerStrategyAndGroup) {
-  const std::string table = MissionTable(Episodes(), 1.0, {{"EROI_UTILITY", "no model configured"}});
+  const std::string table =
+      MissionTable(Episodes(), 1.0, {{"EROI_UTILITY", "no model configured"}});
   EXPECT_NE(table.find("Success radius 1.00 m"), std::string::npos);
   EXPECT_NE(table.find("### indoor"), std::string::npos);
-  EXPECT_NE(table.find("| NEAREST_FRONTIER | 2 | 0.500 | 0.250 | 1.50 | 5.00 | 1.00 | 1.00 (1) |"), std::string::npos);
-  EXPECT_NE(table.find("### outdoor"), std::string::npos);
-  EXPECT_NE(table.find("| SEMANTIC_FRONTIER | 2 | 1.000 | 0.750 | 0.50 | 15.00 | 0.25 | 0.50 (1) |"),
+  EXPECT_NE(table.find("| NEAREST_FRONTIER | 2 | 0.500 | 0.250 | 1.50 | 5.00 | 1.00 | 1.00 (1) |"),
             std::string::npos);
+  EXPECT_NE(table.find("### outdoor"), std::string::npos);
+  EXPECT_NE(
+      table.find("| SEMANTIC_FRONTIER | 2 | 1.000 | 0.750 | 0.50 | 15.00 | 0.25 | 0.50 (1) |"),
+      std::string::npos);
   EXPECT_NE(table.find("EROI_UTILITY not run: no model configured"), std::string::npos);
   // Each group's failures by cause: the indoor miss, the outdoor baseline's collision loop.
-  EXPECT_NE(table.find("| strategy | failed | budget_spent_exploring |\n|---|---|---|\n| NEAREST_FRONTIER | 1 | 1 |"),
+  EXPECT_NE(table.find("| strategy | failed | budget_spent_exploring |\n|---|---|---|\n| "
+                       "NEAREST_FRONTIER | 1 | 1 |"),
             std::string::npos)
       << table;
-  EXPECT_NE(table.find("| strategy | failed | collision_loop |\n|---|---|---|\n| NEAREST_FRONTIER | 1 | 1 |\n"
-                       "| SEMANTIC_FRONTIER | 0 | 0 |"),
-            std::string::npos)
+  EXPECT_NE(
+      table.find(
+          "| strategy | failed | collision_loop |\n|---|---|---|\n| NEAREST_FRONTIER | 1 | 1 |\n"
+          "| SEMANTIC_FRONTIER | 0 | 0 |"),
+      std::string::npos)
       << table;
 }
 
 TEST(SimBenchMissionReportTest, PoseLossGroupsReportRecoveriesAndTheSameEpisodesWithoutDrift) {
-  EpisodeRecord indoor{"SEMANTIC_FRONTIER", "home_1", "chair", true, 2.0, 4.0, 0.5, 20.0, 0.0, 0, 1, 1, "indoor", ""};
+  EpisodeRecord indoor{"SEMANTIC_FRONTIER",
+                       "home_1",
+                       "chair",
+                       true,
+                       2.0,
+                       4.0,
+                       0.5,
+                       20.0,
+                       0.0,
+                       0,
+                       1,
+                       1,
+                       "indoor",
+                       ""};
   indoor.start_index = 0;
   EpisodeRecord indoor_other = indoor;  // another start: not the twin
   indoor_other.start_index = 1;
@@ -99,7 +174,7 @@ TEST(SimBenchMissionReportTest, PoseLossGroupsReportRecoveriesAndTheSameEpisodes
   kidnapped.group = "kidnapped";
   kidnapped.success = false;
   kidnapped.losses = 2;
-  kidnapped.recovery_times_s = {9.0, 20.0};    // the second is too slow
+  kidnapped.recovery_times_s = {9.0, 20.0};  // the second is too slow
   kidnapped.recovery_errors_m = {0.1, 0.1};
   kidnapped.recovery_errors_deg = {1.0, 1.0};
   kidnapped.final_pose_error_m = 0.3;
@@ -108,7 +183,7 @@ TEST(SimBenchMissionReportTest, PoseLossGroupsReportRecoveriesAndTheSameEpisodes
   kidnapped2.success = true;
   kidnapped2.losses = 1;
   kidnapped2.recovery_times_s = {5.0};
-  kidnapped2.recovery_errors_m = {0.5};       // too far off
+  kidnapped2.recovery_errors_m = {0.5};  // too far off
   kidnapped2.recovery_errors_deg = {1.0};
   kidnapped2.final_pose_error_m = 0.1;
   const std::vector<PoseLossSummary> summaries =
@@ -137,7 +212,8 @@ TEST(SimBenchMissionReportTest, PoseLossGroupsReportRecoveriesAndTheSameEpisodes
   EXPECT_EQ(json["episodes"][2]["recovery_times_s"].size(), 2u);
   // The indoor headline is unchanged by the pose-loss records.
   EXPECT_EQ(json["strategies"]["SEMANTIC_FRONTIER"]["episodes"], 2);
-  EXPECT_NE(MissionTable({indoor, kidnapped}, 1.0).find("same episodes without drift"), std::string::npos);
+  EXPECT_NE(MissionTable({indoor, kidnapped}, 1.0).find("same episodes without drift"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -12,8 +12,8 @@ namespace {
 
 constexpr int kWidth = 640, kHeight = 460;
 constexpr int kLeft = 70, kRight = 80, kTop = 50, kBottom = 110;
-const cv::Scalar kSrColour(180, 110, 30);     // blue (BGR)
-const cv::Scalar kPathColour(40, 100, 220);   // orange-red
+const cv::Scalar kSrColour(180, 110, 30);    // blue (BGR)
+const cv::Scalar kPathColour(40, 100, 220);  // orange-red
 const cv::Scalar kAxisColour(60, 60, 60);
 const cv::Scalar kMeanPathColour(60, 150, 60);  // green
 
@@ -49,8 +49,10 @@ absl::Status WriteVlmSweepPlot(const std::vector<SweepPoint>& points, const std:
     cv::line(image, pixel(x_min, y), pixel(x_max, y), cv::Scalar(225, 225, 225), 1);
     Text(image, absl::StrFormat("%.1f", y), pixel(x_min, y) + cv::Point(-35, 5));
   }
-  cv::line(image, pixel(x_min, 1.0), pixel(x_max, 1.0), cv::Scalar(170, 170, 170), 1);  // ratio 1 = baseline
-  for (const SweepPoint& p : points) Text(image, absl::StrFormat("%.2f", p.accuracy), pixel(p.accuracy, 0) + cv::Point(-15, 20));
+  cv::line(image, pixel(x_min, 1.0), pixel(x_max, 1.0), cv::Scalar(170, 170, 170),
+           1);  // ratio 1 = baseline
+  for (const SweepPoint& p : points)
+    Text(image, absl::StrFormat("%.2f", p.accuracy), pixel(p.accuracy, 0) + cv::Point(-15, 20));
   cv::rectangle(image, pixel(x_min, y_max), pixel(x_max, 0), kAxisColour, 1);
   Text(image, "VLM recognition accuracy (1 - miss rate; other error rates scaled with it)",
        cv::Point(kLeft, kHeight - 14), 0.42);
@@ -75,8 +77,8 @@ absl::Status WriteVlmSweepPlot(const std::vector<SweepPoint>& points, const std:
     const cv::Point at = pixel(p.accuracy, *p.path_ratio);
     if (joined) cv::line(image, last, at, kPathColour, 2, cv::LINE_AA);
     cv::rectangle(image, at - cv::Point(5, 5), at + cv::Point(5, 5), kPathColour, cv::FILLED);
-    Text(image, absl::StrFormat("%.2f (%d)", *p.path_ratio, p.paired_episodes), at + cv::Point(6, 16), 0.4,
-         kPathColour);
+    Text(image, absl::StrFormat("%.2f (%d)", *p.path_ratio, p.paired_episodes),
+         at + cv::Point(6, 16), 0.4, kPathColour);
     last = at;
     joined = true;
   }
@@ -89,9 +91,11 @@ absl::Status WriteVlmSweepPlot(const std::vector<SweepPoint>& points, const std:
     }
     const cv::Point at = pixel(p.accuracy, *p.mean_path_ratio);
     if (joined) cv::line(image, last, at, kMeanPathColour, 1, cv::LINE_AA);
-    const std::vector<cv::Point> triangle = {at + cv::Point(0, -6), at + cv::Point(-6, 5), at + cv::Point(6, 5)};
+    const std::vector<cv::Point> triangle = {at + cv::Point(0, -6), at + cv::Point(-6, 5),
+                                             at + cv::Point(6, 5)};
     cv::fillConvexPoly(image, triangle, kMeanPathColour, cv::LINE_AA);
-    Text(image, absl::StrFormat("%.2f", *p.mean_path_ratio), at + cv::Point(8, 4), 0.4, kMeanPathColour);
+    Text(image, absl::StrFormat("%.2f", *p.mean_path_ratio), at + cv::Point(8, 4), 0.4,
+         kMeanPathColour);
     last = at;
     joined = true;
   }
@@ -99,14 +103,17 @@ absl::Status WriteVlmSweepPlot(const std::vector<SweepPoint>& points, const std:
   const int row1 = kHeight - 62, row2 = kHeight - 42;
   cv::circle(image, cv::Point(kLeft + 10, row1 - 5), 5, kSrColour, cv::FILLED, cv::LINE_AA);
   Text(image, "SR", cv::Point(kLeft + 20, row1), 0.45, kSrColour);
-  cv::rectangle(image, cv::Point(kLeft + 75, row1 - 10), cv::Point(kLeft + 85, row1), kPathColour, cv::FILLED);
-  Text(image, "path / NEAREST_FRONTIER's, episodes both found (n)", cv::Point(kLeft + 92, row1), 0.45, kPathColour);
-  const std::vector<cv::Point> triangle = {cv::Point(kLeft + 10, row2 - 11), cv::Point(kLeft + 4, row2),
-                                           cv::Point(kLeft + 16, row2)};
+  cv::rectangle(image, cv::Point(kLeft + 75, row1 - 10), cv::Point(kLeft + 85, row1), kPathColour,
+                cv::FILLED);
+  Text(image, "path / NEAREST_FRONTIER's, episodes both found (n)", cv::Point(kLeft + 92, row1),
+       0.45, kPathColour);
+  const std::vector<cv::Point> triangle = {cv::Point(kLeft + 10, row2 - 11),
+                                           cv::Point(kLeft + 4, row2), cv::Point(kLeft + 16, row2)};
   cv::fillConvexPoly(image, triangle, kMeanPathColour, cv::LINE_AA);
-  Text(image, "mean path / NEAREST_FRONTIER's mean path, all episodes", cv::Point(kLeft + 20, row2), 0.45,
-       kMeanPathColour);
-  if (!cv::imwrite(png_path, image)) return absl::InternalError(absl::StrCat("cannot write ", png_path));
+  Text(image, "mean path / NEAREST_FRONTIER's mean path, all episodes", cv::Point(kLeft + 20, row2),
+       0.45, kMeanPathColour);
+  if (!cv::imwrite(png_path, image))
+    return absl::InternalError(absl::StrCat("cannot write ", png_path));
   return absl::OkStatus();
 }
 

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_CAMERA_MODEL_H_
-#define SEMNAV_CLIENTS_SIM_CORE_CAMERA_MODEL_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -25,5 +24,3 @@ Eigen::Isometry3d CameraPoseInWorld(const Eigen::Vector3d& position, double yaw,
 Eigen::Vector3d PixelRay(const CameraIntrinsics& intrinsics, double u, double v);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_CAMERA_MODEL_H_

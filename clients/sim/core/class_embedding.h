@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_CLASS_EMBEDDING_H_
-#define SEMNAV_CLIENTS_SIM_CORE_CLASS_EMBEDDING_H_
+#pragma once
 
 #include <cstdint>
 #include <string_view>
@@ -20,5 +19,3 @@ std::vector<float> NoisyEmbedding(const std::vector<float>& base, double noise, 
 double CosineSimilarity(const std::vector<float>& a, const std::vector<float>& b);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_CLASS_EMBEDDING_H_

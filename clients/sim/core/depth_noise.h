@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_DEPTH_NOISE_H_
-#define SEMNAV_CLIENTS_SIM_CORE_DEPTH_NOISE_H_
+#pragma once
 
 #include <cstdint>
 #include <vector>
@@ -23,5 +22,3 @@ std::vector<float> NoisyDepth(const RenderedView& view, const DepthNoiseModel& m
                               double min_range, double max_range, uint64_t seed);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_DEPTH_NOISE_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_DETECTOR_H_
-#define SEMNAV_CLIENTS_SIM_CORE_DETECTOR_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -55,5 +54,3 @@ DetectionFrame DetectObjects(const RenderedView& view, const Scene& scene, const
                              const DetectorConfig& config, uint64_t seed);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_DETECTOR_H_

@@ -67,8 +67,8 @@ std::vector<Shape> Blockers(const World& world, const ObjectInstance& target, do
   return blockers;
 }
 
-bool LineClear(const std::vector<Shape>& blockers, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
-               double z) {
+bool LineClear(const std::vector<Shape>& blockers, const Eigen::Vector2d& from,
+               const Eigen::Vector2d& to, double z) {
   const Eigen::Vector2d delta = to - from;
   const double length = delta.norm();
   if (length < 1e-9) return true;
@@ -91,8 +91,8 @@ double DistanceToNearestInstance(const World& world, std::string_view label,
   return best;
 }
 
-SuccessRegion SuccessRegion::Build(const World& world, std::string_view label, const GroundTruthGrid& body_grid,
-                                   double success_radius) {
+SuccessRegion SuccessRegion::Build(const World& world, std::string_view label,
+                                   const GroundTruthGrid& body_grid, double success_radius) {
   SuccessRegion region;
   region.geometry_ = body_grid;
   region.geometry_.cells.clear();
@@ -111,10 +111,16 @@ SuccessRegion SuccessRegion::Build(const World& world, std::string_view label, c
     const std::vector<Shape> blockers = Blockers(world, object, success_radius);
     const double mid_z = object.box.base_z + object.box.size.z() / 2.0;
     auto [lo, hi] = FootprintBounds(Shape(object.box));
-    const int x0 = std::max(0, static_cast<int>(std::floor((lo.x() - success_radius - g.origin.x()) / g.resolution)));
-    const int y0 = std::max(0, static_cast<int>(std::floor((lo.y() - success_radius - g.origin.y()) / g.resolution)));
-    const int x1 = std::min(g.width - 1, static_cast<int>(std::floor((hi.x() + success_radius - g.origin.x()) / g.resolution)));
-    const int y1 = std::min(g.height - 1, static_cast<int>(std::floor((hi.y() + success_radius - g.origin.y()) / g.resolution)));
+    const int x0 = std::max(
+        0, static_cast<int>(std::floor((lo.x() - success_radius - g.origin.x()) / g.resolution)));
+    const int y0 = std::max(
+        0, static_cast<int>(std::floor((lo.y() - success_radius - g.origin.y()) / g.resolution)));
+    const int x1 = std::min(
+        g.width - 1,
+        static_cast<int>(std::floor((hi.x() + success_radius - g.origin.x()) / g.resolution)));
+    const int y1 = std::min(
+        g.height - 1,
+        static_cast<int>(std::floor((hi.y() + success_radius - g.origin.y()) / g.resolution)));
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         const int index = y * g.width + x;
@@ -132,7 +138,8 @@ SuccessRegion SuccessRegion::Build(const World& world, std::string_view label, c
   // Geodesic distance over the free cells, 8-connected with octile steps and no corner cutting
   // (as NearestReachableGoal), up to the radius.
   auto free = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < g.width && y < g.height && region.free_[static_cast<size_t>(y) * g.width + x];
+    return x >= 0 && y >= 0 && x < g.width && y < g.height &&
+           region.free_[static_cast<size_t>(y) * g.width + x];
   };
   while (!open.empty()) {
     const auto [c, index] = open.top();
@@ -160,7 +167,8 @@ SuccessRegion SuccessRegion::Build(const World& world, std::string_view label, c
 double SuccessRegion::GeodesicDistance(const Eigen::Vector2d& p) const {
   const GroundTruthGrid& g = geometry_;
   const Eigen::Vector2d local = (p - g.origin) / g.resolution;
-  const int cx = static_cast<int>(std::floor(local.x())), cy = static_cast<int>(std::floor(local.y()));
+  const int cx = static_cast<int>(std::floor(local.x())),
+            cy = static_cast<int>(std::floor(local.y()));
   if (cx >= 0 && cy >= 0 && cx < g.width && cy < g.height) {
     const size_t index = static_cast<size_t>(cy) * g.width + cx;
     if (free_[index]) return distance_[index] <= radius_ ? distance_[index] : kInfinity;
@@ -176,8 +184,9 @@ double SuccessRegion::GeodesicDistance(const Eigen::Vector2d& p) const {
   return best <= radius_ ? best : kInfinity;
 }
 
-StopOutcome ScoreStop(const World& world, const SuccessRegion& region, std::string_view target_label,
-                      const Eigen::Vector2d& final_position, bool stop_issued) {
+StopOutcome ScoreStop(const World& world, const SuccessRegion& region,
+                      std::string_view target_label, const Eigen::Vector2d& final_position,
+                      bool stop_issued) {
   StopOutcome outcome;
   outcome.distance_to_goal_m = DistanceToNearestInstance(world, target_label, final_position);
   outcome.success = stop_issued && region.Contains(final_position);
@@ -222,9 +231,8 @@ std::vector<StrategySummary> SummariseByStrategy(const std::vector<EpisodeRecord
   for (size_t k = 0; k < summaries.size(); ++k) {
     StrategySummary& s = summaries[k];
     const double n = s.episodes;
-    for (double* mean :
-         {&s.sr, &s.spl, &s.dtg_m, &s.path_m, &s.time_s, &s.energy_j, &s.model_calls, &s.model_tokens,
-          &s.model_wait_s, &s.vision_calls}) {
+    for (double* mean : {&s.sr, &s.spl, &s.dtg_m, &s.path_m, &s.time_s, &s.energy_j, &s.model_calls,
+                         &s.model_tokens, &s.model_wait_s, &s.vision_calls}) {
       *mean /= n;
     }
     s.fast_path_share = resolved[k] > 0 ? static_cast<double>(fast[k]) / resolved[k] : 0.0;
@@ -234,9 +242,12 @@ std::vector<StrategySummary> SummariseByStrategy(const std::vector<EpisodeRecord
 
 std::string ReportGroup(Modality modality) {
   switch (modality) {
-    case Modality::kGround: return "indoor";
-    case Modality::kUav: return "outdoor";
-    case Modality::kFlyRoll: return "flyroll";
+    case Modality::kGround:
+      return "indoor";
+    case Modality::kUav:
+      return "outdoor";
+    case Modality::kFlyRoll:
+      return "flyroll";
   }
   return "indoor";
 }

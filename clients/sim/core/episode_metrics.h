@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_EPISODE_METRICS_H_
-#define SEMNAV_CLIENTS_SIM_CORE_EPISODE_METRICS_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <map>
@@ -39,7 +38,8 @@ double DistanceToNearestInstance(const World& world, std::string_view label,
 // So a target 0.5 m behind a thin wall is 0.5 m away only from its own side.
 class SuccessRegion {
  public:
-  static SuccessRegion Build(const World& world, std::string_view label, const GroundTruthGrid& body_grid,
+  static SuccessRegion Build(const World& world, std::string_view label,
+                             const GroundTruthGrid& body_grid,
                              double success_radius = kDefaultSuccessRadius);
 
   // Geodesic distance (m) from `p` to the nearest footprint; infinity when it exceeds the
@@ -53,9 +53,9 @@ class SuccessRegion {
   bool empty() const { return empty_; }
 
  private:
-  GroundTruthGrid geometry_;      // origin, resolution and size of the body grid; no cells
-  std::vector<uint8_t> free_;     // 1 where the body grid is free
-  std::vector<float> distance_;   // geodesic distance per cell, infinity outside the region
+  GroundTruthGrid geometry_;     // origin, resolution and size of the body grid; no cells
+  std::vector<uint8_t> free_;    // 1 where the body grid is free
+  std::vector<float> distance_;  // geodesic distance per cell, infinity outside the region
   double radius_ = kDefaultSuccessRadius;
   bool empty_ = true;
 };
@@ -67,8 +67,9 @@ struct StopOutcome {
 // Scores where the episode ended: a success when the stop was issued inside `region` (built
 // for `target_label`). `stop_issued` false (budget exhausted) never succeeds. The distance is
 // the horizontal distance to the nearest footprint (DistanceToNearestInstance).
-StopOutcome ScoreStop(const World& world, const SuccessRegion& region, std::string_view target_label,
-                      const Eigen::Vector2d& final_position, bool stop_issued);
+StopOutcome ScoreStop(const World& world, const SuccessRegion& region,
+                      std::string_view target_label, const Eigen::Vector2d& final_position,
+                      bool stop_issued);
 
 // S * l / max(p, l); 0 when l <= 0 and p <= 0 would make it undefined.
 double SuccessWeightedPathLength(bool success, double shortest_m, double path_m);
@@ -132,5 +133,3 @@ struct StrategySummary {
 std::vector<StrategySummary> SummariseByStrategy(const std::vector<EpisodeRecord>& records);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_EPISODE_METRICS_H_

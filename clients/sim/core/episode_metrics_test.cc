@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "clients/sim/core/nearest_goal_search.h"
-
 #include "clients/sim/core/test_worlds.h"
 
 namespace semnav::sim {
@@ -43,7 +42,9 @@ TEST(SimEpisodeMetricsTest, StopScoredAgainstNearestInstanceFootprint) {
   stop = ScoreStop(world, chairs, "chair", {1.4, 0.0}, true);
   EXPECT_NEAR(stop.distance_to_goal_m, 1.1, 1e-12);
   EXPECT_FALSE(stop.success);
-  EXPECT_TRUE(ScoreStop(world, SuccessRegion::Build(world, "chair", grid, 1.5), "chair", {1.4, 0.0}, true).success);
+  EXPECT_TRUE(
+      ScoreStop(world, SuccessRegion::Build(world, "chair", grid, 1.5), "chair", {1.4, 0.0}, true)
+          .success);
   // Close enough but no stop issued: not a success.
   EXPECT_FALSE(ScoreStop(world, chairs, "chair", {2.0, 0.0}, false).success);
   EXPECT_TRUE(std::isinf(DistanceToNearestInstance(world, "sofa", {0, 0})));
@@ -81,8 +82,8 @@ TEST(SimEpisodeMetricsTest, NearestRegionPointGoesRoundTheWall) {
   world.objects.push_back(testing::Object("chair_1", "chair", Box(0.8, 0.0, 0.5, 0.5, 0.9)));
   const GroundTruthGrid grid = PointBodyGrid(world);
   const SuccessRegion region = SuccessRegion::Build(world, "chair", grid);
-  const std::optional<NearestGoal> goal =
-      NearestReachableGoal(grid, {-1.0, 0.0}, [&](const Eigen::Vector2d& p) { return region.Contains(p); });
+  const std::optional<NearestGoal> goal = NearestReachableGoal(
+      grid, {-1.0, 0.0}, [&](const Eigen::Vector2d& p) { return region.Contains(p); });
   ASSERT_TRUE(goal.has_value());
   // Up the west side to the wall's end (y ~ 2) and back down the east side to within 1 m of
   // the chair's face at y = 0.25: far more than the 1.2 m straight line through the wall.

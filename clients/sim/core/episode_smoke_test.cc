@@ -27,7 +27,8 @@ TEST(SimEpisodeSmokeTest, SeeDriveStopAndScore) {
   for (int i = 0; i < 100 && !report.arrived; ++i) report = robot.Step(0.25);
   ASSERT_TRUE(report.arrived);
   ASSERT_TRUE(robot.Apply(Stop{}).ok());
-  const GroundTruthGrid grid = RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(Modality::kGround), 0.0));
+  const GroundTruthGrid grid =
+      RasterizeOccupancy(world, BodyRaster(RobotConfig::ForModality(Modality::kGround), 0.0));
   const StopOutcome stop = ScoreStop(world, SuccessRegion::Build(world, "chair", grid), "chair",
                                      robot.pose().position.head<2>(), robot.stopped());
   EXPECT_TRUE(stop.success);

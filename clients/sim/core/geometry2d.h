@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_GEOMETRY2D_H_
-#define SEMNAV_CLIENTS_SIM_CORE_GEOMETRY2D_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <array>
@@ -30,5 +29,3 @@ bool FootprintsOverlap(const BoxShape& a, const BoxShape& b, double clearance);
 std::pair<Eigen::Vector2d, Eigen::Vector2d> FootprintBounds(const Shape& shape);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_GEOMETRY2D_H_

@@ -6,9 +6,11 @@ namespace semnav::sim {
 
 absl::StatusOr<const reasoning::Lexicon*> LabelLexicon() {
   static const absl::StatusOr<reasoning::Lexicon>* const lexicon =
-      new absl::StatusOr<reasoning::Lexicon>(reasoning::Lexicon::Load(reasoning::Lexicon::DefaultPath()));
+      new absl::StatusOr<reasoning::Lexicon>(
+          reasoning::Lexicon::Load(reasoning::Lexicon::DefaultPath()));
   if (!lexicon->ok()) {
-    return absl::FailedPreconditionError(absl::StrCat("object lexicon: ", lexicon->status().message()));
+    return absl::FailedPreconditionError(
+        absl::StrCat("object lexicon: ", lexicon->status().message()));
   }
   return &**lexicon;
 }

@@ -8,13 +8,18 @@
 
 namespace semnav::sim {
 
-std::optional<NearestGoal> NearestReachableGoal(const GroundTruthGrid& grid, const Eigen::Vector2d& start,
-                                                const std::function<bool(const Eigen::Vector2d&)>& is_goal) {
+std::optional<NearestGoal> NearestReachableGoal(
+    const GroundTruthGrid& grid, const Eigen::Vector2d& start,
+    const std::function<bool(const Eigen::Vector2d&)>& is_goal) {
   const std::optional<Eigen::Vector2i> start_cell = grid.CellOf(start);
-  if (!start_cell.has_value() || grid.at(start_cell->x(), start_cell->y()) != 0) return std::nullopt;
+  if (!start_cell.has_value() || grid.at(start_cell->x(), start_cell->y()) != 0)
+    return std::nullopt;
   const int sx = start_cell->x(), sy = start_cell->y();
-  auto free = [&](int x, int y) { return x >= 0 && y >= 0 && x < grid.width && y < grid.height && grid.at(x, y) == 0; };
-  std::vector<double> cost(static_cast<size_t>(grid.width) * grid.height, std::numeric_limits<double>::infinity());
+  auto free = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < grid.width && y < grid.height && grid.at(x, y) == 0;
+  };
+  std::vector<double> cost(static_cast<size_t>(grid.width) * grid.height,
+                           std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, int>;  // cost in cells, cell index
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
   cost[static_cast<size_t>(sy) * grid.width + sx] = 0.0;
@@ -24,7 +29,8 @@ std::optional<NearestGoal> NearestReachableGoal(const GroundTruthGrid& grid, con
     open.pop();
     if (c > cost[index]) continue;
     const int x = index % grid.width, y = index / grid.width;
-    if (is_goal(grid.CellCentre(x, y))) return NearestGoal{grid.CellCentre(x, y), c * grid.resolution};
+    if (is_goal(grid.CellCentre(x, y)))
+      return NearestGoal{grid.CellCentre(x, y), c * grid.resolution};
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         if ((dx == 0 && dy == 0) || !free(x + dx, y + dy)) continue;

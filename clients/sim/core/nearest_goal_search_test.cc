@@ -17,7 +17,8 @@ GroundTruthGrid Grid(int width, int height) {
 TEST(SimNearestGoalTest, OpenGridStopsAtTheNearestGoalCell) {
   const GroundTruthGrid grid = Grid(10, 10);
   // Goal cells: centre x > 8. From (0.5, 0.5) the nearest is (8.5, 0.5), 8 straight steps.
-  const auto goal = NearestReachableGoal(grid, {0.5, 0.5}, [](const Eigen::Vector2d& p) { return p.x() > 8; });
+  const auto goal =
+      NearestReachableGoal(grid, {0.5, 0.5}, [](const Eigen::Vector2d& p) { return p.x() > 8; });
   ASSERT_TRUE(goal.has_value());
   EXPECT_DOUBLE_EQ(goal->goal.x(), 8.5);
   EXPECT_DOUBLE_EQ(goal->goal.y(), 0.5);
@@ -30,9 +31,8 @@ TEST(SimNearestGoalTest, WallsAreWalkedRoundWithoutCuttingCorners) {
   // would cut the corner of (3,1)), back to (0,2) is 4: 10 cells. Straight through would be 2.
   GroundTruthGrid grid = Grid(5, 3);
   for (int x = 0; x <= 3; ++x) grid.cells[1 * 5 + x] = 100;
-  const auto goal = NearestReachableGoal(grid, {0.5, 0.5}, [](const Eigen::Vector2d& p) {
-    return p.x() < 1 && p.y() > 2;
-  });
+  const auto goal = NearestReachableGoal(
+      grid, {0.5, 0.5}, [](const Eigen::Vector2d& p) { return p.x() < 1 && p.y() > 2; });
   ASSERT_TRUE(goal.has_value());
   EXPECT_DOUBLE_EQ(goal->length_m, 10.0);
   // A diagonal step costs sqrt(2): (0,0) -> (1,1) on an open grid.

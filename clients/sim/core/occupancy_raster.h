@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_OCCUPANCY_RASTER_H_
-#define SEMNAV_CLIENTS_SIM_CORE_OCCUPANCY_RASTER_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <cmath>
@@ -20,12 +19,16 @@ struct GroundTruthGrid {
   int height = 0;                                    // cells along y
   std::vector<uint8_t> cells;                        // row-major, y rows
   uint8_t at(int x, int y) const { return cells[static_cast<size_t>(y) * width + x]; }
-  Eigen::Vector2d CellCentre(int x, int y) const { return origin + resolution * Eigen::Vector2d(x + 0.5, y + 0.5); }
+  Eigen::Vector2d CellCentre(int x, int y) const {
+    return origin + resolution * Eigen::Vector2d(x + 0.5, y + 0.5);
+  }
   // The cell holding world point `p`; nullopt off the grid.
   std::optional<Eigen::Vector2i> CellOf(const Eigen::Vector2d& p) const {
     const Eigen::Vector2d local = (p - origin) / resolution;
-    const Eigen::Vector2i cell(static_cast<int>(std::floor(local.x())), static_cast<int>(std::floor(local.y())));
-    if (cell.x() < 0 || cell.y() < 0 || cell.x() >= width || cell.y() >= height) return std::nullopt;
+    const Eigen::Vector2i cell(static_cast<int>(std::floor(local.x())),
+                               static_cast<int>(std::floor(local.y())));
+    if (cell.x() < 0 || cell.y() < 0 || cell.x() >= width || cell.y() >= height)
+      return std::nullopt;
     return cell;
   }
 };
@@ -51,5 +54,3 @@ GroundTruthGrid RasterizeOccupancy(const World& world, const RasterOptions& opti
 GroundTruthGrid RasterizeHeightLayers(const World& world, double resolution, double ceiling_m);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_OCCUPANCY_RASTER_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_PACKED_BOX_H_
-#define SEMNAV_CLIENTS_SIM_CORE_PACKED_BOX_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -98,5 +97,3 @@ inline Eigen::Vector3d InverseDirection(const Eigen::Vector3d& dir) {
 }
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_PACKED_BOX_H_

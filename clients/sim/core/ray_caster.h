@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_RAY_CASTER_H_
-#define SEMNAV_CLIENTS_SIM_CORE_RAY_CASTER_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -38,5 +37,3 @@ class RayCaster {
 };
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_RAY_CASTER_H_

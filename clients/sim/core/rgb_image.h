@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_RGB_IMAGE_H_
-#define SEMNAV_CLIENTS_SIM_CORE_RGB_IMAGE_H_
+#pragma once
 
 #include <opencv2/core.hpp>
 
@@ -14,5 +13,3 @@ namespace semnav::sim {
 cv::Mat RenderRgb(const RenderedView& view, const Scene& scene);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_RGB_IMAGE_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_ROBOT_COMMAND_H_
-#define SEMNAV_CLIENTS_SIM_CORE_ROBOT_COMMAND_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <variant>
@@ -35,5 +34,3 @@ struct Stop {};
 using RobotCommand = std::variant<FollowPath, Rotate, Hold, Stop>;
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_ROBOT_COMMAND_H_

@@ -1,12 +1,11 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_ROBOT_CONFIG_H_
-#define SEMNAV_CLIENTS_SIM_CORE_ROBOT_CONFIG_H_
+#pragma once
 
 #include "clients/sim/core/camera_model.h"
 #include "clients/sim/core/depth_noise.h"
 #include "clients/sim/core/detector.h"
-#include "services/planning/core/energy_model.h"
 #include "clients/sim/core/odometry.h"
 #include "clients/sim/core/world.h"
+#include "services/planning/core/energy_model.h"
 
 namespace semnav::sim {
 
@@ -23,7 +22,7 @@ struct RobotConfig {
   double camera_height = 0.88;      // above the base (the Habitat agent's camera height)
   double camera_pitch = 0.0;        // rad, positive looks down
   double collision_step = 0.05;     // m between collision checks along a motion
-  planning::EnergyModel energy;  // seed 003: 400 J/m rolling, 800 J/m flying
+  planning::EnergyModel energy;     // seed 003: 400 J/m rolling, 800 J/m flying
 
   // Defaults per modality: ground robot; UAV (seed 000 limits: 1 m/s, 2 rad/s; camera
   // pitched 0.3 rad down); fly-roll sphere (seed 003: 330 mm frame, 1 m/s flight).
@@ -43,5 +42,3 @@ struct SensorConfig {
 };
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_ROBOT_CONFIG_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_SCENE_H_
-#define SEMNAV_CLIENTS_SIM_CORE_SCENE_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -74,5 +73,3 @@ class Scene {
 };
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_SCENE_H_

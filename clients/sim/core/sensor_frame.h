@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_SENSOR_FRAME_H_
-#define SEMNAV_CLIENTS_SIM_CORE_SENSOR_FRAME_H_
+#pragma once
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -28,5 +27,3 @@ struct SensorFrame {
 };
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_SENSOR_FRAME_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_SHAPE_QUERIES_H_
-#define SEMNAV_CLIENTS_SIM_CORE_SHAPE_QUERIES_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -26,5 +25,3 @@ bool CylinderOverlaps(const Shape& shape, const Eigen::Vector2d& center, double 
 Eigen::AlignedBox3d ShapeBounds(const Shape& shape);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_SHAPE_QUERIES_H_

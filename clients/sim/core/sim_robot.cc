@@ -35,7 +35,8 @@ SimRobot::SimRobot(const World& world, const Scene& scene, const StartPose& star
       odometry_(pose_, sensors.odometry, StreamSeed(seed, Stream::kOdometry, 0)) {}
 
 absl::Status SimRobot::Apply(const RobotCommand& command) {
-  if (stopped_) return FieldStatus(absl::StatusCode::kFailedPrecondition, "robot", "episode already stopped");
+  if (stopped_)
+    return FieldStatus(absl::StatusCode::kFailedPrecondition, "robot", "episode already stopped");
   if (const auto* follow = std::get_if<FollowPath>(&command)) {
     if (follow->waypoints.empty()) {
       return InvalidField("follow_path.waypoints", "empty path");
@@ -44,7 +45,8 @@ absl::Status SimRobot::Apply(const RobotCommand& command) {
     for (size_t i = 0; i < follow->waypoints.size(); ++i) {
       Waypoint w = follow->waypoints[i];
       if (modality_ == Modality::kGround && w.mode == MotionMode::kFly) {
-        return InvalidField(absl::StrCat("follow_path.waypoints[", i, "].mode"), "a ground robot cannot fly");
+        return InvalidField(absl::StrCat("follow_path.waypoints[", i, "].mode"),
+                            "a ground robot cannot fly");
       }
       if (modality_ == Modality::kUav) w.mode = MotionMode::kFly;
       if (w.mode == MotionMode::kRoll) w.position.z() = 0.0;

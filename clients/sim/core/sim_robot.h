@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_SIM_ROBOT_H_
-#define SEMNAV_CLIENTS_SIM_CORE_SIM_ROBOT_H_
+#pragma once
 
 #include <cstdint>
 #include <deque>
@@ -87,5 +86,3 @@ class SimRobot {
 };
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_SIM_ROBOT_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_TEST_WORLDS_H_
-#define SEMNAV_CLIENTS_SIM_CORE_TEST_WORLDS_H_
+#pragma once
 
 #include "clients/sim/core/world.h"
 
@@ -29,5 +28,3 @@ inline ObjectInstance Object(const std::string& id, const std::string& label, Bo
 }
 
 }  // namespace semnav::sim::testing
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_TEST_WORLDS_H_

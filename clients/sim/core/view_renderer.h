@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_VIEW_RENDERER_H_
-#define SEMNAV_CLIENTS_SIM_CORE_VIEW_RENDERER_H_
+#pragma once
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -29,5 +28,3 @@ RenderedView RenderView(const Scene& scene, const CameraIntrinsics& intrinsics,
                         double max_range);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_VIEW_RENDERER_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_WORLD_H_
-#define SEMNAV_CLIENTS_SIM_CORE_WORLD_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -92,5 +91,3 @@ double ShapeTop(const Shape& shape);
 bool IsStructure(std::string_view kind);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_WORLD_H_

@@ -29,7 +29,9 @@ namespace yf = yaml_fields;
 #define SIM_RETURN_IF_ERROR(expr) \
   if (absl::Status s_ = (expr); !s_.ok()) return s_
 
-absl::Status Invalid(const std::string& field, absl::string_view what) { return InvalidField(field, what); }
+absl::Status Invalid(const std::string& field, absl::string_view what) {
+  return InvalidField(field, what);
+}
 
 // Geometry may reach this far past the bounds (rounding of written coordinates).
 constexpr double kBoundsTolerance = 1e-3;
@@ -203,7 +205,8 @@ absl::Status CheckLabels(const World& world) {
   for (size_t i = 0; i < world.objects.size(); ++i) {
     if (lexicon->Find(world.objects[i].label, reasoning::TermKind::kObject) == nullptr) {
       return Invalid(yf::Index("objects", i) + ".label",
-                     absl::StrCat("\"", Preview(world.objects[i].label), "\" is not an object of the reasoning lexicon"));
+                     absl::StrCat("\"", Preview(world.objects[i].label),
+                                  "\" is not an object of the reasoning lexicon"));
     }
   }
   return absl::OkStatus();
@@ -248,18 +251,23 @@ absl::Status CheckStarts(const World& world) {
     const StartPose& start = world.starts[i];
     const RobotConfig body = RobotConfig::ForModality(start.modality);
     const Eigen::Vector2d at = start.position.head<2>();
-    const double z0 = start.position.z() + body.ground_clearance, z1 = start.position.z() + body.body_height;
-    auto touches = [&](const Shape& shape) { return CylinderOverlaps(shape, at, body.radius, z0, z1); };
+    const double z0 = start.position.z() + body.ground_clearance,
+                 z1 = start.position.z() + body.body_height;
+    auto touches = [&](const Shape& shape) {
+      return CylinderOverlaps(shape, at, body.radius, z0, z1);
+    };
     for (size_t k = 0; k < world.obstacles.size(); ++k) {
       if (touches(world.obstacles[k].shape)) {
         return Invalid(yf::Index("starts", i) + ".position",
-                       absl::StrCat("the robot's body there touches obstacles[", k, "] (", world.obstacles[k].kind, ")"));
+                       absl::StrCat("the robot's body there touches obstacles[", k, "] (",
+                                    world.obstacles[k].kind, ")"));
       }
     }
     for (size_t k = 0; k < world.objects.size(); ++k) {
       if (touches(Shape(world.objects[k].box))) {
         return Invalid(yf::Index("starts", i) + ".position",
-                       absl::StrCat("the robot's body there touches objects[", k, "] (", world.objects[k].id, ")"));
+                       absl::StrCat("the robot's body there touches objects[", k, "] (",
+                                    world.objects[k].id, ")"));
       }
     }
   }
@@ -329,7 +337,8 @@ absl::StatusOr<World> LoadWorldFile(const std::string& path) {
   if (!world.ok()) {
     // The file name leads the message; the field payload stays.
     absl::Status named(world.status().code(), absl::StrCat(path, ": ", world.status().message()));
-    world.status().ForEachPayload([&](absl::string_view url, const absl::Cord& payload) { named.SetPayload(url, payload); });
+    world.status().ForEachPayload(
+        [&](absl::string_view url, const absl::Cord& payload) { named.SetPayload(url, payload); });
     return named;
   }
   return world;

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_WORLD_YAML_H_
-#define SEMNAV_CLIENTS_SIM_CORE_WORLD_YAML_H_
+#pragma once
 
 #include <string>
 #include <vector>
@@ -24,5 +23,3 @@ std::string WorldToYaml(const World& world);
 absl::Status SaveWorldFile(const World& world, const std::string& path);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_WORLD_YAML_H_

@@ -77,8 +77,10 @@ TEST(SimWorldYamlTest, ErrorsNameTheField) {
 }
 
 TEST(SimWorldYamlTest, RejectsLabelsTheLexiconDoesNotKnow) {
-  ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: flux capacitor"), "objects[0].label");
-  ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: spaceship"), "objects[0].label");
+  ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: flux capacitor"),
+                     "objects[0].label");
+  ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: spaceship"),
+                     "objects[0].label");
   // Any English form of a lexicon object is a label the gateway can name.
   EXPECT_TRUE(ParseWorldYaml(Replace(kWorld, "label: refrigerator", "label: sofa")).ok());
   EXPECT_TRUE(ParseWorldYaml(Replace(kWorld, "label: refrigerator", "label: table")).ok());
@@ -88,23 +90,29 @@ TEST(SimWorldYamlTest, RejectsLabelsTheLexiconDoesNotKnow) {
 TEST(SimWorldYamlTest, RejectsGeometryOutsideTheBounds) {
   // The fridge reaches x = 6.35 in a world that ends at x = 6.
   ExpectInvalidField(Replace(kWorld, "center: [5, 3]", "center: [6, 3]"), "objects[0].box");
-  ExpectInvalidField(Replace(kWorld, "center: [3, 0], size: [6, 0.1", "center: [3, 0], size: [6.4, 0.1"),
-                     "obstacles[0].box");
+  ExpectInvalidField(
+      Replace(kWorld, "center: [3, 0], size: [6, 0.1", "center: [3, 0], size: [6.4, 0.1"),
+      "obstacles[0].box");
   ExpectInvalidField(Replace(kWorld, "[[1, 2], [2, 2], [2, 3]]", "[[1, 2], [2, 2], [2, 4.5]]"),
                      "obstacles[1].prism.polygon");
   ExpectInvalidField(Replace(kWorld, "[6, 4], [0, 4]]", "[6, 5], [0, 4]]"), "rooms[0].polygon");
-  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [7, 1, 0]"), "starts[0].position");
+  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [7, 1, 0]"),
+                     "starts[0].position");
 }
 
 TEST(SimWorldYamlTest, RejectsStartsTouchingASolid) {
   // The ground robot's body has a 0.25 m radius: 0.2 m from the wall's face at y = 0.05 it
   // touches it, 0.3 m away it does not.
-  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [1, 0.25, 0]"), "starts[0].position");
-  EXPECT_TRUE(ParseWorldYaml(Replace(kWorld, "position: [1, 1, 0]", "position: [1, 0.35, 0]")).ok());
+  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [1, 0.25, 0]"),
+                     "starts[0].position");
+  EXPECT_TRUE(
+      ParseWorldYaml(Replace(kWorld, "position: [1, 1, 0]", "position: [1, 0.35, 0]")).ok());
   // Inside the fridge's footprint.
-  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [5, 3, 0]"), "starts[0].position");
+  ExpectInvalidField(Replace(kWorld, "position: [1, 1, 0]", "position: [5, 3, 0]"),
+                     "starts[0].position");
   // A UAV at 1.5 m flies over the 0.9 m furniture that a ground robot would stand in.
-  const std::string over_furniture = Replace(kWorld, "position: [1, 1, 0]", "position: [1.8, 2.2, 0]");
+  const std::string over_furniture =
+      Replace(kWorld, "position: [1, 1, 0]", "position: [1.8, 2.2, 0]");
   ExpectInvalidField(over_furniture, "starts[0].position");
   EXPECT_TRUE(ParseWorldYaml(Replace(over_furniture, "[1.8, 2.2, 0], yaw: 0.5, modality: ground",
                                      "[1.8, 2.2, 1.5], yaw: 0.5, modality: uav"))

@@ -80,7 +80,8 @@ void EmitObject(YAML::Emitter& out, const ObjectInstance& object) {
 
 std::string WorldToYaml(const World& world) {
   YAML::Emitter out;
-  out.SetDoublePrecision(15);  // a value rounded to 1 mm prints as such ("28.95", not "28.949999999999999")
+  out.SetDoublePrecision(
+      15);  // a value rounded to 1 mm prints as such ("28.95", not "28.949999999999999")
   out << YAML::BeginMap;
   out << YAML::Key << "name" << YAML::Value << world.name;
   if (!world.description.empty()) {

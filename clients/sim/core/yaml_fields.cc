@@ -24,7 +24,8 @@ std::string Index(const std::string& path, size_t i) { return absl::StrCat(path,
 // IsMap()/IsSequence() throw YAML::InvalidNode on the invalid node a lookup in a non-map gives
 // (found by tests/fuzz, world_yaml): IsDefined() is false for it and safe to ask.
 absl::Status ExpectMap(const YAML::Node& node, const std::string& path) {
-  if (!node.IsDefined() || !node.IsMap()) return Bad(path.empty() ? "world" : path, "expected a mapping");
+  if (!node.IsDefined() || !node.IsMap())
+    return Bad(path.empty() ? "world" : path, "expected a mapping");
   return absl::OkStatus();
 }
 

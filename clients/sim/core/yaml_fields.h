@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_CORE_YAML_FIELDS_H_
-#define SEMNAV_CLIENTS_SIM_CORE_YAML_FIELDS_H_
+#pragma once
 
 #include <yaml-cpp/yaml.h>
 
@@ -33,5 +32,3 @@ absl::StatusOr<Eigen::VectorXd> ReadNumbers(const YAML::Node& node, const std::s
                                             int count);
 
 }  // namespace semnav::sim::yaml_fields
-
-#endif  // SEMNAV_CLIENTS_SIM_CORE_YAML_FIELDS_H_

@@ -19,18 +19,22 @@ constexpr int kMaxRecoveries = 2;
 
 MotionMode ToMotionMode(api::LocomotionMode mode, Modality modality) {
   if (mode == api::LOCOMOTION_MODE_AIR) return MotionMode::kFly;
-  if (mode == api::LOCOMOTION_MODE_UNSPECIFIED && modality == Modality::kUav) return MotionMode::kFly;
+  if (mode == api::LOCOMOTION_MODE_UNSPECIFIED && modality == Modality::kUav)
+    return MotionMode::kFly;
   return MotionMode::kRoll;
 }
 
 }  // namespace
 
-absl::StatusOr<FollowPath> CommandExecutor::PlanLocally(const Eigen::Vector3d& from, const Eigen::Vector3d& goal) const {
-  absl::StatusOr<std::vector<Eigen::Vector2d>> path = local_planner_(from.head<2>(), goal.head<2>());
+absl::StatusOr<FollowPath> CommandExecutor::PlanLocally(const Eigen::Vector3d& from,
+                                                        const Eigen::Vector3d& goal) const {
+  absl::StatusOr<std::vector<Eigen::Vector2d>> path =
+      local_planner_(from.head<2>(), goal.head<2>());
   if (!path.ok()) return path.status();
   FollowPath follow;
   const MotionMode mode = ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality());
-  for (const Eigen::Vector2d& p : *path) follow.waypoints.push_back(Waypoint{Eigen::Vector3d(p.x(), p.y(), goal.z()), mode});
+  for (const Eigen::Vector2d& p : *path)
+    follow.waypoints.push_back(Waypoint{Eigen::Vector3d(p.x(), p.y(), goal.z()), mode});
   return follow;
 }
 
@@ -65,14 +69,18 @@ bool CommandExecutor::Recover() {
   const Eigen::Vector3d back =
       pose.position - kBackUpM * Eigen::Vector3d(std::cos(pose.yaw), std::sin(pose.yaw), 0.0);
   FollowPath follow;
-  follow.waypoints.push_back(Waypoint{back, ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality()), true});
+  follow.waypoints.push_back(
+      Waypoint{back, ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality()), true});
   // Ground robots plan around what the map now shows; the others keep the gateway's path.
   if (local_planner_ && robot_.modality() == Modality::kGround) {
     absl::StatusOr<FollowPath> path = PlanLocally(back, navigate_goal_);
-    if (path.ok()) follow.waypoints.insert(follow.waypoints.end(), path->waypoints.begin(), path->waypoints.end());
+    if (path.ok())
+      follow.waypoints.insert(follow.waypoints.end(), path->waypoints.begin(),
+                              path->waypoints.end());
   }
   if (follow.waypoints.size() == 1) {
-    follow.waypoints.push_back(Waypoint{navigate_goal_, ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality())});
+    follow.waypoints.push_back(Waypoint{
+        navigate_goal_, ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality())});
   }
   since_plan_s_ = 0.0;
   return robot_.Apply(follow).ok();
@@ -96,7 +104,8 @@ Feedback CommandExecutor::Start(const api::RobotCommand& command) {
         navigate_goal_ = follow->waypoints.empty() ? Eigen::Vector3d(g.x(), g.y(), g.z())
                                                    : follow->waypoints.back().position;
       }
-      if (!follow.ok()) return Done(api::FEEDBACK_KIND_FAILED, std::string(follow.status().message()));
+      if (!follow.ok())
+        return Done(api::FEEDBACK_KIND_FAILED, std::string(follow.status().message()));
       if (follow->waypoints.empty()) {  // already there: only face goal_yaw
         status = robot_.Apply(Rotate{goal_yaw_});
         phase_ = Phase::kFacing;
@@ -137,7 +146,8 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
     }
   }
   // Re-plan a local path as the map grows: unknown space it crossed may turn out blocked.
-  if (phase_ == Phase::kDriving && local_goal_.has_value() && (since_plan_s_ += dt) >= kReplanPeriodS) {
+  if (phase_ == Phase::kDriving && local_goal_.has_value() &&
+      (since_plan_s_ += dt) >= kReplanPeriodS) {
     since_plan_s_ = 0.0;
     absl::StatusOr<FollowPath> follow = PlanLocally(robot_.pose().position, *local_goal_);
     if (follow.ok() && !follow->waypoints.empty()) robot_.Apply(*follow).IgnoreError();
@@ -145,7 +155,8 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
   const StepReport report = robot_.Step(dt);
   if (report.collision.has_value()) {
     if (phase_ == Phase::kDriving && Recover()) return std::nullopt;
-    return Done(api::FEEDBACK_KIND_BLOCKED, absl::StrCat("collision with ", report.collision->kind));
+    return Done(api::FEEDBACK_KIND_BLOCKED,
+                absl::StrCat("collision with ", report.collision->kind));
   }
   switch (phase_) {
     case Phase::kDriving:
@@ -156,7 +167,8 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
       phase_ = Phase::kFacing;
       return std::nullopt;
     case Phase::kFacing:
-      if (std::abs(WrapAngle(robot_.pose().yaw - goal_yaw_)) > kFacingTolerance) return std::nullopt;
+      if (std::abs(WrapAngle(robot_.pose().yaw - goal_yaw_)) > kFacingTolerance)
+        return std::nullopt;
       return Done(api::FEEDBACK_KIND_GOAL_REACHED, "");
     case Phase::kRotating:
     case Phase::kHolding:

@@ -44,8 +44,10 @@ class CommandExecutor {
   enum class Phase { kIdle, kDriving, kFacing, kRotating, kHolding };
   Feedback Done(semnav::reasoning::v1::FeedbackKind kind, std::string detail);
   absl::StatusOr<FollowPath> ToFollowPath(const semnav::reasoning::v1::NavigateAction& navigate);
-  absl::StatusOr<FollowPath> PlanLocally(const Eigen::Vector3d& from, const Eigen::Vector3d& goal) const;
-  // After a collision: back up and re-plan to the navigate goal; false when the recoveries are used up.
+  absl::StatusOr<FollowPath> PlanLocally(const Eigen::Vector3d& from,
+                                         const Eigen::Vector3d& goal) const;
+  // After a collision: back up and re-plan to the navigate goal; false when the recoveries are used
+  // up.
   bool Recover();
 
   SimRobot& robot_;
@@ -54,10 +56,10 @@ class CommandExecutor {
   uint64_t command_id_ = 0;
   double goal_yaw_ = 0.0;
   double rate_rps_ = 0.0;
-  double remaining_s_ = 0.0;  // < 0: until the next command
+  double remaining_s_ = 0.0;                   // < 0: until the next command
   std::optional<Eigen::Vector3d> local_goal_;  // set while driving a locally planned path
   Eigen::Vector3d navigate_goal_ = Eigen::Vector3d::Zero();  // where the current navigate ends
-  int recoveries_ = 0;                         // back-up and re-plan attempts of this command
+  int recoveries_ = 0;  // back-up and re-plan attempts of this command
   double since_plan_s_ = 0.0;
 };
 

@@ -15,7 +15,8 @@ class CommandExecutorTest : public ::testing::Test {
   CommandExecutorTest()
       : world_(MakeWorld()),
         scene_(Scene::Build(world_)),
-        robot_(world_, scene_, world_.starts[0], RobotConfig::ForModality(Modality::kGround), SensorConfig{}, 1),
+        robot_(world_, scene_, world_.starts[0], RobotConfig::ForModality(Modality::kGround),
+               SensorConfig{}, 1),
         executor_(robot_) {}
 
   // The open 10 x 10 m square with a wall across x = 3.

@@ -5,6 +5,7 @@
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "clients/sim/core/class_embedding.h"
 #include "clients/sim/core/occupancy_raster.h"
 #include "clients/sim/core/scene.h"
 #include "clients/sim/core/sim_robot.h"
@@ -13,11 +14,10 @@
 #include "clients/sim/loop/frame_stream.h"
 #include "clients/sim/loop/instruction.h"
 #include "clients/sim/loop/local_planner.h"
+#include "clients/sim/loop/localization_model.h"
 #include "clients/sim/loop/robot_messages.h"
 #include "clients/sim/loop/robot_session.h"
 #include "clients/sim/loop/shortest_path.h"
-#include "clients/sim/core/class_embedding.h"
-#include "clients/sim/loop/localization_model.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 #include "semnav/relocalization/v1/relocalization.grpc.pb.h"
 #include "services/common/status/grpc_status.h"
@@ -37,21 +37,23 @@ bool Terminal(api::TaskStatus status) {
          status == api::TASK_STATUS_CANCELLED;
 }
 
-absl::StatusOr<api::TaskSnapshot> GetTask(api::OperatorService::Stub& op, const std::string& task_id) {
+absl::StatusOr<api::TaskSnapshot> GetTask(api::OperatorService::Stub& op,
+                                          const std::string& task_id) {
   api::GetTaskRequest request;
   request.set_task_id(task_id);
   api::GetTaskResponse response;
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(60));
   const grpc::Status status = op.GetTask(&context, request, &response);
-  if (!status.ok()) return absl::UnavailableError(absl::StrCat("GetTask: ", status.error_message()));
+  if (!status.ok())
+    return absl::UnavailableError(absl::StrCat("GetTask: ", status.error_message()));
   return response.task();
 }
 
 absl::StatusOr<api::TaskSnapshot> Submit(api::OperatorService::Stub& op, const EpisodeSpec& spec) {
   api::SubmitInstructionRequest request;
-  request.set_request_id(absl::StrCat(spec.robot_id, "-", spec.world.name, "-", spec.start_index, "-",
-                                      spec.target, "-", spec.seed, "-",
+  request.set_request_id(absl::StrCat(spec.robot_id, "-", spec.world.name, "-", spec.start_index,
+                                      "-", spec.target, "-", spec.seed, "-",
                                       std::chrono::steady_clock::now().time_since_epoch().count()));
   request.set_robot_id(spec.robot_id);
   request.set_instruction(SearchInstruction(spec.target));
@@ -83,34 +85,41 @@ absl::Status CancelUnfinished(api::OperatorService::Stub& op, const std::string&
 absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping, const EpisodeSpec& spec) {
   auto stub = semnav::mapping::v1::MappingService::NewStub(mapping);
   semnav::mapping::v1::ResetMapRequest request;
-  request.set_request_id(absl::StrCat("reset-", spec.robot_id, "-", std::chrono::steady_clock::now().time_since_epoch().count()));
+  request.set_request_id(absl::StrCat("reset-", spec.robot_id, "-",
+                                      std::chrono::steady_clock::now().time_since_epoch().count()));
   semnav::mapping::v1::ResetMapResponse response;
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(60));
   const grpc::Status status = stub->ResetMap(&context, request, &response);
-  if (!status.ok()) return absl::UnavailableError(absl::StrCat("ResetMap: ", status.error_message()));
+  if (!status.ok())
+    return absl::UnavailableError(absl::StrCat("ResetMap: ", status.error_message()));
   return absl::OkStatus();
 }
 
 // "oracle" landmarks: the world's objects as the robot's landmark map (map id = robot id), in the
 // map frame (the world frame: odometry starts at the true start pose), with the descriptor the
 // simulated detector gives each class. Stands in for mapping filling the map from its scene graph.
-absl::Status UpsertOracleLandmarks(const std::shared_ptr<grpc::Channel>& relocalization, const EpisodeSpec& spec) {
+absl::Status UpsertOracleLandmarks(const std::shared_ptr<grpc::Channel>& relocalization,
+                                   const EpisodeSpec& spec) {
   namespace reloc = semnav::relocalization::v1;
   auto stub = reloc::RelocalizationService::NewStub(relocalization);
   {
     reloc::DeleteLandmarkMapRequest request;
     request.set_map_id(spec.robot_id);
-    request.set_request_id(absl::StrCat("delete-", spec.robot_id, "-", std::chrono::steady_clock::now().time_since_epoch().count()));
+    request.set_request_id(
+        absl::StrCat("delete-", spec.robot_id, "-",
+                     std::chrono::steady_clock::now().time_since_epoch().count()));
     reloc::DeleteLandmarkMapResponse response;
     grpc::ClientContext context;
     context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
-    const absl::Status deleted = FromGrpcStatus(stub->DeleteLandmarkMap(&context, request, &response));
+    const absl::Status deleted =
+        FromGrpcStatus(stub->DeleteLandmarkMap(&context, request, &response));
     if (!deleted.ok() && !absl::IsNotFound(deleted)) return deleted;
   }
   reloc::UpsertLandmarksRequest request;
   request.set_map_id(spec.robot_id);
-  request.set_request_id(absl::StrCat("oracle-", spec.robot_id, "-", std::chrono::steady_clock::now().time_since_epoch().count()));
+  request.set_request_id(absl::StrCat("oracle-", spec.robot_id, "-",
+                                      std::chrono::steady_clock::now().time_since_epoch().count()));
   const DetectorConfig& detector = spec.sensors.detector;
   for (const ObjectInstance& object : spec.world.objects) {
     reloc::Landmark* landmark = request.add_landmarks();
@@ -118,7 +127,8 @@ absl::Status UpsertOracleLandmarks(const std::shared_ptr<grpc::Channel>& relocal
     landmark->mutable_position()->set_y(object.box.center.y());
     landmark->mutable_position()->set_z(object.box.base_z + object.box.size.z() / 2.0);
     landmark->set_scale_m(object.box.size.maxCoeff());
-    const std::vector<float> embedding = ClassEmbedding(object.label, detector.embedding_dim, detector.embedding_seed);
+    const std::vector<float> embedding =
+        ClassEmbedding(object.label, detector.embedding_dim, detector.embedding_seed);
     landmark->mutable_embedding()->Assign(embedding.begin(), embedding.end());
     landmark->set_observations(1);
   }
@@ -138,25 +148,30 @@ Eigen::Isometry3d ToIsometry(const Pose& pose) {
 // The gateway answered and said no (a target it cannot parse, a robot it does not know): the
 // episode is a failure to score, not a broken benchmark. Transport errors still stop the run.
 bool Refused(const absl::Status& status) {
-  return absl::IsInvalidArgument(status) || absl::IsFailedPrecondition(status) || absl::IsNotFound(status);
+  return absl::IsInvalidArgument(status) || absl::IsFailedPrecondition(status) ||
+         absl::IsNotFound(status);
 }
 
 std::string Stamp(const SimRobot& robot) { return absl::StrFormat("t=%.1fs ", robot.time_s()); }
 
 void RecordTask(const api::TaskSnapshot& task, const SimRobot& robot, EpisodeResult& result) {
   RecordTaskChange(result.trace, robot.time_s(), task);
-  const std::string line = absl::StrCat(api::TaskStatus_Name(task.status()), " ", task.phase(), ": ", task.reason(),
-                                        " (replans ", task.replans(), ", explore goals ", task.explore_goals(), ")");
+  const std::string line =
+      absl::StrCat(api::TaskStatus_Name(task.status()), " ", task.phase(), ": ", task.reason(),
+                   " (replans ", task.replans(), ", explore goals ", task.explore_goals(), ")");
   if (result.timeline.empty() || !absl::EndsWith(result.timeline.back(), line)) {
     result.timeline.push_back(Stamp(robot) + line);
   }
   result.final_status = task.status();
   result.final_reason = task.reason();
   result.phase = task.phase();
-  result.record.model_calls = task.model_calls();  // every proxy call: slow path, vision, region scores
-  const bool resolved = task.has_target() && task.target().path() != api::RESOLUTION_PATH_UNSPECIFIED;
+  result.record.model_calls =
+      task.model_calls();  // every proxy call: slow path, vision, region scores
+  const bool resolved =
+      task.has_target() && task.target().path() != api::RESOLUTION_PATH_UNSPECIFIED;
   result.record.goals_resolved = resolved ? 1 : 0;
-  result.record.goals_fast_path = resolved && task.target().path() == api::RESOLUTION_PATH_FAST ? 1 : 0;
+  result.record.goals_fast_path =
+      resolved && task.target().path() == api::RESOLUTION_PATH_FAST ? 1 : 0;
 }
 
 std::string Describe(const api::RobotCommand& command) {
@@ -166,26 +181,32 @@ std::string Describe(const api::RobotCommand& command) {
       return absl::StrFormat("navigate to (%.2f, %.2f) along %d waypoints", goal.x(), goal.y(),
                              command.navigate().path_size());
     }
-    case api::RobotCommand::kRotate: return absl::StrFormat("rotate %.2f rad/s", command.rotate().angular_speed_rps());
-    case api::RobotCommand::kHold: return "hold";
-    case api::RobotCommand::kStop: return command.stop().emergency() ? "emergency stop" : "stop";
-    default: return "command without an action";
+    case api::RobotCommand::kRotate:
+      return absl::StrFormat("rotate %.2f rad/s", command.rotate().angular_speed_rps());
+    case api::RobotCommand::kHold:
+      return "hold";
+    case api::RobotCommand::kStop:
+      return command.stop().emergency() ? "emergency stop" : "stop";
+    default:
+      return "command without an action";
   }
 }
 
 // Executes the gateway's commands and answers each with its feedback. Navigate goals are in the
 // robot's odometry frame: `truth_from_odom` (set when odometry and truth differ) moves them into
 // the world the simulator drives in.
-absl::Status ExecuteCommands(RobotSession& session, CommandExecutor& executor, const SimRobot& robot,
-                             const std::vector<api::RobotCommand>& commands, EpisodeResult& result,
+absl::Status ExecuteCommands(RobotSession& session, CommandExecutor& executor,
+                             const SimRobot& robot, const std::vector<api::RobotCommand>& commands,
+                             EpisodeResult& result,
                              const std::optional<Pose>& truth_from_odom = std::nullopt) {
   for (const api::RobotCommand& sent : commands) {
     api::RobotCommand command = sent;
     if (truth_from_odom.has_value()) ToTruthFrame(command, *truth_from_odom);
     const Feedback feedback = executor.Start(command);
     RecordFeedback(result.trace, robot.time_s(), feedback.kind, feedback.detail);
-    result.timeline.push_back(absl::StrCat(Stamp(robot), "command ", command.command_id(), ": ", Describe(command),
-                                           " -> ", api::FeedbackKind_Name(feedback.kind), " ", feedback.detail));
+    result.timeline.push_back(
+        absl::StrCat(Stamp(robot), "command ", command.command_id(), ": ", Describe(command),
+                     " -> ", api::FeedbackKind_Name(feedback.kind), " ", feedback.detail));
     if (command.action_case() == api::RobotCommand::kNavigate) {
       result.goals.emplace_back(command.navigate().goal().x(), command.navigate().goal().y());
       RecordNavigateGoal(result.trace, robot.time_s(), result.goals.back());
@@ -208,7 +229,8 @@ api::ExplorationStrategy RequestedStrategy(const std::string& label) {
 absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoints& endpoints,
                                          const StepObserver& observer) {
   if (spec.start_index < 0 || spec.start_index >= static_cast<int>(spec.world.starts.size())) {
-    return absl::InvalidArgumentError(absl::StrCat("start_index ", spec.start_index, " not in world ", spec.world.name));
+    return absl::InvalidArgumentError(
+        absl::StrCat("start_index ", spec.start_index, " not in world ", spec.world.name));
   }
   const std::string label = spec.target_label.empty() ? spec.target : spec.target_label;
   const StartPose& start = spec.world.starts[spec.start_index];
@@ -219,13 +241,15 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   sensors.rgb = sensors.rgb || spec.camera_frames;
   SimRobot robot(spec.world, scene, start, robot_config, sensors, spec.seed);
   // The true map the robot's body meets, and the target's success region on it (scoring, l_i).
-  const GroundTruthGrid grid = RasterizeOccupancy(spec.world, BodyRaster(robot_config, start.position.z()));
+  const GroundTruthGrid grid =
+      RasterizeOccupancy(spec.world, BodyRaster(robot_config, start.position.z()));
   const SuccessRegion region = SuccessRegion::Build(spec.world, label, grid, spec.success_radius);
   CommandExecutor executor(robot, LiveMapPlanner(endpoints.planning, robot_config.radius));
 
   if (absl::Status s = ResetMap(endpoints.mapping, spec); !s.ok()) return s;
   if (spec.landmarks == "oracle") {
-    if (endpoints.relocalization == nullptr) return absl::InvalidArgumentError("oracle landmarks need relocalization");
+    if (endpoints.relocalization == nullptr)
+      return absl::InvalidArgumentError("oracle landmarks need relocalization");
     if (absl::Status s = UpsertOracleLandmarks(endpoints.relocalization, spec); !s.ok()) return s;
   }
   // Losing the pose: what the robot believes is the gateway's correction applied to its odometry.
@@ -237,7 +261,8 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   auto believed = [&]() { return Compose(map_from_odom, robot.odometry_pose()); };
   api::SessionHello hello = Hello(spec.robot_id, start.modality, robot_config);
   hello.set_clock(api::CLOCK_KIND_SIMULATED);
-  absl::StatusOr<std::unique_ptr<RobotSession>> session = RobotSession::Open(endpoints.gateway, hello);
+  absl::StatusOr<std::unique_ptr<RobotSession>> session =
+      RobotSession::Open(endpoints.gateway, hello);
   if (!session.ok()) return session.status();
   FrameStream frames(endpoints.mapping);
   auto op = api::OperatorService::NewStub(endpoints.gateway);
@@ -260,7 +285,8 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
       if (d.object_index >= 0) result.seen_objects.insert(d.object_index);
       RecordDetection(result.trace, robot.time_s(), spec.world, label, d.object_index);
     }
-    absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(EncodeFrame(captured, spec.robot_id));
+    absl::StatusOr<semnav::mapping::v1::FrameAck> ack =
+        frames.Send(EncodeFrame(captured, spec.robot_id));
     if (!ack.ok()) return ack.status();
     mapping_revision = ack->revision();
     if (!spec.camera_frames) return absl::OkStatus();
@@ -273,12 +299,15 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   uint64_t step_number = 0;
   auto exchange = [&]() -> absl::Status {
     ++step_number;
-    api::ConnectRequest state = StepStateMessage(robot, spec.robot_id, step_number, mapping_revision);
-    const api::LocalizationStatus status = localizer.Update(robot.time_s(), believed(), robot.pose());
+    api::ConnectRequest state =
+        StepStateMessage(robot, spec.robot_id, step_number, mapping_revision);
+    const api::LocalizationStatus status =
+        localizer.Update(robot.time_s(), believed(), robot.pose());
     state.mutable_state()->set_localization(status);
     recovery.OnReport(robot.time_s(), status);
     if (absl::Status s = (*session)->Send(state); !s.ok()) return s;
-    absl::StatusOr<std::vector<api::RobotCommand>> commands = (*session)->TakeStepCommands(step_number, kStepDoneTimeout);
+    absl::StatusOr<std::vector<api::RobotCommand>> commands =
+        (*session)->TakeStepCommands(step_number, kStepDoneTimeout);
     if (!commands.ok()) return commands.status();
     if (std::optional<api::LocalizationUpdate> update = (*session)->TakeLocalization()) {
       const Pose corrected = FromProto(update->map_from_odom());
@@ -288,10 +317,12 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
       if (changed) {
         recovery.OnCorrection(robot.time_s(), believed(), robot.pose());
         result.timeline.push_back(absl::StrCat(
-            Stamp(robot), absl::StrFormat("gateway correction map_from_odom (%.2f, %.2f, %.1f deg); believed pose off "
-                                          "by %.2f m",
-                                          corrected.position.x(), corrected.position.y(), corrected.yaw * 180.0 / M_PI,
-                                          (believed().position - robot.pose().position).head<2>().norm())));
+            Stamp(robot),
+            absl::StrFormat(
+                "gateway correction map_from_odom (%.2f, %.2f, %.1f deg); believed pose off "
+                "by %.2f m",
+                corrected.position.x(), corrected.position.y(), corrected.yaw * 180.0 / M_PI,
+                (believed().position - robot.pose().position).head<2>().norm())));
       }
     }
     std::optional<Pose> truth_from_odom;
@@ -329,18 +360,18 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
       robot.Kidnap(*spec.kidnap_to);
       executor.Interrupt();
       recovery.OnKidnap(robot.time_s());
-      result.timeline.push_back(absl::StrCat(Stamp(robot), absl::StrFormat("kidnapped to (%.2f, %.2f, %.0f deg)",
-                                                                         spec.kidnap_to->position.x(),
-                                                                         spec.kidnap_to->position.y(),
-                                                                         spec.kidnap_to->yaw * 180.0 / M_PI)));
+      result.timeline.push_back(absl::StrCat(
+          Stamp(robot),
+          absl::StrFormat("kidnapped to (%.2f, %.2f, %.0f deg)", spec.kidnap_to->position.x(),
+                          spec.kidnap_to->position.y(), spec.kidnap_to->yaw * 180.0 / M_PI)));
     }
     const std::optional<Feedback> outcome = executor.Step(spec.step_s);
     result.steps = step + 1;
     result.trajectory.push_back(robot.pose().position.head<2>());
     RecordSample(result.trace, robot.time_s(), result.trajectory.back(), spec.world, label, region);
     if (outcome.has_value()) {
-      result.timeline.push_back(absl::StrCat(Stamp(robot), "robot: ", api::FeedbackKind_Name(outcome->kind), " ",
-                                             outcome->detail));
+      result.timeline.push_back(absl::StrCat(
+          Stamp(robot), "robot: ", api::FeedbackKind_Name(outcome->kind), " ", outcome->detail));
       RecordFeedback(result.trace, robot.time_s(), outcome->kind, outcome->detail);
       if (absl::Status s = (*session)->Send(FeedbackMessage(*outcome)); !s.ok()) return s;
     }
@@ -357,7 +388,8 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   // The stop action is the agent declaring it has arrived: the STOP a task sends when it gives
   // up (FAILED) halts the robot but declares nothing, even if it happens near a target.
   const bool declared = executor.stop_issued() && result.final_status == api::TASK_STATUS_SUCCEEDED;
-  const StopOutcome outcome = ScoreStop(spec.world, region, label, robot.pose().position.head<2>(), declared);
+  const StopOutcome outcome =
+      ScoreStop(spec.world, region, label, robot.pose().position.head<2>(), declared);
   result.stop_issued = declared;
   result.collisions = static_cast<int>(robot.collisions().size());
   result.record.success = outcome.success;
@@ -368,7 +400,8 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   // l_i on the true map the robot's body meets (a fly-roll robot's l_i is its rolling path, an
   // upper bound).
   auto planning = semnav::planning::v1::PlanningService::NewStub(endpoints.planning);
-  absl::StatusOr<double> shortest = ShortestPathToTarget(*planning, region, grid, start.position.head<2>());
+  absl::StatusOr<double> shortest =
+      ShortestPathToTarget(*planning, region, grid, start.position.head<2>());
   if (!shortest.ok() && !absl::IsNotFound(shortest.status())) return shortest.status();
   result.record.shortest_path_m = shortest.ok() ? *shortest : 0.0;  // unreachable: SPL term is 0
   result.trace.stop_declared = declared;

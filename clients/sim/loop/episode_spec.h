@@ -1,6 +1,8 @@
 // What one closed-loop episode is and what it produced.
 #pragma once
 
+#include <grpcpp/channel.h>
+
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
@@ -9,8 +11,6 @@
 #include <set>
 #include <string>
 #include <vector>
-
-#include <grpcpp/channel.h>
 
 #include "clients/sim/core/episode_metrics.h"
 #include "clients/sim/core/robot_config.h"
@@ -37,8 +37,8 @@ struct EpisodeSpec {
   // gateway's configured default.
   std::string strategy;
   std::string robot_id = "sim-robot";
-  int max_steps = 500;       // seed 004's episode budget
-  double step_s = 0.5;       // simulated seconds per step (one frame per step)
+  int max_steps = 500;  // seed 004's episode budget
+  double step_s = 0.5;  // simulated seconds per step (one frame per step)
   double success_radius = kDefaultSuccessRadius;
   uint64_t seed = 1;
   SensorConfig sensors = LoopSensorConfig();
@@ -70,8 +70,10 @@ struct EpisodeSpec {
 struct Endpoints {
   std::shared_ptr<grpc::Channel> gateway;
   std::shared_ptr<grpc::Channel> mapping;
-  std::shared_ptr<grpc::Channel> planning;  // the robot's local planner (live map) and l_i (true map)
-  std::shared_ptr<grpc::Channel> relocalization;  // landmark maps (EpisodeSpec::landmarks); null = none
+  std::shared_ptr<grpc::Channel>
+      planning;  // the robot's local planner (live map) and l_i (true map)
+  std::shared_ptr<grpc::Channel>
+      relocalization;  // landmark maps (EpisodeSpec::landmarks); null = none
 };
 
 struct EpisodeResult {

@@ -60,14 +60,15 @@ struct EpisodeTrace {
 
 // Recording, one call per event; each is cheap and leaves the episode's behaviour alone.
 // Appends `task`'s status, phase and reason when any differs from the last change.
-void RecordTaskChange(EpisodeTrace& trace, double time_s, const semnav::reasoning::v1::TaskSnapshot& task);
+void RecordTaskChange(EpisodeTrace& trace, double time_s,
+                      const semnav::reasoning::v1::TaskSnapshot& task);
 void RecordFeedback(EpisodeTrace& trace, double time_s, semnav::reasoning::v1::FeedbackKind kind,
                     const std::string& detail);
 void RecordNavigateGoal(EpisodeTrace& trace, double time_s, const Eigen::Vector2d& goal);
 // Notes the first detection of an object labelled `label` (`object_index` into world.objects).
-void RecordDetection(EpisodeTrace& trace, double time_s, const World& world, const std::string& label,
-                     int object_index);
-void RecordSample(EpisodeTrace& trace, double time_s, const Eigen::Vector2d& position, const World& world,
-                  const std::string& label, const SuccessRegion& region);
+void RecordDetection(EpisodeTrace& trace, double time_s, const World& world,
+                     const std::string& label, int object_index);
+void RecordSample(EpisodeTrace& trace, double time_s, const Eigen::Vector2d& position,
+                  const World& world, const std::string& label, const SuccessRegion& region);
 
 }  // namespace semnav::sim::loop

@@ -21,7 +21,10 @@ bool Says(const std::string& text, absl::string_view phrase) {
 int CountNoPath(const EpisodeTrace& trace) {
   int n = 0;
   for (const FeedbackEvent& f : trace.feedback) {
-    if (f.kind == api::FEEDBACK_KIND_FAILED && (Says(f.detail, "no path") || Says(f.detail, "unreachable") || Says(f.detail, "not reachable"))) ++n;
+    if (f.kind == api::FEEDBACK_KIND_FAILED &&
+        (Says(f.detail, "no path") || Says(f.detail, "unreachable") ||
+         Says(f.detail, "not reachable")))
+      ++n;
   }
   for (const TaskChange& t : trace.task) {
     if (Says(t.reason, "no path")) ++n;
@@ -32,7 +35,9 @@ int CountNoPath(const EpisodeTrace& trace) {
 int CountOutsideMap(const EpisodeTrace& trace) {
   int n = 0;
   for (const NavigateGoal& g : trace.goals) {
-    if ((g.goal.array() < trace.bounds_min.array()).any() || (g.goal.array() > trace.bounds_max.array()).any()) ++n;
+    if ((g.goal.array() < trace.bounds_min.array()).any() ||
+        (g.goal.array() > trace.bounds_max.array()).any())
+      ++n;
   }
   for (const FeedbackEvent& f : trace.feedback) {
     if (f.kind == api::FEEDBACK_KIND_FAILED && Says(f.detail, "outside")) ++n;
@@ -41,9 +46,9 @@ int CountOutsideMap(const EpisodeTrace& trace) {
 }
 
 int CountBlocked(const EpisodeTrace& trace) {
-  return static_cast<int>(std::count_if(trace.feedback.begin(), trace.feedback.end(), [](const FeedbackEvent& f) {
-    return f.kind == api::FEEDBACK_KIND_BLOCKED;
-  }));
+  return static_cast<int>(
+      std::count_if(trace.feedback.begin(), trace.feedback.end(),
+                    [](const FeedbackEvent& f) { return f.kind == api::FEEDBACK_KIND_BLOCKED; }));
 }
 
 // A stretch of at least stuck_s during which the robot stayed within stuck_radius_m of where the
@@ -52,7 +57,8 @@ bool Stuck(const EpisodeTrace& trace, const FailureTaxonomyConfig& config) {
   const std::vector<TraceSample>& s = trace.samples;
   for (size_t i = 0; i < s.size(); ++i) {
     size_t j = i;
-    while (j + 1 < s.size() && (s[j + 1].position - s[i].position).norm() <= config.stuck_radius_m) ++j;
+    while (j + 1 < s.size() && (s[j + 1].position - s[i].position).norm() <= config.stuck_radius_m)
+      ++j;
     if (s[j].time_s - s[i].time_s >= config.stuck_s) return true;
     if (j + 1 == s.size()) break;  // later stretches end at the same last sample, shorter
   }
@@ -73,19 +79,32 @@ std::optional<api::TaskStatus> FinalStatus(const EpisodeTrace& trace) {
 
 std::string_view FailureCauseName(FailureCause cause) {
   switch (cause) {
-    case FailureCause::kNone: return "";
-    case FailureCause::kRefusedInstruction: return "refused_instruction";
-    case FailureCause::kWrongObjectVerified: return "wrong_object_verified";
-    case FailureCause::kStoppedOutsideRegion: return "stopped_outside_region";
-    case FailureCause::kReachedNeverStopped: return "reached_never_stopped";
-    case FailureCause::kGoalOutsideMap: return "goal_outside_map";
-    case FailureCause::kCollisionLoop: return "collision_loop";
-    case FailureCause::kNoPath: return "no_path";
-    case FailureCause::kStuckInState: return "stuck_in_state";
-    case FailureCause::kSeenNeverApproached: return "seen_never_approached";
-    case FailureCause::kGaveUpSearching: return "gave_up_searching";
-    case FailureCause::kTaskFailed: return "task_failed";
-    case FailureCause::kBudgetSpentExploring: return "budget_spent_exploring";
+    case FailureCause::kNone:
+      return "";
+    case FailureCause::kRefusedInstruction:
+      return "refused_instruction";
+    case FailureCause::kWrongObjectVerified:
+      return "wrong_object_verified";
+    case FailureCause::kStoppedOutsideRegion:
+      return "stopped_outside_region";
+    case FailureCause::kReachedNeverStopped:
+      return "reached_never_stopped";
+    case FailureCause::kGoalOutsideMap:
+      return "goal_outside_map";
+    case FailureCause::kCollisionLoop:
+      return "collision_loop";
+    case FailureCause::kNoPath:
+      return "no_path";
+    case FailureCause::kStuckInState:
+      return "stuck_in_state";
+    case FailureCause::kSeenNeverApproached:
+      return "seen_never_approached";
+    case FailureCause::kGaveUpSearching:
+      return "gave_up_searching";
+    case FailureCause::kTaskFailed:
+      return "task_failed";
+    case FailureCause::kBudgetSpentExploring:
+      return "budget_spent_exploring";
   }
   return "";
 }
@@ -94,18 +113,22 @@ FailureCause ClassifyFailure(const EpisodeTrace& trace, const FailureTaxonomyCon
   if (trace.success) return FailureCause::kNone;
   if (trace.instruction_refused) return FailureCause::kRefusedInstruction;
   if (trace.stop_declared) {
-    const double end_distance = trace.samples.empty() ? 0.0 : trace.samples.back().target_distance_m;
+    const double end_distance =
+        trace.samples.empty() ? 0.0 : trace.samples.back().target_distance_m;
     return end_distance <= config.stopped_short_m ? FailureCause::kStoppedOutsideRegion
                                                   : FailureCause::kWrongObjectVerified;
   }
-  if (trace.target_first_seen_s.has_value() && EverInRegion(trace)) return FailureCause::kReachedNeverStopped;
+  if (trace.target_first_seen_s.has_value() && EverInRegion(trace))
+    return FailureCause::kReachedNeverStopped;
   const std::optional<api::TaskStatus> status = FinalStatus(trace);
   const std::string final_reason = trace.task.empty() ? "" : trace.task.back().reason;
   const bool failed = status == api::TASK_STATUS_FAILED;
-  if (CountOutsideMap(trace) >= config.outside_map_events || (failed && Says(final_reason, "outside"))) {
+  if (CountOutsideMap(trace) >= config.outside_map_events ||
+      (failed && Says(final_reason, "outside"))) {
     return FailureCause::kGoalOutsideMap;
   }
-  if (CountBlocked(trace) >= config.collision_loop_blocks || (failed && Says(final_reason, "blocked"))) {
+  if (CountBlocked(trace) >= config.collision_loop_blocks ||
+      (failed && Says(final_reason, "blocked"))) {
     return FailureCause::kCollisionLoop;
   }
   if (CountNoPath(trace) >= config.no_path_events || (failed && Says(final_reason, "no path"))) {
@@ -113,7 +136,9 @@ FailureCause ClassifyFailure(const EpisodeTrace& trace, const FailureTaxonomyCon
   }
   if (Stuck(trace, config)) return FailureCause::kStuckInState;
   if (trace.target_first_seen_s.has_value()) return FailureCause::kSeenNeverApproached;
-  if (failed) return Says(final_reason, "not found") ? FailureCause::kGaveUpSearching : FailureCause::kTaskFailed;
+  if (failed)
+    return Says(final_reason, "not found") ? FailureCause::kGaveUpSearching
+                                           : FailureCause::kTaskFailed;
   return FailureCause::kBudgetSpentExploring;
 }
 

@@ -15,9 +15,11 @@ EpisodeTrace Exploring() {
   trace.bounds_max = Eigen::Vector2d(20, 20);
   for (int step = 1; step <= 500; ++step) {
     const double t = 0.5 * step;
-    trace.samples.push_back(TraceSample{t, Eigen::Vector2d(0.2 * t / 2.5, 1.0), 10.0 + t / 100.0, false});
+    trace.samples.push_back(
+        TraceSample{t, Eigen::Vector2d(0.2 * t / 2.5, 1.0), 10.0 + t / 100.0, false});
   }
-  trace.task.push_back(TaskChange{0.0, api::TASK_STATUS_RUNNING, "exploring", "exploring for the target"});
+  trace.task.push_back(
+      TaskChange{0.0, api::TASK_STATUS_RUNNING, "exploring", "exploring for the target"});
   trace.budget_spent = true;
   trace.end_s = 250.0;
   return trace;
@@ -70,14 +72,16 @@ TEST(SimFailureTaxonomyTest, GoalsOutsideTheMap) {
   trace.goals.push_back(NavigateGoal{10.0, Eigen::Vector2d(5, 5)});
   trace.goals.push_back(NavigateGoal{20.0, Eigen::Vector2d(25, 5)});
   EXPECT_EQ(ClassifyFailure(trace), FailureCause::kBudgetSpentExploring);  // one is not enough
-  trace.feedback.push_back(FeedbackEvent{21.0, api::FEEDBACK_KIND_FAILED, "goal (25, 5) is outside the grid"});
+  trace.feedback.push_back(
+      FeedbackEvent{21.0, api::FEEDBACK_KIND_FAILED, "goal (25, 5) is outside the grid"});
   EXPECT_EQ(ClassifyFailure(trace), FailureCause::kGoalOutsideMap);
 }
 
 TEST(SimFailureTaxonomyTest, CollisionLoop) {
   EpisodeTrace trace = Exploring();
   for (int i = 0; i < 3; ++i) {
-    trace.feedback.push_back(FeedbackEvent{10.0 * i, api::FEEDBACK_KIND_BLOCKED, "collision with crate"});
+    trace.feedback.push_back(
+        FeedbackEvent{10.0 * i, api::FEEDBACK_KIND_BLOCKED, "collision with crate"});
   }
   EXPECT_EQ(ClassifyFailure(trace), FailureCause::kBudgetSpentExploring);
   trace.feedback.push_back(FeedbackEvent{40.0, api::FEEDBACK_KIND_BLOCKED, "collision with wall"});
@@ -93,7 +97,8 @@ TEST(SimFailureTaxonomyTest, NoPath) {
   for (int i = 0; i < 3; ++i) {
     trace.task.push_back(TaskChange{10.0 * i + 1, api::TASK_STATUS_RUNNING, "exploring",
                                     "no path to the exploration goal: goal unreachable"});
-    trace.task.push_back(TaskChange{10.0 * i + 2, api::TASK_STATUS_RUNNING, "exploring", "exploring"});
+    trace.task.push_back(
+        TaskChange{10.0 * i + 2, api::TASK_STATUS_RUNNING, "exploring", "exploring"});
   }
   EXPECT_EQ(ClassifyFailure(trace), FailureCause::kNoPath);
 }
@@ -104,7 +109,8 @@ TEST(SimFailureTaxonomyTest, StuckInAStateForTheConfiguredTime) {
   for (TraceSample& s : trace.samples) {
     if (s.time_s >= 31.0) s.position = Eigen::Vector2d(2.48, 1.0);
   }
-  trace.task.push_back(TaskChange{31.0, api::TASK_STATUS_RUNNING, "verifying", "turning to face the target"});
+  trace.task.push_back(
+      TaskChange{31.0, api::TASK_STATUS_RUNNING, "verifying", "turning to face the target"});
   EXPECT_EQ(ClassifyFailure(trace), FailureCause::kStuckInState);
   // Within 1 m of that spot from t = 18.5 s (0.08 m/s covers the last metre in 12.5 s) to the
   // end at 250 s: 231.5 s without progress, stuck under a 230 s threshold, not under 240 s.
@@ -118,9 +124,11 @@ TEST(SimFailureTaxonomyTest, StuckInAStateForTheConfiguredTime) {
 TEST(SimFailureTaxonomyTest, SlowSteadyProgressIsNotStuck) {
   // Progress is leaving a 1 m disc within 60 s: 0.02 m/s does, 0.015 m/s does not.
   EpisodeTrace trace = Exploring();
-  for (TraceSample& s : trace.samples) s.position = Eigen::Vector2d(0.02 * s.time_s, 1.0);  // 1 m per 50 s
+  for (TraceSample& s : trace.samples)
+    s.position = Eigen::Vector2d(0.02 * s.time_s, 1.0);  // 1 m per 50 s
   EXPECT_EQ(ClassifyFailure(trace), FailureCause::kBudgetSpentExploring);
-  for (TraceSample& s : trace.samples) s.position = Eigen::Vector2d(0.015 * s.time_s, 1.0);  // 1 m per 67 s
+  for (TraceSample& s : trace.samples)
+    s.position = Eigen::Vector2d(0.015 * s.time_s, 1.0);  // 1 m per 67 s
   EXPECT_EQ(ClassifyFailure(trace), FailureCause::kStuckInState);
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-
 #include <opencv2/imgproc.hpp>
 
 #include "clients/sim/loop/proto_geometry.h"
@@ -51,7 +50,8 @@ mapping::SensorFrame EncodeFrame(const SensorFrame& frame, const std::string& ro
   std::memcpy(bytes.data(), frame.depth.data(), bytes.size());
   depth->set_data(std::move(bytes));
   *out.mutable_camera_pose() = ToProtoPose(frame.odom_from_camera);
-  for (const Detection& d : frame.detections.detections) EncodeDetection(d, k, out.add_detections());
+  for (const Detection& d : frame.detections.detections)
+    EncodeDetection(d, k, out.add_detections());
   return out;
 }
 
@@ -67,7 +67,8 @@ absl::StatusOr<semnav::reasoning::v1::ConnectRequest> EncodeCameraFrame(const Se
   image->set_width(rgb.cols);
   image->set_height(rgb.rows);
   image->set_encoding(semnav::common::v1::IMAGE_ENCODING_RGB8);
-  image->set_data(std::string(reinterpret_cast<const char*>(rgb.data), rgb.total() * rgb.elemSize()));
+  image->set_data(
+      std::string(reinterpret_cast<const char*>(rgb.data), rgb.total() * rgb.elemSize()));
   EncodeIntrinsics(frame.intrinsics, camera->mutable_intrinsics());
   // Optical axes (z forward, x right, y down) -> body axes (x forward, y left, z up).
   Eigen::Matrix3d optical_from_body;

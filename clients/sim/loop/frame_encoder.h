@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "clients/sim/core/sensor_frame.h"
 #include "absl/status/statusor.h"
+#include "clients/sim/core/sensor_frame.h"
 #include "semnav/mapping/v1/frames.pb.h"
 #include "semnav/reasoning/v1/robot_session.pb.h"
 

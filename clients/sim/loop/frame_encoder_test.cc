@@ -59,7 +59,8 @@ TEST(SimLoopFrameEncoderTest, NoisyBoxesAreClampedIntoTheImage) {
 
 TEST(SimLoopFrameEncoderTest, CameraFrameIsRgbWithTheBodyPose) {
   SensorFrame frame = SmallFrame();
-  EXPECT_EQ(EncodeCameraFrame(frame).status().code(), absl::StatusCode::kFailedPrecondition);  // no colour
+  EXPECT_EQ(EncodeCameraFrame(frame).status().code(),
+            absl::StatusCode::kFailedPrecondition);           // no colour
   frame.rgb = cv::Mat(2, 4, CV_8UC3, cv::Scalar(255, 0, 0));  // BGR: blue
   // A level optical frame looking along map +y: optical x (right) = +x, y (down) = -z, z = +y.
   Eigen::Matrix3d map_from_optical;

@@ -22,8 +22,8 @@ absl::StatusOr<mapping::FrameAck> FrameStream::Send(const mapping::SensorFrame& 
     return absl::UnavailableError("mapping closed the frame stream");
   }
   if (!response.ack().accepted()) {
-    return absl::InvalidArgumentError(absl::StrCat("frame rejected: ", response.ack().error().reason(), " ",
-                                                   response.ack().error().field()));
+    return absl::InvalidArgumentError(absl::StrCat(
+        "frame rejected: ", response.ack().error().reason(), " ", response.ack().error().field()));
   }
   return response.ack();
 }

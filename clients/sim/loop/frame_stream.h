@@ -1,9 +1,9 @@
 // The robot's MappingService/StreamFrames client stream: one frame out, one ack back.
 #pragma once
 
-#include <memory>
-
 #include <grpcpp/grpcpp.h>
+
+#include <memory>
 
 #include "absl/status/statusor.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"

@@ -5,7 +5,8 @@
 namespace semnav::sim::loop {
 
 std::string SearchInstruction(const std::string& target) {
-  const bool ascii = std::all_of(target.begin(), target.end(), [](char c) { return (c & 0x80) == 0; });
+  const bool ascii =
+      std::all_of(target.begin(), target.end(), [](char c) { return (c & 0x80) == 0; });
   return ascii ? "find a " + target : "找" + target;
 }
 

@@ -1,8 +1,8 @@
 #include "clients/sim/loop/local_planner.h"
 
-#include <chrono>
-
 #include <grpcpp/grpcpp.h>
+
+#include <chrono>
 
 #include "absl/strings/str_cat.h"
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
@@ -19,9 +19,11 @@ constexpr double kGoalTolerance = 1.0;
 constexpr double kClearance = 0.1;
 
 LocalPlanFn LiveMapPlanner(const std::shared_ptr<grpc::Channel>& channel, double robot_radius) {
-  std::shared_ptr<planning::PlanningService::Stub> stub = planning::PlanningService::NewStub(channel);
-  return [stub, robot_radius](const Eigen::Vector2d& from,
-                              const Eigen::Vector2d& to) -> absl::StatusOr<std::vector<Eigen::Vector2d>> {
+  std::shared_ptr<planning::PlanningService::Stub> stub =
+      planning::PlanningService::NewStub(channel);
+  return [stub, robot_radius](
+             const Eigen::Vector2d& from,
+             const Eigen::Vector2d& to) -> absl::StatusOr<std::vector<Eigen::Vector2d>> {
     planning::PlanPathRequest request;
     planning::LiveMapGrid* live = request.mutable_source()->mutable_live_map();
     live->mutable_window_min()->set_x(std::min(from.x(), to.x()) - kWindowMargin);
@@ -46,9 +48,11 @@ LocalPlanFn LiveMapPlanner(const std::shared_ptr<grpc::Channel>& channel, double
       status = stub->PlanPath(&context, request, &response);
       if (status.error_code() != grpc::StatusCode::FAILED_PRECONDITION) break;
     }
-    if (!status.ok()) return absl::UnavailableError(absl::StrCat("local plan: ", status.error_message()));
+    if (!status.ok())
+      return absl::UnavailableError(absl::StrCat("local plan: ", status.error_message()));
     std::vector<Eigen::Vector2d> path;
-    for (int i = 1; i < response.path_size(); ++i) path.emplace_back(response.path(i).x(), response.path(i).y());
+    for (int i = 1; i < response.path_size(); ++i)
+      path.emplace_back(response.path(i).x(), response.path(i).y());
     return path;
   };
 }

@@ -10,8 +10,9 @@ Pose Compose(const Pose& a, const Pose& b) {
   const double c = std::cos(a.yaw);
   const double s = std::sin(a.yaw);
   Pose out;
-  out.position = a.position + Eigen::Vector3d(c * b.position.x() - s * b.position.y(),
-                                              s * b.position.x() + c * b.position.y(), b.position.z());
+  out.position =
+      a.position + Eigen::Vector3d(c * b.position.x() - s * b.position.y(),
+                                   s * b.position.x() + c * b.position.y(), b.position.z());
   out.yaw = WrapAngle(a.yaw + b.yaw);
   return out;
 }
@@ -20,8 +21,8 @@ Pose Inverse(const Pose& a) {
   const double c = std::cos(a.yaw);
   const double s = std::sin(a.yaw);
   Pose out;
-  out.position = Eigen::Vector3d(-(c * a.position.x() + s * a.position.y()), -(-s * a.position.x() + c * a.position.y()),
-                                 -a.position.z());
+  out.position = Eigen::Vector3d(-(c * a.position.x() + s * a.position.y()),
+                                 -(-s * a.position.x() + c * a.position.y()), -a.position.z());
   out.yaw = WrapAngle(-a.yaw);
   return out;
 }
@@ -32,7 +33,8 @@ Pose FromProto(const semnav::common::v1::Pose& pose) {
   const auto& q = pose.orientation();
   Pose out;
   out.position = Eigen::Vector3d(pose.position().x(), pose.position().y(), pose.position().z());
-  out.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
+  out.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()),
+                       1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
   return out;
 }
 
@@ -50,10 +52,12 @@ void ToTruthFrame(api::RobotCommand& command, const Pose& truth_from_odom) {
   for (api::PathWaypoint& w : *navigate->mutable_path()) move(w.mutable_position());
 }
 
-api::LocalizationStatus SimLocalizer::Update(double time_s, const Pose& believed, const Pose& truth) {
+api::LocalizationStatus SimLocalizer::Update(double time_s, const Pose& believed,
+                                             const Pose& truth) {
   if (!config_.enabled) return api::LOCALIZATION_STATUS_UNSPECIFIED;
-  const bool mismatch = (believed.position - truth.position).head<2>().norm() > config_.lost_distance_m ||
-                        std::abs(WrapAngle(believed.yaw - truth.yaw)) > config_.lost_yaw_rad;
+  const bool mismatch =
+      (believed.position - truth.position).head<2>().norm() > config_.lost_distance_m ||
+      std::abs(WrapAngle(believed.yaw - truth.yaw)) > config_.lost_yaw_rad;
   if (mismatch == lost_) {
     changing_since_.reset();
   } else {
@@ -80,7 +84,8 @@ void RecoveryTracker::OnReport(double time_s, api::LocalizationStatus status) {
 }
 
 void RecoveryTracker::OnCorrection(double time_s, const Pose& believed, const Pose& truth) {
-  if (!open_since_.has_value()) return;  // a correction without a loss (operator request, drift check)
+  if (!open_since_.has_value())
+    return;  // a correction without a loss (operator request, drift check)
   times_s_.push_back(time_s - *open_since_);
   errors_m_.push_back((believed.position - truth.position).head<2>().norm());
   errors_deg_.push_back(std::abs(WrapAngle(believed.yaw - truth.yaw)) * 180.0 / M_PI);

@@ -35,7 +35,8 @@ struct LocalizerConfig {
 class SimLocalizer {
  public:
   explicit SimLocalizer(LocalizerConfig config) : config_(config) {}
-  semnav::reasoning::v1::LocalizationStatus Update(double time_s, const Pose& believed, const Pose& truth);
+  semnav::reasoning::v1::LocalizationStatus Update(double time_s, const Pose& believed,
+                                                   const Pose& truth);
 
  private:
   LocalizerConfig config_;

@@ -30,11 +30,14 @@ TEST(SimLocalizerTest, ReportsLostOnlyAfterTheMismatchHeldForTheLatencyAndOkAfte
   config.lost_distance_m = 0.5;
   config.latency_s = 2.0;
   SimLocalizer localizer(config);
-  EXPECT_EQ(localizer.Update(0.0, At(0, 0), At(0.4, 0)), api::LOCALIZATION_STATUS_OK);  // within 0.5 m
-  EXPECT_EQ(localizer.Update(1.0, At(0, 0), At(3, 0)), api::LOCALIZATION_STATUS_OK);    // mismatch from t = 1
+  EXPECT_EQ(localizer.Update(0.0, At(0, 0), At(0.4, 0)),
+            api::LOCALIZATION_STATUS_OK);  // within 0.5 m
+  EXPECT_EQ(localizer.Update(1.0, At(0, 0), At(3, 0)),
+            api::LOCALIZATION_STATUS_OK);  // mismatch from t = 1
   EXPECT_EQ(localizer.Update(2.5, At(0, 0), At(3, 0)), api::LOCALIZATION_STATUS_OK);
   EXPECT_EQ(localizer.Update(3.0, At(0, 0), At(3, 0)), api::LOCALIZATION_STATUS_LOST);  // held 2 s
-  EXPECT_EQ(localizer.Update(4.0, At(3, 0), At(3, 0)), api::LOCALIZATION_STATUS_LOST);  // agrees from t = 4
+  EXPECT_EQ(localizer.Update(4.0, At(3, 0), At(3, 0)),
+            api::LOCALIZATION_STATUS_LOST);  // agrees from t = 4
   EXPECT_EQ(localizer.Update(6.0, At(3, 0), At(3, 0)), api::LOCALIZATION_STATUS_OK);
   // A yaw mismatch alone counts too (15 deg default).
   EXPECT_EQ(localizer.Update(7.0, At(3, 0, 0.3), At(3, 0)), api::LOCALIZATION_STATUS_OK);

@@ -16,11 +16,14 @@ absl::StatusOr<Endpoints> LoadRemoteEndpoints(const std::string& yaml_path) {
     ConfigReader section = config->Child(names[i]);
     options[i] = ClientOptions::FromConfig(section, ClientOptions{});
   }
-  if (absl::Status s = config->Finish(); !s.ok()) return absl::InvalidArgumentError(absl::StrCat(yaml_path, ": ", s.message()));
+  if (absl::Status s = config->Finish(); !s.ok())
+    return absl::InvalidArgumentError(absl::StrCat(yaml_path, ": ", s.message()));
   std::shared_ptr<grpc::Channel> channels[3];
   for (int i = 0; i < 3; ++i) {
     absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = MakeChannel(options[i]);
-    if (!channel.ok()) return absl::Status(channel.status().code(), absl::StrCat(names[i], ".", channel.status().message()));
+    if (!channel.ok())
+      return absl::Status(channel.status().code(),
+                          absl::StrCat(names[i], ".", channel.status().message()));
     channels[i] = *channel;
   }
   return Endpoints{channels[0], channels[1], channels[2], nullptr};

@@ -39,13 +39,14 @@ api::ConnectRequest StateMessage(const SimRobot& robot, const std::string& robot
   state->mutable_header()->set_frame_id("map");
   state->mutable_header()->set_robot_id(robot_id);
   *state->mutable_pose() = ToProtoPose(robot.odometry_pose());
-  state->set_mode(robot.pose().position.z() > 0.05 ? api::LOCOMOTION_MODE_AIR : api::LOCOMOTION_MODE_GROUND);
+  state->set_mode(robot.pose().position.z() > 0.05 ? api::LOCOMOTION_MODE_AIR
+                                                   : api::LOCOMOTION_MODE_GROUND);
   state->set_battery_fraction(-1.0);
   return request;
 }
 
-api::ConnectRequest StepStateMessage(const SimRobot& robot, const std::string& robot_id, uint64_t step,
-                                     uint64_t mapping_revision) {
+api::ConnectRequest StepStateMessage(const SimRobot& robot, const std::string& robot_id,
+                                     uint64_t step, uint64_t mapping_revision) {
   api::ConnectRequest request = StateMessage(robot, robot_id);
   request.mutable_state()->set_step(step);
   request.mutable_state()->set_mapping_revision(mapping_revision);

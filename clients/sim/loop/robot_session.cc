@@ -6,19 +6,21 @@ namespace semnav::sim::loop {
 
 namespace api = semnav::reasoning::v1;
 
-absl::StatusOr<std::unique_ptr<RobotSession>> RobotSession::Open(const std::shared_ptr<grpc::Channel>& gateway,
-                                                                 const api::SessionHello& hello) {
+absl::StatusOr<std::unique_ptr<RobotSession>> RobotSession::Open(
+    const std::shared_ptr<grpc::Channel>& gateway, const api::SessionHello& hello) {
   std::unique_ptr<RobotSession> session(new RobotSession());
   session->stub_ = api::RobotSessionService::NewStub(gateway);
   session->stream_ = session->stub_->Connect(&session->context_);
   api::ConnectRequest first;
   *first.mutable_hello() = hello;
-  if (!session->stream_->Write(first)) return absl::UnavailableError("gateway closed the robot session");
+  if (!session->stream_->Write(first))
+    return absl::UnavailableError("gateway closed the robot session");
   api::ConnectResponse answer;
   const bool read_ok = session->stream_->Read(&answer);
   if (!read_ok || !answer.has_accepted()) {
     grpc::Status status = session->stream_->Finish();
-    return absl::UnavailableError(absl::StrCat("robot session not accepted: ", status.error_message()));
+    return absl::UnavailableError(
+        absl::StrCat("robot session not accepted: ", status.error_message()));
   }
   session->reader_ = std::thread([s = session.get()] { s->ReadLoop(); });
   return session;
@@ -72,17 +74,20 @@ std::vector<ReceivedCommand> RobotSession::TakeReceivedCommands(absl::Duration w
   return out;
 }
 
-absl::StatusOr<std::vector<api::RobotCommand>> RobotSession::TakeStepCommands(uint64_t step, absl::Duration timeout) {
+absl::StatusOr<std::vector<api::RobotCommand>> RobotSession::TakeStepCommands(
+    uint64_t step, absl::Duration timeout) {
   absl::MutexLock lock(&mu_);
   auto done = [this, step]() ABSL_SHARED_LOCKS_REQUIRED(mu_) {
     return (step_done_ && last_step_done_ >= step) || closed_;
   };
   if (!mu_.AwaitWithTimeout(absl::Condition(&done), timeout)) {
-    return absl::DeadlineExceededError(absl::StrCat("the gateway did not finish step ", step, " within ",
-                                                    absl::FormatDuration(timeout), " of wall time"));
+    return absl::DeadlineExceededError(absl::StrCat("the gateway did not finish step ", step,
+                                                    " within ", absl::FormatDuration(timeout),
+                                                    " of wall time"));
   }
   if (!(step_done_ && last_step_done_ >= step)) {
-    return absl::UnavailableError(absl::StrCat("the gateway ended the robot session before step ", step));
+    return absl::UnavailableError(
+        absl::StrCat("the gateway ended the robot session before step ", step));
   }
   std::vector<api::RobotCommand> out;
   for (std::size_t i = 0; i < commands_before_done_; ++i) {

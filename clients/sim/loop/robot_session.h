@@ -2,14 +2,14 @@
 // (read by a background thread so the simulation never blocks on the gateway).
 #pragma once
 
+#include <grpcpp/grpcpp.h>
+
 #include <deque>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <grpcpp/grpcpp.h>
 
 #include "absl/status/statusor.h"
 #include "absl/synchronization/mutex.h"
@@ -28,7 +28,8 @@ class RobotSession {
  public:
   // Opens the stream and waits for SessionAccepted (or the gateway's refusal).
   static absl::StatusOr<std::unique_ptr<RobotSession>> Open(
-      const std::shared_ptr<grpc::Channel>& gateway, const semnav::reasoning::v1::SessionHello& hello);
+      const std::shared_ptr<grpc::Channel>& gateway,
+      const semnav::reasoning::v1::SessionHello& hello);
   ~RobotSession();
 
   absl::Status Send(const semnav::reasoning::v1::ConnectRequest& request);
@@ -38,8 +39,8 @@ class RobotSession {
   // Simulated clock (lock step): waits until the gateway's StepDone for `step` and returns the
   // commands that came before it, oldest first. DEADLINE_EXCEEDED after `timeout` of wall time,
   // UNAVAILABLE when the stream ended first.
-  absl::StatusOr<std::vector<semnav::reasoning::v1::RobotCommand>> TakeStepCommands(uint64_t step,
-                                                                                    absl::Duration timeout);
+  absl::StatusOr<std::vector<semnav::reasoning::v1::RobotCommand>> TakeStepCommands(
+      uint64_t step, absl::Duration timeout);
   // True once the gateway ended the stream (or it broke).
   bool closed();
   // The gateway's latest LocalizationUpdate since the last call (lock step: those sent before the
@@ -58,7 +59,7 @@ class RobotSession {
   std::thread reader_;
   absl::Mutex mu_;
   std::deque<ReceivedCommand> commands_ ABSL_GUARDED_BY(mu_);
-  bool step_done_ ABSL_GUARDED_BY(mu_) = false;   // a StepDone came
+  bool step_done_ ABSL_GUARDED_BY(mu_) = false;  // a StepDone came
   uint64_t last_step_done_ ABSL_GUARDED_BY(mu_) = 0;
   std::size_t commands_before_done_ ABSL_GUARDED_BY(mu_) = 0;  // leading commands_ sent before it
   bool closed_ ABSL_GUARDED_BY(mu_) = false;

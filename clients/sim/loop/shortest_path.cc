@@ -1,9 +1,9 @@
 #include "clients/sim/loop/shortest_path.h"
 
-#include <optional>
-#include <chrono>
-
 #include <grpcpp/grpcpp.h>
+
+#include <chrono>
+#include <optional>
 
 #include "absl/strings/str_cat.h"
 #include "clients/sim/core/episode_metrics.h"
@@ -26,24 +26,29 @@ common::GridMap ToGridMap(const GroundTruthGrid& grid) {
   return out;
 }
 
-std::optional<NearestGoal> NearestSuccessPoint(const SuccessRegion& region, const GroundTruthGrid& grid,
+std::optional<NearestGoal> NearestSuccessPoint(const SuccessRegion& region,
+                                               const GroundTruthGrid& grid,
                                                const Eigen::Vector2d& start) {
   if (region.empty()) return std::nullopt;
-  return NearestReachableGoal(grid, start, [&](const Eigen::Vector2d& p) { return region.Contains(p); });
+  return NearestReachableGoal(grid, start,
+                              [&](const Eigen::Vector2d& p) { return region.Contains(p); });
 }
 
 std::optional<NearestGoal> NearestSuccessPoint(const World& world, const GroundTruthGrid& grid,
-                                               const Eigen::Vector2d& start, const std::string& label,
-                                               double success_radius) {
+                                               const Eigen::Vector2d& start,
+                                               const std::string& label, double success_radius) {
   return NearestSuccessPoint(SuccessRegion::Build(world, label, grid, success_radius), grid, start);
 }
 
-absl::StatusOr<double> ShortestPathToTarget(planning::PlanningService::Stub& stub, const SuccessRegion& region,
-                                            const GroundTruthGrid& grid, const Eigen::Vector2d& start) {
+absl::StatusOr<double> ShortestPathToTarget(planning::PlanningService::Stub& stub,
+                                            const SuccessRegion& region,
+                                            const GroundTruthGrid& grid,
+                                            const Eigen::Vector2d& start) {
   // Which point of the success region is nearest by path: a region cell, not the free cell
   // nearest an instance's centre, which can lie on the far side of a long counter or a wall.
   const std::optional<NearestGoal> nearest = NearestSuccessPoint(region, grid, start);
-  if (!nearest.has_value()) return absl::NotFoundError("no point of the success region is reachable");
+  if (!nearest.has_value())
+    return absl::NotFoundError("no point of the success region is reachable");
   // The length itself is planning's A* to that cell.
   planning::PlanPathRequest request;
   *request.mutable_source()->mutable_grid() = ToGridMap(grid);
@@ -57,7 +62,8 @@ absl::StatusOr<double> ShortestPathToTarget(planning::PlanningService::Stub& stu
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(30));
   const grpc::Status status = stub.PlanPath(&context, request, &response);
-  if (!status.ok()) return absl::UnavailableError(absl::StrCat("PlanPath: ", status.error_message()));
+  if (!status.ok())
+    return absl::UnavailableError(absl::StrCat("PlanPath: ", status.error_message()));
   return response.length_m();
 }
 

@@ -18,12 +18,13 @@ namespace semnav::sim::loop {
 
 // The point of `region` nearest by path on `grid` (the grid the region was built on); nullopt
 // when none is reachable from `start`.
-std::optional<NearestGoal> NearestSuccessPoint(const SuccessRegion& region, const GroundTruthGrid& grid,
+std::optional<NearestGoal> NearestSuccessPoint(const SuccessRegion& region,
+                                               const GroundTruthGrid& grid,
                                                const Eigen::Vector2d& start);
 // The same for the success region of `label` with `success_radius`, built on `grid`.
 std::optional<NearestGoal> NearestSuccessPoint(const World& world, const GroundTruthGrid& grid,
-                                               const Eigen::Vector2d& start, const std::string& label,
-                                               double success_radius);
+                                               const Eigen::Vector2d& start,
+                                               const std::string& label, double success_radius);
 
 // The rasterized world as a GridMap with one OCCUPANCY layer (0 free, 100 occupied).
 semnav::common::v1::GridMap ToGridMap(const GroundTruthGrid& grid);
@@ -31,7 +32,8 @@ semnav::common::v1::GridMap ToGridMap(const GroundTruthGrid& grid);
 // NOT_FOUND when no point of `region` (built on `grid`) can be reached; planning errors pass
 // through.
 absl::StatusOr<double> ShortestPathToTarget(semnav::planning::v1::PlanningService::Stub& planning,
-                                            const SuccessRegion& region, const GroundTruthGrid& grid,
+                                            const SuccessRegion& region,
+                                            const GroundTruthGrid& grid,
                                             const Eigen::Vector2d& start);
 
 }  // namespace semnav::sim::loop

@@ -1,9 +1,9 @@
 #include "clients/sim/loop/sim_stack.h"
 
+#include <grpcpp/grpcpp.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <grpcpp/grpcpp.h>
 
 #include "absl/strings/str_cat.h"
 #include "services/launcher/free_port.h"
@@ -16,7 +16,6 @@ namespace {
 // and 5 s defaults for real robots made a loaded machine pause tasks ("planning_unavailable:
 // Deadline Exceeded" at load 35), so episodes depended on machine load.
 constexpr int kWallDeadlineMs = 60000;
-
 
 absl::StatusOr<std::string> Address(bool free_port, int default_port) {
   int port = default_port;
@@ -39,7 +38,9 @@ std::string WriteConfig(const std::string& dir, const std::string& name, const s
 absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions& options) {
   std::error_code error;
   std::filesystem::create_directories(options.work_dir + "/maps", error);
-  if (error) return absl::InternalError(absl::StrCat("cannot create ", options.work_dir, ": ", error.message()));
+  if (error)
+    return absl::InternalError(
+        absl::StrCat("cannot create ", options.work_dir, ": ", error.message()));
   std::unique_ptr<SimStack> stack(new SimStack());
   absl::StatusOr<std::string> gateway = Address(options.free_ports, 50050);
   absl::StatusOr<std::string> mapping = Address(options.free_ports, 50051);
@@ -58,61 +59,72 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
   // Mapping's own landmark map (docs/algorithms/relocalization.md, section 8).
   const std::string mapping_landmarks =
       options.relocalization && options.mapping_landmarks
-          ? absl::StrCat("  landmarks:\n    live_map_id: live\n    interval_s: 0.05\n"
-                         "    relocalization:\n      address: ", relocalization_address, "\n")
+          ? absl::StrCat(
+                "  landmarks:\n    live_map_id: live\n    interval_s: 0.05\n"
+                "    relocalization:\n      address: ",
+                relocalization_address, "\n")
           : "";
   semnav::launcher::StackConfig config;
   // Mapping publishes a scene-graph delta after every frame (a step takes more than the 10 ms
   // floor) so the gateway sees detections without waiting out a rate limit.
-  config.services.push_back({"mapping", "semnav-mapping", *mapping,
-                             WriteConfig(options.work_dir, "mapping",
-                                         absl::StrCat("mapping:\n  store_directory: ", options.work_dir,
-                                                      "/maps\n  watch_min_interval_ms: 10\n", mapping_landmarks))});
-  config.services.push_back({"planning", "semnav-planning", *planning,
-                             WriteConfig(options.work_dir, "planning",
-                                         // The robot's local planner treats unexplored space as free.
-                                         absl::StrCat("planning:\n  grid:\n    unknown_is_free: true\n"
-                                                      "  max_planning_time_ms: ", kWallDeadlineMs, "\n"
-                                                      "  mapping:\n    address: ", *mapping, "\n"))});
+  config.services.push_back(
+      {"mapping", "semnav-mapping", *mapping,
+       WriteConfig(options.work_dir, "mapping",
+                   absl::StrCat("mapping:\n  store_directory: ", options.work_dir,
+                                "/maps\n  watch_min_interval_ms: 10\n", mapping_landmarks))});
+  config.services.push_back(
+      {"planning", "semnav-planning", *planning,
+       WriteConfig(options.work_dir, "planning",
+                   // The robot's local planner treats unexplored space as free.
+                   absl::StrCat("planning:\n  grid:\n    unknown_is_free: true\n"
+                                "  max_planning_time_ms: ",
+                                kWallDeadlineMs,
+                                "\n"
+                                "  mapping:\n    address: ",
+                                *mapping, "\n"))});
   std::string model_proxy_section;
   if (!options.model_proxy_config.empty()) {
     absl::StatusOr<std::string> model_proxy = Address(options.free_ports, 50054);
     if (!model_proxy.ok()) return model_proxy.status();
-    config.services.push_back({"modelproxy", "semnav-model-proxy", *model_proxy, options.model_proxy_config});
-    model_proxy_section =
-        absl::StrCat("  model_proxy:\n    address: ", *model_proxy, "\n    deadline_ms: ", kWallDeadlineMs, "\n");
+    config.services.push_back(
+        {"modelproxy", "semnav-model-proxy", *model_proxy, options.model_proxy_config});
+    model_proxy_section = absl::StrCat("  model_proxy:\n    address: ", *model_proxy,
+                                       "\n    deadline_ms: ", kWallDeadlineMs, "\n");
   }
   std::string relocalization_section;
   if (options.relocalization) {
     const std::string* relocalization = &relocalization_address;
     stack->relocalization_ = *relocalization;
-    config.services.push_back({"relocalization", "semnav-relocalization", *relocalization,
-                               WriteConfig(options.work_dir, "relocalization",
-                                           // A room's look-around sees 5-15 objects, not the seed's
-                                           // 38 per keyframe: 5 inliers make a reliable answer. The
-                                           // observed scales are mapping's extents of what was seen
-                                           // (0.04-0.75 m measured), the oracle map's whole boxes: the
-                                           // scale gate (0.5 ratio) is relaxed to 0.05; mapping's centres
-                                           // are those of the seen surfaces, the oracle's the boxes':
-                                           // position sigma 0.5 m instead of 0.2.
-                                           // The same for mapping's own maps: deploy/local.yaml's
-                                           // looser reliability (4 inliers, 0.4 m rms) "recovered"
-                                           // 6 of 6 kidnaps 3.5-6.8 m and 26-148 deg off (mission.md).
-                                           absl::StrCat("relocalization:\n  storage_dir: ", options.work_dir,
-                                                        "/landmarks\n  reliability:\n    min_inliers: 5\n"
-                                                        "  matching:\n    scale_threshold: 0.05\n    pos_sigma_m: 0.5\n"))});
+    config.services.push_back(
+        {"relocalization", "semnav-relocalization", *relocalization,
+         WriteConfig(
+             options.work_dir, "relocalization",
+             // A room's look-around sees 5-15 objects, not the seed's
+             // 38 per keyframe: 5 inliers make a reliable answer. The
+             // observed scales are mapping's extents of what was seen
+             // (0.04-0.75 m measured), the oracle map's whole boxes: the
+             // scale gate (0.5 ratio) is relaxed to 0.05; mapping's centres
+             // are those of the seen surfaces, the oracle's the boxes':
+             // position sigma 0.5 m instead of 0.2.
+             // The same for mapping's own maps: deploy/local.yaml's
+             // looser reliability (4 inliers, 0.4 m rms) "recovered"
+             // 6 of 6 kidnaps 3.5-6.8 m and 26-148 deg off (mission.md).
+             absl::StrCat("relocalization:\n  storage_dir: ", options.work_dir,
+                          "/landmarks\n  reliability:\n    min_inliers: 5\n"
+                          "  matching:\n    scale_threshold: 0.05\n    pos_sigma_m: 0.5\n"))});
     relocalization_section = absl::StrCat("  relocalization:\n    address: ", *relocalization, "\n",
                                           options.mapping_landmarks ? "    map_id: live\n" : "");
   }
-  config.services.push_back({"gateway", "semnav-gateway", *gateway,
-                             WriteConfig(options.work_dir, "gateway",
-                                         absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
-                                                      "\n  planning:\n    address: ", *planning,
-                                                      "\n    deadline_ms: ", kWallDeadlineMs, "\n",
-                                                      model_proxy_section, relocalization_section,
-                                                      "  executor:\n    time_budget_s: ",
-                                                      options.task_time_budget_s, "\n"))});
-  stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
+  config.services.push_back(
+      {"gateway", "semnav-gateway", *gateway,
+       WriteConfig(
+           options.work_dir, "gateway",
+           absl::StrCat("gateway:\n  mapping:\n    address: ", *mapping,
+                        "\n  planning:\n    address: ", *planning, "\n    deadline_ms: ",
+                        kWallDeadlineMs, "\n", model_proxy_section, relocalization_section,
+                        "  executor:\n    time_budget_s: ", options.task_time_budget_s, "\n"))});
+  stack->runner_ =
+      std::make_unique<semnav::launcher::StackRunner>(std::move(config), options.bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
   return stack;
 }

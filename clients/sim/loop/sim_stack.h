@@ -15,11 +15,12 @@
 namespace semnav::sim::loop {
 
 struct SimStackOptions {
-  std::string bin_dir;   // folder holding semnav-mapping, semnav-planning, semnav-gateway
-  std::string work_dir;  // configs and the mapping store go here (created)
+  std::string bin_dir;     // folder holding semnav-mapping, semnav-planning, semnav-gateway
+  std::string work_dir;    // configs and the mapping store go here (created)
   bool free_ports = true;  // false: the deploy/local.yaml ports (gateway 50050, ...)
   // A semnav-model-proxy config (YAML) to run a model proxy in the stack and point the gateway
-  // at it (gateway.model_proxy.address); empty = no model, the gateway resolves on its fast path only.
+  // at it (gateway.model_proxy.address); empty = no model, the gateway resolves on its fast path
+  // only.
   std::string model_proxy_config;
   // The episode budget in simulated seconds, given to the gateway's executor (executor.
   // time_budget_s) so its endgame knows when the last steps come; 0 = no budget.

@@ -8,7 +8,6 @@
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
-
 #include "clients/sim/loop/episode_runner.h"
 #include "clients/sim/loop/search_episode.h"
 #include "clients/sim/loop/sim_stack.h"
@@ -21,13 +20,13 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
   ASSERT_TRUE(spec.ok()) << spec.status();
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
-      SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, ""});
+      SimStack::Start({SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke", true, ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
 
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();
-  SCOPED_TRACE(absl::StrCat("target ", spec->target, ", task ", result->final_reason, ", steps ", result->steps));
+  SCOPED_TRACE(absl::StrCat("target ", spec->target, ", task ", result->final_reason, ", steps ",
+                            result->steps));
   EXPECT_EQ(result->final_status, semnav::reasoning::v1::TASK_STATUS_SUCCEEDED);
   EXPECT_TRUE(result->stop_issued);
   EXPECT_TRUE(result->record.success);
@@ -35,7 +34,8 @@ TEST(SimLoopIntegrationTest, SmokeEpisodeFindsTheTargetInSight) {
   // The in-sight target is 1.5-3.5 m away: l_i is positive and no longer than the path taken
   // plus the success-radius slack; SPL is then in (0, 1].
   EXPECT_GT(result->record.shortest_path_m, 0.0);
-  const double spl = SuccessWeightedPathLength(true, result->record.shortest_path_m, result->record.path_m);
+  const double spl =
+      SuccessWeightedPathLength(true, result->record.shortest_path_m, result->record.path_m);
   EXPECT_GT(spl, 0.0);
   EXPECT_LE(spl, 1.0);
 }
@@ -58,8 +58,9 @@ TEST(SimLoopIntegrationTest, SearchEpisodeFindsTheTargetOutOfSight) {
   // It explored before it saw the bed, and took a longer way than the 4.33 m shortest path.
   EXPECT_NEAR(result->record.shortest_path_m, 4.33, 0.05);
   EXPECT_GT(result->record.path_m, result->record.shortest_path_m);
-  EXPECT_TRUE(std::any_of(result->timeline.begin(), result->timeline.end(),
-                          [](const std::string& line) { return absl::StrContains(line, " exploring: "); }));
+  EXPECT_TRUE(
+      std::any_of(result->timeline.begin(), result->timeline.end(),
+                  [](const std::string& line) { return absl::StrContains(line, " exploring: "); }));
   bool saw_target = false;
   for (const int i : result->seen_objects) {
     saw_target = saw_target || spec->world.objects[static_cast<size_t>(i)].label == spec->target;
@@ -71,15 +72,15 @@ TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameTable) {
   absl::StatusOr<EpisodeSpec> spec = SmokeEpisode(7);
   ASSERT_TRUE(spec.ok()) << spec.status();
   ASSERT_EQ(spec->target, "dining table");  // world seed 7's in-sight object
-  spec->target = "餐桌";                     // instruction "找餐桌"
+  spec->target = "餐桌";                    // instruction "找餐桌"
   spec->target_label = "dining table";
   absl::StatusOr<std::unique_ptr<SimStack>> stack =
-      SimStack::Start(
-          {SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, ""});
+      SimStack::Start({SEMNAV_BIN_DIR, ::testing::TempDir() + "/sim_loop_smoke_zh", true, ""});
   ASSERT_TRUE(stack.ok()) << stack.status();
   absl::StatusOr<EpisodeResult> result = RunEpisode(*spec, (*stack)->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();
-  EXPECT_EQ(result->final_status, semnav::reasoning::v1::TASK_STATUS_SUCCEEDED) << result->final_reason;
+  EXPECT_EQ(result->final_status, semnav::reasoning::v1::TASK_STATUS_SUCCEEDED)
+      << result->final_reason;
   EXPECT_TRUE(result->record.success);
   EXPECT_EQ(result->record.goals_fast_path, 1);
 
@@ -89,11 +90,13 @@ TEST(SimLoopIntegrationTest, ChineseTargetNameFindsTheSameTable) {
   absl::StatusOr<EpisodeResult> refused = RunEpisode(*spec, (*stack)->endpoints());
   ASSERT_TRUE(refused.ok()) << refused.status();
   EXPECT_EQ(refused->final_status, semnav::reasoning::v1::TASK_STATUS_FAILED);
-  EXPECT_TRUE(absl::StartsWith(refused->final_reason, "instruction refused: INVALID_ARGUMENT")) << refused->final_reason;
+  EXPECT_TRUE(absl::StartsWith(refused->final_reason, "instruction refused: INVALID_ARGUMENT"))
+      << refused->final_reason;
   EXPECT_FALSE(refused->record.success);
   EXPECT_EQ(refused->steps, 0);
   EXPECT_EQ(refused->record.path_m, 0.0);
-  EXPECT_GE(refused->record.distance_to_goal_m, 1.5);  // taken at the start, >= 1.5 m from any table
+  EXPECT_GE(refused->record.distance_to_goal_m,
+            1.5);  // taken at the start, >= 1.5 m from any table
 }
 
 // EROI_UTILITY's input (seed 000): with camera frames on the robot session, the gateway asks the
@@ -109,7 +112,8 @@ TEST(SimLoopIntegrationTest, EroiEpisodeSendsCameraFramesToTheVisionModel) {
   std::filesystem::create_directories(dir);
   const std::string proxy_config = dir + "/modelproxy.yaml";
   std::ofstream(proxy_config) << "modelproxy: {}\n";
-  absl::StatusOr<std::unique_ptr<SimStack>> stack = SimStack::Start({SEMNAV_BIN_DIR, dir, true, proxy_config});
+  absl::StatusOr<std::unique_ptr<SimStack>> stack =
+      SimStack::Start({SEMNAV_BIN_DIR, dir, true, proxy_config});
   ASSERT_TRUE(stack.ok()) << stack.status();
 
   absl::StatusOr<EpisodeResult> blind = RunEpisode(*spec, (*stack)->endpoints());
@@ -122,9 +126,11 @@ TEST(SimLoopIntegrationTest, EroiEpisodeSendsCameraFramesToTheVisionModel) {
   // Frames reach the vision model, but a failed call backs off (1 s, doubling) and only a new
   // view asks: no longer a call per frame (issue 15's 636-call storm), at most one per back-off.
   EXPECT_GE(seeing->record.model_calls, blind->record.model_calls + 1)
-      << "without frames " << blind->record.model_calls << ", with frames " << seeing->record.model_calls;
+      << "without frames " << blind->record.model_calls << ", with frames "
+      << seeing->record.model_calls;
   EXPECT_LE(seeing->record.model_calls, blind->record.model_calls + 8)
-      << "without frames " << blind->record.model_calls << ", with frames " << seeing->record.model_calls;
+      << "without frames " << blind->record.model_calls << ", with frames "
+      << seeing->record.model_calls;
 }
 
 }  // namespace

@@ -15,8 +15,8 @@ bool FreeAt(const GroundTruthGrid& grid, const Eigen::Vector2d& p) {
 }  // namespace
 
 std::optional<TargetChoice> PickInSightTarget(const World& world, const GroundTruthGrid& grid,
-                                              const Eigen::Vector2d& start, double min_m, double max_m,
-                                              double standoff_m) {
+                                              const Eigen::Vector2d& start, double min_m,
+                                              double max_m, double standoff_m) {
   std::optional<TargetChoice> best;
   for (int i = 0; i < static_cast<int>(world.objects.size()); ++i) {
     const ObjectInstance& object = world.objects[i];

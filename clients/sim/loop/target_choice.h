@@ -13,7 +13,7 @@ namespace semnav::sim::loop {
 struct TargetChoice {
   int object_index = -1;
   std::string label;
-  double distance_m = 0.0;   // start to the object's centre
+  double distance_m = 0.0;     // start to the object's centre
   double yaw_to_target = 0.0;  // heading from the start toward it
 };
 
@@ -22,7 +22,7 @@ struct TargetChoice {
 // footprint of the label must be at least min_m from the start too: an episode that starts in
 // its success region has l_i = 0, which seed 004's SPL cannot score.
 std::optional<TargetChoice> PickInSightTarget(const World& world, const GroundTruthGrid& grid,
-                                              const Eigen::Vector2d& start, double min_m, double max_m,
-                                              double standoff_m);
+                                              const Eigen::Vector2d& start, double min_m,
+                                              double max_m, double standoff_m);
 
 }  // namespace semnav::sim::loop

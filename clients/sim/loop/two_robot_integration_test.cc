@@ -1,9 +1,9 @@
 // Two robots, one frame through the real binaries on loopback: mapping A and B push their
 // landmarks to relocalization by themselves, B is aligned to A's saved map with AlignMaps and
 // reaches an object A saw without exploring.
-#include "clients/sim/loop/two_robot_scenario.h"
-
 #include <gtest/gtest.h>
+
+#include "clients/sim/loop/two_robot_scenario.h"
 
 namespace semnav::sim::loop {
 namespace {
@@ -21,8 +21,8 @@ TEST(TwoRobots, RobotBJoinsRobotAsMapAndGoesStraightToItsObject) {
   EXPECT_GE(result->a_landmarks, 5) << "A's survey must fill its landmark map by itself";
   int succeeded = 0;
   for (const TwoRobotTrial& trial : result->trials) {
-    SCOPED_TRACE(testing::Message() << "trial " << trial.index << " target " << trial.target_label << ": "
-                                    << trial.failure);
+    SCOPED_TRACE(testing::Message() << "trial " << trial.index << " target " << trial.target_label
+                                    << ": " << trial.failure);
     if (!trial.success) continue;
     ++succeeded;
     EXPECT_TRUE(trial.reliable);

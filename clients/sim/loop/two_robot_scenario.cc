@@ -1,13 +1,13 @@
 #include "clients/sim/loop/two_robot_scenario.h"
 
+#include <grpcpp/grpcpp.h>
+
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <optional>
-
-#include <Eigen/Geometry>
-#include <grpcpp/grpcpp.h>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -29,12 +29,13 @@ namespace {
 namespace mv1 = semnav::mapping::v1;
 namespace rv1 = semnav::relocalization::v1;
 
-constexpr int kStableDetections = 3;        // mapping.landmarks.min_detections default
-constexpr double kSecondsPerFrame = 0.5;    // simulated stamp between captures
-constexpr double kTargetMatchM = 0.5;       // an instance within this of a true footprint is that object
+constexpr int kStableDetections = 3;      // mapping.landmarks.min_detections default
+constexpr double kSecondsPerFrame = 0.5;  // simulated stamp between captures
+constexpr double kTargetMatchM = 0.5;  // an instance within this of a true footprint is that object
 constexpr absl::Duration kPublishWait = absl::Seconds(20);
 
-grpc::Status Call(const std::function<grpc::Status(grpc::ClientContext*)>& call, int deadline_s = 30) {
+grpc::Status Call(const std::function<grpc::Status(grpc::ClientContext*)>& call,
+                  int deadline_s = 30) {
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(deadline_s));
   return call(&context);
@@ -48,9 +49,10 @@ absl::Status FromGrpc(const grpc::Status& status, absl::string_view what) {
 
 Eigen::Isometry3d FromProto(const semnav::common::v1::Pose& pose) {
   Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-  out.translation() = Eigen::Vector3d(pose.position().x(), pose.position().y(), pose.position().z());
-  out.linear() = Eigen::Quaterniond(pose.orientation().w(), pose.orientation().x(), pose.orientation().y(),
-                                    pose.orientation().z())
+  out.translation() =
+      Eigen::Vector3d(pose.position().x(), pose.position().y(), pose.position().z());
+  out.linear() = Eigen::Quaterniond(pose.orientation().w(), pose.orientation().x(),
+                                    pose.orientation().y(), pose.orientation().z())
                      .normalized()
                      .toRotationMatrix();
   return out;
@@ -63,14 +65,19 @@ Eigen::Isometry3d PlanarTransform(double yaw, const Eigen::Vector2d& shift) {
   return out;
 }
 
-double YawOf(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
+double YawOf(const Eigen::Isometry3d& pose) {
+  return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+}
 
-absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping, const std::string& request_id) {
+absl::Status ResetMap(const std::shared_ptr<grpc::Channel>& mapping,
+                      const std::string& request_id) {
   auto stub = mv1::MappingService::NewStub(mapping);
   mv1::ResetMapRequest request;
   request.set_request_id(request_id);
   mv1::ResetMapResponse response;
-  return FromGrpc(Call([&](grpc::ClientContext* c) { return stub->ResetMap(c, request, &response); }), "ResetMap");
+  return FromGrpc(
+      Call([&](grpc::ClientContext* c) { return stub->ResetMap(c, request, &response); }),
+      "ResetMap");
 }
 
 absl::Status SaveMap(const std::shared_ptr<grpc::Channel>& mapping, const std::string& map_id) {
@@ -79,16 +86,19 @@ absl::Status SaveMap(const std::shared_ptr<grpc::Channel>& mapping, const std::s
   request.set_request_id(absl::StrCat("save-", map_id));
   request.set_map_id(map_id);
   mv1::SaveMapResponse response;
-  return FromGrpc(Call([&](grpc::ClientContext* c) { return stub->SaveMap(c, request, &response); }), "SaveMap");
+  return FromGrpc(
+      Call([&](grpc::ClientContext* c) { return stub->SaveMap(c, request, &response); }),
+      "SaveMap");
 }
 
-absl::StatusOr<std::vector<mv1::SceneObject>> StableObjects(const std::shared_ptr<grpc::Channel>& mapping) {
+absl::StatusOr<std::vector<mv1::SceneObject>> StableObjects(
+    const std::shared_ptr<grpc::Channel>& mapping) {
   auto stub = mv1::MappingService::NewStub(mapping);
   mv1::GetSceneGraphRequest request;
   mv1::GetSceneGraphResponse response;
-  if (absl::Status s =
-          FromGrpc(Call([&](grpc::ClientContext* c) { return stub->GetSceneGraph(c, request, &response); }),
-                   "GetSceneGraph");
+  if (absl::Status s = FromGrpc(
+          Call([&](grpc::ClientContext* c) { return stub->GetSceneGraph(c, request, &response); }),
+          "GetSceneGraph");
       !s.ok()) {
     return s;
   }
@@ -100,7 +110,8 @@ absl::StatusOr<std::vector<mv1::SceneObject>> StableObjects(const std::shared_pt
 }
 
 // Landmarks in relocalization's map `map_id` once mapping's background push made it.
-absl::StatusOr<int> AwaitLandmarkMap(const std::shared_ptr<grpc::Channel>& relocalization, const std::string& map_id) {
+absl::StatusOr<int> AwaitLandmarkMap(const std::shared_ptr<grpc::Channel>& relocalization,
+                                     const std::string& map_id) {
   auto stub = rv1::RelocalizationService::NewStub(relocalization);
   const absl::Time give_up = absl::Now() + kPublishWait;
   while (true) {
@@ -118,7 +129,8 @@ absl::StatusOr<int> AwaitLandmarkMap(const std::shared_ptr<grpc::Channel>& reloc
       return FromGrpc(status, absl::StrCat("GetLandmarkMap ", map_id));
     }
     if (absl::Now() > give_up) {
-      return absl::DeadlineExceededError(absl::StrCat("landmark map ", map_id, " never reached relocalization"));
+      return absl::DeadlineExceededError(
+          absl::StrCat("landmark map ", map_id, " never reached relocalization"));
     }
     absl::SleepFor(absl::Milliseconds(100));
   }
@@ -126,8 +138,9 @@ absl::StatusOr<int> AwaitLandmarkMap(const std::shared_ptr<grpc::Channel>& reloc
 
 // Turns a fresh robot in place at `at`, one capture per heading step, streamed to mapping with
 // its camera pose expressed in the robot's odometry frame (`odom_from_world`).
-absl::StatusOr<int> LookAround(const World& world, const Scene& scene, const Eigen::Vector2d& at, double start_yaw,
-                               uint64_t seed, double step_deg, const Eigen::Isometry3d& odom_from_world,
+absl::StatusOr<int> LookAround(const World& world, const Scene& scene, const Eigen::Vector2d& at,
+                               double start_yaw, uint64_t seed, double step_deg,
+                               const Eigen::Isometry3d& odom_from_world,
                                const std::string& robot_id, FrameStream& frames, double& clock_s) {
   const RobotConfig robot_config = RobotConfig::ForModality(Modality::kGround);
   StartPose start;
@@ -137,7 +150,9 @@ absl::StatusOr<int> LookAround(const World& world, const Scene& scene, const Eig
   const int steps = std::max(1, static_cast<int>(std::lround(360.0 / step_deg)));
   for (int k = 0; k < steps; ++k) {
     if (k > 0) {
-      if (absl::Status s = robot.Apply(Rotate{WrapAngle(start_yaw + k * step_deg * M_PI / 180.0)}); !s.ok()) return s;
+      if (absl::Status s = robot.Apply(Rotate{WrapAngle(start_yaw + k * step_deg * M_PI / 180.0)});
+          !s.ok())
+        return s;
       for (int i = 0; i < 400 && robot.Step(0.05).activity == RobotActivity::kTurning; ++i) {
       }
     }
@@ -186,7 +201,8 @@ struct Target {
   const ObjectInstance* object = nullptr;
 };
 
-std::vector<Target> MatchTargets(const World& world, const std::vector<mv1::SceneObject>& instances) {
+std::vector<Target> MatchTargets(const World& world,
+                                 const std::vector<mv1::SceneObject>& instances) {
   std::vector<Target> out;
   for (const mv1::SceneObject& instance : instances) {
     const Eigen::Vector2d p(instance.position().x(), instance.position().y());
@@ -209,13 +225,14 @@ std::vector<Target> MatchTargets(const World& world, const std::vector<mv1::Scen
 
 absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& options,
                                                      const TwoRobotEndpoints& endpoints) {
-  if (options.trials < 1 || options.trials > 1000) return absl::InvalidArgumentError("trials must be in [1, 1000]");
+  if (options.trials < 1 || options.trials > 1000)
+    return absl::InvalidArgumentError("trials must be in [1, 1000]");
   if (!(options.success_radius_m > 0.0 && options.approach_margin_m >= 0.0 &&
         options.approach_margin_m < options.success_radius_m)) {
     return absl::InvalidArgumentError("need 0 <= approach_margin_m < success_radius_m");
   }
-  if (!(options.look_step_deg >= 5.0 && options.look_step_deg <= 90.0 && options.survey_step_deg >= 5.0 &&
-        options.survey_step_deg <= 90.0)) {
+  if (!(options.look_step_deg >= 5.0 && options.look_step_deg <= 90.0 &&
+        options.survey_step_deg >= 5.0 && options.survey_step_deg <= 90.0)) {
     return absl::InvalidArgumentError("look_step_deg and survey_step_deg must be in [5, 90]");
   }
   if (!(options.max_offset_m >= 0.0 && options.max_offset_m <= 1000.0)) {
@@ -224,7 +241,8 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
   if (options.max_look_arounds < 1 || options.max_look_arounds > 10) {
     return absl::InvalidArgumentError("max_look_arounds must be in [1, 10]");
   }
-  if (!(options.move_m >= 0.5 && options.move_m <= 20.0)) return absl::InvalidArgumentError("move_m must be in [0.5, 20]");
+  if (!(options.move_m >= 0.5 && options.move_m <= 20.0))
+    return absl::InvalidArgumentError("move_m must be in [0.5, 20]");
   TwoRobotWorldResult result;
   result.world = absl::StrCat("two_robots_home_", options.world_seed);
   World world = GenerateIndoor(result.world, IndoorOptions{}, options.world_seed);
@@ -234,7 +252,9 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
   const std::vector<uint8_t> region = LargestFreeRegion(grid);
 
   // Robot A: a look-around in every room; its odometry frame is the world frame.
-  if (absl::Status s = ResetMap(endpoints.mapping_a, absl::StrCat("reset-a-", options.world_seed)); !s.ok()) return s;
+  if (absl::Status s = ResetMap(endpoints.mapping_a, absl::StrCat("reset-a-", options.world_seed));
+      !s.ok())
+    return s;
   double clock_s = 0.0;
   {
     FrameStream frames(endpoints.mapping_a);
@@ -242,8 +262,8 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       const std::optional<Eigen::Vector2d> at = RoomViewpoint(world.rooms[i], grid, region);
       if (!at) continue;
       absl::StatusOr<int> sent = LookAround(world, scene, *at, 0.0, MixSeed(options.world_seed, i),
-                                            options.survey_step_deg, Eigen::Isometry3d::Identity(), "robot_a",
-                                            frames, clock_s);
+                                            options.survey_step_deg, Eigen::Isometry3d::Identity(),
+                                            "robot_a", frames, clock_s);
       if (!sent.ok()) return sent.status();
       ++result.a_viewpoints;
       result.a_frames += *sent;
@@ -262,36 +282,43 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
   for (size_t i = 0; i < region.size(); ++i) {
     if (region[i] != 0) free_cells.push_back(static_cast<int>(i));
   }
-  if (free_cells.empty()) return absl::FailedPreconditionError(absl::StrCat(result.world, " has no free cell"));
+  if (free_cells.empty())
+    return absl::FailedPreconditionError(absl::StrCat(result.world, " has no free cell"));
   auto relocalization = rv1::RelocalizationService::NewStub(endpoints.relocalization);
   for (int t = 0; t < options.trials; ++t) {
     TwoRobotTrial trial;
     trial.index = t;
     Rng rng(MixSeed(MixSeed(options.trial_seed, options.world_seed), static_cast<uint64_t>(t)));
-    const int cell = free_cells[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(free_cells.size()) - 1))];
+    const int cell =
+        free_cells[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(free_cells.size()) - 1))];
     const Eigen::Vector2d start = grid.CellCentre(cell % grid.width, cell / grid.width);
     const double start_yaw = rng.Uniform(-M_PI, M_PI);
     // B's odometry frame: the world turned and shifted by an offset B does not know.
     const Eigen::Isometry3d odom_b_from_world =
-        PlanarTransform(rng.Uniform(-M_PI, M_PI), Eigen::Vector2d(rng.Uniform(-options.max_offset_m, options.max_offset_m),
-                                                                 rng.Uniform(-options.max_offset_m, options.max_offset_m)));
+        PlanarTransform(rng.Uniform(-M_PI, M_PI),
+                        Eigen::Vector2d(rng.Uniform(-options.max_offset_m, options.max_offset_m),
+                                        rng.Uniform(-options.max_offset_m, options.max_offset_m)));
     const Eigen::Isometry3d world_from_odom_b = odom_b_from_world.inverse();
     // A target A saw, out of the room B starts in (B cannot see it from there).
     const Room* start_room = RoomAt(world, start);
     std::vector<const Target*> candidates;
     for (const Target& target : targets) {
-      if (start_room == nullptr || target.object->room != start_room->name) candidates.push_back(&target);
+      if (start_room == nullptr || target.object->room != start_room->name)
+        candidates.push_back(&target);
     }
     if (candidates.empty()) {
       trial.failure = "no target outside B's room";
       result.trials.push_back(trial);
       continue;
     }
-    const Target& target = *candidates[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(candidates.size()) - 1))];
+    const Target& target = *candidates[static_cast<size_t>(
+        rng.UniformInt(0, static_cast<int>(candidates.size()) - 1))];
     trial.target_id = target.object->id;
     trial.target_label = target.object->label;
 
-    if (absl::Status s = ResetMap(endpoints.mapping_b, absl::StrCat("reset-b-", options.world_seed, "-", t)); !s.ok()) {
+    if (absl::Status s =
+            ResetMap(endpoints.mapping_b, absl::StrCat("reset-b-", options.world_seed, "-", t));
+        !s.ok()) {
       return s;
     }
     // B looks around where it stands; while AlignMaps gives no reliable pose, it moves a short
@@ -304,10 +331,12 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
     Eigen::Isometry3d a_from_b = Eigen::Isometry3d::Identity();
     for (int look = 0; look < options.max_look_arounds; ++look) {
       if (look > 0) {
-        const std::optional<NearestGoal> next = NearestReachableGoal(grid, at, [&](const Eigen::Vector2d& p) {
-          return std::all_of(looked.begin(), looked.end(),
-                             [&](const Eigen::Vector2d& q) { return (p - q).norm() >= options.move_m; });
-        });
+        const std::optional<NearestGoal> next =
+            NearestReachableGoal(grid, at, [&](const Eigen::Vector2d& p) {
+              return std::all_of(looked.begin(), looked.end(), [&](const Eigen::Vector2d& q) {
+                return (p - q).norm() >= options.move_m;
+              });
+            });
         if (!next) break;
         moved_m += next->length_m;
         yaw = std::atan2(next->goal.y() - at.y(), next->goal.x() - at.x());
@@ -317,8 +346,9 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       trial.look_arounds = look + 1;
       {
         FrameStream frames(endpoints.mapping_b);
-        absl::StatusOr<int> sent = LookAround(world, scene, at, yaw, rng.Next(), options.look_step_deg,
-                                              odom_b_from_world, "robot_b", frames, clock_s);
+        absl::StatusOr<int> sent =
+            LookAround(world, scene, at, yaw, rng.Next(), options.look_step_deg, odom_b_from_world,
+                       "robot_b", frames, clock_s);
         if (!sent.ok()) return sent.status();
       }
       absl::StatusOr<std::vector<mv1::SceneObject>> b_objects = StableObjects(endpoints.mapping_b);
@@ -327,7 +357,8 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
         trial.failure = "B saw no stable object";
         continue;
       }
-      const std::string map_b = absl::StrCat("two_robots_b_", options.world_seed, "_", t, "_", look);
+      const std::string map_b =
+          absl::StrCat("two_robots_b_", options.world_seed, "_", t, "_", look);
       if (absl::Status s = SaveMap(endpoints.mapping_b, map_b); !s.ok()) return s;
       absl::StatusOr<int> b_landmarks = AwaitLandmarkMap(endpoints.relocalization, map_b);
       if (!b_landmarks.ok()) return b_landmarks.status();
@@ -337,11 +368,12 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       align.set_moving_map_id(map_b);
       rv1::AlignMapsResponse aligned;
       const absl::Time sent_at = absl::Now();
-      const grpc::Status status =
-          Call([&](grpc::ClientContext* c) { return relocalization->AlignMaps(c, align, &aligned); });
+      const grpc::Status status = Call(
+          [&](grpc::ClientContext* c) { return relocalization->AlignMaps(c, align, &aligned); });
       trial.align_ms = absl::ToDoubleMilliseconds(absl::Now() - sent_at);
       if (!status.ok()) {
-        if (status.error_code() != grpc::StatusCode::NOT_FOUND) return FromGrpc(status, "AlignMaps");
+        if (status.error_code() != grpc::StatusCode::NOT_FOUND)
+          return FromGrpc(status, "AlignMaps");
         trial.failure = absl::StrCat("alignment failed: ", status.error_message());
         continue;
       }
@@ -351,11 +383,13 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       trial.rms_residual_m = aligned.solution().rms_residual_m();
       a_from_b = FromProto(aligned.solution().map_from_query());
       // A's frame is the world frame, so the true a_from_b is world_from_odom_b.
-      const Eigen::Vector3d start_in_b = odom_b_from_world * Eigen::Vector3d(start.x(), start.y(), 0.0);
+      const Eigen::Vector3d start_in_b =
+          odom_b_from_world * Eigen::Vector3d(start.x(), start.y(), 0.0);
       trial.alignment_error_m = (a_from_b * start_in_b - world_from_odom_b * start_in_b).norm();
       trial.alignment_error_deg =
-          std::abs(Eigen::AngleAxisd(a_from_b.linear() * world_from_odom_b.linear().transpose()).angle()) * 180.0 /
-          M_PI;
+          std::abs(Eigen::AngleAxisd(a_from_b.linear() * world_from_odom_b.linear().transpose())
+                       .angle()) *
+          180.0 / M_PI;
       if (trial.reliable) break;
       trial.failure = "alignment not reliable: B does not move on it";
     }
@@ -364,19 +398,23 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       continue;
     }
     trial.failure.clear();
-    // Where B believes the target is, in the world: A's instance through B's estimate and B's true frame.
+    // Where B believes the target is, in the world: A's instance through B's estimate and B's true
+    // frame.
     const Eigen::Isometry3d believed = world_from_odom_b * a_from_b.inverse();
     const mv1::SceneObject& instance = target.instance;
     const Eigen::Vector3d centre =
-        believed * Eigen::Vector3d(instance.position().x(), instance.position().y(), instance.position().z());
+        believed *
+        Eigen::Vector3d(instance.position().x(), instance.position().y(), instance.position().z());
     BoxShape believed_box;
     believed_box.center = centre.head<2>();
     believed_box.yaw = YawOf(believed);
-    believed_box.size = Eigen::Vector3d(std::max(instance.size().x(), 0.01), std::max(instance.size().y(), 0.01),
-                                        std::max(instance.size().z(), 0.01));
+    believed_box.size =
+        Eigen::Vector3d(std::max(instance.size().x(), 0.01), std::max(instance.size().y(), 0.01),
+                        std::max(instance.size().z(), 0.01));
     const double aim = options.success_radius_m - options.approach_margin_m;
     const std::optional<NearestGoal> route = NearestReachableGoal(
-        grid, at, [&](const Eigen::Vector2d& p) { return DistanceToBoxFootprint(believed_box, p) <= aim; });
+        grid, at,
+        [&](const Eigen::Vector2d& p) { return DistanceToBoxFootprint(believed_box, p) <= aim; });
     const std::optional<NearestGoal> shortest =
         NearestReachableGoal(grid, start, [&](const Eigen::Vector2d& p) {
           return DistanceToBoxFootprint(target.object->box, p) <= options.success_radius_m;
@@ -398,8 +436,10 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
         NearestReachableGoal(grid, at, [&](const Eigen::Vector2d& p) {
           return DistanceToBoxFootprint(target.object->box, p) <= options.success_radius_m;
         });
-    trial.route_ratio = straight && straight->length_m > 0.0 ? route->length_m / straight->length_m : 1.0;
-    trial.path_ratio = trial.shortest_m > 0.0 ? trial.path_m / trial.shortest_m : (trial.path_m > 0.0 ? 1e9 : 1.0);
+    trial.route_ratio =
+        straight && straight->length_m > 0.0 ? route->length_m / straight->length_m : 1.0;
+    trial.path_ratio =
+        trial.shortest_m > 0.0 ? trial.path_m / trial.shortest_m : (trial.path_m > 0.0 ? 1e9 : 1.0);
     trial.distance_to_target_m = DistanceToBoxFootprint(target.object->box, route->goal);
     trial.success = trial.distance_to_target_m <= options.success_radius_m;
     if (!trial.success) trial.failure = "stopped outside the success radius";

@@ -1,9 +1,9 @@
 #include "clients/sim/loop/two_robot_stack.h"
 
+#include <grpcpp/grpcpp.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <grpcpp/grpcpp.h>
 
 #include "absl/strings/str_cat.h"
 #include "services/launcher/free_port.h"
@@ -18,10 +18,12 @@ std::string WriteConfig(const std::string& dir, const std::string& name, const s
 }
 
 // Robot `name`'s mapping: its live landmarks go to relocalization under map id `name` every 0.5 s.
-std::string MappingYaml(const std::string& work_dir, const std::string& name, const std::string& relocalization) {
+std::string MappingYaml(const std::string& work_dir, const std::string& name,
+                        const std::string& relocalization) {
   return absl::StrCat("mapping:\n  store_directory: ", work_dir, "/maps_", name,
                       "\n  live_snapshot_interval_s: 0\n  landmarks:\n    live_map_id: ", name,
-                      "\n    interval_s: 0.5\n    relocalization:\n      address: ", relocalization, "\n");
+                      "\n    interval_s: 0.5\n    relocalization:\n      address: ", relocalization,
+                      "\n");
 }
 
 // Relocalization tuned for landmark maps built by mapping (docs/algorithms/relocalization.md,
@@ -37,10 +39,11 @@ constexpr char kObjectMapRelocalizationYaml[] = R"(relocalization:
 }  // namespace
 
 absl::StatusOr<std::unique_ptr<TwoRobotStack>> TwoRobotStack::Start(const std::string& bin_dir,
-                                                                     const std::string& work_dir) {
+                                                                    const std::string& work_dir) {
   std::error_code error;
   std::filesystem::create_directories(work_dir, error);
-  if (error) return absl::InternalError(absl::StrCat("cannot create ", work_dir, ": ", error.message()));
+  if (error)
+    return absl::InternalError(absl::StrCat("cannot create ", work_dir, ": ", error.message()));
   std::unique_ptr<TwoRobotStack> stack(new TwoRobotStack());
   std::string* addresses[] = {&stack->relocalization_, &stack->mapping_a_, &stack->mapping_b_};
   for (std::string* address : addresses) {
@@ -50,12 +53,17 @@ absl::StatusOr<std::unique_ptr<TwoRobotStack>> TwoRobotStack::Start(const std::s
   }
   semnav::launcher::StackConfig config;
   // Memory-only landmark maps: each run starts from nothing.
-  config.services.push_back({"relocalization", "semnav-relocalization", stack->relocalization_,
-                             WriteConfig(work_dir, "relocalization", kObjectMapRelocalizationYaml)});
-  config.services.push_back({"mapping_a", "semnav-mapping", stack->mapping_a_,
-                             WriteConfig(work_dir, "mapping_a", MappingYaml(work_dir, "robot_a", stack->relocalization_))});
-  config.services.push_back({"mapping_b", "semnav-mapping", stack->mapping_b_,
-                             WriteConfig(work_dir, "mapping_b", MappingYaml(work_dir, "robot_b", stack->relocalization_))});
+  config.services.push_back(
+      {"relocalization", "semnav-relocalization", stack->relocalization_,
+       WriteConfig(work_dir, "relocalization", kObjectMapRelocalizationYaml)});
+  config.services.push_back(
+      {"mapping_a", "semnav-mapping", stack->mapping_a_,
+       WriteConfig(work_dir, "mapping_a",
+                   MappingYaml(work_dir, "robot_a", stack->relocalization_))});
+  config.services.push_back(
+      {"mapping_b", "semnav-mapping", stack->mapping_b_,
+       WriteConfig(work_dir, "mapping_b",
+                   MappingYaml(work_dir, "robot_b", stack->relocalization_))});
   stack->runner_ = std::make_unique<semnav::launcher::StackRunner>(std::move(config), bin_dir);
   if (absl::Status s = stack->runner_->Start(); !s.ok()) return s;
   return stack;

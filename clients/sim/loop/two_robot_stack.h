@@ -4,10 +4,10 @@
 // from a bin folder on free loopback ports.
 #pragma once
 
+#include <grpcpp/channel.h>
+
 #include <memory>
 #include <string>
-
-#include <grpcpp/channel.h>
 
 #include "absl/status/statusor.h"
 #include "services/launcher/stack_runner.h"
@@ -24,7 +24,7 @@ class TwoRobotStack {
  public:
   // `work_dir` gets the configs and both mapping stores (created).
   static absl::StatusOr<std::unique_ptr<TwoRobotStack>> Start(const std::string& bin_dir,
-                                                             const std::string& work_dir);
+                                                              const std::string& work_dir);
   ~TwoRobotStack();
   TwoRobotEndpoints endpoints() const;
 

@@ -115,8 +115,8 @@ int main(int argc, char** argv) {
       "usage: semnav-bench-sim [--json FILE] [--benchmark_* flags]\n"
       "Depth render and full sensor frame time per world source.\n";
   using namespace semnav::sim;
-  const semnav::ParsedFlags flags =
-      semnav::ParseBenchmarkFlagsOrExit(&argc, argv, {{"json", "FILE", ""}}, "semnav-bench-sim", kUsage);
+  const semnav::ParsedFlags flags = semnav::ParseBenchmarkFlagsOrExit(
+      &argc, argv, {{"json", "FILE", ""}}, "semnav-bench-sim", kUsage);
   const std::string json_path = flags.Get("json").value_or("");
   for (const Case& c : Cases()) {
     benchmark::RegisterBenchmark(("render_depth_640x480/" + c.name).c_str(), BM_RenderDepth, &c)

@@ -1,7 +1,6 @@
 #include "clients/sim/vlm/code_reader.h"
 
 #include <limits>
-
 #include <opencv2/imgproc.hpp>
 
 namespace semnav::sim::vlm {
@@ -28,9 +27,11 @@ int TextWidth(const std::string& text, double scale, int thickness) {
 }
 
 // `text` printed as the gateway prints it, in a black box of `size`.
-cv::Mat Render(const std::string& text, cv::Size size, int text_height, double scale, int thickness) {
+cv::Mat Render(const std::string& text, cv::Size size, int text_height, double scale,
+               int thickness) {
   cv::Mat patch(size, CV_8UC1, cv::Scalar::all(0));
-  cv::putText(patch, text, cv::Point(0, text_height), kFont, scale, cv::Scalar::all(255), thickness, cv::LINE_AA);
+  cv::putText(patch, text, cv::Point(0, text_height), kFont, scale, cv::Scalar::all(255), thickness,
+              cv::LINE_AA);
   return patch;
 }
 
@@ -72,7 +73,8 @@ std::string ReadBox(const cv::Mat& grey, int text_height, double scale, int thic
           number.push_back(chosen);
         }
         const std::string code = Code(first, number, last);
-        const double e = Error(Render(code, size, text_height, scale, thickness), grey, cv::Rect(cv::Point(0, 0), size));
+        const double e = Error(Render(code, size, text_height, scale, thickness), grey,
+                               cv::Rect(cv::Point(0, 0), size));
         if (e < best_error) {
           best_error = e;
           best = code;
@@ -86,10 +88,11 @@ std::string ReadBox(const cv::Mat& grey, int text_height, double scale, int thic
 
 }  // namespace
 
-std::vector<PrintedCode> ReadPrintedCodes(const cv::Mat& received, const cv::Mat& raw, double font_scale,
-                                          int thickness) {
+std::vector<PrintedCode> ReadPrintedCodes(const cv::Mat& received, const cv::Mat& raw,
+                                          double font_scale, int thickness) {
   std::vector<PrintedCode> out;
-  if (received.empty() || received.size() != raw.size() || received.type() != CV_8UC3 || raw.type() != CV_8UC3) {
+  if (received.empty() || received.size() != raw.size() || received.type() != CV_8UC3 ||
+      raw.type() != CV_8UC3) {
     return out;
   }
   cv::Mat diff, changed, channels[3];

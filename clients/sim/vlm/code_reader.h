@@ -5,10 +5,9 @@
 // the one that reproduces its pixels. Boxes cut by the image border are not read.
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 namespace semnav::sim::vlm {
 
@@ -19,7 +18,7 @@ struct PrintedCode {
 };
 
 // `received` and `raw` are 8-bit BGR of one size. `font_scale` and `thickness` are the gateway's.
-std::vector<PrintedCode> ReadPrintedCodes(const cv::Mat& received, const cv::Mat& raw, double font_scale,
-                                          int thickness);
+std::vector<PrintedCode> ReadPrintedCodes(const cv::Mat& received, const cv::Mat& raw,
+                                          double font_scale, int thickness);
 
 }  // namespace semnav::sim::vlm

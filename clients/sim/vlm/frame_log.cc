@@ -6,7 +6,8 @@ namespace semnav::sim::vlm {
 
 void FrameLog::Record(const SensorFrame& frame) {
   if (!frame.rgb.has_value() || frame.rgb->empty()) return;
-  RecordedFrame record{frame.index, frame.time_s, frame.rgb->clone(), frame.world_from_camera, frame.intrinsics};
+  RecordedFrame record{frame.index, frame.time_s, frame.rgb->clone(), frame.world_from_camera,
+                       frame.intrinsics};
   absl::MutexLock lock(&mu_);
   frames_.push_back(std::move(record));
   while (frames_.size() > capacity_) frames_.pop_front();
@@ -31,7 +32,8 @@ std::optional<RecordedFrame> FrameLog::Match(const cv::Mat& image, double max_ch
       best_changed = count;
     }
   }
-  if (best == nullptr || best_changed > max_changed_share * static_cast<double>(image.total())) return std::nullopt;
+  if (best == nullptr || best_changed > max_changed_share * static_cast<double>(image.total()))
+    return std::nullopt;
   RecordedFrame out = *best;
   out.image = best->image.clone();
   return out;

@@ -6,9 +6,8 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <deque>
-#include <optional>
-
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "absl/synchronization/mutex.h"
 #include "clients/sim/core/camera_model.h"
@@ -19,7 +18,7 @@ namespace semnav::sim::vlm {
 struct RecordedFrame {
   uint64_t index = 0;  // SensorFrame::index
   double time_s = 0.0;
-  cv::Mat image;       // 8-bit BGR, exactly as sent
+  cv::Mat image;  // 8-bit BGR, exactly as sent
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();  // true optical pose
   CameraIntrinsics intrinsics;
 };

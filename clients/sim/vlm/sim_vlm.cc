@@ -68,16 +68,19 @@ std::string ChooseSearchAnswer(const FrameSighting& sighting, const std::vector<
                                double max_code_distance_px) {
   auto nameable = [&](const cv::Point2d& pixel) {
     const PrintedCode* code = Nearest(codes, pixel);
-    return code == nullptr || std::hypot(code->pixel.x - pixel.x, code->pixel.y - pixel.y) <= max_code_distance_px;
+    return code == nullptr ||
+           std::hypot(code->pixel.x - pixel.x, code->pixel.y - pixel.y) <= max_code_distance_px;
   };
   // Recognition: the target (unless missed) and anything taken for it; the largest nameable first.
   std::optional<cv::Point2d> clue;
   for (const FrameSighting::Instance& instance : sighting.instances) {
     const bool is_target = LabelNamesTarget(instance.label, target);
-    const bool taken = is_target ? !rng.Bernoulli(errors.miss_rate) : rng.Bernoulli(errors.confusion_rate);
+    const bool taken =
+        is_target ? !rng.Bernoulli(errors.miss_rate) : rng.Bernoulli(errors.confusion_rate);
     if (taken && !clue.has_value() && nameable(instance.centroid)) clue = instance.centroid;
   }
-  const bool hallucinated = !clue.has_value() && !codes.empty() && rng.Bernoulli(errors.hallucination_rate);
+  const bool hallucinated =
+      !clue.has_value() && !codes.empty() && rng.Bernoulli(errors.hallucination_rate);
   if (hallucinated) clue = codes[rng.UniformInt(0, static_cast<int>(codes.size()) - 1)].pixel;
   std::string description;
   if (clue.has_value()) {
@@ -86,15 +89,18 @@ std::string ChooseSearchAnswer(const FrameSighting& sighting, const std::vector<
     for (const FrameSighting::Passage& passage : sighting.passages) {
       if (!nameable(passage.centroid)) continue;
       clue = passage.centroid;
-      description = absl::StrCat("no ", target, " here; ", passage.kind, " leading to another area");
+      description =
+          absl::StrCat("no ", target, " here; ", passage.kind, " leading to another area");
       break;
     }
   }
   const bool off_by_one = rng.Bernoulli(errors.code_off_by_one_rate);
   if (!clue.has_value()) return kNothing;
   const PrintedCode* code = Nearest(codes, *clue);
-  if (code == nullptr) return absl::StrCat("No position code is printed near the ", description, ".");
-  return absl::StrCat("Code: ", off_by_one ? OffByOne(code->code, rng) : code->code, ", Description: ", description);
+  if (code == nullptr)
+    return absl::StrCat("No position code is printed near the ", description, ".");
+  return absl::StrCat("Code: ", off_by_one ? OffByOne(code->code, rng) : code->code,
+                      ", Description: ", description);
 }
 
 bool LabelNamesTarget(absl::string_view label, absl::string_view target) {
@@ -104,10 +110,12 @@ bool LabelNamesTarget(absl::string_view label, absl::string_view target) {
   if (l == t) return true;
   // Whole words: "red backpack" names "backpack"; "chair" does not name "armchair".
   auto contains_words = [](const std::string& haystack, const std::string& needle) {
-    for (size_t at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) {
+    for (size_t at = haystack.find(needle); at != std::string::npos;
+         at = haystack.find(needle, at + 1)) {
       const bool start = at == 0 || !std::isalnum(static_cast<unsigned char>(haystack[at - 1]));
       const size_t end = at + needle.size();
-      const bool stop = end == haystack.size() || !std::isalnum(static_cast<unsigned char>(haystack[end]));
+      const bool stop =
+          end == haystack.size() || !std::isalnum(static_cast<unsigned char>(haystack[end]));
       if (start && stop) return true;
     }
     return false;
@@ -125,7 +133,8 @@ SimVlm::SimVlm(const World& world, const FrameLog* frames, SimVlmConfig config)
     : world_(world), scene_(Scene::Build(world_)), frames_(frames), config_(std::move(config)) {}
 
 FrameSighting SimVlm::Sight(const RecordedFrame& frame) const {
-  const RenderedView view = RenderView(scene_, frame.intrinsics, frame.world_from_camera, 0.1, config_.max_range_m);
+  const RenderedView view =
+      RenderView(scene_, frame.intrinsics, frame.world_from_camera, 0.1, config_.max_range_m);
   struct Sum {
     int pixels = 0;
     double u = 0, v = 0;
@@ -138,8 +147,8 @@ FrameSighting SimVlm::Sight(const RecordedFrame& frame) const {
     if (surface < 0 || surface >= static_cast<int32_t>(scene_.solids().size())) continue;
     const SceneSolid& solid = scene_.solids()[surface];
     Sum* sum = solid.object_index >= 0 ? &objects[solid.object_index] : nullptr;
-    if (sum == nullptr &&
-        std::find(config_.passage_kinds.begin(), config_.passage_kinds.end(), solid.kind) != config_.passage_kinds.end()) {
+    if (sum == nullptr && std::find(config_.passage_kinds.begin(), config_.passage_kinds.end(),
+                                    solid.kind) != config_.passage_kinds.end()) {
       sum = &kinds[solid.kind];
     }
     if (sum == nullptr) continue;
@@ -150,12 +159,13 @@ FrameSighting SimVlm::Sight(const RecordedFrame& frame) const {
   FrameSighting sighting;
   for (const auto& [index, sum] : objects) {
     if (sum.pixels < config_.min_pixels) continue;
-    sighting.instances.push_back(
-        {index, world_.objects[index].label, sum.pixels, cv::Point2d(sum.u / sum.pixels, sum.v / sum.pixels)});
+    sighting.instances.push_back({index, world_.objects[index].label, sum.pixels,
+                                  cv::Point2d(sum.u / sum.pixels, sum.v / sum.pixels)});
   }
   for (const auto& [kind, sum] : kinds) {
     if (sum.pixels < config_.min_pixels) continue;
-    sighting.passages.push_back({kind, sum.pixels, cv::Point2d(sum.u / sum.pixels, sum.v / sum.pixels)});
+    sighting.passages.push_back(
+        {kind, sum.pixels, cv::Point2d(sum.u / sum.pixels, sum.v / sum.pixels)});
   }
   std::stable_sort(sighting.instances.begin(), sighting.instances.end(),
                    [](const auto& a, const auto& b) { return a.pixels > b.pixels; });
@@ -167,18 +177,22 @@ FrameSighting SimVlm::Sight(const RecordedFrame& frame) const {
 absl::StatusOr<std::string> SimVlm::AnswerSearch(absl::string_view target, const cv::Mat& image,
                                                  uint64_t* frame_key) const {
   const std::optional<RecordedFrame> frame = frames_->Match(image, config_.max_changed_share);
-  if (!frame.has_value()) return std::string(kNothing);  // not a frame this camera took: nothing to see
+  if (!frame.has_value())
+    return std::string(kNothing);  // not a frame this camera took: nothing to see
   *frame_key = frame->index;
   const std::vector<PrintedCode> codes =
       ReadPrintedCodes(image, frame->image, config_.font_scale, config_.font_thickness);
   Rng rng(MixSeed(MixSeed(config_.seed, HashString(std::string(target))), frame->index));
-  return ChooseSearchAnswer(Sight(*frame), codes, target, config_.errors, rng, config_.max_code_distance_px);
+  return ChooseSearchAnswer(Sight(*frame), codes, target, config_.errors, rng,
+                            config_.max_code_distance_px);
 }
 
-std::string SimVlm::AnswerRegionScore(absl::string_view target, const std::vector<std::string>& descriptions) const {
+std::string SimVlm::AnswerRegionScore(absl::string_view target,
+                                      const std::vector<std::string>& descriptions) const {
   int naming = 0;
   const std::string seen = absl::StrCat(target, " seen");
-  for (const std::string& description : descriptions) naming += description.find(seen) != std::string::npos;
+  for (const std::string& description : descriptions)
+    naming += description.find(seen) != std::string::npos;
   const int score = naming == 0 ? -2 : std::min(5, 1 + 2 * naming);
   return absl::StrCat(score);
 }
@@ -200,7 +214,8 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
     const bool match = LabelNamesTarget(label, target);
     if (match && best.empty()) best = id;
     if (!match) others.push_back(id);
-    ranking.push_back({{"id", id}, {"score", match ? 0.9 : 0.05},
+    ranking.push_back({{"id", id},
+                       {"score", match ? 0.9 : 0.05},
                        {"reason", match ? "the label names the target" : "another class"}});
   }
   double confidence = best.empty() ? 0.0 : 0.85;
@@ -215,11 +230,12 @@ absl::StatusOr<VlmReply> SimVlm::Answer(const VlmQuestion& question) const {
   VlmReply reply;
   uint64_t frame_key = 0;
   const bool vision = !question.images.empty();
-  if (const size_t at = question.text.rfind("{\"candidates\""); at != std::string::npos &&
-                                                               question.text.find("match_target", at) != std::string::npos) {
+  if (const size_t at = question.text.rfind("{\"candidates\"");
+      at != std::string::npos && question.text.find("match_target", at) != std::string::npos) {
     const size_t end = question.text.find('\n', at);
-    absl::StatusOr<std::string> answer = AnswerMatchTarget(
-        absl::string_view(question.text).substr(at, end == std::string::npos ? std::string::npos : end - at));
+    absl::StatusOr<std::string> answer =
+        AnswerMatchTarget(absl::string_view(question.text)
+                              .substr(at, end == std::string::npos ? std::string::npos : end - at));
     if (!answer.ok()) return answer.status();
     reply.text = *std::move(answer);
   } else if (question.text.find("Output the code") != std::string::npos) {
@@ -237,12 +253,15 @@ absl::StatusOr<VlmReply> SimVlm::Answer(const VlmQuestion& question) const {
     }
     reply.text = AnswerRegionScore(target, descriptions);
   } else {
-    return absl::InvalidArgumentError("the simulated model answers the search, region-score and match_target prompts");
+    return absl::InvalidArgumentError(
+        "the simulated model answers the search, region-score and match_target prompts");
   }
   Rng rng(MixSeed(MixSeed(config_.seed ^ 0x5ca1ab1e, HashString(question.text)), frame_key));
   const SimVlmLatency& l = config_.latency;
   // Whole milliseconds, so the stated header value is exact.
-  reply.latency_s = std::round(1000.0 * LogNormal(rng, vision ? l.vision_median_s : l.text_median_s, l.sigma, l.max_s)) / 1000.0;
+  reply.latency_s = std::round(1000.0 * LogNormal(rng, vision ? l.vision_median_s : l.text_median_s,
+                                                  l.sigma, l.max_s)) /
+                    1000.0;
   reply.input_tokens = vision ? config_.vision_input_tokens : config_.text_input_tokens;
   reply.output_tokens = 1 + static_cast<int>(reply.text.size() / 4);
   return reply;

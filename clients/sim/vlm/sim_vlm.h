@@ -2,7 +2,8 @@
 // ground truth of the frame it was shown, with the error rates of SimVlmConfig.
 //   - seed 000's search prompt (image with printed EROI codes): "Code: X, Description: ..." naming
 //     the printed code nearest the chosen clue (the target, or an instance taken for it) or, when
-//     there is none, the passage (road, door) with the most pixels; "No clue or passage." otherwise;
+//     there is none, the passage (road, door) with the most pixels; "No clue or passage."
+//     otherwise;
 //   - seed 000's region score: an integer in [-5, 5] from the descriptions it was given;
 //   - the slow path's match_target task: the candidate whose label names the target.
 // Everything it knows about a frame comes from the pixels the camera saw (its re-rendered view);
@@ -10,10 +11,9 @@
 #pragma once
 
 #include <memory>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "absl/status/statusor.h"
 #include "absl/strings/string_view.h"
@@ -82,8 +82,10 @@ class SimVlm {
 
  private:
   SimVlm(const World& world, const FrameLog* frames, SimVlmConfig config);
-  absl::StatusOr<std::string> AnswerSearch(absl::string_view target, const cv::Mat& image, uint64_t* frame_key) const;
-  std::string AnswerRegionScore(absl::string_view target, const std::vector<std::string>& descriptions) const;
+  absl::StatusOr<std::string> AnswerSearch(absl::string_view target, const cv::Mat& image,
+                                           uint64_t* frame_key) const;
+  std::string AnswerRegionScore(absl::string_view target,
+                                const std::vector<std::string>& descriptions) const;
   absl::StatusOr<std::string> AnswerMatchTarget(absl::string_view task_json) const;
 
   World world_;

@@ -11,8 +11,8 @@
 namespace semnav::sim::vlm {
 
 struct SimVlmErrors {
-  double miss_rate = 0.15;       // a visible target is not reported as a clue
-  double confusion_rate = 0.03;  // each visible non-target instance is taken for the target
+  double miss_rate = 0.15;           // a visible target is not reported as a clue
+  double confusion_rate = 0.03;      // each visible non-target instance is taken for the target
   double hallucination_rate = 0.05;  // a frame with no true clue gets one at a random printed code
   double code_off_by_one_rate = 0.10;  // the reported code names a neighbouring cell
 };
@@ -29,8 +29,8 @@ struct SimVlmConfig {
   SimVlmErrors errors;
   SimVlmLatency latency;
   uint64_t seed = 1;
-  int min_pixels = 12;          // pixels an instance needs to be recognisable (160 x 120 frames)
-  double max_range_m = 40.0;    // what the model can make out, metres of z-depth
+  int min_pixels = 12;        // pixels an instance needs to be recognisable (160 x 120 frames)
+  double max_range_m = 40.0;  // what the model can make out, metres of z-depth
   // A clue is named by the printed code nearest it only within this many pixels (two code widths
   // at the gateway's font on 160 x 120 frames); a farther clue lies beyond the codes' 3-12 m.
   double max_code_distance_px = 40.0;

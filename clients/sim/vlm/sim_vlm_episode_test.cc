@@ -38,7 +38,8 @@ TEST(SimVlmEpisodeTest, EroiUtilityFindsTheCarThroughTheProxyAndTheSimulatedVlm)
 
   FrameLog frames;
   spec.on_camera_frame = [&frames](const SensorFrame& frame) { frames.Record(frame); };
-  absl::StatusOr<std::unique_ptr<SimVlm>> model = SimVlm::Create(spec.world, &frames, SimVlmConfig());
+  absl::StatusOr<std::unique_ptr<SimVlm>> model =
+      SimVlm::Create(spec.world, &frames, SimVlmConfig());
   ASSERT_TRUE(model.ok()) << model.status();
   absl::StatusOr<std::unique_ptr<SimVlmServer>> endpoint = SimVlmServer::Start(*std::move(model));
   ASSERT_TRUE(endpoint.ok()) << endpoint.status();
@@ -46,10 +47,11 @@ TEST(SimVlmEpisodeTest, EroiUtilityFindsTheCarThroughTheProxyAndTheSimulatedVlm)
   const std::string dir = ::testing::TempDir() + "/sim_vlm_episode";
   std::filesystem::create_directories(dir);
   const std::string proxy_config = dir + "/modelproxy.yaml";
-  std::ofstream(proxy_config) << "modelproxy:\n  backends:\n    sim:\n      kind: openai\n      base_url: \""
-                              << (*endpoint)->base_url()
-                              << "\"\n      model: sim-vlm\n      retry: {max_attempts: 1}\n"
-                                 "  aliases:\n    default: [sim, offline]\n";
+  std::ofstream(proxy_config)
+      << "modelproxy:\n  backends:\n    sim:\n      kind: openai\n      base_url: \""
+      << (*endpoint)->base_url()
+      << "\"\n      model: sim-vlm\n      retry: {max_attempts: 1}\n"
+         "  aliases:\n    default: [sim, offline]\n";
   absl::StatusOr<std::unique_ptr<loop::SimStack>> stack =
       loop::SimStack::Start({SEMNAV_BIN_DIR, dir, true, proxy_config});
   ASSERT_TRUE(stack.ok()) << stack.status();
@@ -60,11 +62,14 @@ TEST(SimVlmEpisodeTest, EroiUtilityFindsTheCarThroughTheProxyAndTheSimulatedVlm)
   for (const std::string& line : result->timeline) absl::StrAppend(&timeline, line, "\n");
   std::string answers;
   for (const std::string& answer : (*endpoint)->answers()) absl::StrAppend(&answers, answer, "\n");
-  EXPECT_TRUE(result->record.success) << result->final_reason << "\n" << timeline << "VLM answers:\n" << answers;
+  EXPECT_TRUE(result->record.success) << result->final_reason << "\n"
+                                      << timeline << "VLM answers:\n"
+                                      << answers;
   EXPECT_GT((*endpoint)->requests(), 0);
   EXPECT_LE(result->record.model_calls, 61) << "the per-task budget (60) plus the text embedding";
   std::cout << "steps " << result->steps << ", path " << result->record.path_m << " m, model calls "
-            << result->record.model_calls << ", endpoint requests " << (*endpoint)->requests() << "\n";
+            << result->record.model_calls << ", endpoint requests " << (*endpoint)->requests()
+            << "\n";
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-
 #include <opencv2/imgcodecs.hpp>
 
 #include "absl/strings/match.h"
@@ -27,10 +26,12 @@ std::unique_ptr<ModelProxy> ProxyFor(const std::string& base_url) {
   spec.require_key = true;
   BackendPolicy policy;
   policy.retry.max_attempts = 1;
-  EXPECT_TRUE(proxy->AddBackend(BackendEntry{"sim", "openai",
-                                             std::make_unique<HttpBackend>(spec, ApiKey::FromEnv(kKeyEnv),
-                                                                           std::make_shared<HttpTransport>()),
-                                             policy})
+  EXPECT_TRUE(proxy
+                  ->AddBackend(
+                      BackendEntry{"sim", "openai",
+                                   std::make_unique<HttpBackend>(spec, ApiKey::FromEnv(kKeyEnv),
+                                                                 std::make_shared<HttpTransport>()),
+                                   policy})
                   .ok());
   EXPECT_TRUE(proxy->AddAlias("default", {"sim"}).ok());
   return proxy;
@@ -51,7 +52,8 @@ TEST(SimVlmProxyTest, SearchPromptThroughTheProxyGetsTheCodeAndTheStatedLatency)
   absl::StatusOr<std::unique_ptr<SimVlmServer>> server = SimVlmServer::Start(*std::move(model));
   ASSERT_TRUE(server.ok()) << server.status();
 
-  absl::StatusOr<reasoning::EroiSearch> search = reasoning::EroiSearch::Create("backpack", testing::GatewayEroi());
+  absl::StatusOr<reasoning::EroiSearch> search =
+      reasoning::EroiSearch::Create("backpack", testing::GatewayEroi());
   ASSERT_TRUE(search.ok());
   cv::Mat image = frame.rgb->clone();
   const reasoning::EroiObservation observation =
@@ -59,14 +61,17 @@ TEST(SimVlmProxyTest, SearchPromptThroughTheProxyGetsTheCodeAndTheStatedLatency)
   std::vector<uchar> png;
   cv::imencode(".png", image, png);
   CompletionRequest request;
-  request.messages.push_back(
-      {Role::kUser, {ContentPart{observation.prompt, "", ""}, ContentPart{"", std::string(png.begin(), png.end()), "image/png"}}});
+  request.messages.push_back({Role::kUser,
+                              {ContentPart{observation.prompt, "", ""},
+                               ContentPart{"", std::string(png.begin(), png.end()), "image/png"}}});
 
   ::setenv(kKeyEnv, "sim-key-1", 1);
   std::unique_ptr<ModelProxy> proxy = ProxyFor((*server)->base_url());
-  absl::StatusOr<CompletionResult> result = proxy->Complete(request, {"robot", "task"}, absl::Now() + absl::Seconds(10));
+  absl::StatusOr<CompletionResult> result =
+      proxy->Complete(request, {"robot", "task"}, absl::Now() + absl::Seconds(10));
   ASSERT_TRUE(result.ok()) << result.status();
-  EXPECT_TRUE(absl::StrContains(result->reply.text, "Description: backpack seen here")) << result->reply.text;
+  EXPECT_TRUE(absl::StrContains(result->reply.text, "Description: backpack seen here"))
+      << result->reply.text;
   const absl::StatusOr<VlmReply> direct = (*twin)->Answer({observation.prompt, {image}});
   ASSERT_TRUE(direct.ok());
   EXPECT_EQ(result->reply.text, direct->text);

@@ -30,12 +30,14 @@ absl::StatusOr<cv::Mat> DecodeDataUrl(const std::string& url) {
   }
   const cv::Mat raw(1, static_cast<int>(bytes.size()), CV_8UC1, bytes.data());
   cv::Mat image = cv::imdecode(raw, cv::IMREAD_COLOR);
-  if (image.empty()) return InvalidField("messages.content.image_url.url", "is not a decodable image");
+  if (image.empty())
+    return InvalidField("messages.content.image_url.url", "is not a decodable image");
   return image;
 }
 
 std::string ErrorBody(const absl::Status& status) {
-  return nlohmann::json{{"error", {{"message", std::string(status.message())}, {"type", "invalid_request_error"}}}}
+  return nlohmann::json{
+      {"error", {{"message", std::string(status.message())}, {"type", "invalid_request_error"}}}}
       .dump();
 }
 
@@ -49,19 +51,25 @@ absl::StatusOr<VlmQuestion> ParseChatBody(const std::string& body) {
   }
   VlmQuestion question;
   for (const nlohmann::json& message : json["messages"]) {
-    const nlohmann::json content = message.is_object() ? message.value("content", nlohmann::json()) : nlohmann::json();
+    const nlohmann::json content =
+        message.is_object() ? message.value("content", nlohmann::json()) : nlohmann::json();
     if (content.is_string()) {
-      absl::StrAppend(&question.text, question.text.empty() ? "" : "\n", content.get<std::string>());
+      absl::StrAppend(&question.text, question.text.empty() ? "" : "\n",
+                      content.get<std::string>());
       continue;
     }
-    if (!content.is_array()) return InvalidField("messages.content", "must be a string or an array of parts");
+    if (!content.is_array())
+      return InvalidField("messages.content", "must be a string or an array of parts");
     for (const nlohmann::json& part : content) {
       const std::string type = part.is_object() ? part.value("type", "") : "";
       if (type == "text" && part.value("text", nlohmann::json()).is_string()) {
-        absl::StrAppend(&question.text, question.text.empty() ? "" : "\n", part["text"].get<std::string>());
-      } else if (type == "image_url" && part.contains("image_url") && part["image_url"].is_object() &&
+        absl::StrAppend(&question.text, question.text.empty() ? "" : "\n",
+                        part["text"].get<std::string>());
+      } else if (type == "image_url" && part.contains("image_url") &&
+                 part["image_url"].is_object() &&
                  part["image_url"].value("url", nlohmann::json()).is_string()) {
-        if (question.images.size() >= kMaxImages) return InvalidField("messages.content", "at most 8 images");
+        if (question.images.size() >= kMaxImages)
+          return InvalidField("messages.content", "at most 8 images");
         absl::StatusOr<cv::Mat> image = DecodeDataUrl(part["image_url"]["url"].get<std::string>());
         if (!image.ok()) return image.status();
         question.images.push_back(*std::move(image));
@@ -76,14 +84,16 @@ absl::StatusOr<VlmQuestion> ParseChatBody(const std::string& body) {
 SimVlmServer::SimVlmServer(std::unique_ptr<SimVlm> model)
     : model_(std::move(model)), server_(std::make_unique<httplib::Server>()) {}
 
-absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_ptr<SimVlm> model, int port) {
+absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_ptr<SimVlm> model,
+                                                                  int port) {
   if (model == nullptr) return absl::InvalidArgumentError("model: required");
   if (port < 0 || port > 65535) return InvalidField("port", "must be 0..65535");
   std::unique_ptr<SimVlmServer> server(new SimVlmServer(std::move(model)));
   SimVlmServer* self = server.get();
   self->server_->set_tcp_nodelay(true);
   self->server_->set_payload_max_length(kMaxBodyBytes);
-  self->server_->Post("/v1/chat/completions", [self](const httplib::Request& req, httplib::Response& res) {
+  self->server_->Post("/v1/chat/completions", [self](const httplib::Request& req,
+                                                     httplib::Response& res) {
     {
       absl::MutexLock lock(&self->mu_);
       ++self->requests_;
@@ -113,23 +123,25 @@ absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_pt
     }
     const nlohmann::json request = nlohmann::json::parse(req.body, nullptr, false);
     res.set_header(modelproxy::kSimulatedLatencyHeader, absl::StrFormat("%.3f", reply->latency_s));
-    res.set_content(nlohmann::json{{"id", "simvlm"},
-                                   {"object", "chat.completion"},
-                                   {"model", request.value("model", "sim-vlm")},
-                                   {"choices",
-                                    {{{"index", 0},
-                                      {"message", {{"role", "assistant"}, {"content", reply->text}}},
-                                      {"finish_reason", "stop"}}}},
-                                   {"usage",
-                                    {{"prompt_tokens", reply->input_tokens},
-                                     {"completion_tokens", reply->output_tokens},
-                                     {"total_tokens", reply->input_tokens + reply->output_tokens}}}}
-                        .dump(),
-                    "application/json");
+    res.set_content(
+        nlohmann::json{{"id", "simvlm"},
+                       {"object", "chat.completion"},
+                       {"model", request.value("model", "sim-vlm")},
+                       {"choices",
+                        {{{"index", 0},
+                          {"message", {{"role", "assistant"}, {"content", reply->text}}},
+                          {"finish_reason", "stop"}}}},
+                       {"usage",
+                        {{"prompt_tokens", reply->input_tokens},
+                         {"completion_tokens", reply->output_tokens},
+                         {"total_tokens", reply->input_tokens + reply->output_tokens}}}}
+            .dump(),
+        "application/json");
   });
   self->port_ = port == 0 ? self->server_->bind_to_any_port("127.0.0.1")
                           : (self->server_->bind_to_port("127.0.0.1", port) ? port : -1);
-  if (self->port_ <= 0) return absl::UnavailableError(absl::StrCat("cannot listen on 127.0.0.1:", port));
+  if (self->port_ <= 0)
+    return absl::UnavailableError(absl::StrCat("cannot listen on 127.0.0.1:", port));
   self->thread_ = std::thread([self] { self->server_->listen_after_bind(); });
   while (!self->server_->is_running()) absl::SleepFor(absl::Milliseconds(1));
   return server;
@@ -151,7 +163,9 @@ std::shared_ptr<const SimVlm> SimVlmServer::model() const {
   return model_;
 }
 
-std::string SimVlmServer::base_url() const { return absl::StrCat("http://127.0.0.1:", port_, "/v1"); }
+std::string SimVlmServer::base_url() const {
+  return absl::StrCat("http://127.0.0.1:", port_, "/v1");
+}
 
 SimVlmServer::Served SimVlmServer::served() const {
   absl::MutexLock lock(&mu_);

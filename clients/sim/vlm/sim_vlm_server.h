@@ -1,12 +1,13 @@
-// The simulated VLM behind the OpenAI-compatible chat-completions wire (POST <base>/chat/completions,
-// text and image_url data-URL parts), on 127.0.0.1: the model proxy reaches it like any vendor
-// (kind openai, base_url, model, key from a file). Each answer states its simulated latency in the
-// x-semnav-simulated-latency-s header, which the proxy reports as the call's latency.
+// The simulated VLM behind the OpenAI-compatible chat-completions wire (POST
+// <base>/chat/completions, text and image_url data-URL parts), on 127.0.0.1: the model proxy
+// reaches it like any vendor (kind openai, base_url, model, key from a file). Each answer states
+// its simulated latency in the x-semnav-simulated-latency-s header, which the proxy reports as the
+// call's latency.
 #pragma once
 
+#include <deque>
 #include <memory>
 #include <string>
-#include <deque>
 #include <thread>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace semnav::sim::vlm {
 class SimVlmServer {
  public:
   // Listens on 127.0.0.1:`port` (0 = a free port) and serves on a background thread.
-  static absl::StatusOr<std::unique_ptr<SimVlmServer>> Start(std::unique_ptr<SimVlm> model, int port = 0);
+  static absl::StatusOr<std::unique_ptr<SimVlmServer>> Start(std::unique_ptr<SimVlm> model,
+                                                             int port = 0);
   ~SimVlmServer();
 
   // Answers from `model` from now on (the next episode's world and frame log); calls being
@@ -36,9 +38,9 @@ class SimVlmServer {
   // Totals over the answers served (for per-episode reports: take differences).
   struct Served {
     int answers = 0;
-    int vision_answers = 0;   // of which about an image (the seed-000 search prompt)
-    int64_t tokens = 0;       // input + output
-    double latency_s = 0.0;   // simulated model time
+    int vision_answers = 0;  // of which about an image (the seed-000 search prompt)
+    int64_t tokens = 0;      // input + output
+    double latency_s = 0.0;  // simulated model time
   };
   Served served() const;
   // The answers served so far, oldest first (at most the last 1000), for episode timelines.

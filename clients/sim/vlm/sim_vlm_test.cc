@@ -36,7 +36,8 @@ struct Asked {
 };
 
 Asked AskAbout(const SensorFrame& frame, double yaw, const std::string& target) {
-  absl::StatusOr<reasoning::EroiSearch> search = reasoning::EroiSearch::Create(target, GatewayEroi());
+  absl::StatusOr<reasoning::EroiSearch> search =
+      reasoning::EroiSearch::Create(target, GatewayEroi());
   EXPECT_TRUE(search.ok()) << search.status();
   cv::Mat image = frame.rgb->clone();
   const reasoning::EroiObservation observation =
@@ -44,7 +45,9 @@ Asked AskAbout(const SensorFrame& frame, double yaw, const std::string& target) 
   return {VlmQuestion{observation.prompt, {image}}, observation.labels};
 }
 
-bool CutByBorder(const cv::Rect& box) { return box.x <= 0 || box.y <= 0 || box.x + box.width >= 160 || box.y + box.height >= 120; }
+bool CutByBorder(const cv::Rect& box) {
+  return box.x <= 0 || box.y <= 0 || box.x + box.width >= 160 || box.y + box.height >= 120;
+}
 
 // The sweep's accuracy scale: the defaults are accuracy 0.85; the other rates scale with the miss
 // rate, and accuracy 1 is an error-free model.
@@ -60,7 +63,9 @@ TEST(SimVlmConfigTest, ErrorsAtAccuracyScaleTheDefaults) {
   EXPECT_NEAR(half.hallucination_rate, 0.5 / 3, 1e-12);
   EXPECT_NEAR(half.code_off_by_one_rate, 1.0 / 3, 1e-12);
   const SimVlmErrors perfect = ErrorsAtAccuracy(1.0);
-  EXPECT_EQ(perfect.miss_rate + perfect.confusion_rate + perfect.hallucination_rate + perfect.code_off_by_one_rate, 0.0);
+  EXPECT_EQ(perfect.miss_rate + perfect.confusion_rate + perfect.hallucination_rate +
+                perfect.code_off_by_one_rate,
+            0.0);
   const SimVlmErrors blind = ErrorsAtAccuracy(0.0);  // scale 1 / 0.15
   EXPECT_NEAR(blind.miss_rate, 1.0, 1e-12);
   EXPECT_NEAR(blind.code_off_by_one_rate, 2.0 / 3, 1e-12);
@@ -78,7 +83,8 @@ TEST(SimVlmCodeReaderTest, ReadsEveryCodeTheGatewayPrinted) {
   }
   ASSERT_GE(printed.size(), 4u);  // enough labels for the check to mean something
   std::set<std::string> read;
-  for (const PrintedCode& code : ReadPrintedCodes(asked.question.images[0], *frame.rgb, 0.5, 1)) read.insert(code.code);
+  for (const PrintedCode& code : ReadPrintedCodes(asked.question.images[0], *frame.rgb, 0.5, 1))
+    read.insert(code.code);
   EXPECT_EQ(read, printed);
 }
 
@@ -92,12 +98,14 @@ TEST(SimVlmTest, TargetInViewIsNamedByThePrintedCodeNearestIt) {
   const Asked asked = AskAbout(frame, 0.0, "red backpack");
   absl::StatusOr<VlmReply> reply = (*model)->Answer(asked.question);
   ASSERT_TRUE(reply.ok()) << reply.status();
-  const std::vector<reasoning::CodeDescription> pairs = reasoning::ParseCodeDescriptions(reply->text);
+  const std::vector<reasoning::CodeDescription> pairs =
+      reasoning::ParseCodeDescriptions(reply->text);
   ASSERT_EQ(pairs.size(), 1u) << reply->text;
   EXPECT_EQ(pairs[0].description, "red backpack seen here");
   // The named code is printed in the frame, and its EROI centre is near the backpack at (8, 0).
-  auto printed = std::find_if(asked.labels.begin(), asked.labels.end(),
-                              [&](const reasoning::CodeLabel& l) { return l.code == pairs[0].code; });
+  auto printed =
+      std::find_if(asked.labels.begin(), asked.labels.end(),
+                   [&](const reasoning::CodeLabel& l) { return l.code == pairs[0].code; });
   ASSERT_NE(printed, asked.labels.end()) << pairs[0].code;
   EXPECT_LT((printed->world.head<2>() - Eigen::Vector2d(8, 0)).norm(), 4.5) << pairs[0].code;
   EXPECT_GT(reply->latency_s, 0.0);
@@ -117,7 +125,8 @@ TEST(SimVlmTest, SameTargetOutOfViewGetsNoClue) {
       log.Record(frame);
       absl::StatusOr<VlmReply> reply = (*model)->Answer(AskAbout(frame, yaw, "backpack").question);
       ASSERT_TRUE(reply.ok()) << reply.status();
-      EXPECT_FALSE(absl::StrContains(reply->text, "seen here")) << "wall " << wall << " yaw " << yaw << ": " << reply->text;
+      EXPECT_FALSE(absl::StrContains(reply->text, "seen here"))
+          << "wall " << wall << " yaw " << yaw << ": " << reply->text;
     }
   }
 }
@@ -152,14 +161,17 @@ TEST(SimVlmTest, AnImageTheCameraNeverTookShowsNothing) {
 FrameSighting Seen(std::vector<std::string> labels) {
   FrameSighting sighting;
   for (size_t i = 0; i < labels.size(); ++i) {
-    sighting.instances.push_back({static_cast<int>(i), labels[i], 100, cv::Point2d(40.0 + 50 * i, 60)});
+    sighting.instances.push_back(
+        {static_cast<int>(i), labels[i], 100, cv::Point2d(40.0 + 50 * i, 60)});
   }
   return sighting;
 }
 
-const std::vector<PrintedCode> kCodes = {{"C5A", {}, {40, 60}}, {"D5A", {}, {90, 60}}, {"E7A", {}, {140, 100}}};
+const std::vector<PrintedCode> kCodes = {
+    {"C5A", {}, {40, 60}}, {"D5A", {}, {90, 60}}, {"E7A", {}, {140, 100}}};
 
-double Share(const FrameSighting& sighting, const SimVlmErrors& errors, const std::function<bool(const std::string&)>& counted) {
+double Share(const FrameSighting& sighting, const SimVlmErrors& errors,
+             const std::function<bool(const std::string&)>& counted) {
   constexpr int kDraws = 4000;
   int hits = 0;
   for (int i = 0; i < kDraws; ++i) {
@@ -171,27 +183,39 @@ double Share(const FrameSighting& sighting, const SimVlmErrors& errors, const st
 
 TEST(SimVlmErrorModelTest, MissRate) {
   SimVlmErrors errors{0.2, 0, 0, 0};
-  const double missed = Share(Seen({"backpack"}), errors, [](const std::string& a) { return !absl::StrContains(a, "seen here"); });
+  const double missed = Share(Seen({"backpack"}), errors, [](const std::string& a) {
+    return !absl::StrContains(a, "seen here");
+  });
   EXPECT_NEAR(missed, 0.2, 0.03);
   errors.miss_rate = 0.0;
-  EXPECT_EQ(Share(Seen({"backpack"}), errors, [](const std::string& a) { return a == "Code: C5A, Description: backpack seen here"; }), 1.0);
+  EXPECT_EQ(
+      Share(Seen({"backpack"}), errors,
+            [](const std::string& a) { return a == "Code: C5A, Description: backpack seen here"; }),
+      1.0);
 }
 
 TEST(SimVlmErrorModelTest, ConfusionRate) {
   const SimVlmErrors errors{0, 0.1, 0, 0};
-  // One bench and nothing else: it is taken for the backpack (named by its code D5A? no: C5A, its own pixel).
-  const double confused = Share(Seen({"bench"}), errors, [](const std::string& a) { return a == "Code: C5A, Description: backpack seen here"; });
+  // One bench and nothing else: it is taken for the backpack (named by its code D5A? no: C5A, its
+  // own pixel).
+  const double confused = Share(Seen({"bench"}), errors, [](const std::string& a) {
+    return a == "Code: C5A, Description: backpack seen here";
+  });
   EXPECT_NEAR(confused, 0.1, 0.03);
 }
 
 TEST(SimVlmErrorModelTest, HallucinationRate) {
   const SimVlmErrors errors{0, 0, 0.05, 0};
-  const double invented = Share(FrameSighting{}, errors, [](const std::string& a) { return absl::StrContains(a, "seen here"); });
+  const double invented = Share(FrameSighting{}, errors, [](const std::string& a) {
+    return absl::StrContains(a, "seen here");
+  });
   EXPECT_NEAR(invented, 0.05, 0.03);
   EXPECT_GT(invented, 0.0);
   // Never when the target is truly there: hallucinations stand in only for a missing clue.
   const SimVlmErrors always{0, 0, 1.0, 0};
-  EXPECT_EQ(Share(Seen({"backpack"}), always, [](const std::string& a) { return absl::StrContains(a, "C5A"); }), 1.0);
+  EXPECT_EQ(Share(Seen({"backpack"}), always,
+                  [](const std::string& a) { return absl::StrContains(a, "C5A"); }),
+            1.0);
 }
 
 TEST(SimVlmErrorModelTest, CodeOffByOneCell) {
@@ -200,8 +224,8 @@ TEST(SimVlmErrorModelTest, CodeOffByOneCell) {
   int off = 0, elsewhere = 0;
   for (int i = 0; i < 4000; ++i) {
     Rng rng(MixSeed(7, i));
-    const std::vector<reasoning::CodeDescription> pairs =
-        reasoning::ParseCodeDescriptions(ChooseSearchAnswer(Seen({"backpack"}), kCodes, "backpack", errors, rng));
+    const std::vector<reasoning::CodeDescription> pairs = reasoning::ParseCodeDescriptions(
+        ChooseSearchAnswer(Seen({"backpack"}), kCodes, "backpack", errors, rng));
     ASSERT_EQ(pairs.size(), 1u);
     off += neighbours.count(pairs[0].code);
     elsewhere += pairs[0].code != "C5A" && !neighbours.count(pairs[0].code);
@@ -217,7 +241,8 @@ TEST(SimVlmErrorModelTest, AClueFarFromEveryPrintedCodeIsNotNamed) {
   Rng rng(1);
   EXPECT_EQ(ChooseSearchAnswer(far, kCodes, "backpack", errors, rng, 40.0), "No clue or passage.");
   far.instances[0].centroid = cv::Point2d(40, 30);  // 30 px away: named
-  EXPECT_EQ(ChooseSearchAnswer(far, kCodes, "backpack", errors, rng, 40.0), "Code: C5A, Description: backpack seen here");
+  EXPECT_EQ(ChooseSearchAnswer(far, kCodes, "backpack", errors, rng, 40.0),
+            "Code: C5A, Description: backpack seen here");
 }
 
 TEST(SimVlmErrorModelTest, LatencyIsLogNormalAroundTheConfiguredMedian) {
@@ -231,7 +256,8 @@ TEST(SimVlmErrorModelTest, LatencyIsLogNormalAroundTheConfiguredMedian) {
   ASSERT_TRUE(model.ok());
   std::vector<double> latencies;
   for (int i = 0; i < 2000; ++i) {
-    const std::string prompt = reasoning::BuildRegionScorePrompt("backpack", {absl::StrCat("place ", i)});
+    const std::string prompt =
+        reasoning::BuildRegionScorePrompt("backpack", {absl::StrCat("place ", i)});
     absl::StatusOr<VlmReply> reply = (*model)->Answer({prompt, {}});
     ASSERT_TRUE(reply.ok());
     latencies.push_back(reply->latency_s);
@@ -240,7 +266,8 @@ TEST(SimVlmErrorModelTest, LatencyIsLogNormalAroundTheConfiguredMedian) {
   EXPECT_NEAR(latencies[1000], 0.35, 0.02);  // the median
   // P(X > 1.0) for log-normal(ln 0.35, 0.4) is 0.44 %: a capped tail, never above the cap.
   EXPECT_LE(latencies.back(), 1.0);
-  EXPECT_NEAR(latencies[1680] / latencies[1000], std::exp(0.4), 0.08);  // the 84th percentile is median * e^sigma
+  EXPECT_NEAR(latencies[1680] / latencies[1000], std::exp(0.4),
+              0.08);  // the 84th percentile is median * e^sigma
 }
 
 TEST(SimVlmErrorModelTest, AnswersAreAFunctionOfTheSeed) {
@@ -262,7 +289,8 @@ TEST(SimVlmTest, RegionScoreAndMatchTarget) {
   auto model = SimVlm::Create(world, &log, Perfect());
   ASSERT_TRUE(model.ok());
   auto score = [&](std::vector<std::string> descriptions) {
-    absl::StatusOr<VlmReply> reply = (*model)->Answer({reasoning::BuildRegionScorePrompt("backpack", descriptions), {}});
+    absl::StatusOr<VlmReply> reply =
+        (*model)->Answer({reasoning::BuildRegionScorePrompt("backpack", descriptions), {}});
     EXPECT_TRUE(reply.ok());
     return reasoning::ParseRegionScore(reply->text);
   };
@@ -271,10 +299,12 @@ TEST(SimVlmTest, RegionScoreAndMatchTarget) {
   EXPECT_EQ(*score({"no backpack here; road leading to another area"}), -2);
   const std::string task =
       R"({"candidates":[{"id":"4","label":"bench"},{"id":"9","label":"backpack"}],"target":"red backpack","task":"match_target"})";
-  absl::StatusOr<VlmReply> match = (*model)->Answer({absl::StrCat("You help a robot find objects.\n", task), {}});
+  absl::StatusOr<VlmReply> match =
+      (*model)->Answer({absl::StrCat("You help a robot find objects.\n", task), {}});
   ASSERT_TRUE(match.ok()) << match.status();
   EXPECT_TRUE(absl::StrContains(match->text, R"("best_id":"9")")) << match->text;
-  EXPECT_EQ((*model)->Answer({"tell me a joke", {}}).status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ((*model)->Answer({"tell me a joke", {}}).status().code(),
+            absl::StatusCode::kInvalidArgument);
 }
 
 TEST(SimVlmTest, ConfigIsValidated) {

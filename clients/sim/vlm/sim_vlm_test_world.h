@@ -2,10 +2,9 @@
 // 1.5 m up, pitched 0.35 rad down, and the gateway's EROI codes printed into its frames.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
-
-#include <Eigen/Geometry>
 
 #include "clients/sim/core/rgb_image.h"
 #include "clients/sim/core/scene.h"
@@ -29,8 +28,10 @@ inline World SearchWorld(bool wall_in_front = false) {
   world.name = "vlm-test";
   world.bounds_min = Eigen::Vector2d(-20, -20);
   world.bounds_max = Eigen::Vector2d(20, 20);
-  world.objects.push_back(ObjectInstance{"backpack-1", "backpack", Rgb{200, 40, 40}, Cube(8, 0, 1.0), ""});
-  world.objects.push_back(ObjectInstance{"bench-1", "bench", Rgb{120, 80, 40}, Cube(8, 5, 1.0), ""});
+  world.objects.push_back(
+      ObjectInstance{"backpack-1", "backpack", Rgb{200, 40, 40}, Cube(8, 0, 1.0), ""});
+  world.objects.push_back(
+      ObjectInstance{"bench-1", "bench", Rgb{120, 80, 40}, Cube(8, 5, 1.0), ""});
   BoxShape road = Cube(0, -6, 1.0);
   road.size = Eigen::Vector3d(40, 3, 0.02);
   world.obstacles.push_back(Obstacle{"road", Rgb{60, 60, 60}, road});
@@ -44,7 +45,9 @@ inline World SearchWorld(bool wall_in_front = false) {
   return world;
 }
 
-inline CameraIntrinsics Intrinsics() { return CameraIntrinsics{160, 120, 131.25, 131.25, 79.5, 59.5}; }
+inline CameraIntrinsics Intrinsics() {
+  return CameraIntrinsics{160, 120, 131.25, 131.25, 79.5, 59.5};
+}
 
 // Camera body (x forward, z up) at `position`, heading `yaw`, pitched `pitch` down.
 inline Eigen::Quaterniond BodyOrientation(double yaw, double pitch = 0.35) {
@@ -52,7 +55,8 @@ inline Eigen::Quaterniond BodyOrientation(double yaw, double pitch = 0.35) {
                             Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()));
 }
 
-inline Eigen::Isometry3d WorldFromOptical(const Eigen::Vector3d& position, const Eigen::Quaterniond& body) {
+inline Eigen::Isometry3d WorldFromOptical(const Eigen::Vector3d& position,
+                                          const Eigen::Quaterniond& body) {
   Eigen::Matrix3d optical_from_body;
   optical_from_body << 0, -1, 0, 0, 0, -1, 1, 0, 0;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
@@ -62,7 +66,8 @@ inline Eigen::Isometry3d WorldFromOptical(const Eigen::Vector3d& position, const
 }
 
 // The frame the simulator would send (true pose = odometry pose).
-inline SensorFrame Capture(const Scene& scene, const Eigen::Vector3d& position, double yaw, uint64_t index) {
+inline SensorFrame Capture(const Scene& scene, const Eigen::Vector3d& position, double yaw,
+                           uint64_t index) {
   SensorFrame frame;
   frame.index = index;
   frame.intrinsics = Intrinsics();
@@ -76,7 +81,8 @@ inline SensorFrame Capture(const Scene& scene, const Eigen::Vector3d& position, 
 // The gateway's grid for the world: 3 m EROIs over its bounds.
 inline reasoning::EroiSearchConfig GatewayEroi() {
   reasoning::EroiSearchConfig config;
-  config.grid = reasoning::GridOverArea(config.grid, Eigen::Vector2d(-20, -20), Eigen::Vector2d(20, 20));
+  config.grid =
+      reasoning::GridOverArea(config.grid, Eigen::Vector2d(-20, -20), Eigen::Vector2d(20, 20));
   return config;
 }
 

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_BENCHMARK_SUITE_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_BENCHMARK_SUITE_H_
+#pragma once
 
 #include <cstdint>
 #include <string>
@@ -25,5 +24,3 @@ absl::StatusOr<std::vector<SuiteWorld>> BuildBenchmarkSuite(uint64_t seed,
 absl::Status WriteBenchmarkSuite(const std::vector<SuiteWorld>& worlds, const std::string& out_dir);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_BENCHMARK_SUITE_H_

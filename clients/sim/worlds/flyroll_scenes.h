@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_FLYROLL_SCENES_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_FLYROLL_SCENES_H_
+#pragma once
 
 #include <cstdint>
 #include <string>
@@ -14,5 +13,3 @@ namespace semnav::sim {
 World FlyRollScene(const std::string& name, uint64_t seed);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_FLYROLL_SCENES_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_FURNISH_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_FURNISH_H_
+#pragma once
 
 #include <vector>
 
@@ -24,5 +23,3 @@ struct FurnishOptions {
 void FurnishRoom(const Room& room, const FurnishOptions& options, Rng& rng, World* world);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_FURNISH_H_

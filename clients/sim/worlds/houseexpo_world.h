@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_HOUSEEXPO_WORLD_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_HOUSEEXPO_WORLD_H_
+#pragma once
 
 #include <cstdint>
 #include <string>
@@ -19,5 +18,3 @@ absl::StatusOr<World> HouseExpoWorld(const std::string& json_path, const std::st
                                      uint64_t seed);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_HOUSEEXPO_WORLD_H_

@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_INDOOR_GENERATOR_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_INDOOR_GENERATOR_H_
+#pragma once
 
 #include <cstdint>
 #include <string>
@@ -25,5 +24,3 @@ struct IndoorOptions {
 World GenerateIndoor(const std::string& name, const IndoorOptions& options, uint64_t seed);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_INDOOR_GENERATOR_H_

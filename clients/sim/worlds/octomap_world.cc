@@ -149,7 +149,8 @@ void AddObjectsNearWalls(World& world, Rng& rng, const PlaceFilter& inside) {
   const std::vector<uint8_t> region = LargestFreeRegion(grid);
   std::vector<Eigen::Vector2d> spots;
   for (size_t c = 0; c < region.size(); ++c) {
-    const Eigen::Vector2d spot = grid.CellCentre(static_cast<int>(c % grid.width), static_cast<int>(c / grid.width));
+    const Eigen::Vector2d spot =
+        grid.CellCentre(static_cast<int>(c % grid.width), static_cast<int>(c / grid.width));
     if (region[c] != 0 && inside(spot)) spots.push_back(spot);
   }
   if (spots.empty()) return;
@@ -187,18 +188,22 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
   tree->getMetricMin(x0, y0, z0);
   tree->getMetricMax(x1, y1, z1);
   const double r = tree->getResolution();
-  const double voxels = std::ceil((x1 - x0) / r) * std::ceil((y1 - y0) / r) * std::ceil((z1 - z0) / r);
+  const double voxels =
+      std::ceil((x1 - x0) / r) * std::ceil((y1 - y0) / r) * std::ceil((z1 - z0) / r);
   constexpr double kMaxFloorM2 = 10000.0;  // 100 m x 100 m; FR-079 is about 0.06 of it
   const double floor_m2 = (x1 - x0) * (y1 - y0);
-  if (!(r > 0.0) || !std::isfinite(voxels) || voxels < 1.0 || voxels > kMaxVoxels || !(floor_m2 <= kMaxFloorM2)) {
-    return absl::InvalidArgumentError(absl::StrCat("OctoMap ", bt_path, ": its bounds at ", r,
-                                                   " m make no raster of at most 32 Mi voxels and 100 x 100 m"));
+  if (!(r > 0.0) || !std::isfinite(voxels) || voxels < 1.0 || voxels > kMaxVoxels ||
+      !(floor_m2 <= kMaxFloorM2)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("OctoMap ", bt_path, ": its bounds at ", r,
+                     " m make no raster of at most 32 Mi voxels and 100 x 100 m"));
   }
   VoxelGrid grid = Rasterize(*tree);
   const int floor = FloorLayer(grid);
   // Found by fuzz_octomap_import: a map with nothing occupied below 0.5 m has no floor layer.
   if (floor < 0) {
-    return absl::InvalidArgumentError(absl::StrCat("OctoMap ", bt_path, ": no occupied floor layer below 0.5 m"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("OctoMap ", bt_path, ": no occupied floor layer below 0.5 m"));
   }
   const double floor_top = grid.origin.z() + (floor + 1) * grid.resolution;
   const PlaceFilter inside = SeenFloor(grid, floor, 3);

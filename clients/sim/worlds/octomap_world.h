@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_OCTOMAP_WORLD_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_OCTOMAP_WORLD_H_
+#pragma once
 
 #include <cstdint>
 #include <string>
@@ -24,5 +23,3 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
                                    uint64_t seed, OctomapImport* stats = nullptr);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_OCTOMAP_WORLD_H_

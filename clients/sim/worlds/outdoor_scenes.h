@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_OUTDOOR_SCENES_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_OUTDOOR_SCENES_H_
+#pragma once
 
 #include <cstdint>
 
@@ -22,5 +21,3 @@ World BuildingVehiclesScene(uint64_t seed);
 World RiverBridgeScene(uint64_t seed);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_OUTDOOR_SCENES_H_

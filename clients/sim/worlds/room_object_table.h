@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_ROOM_OBJECT_TABLE_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_ROOM_OBJECT_TABLE_H_
+#pragma once
 
 #include <Eigen/Core>
 #include <string>
@@ -36,5 +35,3 @@ struct ItemSpec {
 const std::vector<ItemSpec>& RoomItems(std::string_view room_type);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_ROOM_OBJECT_TABLE_H_

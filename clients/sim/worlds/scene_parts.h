@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_SCENE_PARTS_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_SCENE_PARTS_H_
+#pragma once
 
 #include <string>
 
@@ -23,5 +22,3 @@ void AddObject(World& world, const std::string& label, Rgb colour, const BoxShap
 bool FreeSpot(const World& world, const BoxShape& box, double gap);
 
 }  // namespace semnav::sim::parts
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_SCENE_PARTS_H_

@@ -65,7 +65,8 @@ std::vector<StartPose> ChooseStarts(const World& world, Modality modality, doubl
       for (int dy = -1; dy <= 1 && clear; ++dy) {
         for (int dx = -1; dx <= 1 && clear; ++dx) clear = inside(x + dx, y + dy);
       }
-      if (clear && (!allowed || allowed(grid.CellCentre(x, y)))) cells.push_back(grid.CellCentre(x, y));
+      if (clear && (!allowed || allowed(grid.CellCentre(x, y))))
+        cells.push_back(grid.CellCentre(x, y));
     }
   }
   std::vector<StartPose> starts;

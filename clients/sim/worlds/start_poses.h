@@ -1,5 +1,4 @@
-#ifndef SEMNAV_CLIENTS_SIM_WORLDS_START_POSES_H_
-#define SEMNAV_CLIENTS_SIM_WORLDS_START_POSES_H_
+#pragma once
 
 #include <functional>
 #include <vector>
@@ -28,5 +27,3 @@ std::vector<StartPose> ChooseStarts(const World& world, Modality modality, doubl
 int RemoveUnreachableObjects(World& world, Modality modality, double altitude, double radius = 1.0);
 
 }  // namespace semnav::sim
-
-#endif  // SEMNAV_CLIENTS_SIM_WORLDS_START_POSES_H_

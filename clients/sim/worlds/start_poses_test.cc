@@ -11,8 +11,8 @@ TEST(SimStartPosesTest, StartsStayWhereTheFilterAllowsAndApart) {
   const World world = testing::OpenWorld();  // 10 x 10 m, free
   Rng rng(5);
   // Only the eastern strip x > 2 (an OctoMap world passes "the scan saw floor here").
-  const std::vector<StartPose> starts =
-      ChooseStarts(world, Modality::kGround, 0.0, 4, rng, [](const Eigen::Vector2d& p) { return p.x() > 2.0; });
+  const std::vector<StartPose> starts = ChooseStarts(
+      world, Modality::kGround, 0.0, 4, rng, [](const Eigen::Vector2d& p) { return p.x() > 2.0; });
   ASSERT_EQ(starts.size(), 4u);
   for (size_t i = 0; i < starts.size(); ++i) {
     EXPECT_GT(starts[i].position.x(), 2.0);
@@ -20,8 +20,9 @@ TEST(SimStartPosesTest, StartsStayWhereTheFilterAllowsAndApart) {
   }
   // Nothing allowed: no starts rather than starts anywhere.
   Rng again(5);
-  EXPECT_TRUE(ChooseStarts(world, Modality::kGround, 0.0, 4, again, [](const Eigen::Vector2d&) { return false; })
-                  .empty());
+  EXPECT_TRUE(ChooseStarts(world, Modality::kGround, 0.0, 4, again, [](const Eigen::Vector2d&) {
+                return false;
+              }).empty());
 }
 
 }  // namespace

@@ -33,8 +33,10 @@ namespace sim = semnav::sim;
 namespace api = semnav::reasoning::v1;
 
 const std::vector<semnav::FlagSpec> kFlags = {
-    {"start-stack", "", "start mapping, planning and the gateway (free loopback ports) beside this binary"},
-    {"work-dir", "DIR", "configs and map store of --start-stack (default ./semnav_dashboard_stack)"},
+    {"start-stack", "",
+     "start mapping, planning and the gateway (free loopback ports) beside this binary"},
+    {"work-dir", "DIR",
+     "configs and map store of --start-stack (default ./semnav_dashboard_stack)"},
     {"gateway", "ADDR", "gateway to connect to without --start-stack (default 127.0.0.1:50050)"},
     {"mapping", "ADDR", "mapping service (default 127.0.0.1:50051)"},
     {"planning", "ADDR", "planning service, the robot's local planner (default 127.0.0.1:50052)"},
@@ -113,32 +115,40 @@ int main(int argc, char** argv) {
   const sim::StartPose& start = spec->world.starts[spec->start_index];
   const sim::Scene scene = sim::Scene::Build(spec->world);
   sim::RobotConfig robot_config = sim::RobotConfig::ForModality(start.modality);
-  if (start.modality == sim::Modality::kGround) robot_config.camera_pitch = spec->ground_camera_pitch;
+  if (start.modality == sim::Modality::kGround)
+    robot_config.camera_pitch = spec->ground_camera_pitch;
   sim::SimRobot robot(spec->world, scene, start, robot_config, spec->sensors, spec->seed);
-  loop::CommandExecutor executor(robot, loop::LiveMapPlanner(endpoints.planning, robot_config.radius));
-  absl::StatusOr<std::unique_ptr<loop::RobotSession>> session =
-      loop::RobotSession::Open(endpoints.gateway, loop::Hello(robot_id, start.modality, robot_config));
+  loop::CommandExecutor executor(robot,
+                                 loop::LiveMapPlanner(endpoints.planning, robot_config.radius));
+  absl::StatusOr<std::unique_ptr<loop::RobotSession>> session = loop::RobotSession::Open(
+      endpoints.gateway, loop::Hello(robot_id, start.modality, robot_config));
   if (!session.ok()) return Fail(session.status());
   loop::FrameStream frames(endpoints.mapping);
 
-  std::cout << absl::StrFormat(
-                   R"({"gateway":"%s","mapping":"%s","planning":"%s","robot_id":"%s","world":"%s","nearest_object":"%s"})",
-                   gateway, mapping, planning, robot_id, spec->world.name, spec->target)
-            << std::endl;
+  std::cout
+      << absl::StrFormat(
+             R"({"gateway":"%s","mapping":"%s","planning":"%s","robot_id":"%s","world":"%s","nearest_object":"%s"})",
+             gateway, mapping, planning, robot_id, spec->world.name, spec->target)
+      << std::endl;
   auto next = std::chrono::steady_clock::now();
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(kStepS / speed));
   while (!stop_requested) {
     for (const api::RobotCommand& command : (*session)->TakeCommands(kCommandWait)) {
-      if (absl::Status s = (*session)->Send(loop::FeedbackMessage(executor.Start(KeepAlive(command)))); !s.ok()) {
+      if (absl::Status s =
+              (*session)->Send(loop::FeedbackMessage(executor.Start(KeepAlive(command))));
+          !s.ok()) {
         return Fail(s);
       }
     }
     if (std::optional<loop::Feedback> outcome = executor.Step(kStepS); outcome.has_value()) {
-      if (absl::Status s = (*session)->Send(loop::FeedbackMessage(*outcome)); !s.ok()) return Fail(s);
+      if (absl::Status s = (*session)->Send(loop::FeedbackMessage(*outcome)); !s.ok())
+        return Fail(s);
     }
-    if (absl::Status s = (*session)->Send(loop::StateMessage(robot, robot_id)); !s.ok()) return Fail(s);
-    if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(loop::EncodeFrame(robot.Capture(), robot_id));
+    if (absl::Status s = (*session)->Send(loop::StateMessage(robot, robot_id)); !s.ok())
+      return Fail(s);
+    if (absl::StatusOr<semnav::mapping::v1::FrameAck> ack =
+            frames.Send(loop::EncodeFrame(robot.Capture(), robot_id));
         !ack.ok()) {
       return Fail(ack.status());
     }

@@ -14,7 +14,8 @@
 
 namespace semnav {
 
-inline ParsedFlags ParseBenchmarkFlagsOrExit(int* argc, char** argv, const std::vector<FlagSpec>& specs,
+inline ParsedFlags ParseBenchmarkFlagsOrExit(int* argc, char** argv,
+                                             const std::vector<FlagSpec>& specs,
                                              std::string_view program, std::string_view usage) {
   if (HelpRequested(*argc, argv)) {
     std::cout << usage;

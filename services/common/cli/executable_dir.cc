@@ -4,6 +4,8 @@
 
 namespace semnav {
 
-std::string ExecutableDir() { return std::filesystem::canonical("/proc/self/exe").parent_path().string(); }
+std::string ExecutableDir() {
+  return std::filesystem::canonical("/proc/self/exe").parent_path().string();
+}
 
 }  // namespace semnav

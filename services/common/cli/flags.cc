@@ -31,8 +31,8 @@ absl::StatusOr<ParsedFlags> ParseFlags(int argc, char** argv, int first,
       inline_value = name.substr(eq + 1);
       name = name.substr(0, eq);
     }
-    auto spec = std::find_if(specs.begin(), specs.end(),
-                             [&](const FlagSpec& s) { return s.name == name; });
+    auto spec =
+        std::find_if(specs.begin(), specs.end(), [&](const FlagSpec& s) { return s.name == name; });
     if (spec == specs.end()) {
       return absl::InvalidArgumentError(absl::StrCat("unknown flag --", name, " (see --help)"));
     }
@@ -75,8 +75,8 @@ ParsedFlags ParseFlagsOrExit(int argc, char** argv, const std::vector<FlagSpec>&
 std::string FlagsHelp(const std::vector<FlagSpec>& specs) {
   std::string out;
   for (const FlagSpec& spec : specs) {
-    std::string left = absl::StrCat("  --", spec.name,
-                                    spec.value_name.empty() ? "" : " ", spec.value_name);
+    std::string left =
+        absl::StrCat("  --", spec.name, spec.value_name.empty() ? "" : " ", spec.value_name);
     if (left.size() < 28) left.resize(28, ' ');
     absl::StrAppend(&out, left, " ", spec.help, "\n");
   }

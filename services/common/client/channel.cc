@@ -1,11 +1,11 @@
 #include "services/common/client/channel.h"
 
-#include <fstream>
-#include <sstream>
-
 #include <grpcpp/create_channel.h>
 #include <grpcpp/security/credentials.h>
 #include <grpcpp/support/client_interceptor.h>
+
+#include <fstream>
+#include <sstream>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/config/secret.h"
@@ -41,7 +41,8 @@ class BearerTokenInterceptor : public grpc::experimental::Interceptor {
 class BearerTokenFactory : public grpc::experimental::ClientInterceptorFactoryInterface {
  public:
   explicit BearerTokenFactory(const std::string& token) : header_(absl::StrCat("Bearer ", token)) {}
-  grpc::experimental::Interceptor* CreateClientInterceptor(grpc::experimental::ClientRpcInfo*) override {
+  grpc::experimental::Interceptor* CreateClientInterceptor(
+      grpc::experimental::ClientRpcInfo*) override {
     return new BearerTokenInterceptor(&header_);
   }
 

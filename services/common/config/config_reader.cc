@@ -17,7 +17,8 @@ struct ConfigReader::Shared {
 ConfigReader::ConfigReader(YAML::Node node, std::string path, std::shared_ptr<Shared> shared)
     : node_(std::move(node)), path_(std::move(path)), shared_(std::move(shared)) {
   if (node_ && !node_.IsMap() && !node_.IsNull()) {
-    shared_->errors.push_back(absl::StrCat(path_.empty() ? "<root>" : path_, ": must be a mapping"));
+    shared_->errors.push_back(
+        absl::StrCat(path_.empty() ? "<root>" : path_, ": must be a mapping"));
     node_ = YAML::Node(YAML::NodeType::Map);
   }
   shared_->mappings.emplace_back(path_, node_);

@@ -17,15 +17,17 @@ absl::StatusOr<std::string> ReadSecretFile(const std::string& path) {
     return absl::NotFoundError(absl::StrCat("secret file '", path, "' does not exist"));
   }
   if ((info.st_mode & (S_IRWXG | S_IRWXO)) != 0) {
-    return absl::FailedPreconditionError(
-        absl::StrCat("secret file '", path, "' must not be readable by group or others (chmod 600)"));
+    return absl::FailedPreconditionError(absl::StrCat(
+        "secret file '", path, "' must not be readable by group or others (chmod 600)"));
   }
   std::ifstream in(path);
-  if (!in) return absl::PermissionDeniedError(absl::StrCat("secret file '", path, "' cannot be read"));
+  if (!in)
+    return absl::PermissionDeniedError(absl::StrCat("secret file '", path, "' cannot be read"));
   std::stringstream content;
   content << in.rdbuf();
   std::string secret(absl::StripAsciiWhitespace(content.str()));
-  if (secret.empty()) return absl::FailedPreconditionError(absl::StrCat("secret file '", path, "' is empty"));
+  if (secret.empty())
+    return absl::FailedPreconditionError(absl::StrCat("secret file '", path, "' is empty"));
   return secret;
 }
 

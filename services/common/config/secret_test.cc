@@ -1,12 +1,11 @@
 #include "services/common/config/secret.h"
 
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 namespace semnav {
 namespace {

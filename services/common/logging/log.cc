@@ -20,11 +20,16 @@ std::string& Component() {
 
 absl::string_view LevelName(LogLevel level) {
   switch (level) {
-    case LogLevel::kDebug: return "debug";
-    case LogLevel::kInfo: return "info";
-    case LogLevel::kWarning: return "warning";
-    case LogLevel::kError: return "error";
-    case LogLevel::kOff: return "off";
+    case LogLevel::kDebug:
+      return "debug";
+    case LogLevel::kInfo:
+      return "info";
+    case LogLevel::kWarning:
+      return "warning";
+    case LogLevel::kError:
+      return "error";
+    case LogLevel::kOff:
+      return "off";
   }
   return "unknown";
 }
@@ -55,8 +60,8 @@ LogLevel GetLogLevel() { return static_cast<LogLevel>(g_level.load()); }
 
 absl::StatusOr<LogLevel> ParseLogLevel(absl::string_view name) {
   const std::string lower = absl::AsciiStrToLower(name);
-  for (LogLevel level : {LogLevel::kDebug, LogLevel::kInfo, LogLevel::kWarning, LogLevel::kError,
-                         LogLevel::kOff}) {
+  for (LogLevel level :
+       {LogLevel::kDebug, LogLevel::kInfo, LogLevel::kWarning, LogLevel::kError, LogLevel::kOff}) {
     if (lower == LevelName(level)) return level;
   }
   if (lower == "warn") return LogLevel::kWarning;
@@ -89,9 +94,9 @@ std::string FormatLogLine(LogLevel level, absl::string_view event,
 
 void Log(LogLevel level, absl::string_view event, std::initializer_list<LogField> fields) {
   if (static_cast<int>(level) < g_level.load() || level == LogLevel::kOff) return;
-  const std::string line =
-      absl::StrCat("ts=", absl::FormatTime("%Y-%m-%dT%H:%M:%E3SZ", absl::Now(), absl::UTCTimeZone()),
-                   " ", FormatLogLine(level, event, fields), "\n");
+  const std::string line = absl::StrCat(
+      "ts=", absl::FormatTime("%Y-%m-%dT%H:%M:%E3SZ", absl::Now(), absl::UTCTimeZone()), " ",
+      FormatLogLine(level, event, fields), "\n");
   std::fwrite(line.data(), 1, line.size(), stderr);
 }
 

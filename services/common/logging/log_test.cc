@@ -7,11 +7,11 @@ namespace {
 
 TEST(LogTest, FormatsLogfmtWithQuotingOnlyWhenNeeded) {
   SetLogComponent("semnav-test");
-  EXPECT_EQ(FormatLogLine(LogLevel::kInfo, "frame_rejected",
-                          {{"robot", "r1"}, {"reason", "depth \"size\" wrong"}, {"n", 3},
-                           {"ok", false}}),
-            "level=info svc=semnav-test event=frame_rejected robot=r1 "
-            "reason=\"depth \\\"size\\\" wrong\" n=3 ok=false");
+  EXPECT_EQ(
+      FormatLogLine(LogLevel::kInfo, "frame_rejected",
+                    {{"robot", "r1"}, {"reason", "depth \"size\" wrong"}, {"n", 3}, {"ok", false}}),
+      "level=info svc=semnav-test event=frame_rejected robot=r1 "
+      "reason=\"depth \\\"size\\\" wrong\" n=3 ok=false");
   EXPECT_EQ(FormatLogLine(LogLevel::kError, "x", {{"empty", ""}}),
             "level=error svc=semnav-test event=x empty=\"\"");
 }

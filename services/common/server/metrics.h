@@ -1,11 +1,11 @@
 #pragma once
 
+#include <grpcpp/support/server_interceptor.h>
+
 #include <array>
 #include <map>
 #include <memory>
 #include <string>
-
-#include <grpcpp/support/server_interceptor.h>
 
 #include "absl/synchronization/mutex.h"
 #include "absl/time/time.h"

@@ -1,8 +1,8 @@
 #include "services/common/server/request_parse_interceptor.h"
 
-#include <string>
-
 #include <google/protobuf/descriptor.h>
+
+#include <string>
 
 #include "absl/status/status.h"
 #include "absl/strings/cord.h"

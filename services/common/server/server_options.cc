@@ -28,8 +28,8 @@ ServerOptions ServerOptions::FromConfig(ConfigReader& section, ServerOptions opt
                 "max_send_message_mb", "must be in [1, 1024]");
   section.Check(options.keepalive_time_s >= 1, "keepalive_time_s", "must be >= 1");
   section.Check(options.keepalive_timeout_s >= 1, "keepalive_timeout_s", "must be >= 1");
-  section.Check(options.shutdown_grace_s >= 0 && options.shutdown_grace_s <= 60,
-                "shutdown_grace_s", "must be in [0, 60]");
+  section.Check(options.shutdown_grace_s >= 0 && options.shutdown_grace_s <= 60, "shutdown_grace_s",
+                "must be in [0, 60]");
   return options;
 }
 

@@ -25,13 +25,13 @@ struct AuthOptions {
 
 // The `server:` section every binary reads; defaults are the embedded localhost setup.
 struct ServerOptions {
-  std::string listen = "127.0.0.1:0";   // host:port; port 0 picks a free one
+  std::string listen = "127.0.0.1:0";  // host:port; port 0 picks a free one
   ServerTlsOptions tls;
   AuthOptions auth;
-  int max_receive_message_mb = 16;      // larger requests fail with RESOURCE_EXHAUSTED
+  int max_receive_message_mb = 16;  // larger requests fail with RESOURCE_EXHAUSTED
   int max_send_message_mb = 16;
-  int keepalive_time_s = 30;            // server pings idle connections this often
-  int keepalive_timeout_s = 10;         // and drops them if a ping is not answered in time
+  int keepalive_time_s = 30;     // server pings idle connections this often
+  int keepalive_timeout_s = 10;  // and drops them if a ping is not answered in time
   // After SIGTERM, in-flight calls (and idle client connections that miss the GOAWAY) get
   // this long before they are cancelled; below the 5 s an orchestrator usually allows.
   double shutdown_grace_s = 3;

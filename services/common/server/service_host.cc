@@ -1,11 +1,11 @@
 #include "services/common/server/service_host.h"
 
-#include <fstream>
-#include <sstream>
-
 #include <grpcpp/ext/proto_server_reflection_plugin.h>
 #include <grpcpp/health_check_service_interface.h>
 #include <grpcpp/security/server_credentials.h>
+
+#include <fstream>
+#include <sstream>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
@@ -17,7 +17,8 @@ namespace {
 
 absl::StatusOr<std::string> ReadPem(const std::string& path, absl::string_view key) {
   std::ifstream in(path);
-  if (!in) return absl::NotFoundError(absl::StrCat("server.tls.", key, ": cannot read '", path, "'"));
+  if (!in)
+    return absl::NotFoundError(absl::StrCat("server.tls.", key, ": cannot read '", path, "'"));
   std::stringstream content;
   content << in.rdbuf();
   return content.str();
@@ -75,7 +76,9 @@ void ServiceHost::AddService(std::unique_ptr<grpc::Service> service, std::string
   services_.emplace_back(std::move(service), std::move(full_name));
 }
 
-void ServiceHost::OnShutdown(std::function<void()> hook) { shutdown_hooks_.push_back(std::move(hook)); }
+void ServiceHost::OnShutdown(std::function<void()> hook) {
+  shutdown_hooks_.push_back(std::move(hook));
+}
 
 absl::Status ServiceHost::Start() {
   absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> credentials = MakeCredentials(options_);
@@ -106,13 +109,17 @@ absl::Status ServiceHost::Start() {
   server_ = builder.BuildAndStart();
   if (!server_ || port_ == 0) {
     server_.reset();
-    return absl::UnavailableError(absl::StrCat("server.listen: cannot bind '", options_.listen, "'"));
+    return absl::UnavailableError(
+        absl::StrCat("server.listen: cannot bind '", options_.listen, "'"));
   }
   grpc::HealthCheckServiceInterface* health = server_->GetHealthCheckService();
   health->SetServingStatus("", true);
   for (const auto& [service, name] : services_) health->SetServingStatus(name, true);
-  LogInfo("serving", {{"listen", options_.listen}, {"port", port_}, {"tls", options_.tls.enabled()},
-                      {"mtls", !options_.tls.client_ca_file.empty()}, {"auth", options_.auth.enabled()}});
+  LogInfo("serving", {{"listen", options_.listen},
+                      {"port", port_},
+                      {"tls", options_.tls.enabled()},
+                      {"mtls", !options_.tls.client_ca_file.empty()},
+                      {"auth", options_.auth.enabled()}});
   return absl::OkStatus();
 }
 
@@ -121,8 +128,9 @@ void ServiceHost::Shutdown() {
   stopped_ = true;
   server_->GetHealthCheckService()->Shutdown();  // every service NOT_SERVING from here on
   for (auto hook = shutdown_hooks_.rbegin(); hook != shutdown_hooks_.rend(); ++hook) (*hook)();
-  server_->Shutdown(std::chrono::system_clock::now() +
-                    std::chrono::milliseconds(static_cast<int64_t>(options_.shutdown_grace_s * 1000)));
+  server_->Shutdown(
+      std::chrono::system_clock::now() +
+      std::chrono::milliseconds(static_cast<int64_t>(options_.shutdown_grace_s * 1000)));
   server_->Wait();
   LogInfo("stopped");
 }

@@ -41,7 +41,8 @@ grpc::Status TokenAuthProcessor::Process(const InputMetadata& auth_metadata, grp
   }
   absl::string_view value(it->second.data(), it->second.size());
   if (!absl::ConsumePrefix(&value, "Bearer ")) {
-    return grpc::Status(grpc::StatusCode::UNAUTHENTICATED, "authorization must be 'Bearer <token>'");
+    return grpc::Status(grpc::StatusCode::UNAUTHENTICATED,
+                        "authorization must be 'Bearer <token>'");
   }
   bool accepted = false;
   for (const std::string& token : tokens_) accepted |= ConstantTimeEquals(value, token);

@@ -1,9 +1,9 @@
 #pragma once
 
+#include <grpcpp/security/auth_metadata_processor.h>
+
 #include <string>
 #include <vector>
-
-#include <grpcpp/security/auth_metadata_processor.h>
 
 #include "absl/status/statusor.h"
 #include "services/common/server/server_options.h"

@@ -1,10 +1,10 @@
 #include "services/common/status/field_error.h"
 
-#include <cmath>
-#include <limits>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
 
 #include "services/common/status/value_checks.h"
 
@@ -15,7 +15,8 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 
 TEST(FieldErrorTest, CarriesFieldAndReasonBesideTheMessage) {
-  const absl::Status status = FieldStatus(absl::StatusCode::kFailedPrecondition, "lease_id", "expired", "LEASE_EXPIRED");
+  const absl::Status status =
+      FieldStatus(absl::StatusCode::kFailedPrecondition, "lease_id", "expired", "LEASE_EXPIRED");
   EXPECT_EQ(status.code(), absl::StatusCode::kFailedPrecondition);
   EXPECT_EQ(status.message(), "lease_id: expired");
   EXPECT_EQ(ErrorField(status), "lease_id");
@@ -25,7 +26,8 @@ TEST(FieldErrorTest, CarriesFieldAndReasonBesideTheMessage) {
 }
 
 TEST(FieldErrorTest, WithFieldRenamesTheFieldAndKeepsCodeAndReason) {
-  const absl::Status core = FieldStatus(absl::StatusCode::kNotFound, "map_id", "no map \"a\"", "MAP_NOT_FOUND");
+  const absl::Status core =
+      FieldStatus(absl::StatusCode::kNotFound, "map_id", "no map \"a\"", "MAP_NOT_FOUND");
   const absl::Status renamed = WithField(core, "reference_map_id");
   EXPECT_EQ(renamed.code(), absl::StatusCode::kNotFound);
   EXPECT_EQ(renamed.message(), "reference_map_id: no map \"a\"");
@@ -39,8 +41,10 @@ TEST(FieldErrorTest, WithFieldRenamesTheFieldAndKeepsCodeAndReason) {
 }
 
 TEST(FieldErrorTest, DefaultReasonNeverOverridesTheOneCoreChose) {
-  EXPECT_EQ(ErrorReason(WithDefaultReason(InvalidField("top_k", "must be > 0"), "STEP_FAILED")), "FIELD_INVALID");
-  const absl::Status plain = WithDefaultReason(absl::NotFoundError("no consistent match"), "STEP_FAILED");
+  EXPECT_EQ(ErrorReason(WithDefaultReason(InvalidField("top_k", "must be > 0"), "STEP_FAILED")),
+            "FIELD_INVALID");
+  const absl::Status plain =
+      WithDefaultReason(absl::NotFoundError("no consistent match"), "STEP_FAILED");
   EXPECT_EQ(ErrorReason(plain), "STEP_FAILED");
   EXPECT_EQ(ErrorField(plain), std::nullopt);
   EXPECT_EQ(ErrorReason(WithReason(InvalidField("a", "b"), "OTHER")), "OTHER");
@@ -68,7 +72,8 @@ TEST(ValueChecksTest, NumbersMustBeFiniteAndSane) {
 
 TEST(ValueChecksTest, PointsNameTheAxisThatIsWrong) {
   EXPECT_TRUE(CheckPoint(1, -2, 3, "pose.position", kMaxCoordinateM).ok());
-  EXPECT_EQ(ErrorField(CheckPoint(std::nan(""), 0, 0, "pose.position", kMaxCoordinateM)), "pose.position.x");
+  EXPECT_EQ(ErrorField(CheckPoint(std::nan(""), 0, 0, "pose.position", kMaxCoordinateM)),
+            "pose.position.x");
   EXPECT_EQ(ErrorField(CheckPoint(0, 1e300, 0, "near", kMaxCoordinateM)), "near.y");
   EXPECT_EQ(ErrorField(CheckPoint(0, 0, -2e5, "goal", kMaxCoordinateM)), "goal.z");
 }

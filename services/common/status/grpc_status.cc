@@ -3,8 +3,8 @@
 #include <google/protobuf/any.pb.h>
 
 #include "absl/strings/match.h"
-#include "services/common/status/field_error.h"
 #include "absl/strings/str_cat.h"
+#include "services/common/status/field_error.h"
 
 namespace semnav {
 namespace {
@@ -76,7 +76,8 @@ absl::Status FieldError(absl::StatusCode code, absl::string_view field, absl::st
   return status;
 }
 
-std::optional<std::string> FindDetailBytes(const grpc::Status& status, absl::string_view full_name) {
+std::optional<std::string> FindDetailBytes(const grpc::Status& status,
+                                           absl::string_view full_name) {
   if (status.error_details().empty()) return std::nullopt;
   semnav::common::v1::RichStatus rich;
   if (!rich.ParseFromString(status.error_details())) return std::nullopt;

@@ -1,14 +1,14 @@
 #pragma once
 
-#include <optional>
-#include <string>
-#include "absl/strings/string_view.h"
-
 #include <google/protobuf/message.h>
 #include <grpcpp/support/status.h>
 
+#include <optional>
+#include <string>
+
 #include "absl/status/status.h"
 #include "absl/strings/cord.h"
+#include "absl/strings/string_view.h"
 #include "semnav/common/v1/errors.pb.h"
 
 namespace semnav {

@@ -46,7 +46,8 @@ TEST(GrpcStatusTest, FieldErrorCarriesTypedDetailAcrossTheAdapter) {
 }
 
 TEST(GrpcStatusTest, RenamingAnAdapterFieldErrorLeavesNoStaleDetail) {
-  const absl::Status adapter = FieldError(absl::StatusCode::kNotFound, "map_id", "no map", "MAP_NOT_FOUND");
+  const absl::Status adapter =
+      FieldError(absl::StatusCode::kNotFound, "map_id", "no map", "MAP_NOT_FOUND");
   EXPECT_EQ(ErrorField(adapter), "map_id");  // the same payloads core's FieldStatus carries
   const grpc::Status wire = ToGrpcStatus(WithReason(WithField(adapter, "moving_map_id"), "OTHER"));
   EXPECT_EQ(wire.error_message(), "moving_map_id: no map");
@@ -80,7 +81,8 @@ TEST(GrpcStatusTest, NonProtoPayloadsStayLocal) {
 }
 
 TEST(GrpcStatusTest, CoreFieldStatusBecomesErrorInfoWithoutStringParsing) {
-  const grpc::Status wire = ToGrpcStatus(FieldStatus(absl::StatusCode::kNotFound, "map_id", "no such map", "MAP_NOT_FOUND"));
+  const grpc::Status wire = ToGrpcStatus(
+      FieldStatus(absl::StatusCode::kNotFound, "map_id", "no such map", "MAP_NOT_FOUND"));
   EXPECT_EQ(wire.error_code(), grpc::StatusCode::NOT_FOUND);
   std::optional<ErrorInfo> info = GetDetail<ErrorInfo>(wire);
   ASSERT_TRUE(info.has_value());

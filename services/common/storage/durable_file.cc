@@ -70,7 +70,8 @@ absl::Status WriteFileAtomically(const std::string& path, absl::string_view byte
   if (fd < 0) return ErrnoStatus("open", temporary);
   absl::Status status = WriteAndSync(fd, temporary, bytes);
   if (::close(fd) != 0 && status.ok()) status = ErrnoStatus("close", temporary);
-  if (status.ok() && ::rename(temporary.c_str(), path.c_str()) != 0) status = ErrnoStatus("rename", temporary);
+  if (status.ok() && ::rename(temporary.c_str(), path.c_str()) != 0)
+    status = ErrnoStatus("rename", temporary);
   if (!status.ok()) {
     ::unlink(temporary.c_str());
     return status;
@@ -111,7 +112,8 @@ std::string FrameWithChecksum(absl::string_view magic, absl::string_view payload
   return file;
 }
 
-absl::StatusOr<std::string> PayloadOfFrame(absl::string_view magic, absl::string_view file, absl::string_view what) {
+absl::StatusOr<std::string> PayloadOfFrame(absl::string_view magic, absl::string_view file,
+                                           absl::string_view what) {
   const size_t header = magic.size() + 8 + 4;
   if (file.size() < header || file.substr(0, magic.size()) != magic) {
     return absl::DataLossError(absl::StrCat(what, " has no valid header"));
@@ -119,8 +121,8 @@ absl::StatusOr<std::string> PayloadOfFrame(absl::string_view magic, absl::string
   const uint64_t size = GetLittleEndian(file, magic.size(), 8);
   const auto crc = static_cast<uint32_t>(GetLittleEndian(file, magic.size() + 8, 4));
   if (file.size() - header != size) {
-    return absl::DataLossError(
-        absl::StrCat(what, " is truncated (", file.size() - header, " of ", size, " payload bytes)"));
+    return absl::DataLossError(absl::StrCat(what, " is truncated (", file.size() - header, " of ",
+                                            size, " payload bytes)"));
   }
   const absl::string_view payload = file.substr(header);
   if (Crc32(payload) != crc) return absl::DataLossError(absl::StrCat(what, " fails its checksum"));

@@ -29,6 +29,7 @@ uint32_t Crc32(absl::string_view data);
 // (4 bytes, little-endian), then the payload.
 std::string FrameWithChecksum(absl::string_view magic, absl::string_view payload);
 // The payload of a frame; DATA_LOSS naming `what` when the magic, size or checksum is wrong.
-absl::StatusOr<std::string> PayloadOfFrame(absl::string_view magic, absl::string_view file, absl::string_view what);
+absl::StatusOr<std::string> PayloadOfFrame(absl::string_view magic, absl::string_view file,
+                                           absl::string_view what);
 
 }  // namespace semnav::storage

@@ -1,8 +1,8 @@
 #include "services/common/storage/durable_file.h"
 
-#include <filesystem>
-
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 namespace semnav::storage {
 namespace {
@@ -22,7 +22,9 @@ TEST(WriteFileAtomicallyTest, ReplacesTheWholeFileAndLeavesNoTemporary) {
   ASSERT_TRUE(WriteFileAtomically(path, "first version, longer").ok());
   ASSERT_TRUE(WriteFileAtomically(path, "second").ok());
   EXPECT_EQ(*ReadWholeFile(path), "second");
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            1);
 }
 
 TEST(WriteFileAtomicallyTest, AMissingDirectoryFailsAndKeepsNothing) {
@@ -52,7 +54,9 @@ TEST(ChecksumFrameTest, RoundTripsBinaryPayloads) {
 
 TEST(ChecksumFrameTest, NamesEachKindOfDamage) {
   const std::string file = FrameWithChecksum("MAGIC\n", "payload");
-  const auto message = [](const absl::StatusOr<std::string>& r) { return std::string(r.status().message()); };
+  const auto message = [](const absl::StatusOr<std::string>& r) {
+    return std::string(r.status().message());
+  };
   EXPECT_EQ(message(PayloadOfFrame("OTHER\n", file, "f")), "f has no valid header");
   EXPECT_EQ(message(PayloadOfFrame("MAGIC\n", file.substr(0, file.size() - 2), "f")),
             "f is truncated (5 of 7 payload bytes)");

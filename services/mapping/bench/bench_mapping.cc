@@ -1,16 +1,16 @@
 // semnav-bench-mapping: frame integration vs plain OctoMap, agreement, FR-079 grid, scene graph.
 // Usage: semnav-bench-mapping [--json FILE] [--png FILE] [--benchmark_* flags]
+#include <benchmark/benchmark.h>
+
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <random>
 #include <string>
 #include <vector>
-
-#include <benchmark/benchmark.h>
-#include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "services/common/cli/benchmark_flags.h"
 #include "services/common/cli/help.h"
@@ -37,7 +37,8 @@ double ThreadCpuMs() {
 }
 
 double MsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 const std::vector<SensorFrame>& Tour() {
@@ -46,7 +47,8 @@ const std::vector<SensorFrame>& Tour() {
     std::vector<SensorFrame> out;
     int64_t stamp = 0;
     for (const CameraPose& pose : testing::RoomTour(room, kTourFrames)) {
-      out.push_back(testing::RenderFrame(room, pose, stamp += 100'000'000, DepthEncoding::kMillimetres16U));
+      out.push_back(
+          testing::RenderFrame(room, pose, stamp += 100'000'000, DepthEncoding::kMillimetres16U));
     }
     return out;
   }();
@@ -78,7 +80,10 @@ void BM_FrameIntegration(benchmark::State& state) {
     Collected().samples_ms["frame_ms"].push_back(ms);
   }
 }
-BENCHMARK(BM_FrameIntegration)->UseManualTime()->Iterations(3 * kTourFrames)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FrameIntegration)
+    ->UseManualTime()
+    ->Iterations(3 * kTourFrames)
+    ->Unit(benchmark::kMillisecond);
 
 // The same frames through OctoMap's plain insertPointCloud (every ray, no discretization).
 void BM_PlainInsertPointCloud(benchmark::State& state) {
@@ -88,13 +93,17 @@ void BM_PlainInsertPointCloud(benchmark::State& state) {
     const SensorFrame& frame = Tour()[i++ % Tour().size()];
     const auto start = std::chrono::steady_clock::now();
     const Eigen::Vector3d& o = frame.pose.position;
-    tree.insertPointCloud(ToCloud(Points(frame)), octomap::point3d(o.x(), o.y(), o.z()), DepthRange{}.max_m);
+    tree.insertPointCloud(ToCloud(Points(frame)), octomap::point3d(o.x(), o.y(), o.z()),
+                          DepthRange{}.max_m);
     const double ms = MsSince(start);
     state.SetIterationTime(ms / 1000.0);
     Collected().samples_ms["octomap_insert_ms"].push_back(ms);
   }
 }
-BENCHMARK(BM_PlainInsertPointCloud)->UseManualTime()->Iterations(kTourFrames)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlainInsertPointCloud)
+    ->UseManualTime()
+    ->Iterations(kTourFrames)
+    ->Unit(benchmark::kMillisecond);
 
 // Whole MappingEngine::AddFrame (integration + columns + Bayesian grid + scene graph).
 void BM_EngineFrame(benchmark::State& state) {
@@ -110,11 +119,15 @@ void BM_EngineFrame(benchmark::State& state) {
     Collected().samples_ms["engine_frame_ms"].push_back(ms);
   }
 }
-BENCHMARK(BM_EngineFrame)->UseManualTime()->Iterations(2 * kTourFrames)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EngineFrame)
+    ->UseManualTime()
+    ->Iterations(2 * kTourFrames)
+    ->Unit(benchmark::kMillisecond);
 
 // FR-079: load the .bt, voxel columns, h_f/h_c estimate, climbing + grid, all layers rendered.
 void BM_Fr079Grid(benchmark::State& state) {
-  const std::string path = std::string(SEMNAV_SHARED_DATA_DIR) + "/pointclouds-octomaps/octomap_share/geb079.bt";
+  const std::string path =
+      std::string(SEMNAV_SHARED_DATA_DIR) + "/pointclouds-octomaps/octomap_share/geb079.bt";
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     const octomap::OcTree tree(path);
@@ -129,13 +142,15 @@ void BM_Fr079Grid(benchmark::State& state) {
     const double ms = MsSince(start);
     state.SetIterationTime(ms / 1000.0);
     Collected().samples_ms["fr079_grid_ms"].push_back(ms);
-    Collected().values["rss_mb_fr079"] = std::max(Collected().values["rss_mb_fr079"], ResidentMiB());
+    Collected().values["rss_mb_fr079"] =
+        std::max(Collected().values["rss_mb_fr079"], ResidentMiB());
     if (!g_png_path.empty()) cv::imwrite(g_png_path, RenderGridImage(layers));
   }
 }
 BENCHMARK(BM_Fr079Grid)->UseManualTime()->Iterations(3)->Unit(benchmark::kMillisecond);
 
-// 20 detections (re-observations with jittered position and 512-d embedding) into a 500-object graph.
+// 20 detections (re-observations with jittered position and 512-d embedding) into a 500-object
+// graph.
 void BM_SceneGraphUpdate(benchmark::State& state) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> coord(0.0, 40.0);
@@ -145,7 +160,8 @@ void BM_SceneGraphUpdate(benchmark::State& state) {
     for (float& x : e) x = gauss(rng);
     return e;
   };
-  const std::vector<std::string> labels{"chair", "table", "sofa", "bed", "tv", "plant", "sink", "toilet"};
+  const std::vector<std::string> labels{"chair", "table", "sofa", "bed",
+                                        "tv",    "plant", "sink", "toilet"};
   SceneGraphConfig config;
   config.prune_single_after_s = 1e9;
   SceneGraph graph(config);
@@ -192,7 +208,8 @@ void MeasureAgreement() {
   for (const SensorFrame& frame : Tour()) {
     const std::vector<Eigen::Vector3f> points = Points(frame);
     const Eigen::Vector3d& o = frame.pose.position;
-    reference.insertPointCloud(ToCloud(points), octomap::point3d(o.x(), o.y(), o.z()), DepthRange{}.max_m);
+    reference.insertPointCloud(ToCloud(points), octomap::point3d(o.x(), o.y(), o.z()),
+                               DepthRange{}.max_m);
     integrator.Integrate(fast, points, o.cast<float>());
   }
   const OctreeAgreement agreement = CompareOctrees(reference, fast);
@@ -226,7 +243,8 @@ int main(int argc, char** argv) {
   out["fr079_grid_ms"] = Median(f.samples_ms["fr079_grid_ms"]);
   out["scene_graph_update_ms_p99"] = Percentile(f.samples_ms["scene_graph_update_ms"], 0.99);
   out["scene_graph_update_ms_median"] = Median(f.samples_ms["scene_graph_update_ms"]);
-  out["scene_graph_update_cpu_ms_p99"] = Percentile(f.samples_ms["scene_graph_update_cpu_ms"], 0.99);
+  out["scene_graph_update_cpu_ms_p99"] =
+      Percentile(f.samples_ms["scene_graph_update_cpu_ms"], 0.99);
   out["rss_mb_fr079"] = f.values["rss_mb_fr079"];
   std::printf("\n%-30s %12s %s\n", "figure", "value", "target");
   const std::map<std::string, std::string> targets{{"frame_ms_median", "<= 40 ms"},
@@ -235,7 +253,8 @@ int main(int argc, char** argv) {
                                                    {"scene_graph_update_ms_p99", "<= 1 ms"}};
   for (const auto& [name, value] : out.items()) {
     const auto target = targets.find(name);
-    std::printf("%-30s %12.4f %s\n", name.c_str(), value.get<double>(), target == targets.end() ? "" : target->second.c_str());
+    std::printf("%-30s %12.4f %s\n", name.c_str(), value.get<double>(),
+                target == targets.end() ? "" : target->second.c_str());
   }
   if (!json_path.empty()) std::ofstream(json_path) << out.dump(2) << "\n";
   return 0;

@@ -6,7 +6,8 @@
 
 namespace semnav::mapping {
 
-ColumnResult ClimbColumn(const VoxelColumns& columns, VoxelColumns::ColumnId column, const ClimbingHeights& heights) {
+ColumnResult ClimbColumn(const VoxelColumns& columns, VoxelColumns::ColumnId column,
+                         const ClimbingHeights& heights) {
   const int foot = columns.CoordToKey(heights.foot_m);
   const int ceiling = columns.CoordToKey(heights.ceiling_m);
   const VoxelColumns::Column* voxels = columns.Find(column);
@@ -18,9 +19,12 @@ ColumnResult ClimbColumn(const VoxelColumns& columns, VoxelColumns::ColumnId col
     if (state == VoxelState::kFree) break;
     if (state == VoxelState::kOccupied) top = z;
   }
-  if (top >= foot) return {z > ceiling ? ColumnClass::kStructure : ColumnClass::kObstacle, columns.KeyToCoord(top)};
+  if (top >= foot)
+    return {z > ceiling ? ColumnClass::kStructure : ColumnClass::kObstacle,
+            columns.KeyToCoord(top)};
   bool known = false;
-  for (int k = foot; k <= ceiling && !known; ++k) known = VoxelColumns::StateAt(*voxels, k) != VoxelState::kUnknown;
+  for (int k = foot; k <= ceiling && !known; ++k)
+    known = VoxelColumns::StateAt(*voxels, k) != VoxelState::kUnknown;
   return {known ? ColumnClass::kFree : ColumnClass::kUnknown, 0.0};
 }
 

@@ -6,7 +6,8 @@
 
 namespace semnav::mapping {
 
-// Foot height h_f and ceiling height h_c of the climbing algorithm (seed 003, sec. 2.1-2.2), metres.
+// Foot height h_f and ceiling height h_c of the climbing algorithm (seed 003, sec. 2.1-2.2),
+// metres.
 struct ClimbingHeights {
   double foot_m = 0.1;
   double ceiling_m = 2.3;
@@ -27,7 +28,8 @@ struct ColumnResult {
 // occupied voxel. Voxels not connected to the foot (lamps, lintels, pipes hanging from the
 // ceiling) do not affect motion and are ignored, as in the seed. A column without a climb but
 // with a known voxel in [h_f, h_c] is free, otherwise unknown.
-ColumnResult ClimbColumn(const VoxelColumns& columns, VoxelColumns::ColumnId column, const ClimbingHeights& heights);
+ColumnResult ClimbColumn(const VoxelColumns& columns, VoxelColumns::ColumnId column,
+                         const ClimbingHeights& heights);
 
 // Start-up estimate of h_f and h_c from the map (the seed reads the ceiling while the robot
 // stands still): the floor is the most occupied z level in the lower half of the occupied

@@ -78,8 +78,12 @@ TEST(ClimbingTest, EstimatesFootAboveFloorAndCeilingBelowRoof) {
     for (int y = 0; y < 20; ++y) {
       const auto kx = static_cast<octomap::key_type>(200 + x);
       const auto ky = static_cast<octomap::key_type>(200 + y);
-      columns.Set(octomap::OcTreeKey(kx, ky, static_cast<octomap::key_type>(columns.CoordToKey(0.05))), VoxelState::kOccupied);
-      columns.Set(octomap::OcTreeKey(kx, ky, static_cast<octomap::key_type>(columns.CoordToKey(2.55))), VoxelState::kOccupied);
+      columns.Set(
+          octomap::OcTreeKey(kx, ky, static_cast<octomap::key_type>(columns.CoordToKey(0.05))),
+          VoxelState::kOccupied);
+      columns.Set(
+          octomap::OcTreeKey(kx, ky, static_cast<octomap::key_type>(columns.CoordToKey(2.55))),
+          VoxelState::kOccupied);
     }
   }
   Fill(columns, 0.05, 2.55, VoxelState::kOccupied);  // one wall column does not move the peaks

@@ -21,8 +21,9 @@ Eigen::Vector3d BackProject(const Intrinsics& k, double u, double v, double z) {
   return {(u - k.cx) * z / k.fx, (v - k.cy) * z / k.fy, z};
 }
 
-std::vector<Eigen::Vector3f> ProjectDepth(const cv::Mat& depth_m, const Intrinsics& k, const CameraPose& pose,
-                                          const DepthRange& range, int stride) {
+std::vector<Eigen::Vector3f> ProjectDepth(const cv::Mat& depth_m, const Intrinsics& k,
+                                          const CameraPose& pose, const DepthRange& range,
+                                          int stride) {
   const Eigen::Matrix3f rotation = pose.orientation.toRotationMatrix().cast<float>();
   const Eigen::Vector3f translation = pose.position.cast<float>();
   std::vector<Eigen::Vector3f> points;

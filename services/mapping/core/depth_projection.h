@@ -1,9 +1,8 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "services/mapping/core/sensor_frame.h"
 
@@ -20,8 +19,9 @@ cv::Mat DecodeDepth(const DepthImage& depth);
 
 // Back-projects every `stride`-th pixel (rows and columns) with depth in range into the map
 // frame: p = R * ((u - cx) z / fx, (v - cy) z / fy, z) + t.
-std::vector<Eigen::Vector3f> ProjectDepth(const cv::Mat& depth_m, const Intrinsics& k, const CameraPose& pose,
-                                          const DepthRange& range, int stride);
+std::vector<Eigen::Vector3f> ProjectDepth(const cv::Mat& depth_m, const Intrinsics& k,
+                                          const CameraPose& pose, const DepthRange& range,
+                                          int stride);
 
 // Camera-frame point of pixel (u, v) at depth z (metres).
 Eigen::Vector3d BackProject(const Intrinsics& k, double u, double v, double z);

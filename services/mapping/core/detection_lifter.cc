@@ -14,22 +14,25 @@ cv::Mat MaskOf(const Detection& detection, int width, int height) {
   }
   cv::Mat mask = cv::Mat::zeros(height, width, CV_8U);
   const PixelBox& b = detection.box;
-  const cv::Rect box(cv::Point(static_cast<int>(std::floor(b.x_min)), static_cast<int>(std::floor(b.y_min))),
-                     cv::Point(static_cast<int>(std::ceil(b.x_max)), static_cast<int>(std::ceil(b.y_max))));
+  const cv::Rect box(
+      cv::Point(static_cast<int>(std::floor(b.x_min)), static_cast<int>(std::floor(b.y_min))),
+      cv::Point(static_cast<int>(std::ceil(b.x_max)), static_cast<int>(std::ceil(b.y_max))));
   mask(box & cv::Rect(0, 0, width, height)) = 255;
   return mask;
 }
 
 double Percentile(std::vector<double> values, double q) {
   const auto index = static_cast<size_t>(q * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index),
+                   values.end());
   return values[index];
 }
 
 }  // namespace
 
-std::optional<LiftedDetection> LiftDetection(const Detection& detection, const cv::Mat& depth_m, const Intrinsics& k,
-                                             const CameraPose& pose, const DepthRange& range, const LiftConfig& config,
+std::optional<LiftedDetection> LiftDetection(const Detection& detection, const cv::Mat& depth_m,
+                                             const Intrinsics& k, const CameraPose& pose,
+                                             const DepthRange& range, const LiftConfig& config,
                                              int64_t stamp_ns, const std::string& robot_id) {
   const cv::Mat mask = ErodeSemanticMask(MaskOf(detection, depth_m.cols, depth_m.rows) / 255,
                                          config.erosion_kernel, config.erosion_keep_above);
@@ -51,7 +54,8 @@ std::optional<LiftedDetection> LiftDetection(const Detection& detection, const c
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (size_t i = 0; i < pixels.size(); ++i) {
     if (std::abs(depths[i] - median) > config.depth_band_m) continue;
-    const Eigen::Vector3d p = rotation * BackProject(k, pixels[i].x, pixels[i].y, depths[i]) + pose.position;
+    const Eigen::Vector3d p =
+        rotation * BackProject(k, pixels[i].x, pixels[i].y, depths[i]) + pose.position;
     lifted.points.push_back(p.cast<float>());
     sum += p;
     for (int a = 0; a < 3; ++a) coords[a].push_back(p[a]);

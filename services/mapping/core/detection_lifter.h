@@ -1,10 +1,9 @@
 #pragma once
 
-#include <optional>
-#include <vector>
-
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
 
 #include "services/mapping/core/depth_projection.h"
 #include "services/mapping/core/scene_types.h"
@@ -13,9 +12,9 @@
 namespace semnav::mapping {
 
 struct LiftConfig {
-  int erosion_kernel = 5;        // seed 004: 5x5 ones
+  int erosion_kernel = 5;            // seed 004: 5x5 ones
   double erosion_keep_above = 23.5;  // seed 004
-  int pixel_stride = 2;          // sampling of mask pixels for the 3D points
+  int pixel_stride = 2;              // sampling of mask pixels for the 3D points
   // Points farther than this from the median depth are other surfaces seen through the mask.
   double depth_band_m = 0.3;
 };
@@ -31,8 +30,9 @@ struct LiftedDetection {
 // only points within depth_band_m of it are kept (edges that jump to the background go). The
 // object centre is the mean of the kept points, its size their 10-90 % extent per map axis.
 // nullopt when no pixel survives.
-std::optional<LiftedDetection> LiftDetection(const Detection& detection, const cv::Mat& depth_m, const Intrinsics& k,
-                                             const CameraPose& pose, const DepthRange& range, const LiftConfig& config,
+std::optional<LiftedDetection> LiftDetection(const Detection& detection, const cv::Mat& depth_m,
+                                             const Intrinsics& k, const CameraPose& pose,
+                                             const DepthRange& range, const LiftConfig& config,
                                              int64_t stamp_ns, const std::string& robot_id);
 
 }  // namespace semnav::mapping

@@ -1,7 +1,7 @@
 // The hierarchical grid of a real building: the FR-079 corridor OctoMap (0.08 m, Uni Freiburg).
-#include <queue>
-
 #include <gtest/gtest.h>
+
+#include <queue>
 
 #include "services/mapping/core/grid_layers.h"
 
@@ -11,7 +11,8 @@ namespace {
 class Fr079GridTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const octomap::OcTree tree(std::string(SEMNAV_SHARED_DATA_DIR) + "/pointclouds-octomaps/octomap_share/geb079.bt");
+    const octomap::OcTree tree(std::string(SEMNAV_SHARED_DATA_DIR) +
+                               "/pointclouds-octomaps/octomap_share/geb079.bt");
     ASSERT_GT(tree.size(), 0u);
     const VoxelColumns columns = VoxelColumns::FromOctree(tree);
     heights_ = new ClimbingHeights(*EstimateHeights(columns));
@@ -40,14 +41,15 @@ TEST_F(Fr079GridTest, EstimatesFloorAndCeilingOfTheCorridor) {
 }
 
 TEST_F(Fr079GridTest, CorridorWallsAreStructure) {
-  // Along the corridor (x = -6 .. 28 m) most 0.5 m stations have a structure cell in each wall band;
-  // the rest are doors.
+  // Along the corridor (x = -6 .. 28 m) most 0.5 m stations have a structure cell in each wall
+  // band; the rest are doors.
   for (double band : {-1.6, 1.0}) {
     int stations = 0;
     int with_wall = 0;
     for (double x = -6.0; x <= 28.0; x += 0.5) {
       bool wall = false;
-      for (double y = band; y <= band + 0.6; y += 0.02) wall = wall || grid_->Value(grid_->CellOf(x, y)) == 100;
+      for (double y = band; y <= band + 0.6; y += 0.02)
+        wall = wall || grid_->Value(grid_->CellOf(x, y)) == 100;
       ++stations;
       with_wall += wall ? 1 : 0;
     }
@@ -90,7 +92,8 @@ TEST_F(Fr079GridTest, CorridorIsFreeAndConnectedEndToEnd) {
   EXPECT_TRUE(reached);
   // Sanity on the straight line itself: free at every 0.5 m station.
   int free_stations = 0;
-  for (double x = -6.0; x <= 28.0; x += 0.5) free_stations += grid_->Value(grid_->CellOf(x, 0.3)) == 0 ? 1 : 0;
+  for (double x = -6.0; x <= 28.0; x += 0.5)
+    free_stations += grid_->Value(grid_->CellOf(x, 0.3)) == 0 ? 1 : 0;
   EXPECT_GE(free_stations, 68);  // of 69
 }
 

@@ -47,16 +47,18 @@ absl::Status ValidateGeometry(const SensorFrame& frame) {
   }
   const DepthImage& d = frame.depth;
   if (d.encoding == DepthEncoding::kUnknown) {
-    return InvalidField("depth.encoding", "unknown encoding (expected 16UC1 millimetres or 32FC1 metres)");
+    return InvalidField("depth.encoding",
+                        "unknown encoding (expected 16UC1 millimetres or 32FC1 metres)");
   }
   if (d.width != k.width || d.height != k.height) {
     return InvalidField(d.width != k.width ? "depth.width" : "depth.height",
-                   absl::StrCat("depth is ", d.width, "x", d.height,
-                                               " but intrinsics are ", k.width, "x", k.height));
+                        absl::StrCat("depth is ", d.width, "x", d.height, " but intrinsics are ",
+                                     k.width, "x", k.height));
   }
   const size_t expected = static_cast<size_t>(d.width) * d.height * BytesPerPixel(d.encoding);
   if (d.data.size() != expected) {
-    return InvalidField("depth.data", absl::StrCat("has ", d.data.size(), " bytes, expected ", expected));
+    return InvalidField("depth.data",
+                        absl::StrCat("has ", d.data.size(), " bytes, expected ", expected));
   }
   if (absl::Status s = CheckPosition(frame.pose.position, "pose.position"); !s.ok()) return s;
   const Eigen::Quaterniond& q = frame.pose.orientation;
@@ -81,15 +83,18 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
         !s.ok()) {
       return s;
     }
-    if (!(det.score >= 0.0 && det.score <= 1.0)) return InvalidField(absl::StrCat(field, ".score"), "must be in [0, 1]");
+    if (!(det.score >= 0.0 && det.score <= 1.0))
+      return InvalidField(absl::StrCat(field, ".score"), "must be in [0, 1]");
     const PixelBox& b = det.box;
     const bool inside = b.x_min >= 0.0 && b.y_min >= 0.0 && b.x_max <= w && b.y_max <= h &&
                         b.x_min < b.x_max && b.y_min < b.y_max;
     if (!inside) {
-      return InvalidField(absl::StrCat(field, ".box"), absl::StrCat("must be a non-empty box inside the ", w, "x", h, " image"));
+      return InvalidField(absl::StrCat(field, ".box"),
+                          absl::StrCat("must be a non-empty box inside the ", w, "x", h, " image"));
     }
     if (!det.mask.empty() && det.mask.size() != static_cast<size_t>(w) * h) {
-      return InvalidField(absl::StrCat(field, ".mask"), absl::StrCat("must have ", w * h, " pixels"));
+      return InvalidField(absl::StrCat(field, ".mask"),
+                          absl::StrCat("must have ", w * h, " pixels"));
     }
     if (det.embedding.empty()) continue;
     const std::string embedding_field = absl::StrCat(field, ".embedding");
@@ -98,16 +103,16 @@ absl::Status ValidateDetections(const SensorFrame& frame, int embedding_dim) {
       return s;
     }
     for (size_t j = 0; j < det.embedding.size(); ++j) {
-      if (absl::Status s = CheckMagnitude(det.embedding[j],
-                                          absl::StrCat(embedding_field, "[", j, "]"),
-                                          kMaxEmbeddingValue);
+      if (absl::Status s = CheckMagnitude(
+              det.embedding[j], absl::StrCat(embedding_field, "[", j, "]"), kMaxEmbeddingValue);
           !s.ok()) {
         return s;
       }
     }
     if (dim != 0 && static_cast<int>(det.embedding.size()) != dim) {
-      return InvalidField(absl::StrCat(field, ".embedding"),
-                     absl::StrCat("length ", det.embedding.size(), " != map embedding length ", dim));
+      return InvalidField(
+          absl::StrCat(field, ".embedding"),
+          absl::StrCat("length ", det.embedding.size(), " != map embedding length ", dim));
     }
     dim = static_cast<int>(det.embedding.size());
   }

@@ -1,9 +1,9 @@
 #include "services/mapping/core/frame_validation.h"
 
-#include <limits>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <limits>
 
 #include "services/mapping/testing/synthetic_room.h"
 
@@ -24,7 +24,8 @@ SensorFrame GoodFrame() {
   return frame;
 }
 
-void ExpectInvalid(const SensorFrame& frame, absl::string_view field, const ValidationContext& context = {}) {
+void ExpectInvalid(const SensorFrame& frame, absl::string_view field,
+                   const ValidationContext& context = {}) {
   const absl::Status status = ValidateFrame(frame, context);
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << status;
   EXPECT_THAT(std::string(status.message()), HasSubstr(std::string(field)));

@@ -34,8 +34,8 @@ struct GridLayers {
   std::vector<uint8_t> occupancy;             // Bayesian p_t in percent, 255 unknown
   std::vector<uint8_t> obstacle_probability;  // 9x9 ones convolution of the obstacle map, percent
   std::vector<uint8_t> explored;              // 1 observed, 0 not
-  std::vector<uint8_t> inflated;              // 100 within robot radius of an obstacle, 0 free, 255 unknown
-  std::vector<uint8_t> semantic;              // label index (semantic_labels[index - 1]), 0 none
+  std::vector<uint8_t> inflated;  // 100 within robot radius of an obstacle, 0 free, 255 unknown
+  std::vector<uint8_t> semantic;  // label index (semantic_labels[index - 1]), 0 none
   std::vector<std::string> semantic_labels;
 };
 
@@ -45,6 +45,7 @@ GridWindow FullWindow(const HierarchicalGrid& grid);
 // Renders the geometric layers. Obstacle probability (seed 004): the binary obstacle map (any
 // cell 1-100; unobserved counts as no obstacle, as in the seed) convolved with a k x k ones kernel
 // and divided by k^2. The semantic layer is left empty (see SemanticMap::Render).
-GridLayers RenderLayers(const HierarchicalGrid& grid, const GridWindow& window, const GridLayersConfig& config);
+GridLayers RenderLayers(const HierarchicalGrid& grid, const GridWindow& window,
+                        const GridLayersConfig& config);
 
 }  // namespace semnav::mapping

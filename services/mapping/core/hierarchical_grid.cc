@@ -27,7 +27,8 @@ std::vector<int> HierarchicalGrid::CoveredCells(double c_m, double voxel_m) cons
   const int base = static_cast<int>(std::floor(c_m / config_.resolution_m));
   std::vector<int> cells;
   // Small epsilon: R_o / (2 R_g) is an integer in exact arithmetic for the usual resolutions.
-  for (int m = static_cast<int>(std::ceil(-half_span - 1e-9)); m <= static_cast<int>(std::floor(half_span + 1e-9)); ++m) {
+  for (int m = static_cast<int>(std::ceil(-half_span - 1e-9));
+       m <= static_cast<int>(std::floor(half_span + 1e-9)); ++m) {
     cells.push_back(base + m);
   }
   return cells;
@@ -64,7 +65,8 @@ void HierarchicalGrid::Update(const VoxelColumns& columns,
     Cell& cell = cells_[index];
     cell.structure = o.structure;
     if (o.structure) continue;
-    cell.log_odds = std::clamp(cell.log_odds + (o.obstacle ? hit : miss), static_cast<float>(config_.log_odds_min),
+    cell.log_odds = std::clamp(cell.log_odds + (o.obstacle ? hit : miss),
+                               static_cast<float>(config_.log_odds_min),
                                static_cast<float>(config_.log_odds_max));
     if (o.obstacle) cell.height = HeightValue(o.top_m);
   }
@@ -86,7 +88,8 @@ uint8_t HierarchicalGrid::Value(CellIndex index) const {
 std::vector<HierarchicalGrid::CellState> HierarchicalGrid::Cells() const {
   std::vector<CellState> out;
   out.reserve(cells_.size());
-  for (const auto& [index, cell] : cells_) out.push_back({index, cell.log_odds, cell.height, cell.structure});
+  for (const auto& [index, cell] : cells_)
+    out.push_back({index, cell.log_odds, cell.height, cell.structure});
   std::sort(out.begin(), out.end(), [](const CellState& a, const CellState& b) {
     return a.index.x != b.index.x ? a.index.x < b.index.x : a.index.y < b.index.y;
   });

@@ -41,10 +41,12 @@ class HierarchicalGrid {
   HierarchicalGrid(const HierarchicalGridConfig& config, const ClimbingHeights& heights)
       : config_(config), heights_(heights) {}
 
-  // One observation o_t: the `observed` voxel columns are classified by climbing, each column covers
-  // grid cells by eq. 1-2, a cell takes the highest obstacle voxel covering it (eq. 3-4), and its
-  // log-odds moves by eq. 6-7 (obstacle: logit(p_hit), free: logit(p_miss)). Structure cells are 100.
-  void Update(const VoxelColumns& columns, const absl::flat_hash_set<VoxelColumns::ColumnId>& observed);
+  // One observation o_t: the `observed` voxel columns are classified by climbing, each column
+  // covers grid cells by eq. 1-2, a cell takes the highest obstacle voxel covering it (eq. 3-4),
+  // and its log-odds moves by eq. 6-7 (obstacle: logit(p_hit), free: logit(p_miss)). Structure
+  // cells are 100.
+  void Update(const VoxelColumns& columns,
+              const absl::flat_hash_set<VoxelColumns::ColumnId>& observed);
 
   // Eq. 9: 100 structure; h_o when p_t >= p_th; 0 when observed and below; 255 never observed.
   uint8_t Value(CellIndex cell) const;

@@ -12,9 +12,10 @@ const ClimbingHeights kHeights{0.15, 2.05};
 void SetColumn(VoxelColumns& columns, int x, int y, double box_top_m) {
   for (int z = columns.CoordToKey(0.05); z <= columns.CoordToKey(2.45); ++z) {
     const bool box = columns.KeyToCoord(z) <= box_top_m;
-    columns.Set(octomap::OcTreeKey(static_cast<octomap::key_type>(x), static_cast<octomap::key_type>(y),
-                                   static_cast<octomap::key_type>(z)),
-                box ? VoxelState::kOccupied : VoxelState::kFree);
+    columns.Set(
+        octomap::OcTreeKey(static_cast<octomap::key_type>(x), static_cast<octomap::key_type>(y),
+                           static_cast<octomap::key_type>(z)),
+        box ? VoxelState::kOccupied : VoxelState::kFree);
   }
 }
 
@@ -67,7 +68,8 @@ TEST(HierarchicalGridTest, StructureColumnIsHundred) {
   VoxelColumns columns(0.1);
   SetColumn(columns, 40000, 40000, 3.0);
   grid.Update(columns, {VoxelColumns::IdOf(40000, 40000)});
-  EXPECT_EQ(grid.Value(grid.CellOf(columns.KeyToCoord(40000), columns.KeyToCoord(40000))), HierarchicalGrid::kStructure);
+  EXPECT_EQ(grid.Value(grid.CellOf(columns.KeyToCoord(40000), columns.KeyToCoord(40000))),
+            HierarchicalGrid::kStructure);
 }
 
 }  // namespace

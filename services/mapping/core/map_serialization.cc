@@ -3,10 +3,9 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
-
-#include <nlohmann/json.hpp>
 
 #include "absl/strings/str_cat.h"
 
@@ -20,12 +19,16 @@ void PutSection(std::string& out, const std::string& section) {
   out += section;
 }
 
-absl::StatusOr<std::string> TakeSection(const std::string& in, size_t& offset, absl::string_view name) {
-  if (in.size() - offset < 8) return absl::DataLossError(absl::StrCat("map payload: ", name, " section missing"));
+absl::StatusOr<std::string> TakeSection(const std::string& in, size_t& offset,
+                                        absl::string_view name) {
+  if (in.size() - offset < 8)
+    return absl::DataLossError(absl::StrCat("map payload: ", name, " section missing"));
   uint64_t size = 0;
-  for (int i = 0; i < 8; ++i) size |= static_cast<uint64_t>(static_cast<unsigned char>(in[offset + i])) << (8 * i);
+  for (int i = 0; i < 8; ++i)
+    size |= static_cast<uint64_t>(static_cast<unsigned char>(in[offset + i])) << (8 * i);
   offset += 8;
-  if (in.size() - offset < size) return absl::DataLossError(absl::StrCat("map payload: ", name, " section truncated"));
+  if (in.size() - offset < size)
+    return absl::DataLossError(absl::StrCat("map payload: ", name, " section truncated"));
   std::string section = in.substr(offset, size);
   offset += size;
   return section;
@@ -106,7 +109,8 @@ Int IntegerOf(const json& j, const char* name) {
   } else if (j.is_number_integer()) {
     const int64_t v = j.get<int64_t>();
     if (v >= static_cast<int64_t>(std::numeric_limits<Int>::min()) &&
-        (v < 0 || static_cast<uint64_t>(v) <= static_cast<uint64_t>(std::numeric_limits<Int>::max()))) {
+        (v < 0 ||
+         static_cast<uint64_t>(v) <= static_cast<uint64_t>(std::numeric_limits<Int>::max()))) {
       return static_cast<Int>(v);
     }
   }
@@ -127,11 +131,14 @@ std::vector<float> FloatsOf(const json& j, const char* name) {
 }
 
 json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
-Eigen::Vector3d Vec(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
+Eigen::Vector3d Vec(const json& j) {
+  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
+}
 
 }  // namespace
 
-std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObject>& objects, uint64_t next_object_id,
+std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObject>& objects,
+                         uint64_t next_object_id,
                          const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points,
                          const SavedGrid* grid) {
   std::ostringstream octree;
@@ -183,7 +190,8 @@ absl::StatusOr<MapContent> ParseMap(const std::string& payload) {
   std::istringstream octree_stream(*octree);
   std::unique_ptr<octomap::AbstractOcTree> tree(octomap::AbstractOcTree::read(octree_stream));
   auto* oc_tree = dynamic_cast<octomap::OcTree*>(tree.get());
-  if (oc_tree == nullptr) return absl::DataLossError("map payload: octree section is not an OcTree");
+  if (oc_tree == nullptr)
+    return absl::DataLossError("map payload: octree section is not an OcTree");
   tree.release();
   content.tree.reset(oc_tree);
   try {
@@ -205,9 +213,11 @@ absl::StatusOr<MapContent> ParseMap(const std::string& payload) {
     const json semantic_json = json::parse(*semantic);
     for (const auto& [label, flat] : semantic_json.items()) {
       const std::vector<float> values = FloatsOf(flat, "semantic points");
-      if (values.size() % 3 != 0) return absl::DataLossError("map payload: semantic points not in xyz triples");
+      if (values.size() % 3 != 0)
+        return absl::DataLossError("map payload: semantic points not in xyz triples");
       auto& points = content.semantic_points[label];
-      for (size_t i = 0; i + 2 < values.size(); i += 3) points.emplace_back(values[i], values[i + 1], values[i + 2]);
+      for (size_t i = 0; i + 2 < values.size(); i += 3)
+        points.emplace_back(values[i], values[i + 1], values[i + 2]);
     }
   } catch (const json::exception& e) {
     return absl::DataLossError(absl::StrCat("map payload: ", e.what()));

@@ -1,13 +1,13 @@
 #pragma once
 
+#include <octomap/OcTree.h>
+
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <octomap/OcTree.h>
 
 #include "absl/status/statusor.h"
 #include "services/mapping/core/scene_types.h"
@@ -49,7 +49,8 @@ struct MapContent {
 // (8 bytes), then per cell x, y (int32), log-odds (float32), height (uint8), structure (uint8),
 // all little-endian. Readers ignore sections they do not know, so older builds still load the
 // first three sections of a new file.
-std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObject>& objects, uint64_t next_object_id,
+std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObject>& objects,
+                         uint64_t next_object_id,
                          const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points,
                          const SavedGrid* grid = nullptr);
 

@@ -16,33 +16,40 @@ constexpr char kMagic[] = "SNMAP1\n";
 constexpr char kSuffix[] = ".snmap";
 
 absl::Status NoStoredMap(absl::string_view map_id) {
-  return FieldStatus(absl::StatusCode::kNotFound, "map_id", absl::StrCat("no stored map '", map_id, "'"),
-                     "NOT_FOUND");
+  return FieldStatus(absl::StatusCode::kNotFound, "map_id",
+                     absl::StrCat("no stored map '", map_id, "'"), "NOT_FOUND");
 }
 
 }  // namespace
 
 absl::Status MapStore::ValidateMapId(const std::string& map_id) {
-  const bool ok = !map_id.empty() && map_id.size() <= 64 && std::all_of(map_id.begin(), map_id.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-  });
+  const bool ok = !map_id.empty() && map_id.size() <= 64 &&
+                  std::all_of(map_id.begin(), map_id.end(), [](char c) {
+                    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+                  });
   if (ok) return absl::OkStatus();
-  return InvalidField("map_id", absl::StrCat("'", Preview(map_id),
-                                              "' must be 1-64 characters of [A-Za-z0-9_-]"));
+  return InvalidField(
+      "map_id", absl::StrCat("'", Preview(map_id), "' must be 1-64 characters of [A-Za-z0-9_-]"));
 }
 
 absl::StatusOr<MapStore> MapStore::Open(const std::string& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
-  if (error) return absl::InternalError(absl::StrCat("cannot create map directory ", directory, ": ", error.message()));
+  if (error)
+    return absl::InternalError(
+        absl::StrCat("cannot create map directory ", directory, ": ", error.message()));
   return MapStore(directory);
 }
 
-std::string MapStore::PathOf(const std::string& map_id) const { return absl::StrCat(directory_, "/", map_id, kSuffix); }
+std::string MapStore::PathOf(const std::string& map_id) const {
+  return absl::StrCat(directory_, "/", map_id, kSuffix);
+}
 
-absl::StatusOr<StoredMap> MapStore::Save(const std::string& map_id, const std::string& payload) const {
+absl::StatusOr<StoredMap> MapStore::Save(const std::string& map_id,
+                                         const std::string& payload) const {
   if (absl::Status s = ValidateMapId(map_id); !s.ok()) return s;
-  if (absl::Status s = storage::WriteFileAtomically(PathOf(map_id), storage::FrameWithChecksum(kMagic, payload));
+  if (absl::Status s =
+          storage::WriteFileAtomically(PathOf(map_id), storage::FrameWithChecksum(kMagic, payload));
       !s.ok()) {
     return s;
   }
@@ -67,8 +74,9 @@ absl::StatusOr<StoredMap> MapStore::Stat(const std::string& map_id) const {
   if (error) return NoStoredMap(map_id);
   const auto written = std::filesystem::last_write_time(path, error);
   const auto system_time = std::chrono::file_clock::to_sys(written);
-  return StoredMap{map_id, size,
-                   std::chrono::duration_cast<std::chrono::nanoseconds>(system_time.time_since_epoch()).count()};
+  return StoredMap{
+      map_id, size,
+      std::chrono::duration_cast<std::chrono::nanoseconds>(system_time.time_since_epoch()).count()};
 }
 
 absl::StatusOr<std::vector<StoredMap>> MapStore::List() const {
@@ -81,8 +89,10 @@ absl::StatusOr<std::vector<StoredMap>> MapStore::List() const {
     absl::StatusOr<StoredMap> info = Stat(id);
     if (info.ok()) maps.push_back(*info);
   }
-  if (error) return absl::InternalError(absl::StrCat("cannot list ", directory_, ": ", error.message()));
-  std::sort(maps.begin(), maps.end(), [](const StoredMap& a, const StoredMap& b) { return a.map_id < b.map_id; });
+  if (error)
+    return absl::InternalError(absl::StrCat("cannot list ", directory_, ": ", error.message()));
+  std::sort(maps.begin(), maps.end(),
+            [](const StoredMap& a, const StoredMap& b) { return a.map_id < b.map_id; });
   return maps;
 }
 

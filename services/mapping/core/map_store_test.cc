@@ -1,10 +1,10 @@
 #include "services/mapping/core/map_store.h"
 
-#include <filesystem>
-#include <fstream>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "services/mapping/core/map_serialization.h"
 #include "services/mapping/core/mapping_engine.h"
@@ -18,7 +18,8 @@ using ::testing::HasSubstr;
 class MapStoreTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = ::testing::TempDir() + "/map_store_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    directory_ = ::testing::TempDir() + "/map_store_" +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name();
     std::filesystem::remove_all(directory_);
   }
   std::string directory_;
@@ -36,7 +37,8 @@ TEST_F(MapStoreTest, SaveLoadListDelete) {
   EXPECT_EQ(maps[0].map_id, "attic");
   EXPECT_EQ(maps[1].size_bytes, 19u + 9u);  // header + payload
   for (const auto& entry : std::filesystem::directory_iterator(directory_)) {
-    EXPECT_EQ(entry.path().extension(), ".snmap") << "left behind: " << entry.path();  // no temporary
+    EXPECT_EQ(entry.path().extension(), ".snmap")
+        << "left behind: " << entry.path();  // no temporary
   }
   ASSERT_TRUE(store.Delete("lab").ok());
   EXPECT_EQ(store.Load("lab").status().code(), absl::StatusCode::kNotFound);
@@ -62,7 +64,8 @@ TEST_F(MapStoreTest, CorruptFileIsDataLoss) {
 
 TEST_F(MapStoreTest, RejectsBadMapIds) {
   const MapStore store = *MapStore::Open(directory_);
-  for (const std::string& id : std::vector<std::string>{"", "../etc", "a b", std::string(65, 'a')}) {
+  for (const std::string& id :
+       std::vector<std::string>{"", "../etc", "a b", std::string(65, 'a')}) {
     const absl::Status status = store.Save(id, "x").status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << id;
     EXPECT_THAT(std::string(status.message()), HasSubstr("map_id"));
@@ -159,8 +162,8 @@ TEST_F(MapStoreTest, SavedMapReloadsEveryGridLayerCellForCell) {
   EXPECT_EQ(reloaded.origin_x, original.origin_x);
   EXPECT_EQ(reloaded.origin_y, original.origin_y);
   const std::pair<int, int> none{0, 0};
-  EXPECT_EQ(Differences(original.occupancy, reloaded.occupancy), none) << "occupancy of "
-      << original.occupancy.size() << " cells";
+  EXPECT_EQ(Differences(original.occupancy, reloaded.occupancy), none)
+      << "occupancy of " << original.occupancy.size() << " cells";
   EXPECT_EQ(Differences(original.hierarchical, reloaded.hierarchical), none);
   EXPECT_EQ(Differences(original.obstacle_probability, reloaded.obstacle_probability), none);
   EXPECT_EQ(Differences(original.explored, reloaded.explored), none);

@@ -25,12 +25,12 @@ struct MappingConfig {
   // > 0: after this many accepted frames, replace h_f/h_c by EstimateHeights on the map (the
   // seed reads the ceiling at start-up) and rebuild the grid; 0: keep the configured heights.
   int estimate_heights_after_frames = 0;
-  GridLayersConfig layers;             // 9x9 obstacle kernel, robot radius
+  GridLayersConfig layers;                     // 9x9 obstacle kernel, robot radius
   double blur_min_laplacian_variance = 100.0;  // seed 002 blur filter (0 disables)
   LiftConfig lift;
   SemanticMapConfig semantic;
   SceneGraphConfig scene;
-  size_t grid_change_log_size = 256;   // grid changes remembered for resumable watches
+  size_t grid_change_log_size = 256;  // grid changes remembered for resumable watches
   std::map<std::string, std::vector<std::string>> synonyms;  // query label -> other names
 };
 

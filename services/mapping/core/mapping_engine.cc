@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <deque>
+#include <opencv2/imgcodecs.hpp>
 #include <set>
 #include <sstream>
-
-#include <opencv2/imgcodecs.hpp>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/field_error.h"
@@ -68,7 +67,8 @@ struct MappingEngine::State {
 namespace {
 
 std::string Lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
 
@@ -93,7 +93,8 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   absl::MutexLock lock(&mu_);
   State& s = *state_;
   ValidationContext context;
-  if (const auto it = s.last_stamp.find(frame.robot_id); it != s.last_stamp.end()) context.last_stamp_ns = it->second;
+  if (const auto it = s.last_stamp.find(frame.robot_id); it != s.last_stamp.end())
+    context.last_stamp_ns = it->second;
   context.embedding_dim = s.embedding_dim;
   if (absl::Status status = ValidateFrame(frame, context); !status.ok()) return status;
   FrameResult result;
@@ -112,7 +113,8 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   const Eigen::Vector3f origin = frame.pose.position.cast<float>();
   for (const Eigen::Vector3f& p : frame.lidar_points) {
     const float range = p.norm();
-    if (range >= config_.range.min_m && range <= config_.range.max_m) points.push_back(rotation * p + origin);
+    if (range >= config_.range.min_m && range <= config_.range.max_m)
+      points.push_back(rotation * p + origin);
   }
   const std::vector<TouchedVoxel> touched = integrator_.Integrate(*s.tree, points, origin);
   result.voxels_updated = static_cast<uint32_t>(touched.size());
@@ -122,12 +124,14 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   std::vector<ObjectObservation> observations;
   if (!result.blurred) {
     for (const Detection& detection : frame.detections) {
-      std::optional<LiftedDetection> lifted = LiftDetection(detection, depth, frame.intrinsics, frame.pose,
-                                                            config_.range, config_.lift, frame.stamp_ns, frame.robot_id);
+      std::optional<LiftedDetection> lifted =
+          LiftDetection(detection, depth, frame.intrinsics, frame.pose, config_.range, config_.lift,
+                        frame.stamp_ns, frame.robot_id);
       if (!lifted) continue;
       s.semantic.Add(detection.label, lifted->points);
       observations.push_back(std::move(lifted->observation));
-      if (!detection.embedding.empty()) s.embedding_dim = static_cast<int>(detection.embedding.size());
+      if (!detection.embedding.empty())
+        s.embedding_dim = static_cast<int>(detection.embedding.size());
     }
   }
   result.detections_used = static_cast<uint32_t>(observations.size());
@@ -154,7 +158,8 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
     // One cell of margin: eq. 1-2 coverage and the 9x9 / inflation kernels spill into neighbours.
     const int margin = config_.layers.obstacle_kernel / 2 + 1 +
                        static_cast<int>(config_.layers.robot_radius_m / config_.grid.resolution_m);
-    changed = Union(changed, GridWindow{{cell.x - margin, cell.y - margin}, 2 * margin + 1, 2 * margin + 1});
+    changed = Union(changed,
+                    GridWindow{{cell.x - margin, cell.y - margin}, 2 * margin + 1, 2 * margin + 1});
   }
   RecordGridChange(changed);
   result.revision = revision_;
@@ -178,7 +183,8 @@ uint64_t MappingEngine::revision() const {
 GridLayers MappingEngine::Grid(const std::optional<GridWindow>& window, uint64_t* revision,
                                bool with_semantic) const {
   absl::MutexLock lock(&mu_);
-  GridLayers layers = RenderLayers(state_->grid, window.value_or(FullWindow(state_->grid)), config_.layers);
+  GridLayers layers =
+      RenderLayers(state_->grid, window.value_or(FullWindow(state_->grid)), config_.layers);
   if (with_semantic) state_->semantic.Render(layers);
   if (revision != nullptr) *revision = revision_;
   return layers;
@@ -201,7 +207,8 @@ GridWindow MappingEngine::WindowOf(double min_x, double min_y, double max_x, dou
   return {lo, hi.x - lo.x + 1, hi.y - lo.y + 1};
 }
 
-std::string MappingEngine::OccupancyBinary(const Eigen::Vector3d& min, const Eigen::Vector3d& max) const {
+std::string MappingEngine::OccupancyBinary(const Eigen::Vector3d& min,
+                                           const Eigen::Vector3d& max) const {
   absl::MutexLock lock(&mu_);
   const octomap::OcTree& tree = *state_->tree;
   octomap::OcTree box(tree.getResolution());
@@ -221,7 +228,8 @@ std::string MappingEngine::OccupancyBinary(const Eigen::Vector3d& min, const Eig
             bool inside = true;
             for (int a = 0; a < 3; ++a) inside = inside && k[a] >= lo[a] && k[a] <= hi[a];
             if (!inside) continue;
-            box.setNodeValue(octomap::OcTreeKey(static_cast<octomap::key_type>(k[0]), static_cast<octomap::key_type>(k[1]),
+            box.setNodeValue(octomap::OcTreeKey(static_cast<octomap::key_type>(k[0]),
+                                                static_cast<octomap::key_type>(k[1]),
                                                 static_cast<octomap::key_type>(k[2])),
                              it->getLogOdds(), /*lazy_eval=*/true);
           }
@@ -278,7 +286,8 @@ absl::Status ValidateQuery(const ObjectQuery& query) {
   if (absl::Status s = CheckRange(query.min_cosine, "min_cosine", -1.0, 1.0); !s.ok()) return s;
   if (query.near.has_value()) {
     const Eigen::Vector3d& near = *query.near;
-    if (absl::Status s = CheckPoint(near.x(), near.y(), near.z(), "near", kMaxCoordinateM); !s.ok()) return s;
+    if (absl::Status s = CheckPoint(near.x(), near.y(), near.z(), "near", kMaxCoordinateM); !s.ok())
+      return s;
   }
   // A radius beyond the world's diameter finds nothing more.
   return CheckRange(query.near_radius_m, "near_radius", 0.0, 2 * kMaxCoordinateM);
@@ -299,7 +308,8 @@ absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQ
     const std::string l = Lower(label);
     wanted.insert(l);
     for (const auto& [key, names] : config_.synonyms) {
-      const bool listed = std::any_of(names.begin(), names.end(), [&](const std::string& n) { return Lower(n) == l; });
+      const bool listed = std::any_of(names.begin(), names.end(),
+                                      [&](const std::string& n) { return Lower(n) == l; });
       if (Lower(key) != l && !listed) continue;
       wanted.insert(Lower(key));
       for (const std::string& n : names) wanted.insert(Lower(n));
@@ -308,8 +318,9 @@ absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQ
   absl::MutexLock lock(&mu_);
   if (!query.embedding.empty() && state_->embedding_dim != 0 &&
       static_cast<int>(query.embedding.size()) != state_->embedding_dim) {
-    return InvalidField("embedding", absl::StrCat("length ", query.embedding.size(),
-                                                  " != map embedding length ", state_->embedding_dim));
+    return InvalidField("embedding",
+                        absl::StrCat("length ", query.embedding.size(), " != map embedding length ",
+                                     state_->embedding_dim));
   }
   std::vector<ObjectHit> hits;
   for (const SceneObject& o : state_->scene.objects()) {
@@ -336,7 +347,8 @@ absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQ
 
 uint64_t MappingEngine::AwaitChange(uint64_t revision, absl::Duration timeout) const {
   absl::MutexLock lock(&mu_);
-  auto changed = [this, revision]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return revision_ > revision; };
+  auto changed = [this, revision]()
+                     ABSL_SHARED_LOCKS_REQUIRED(mu_) { return revision_ > revision; };
   mu_.AwaitWithTimeout(absl::Condition(&changed), timeout);
   return revision_;
 }
@@ -356,10 +368,11 @@ absl::Status MappingEngine::Restore(const std::string& payload) {
   absl::StatusOr<MapContent> content = ParseMap(payload);
   if (!content.ok()) return content.status();
   if (content->tree->getResolution() != config_.octomap_resolution_m) {
-    return FieldStatus(absl::StatusCode::kFailedPrecondition, "map_id",
-                       absl::StrCat("stored octree resolution ", content->tree->getResolution(),
-                                    " m differs from the configured ", config_.octomap_resolution_m, " m"),
-                       "FAILED_PRECONDITION");
+    return FieldStatus(
+        absl::StatusCode::kFailedPrecondition, "map_id",
+        absl::StrCat("stored octree resolution ", content->tree->getResolution(),
+                     " m differs from the configured ", config_.octomap_resolution_m, " m"),
+        "FAILED_PRECONDITION");
   }
   absl::MutexLock lock(&mu_);
   state_->Adopt(std::move(*content), config_);

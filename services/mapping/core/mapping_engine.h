@@ -1,12 +1,12 @@
 #pragma once
 
+#include <octomap/OcTree.h>
+
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <octomap/OcTree.h>
 
 #include "absl/container/flat_hash_map.h"
 #include "absl/status/status.h"
@@ -66,7 +66,8 @@ class MappingEngine {
   // Layers of `window` (nullopt = every explored cell), with the semantic layer unless
   // `with_semantic` is false (its radius filter is most of the cost; planning never reads it);
   // sets *revision.
-  GridLayers Grid(const std::optional<GridWindow>& window, uint64_t* revision, bool with_semantic = true) const;
+  GridLayers Grid(const std::optional<GridWindow>& window, uint64_t* revision,
+                  bool with_semantic = true) const;
   // Bounding window of grid cells changed after `since`; nullopt when too old (send a snapshot),
   // an empty window (width 0) when nothing changed.
   std::optional<GridWindow> GridChangesSince(uint64_t since) const;

@@ -1,8 +1,8 @@
 #include "services/mapping/core/mapping_engine.h"
 
-#include <algorithm>
-
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <opencv2/imgcodecs.hpp>
 
 #include "services/mapping/testing/synthetic_room.h"
@@ -65,7 +65,8 @@ TEST(MappingEngineTest, MovingBoxVanishesStaticBoxStays) {
     testing::SyntheticRoom with_box = room;
     with_box.boxes.push_back({{2.0, y - 0.2, 0.0}, {2.4, y + 0.2, 1.0}});
     for (int repeat = 0; repeat < 2; ++repeat) {
-      ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(with_box, Viewpoint(), stamp += kFrameNs)).ok());
+      ASSERT_TRUE(
+          engine.AddFrame(testing::RenderFrame(with_box, Viewpoint(), stamp += kFrameNs)).ok());
     }
     const uint8_t value = CellValue(engine, 2.1, y);
     seen_moving_box = seen_moving_box || (value >= 1 && value <= 99);
@@ -74,7 +75,8 @@ TEST(MappingEngineTest, MovingBoxVanishesStaticBoxStays) {
   for (int i = 0; i < 12; ++i) {
     ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, Viewpoint(), stamp += kFrameNs)).ok());
   }
-  for (double y : ys) EXPECT_EQ(CellValue(engine, 2.2, y), 0) << "moving box left a trace at y = " << y;
+  for (double y : ys)
+    EXPECT_EQ(CellValue(engine, 2.2, y), 0) << "moving box left a trace at y = " << y;
   // Static box: its top face z = 0.8 lies in voxel [0.80, 0.85), centre 0.825 m ->
   // h_o = 100 (0.825 - 0.1) / (2.3 - 0.1) = 33.
   EXPECT_EQ(CellValue(engine, 3.3, 1.3), 33);
@@ -130,7 +132,8 @@ TEST(MappingEngineTest, DetectionBecomesObjectAndSemanticCells) {
   EXPECT_NEAR(object.position.y(), 1.3, 0.1);
   EXPECT_GT(object.position.z(), 0.3);
   EXPECT_LT(object.position.z(), 0.85);
-  EXPECT_EQ(scene.summary, "Scene has 1 objects in 1 regions. Region 0 (area_with_table): 1 table.");
+  EXPECT_EQ(scene.summary,
+            "Scene has 1 objects in 1 regions. Region 0 (area_with_table): 1 table.");
 
   const GridLayers layers = engine.Grid(engine.WindowOf(2.8, 0.9, 3.7, 1.7), nullptr);
   ASSERT_EQ(layers.semantic_labels, std::vector<std::string>{"table"});
@@ -138,13 +141,15 @@ TEST(MappingEngineTest, DetectionBecomesObjectAndSemanticCells) {
   for (uint8_t v : layers.semantic) labelled += v == 1 ? 1 : 0;
   EXPECT_GT(labelled, 0);
   // Without the semantic layer (planning's fetch) the other layers are the same.
-  const GridLayers plain = engine.Grid(engine.WindowOf(2.8, 0.9, 3.7, 1.7), nullptr, /*with_semantic=*/false);
+  const GridLayers plain =
+      engine.Grid(engine.WindowOf(2.8, 0.9, 3.7, 1.7), nullptr, /*with_semantic=*/false);
   EXPECT_TRUE(plain.semantic_labels.empty());
   EXPECT_EQ(std::count(plain.semantic.begin(), plain.semantic.end(), uint8_t{1}), 0);
   EXPECT_EQ(plain.occupancy, layers.occupancy);
   EXPECT_EQ(plain.hierarchical, layers.hierarchical);
 
-  const absl::StatusOr<std::vector<ObjectHit>> hits = engine.QueryObjects({{"TABLE"}, {}, 0.0, std::nullopt, 0.0, 0});
+  const absl::StatusOr<std::vector<ObjectHit>> hits =
+      engine.QueryObjects({{"TABLE"}, {}, 0.0, std::nullopt, 0.0, 0});
   ASSERT_TRUE(hits.ok());
   EXPECT_EQ(hits->size(), 1u);
   EXPECT_EQ(engine.QueryObjects({{}, {}, 0.0, std::nullopt, 0.0, 0}).status().code(),
@@ -155,7 +160,8 @@ TEST(MappingEngineTest, BlurredColourImageSkipsDetectionsButKeepsDepth) {
   MappingEngine engine{MappingConfig{}};
   SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);
   std::vector<uchar> png;
-  cv::imencode(".png", cv::Mat(480, 640, CV_8U, cv::Scalar(128)), png);  // flat: Laplacian variance 0
+  cv::imencode(".png", cv::Mat(480, 640, CV_8U, cv::Scalar(128)),
+               png);  // flat: Laplacian variance 0
   frame.rgb_encoded.assign(png.begin(), png.end());
   Detection det;
   det.label = "table";
@@ -174,7 +180,8 @@ TEST(MappingEngineTest, LidarPointsAreIntegrated) {
   MappingEngine engine{MappingConfig{}};
   SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);
   std::fill(frame.depth.data.begin(), frame.depth.data.end(), '\0');  // no depth at all
-  frame.lidar_points = {Eigen::Vector3f(0.0f, 0.0f, 2.0f), Eigen::Vector3f(0.0f, 0.0f, 20.0f)};  // 2nd beyond 8 m
+  frame.lidar_points = {Eigen::Vector3f(0.0f, 0.0f, 2.0f),
+                        Eigen::Vector3f(0.0f, 0.0f, 20.0f)};  // 2nd beyond 8 m
   const absl::StatusOr<FrameResult> result = engine.AddFrame(frame);
   ASSERT_TRUE(result.ok());
   // 2 m along the optical axis at 0.05 m: the hit voxel plus the ~40 voxels the ray passes.
@@ -220,16 +227,19 @@ TEST(MappingEngineTest, EstimatesFootAndCeilingFromTheMapAtStartUp) {
   config.estimate_heights_after_frames = 2;
   MappingEngine engine{config};
   const testing::SyntheticRoom room = testing::StandardRoom();
-  const CameraPose level = testing::LookAt({0.5, 2.0, 1.2}, {6.0, 2.0, 1.2});  // sees floor and ceiling
+  const CameraPose level =
+      testing::LookAt({0.5, 2.0, 1.2}, {6.0, 2.0, 1.2});  // sees floor and ceiling
   ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, level, kFrameNs)).ok());
-  EXPECT_EQ(engine.Grid(GridWindow{{0, 0}, 1, 1}, nullptr).heights.ceiling_m, 2.3);  // configured until then
+  EXPECT_EQ(engine.Grid(GridWindow{{0, 0}, 1, 1}, nullptr).heights.ceiling_m,
+            2.3);  // configured until then
   ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, level, 2 * kFrameNs)).ok());
   const ClimbingHeights heights = engine.Grid(GridWindow{{0, 0}, 1, 1}, nullptr).heights;
   // Floor z = 0 -> voxel [0, 0.05), h_f one voxel up: 0.075; ceiling z = 2.5 -> voxel
   // [2.5, 2.55), h_c one voxel down: 2.475.
   EXPECT_NEAR(heights.foot_m, 0.075, 1e-9);
   EXPECT_NEAR(heights.ceiling_m, 2.475, 1e-9);
-  EXPECT_EQ(CellValue(engine, 6.02, 2.0), HierarchicalGrid::kStructure);  // behind the far wall's face
+  EXPECT_EQ(CellValue(engine, 6.02, 2.0),
+            HierarchicalGrid::kStructure);               // behind the far wall's face
   EXPECT_FALSE(engine.GridChangesSince(1).has_value());  // watchers must resync
 }
 

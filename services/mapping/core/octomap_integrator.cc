@@ -33,14 +33,18 @@ struct KeyBox {
   }
   size_t Cells() const { return static_cast<size_t>(size[0]) * size[1] * size[2]; }
   size_t Index(const std::array<int, 3>& k) const {
-    return (static_cast<size_t>(k[2] - lo[2]) * size[1] + (k[1] - lo[1])) * size[0] + (k[0] - lo[0]);
+    return (static_cast<size_t>(k[2] - lo[2]) * size[1] + (k[1] - lo[1])) * size[0] +
+           (k[0] - lo[0]);
   }
-  size_t Index(const octomap::OcTreeKey& k) const { return Index(std::array<int, 3>{k[0], k[1], k[2]}); }
+  size_t Index(const octomap::OcTreeKey& k) const {
+    return Index(std::array<int, 3>{k[0], k[1], k[2]});
+  }
   octomap::OcTreeKey KeyAt(size_t index) const {
     const auto x = static_cast<int>(index % size[0]);
     const auto y = static_cast<int>((index / size[0]) % size[1]);
     const auto z = static_cast<int>(index / (static_cast<size_t>(size[0]) * size[1]));
-    return octomap::OcTreeKey(static_cast<octomap::key_type>(lo[0] + x), static_cast<octomap::key_type>(lo[1] + y),
+    return octomap::OcTreeKey(static_cast<octomap::key_type>(lo[0] + x),
+                              static_cast<octomap::key_type>(lo[1] + y),
                               static_cast<octomap::key_type>(lo[2] + z));
   }
 };
@@ -73,7 +77,8 @@ class VoxelBits {
 void CarveRay(const Eigen::Vector3d& origin_units, const octomap::OcTreeKey& origin_key,
               const octomap::OcTreeKey& endpoint, const KeyBox& box, VoxelBits& passed) {
   std::array<int, 3> voxel{endpoint[0], endpoint[1], endpoint[2]};
-  const Eigen::Vector3d dir = origin_units - Eigen::Vector3d(voxel[0] + 0.5, voxel[1] + 0.5, voxel[2] + 0.5);
+  const Eigen::Vector3d dir =
+      origin_units - Eigen::Vector3d(voxel[0] + 0.5, voxel[1] + 0.5, voxel[2] + 0.5);
   std::array<int, 3> step{};
   std::array<double, 3> t_max{};
   std::array<double, 3> t_delta{};
@@ -110,7 +115,8 @@ std::vector<TouchedVoxel> OctomapIntegrator::Integrate(octomap::OcTree& tree,
                                                        const std::vector<Eigen::Vector3f>& points,
                                                        const Eigen::Vector3f& origin) const {
   octomap::OcTreeKey origin_key;
-  if (points.empty() || !tree.coordToKeyChecked(octomap::point3d(origin.x(), origin.y(), origin.z()), origin_key)) {
+  if (points.empty() ||
+      !tree.coordToKeyChecked(octomap::point3d(origin.x(), origin.y(), origin.z()), origin_key)) {
     return {};
   }
   std::vector<octomap::OcTreeKey> keys{origin_key};
@@ -131,8 +137,9 @@ std::vector<TouchedVoxel> OctomapIntegrator::Integrate(octomap::OcTree& tree,
 
   // Sensor position in key units (voxel i spans [i, i + 1)).
   const double resolution = tree.getResolution();
-  const Eigen::Vector3d origin_units = origin.cast<double>() / resolution +
-                                       Eigen::Vector3d::Constant(static_cast<double>(1u << (tree.getTreeDepth() - 1)));
+  const Eigen::Vector3d origin_units =
+      origin.cast<double>() / resolution +
+      Eigen::Vector3d::Constant(static_cast<double>(1u << (tree.getTreeDepth() - 1)));
   std::vector<VoxelBits> passed(static_cast<size_t>(threads_), VoxelBits(box.Cells()));
   std::vector<std::thread> workers;
   const size_t per_thread = (endpoints.size() + threads_ - 1) / threads_;
@@ -158,7 +165,6 @@ std::vector<TouchedVoxel> OctomapIntegrator::Integrate(octomap::OcTree& tree,
     }
   }
   return ApplyVoxelUpdates(tree, std::move(updates));
-
 }
 
 }  // namespace semnav::mapping

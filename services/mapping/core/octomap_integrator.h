@@ -1,9 +1,9 @@
 #pragma once
 
-#include <vector>
+#include <octomap/OcTree.h>
 
 #include <Eigen/Core>
-#include <octomap/OcTree.h>
+#include <vector>
 
 namespace semnav::mapping {
 
@@ -23,7 +23,8 @@ class OctomapIntegrator {
   explicit OctomapIntegrator(int threads) : threads_(threads < 1 ? 1 : threads) {}
 
   // `points` are map-frame endpoints already limited to the sensor range; `origin` is the sensor.
-  std::vector<TouchedVoxel> Integrate(octomap::OcTree& tree, const std::vector<Eigen::Vector3f>& points,
+  std::vector<TouchedVoxel> Integrate(octomap::OcTree& tree,
+                                      const std::vector<Eigen::Vector3f>& points,
                                       const Eigen::Vector3f& origin) const;
 
  private:

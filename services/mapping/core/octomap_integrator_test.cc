@@ -19,8 +19,8 @@ octomap::Pointcloud ToPointcloud(const std::vector<Eigen::Vector3f>& points) {
 TEST(OctomapIntegratorTest, SingleRayMarksEndpointOccupiedAndPathFree) {
   octomap::OcTree tree(0.1);
   const OctomapIntegrator integrator(2);
-  const std::vector<TouchedVoxel> touched =
-      integrator.Integrate(tree, {Eigen::Vector3f(1.05f, 0.05f, 0.05f)}, Eigen::Vector3f(0.05f, 0.05f, 0.05f));
+  const std::vector<TouchedVoxel> touched = integrator.Integrate(
+      tree, {Eigen::Vector3f(1.05f, 0.05f, 0.05f)}, Eigen::Vector3f(0.05f, 0.05f, 0.05f));
   // Voxels x = 0.05 .. 0.95 are passed (10), the voxel at 1.05 is hit.
   ASSERT_EQ(touched.size(), 11u);
   EXPECT_TRUE(tree.isNodeOccupied(tree.search(1.05, 0.05, 0.05)));
@@ -43,7 +43,8 @@ TEST(OctomapIntegratorTest, AgreesWithPlainInsertPointCloudOnRoomSequence) {
     const cv::Mat depth = DecodeDepth(frame.depth);
     const Eigen::Vector3f origin = pose.position.cast<float>();
     const std::vector<Eigen::Vector3f> all = ProjectDepth(depth, frame.intrinsics, pose, range, 1);
-    reference.insertPointCloud(ToPointcloud(all), octomap::point3d(origin.x(), origin.y(), origin.z()), range.max_m);
+    reference.insertPointCloud(ToPointcloud(all),
+                               octomap::point3d(origin.x(), origin.y(), origin.z()), range.max_m);
     integrator.Integrate(fast, all, origin);
   }
   const OctreeAgreement agreement = CompareOctrees(reference, fast);

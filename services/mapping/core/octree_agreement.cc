@@ -16,7 +16,8 @@ OctreeAgreement CompareOctrees(const octomap::OcTree& reference, const octomap::
     (ref_occupied ? occupied_total : free_total) += volume;
     if (same) (ref_occupied ? occupied_same : free_same) += volume;
   }
-  return {occupied_total > 0.0 ? occupied_same / occupied_total : 1.0, free_total > 0.0 ? free_same / free_total : 1.0};
+  return {occupied_total > 0.0 ? occupied_same / occupied_total : 1.0,
+          free_total > 0.0 ? free_same / free_total : 1.0};
 }
 
 }  // namespace semnav::mapping

@@ -46,8 +46,8 @@ class BatchUpdater {
   BatchUpdater(octomap::OcTree& tree, std::vector<TouchedVoxel>& out)
       : tree_(tree), out_(out), depth_(tree.getTreeDepth()) {}
 
-  void Descend(octomap::OcTreeNode* node, unsigned depth, bool node_is_new, const CodedUpdate* begin,
-               const CodedUpdate* end) {
+  void Descend(octomap::OcTreeNode* node, unsigned depth, bool node_is_new,
+               const CodedUpdate* begin, const CodedUpdate* end) {
     if (depth == depth_) {
       const bool hit = begin->update->hit;
       tree_.updateNodeLogOdds(node, hit ? tree_.getProbHitLog() : tree_.getProbMissLog());
@@ -82,16 +82,19 @@ class BatchUpdater {
 
 }  // namespace
 
-std::vector<TouchedVoxel> ApplyVoxelUpdates(octomap::OcTree& tree, std::vector<VoxelUpdate> updates) {
+std::vector<TouchedVoxel> ApplyVoxelUpdates(octomap::OcTree& tree,
+                                            std::vector<VoxelUpdate> updates) {
   std::vector<TouchedVoxel> touched;
   if (updates.empty()) return touched;
-  if (tree.getRoot() == nullptr) tree.updateNode(updates.front().key, 0.0f, true);  // creates the root
+  if (tree.getRoot() == nullptr)
+    tree.updateNode(updates.front().key, 0.0f, true);  // creates the root
   std::vector<CodedUpdate> coded;
   coded.reserve(updates.size());
   for (const VoxelUpdate& u : updates) coded.push_back({MortonCode(u.key), &u});
   RadixSort(coded);
   touched.reserve(updates.size());
-  BatchUpdater(tree, touched).Descend(tree.getRoot(), 0, false, coded.data(), coded.data() + coded.size());
+  BatchUpdater(tree, touched)
+      .Descend(tree.getRoot(), 0, false, coded.data(), coded.data() + coded.size());
   return touched;
 }
 

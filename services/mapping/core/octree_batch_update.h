@@ -1,8 +1,8 @@
 #pragma once
 
-#include <vector>
-
 #include <octomap/OcTree.h>
+
+#include <vector>
 
 #include "services/mapping/core/octomap_integrator.h"
 
@@ -19,6 +19,7 @@ struct VoxelUpdate {
 // once per key as with updateNode; pruned leaves are expanded like updateNode does, and every inner
 // node on a touched path is refreshed to its max-child occupancy (non-lazy OctoMap semantics).
 // Returns each voxel with its occupancy after the update. Keys must be distinct.
-std::vector<TouchedVoxel> ApplyVoxelUpdates(octomap::OcTree& tree, std::vector<VoxelUpdate> updates);
+std::vector<TouchedVoxel> ApplyVoxelUpdates(octomap::OcTree& tree,
+                                            std::vector<VoxelUpdate> updates);
 
 }  // namespace semnav::mapping

@@ -1,10 +1,10 @@
 #include "services/mapping/core/octree_batch_update.h"
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <random>
 #include <set>
-
-#include <gtest/gtest.h>
 
 namespace semnav::mapping {
 namespace {

@@ -49,7 +49,8 @@ SceneObject* SceneGraph::Match(const ObjectObservation& observation) {
   double best_distance = config_.label_max_distance_m;
   for (SceneObject& o : objects_) {
     if (o.label != observation.label) continue;
-    if (!observation.embedding.empty() && o.embedding.size() == observation.embedding.size()) continue;
+    if (!observation.embedding.empty() && o.embedding.size() == observation.embedding.size())
+      continue;
     const double d = (o.position - observation.position).norm();
     if (d <= best_distance) {
       best_distance = d;
@@ -76,12 +77,16 @@ void SceneGraph::Merge(SceneObject& object, const ObjectObservation& observation
     }
   }
   // An instance loaded from a map file has no votes yet: its label stands for all its detections.
-  if (object.label_scores.empty()) object.label_scores[object.label] = object.score * object.detection_count;
+  if (object.label_scores.empty())
+    object.label_scores[object.label] = object.score * object.detection_count;
   object.label_scores[observation.label] += observation.score;
-  const auto best = std::max_element(object.label_scores.begin(), object.label_scores.end(),
-                                     [](const auto& a, const auto& b) { return a.second < b.second; });
-  if (best->second > object.label_scores.at(object.label)) object.label = best->first;  // ties keep it
-  object.score = (object.score * object.detection_count + observation.score) / (object.detection_count + 1);
+  const auto best =
+      std::max_element(object.label_scores.begin(), object.label_scores.end(),
+                       [](const auto& a, const auto& b) { return a.second < b.second; });
+  if (best->second > object.label_scores.at(object.label))
+    object.label = best->first;  // ties keep it
+  object.score =
+      (object.score * object.detection_count + observation.score) / (object.detection_count + 1);
   ++object.detection_count;
   object.last_seen_ns = std::max(object.last_seen_ns, observation.stamp_ns);
   object.revision = revision_ + 1;
@@ -111,7 +116,9 @@ void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, i
     changed = true;
   }
   const auto prune_ns = static_cast<int64_t>(config_.prune_single_after_s * 1e9);
-  const auto stale = [&](const SceneObject& o) { return o.detection_count == 1 && now_ns - o.last_seen_ns > prune_ns; };
+  const auto stale = [&](const SceneObject& o) {
+    return o.detection_count == 1 && now_ns - o.last_seen_ns > prune_ns;
+  };
   for (const SceneObject& o : objects_) {
     if (stale(o)) removals_.push_back({revision_ + 1, o.id});
   }

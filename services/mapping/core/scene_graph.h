@@ -10,12 +10,12 @@
 namespace semnav::mapping {
 
 struct SceneGraphConfig {
-  double ema_new_weight = 0.3;             // seed 002: new = 0.3 * detection + 0.7 * existing
-  double embedding_min_cosine = 0.8;       // embedding match needs at least this cosine
-  double embedding_max_distance_m = 3.0;   // ... and the instance within this distance
-  double label_max_distance_m = 1.0;       // fallback match: same label within this distance
-  double prune_single_after_s = 10.0;      // drop instances seen once and not again for this long
-  size_t removal_log_size = 4096;          // removals remembered for resumable watches
+  double ema_new_weight = 0.3;            // seed 002: new = 0.3 * detection + 0.7 * existing
+  double embedding_min_cosine = 0.8;      // embedding match needs at least this cosine
+  double embedding_max_distance_m = 3.0;  // ... and the instance within this distance
+  double label_max_distance_m = 1.0;      // fallback match: same label within this distance
+  double prune_single_after_s = 10.0;     // drop instances seen once and not again for this long
+  size_t removal_log_size = 4096;         // removals remembered for resumable watches
   RelationConfig relations;
 };
 
@@ -60,7 +60,7 @@ class SceneGraph {
   std::vector<Relation> relations_;
   std::vector<Region> regions_;
   std::vector<std::pair<uint64_t, uint64_t>> removals_;  // (revision, id), oldest first
-  uint64_t forgotten_before_ = 0;                        // removals at or below this revision are gone
+  uint64_t forgotten_before_ = 0;  // removals at or below this revision are gone
   uint64_t revision_ = 0;
   uint64_t next_id_ = 1;
 };

@@ -1,8 +1,8 @@
 #include "services/mapping/core/scene_graph.h"
 
-#include <algorithm>
-
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "services/mapping/core/scene_relations.h"
 
@@ -44,7 +44,8 @@ TEST(SceneGraphTest, LabelFallbackStopsAtMaxDistance) {
 
 TEST(SceneGraphTest, EmbeddingMatchWinsOverNearestSameLabel) {
   SceneGraph graph{SceneGraphConfig{}};
-  graph.Integrate({Obs("chair", {0, 0, 0}, 0.8, {1, 0, 0}), Obs("chair", {0.6, 0, 0}, 0.8, {0, 1, 0})}, 0);
+  graph.Integrate(
+      {Obs("chair", {0, 0, 0}, 0.8, {1, 0, 0}), Obs("chair", {0.6, 0, 0}, 0.8, {0, 1, 0})}, 0);
   ASSERT_EQ(graph.objects().size(), 2u);
   // Right on top of chair 1, but looks like chair 2.
   graph.Integrate({Obs("chair", {0, 0, 0}, 0.8, {0, 2, 0})}, 0);
@@ -70,7 +71,7 @@ TEST(SceneGraphTest, LabelIsTheBestScoredOfTheMergedDetections) {
   graph.Integrate({Obs("couch", {0, 0, 0}, 0.6, {1, 0, 0})}, 0);
   ASSERT_EQ(graph.objects().size(), 1u);
   EXPECT_EQ(graph.objects()[0].label, "couch");  // 1.2 vs 0.7
-  EXPECT_GT(graph.revision(), before);            // watchers see the new name
+  EXPECT_GT(graph.revision(), before);           // watchers see the new name
   // A loaded instance (no votes) keeps its label against one weaker contrary detection:
   // its own votes are score x count = 0.8 x 3.
   SceneObject loaded;
@@ -118,8 +119,9 @@ TEST(SceneRelationsTest, OnLeftRightAndNear) {
   objects[2] = Object(3, "chair", Eigen::Vector3d(0, 1.0, 0.4), Eigen::Vector3d(0.5, 0.5, 0.8));
   const std::vector<Relation> relations = ComputeRelations(objects, RelationConfig{});
   auto has = [&](uint64_t s, RelationKind k, uint64_t o) {
-    return std::any_of(relations.begin(), relations.end(),
-                       [&](const Relation& r) { return r.subject_id == s && r.kind == k && r.object_id == o; });
+    return std::any_of(relations.begin(), relations.end(), [&](const Relation& r) {
+      return r.subject_id == s && r.kind == k && r.object_id == o;
+    });
   };
   EXPECT_TRUE(has(2, RelationKind::kOn, 1));
   EXPECT_TRUE(has(1, RelationKind::kRightOf, 3));  // table is 1 m to the right (-y) of the chair

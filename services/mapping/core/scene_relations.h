@@ -14,7 +14,8 @@ namespace semnav::mapping {
 //               top(B) (on) or higher (above);
 //   left_of / right_of / in_front_of / behind  by the dominant horizontal axis of A - B when it
 //               exceeds direction_margin_m (+y left, +x in front).
-std::vector<Relation> ComputeRelations(const std::vector<SceneObject>& objects, const RelationConfig& config);
+std::vector<Relation> ComputeRelations(const std::vector<SceneObject>& objects,
+                                       const RelationConfig& config);
 
 // Regions: connected components of "centres within region_radius_m" (seed 002: DBSCAN-like,
 // 3 m). Sets each object's region_id. Region ids follow the lowest object id of each region.

@@ -1,11 +1,10 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace semnav::mapping {
 
@@ -56,7 +55,7 @@ struct Region {
 // Thresholds of relations and regions (seed 002 names the relations and the 3 m clustering;
 // the numeric relation thresholds are ours, documented in docs/algorithms/mapping.md).
 struct RelationConfig {
-  double near_m = 1.5;             // centre distance for near and for any directional relation
+  double near_m = 1.5;              // centre distance for near and for any directional relation
   double direction_margin_m = 0.2;  // a directional relation needs this much offset on its axis
   double on_tolerance_m = 0.15;     // |bottom(A) - top(B)| for A on B
   double region_radius_m = 3.0;     // DBSCAN-like linkage distance of regions

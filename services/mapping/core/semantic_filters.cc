@@ -21,8 +21,8 @@ cv::Mat ErodeSemanticMask(const cv::Mat& mask, int kernel, double keep_above) {
   cv::Mat probability;
   mask.convertTo(probability, CV_32F);
   cv::Mat sum;
-  cv::filter2D(probability, sum, CV_32F, cv::Mat::ones(kernel, kernel, CV_32F), cv::Point(-1, -1), 0.0,
-               cv::BORDER_CONSTANT);
+  cv::filter2D(probability, sum, CV_32F, cv::Mat::ones(kernel, kernel, CV_32F), cv::Point(-1, -1),
+               0.0, cv::BORDER_CONSTANT);
   cv::Mat kept = sum > keep_above;  // 255 where kept
   return kept / 255;
 }
@@ -40,8 +40,8 @@ std::vector<bool> RadiusFilter(const std::vector<Eigen::Vector3f>& same_label_po
 
 cv::Mat OpenSemanticLayer(const cv::Mat& layer, int kernel) {
   cv::Mat opened;
-  cv::morphologyEx(layer, opened, cv::MORPH_OPEN, cv::Mat::ones(kernel, kernel, CV_8U), cv::Point(-1, -1), 1,
-                   cv::BORDER_CONSTANT, cv::Scalar(0));
+  cv::morphologyEx(layer, opened, cv::MORPH_OPEN, cv::Mat::ones(kernel, kernel, CV_8U),
+                   cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
   return opened;
 }
 

@@ -1,9 +1,8 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace semnav::mapping {
 

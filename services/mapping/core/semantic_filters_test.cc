@@ -35,9 +35,10 @@ TEST(SemanticFiltersTest, ErosionWeighsSemanticProbability) {
 
 TEST(SemanticFiltersTest, RadiusFilterNeedsMoreThanFiveNeighbours) {
   std::vector<Eigen::Vector3f> points;
-  for (int i = 0; i < 6; ++i) points.emplace_back(0.01f * i, 0.0f, 0.0f);        // 6 within 0.1 m: kept
-  for (int i = 0; i < 5; ++i) points.emplace_back(5.0f + 0.01f * i, 0.0f, 0.0f);  // 5 within 0.1 m: dropped
-  points.emplace_back(0.0f, 0.11f, 0.0f);  // 0.11 m from the cluster: alone
+  for (int i = 0; i < 6; ++i) points.emplace_back(0.01f * i, 0.0f, 0.0f);  // 6 within 0.1 m: kept
+  for (int i = 0; i < 5; ++i)
+    points.emplace_back(5.0f + 0.01f * i, 0.0f, 0.0f);  // 5 within 0.1 m: dropped
+  points.emplace_back(0.0f, 0.11f, 0.0f);               // 0.11 m from the cluster: alone
   const std::vector<bool> keep = RadiusFilter(points, 0.1f, 5);
   for (int i = 0; i < 6; ++i) EXPECT_TRUE(keep[i]) << i;
   for (int i = 6; i < 12; ++i) EXPECT_FALSE(keep[i]) << i;

@@ -1,7 +1,6 @@
 #include "services/mapping/core/semantic_map.h"
 
 #include <cmath>
-
 #include <opencv2/core.hpp>
 
 #include "services/mapping/core/semantic_filters.h"
@@ -48,14 +47,18 @@ void SemanticMap::Render(GridLayers& layers) const {
     cv::Mat cells = cv::Mat::zeros(layers.height, layers.width, CV_8U);
     for (size_t i = 0; i < points.size(); ++i) {
       if (!keep[i]) continue;
-      const int col = static_cast<int>(std::floor((points[i].x() - layers.origin_x) / layers.resolution));
-      const int row = static_cast<int>(std::floor((points[i].y() - layers.origin_y) / layers.resolution));
-      if (col >= 0 && row >= 0 && col < layers.width && row < layers.height) cells.at<uint8_t>(row, col) = 1;
+      const int col =
+          static_cast<int>(std::floor((points[i].x() - layers.origin_x) / layers.resolution));
+      const int row =
+          static_cast<int>(std::floor((points[i].y() - layers.origin_y) / layers.resolution));
+      if (col >= 0 && row >= 0 && col < layers.width && row < layers.height)
+        cells.at<uint8_t>(row, col) = 1;
     }
     const cv::Mat opened = OpenSemanticLayer(cells, config_.opening_kernel);
     for (int row = 0; row < layers.height; ++row) {
       for (int col = 0; col < layers.width; ++col) {
-        if (opened.at<uint8_t>(row, col) != 0) layers.semantic[static_cast<size_t>(row) * layers.width + col] = index;
+        if (opened.at<uint8_t>(row, col) != 0)
+          layers.semantic[static_cast<size_t>(row) * layers.width + col] = index;
       }
     }
   }

@@ -1,19 +1,21 @@
 #include "services/mapping/core/semantic_map.h"
 
-#include <random>
-
 #include <gtest/gtest.h>
+
+#include <random>
 
 namespace semnav::mapping {
 namespace {
 
 // Points of a vertical patch (x in [x0, x0 + w), z in [0.7, 0.7 + h)) at y, every `step` metres,
 // with Gaussian depth noise of `sigma` along y.
-std::vector<Eigen::Vector3f> Patch(float x0, float y, float w, float h, float step, float sigma, std::mt19937& rng) {
+std::vector<Eigen::Vector3f> Patch(float x0, float y, float w, float h, float step, float sigma,
+                                   std::mt19937& rng) {
   std::normal_distribution<float> noise(0.0f, sigma);
   std::vector<Eigen::Vector3f> points;
   for (float x = x0; x < x0 + w; x += step) {
-    for (float z = 0.7f; z < 0.7f + h; z += step) points.emplace_back(x, y + (sigma > 0 ? noise(rng) : 0.0f), z);
+    for (float z = 0.7f; z < 0.7f + h; z += step)
+      points.emplace_back(x, y + (sigma > 0 ? noise(rng) : 0.0f), z);
   }
   return points;
 }
@@ -32,8 +34,10 @@ TEST(SemanticMapTest, KeepsOnePointPerCube) {
   SemanticMap map(SemanticMapConfig{});
   // 2 cm cubes: the first two share cube (25, 50, 35); the third is the next cube in x, the
   // fourth the next in z.
-  const std::vector<Eigen::Vector3f> points = {
-      {0.501f, 1.001f, 0.701f}, {0.511f, 1.011f, 0.711f}, {0.521f, 1.001f, 0.701f}, {0.501f, 1.001f, 0.721f}};
+  const std::vector<Eigen::Vector3f> points = {{0.501f, 1.001f, 0.701f},
+                                               {0.511f, 1.011f, 0.711f},
+                                               {0.521f, 1.001f, 0.701f},
+                                               {0.501f, 1.001f, 0.721f}};
   map.Add("cup", points);
   map.Add("cup", points);  // the same surface again adds nothing
   EXPECT_EQ(map.points().at("cup").size(), 3u);
@@ -41,7 +45,8 @@ TEST(SemanticMapTest, KeepsOnePointPerCube) {
 
 // Points of a horizontal patch (a table top at height z) every `step` metres, with Gaussian depth
 // noise of `sigma` along z.
-std::vector<Eigen::Vector3f> Top(float x0, float y0, float w, float z, float step, float sigma, std::mt19937& rng) {
+std::vector<Eigen::Vector3f> Top(float x0, float y0, float w, float z, float step, float sigma,
+                                 std::mt19937& rng) {
   std::normal_distribution<float> noise(0.0f, sigma);
   std::vector<Eigen::Vector3f> points;
   for (float x = x0; x < x0 + w; x += step) {

@@ -1,10 +1,9 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 namespace semnav::mapping {
 

@@ -39,7 +39,8 @@ void VoxelColumns::Set(const octomap::OcTreeKey& key, VoxelState state) {
     return;
   }
   if (z < column.z_lo) {
-    column.states.insert(column.states.begin(), static_cast<size_t>(column.z_lo - z), VoxelState::kUnknown);
+    column.states.insert(column.states.begin(), static_cast<size_t>(column.z_lo - z),
+                         VoxelState::kUnknown);
     column.z_lo = z;
   }
   const auto index = static_cast<size_t>(z - column.z_lo);
@@ -58,8 +59,8 @@ VoxelState VoxelColumns::StateAt(const Column& column, int z_key) {
   return column.states[static_cast<size_t>(index)];
 }
 
-
-absl::flat_hash_set<VoxelColumns::ColumnId> VoxelColumns::Apply(const std::vector<TouchedVoxel>& voxels) {
+absl::flat_hash_set<VoxelColumns::ColumnId> VoxelColumns::Apply(
+    const std::vector<TouchedVoxel>& voxels) {
   absl::flat_hash_set<ColumnId> touched;
   for (const TouchedVoxel& v : voxels) {
     Set(v.key, v.occupied ? VoxelState::kOccupied : VoxelState::kFree);

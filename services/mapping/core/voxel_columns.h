@@ -35,7 +35,9 @@ class VoxelColumns {
   const Column* Find(ColumnId column) const;
   static VoxelState StateAt(const Column& column, int z_key);
 
-  static ColumnId IdOf(int x_key, int y_key) { return static_cast<ColumnId>(x_key) << 16 | static_cast<ColumnId>(y_key); }
+  static ColumnId IdOf(int x_key, int y_key) {
+    return static_cast<ColumnId>(x_key) << 16 | static_cast<ColumnId>(y_key);
+  }
   static int XKey(ColumnId id) { return static_cast<int>(id >> 16); }
   static int YKey(ColumnId id) { return static_cast<int>(id & 0xffff); }
 

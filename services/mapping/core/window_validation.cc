@@ -11,19 +11,23 @@ namespace {
 absl::Status CheckCoordinate(double value, absl::string_view field, const WindowLimits& limits) {
   if (!std::isfinite(value)) return InvalidField(field, "must be finite");
   if (std::abs(value) > limits.max_abs_coordinate_m) {
-    return InvalidField(field, absl::StrCat("must be within +-", limits.max_abs_coordinate_m, " m"));
+    return InvalidField(field,
+                        absl::StrCat("must be within +-", limits.max_abs_coordinate_m, " m"));
   }
   return absl::OkStatus();
 }
 
 }  // namespace
 
-absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max_y, double resolution_m,
-                            const WindowLimits& limits) {
+absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max_y,
+                            double resolution_m, const WindowLimits& limits) {
   const struct {
     double value;
     const char* field;
-  } corners[] = {{min_x, "window.min.x"}, {min_y, "window.min.y"}, {max_x, "window.max.x"}, {max_y, "window.max.y"}};
+  } corners[] = {{min_x, "window.min.x"},
+                 {min_y, "window.min.y"},
+                 {max_x, "window.max.x"},
+                 {max_y, "window.max.y"}};
   for (const auto& corner : corners) {
     if (absl::Status s = CheckCoordinate(corner.value, corner.field, limits); !s.ok()) return s;
   }
@@ -33,8 +37,8 @@ absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max
   const double cells = (std::floor(max_x / resolution_m) - std::floor(min_x / resolution_m) + 1) *
                        (std::floor(max_y / resolution_m) - std::floor(min_y / resolution_m) + 1);
   if (cells > static_cast<double>(limits.max_cells)) {
-    return InvalidField("window", absl::StrCat("covers more than ", limits.max_cells, " cells of ", resolution_m,
-                                          " m; ask for a smaller window"));
+    return InvalidField("window", absl::StrCat("covers more than ", limits.max_cells, " cells of ",
+                                               resolution_m, " m; ask for a smaller window"));
   }
   return absl::OkStatus();
 }
@@ -54,7 +58,8 @@ absl::Status ValidateOccupancyBox(const double (&min)[3], const double (&max)[3]
     voxels *= (max[a] - min[a]) / resolution_m;
   }
   if (voxels > max_voxels) {
-    return InvalidField("max", absl::StrCat("box holds ", voxels, " voxels, more than ", max_voxels));
+    return InvalidField("max",
+                        absl::StrCat("box holds ", voxels, " voxels, more than ", max_voxels));
   }
   return absl::OkStatus();
 }

@@ -16,8 +16,8 @@ struct WindowLimits {
 
 // Checks a window [min, max] in metres before any cell is allocated. INVALID_ARGUMENT names
 // the field ("window.min.x" ... "window", for the cell budget) and never echoes the value.
-absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max_y, double resolution_m,
-                            const WindowLimits& limits);
+absl::Status ValidateWindow(double min_x, double min_y, double max_x, double max_y,
+                            double resolution_m, const WindowLimits& limits);
 
 // Checks an occupancy box [min, max] (fields "min.x" ... "max.z") before the octree is read:
 // corners finite within limits.max_abs_coordinate_m, max > min on every axis, and at most

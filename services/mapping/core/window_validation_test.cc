@@ -1,10 +1,10 @@
 #include "services/mapping/core/window_validation.h"
 
-#include <cmath>
-#include <limits>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
 
 namespace semnav::mapping {
 namespace {
@@ -15,7 +15,8 @@ using ::testing::StartsWith;
 
 constexpr double kResolution = 0.05;
 
-std::string Rejected(double min_x, double min_y, double max_x, double max_y, const WindowLimits& limits = {}) {
+std::string Rejected(double min_x, double min_y, double max_x, double max_y,
+                     const WindowLimits& limits = {}) {
   const absl::Status status = ValidateWindow(min_x, min_y, max_x, max_y, kResolution, limits);
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << status;
   return std::string(status.message());

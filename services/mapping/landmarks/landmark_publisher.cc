@@ -33,22 +33,25 @@ absl::Status ValidateLandmarkPublisherConfig(const LandmarkPublisherConfig& conf
   return absl::OkStatus();
 }
 
-absl::StatusOr<std::unique_ptr<LandmarkPublisher>> LandmarkPublisher::Start(const MappingEngine& engine,
-                                                                            const SceneLandmarkConfig& landmarks,
-                                                                            const LandmarkPublisherConfig& config) {
+absl::StatusOr<std::unique_ptr<LandmarkPublisher>> LandmarkPublisher::Start(
+    const MappingEngine& engine, const SceneLandmarkConfig& landmarks,
+    const LandmarkPublisherConfig& config) {
   if (absl::Status s = ValidateSceneLandmarkConfig(landmarks); !s.ok()) return s;
   if (absl::Status s = ValidateLandmarkPublisherConfig(config); !s.ok()) return s;
   absl::StatusOr<std::shared_ptr<grpc::Channel>> channel = MakeChannel(config.relocalization);
   if (!channel.ok()) return absl::FailedPreconditionError(channel.status().message());
-  std::unique_ptr<LandmarkPublisher> publisher(new LandmarkPublisher(engine, landmarks, config, *std::move(channel)));
+  std::unique_ptr<LandmarkPublisher> publisher(
+      new LandmarkPublisher(engine, landmarks, config, *std::move(channel)));
   publisher->thread_ = std::thread([raw = publisher.get()] { raw->Run(); });
   LogInfo("landmark_publisher_started",
           {{"relocalization", config.relocalization.address}, {"live_map_id", config.live_map_id}});
   return publisher;
 }
 
-LandmarkPublisher::LandmarkPublisher(const MappingEngine& engine, const SceneLandmarkConfig& landmarks,
-                                     const LandmarkPublisherConfig& config, std::shared_ptr<grpc::Channel> channel)
+LandmarkPublisher::LandmarkPublisher(const MappingEngine& engine,
+                                     const SceneLandmarkConfig& landmarks,
+                                     const LandmarkPublisherConfig& config,
+                                     std::shared_ptr<grpc::Channel> channel)
     : engine_(engine),
       landmarks_(landmarks),
       config_(config),
@@ -64,7 +67,8 @@ void LandmarkPublisher::Stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void LandmarkPublisher::PublishSnapshot(const std::string& map_id, std::vector<relocalization::Landmark> landmarks) {
+void LandmarkPublisher::PublishSnapshot(const std::string& map_id,
+                                        std::vector<relocalization::Landmark> landmarks) {
   absl::MutexLock lock(&mu_);
   snapshots_.push_back({map_id, std::move(landmarks)});
 }
@@ -78,7 +82,8 @@ void LandmarkPublisher::Run() {
   const absl::Duration interval = absl::Seconds(config_.interval_s);
   absl::MutexLock lock(&mu_);
   while (!stopping_) {
-    auto wake = [this]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return stopping_ || !snapshots_.empty(); };
+    auto wake = [this]()
+                    ABSL_SHARED_LOCKS_REQUIRED(mu_) { return stopping_ || !snapshots_.empty(); };
     mu_.AwaitWithTimeout(absl::Condition(&wake), interval);
     if (stopping_) break;
     if (!snapshots_.empty()) {
@@ -117,7 +122,8 @@ void LandmarkPublisher::NoteResult(const grpc::Status& status, absl::string_view
                                               {"what", std::string(what)},
                                               {"message", status.error_message()}});
   } else {
-    LogWarning("landmark_push_rejected", {{"what", std::string(what)}, {"message", status.error_message()}});
+    LogWarning("landmark_push_rejected",
+               {{"what", std::string(what)}, {"message", status.error_message()}});
   }
 }
 
@@ -164,7 +170,8 @@ void LandmarkPublisher::DeleteLiveMap() {
   grpc::ClientContext context;
   SetDeadline(context, config_.deadline_ms);
   const grpc::Status status = stub_->DeleteLandmarkMap(&context, request, &response);
-  if (!status.ok() && status.error_code() != grpc::StatusCode::NOT_FOUND) NoteResult(status, config_.live_map_id);
+  if (!status.ok() && status.error_code() != grpc::StatusCode::NOT_FOUND)
+    NoteResult(status, config_.live_map_id);
 }
 
 void LandmarkPublisher::PushSnapshot(const Snapshot& snapshot) {
@@ -180,10 +187,12 @@ void LandmarkPublisher::PushSnapshot(const Snapshot& snapshot) {
       return;
     }
   }
-  for (size_t first = 0; first < snapshot.landmarks.size(); first += relocalization::kMaxLandmarksPerRequest) {
+  for (size_t first = 0; first < snapshot.landmarks.size();
+       first += relocalization::kMaxLandmarksPerRequest) {
     rv1::UpsertLandmarksRequest request;
     request.set_map_id(snapshot.map_id);
-    const size_t end = std::min(snapshot.landmarks.size(), first + relocalization::kMaxLandmarksPerRequest);
+    const size_t end =
+        std::min(snapshot.landmarks.size(), first + relocalization::kMaxLandmarksPerRequest);
     for (size_t i = first; i < end; ++i) {
       relocalization::Landmark l = snapshot.landmarks[i];
       l.id = 0;  // a fresh map: inserted (or fused with a duplicate of the same object)
@@ -197,7 +206,8 @@ void LandmarkPublisher::PushSnapshot(const Snapshot& snapshot) {
     if (!status.ok()) return;
   }
   LogInfo("landmark_map_published",
-          {{"map_id", snapshot.map_id}, {"landmarks", static_cast<int64_t>(snapshot.landmarks.size())}});
+          {{"map_id", snapshot.map_id},
+           {"landmarks", static_cast<int64_t>(snapshot.landmarks.size())}});
 }
 
 }  // namespace semnav::mapping

@@ -4,6 +4,8 @@
 // wait for relocalization, and an absent relocalization service is logged, not fatal.
 #pragma once
 
+#include <grpcpp/channel.h>
+
 #include <cstdint>
 #include <deque>
 #include <map>
@@ -11,8 +13,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <grpcpp/channel.h>
 
 #include "absl/base/thread_annotations.h"
 #include "absl/status/statusor.h"
@@ -26,10 +26,10 @@
 namespace semnav::mapping {
 
 struct LandmarkPublisherConfig {
-  ClientOptions relocalization;       // address empty = no relocalization service (nothing pushed)
-  std::string live_map_id = "live";   // landmark map of the live scene graph
-  double interval_s = 2.0;            // debounce: at most one live push per interval
-  int deadline_ms = 2000;             // per relocalization call
+  ClientOptions relocalization;      // address empty = no relocalization service (nothing pushed)
+  std::string live_map_id = "live";  // landmark map of the live scene graph
+  double interval_s = 2.0;           // debounce: at most one live push per interval
+  int deadline_ms = 2000;            // per relocalization call
 };
 
 // INVALID_ARGUMENT naming live_map_id / interval_s / deadline_ms.
@@ -39,9 +39,9 @@ class LandmarkPublisher {
  public:
   // Starts the background thread; FAILED_PRECONDITION when the channel cannot be made (bad TLS
   // files). `engine` must outlive the publisher.
-  static absl::StatusOr<std::unique_ptr<LandmarkPublisher>> Start(const MappingEngine& engine,
-                                                                  const SceneLandmarkConfig& landmarks,
-                                                                  const LandmarkPublisherConfig& config);
+  static absl::StatusOr<std::unique_ptr<LandmarkPublisher>> Start(
+      const MappingEngine& engine, const SceneLandmarkConfig& landmarks,
+      const LandmarkPublisherConfig& config);
   ~LandmarkPublisher();
 
   // Queues a whole landmark map to replace the relocalization service's map `map_id` (SaveMap,

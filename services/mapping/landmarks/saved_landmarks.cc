@@ -23,15 +23,17 @@ absl::Status SaveLandmarks(const std::string& directory, const std::string& map_
   return relocalization::WriteLandmarkMapFile(SavedLandmarksPath(directory, map_id), map);
 }
 
-absl::StatusOr<relocalization::LandmarkMap> LoadLandmarks(const std::string& directory, const std::string& map_id) {
+absl::StatusOr<relocalization::LandmarkMap> LoadLandmarks(const std::string& directory,
+                                                          const std::string& map_id) {
   absl::StatusOr<relocalization::LandmarkMap> map =
       relocalization::ReadLandmarkMapFile(SavedLandmarksPath(directory, map_id));
   if (absl::IsNotFound(map.status())) {
-    return absl::NotFoundError(absl::StrCat("map_id: stored map '", map_id, "' has no landmark map"));
+    return absl::NotFoundError(
+        absl::StrCat("map_id: stored map '", map_id, "' has no landmark map"));
   }
   if (!map.ok()) {
-    return absl::Status(map.status().code(),
-                        absl::StrCat("map_id: landmark map of '", map_id, "': ", map.status().message()));
+    return absl::Status(map.status().code(), absl::StrCat("map_id: landmark map of '", map_id,
+                                                          "': ", map.status().message()));
   }
   return map;
 }

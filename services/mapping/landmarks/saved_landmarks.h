@@ -20,7 +20,8 @@ absl::Status SaveLandmarks(const std::string& directory, const std::string& map_
                            const std::vector<SceneLandmark>& landmarks);
 
 // NOT_FOUND when the map was saved without landmarks; DATA_LOSS when the file is corrupt.
-absl::StatusOr<relocalization::LandmarkMap> LoadLandmarks(const std::string& directory, const std::string& map_id);
+absl::StatusOr<relocalization::LandmarkMap> LoadLandmarks(const std::string& directory,
+                                                          const std::string& map_id);
 
 // Removes the file; OK when there was none.
 absl::Status DeleteLandmarks(const std::string& directory, const std::string& map_id);

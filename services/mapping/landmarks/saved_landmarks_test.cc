@@ -1,9 +1,9 @@
 #include "services/mapping/landmarks/saved_landmarks.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 namespace semnav::mapping {
 namespace {

@@ -20,7 +20,8 @@ void FillLabelBlock(const SceneObject& object, const std::vector<std::string>& l
   for (const auto& [label, score] : object.label_scores) {
     if (std::isfinite(score) && score > 0.0) total += score;
   }
-  if (total <= 0.0) {  // no score history (a restored or hand-made instance): its label counts whole
+  if (total <=
+      0.0) {  // no score history (a restored or hand-made instance): its label counts whole
     for (size_t i = 0; i < labels.size(); ++i) out[i] = labels[i] == object.label ? 1.0f : 0.0f;
     return;
   }
@@ -31,7 +32,8 @@ void FillLabelBlock(const SceneObject& object, const std::vector<std::string>& l
   }
 }
 
-void FillEmbeddingBlock(const std::vector<float>& embedding, size_t dim, double weight, float* out) {
+void FillEmbeddingBlock(const std::vector<float>& embedding, size_t dim, double weight,
+                        float* out) {
   std::fill(out, out + dim, 0.0f);
   if (embedding.size() != dim) return;
   double norm2 = 0.0;
@@ -47,8 +49,10 @@ void FillEmbeddingBlock(const std::vector<float>& embedding, size_t dim, double 
 }  // namespace
 
 absl::Status ValidateSceneLandmarkConfig(const SceneLandmarkConfig& config) {
-  if (config.min_detections < 1 || config.min_detections > static_cast<int>(relocalization::kMaxObservations)) {
-    return InvalidField("min_detections", absl::StrCat("must be in [1, ", relocalization::kMaxObservations, "]"));
+  if (config.min_detections < 1 ||
+      config.min_detections > static_cast<int>(relocalization::kMaxObservations)) {
+    return InvalidField("min_detections",
+                        absl::StrCat("must be in [1, ", relocalization::kMaxObservations, "]"));
   }
   std::set<std::string, std::less<>> seen;
   for (size_t i = 0; i < config.labels.size(); ++i) {
@@ -59,14 +63,18 @@ absl::Status ValidateSceneLandmarkConfig(const SceneLandmarkConfig& config) {
       return InvalidField(field, absl::StrCat("'", Preview(config.labels[i]), "' is listed twice"));
     }
   }
-  if (config.embedding_dim < 0) return InvalidField("embedding_dim", "must be >= 0 (0 = no embedding block)");
+  if (config.embedding_dim < 0)
+    return InvalidField("embedding_dim", "must be >= 0 (0 = no embedding block)");
   const size_t dim = config.labels.size() + static_cast<size_t>(config.embedding_dim);
-  if (dim == 0) return InvalidField("embedding_dim", "labels and embedding_dim are both empty: no descriptor");
+  if (dim == 0)
+    return InvalidField("embedding_dim", "labels and embedding_dim are both empty: no descriptor");
   if (dim > relocalization::kMaxDescriptorDim) {
-    return InvalidField("embedding_dim", absl::StrCat("labels + embedding_dim = ", dim, " exceeds the descriptor limit ",
+    return InvalidField("embedding_dim", absl::StrCat("labels + embedding_dim = ", dim,
+                                                      " exceeds the descriptor limit ",
                                                       relocalization::kMaxDescriptorDim));
   }
-  if (!std::isfinite(config.embedding_weight) || config.embedding_weight <= 0.0 || config.embedding_weight > 10.0) {
+  if (!std::isfinite(config.embedding_weight) || config.embedding_weight <= 0.0 ||
+      config.embedding_weight > 10.0) {
     return InvalidField("embedding_weight", "must be in (0, 10]");
   }
   return absl::OkStatus();
@@ -92,8 +100,10 @@ std::vector<SceneLandmark> LandmarksFromScene(const std::vector<SceneObject>& ob
         std::min<int64_t>(object.detection_count, relocalization::kMaxObservations));
     l.descriptor.assign(dim, 0.0f);
     FillLabelBlock(object, config.labels, l.descriptor.data());
-    FillEmbeddingBlock(object.embedding, dim - labels, config.embedding_weight, l.descriptor.data() + labels);
-    if (std::none_of(l.descriptor.begin(), l.descriptor.end(), [](float v) { return v != 0.0f; })) continue;
+    FillEmbeddingBlock(object.embedding, dim - labels, config.embedding_weight,
+                       l.descriptor.data() + labels);
+    if (std::none_of(l.descriptor.begin(), l.descriptor.end(), [](float v) { return v != 0.0f; }))
+      continue;
     if (!relocalization::ValidateLandmark(l, dim, "landmark").ok()) continue;
     out.push_back(std::move(item));
   }

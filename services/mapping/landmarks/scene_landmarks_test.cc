@@ -1,10 +1,10 @@
 #include "services/mapping/landmarks/scene_landmarks.h"
 
-#include <cmath>
-#include <limits>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
 
 #include "services/common/status/field_error.h"
 
@@ -23,7 +23,7 @@ SceneObject Chair() {
   o.size = Eigen::Vector3d(0.3, 0.4, 1.2);  // diagonal sqrt(0.09 + 0.16 + 1.44) = 1.3
   o.detection_count = 4;
   o.label_scores = {{"chair", 3.0}, {"couch", 1.0}};  // shares 0.75 / 0.25
-  o.embedding = {3.0f, 4.0f};                          // unit (0.6, 0.8)
+  o.embedding = {3.0f, 4.0f};                         // unit (0.6, 0.8)
   return o;
 }
 
@@ -46,8 +46,8 @@ TEST(SceneLandmarks, InstanceBecomesLabelSharesThenWeightedUnitEmbedding) {
   EXPECT_NEAR(l.scale, 1.3, 1e-12);
   EXPECT_EQ(l.observations, 4u);
   // [couch 0.25, chair 0.75 | 0.5 * 0.6, 0.5 * 0.8]
-  EXPECT_THAT(l.descriptor, ElementsAre(FloatNear(0.25f, 1e-6), FloatNear(0.75f, 1e-6), FloatNear(0.3f, 1e-6),
-                                        FloatNear(0.4f, 1e-6)));
+  EXPECT_THAT(l.descriptor, ElementsAre(FloatNear(0.25f, 1e-6), FloatNear(0.75f, 1e-6),
+                                        FloatNear(0.3f, 1e-6), FloatNear(0.4f, 1e-6)));
   // The hash key of seed 001 is the instance's best label, not an embedding entry.
   EXPECT_EQ(relocalization::DescriptorLabel(l.descriptor), 1);
 }
@@ -76,7 +76,8 @@ TEST(SceneLandmarks, OnlyStableInstancesBecomeLandmarks) {
   SceneObject seen_twice = Chair();
   seen_twice.id = 8;
   seen_twice.detection_count = 2;
-  const std::vector<SceneLandmark> out = LandmarksFromScene({seen_twice, Chair()}, TwoLabelsTwoDims());
+  const std::vector<SceneLandmark> out =
+      LandmarksFromScene({seen_twice, Chair()}, TwoLabelsTwoDims());
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].object_id, 7u);
 }
@@ -86,7 +87,8 @@ TEST(SceneLandmarks, EmbeddingOfAnotherLengthLeavesZerosAndNothingDescribableIsS
   other_dim.embedding = {1.0f, 0.0f, 0.0f};
   const std::vector<SceneLandmark> out = LandmarksFromScene({other_dim}, TwoLabelsTwoDims());
   ASSERT_EQ(out.size(), 1u);
-  EXPECT_THAT(out[0].landmark.descriptor, ElementsAre(FloatNear(0.25f, 1e-6), FloatNear(0.75f, 1e-6), 0.0f, 0.0f));
+  EXPECT_THAT(out[0].landmark.descriptor,
+              ElementsAre(FloatNear(0.25f, 1e-6), FloatNear(0.75f, 1e-6), 0.0f, 0.0f));
 
   SceneLandmarkConfig embedding_only;
   embedding_only.labels = {};
@@ -105,9 +107,11 @@ TEST(SceneLandmarks, BadGeometryIsLeftOut) {
   nan.position.y() = std::numeric_limits<double>::quiet_NaN();
   SceneObject bad_embedding = Chair();
   bad_embedding.embedding = {std::numeric_limits<float>::infinity(), 1.0f};
-  const std::vector<SceneLandmark> out = LandmarksFromScene({flat, far, nan, bad_embedding}, TwoLabelsTwoDims());
+  const std::vector<SceneLandmark> out =
+      LandmarksFromScene({flat, far, nan, bad_embedding}, TwoLabelsTwoDims());
   ASSERT_EQ(out.size(), 1u);  // the infinite embedding is dropped, the label shares remain
-  EXPECT_THAT(out[0].landmark.descriptor, ElementsAre(FloatNear(0.25f, 1e-6), FloatNear(0.75f, 1e-6), 0.0f, 0.0f));
+  EXPECT_THAT(out[0].landmark.descriptor,
+              ElementsAre(FloatNear(0.25f, 1e-6), FloatNear(0.75f, 1e-6), 0.0f, 0.0f));
 }
 
 TEST(SceneLandmarks, ConfigIsCheckedAtTheDoor) {

@@ -8,7 +8,9 @@
 
 namespace semnav::mapping {
 
-FrameStreamReactor::FrameStreamReactor(MappingEngine& engine) : engine_(engine) { StartRead(&request_); }
+FrameStreamReactor::FrameStreamReactor(MappingEngine& engine) : engine_(engine) {
+  StartRead(&request_);
+}
 
 void FrameStreamReactor::OnReadDone(bool ok) {
   if (!ok) {

@@ -9,7 +9,8 @@ namespace semnav::mapping {
 
 // StreamFrames: read a frame, integrate it, write its ack, repeat until the client half-closes.
 // A rejected frame is acknowledged with the error and the stream continues.
-class FrameStreamReactor : public grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse> {
+class FrameStreamReactor
+    : public grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse> {
  public:
   explicit FrameStreamReactor(MappingEngine& engine);
 

@@ -11,10 +11,10 @@ constexpr char kSnapshotId[] = "snapshot";
 
 }  // namespace
 
-absl::StatusOr<std::unique_ptr<LiveSnapshot>> LiveSnapshot::Start(MappingEngine& engine,
-                                                                  const std::string& store_directory,
-                                                                  absl::Duration interval) {
-  absl::StatusOr<MapStore> store = MapStore::Open((std::filesystem::path(store_directory) / "live").string());
+absl::StatusOr<std::unique_ptr<LiveSnapshot>> LiveSnapshot::Start(
+    MappingEngine& engine, const std::string& store_directory, absl::Duration interval) {
+  absl::StatusOr<MapStore> store =
+      MapStore::Open((std::filesystem::path(store_directory) / "live").string());
   if (!store.ok()) return store.status();
   std::unique_ptr<LiveSnapshot> snapshot(new LiveSnapshot(engine, *std::move(store), interval));
   absl::StatusOr<std::string> left = snapshot->store_.Load(kSnapshotId);
@@ -62,7 +62,8 @@ void LiveSnapshot::Stop() {
 
 void LiveSnapshot::StopAndDiscard() {
   Stop();
-  if (absl::Status removed = store_.Delete(kSnapshotId); !removed.ok() && !absl::IsNotFound(removed)) {
+  if (absl::Status removed = store_.Delete(kSnapshotId);
+      !removed.ok() && !absl::IsNotFound(removed)) {
     LogWarning("live_map_snapshot_not_removed", {{"message", removed.message()}});
   }
 }

@@ -21,7 +21,8 @@ class LiveSnapshot {
  public:
   // Restores a snapshot left by a crash into `engine` (a corrupt one is logged and dropped), then
   // snapshots in a background thread. `engine` must outlive the returned object.
-  static absl::StatusOr<std::unique_ptr<LiveSnapshot>> Start(MappingEngine& engine, const std::string& store_directory,
+  static absl::StatusOr<std::unique_ptr<LiveSnapshot>> Start(MappingEngine& engine,
+                                                             const std::string& store_directory,
                                                              absl::Duration interval);
   ~LiveSnapshot();
 

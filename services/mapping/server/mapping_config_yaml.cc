@@ -19,7 +19,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("pixel_stride", &c.pixel_stride)
       .Read("threads", &c.threads);
   octomap.Check(c.octomap_resolution_m > 0.0, "resolution_m", "must be > 0");
-  octomap.Check(c.range.min_m >= 0.0 && c.range.max_m > c.range.min_m, "max_range_m", "must be > min_range_m >= 0");
+  octomap.Check(c.range.min_m >= 0.0 && c.range.max_m > c.range.min_m, "max_range_m",
+                "must be > min_range_m >= 0");
   octomap.Check(c.pixel_stride >= 1, "pixel_stride", "must be >= 1");
   octomap.Check(c.threads >= 1 && c.threads <= 64, "threads", "must be in [1, 64]");
 
@@ -40,11 +41,15 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   grid.Check(c.grid.resolution_m > 0.0, "resolution_m", "must be > 0");
   grid.Check(c.grid.p_hit > 0.5 && c.grid.p_hit < 1.0, "p_hit", "must be in (0.5, 1)");
   grid.Check(c.grid.p_miss > 0.0 && c.grid.p_miss < 0.5, "p_miss", "must be in (0, 0.5)");
-  grid.Check(c.grid.p_threshold > 0.0 && c.grid.p_threshold < 1.0, "p_threshold", "must be in (0, 1)");
-  grid.Check(c.grid.log_odds_min < 0.0 && c.grid.log_odds_max > 0.0, "log_odds_max", "need log_odds_min < 0 < log_odds_max");
+  grid.Check(c.grid.p_threshold > 0.0 && c.grid.p_threshold < 1.0, "p_threshold",
+             "must be in (0, 1)");
+  grid.Check(c.grid.log_odds_min < 0.0 && c.grid.log_odds_max > 0.0, "log_odds_max",
+             "need log_odds_min < 0 < log_odds_max");
   grid.Check(c.heights.ceiling_m > c.heights.foot_m, "ceiling_height_m", "must be > foot_height_m");
-  grid.Check(c.estimate_heights_after_frames >= 0, "estimate_heights_after_frames", "must be >= 0 (0 = off)");
-  grid.Check(c.layers.obstacle_kernel >= 1 && c.layers.obstacle_kernel % 2 == 1, "obstacle_kernel", "must be odd and >= 1");
+  grid.Check(c.estimate_heights_after_frames >= 0, "estimate_heights_after_frames",
+             "must be >= 0 (0 = off)");
+  grid.Check(c.layers.obstacle_kernel >= 1 && c.layers.obstacle_kernel % 2 == 1, "obstacle_kernel",
+             "must be odd and >= 1");
   grid.Check(c.layers.robot_radius_m >= 0.0, "robot_radius_m", "must be >= 0");
   grid.Check(change_log >= 1, "change_log_size", "must be >= 1");
   c.grid_change_log_size = static_cast<size_t>(std::max(change_log, 1));
@@ -61,8 +66,10 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("opening_kernel", &c.semantic.opening_kernel)
       .Read("cap_voxel_m", &c.semantic.cap_voxel_m)
       .Read("max_points_per_voxel", &c.semantic.max_points_per_voxel);
-  semantic.Check(c.blur_min_laplacian_variance >= 0.0, "blur_min_laplacian_variance", "must be >= 0");
-  semantic.Check(c.lift.erosion_kernel >= 1 && c.lift.erosion_kernel % 2 == 1, "erosion_kernel", "must be odd and >= 1");
+  semantic.Check(c.blur_min_laplacian_variance >= 0.0, "blur_min_laplacian_variance",
+                 "must be >= 0");
+  semantic.Check(c.lift.erosion_kernel >= 1 && c.lift.erosion_kernel % 2 == 1, "erosion_kernel",
+                 "must be odd and >= 1");
   semantic.Check(c.lift.pixel_stride >= 1, "mask_pixel_stride", "must be >= 1");
   semantic.Check(c.lift.depth_band_m > 0.0, "depth_band_m", "must be > 0");
   semantic.Check(c.semantic.point_resolution_m > 0.0, "point_resolution_m", "must be > 0");
@@ -83,10 +90,13 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("direction_margin_m", &s.relations.direction_margin_m)
       .Read("on_tolerance_m", &s.relations.on_tolerance_m)
       .Read("region_radius_m", &s.relations.region_radius_m);
-  scene.Check(s.ema_new_weight > 0.0 && s.ema_new_weight <= 1.0, "ema_new_weight", "must be in (0, 1]");
-  scene.Check(s.embedding_min_cosine >= -1.0 && s.embedding_min_cosine <= 1.0, "embedding_min_cosine", "must be in [-1, 1]");
+  scene.Check(s.ema_new_weight > 0.0 && s.ema_new_weight <= 1.0, "ema_new_weight",
+              "must be in (0, 1]");
+  scene.Check(s.embedding_min_cosine >= -1.0 && s.embedding_min_cosine <= 1.0,
+              "embedding_min_cosine", "must be in [-1, 1]");
   scene.Check(s.prune_single_after_s > 0.0, "prune_single_after_s", "must be > 0");
-  scene.Check(s.relations.near_m > 0.0 && s.relations.region_radius_m > 0.0, "region_radius_m", "radii must be > 0");
+  scene.Check(s.relations.near_m > 0.0 && s.relations.region_radius_m > 0.0, "region_radius_m",
+              "radii must be > 0");
 
   for (const std::string& label : section.Child("synonyms").Keys()) {
     std::vector<std::string> names;
@@ -107,7 +117,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   section.Check(config.window_limits.max_cells >= 1, "max_window_cells", "must be >= 1");
   section.Check(config.live_snapshot_interval_s >= 0 && config.live_snapshot_interval_s <= 3600,
                 "live_snapshot_interval_s", "must be in [0, 3600]");
-  section.Check(config.window_limits.max_abs_coordinate_m > 0, "max_abs_coordinate_m", "must be > 0");
+  section.Check(config.window_limits.max_abs_coordinate_m > 0, "max_abs_coordinate_m",
+                "must be > 0");
 
   ConfigReader landmarks = section.Child("landmarks");
   SceneLandmarkConfig& l = config.landmarks;
@@ -125,7 +136,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
     p.relocalization = ClientOptions::FromConfig(relocalization, p.relocalization);
   }
   // Core names the key in the error's payload; the reader reports it as "landmarks.<key>".
-  for (const absl::Status& s : {ValidateSceneLandmarkConfig(l), ValidateLandmarkPublisherConfig(p)}) {
+  for (const absl::Status& s :
+       {ValidateSceneLandmarkConfig(l), ValidateLandmarkPublisherConfig(p)}) {
     if (s.ok()) continue;
     const std::string key = ErrorField(s).value_or("landmarks");
     absl::string_view why = s.message();

@@ -14,14 +14,14 @@ namespace semnav::mapping {
 // Service-level settings around the core pipeline.
 struct MappingServiceConfig {
   MappingConfig core;
-  std::string store_directory = "var/maps";  // map store (created if missing)
-  int watch_min_interval_ms = 200;           // grid/scene watch rate limit (floor for clients)
-  double query_min_cosine = 0.2;             // QueryObjects default when the request says 0
-  size_t idempotency_cache_size = 1024;      // remembered request_ids
-  int occupancy_chunk_bytes = 1 << 20;       // GetOccupancy DataChunk size (protocol max 1 MiB)
-  WindowLimits window_limits;                // GetGridMap / WatchGridMap window bounds
-  double live_snapshot_interval_s = 5.0;     // crash-recovery snapshot of the live map; 0 = off
-  SceneLandmarkConfig landmarks;             // scene-graph instances -> relocalization landmarks
+  std::string store_directory = "var/maps";    // map store (created if missing)
+  int watch_min_interval_ms = 200;             // grid/scene watch rate limit (floor for clients)
+  double query_min_cosine = 0.2;               // QueryObjects default when the request says 0
+  size_t idempotency_cache_size = 1024;        // remembered request_ids
+  int occupancy_chunk_bytes = 1 << 20;         // GetOccupancy DataChunk size (protocol max 1 MiB)
+  WindowLimits window_limits;                  // GetGridMap / WatchGridMap window bounds
+  double live_snapshot_interval_s = 5.0;       // crash-recovery snapshot of the live map; 0 = off
+  SceneLandmarkConfig landmarks;               // scene-graph instances -> relocalization landmarks
   LandmarkPublisherConfig landmark_publisher;  // where and how often they are pushed
 
   // The settings of `section` (keys below); a bad value, a failed check or an unknown key fails
@@ -30,8 +30,9 @@ struct MappingServiceConfig {
 };
 
 // Reads the "mapping" YAML section. Keys (defaults in brackets):
-//   octomap: {resolution_m [0.05], min_range_m [0.3], max_range_m [8], pixel_stride [1], threads [2]}
-//   grid: {resolution_m [0.05], p_hit [0.7], p_miss [0.4], p_threshold [0.65], log_odds_min [-2],
+//   octomap: {resolution_m [0.05], min_range_m [0.3], max_range_m [8], pixel_stride [1], threads
+//   [2]} grid: {resolution_m [0.05], p_hit [0.7], p_miss [0.4], p_threshold [0.65], log_odds_min
+//   [-2],
 //          log_odds_max [3.5], foot_height_m [0.1], ceiling_height_m [2.3],
 //          estimate_heights_after_frames [0 = off], obstacle_kernel [9],
 //          robot_radius_m [0.25], change_log_size [256]}

@@ -14,11 +14,11 @@ TEST(MappingConfigYamlTest, DefaultsFollowTheSeeds) {
   const absl::StatusOr<MappingServiceConfig> loaded = MappingServiceConfig::FromYaml(section);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const MappingServiceConfig& config = *loaded;
-  EXPECT_EQ(config.core.grid.p_threshold, 0.65);       // seed 003 eq. 9
-  EXPECT_EQ(config.core.layers.obstacle_kernel, 9);    // seed 004
-  EXPECT_EQ(config.core.lift.erosion_keep_above, 23.5);  // seed 004
-  EXPECT_EQ(config.core.semantic.radius_m, 0.1f);      // seed 004
-  EXPECT_EQ(config.core.scene.ema_new_weight, 0.3);    // seed 002
+  EXPECT_EQ(config.core.grid.p_threshold, 0.65);                // seed 003 eq. 9
+  EXPECT_EQ(config.core.layers.obstacle_kernel, 9);             // seed 004
+  EXPECT_EQ(config.core.lift.erosion_keep_above, 23.5);         // seed 004
+  EXPECT_EQ(config.core.semantic.radius_m, 0.1f);               // seed 004
+  EXPECT_EQ(config.core.scene.ema_new_weight, 0.3);             // seed 002
   EXPECT_EQ(config.core.scene.relations.region_radius_m, 3.0);  // seed 002
   EXPECT_EQ(config.core.range.min_m, 0.3);
   EXPECT_EQ(config.core.range.max_m, 8.0);
@@ -26,7 +26,8 @@ TEST(MappingConfigYamlTest, DefaultsFollowTheSeeds) {
 }
 
 TEST(MappingConfigYamlTest, ChunkSizeStaysWithinTheProtocolLimit) {
-  absl::StatusOr<ConfigReader> root = ConfigReader::FromString("mapping:\n  occupancy_chunk_bytes: 2097152\n");
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString("mapping:\n  occupancy_chunk_bytes: 2097152\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
   const absl::Status status = MappingServiceConfig::FromYaml(section).status();
@@ -35,15 +36,16 @@ TEST(MappingConfigYamlTest, ChunkSizeStaysWithinTheProtocolLimit) {
 }
 
 TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
-  absl::StatusOr<ConfigReader> root =
-      ConfigReader::FromString("mapping:\n  octomap: {resolution_m: 0.1}\n  synonyms: {sofa: [couch, settee]}\n");
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
+      "mapping:\n  octomap: {resolution_m: 0.1}\n  synonyms: {sofa: [couch, settee]}\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
   const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
   ASSERT_TRUE(config.ok()) << config.status();
   EXPECT_EQ(config->core.octomap_resolution_m, 0.1);
   EXPECT_EQ(config->core.synonyms.at("sofa"), (std::vector<std::string>{"couch", "settee"}));
-  absl::StatusOr<ConfigReader> bad = ConfigReader::FromString("mapping:\n  grid: {p_threshold: 1.5}\n");
+  absl::StatusOr<ConfigReader> bad =
+      ConfigReader::FromString("mapping:\n  grid: {p_threshold: 1.5}\n");
   ASSERT_TRUE(bad.ok());
   ConfigReader bad_section = bad->Child("mapping");
   const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
@@ -54,8 +56,8 @@ TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
 // Regression: a landmarks section without `relocalization` (or none at all, as in deploy/k8s)
 // must not demand a relocalization address; mapping then pushes nothing.
 TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
-  absl::StatusOr<ConfigReader> root =
-      ConfigReader::FromString("mapping:\n  landmarks: {min_detections: 5, labels: [chair, table], embedding_dim: 0}\n");
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
+      "mapping:\n  landmarks: {min_detections: 5, labels: [chair, table], embedding_dim: 0}\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
   const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
@@ -69,7 +71,8 @@ TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
 
 TEST(MappingConfigYamlTest, LandmarkSettingsAreCheckedWithTheirKeyPath) {
   absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
-      "mapping:\n  landmarks: {live_map_id: '../x', relocalization: {address: '127.0.0.1:50053'}}\n");
+      "mapping:\n  landmarks: {live_map_id: '../x', relocalization: {address: "
+      "'127.0.0.1:50053'}}\n");
   ASSERT_TRUE(root.ok());
   ConfigReader section = root->Child("mapping");
   const absl::Status status = MappingServiceConfig::FromYaml(section).status();

@@ -4,14 +4,14 @@
 
 #include "absl/strings/str_cat.h"
 #include "services/common/crypto/sha256.h"
+#include "services/common/logging/log.h"
 #include "services/common/status/grpc_status.h"
 #include "services/common/status/value_checks.h"
-#include "services/common/logging/log.h"
+#include "services/mapping/core/window_validation.h"
 #include "services/mapping/landmarks/saved_landmarks.h"
 #include "services/mapping/server/frame_stream_reactor.h"
 #include "services/mapping/server/proto_convert.h"
 #include "services/mapping/server/watch_reactor.h"
-#include "services/mapping/core/window_validation.h"
 
 namespace semnav::mapping {
 namespace {
@@ -30,15 +30,17 @@ grpc::ServerUnaryReactor* Reply(grpc::CallbackServerContext* context, const grpc
   return reactor;
 }
 
-std::vector<semnav::common::v1::GridLayerKind> Kinds(const google::protobuf::RepeatedField<int>& kinds) {
+std::vector<semnav::common::v1::GridLayerKind> Kinds(
+    const google::protobuf::RepeatedField<int>& kinds) {
   std::vector<semnav::common::v1::GridLayerKind> out;
   for (int k : kinds) out.push_back(static_cast<semnav::common::v1::GridLayerKind>(k));
   return out;
 }
 
 grpc::Status CheckWindow(const v1::Window& window, const MappingServiceConfig& config) {
-  return FromCore(ValidateWindow(window.min().x(), window.min().y(), window.max().x(), window.max().y(),
-                                 config.core.grid.resolution_m, config.window_limits));
+  return FromCore(ValidateWindow(window.min().x(), window.min().y(), window.max().x(),
+                                 window.max().y(), config.core.grid.resolution_m,
+                                 config.window_limits));
 }
 
 GridWindow Intersect(const GridWindow& a, const GridWindow& b) {
@@ -113,12 +115,15 @@ grpc::ServerWriteReactor<Response>* FailStream(const grpc::Status& status) {
 }  // namespace
 
 MappingServiceImpl::MappingServiceImpl(const MappingServiceConfig& config, MapStore store)
-    : config_(config), store_(std::move(store)), engine_(config.core), idempotency_(config.idempotency_cache_size) {}
+    : config_(config),
+      store_(std::move(store)),
+      engine_(config.core),
+      idempotency_(config.idempotency_cache_size) {}
 
 absl::Status MappingServiceImpl::StartLiveSnapshots() {
   if (config_.live_snapshot_interval_s <= 0) return absl::OkStatus();
-  absl::StatusOr<std::unique_ptr<LiveSnapshot>> started =
-      LiveSnapshot::Start(engine_, config_.store_directory, absl::Seconds(config_.live_snapshot_interval_s));
+  absl::StatusOr<std::unique_ptr<LiveSnapshot>> started = LiveSnapshot::Start(
+      engine_, config_.store_directory, absl::Seconds(config_.live_snapshot_interval_s));
   if (!started.ok()) return started.status();
   live_snapshot_ = *std::move(started);
   return absl::OkStatus();
@@ -140,8 +145,9 @@ void MappingServiceImpl::Shutdown() {
 }
 
 template <typename Response, typename Call>
-grpc::Status MappingServiceImpl::Idempotent(const std::string& method, const std::string& request_id,
-                                            Response* response, Call call) {
+grpc::Status MappingServiceImpl::Idempotent(const std::string& method,
+                                            const std::string& request_id, Response* response,
+                                            Call call) {
   if (request_id.empty()) return Invalid("request_id", "required for this call (idempotency key)");
   // Kept in the idempotency cache: a huge key would be held for the cache's lifetime.
   if (absl::Status s = CheckLength(request_id, "request_id", kMaxIdBytes); !s.ok()) {
@@ -158,15 +164,16 @@ grpc::Status MappingServiceImpl::Idempotent(const std::string& method, const std
   return status;
 }
 
-grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse>* MappingServiceImpl::StreamFrames(
-    grpc::CallbackServerContext*) {
+grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse>*
+MappingServiceImpl::StreamFrames(grpc::CallbackServerContext*) {
   return new FrameStreamReactor(engine_);
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::GetGridMap(grpc::CallbackServerContext* context,
                                                          const v1::GetGridMapRequest* request,
                                                          v1::GetGridMapResponse* response) {
-  if (absl::Status s = CheckLayerKinds(request->layers(), "layers"); !s.ok()) return Reply(context, FromCore(s));
+  if (absl::Status s = CheckLayerKinds(request->layers(), "layers"); !s.ok())
+    return Reply(context, FromCore(s));
   std::optional<GridWindow> window;
   if (request->has_window()) {
     if (grpc::Status s = CheckWindow(request->window(), config_); !s.ok()) return Reply(context, s);
@@ -176,8 +183,8 @@ grpc::ServerUnaryReactor* MappingServiceImpl::GetGridMap(grpc::CallbackServerCon
   uint64_t revision = 0;
   const bool with_semantic =
       request->layers().empty() ||
-      std::find(request->layers().begin(), request->layers().end(), semnav::common::v1::GRID_LAYER_KIND_SEMANTIC) !=
-          request->layers().end();
+      std::find(request->layers().begin(), request->layers().end(),
+                semnav::common::v1::GRID_LAYER_KIND_SEMANTIC) != request->layers().end();
   const GridLayers layers = engine_.Grid(window, &revision, with_semantic);
   *response->mutable_grid() = GridToProto(layers, revision, Kinds(request->layers()));
   return Reply(context, grpc::Status::OK);
@@ -190,17 +197,20 @@ grpc::ServerWriteReactor<v1::WatchGridMapResponse>* MappingServiceImpl::WatchGri
   }
   std::optional<GridWindow> watched;
   if (request->has_window()) {
-    if (grpc::Status s = CheckWindow(request->window(), config_); !s.ok()) return FailStream<v1::WatchGridMapResponse>(s);
+    if (grpc::Status s = CheckWindow(request->window(), config_); !s.ok())
+      return FailStream<v1::WatchGridMapResponse>(s);
     const auto& w = request->window();
     watched = engine_.WindowOf(w.min().x(), w.min().y(), w.max().x(), w.max().y());
   }
   const auto kinds = Kinds(request->layers());
-  const absl::Duration interval =
-      absl::Milliseconds(std::max<int>(config_.watch_min_interval_ms, static_cast<int>(request->min_interval_ms())));
+  const absl::Duration interval = absl::Milliseconds(
+      std::max<int>(config_.watch_min_interval_ms, static_cast<int>(request->min_interval_ms())));
   MappingEngine& engine = engine_;
-  auto next = [&engine, watched, kinds](uint64_t last, bool first, v1::WatchGridMapResponse* out) -> std::optional<uint64_t> {
+  auto next = [&engine, watched, kinds](uint64_t last, bool first,
+                                        v1::WatchGridMapResponse* out) -> std::optional<uint64_t> {
     const uint64_t now = engine.revision();
-    std::optional<GridWindow> changed = (first && last == 0) ? std::nullopt : engine.GridChangesSince(last);
+    std::optional<GridWindow> changed =
+        (first && last == 0) ? std::nullopt : engine.GridChangesSince(last);
     const bool snapshot = !changed.has_value();
     std::optional<GridWindow> window = watched;
     if (!snapshot) {
@@ -214,7 +224,8 @@ grpc::ServerWriteReactor<v1::WatchGridMapResponse>* MappingServiceImpl::WatchGri
     out->set_snapshot(snapshot);
     return std::max(revision, now);
   };
-  return new WatchReactor<v1::WatchGridMapResponse>(engine_, stopping_, interval, request->since_revision(), next);
+  return new WatchReactor<v1::WatchGridMapResponse>(engine_, stopping_, interval,
+                                                    request->since_revision(), next);
 }
 
 grpc::ServerWriteReactor<v1::GetOccupancyResponse>* MappingServiceImpl::GetOccupancy(
@@ -242,22 +253,26 @@ grpc::ServerUnaryReactor* MappingServiceImpl::GetSceneGraph(grpc::CallbackServer
 grpc::ServerWriteReactor<v1::WatchSceneGraphResponse>* MappingServiceImpl::WatchSceneGraph(
     grpc::CallbackServerContext*, const v1::WatchSceneGraphRequest* request) {
   MappingEngine& engine = engine_;
-  auto next = [&engine](uint64_t last, bool first, v1::WatchSceneGraphResponse* out) -> std::optional<uint64_t> {
+  auto next = [&engine](uint64_t last, bool first,
+                        v1::WatchSceneGraphResponse* out) -> std::optional<uint64_t> {
     const SceneSnapshot scene = engine.Scene();
     if (!first && scene.revision <= last) return std::nullopt;
-    const std::optional<SceneDelta> delta = (first && last == 0) ? std::nullopt : engine.SceneChangesSince(last);
+    const std::optional<SceneDelta> delta =
+        (first && last == 0) ? std::nullopt : engine.SceneChangesSince(last);
     if (!delta.has_value()) {
       SceneToProto(scene, out->mutable_snapshot());
       return scene.revision;
     }
-    if (scene.revision <= last) return std::nullopt;  // resumed at the current revision: nothing to send
+    if (scene.revision <= last)
+      return std::nullopt;  // resumed at the current revision: nothing to send
     v1::SceneGraph full;
     SceneToProto(scene, &full);
     v1::SceneGraphDelta* d = out->mutable_delta();
     d->set_from_revision(last);
     d->set_revision(scene.revision);
     for (const SceneObject& o : scene.objects) {
-      if (std::find(delta->upserted_ids.begin(), delta->upserted_ids.end(), o.id) != delta->upserted_ids.end()) {
+      if (std::find(delta->upserted_ids.begin(), delta->upserted_ids.end(), o.id) !=
+          delta->upserted_ids.end()) {
         ObjectToProto(o, d->add_upserted_objects());
       }
     }
@@ -267,9 +282,9 @@ grpc::ServerWriteReactor<v1::WatchSceneGraphResponse>* MappingServiceImpl::Watch
     d->set_summary(full.summary());
     return scene.revision;
   };
-  return new WatchReactor<v1::WatchSceneGraphResponse>(engine_, stopping_,
-                                                       absl::Milliseconds(config_.watch_min_interval_ms),
-                                                       request->since_revision(), next);
+  return new WatchReactor<v1::WatchSceneGraphResponse>(
+      engine_, stopping_, absl::Milliseconds(config_.watch_min_interval_ms),
+      request->since_revision(), next);
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::QueryObjects(grpc::CallbackServerContext* context,
@@ -278,8 +293,10 @@ grpc::ServerUnaryReactor* MappingServiceImpl::QueryObjects(grpc::CallbackServerC
   ObjectQuery query;
   query.labels.assign(request->labels().begin(), request->labels().end());
   query.embedding.assign(request->embedding().begin(), request->embedding().end());
-  query.min_cosine = request->min_cosine() == 0.0 ? config_.query_min_cosine : request->min_cosine();
-  if (request->has_near()) query.near = Eigen::Vector3d(request->near().x(), request->near().y(), request->near().z());
+  query.min_cosine =
+      request->min_cosine() == 0.0 ? config_.query_min_cosine : request->min_cosine();
+  if (request->has_near())
+    query.near = Eigen::Vector3d(request->near().x(), request->near().y(), request->near().z());
   query.near_radius_m = request->near_radius();
   query.max_results = request->max_results();
   const absl::StatusOr<std::vector<ObjectHit>> hits = engine_.QueryObjects(query);
@@ -295,39 +312,45 @@ grpc::ServerUnaryReactor* MappingServiceImpl::QueryObjects(grpc::CallbackServerC
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::SaveMap(grpc::CallbackServerContext* context,
-                                                      const v1::SaveMapRequest* request, v1::SaveMapResponse* response) {
-  return Reply(context, Idempotent("SaveMap", request->request_id(), response, [&] {
-                 if (absl::Status s = MapStore::ValidateMapId(request->map_id()); !s.ok()) return FromCore(s);
-                 // The landmarks first: a saved occupancy map always has its landmark map.
-                 const std::vector<SceneLandmark> landmarks =
-                     LandmarksFromScene(engine_.Scene().objects, config_.landmarks);
-                 if (absl::Status s = SaveLandmarks(config_.store_directory, request->map_id(), landmarks); !s.ok()) {
-                   return FromCore(s);
-                 }
-                 absl::StatusOr<StoredMap> saved = store_.Save(request->map_id(), engine_.Serialize());
-                 if (!saved.ok()) return FromCore(saved.status());
-                 if (landmark_publisher_ != nullptr) {
-                   std::vector<relocalization::Landmark> pushed;
-                   for (const SceneLandmark& l : landmarks) pushed.push_back(l.landmark);
-                   landmark_publisher_->PublishSnapshot(request->map_id(), std::move(pushed));
-                 }
-                 InfoToProto(*saved, response->mutable_map());
-                 return grpc::Status::OK;
-               }));
+                                                      const v1::SaveMapRequest* request,
+                                                      v1::SaveMapResponse* response) {
+  return Reply(
+      context, Idempotent("SaveMap", request->request_id(), response, [&] {
+        if (absl::Status s = MapStore::ValidateMapId(request->map_id()); !s.ok())
+          return FromCore(s);
+        // The landmarks first: a saved occupancy map always has its landmark map.
+        const std::vector<SceneLandmark> landmarks =
+            LandmarksFromScene(engine_.Scene().objects, config_.landmarks);
+        if (absl::Status s = SaveLandmarks(config_.store_directory, request->map_id(), landmarks);
+            !s.ok()) {
+          return FromCore(s);
+        }
+        absl::StatusOr<StoredMap> saved = store_.Save(request->map_id(), engine_.Serialize());
+        if (!saved.ok()) return FromCore(saved.status());
+        if (landmark_publisher_ != nullptr) {
+          std::vector<relocalization::Landmark> pushed;
+          for (const SceneLandmark& l : landmarks) pushed.push_back(l.landmark);
+          landmark_publisher_->PublishSnapshot(request->map_id(), std::move(pushed));
+        }
+        InfoToProto(*saved, response->mutable_map());
+        return grpc::Status::OK;
+      }));
 }
 
 void MappingServiceImpl::PublishLoadedLandmarks(const std::string& map_id) {
   if (landmark_publisher_ == nullptr) return;
   landmark_publisher_->SceneReplaced();
   std::vector<relocalization::Landmark> landmarks;
-  absl::StatusOr<relocalization::LandmarkMap> saved = LoadLandmarks(config_.store_directory, map_id);
+  absl::StatusOr<relocalization::LandmarkMap> saved =
+      LoadLandmarks(config_.store_directory, map_id);
   if (saved.ok()) {
     landmarks = saved->landmarks();
   } else {
     // Saved before landmark maps existed, or the file is damaged: the restored scene graph
     // holds the same instances, so its landmarks are the ones SaveMap would have written.
     if (!absl::IsNotFound(saved.status())) {
-      LogWarning("saved_landmarks_unreadable", {{"map_id", map_id}, {"message", saved.status().message()}});
+      LogWarning("saved_landmarks_unreadable",
+                 {{"map_id", map_id}, {"message", saved.status().message()}});
     }
     for (SceneLandmark& l : LandmarksFromScene(engine_.Scene().objects, config_.landmarks)) {
       landmarks.push_back(std::move(l.landmark));
@@ -337,12 +360,14 @@ void MappingServiceImpl::PublishLoadedLandmarks(const std::string& map_id) {
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::LoadMap(grpc::CallbackServerContext* context,
-                                                      const v1::LoadMapRequest* request, v1::LoadMapResponse* response) {
+                                                      const v1::LoadMapRequest* request,
+                                                      v1::LoadMapResponse* response) {
   return Reply(context, Idempotent("LoadMap", request->request_id(), response, [&] {
                  absl::StatusOr<std::string> payload = store_.Load(request->map_id());
                  if (!payload.ok()) return FromCore(payload.status());
                  if (absl::Status restored = engine_.Restore(*payload); !restored.ok()) {
-                   return FromCore(absl::Status(restored.code(), absl::StrCat("map_id: ", restored.message())));
+                   return FromCore(
+                       absl::Status(restored.code(), absl::StrCat("map_id: ", restored.message())));
                  }
                  PublishLoadedLandmarks(request->map_id());
                  absl::StatusOr<StoredMap> info = store_.Stat(request->map_id());
@@ -352,7 +377,8 @@ grpc::ServerUnaryReactor* MappingServiceImpl::LoadMap(grpc::CallbackServerContex
                }));
 }
 
-grpc::ServerUnaryReactor* MappingServiceImpl::ListMaps(grpc::CallbackServerContext* context, const v1::ListMapsRequest*,
+grpc::ServerUnaryReactor* MappingServiceImpl::ListMaps(grpc::CallbackServerContext* context,
+                                                       const v1::ListMapsRequest*,
                                                        v1::ListMapsResponse* response) {
   const absl::StatusOr<std::vector<StoredMap>> maps = store_.List();
   if (!maps.ok()) return Reply(context, FromCore(maps.status()));
@@ -361,17 +387,18 @@ grpc::ServerUnaryReactor* MappingServiceImpl::ListMaps(grpc::CallbackServerConte
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::DeleteMap(grpc::CallbackServerContext* context,
-                                                        const v1::DeleteMapRequest* request, v1::DeleteMapResponse* response) {
-  return Reply(context, Idempotent("DeleteMap", request->request_id(), response,
-                                   [&] {
-                                     const absl::Status deleted = store_.Delete(request->map_id());
-                                     if (!deleted.ok()) return FromCore(deleted);
-                                     return FromCore(DeleteLandmarks(config_.store_directory, request->map_id()));
-                                   }));
+                                                        const v1::DeleteMapRequest* request,
+                                                        v1::DeleteMapResponse* response) {
+  return Reply(context, Idempotent("DeleteMap", request->request_id(), response, [&] {
+                 const absl::Status deleted = store_.Delete(request->map_id());
+                 if (!deleted.ok()) return FromCore(deleted);
+                 return FromCore(DeleteLandmarks(config_.store_directory, request->map_id()));
+               }));
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::ResetMap(grpc::CallbackServerContext* context,
-                                                       const v1::ResetMapRequest* request, v1::ResetMapResponse* response) {
+                                                       const v1::ResetMapRequest* request,
+                                                       v1::ResetMapResponse* response) {
   return Reply(context, Idempotent("ResetMap", request->request_id(), response, [&] {
                  engine_.Reset();
                  if (landmark_publisher_ != nullptr) landmark_publisher_->SceneReplaced();

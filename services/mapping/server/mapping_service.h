@@ -1,14 +1,14 @@
 #pragma once
 
+#include <grpcpp/grpcpp.h>
+
 #include <atomic>
 #include <memory>
 
-#include <grpcpp/grpcpp.h>
-
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/mapping/core/map_store.h"
 #include "services/mapping/core/mapping_engine.h"
-#include "services/common/idempotency/first_answer_cache.h"
 #include "services/mapping/landmarks/landmark_publisher.h"
 #include "services/mapping/server/live_snapshot.h"
 #include "services/mapping/server/mapping_config_yaml.h"
@@ -31,33 +31,42 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
 
   grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse>* StreamFrames(
       grpc::CallbackServerContext* context) override;
-  grpc::ServerUnaryReactor* GetGridMap(grpc::CallbackServerContext* context, const v1::GetGridMapRequest* request,
+  grpc::ServerUnaryReactor* GetGridMap(grpc::CallbackServerContext* context,
+                                       const v1::GetGridMapRequest* request,
                                        v1::GetGridMapResponse* response) override;
-  grpc::ServerWriteReactor<v1::WatchGridMapResponse>* WatchGridMap(grpc::CallbackServerContext* context,
-                                                                   const v1::WatchGridMapRequest* request) override;
-  grpc::ServerWriteReactor<v1::GetOccupancyResponse>* GetOccupancy(grpc::CallbackServerContext* context,
-                                                                   const v1::GetOccupancyRequest* request) override;
-  grpc::ServerUnaryReactor* GetSceneGraph(grpc::CallbackServerContext* context, const v1::GetSceneGraphRequest* request,
+  grpc::ServerWriteReactor<v1::WatchGridMapResponse>* WatchGridMap(
+      grpc::CallbackServerContext* context, const v1::WatchGridMapRequest* request) override;
+  grpc::ServerWriteReactor<v1::GetOccupancyResponse>* GetOccupancy(
+      grpc::CallbackServerContext* context, const v1::GetOccupancyRequest* request) override;
+  grpc::ServerUnaryReactor* GetSceneGraph(grpc::CallbackServerContext* context,
+                                          const v1::GetSceneGraphRequest* request,
                                           v1::GetSceneGraphResponse* response) override;
   grpc::ServerWriteReactor<v1::WatchSceneGraphResponse>* WatchSceneGraph(
       grpc::CallbackServerContext* context, const v1::WatchSceneGraphRequest* request) override;
-  grpc::ServerUnaryReactor* QueryObjects(grpc::CallbackServerContext* context, const v1::QueryObjectsRequest* request,
+  grpc::ServerUnaryReactor* QueryObjects(grpc::CallbackServerContext* context,
+                                         const v1::QueryObjectsRequest* request,
                                          v1::QueryObjectsResponse* response) override;
-  grpc::ServerUnaryReactor* SaveMap(grpc::CallbackServerContext* context, const v1::SaveMapRequest* request,
+  grpc::ServerUnaryReactor* SaveMap(grpc::CallbackServerContext* context,
+                                    const v1::SaveMapRequest* request,
                                     v1::SaveMapResponse* response) override;
-  grpc::ServerUnaryReactor* LoadMap(grpc::CallbackServerContext* context, const v1::LoadMapRequest* request,
+  grpc::ServerUnaryReactor* LoadMap(grpc::CallbackServerContext* context,
+                                    const v1::LoadMapRequest* request,
                                     v1::LoadMapResponse* response) override;
-  grpc::ServerUnaryReactor* ListMaps(grpc::CallbackServerContext* context, const v1::ListMapsRequest* request,
+  grpc::ServerUnaryReactor* ListMaps(grpc::CallbackServerContext* context,
+                                     const v1::ListMapsRequest* request,
                                      v1::ListMapsResponse* response) override;
-  grpc::ServerUnaryReactor* DeleteMap(grpc::CallbackServerContext* context, const v1::DeleteMapRequest* request,
+  grpc::ServerUnaryReactor* DeleteMap(grpc::CallbackServerContext* context,
+                                      const v1::DeleteMapRequest* request,
                                       v1::DeleteMapResponse* response) override;
-  grpc::ServerUnaryReactor* ResetMap(grpc::CallbackServerContext* context, const v1::ResetMapRequest* request,
+  grpc::ServerUnaryReactor* ResetMap(grpc::CallbackServerContext* context,
+                                     const v1::ResetMapRequest* request,
                                      v1::ResetMapResponse* response) override;
 
  private:
   // Runs `call` once per (method, request_id) and replays its answer for repeats.
   template <typename Response, typename Call>
-  grpc::Status Idempotent(const std::string& method, const std::string& request_id, Response* response, Call call);
+  grpc::Status Idempotent(const std::string& method, const std::string& request_id,
+                          Response* response, Call call);
 
   // After LoadMap: hands the map's saved landmarks (or its scene graph's) to relocalization.
   void PublishLoadedLandmarks(const std::string& map_id);
@@ -71,7 +80,7 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
   MapStore store_;
   MappingEngine engine_;
   FirstAnswerCache<IdempotentAnswer> idempotency_;  // by "<method>/<request_id>", under store_mu_
-  absl::Mutex store_mu_;  // one save/load/delete at a time
+  absl::Mutex store_mu_;                            // one save/load/delete at a time
   std::atomic<bool> stopping_{false};
   std::unique_ptr<LiveSnapshot> live_snapshot_;
   std::unique_ptr<LandmarkPublisher> landmark_publisher_;  // null without a relocalization service

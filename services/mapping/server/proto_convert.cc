@@ -68,7 +68,8 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
   }
   frame.stamp_ns = stamp.seconds() * 1'000'000'000 + stamp.nanos();
   const auto& k = proto.intrinsics();
-  frame.intrinsics = {static_cast<int>(k.width()), static_cast<int>(k.height()), k.fx(), k.fy(), k.cx(), k.cy()};
+  frame.intrinsics = {
+      static_cast<int>(k.width()), static_cast<int>(k.height()), k.fx(), k.fy(), k.cx(), k.cy()};
   frame.depth.width = static_cast<int>(proto.depth().width());
   frame.depth.height = static_cast<int>(proto.depth().height());
   frame.depth.encoding = DepthEncodingOf(proto.depth().encoding());
@@ -78,7 +79,8 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
   frame.pose.orientation = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
   if (proto.has_rgb()) {
     const ImageEncoding e = proto.rgb().encoding();
-    if (e != semnav::common::v1::IMAGE_ENCODING_PNG && e != semnav::common::v1::IMAGE_ENCODING_JPEG) {
+    if (e != semnav::common::v1::IMAGE_ENCODING_PNG &&
+        e != semnav::common::v1::IMAGE_ENCODING_JPEG) {
       return InvalidField("rgb.encoding", "must be IMAGE_ENCODING_PNG or IMAGE_ENCODING_JPEG");
     }
     frame.rgb_encoded = proto.rgb().data();
@@ -92,7 +94,8 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
     if (d.has_mask()) {
       const auto& m = d.mask();
       if (m.encoding() != semnav::common::v1::IMAGE_ENCODING_MONO8 || m.width() != k.width() ||
-          m.height() != k.height() || m.data().size() != static_cast<size_t>(k.width()) * k.height()) {
+          m.height() != k.height() ||
+          m.data().size() != static_cast<size_t>(k.width()) * k.height()) {
         return InvalidField(absl::StrCat("detections[", i, "].mask"),
                             "must be an IMAGE_ENCODING_MONO8 image of the depth image's size");
       }
@@ -105,9 +108,11 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
   return frame;
 }
 
-absl::Status CheckLayerKinds(const google::protobuf::RepeatedField<int>& kinds, absl::string_view field) {
+absl::Status CheckLayerKinds(const google::protobuf::RepeatedField<int>& kinds,
+                             absl::string_view field) {
   for (int kind : kinds) {
-    if (!semnav::common::v1::GridLayerKind_IsValid(kind) || kind == semnav::common::v1::GRID_LAYER_KIND_UNSPECIFIED) {
+    if (!semnav::common::v1::GridLayerKind_IsValid(kind) ||
+        kind == semnav::common::v1::GRID_LAYER_KIND_UNSPECIFIED) {
       return InvalidField(field, absl::StrCat("unknown or unspecified layer kind ", kind));
     }
   }
@@ -128,9 +133,12 @@ semnav::common::v1::GridMap GridToProto(const GridLayers& layers, uint64_t revis
   grid.set_ceiling_height(layers.heights.ceiling_m);
   std::vector<GridLayerKind> wanted = kinds;
   if (wanted.empty()) {
-    wanted = {semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL, semnav::common::v1::GRID_LAYER_KIND_OCCUPANCY,
-              semnav::common::v1::GRID_LAYER_KIND_OBSTACLE_PROBABILITY, semnav::common::v1::GRID_LAYER_KIND_EXPLORED,
-              semnav::common::v1::GRID_LAYER_KIND_INFLATED, semnav::common::v1::GRID_LAYER_KIND_SEMANTIC};
+    wanted = {semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL,
+              semnav::common::v1::GRID_LAYER_KIND_OCCUPANCY,
+              semnav::common::v1::GRID_LAYER_KIND_OBSTACLE_PROBABILITY,
+              semnav::common::v1::GRID_LAYER_KIND_EXPLORED,
+              semnav::common::v1::GRID_LAYER_KIND_INFLATED,
+              semnav::common::v1::GRID_LAYER_KIND_SEMANTIC};
   }
   for (GridLayerKind kind : wanted) {
     const std::vector<uint8_t>* bytes = LayerBytes(layers, kind);

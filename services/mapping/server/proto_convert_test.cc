@@ -51,7 +51,8 @@ TEST(ProtoConvertTest, ConversionErrorsNameTheirFieldInErrorInfo) {
   v1::SensorFrame proto = TinyFrame();
   proto.mutable_rgb()->set_encoding(semnav::common::v1::IMAGE_ENCODING_RGB8);
   const grpc::Status wire = ToGrpcStatus(FrameFromProto(proto).status());
-  const std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(wire);
+  const std::optional<semnav::common::v1::ErrorInfo> info =
+      GetDetail<semnav::common::v1::ErrorInfo>(wire);
   ASSERT_TRUE(info.has_value());
   EXPECT_EQ(info->field(), "rgb.encoding");
   EXPECT_EQ(info->reason(), "FIELD_INVALID");

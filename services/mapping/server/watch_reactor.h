@@ -1,13 +1,13 @@
 #pragma once
 
+#include <grpcpp/grpcpp.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <thread>
-
-#include <grpcpp/grpcpp.h>
 
 #include "absl/synchronization/mutex.h"
 #include "absl/time/clock.h"
@@ -27,9 +27,13 @@ class WatchReactor : public grpc::ServerWriteReactor<Response> {
   // nullopt when there is nothing new to send.
   using Producer = std::function<std::optional<uint64_t>(uint64_t, bool, Response*)>;
 
-  WatchReactor(const MappingEngine& engine, const std::atomic<bool>& stopping, absl::Duration interval,
-               uint64_t since_revision, Producer next)
-      : engine_(engine), stopping_(stopping), interval_(interval), last_sent_(since_revision), next_(std::move(next)) {
+  WatchReactor(const MappingEngine& engine, const std::atomic<bool>& stopping,
+               absl::Duration interval, uint64_t since_revision, Producer next)
+      : engine_(engine),
+        stopping_(stopping),
+        interval_(interval),
+        last_sent_(since_revision),
+        next_(std::move(next)) {
     std::thread([this] { Run(); }).detach();
   }
 
@@ -58,7 +62,8 @@ class WatchReactor : public grpc::ServerWriteReactor<Response> {
     write_pending_ = true;
     this->StartWrite(&response_);
     mu_.Await(absl::Condition(
-        +[](WatchReactor* r) ABSL_EXCLUSIVE_LOCKS_REQUIRED(r->mu_) { return !r->write_pending_ || r->cancelled_; },
+        +[](WatchReactor* r)
+             ABSL_EXCLUSIVE_LOCKS_REQUIRED(r->mu_) { return !r->write_pending_ || r->cancelled_; },
         this));
     return !write_pending_ && write_ok_;
   }
@@ -82,8 +87,9 @@ class WatchReactor : public grpc::ServerWriteReactor<Response> {
       }
     }
     // Finish is the last touch of `this`: OnDone may delete it right after.
-    this->Finish(stopping_.load() && !Cancelled() ? grpc::Status(grpc::StatusCode::UNAVAILABLE, "server shutting down")
-                                                  : grpc::Status::OK);
+    this->Finish(stopping_.load() && !Cancelled()
+                     ? grpc::Status(grpc::StatusCode::UNAVAILABLE, "server shutting down")
+                     : grpc::Status::OK);
   }
 
   const MappingEngine& engine_;

@@ -82,7 +82,8 @@ std::vector<CameraPose> RoomTour(const SyntheticRoom& room, int count) {
     const double s = count > 1 ? static_cast<double>(i) / (count - 1) : 0.5;
     const Eigen::Vector3d position(0.8 + 1.6 * s, 0.6 + 0.4 * s, 1.2);
     const double angle = -0.6 + 1.8 * s;  // sweep from the right wall to the far-left corner
-    const Eigen::Vector3d target(room.size.x(), room.size.y() * 0.5 + 3.0 * std::tan(angle) * 0.5, 0.6);
+    const Eigen::Vector3d target(room.size.x(), room.size.y() * 0.5 + 3.0 * std::tan(angle) * 0.5,
+                                 0.6);
     poses.push_back(LookAt(position, target));
   }
   return poses;
@@ -106,7 +107,8 @@ SensorFrame RenderFrame(const SyntheticRoom& room, const CameraPose& pose, int64
     }
     frame.depth.data.assign(reinterpret_cast<const char*>(mm.data()), mm.size() * sizeof(uint16_t));
   } else {
-    frame.depth.data.assign(reinterpret_cast<const char*>(metres.data()), metres.size() * sizeof(float));
+    frame.depth.data.assign(reinterpret_cast<const char*>(metres.data()),
+                            metres.size() * sizeof(float));
   }
   return frame;
 }

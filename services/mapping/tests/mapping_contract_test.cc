@@ -1,15 +1,14 @@
 // Contract test: the real semnav-mapping binary on a loopback port, called through generated stubs.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <octomap/OcTree.h>
 #include <signal.h>
 
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <sstream>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
-#include <octomap/OcTree.h>
 
 #include "absl/time/clock.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
@@ -30,9 +29,11 @@ CameraPose Viewpoint() { return testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}
 
 // A room frame with a "table" detection around the static box, optionally with an embedding.
 v1::SensorFrame RoomFrame(int64_t stamp, std::vector<float> embedding = {}) {
-  v1::SensorFrame frame = testing::FrameToProto(testing::RenderFrame(testing::StandardRoom(), Viewpoint(), stamp));
+  v1::SensorFrame frame =
+      testing::FrameToProto(testing::RenderFrame(testing::StandardRoom(), Viewpoint(), stamp));
   const Intrinsics k = testing::Vga();
-  const Eigen::Vector3d c = Viewpoint().orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - Viewpoint().position);
+  const Eigen::Vector3d c =
+      Viewpoint().orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - Viewpoint().position);
   const double u = k.fx * c.x() / c.z() + k.cx;
   const double v = k.fy * c.y() / c.z() + k.cy;
   v1::Detection* det = frame.add_detections();
@@ -49,10 +50,12 @@ v1::SensorFrame RoomFrame(int64_t stamp, std::vector<float> embedding = {}) {
 class MappingContractTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    store_ = ::testing::TempDir() + "/mapping_contract_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    store_ = ::testing::TempDir() + "/mapping_contract_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name();
     std::filesystem::remove_all(store_);
     const std::string config = store_ + ".yaml";
-    std::ofstream(config) << "mapping:\n  store_directory: " << store_ << "\n  watch_min_interval_ms: 50\n";
+    std::ofstream(config) << "mapping:\n  store_directory: " << store_
+                          << "\n  watch_min_interval_ms: 50\n";
     absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> process =
         semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", config});
     ASSERT_TRUE(process.ok()) << process.status();
@@ -110,7 +113,8 @@ uint8_t CellAt(const semnav::common::v1::GridMap& grid, double x, double y) {
 }
 
 TEST_F(MappingContractTest, SyntheticRoomFramesBecomeGridAndSceneGraph) {
-  const std::vector<v1::FrameAck> acks = Stream({RoomFrame(kFrameNs), RoomFrame(2 * kFrameNs), RoomFrame(3 * kFrameNs)});
+  const std::vector<v1::FrameAck> acks =
+      Stream({RoomFrame(kFrameNs), RoomFrame(2 * kFrameNs), RoomFrame(3 * kFrameNs)});
   for (size_t i = 0; i < acks.size(); ++i) {
     EXPECT_TRUE(acks[i].accepted()) << acks[i].error().ShortDebugString();
     EXPECT_EQ(acks[i].sequence(), i);
@@ -122,7 +126,7 @@ TEST_F(MappingContractTest, SyntheticRoomFramesBecomeGridAndSceneGraph) {
   EXPECT_EQ(grid.revision(), 3u);
   EXPECT_EQ(grid.layers_size(), 6);
   EXPECT_EQ(grid.semantic_labels(0), "table");
-  EXPECT_EQ(CellAt(grid, 3.3, 1.3), 33);   // static box: h_o of its 0.825 m top voxel
+  EXPECT_EQ(CellAt(grid, 3.3, 1.3), 33);    // static box: h_o of its 0.825 m top voxel
   EXPECT_EQ(CellAt(grid, 5.99, 2.0), 100);  // far wall: structure
   EXPECT_EQ(CellAt(grid, 4.5, 2.0), 0);     // free floor
 
@@ -131,7 +135,8 @@ TEST_F(MappingContractTest, SyntheticRoomFramesBecomeGridAndSceneGraph) {
   EXPECT_EQ(scene.objects(0).label(), "table");
   EXPECT_EQ(scene.objects(0).observation_count(), 3u);
   EXPECT_NEAR(scene.objects(0).position().y(), 1.3, 0.1);
-  EXPECT_EQ(scene.summary(), "Scene has 1 objects in 1 regions. Region 0 (area_with_table): 1 table.");
+  EXPECT_EQ(scene.summary(),
+            "Scene has 1 objects in 1 regions. Region 0 (area_with_table): 1 table.");
 }
 
 TEST_F(MappingContractTest, BadFramesAreRejectedWithTheirFieldAndChangeNothing) {
@@ -145,12 +150,18 @@ TEST_F(MappingContractTest, BadFramesAreRejectedWithTheirFieldAndChangeNothing) 
     fields.push_back(field);
   };
   bad("depth.width", [](v1::SensorFrame& f) { f.mutable_intrinsics()->set_width(320); });
-  bad("depth.encoding", [](v1::SensorFrame& f) { f.mutable_depth()->set_encoding(semnav::common::v1::IMAGE_ENCODING_MONO8); });
-  bad("pose.orientation", [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_orientation()->set_w(0.5); });
-  bad("pose.position.x", [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_position()->set_x(std::nan("")); });
+  bad("depth.encoding", [](v1::SensorFrame& f) {
+    f.mutable_depth()->set_encoding(semnav::common::v1::IMAGE_ENCODING_MONO8);
+  });
+  bad("pose.orientation",
+      [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_orientation()->set_w(0.5); });
+  bad("pose.position.x",
+      [](v1::SensorFrame& f) { f.mutable_camera_pose()->mutable_position()->set_x(std::nan("")); });
   bad("stamp", [](v1::SensorFrame& f) { f.mutable_header()->mutable_stamp()->set_seconds(0); });
-  bad("detections[0].box", [](v1::SensorFrame& f) { f.mutable_detections(0)->mutable_box()->set_x_max(700); });
-  bad("detections[0].embedding", [](v1::SensorFrame& f) { f.mutable_detections(0)->add_embedding(0.5f); });
+  bad("detections[0].box",
+      [](v1::SensorFrame& f) { f.mutable_detections(0)->mutable_box()->set_x_max(700); });
+  bad("detections[0].embedding",
+      [](v1::SensorFrame& f) { f.mutable_detections(0)->add_embedding(0.5f); });
   frames.push_back(RoomFrame(12 * kFrameNs, embedding));  // the stream goes on
 
   const std::vector<v1::FrameAck> acks = Stream(frames);
@@ -160,7 +171,8 @@ TEST_F(MappingContractTest, BadFramesAreRejectedWithTheirFieldAndChangeNothing) 
     const v1::FrameAck& ack = acks[i + 1];
     EXPECT_FALSE(ack.accepted()) << fields[i];
     EXPECT_EQ(ack.error().field(), fields[i]);
-    EXPECT_EQ(ack.error().reason(), fields[i] == "stamp" ? "FAILED_PRECONDITION" : "INVALID_ARGUMENT");
+    EXPECT_EQ(ack.error().reason(),
+              fields[i] == "stamp" ? "FAILED_PRECONDITION" : "INVALID_ARGUMENT");
     EXPECT_EQ(ack.revision(), 1u) << fields[i];  // unchanged
   }
   EXPECT_TRUE(acks.back().accepted());
@@ -233,12 +245,9 @@ TEST_F(MappingContractTest, UnboundedWindowsAreRejectedAndTheServiceSurvives) {
   const struct {
     double min_x, max_x, max_y;
     const char* field;
-  } cases[] = {{0.0, inf, 1.0, "window.max.x"},
-               {-inf, 1.0, 1.0, "window.min.x"},
-               {0.0, 1e300, 1.0, "window.max.x"},
-               {0.0, std::nan(""), 1.0, "window.max.x"},
-               {0.0, 1e6, 1.0, "window.max.x"},
-               {-5000.0, 5000.0, 5000.0, "window"}};
+  } cases[] = {{0.0, inf, 1.0, "window.max.x"},   {-inf, 1.0, 1.0, "window.min.x"},
+               {0.0, 1e300, 1.0, "window.max.x"}, {0.0, std::nan(""), 1.0, "window.max.x"},
+               {0.0, 1e6, 1.0, "window.max.x"},   {-5000.0, 5000.0, 5000.0, "window"}};
   for (const auto& c : cases) {
     v1::Window window;
     window.mutable_min()->set_x(c.min_x);
@@ -253,7 +262,8 @@ TEST_F(MappingContractTest, UnboundedWindowsAreRejectedAndTheServiceSurvives) {
       v1::WatchGridMapResponse response;
       EXPECT_FALSE(reader->Read(&response));
       const grpc::Status status = reader->Finish();
-      EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << c.field << " " << status.error_message();
+      EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+          << c.field << " " << status.error_message();
       ASSERT_TRUE(GetDetail<ErrorInfo>(status).has_value()) << c.field;
       EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), c.field);
       EXPECT_LT(status.error_message().size(), 200u);
@@ -278,7 +288,8 @@ TEST_F(MappingContractTest, UnboundedWindowsAreRejectedAndTheServiceSurvives) {
 // (SIGTERM) discards it, so a fresh start begins empty.
 TEST_F(MappingContractTest, LiveMapSurvivesACrashButNotACleanStop) {
   const std::string config = store_ + "-live.yaml";
-  std::ofstream(config) << "mapping:\n  store_directory: " << store_ << "\n  live_snapshot_interval_s: 0.1\n";
+  std::ofstream(config) << "mapping:\n  store_directory: " << store_
+                        << "\n  live_snapshot_interval_s: 0.1\n";
   auto start = [&] {
     absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> process =
         semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", config});

@@ -1,11 +1,11 @@
 // Contract test: semnav-mapping fills the relocalization service's landmark maps by itself (the
 // real binaries on loopback): live scene-graph landmarks under mapping.landmarks.live_map_id,
 // and SaveMap / LoadMap carrying the landmark map under the same map id as the occupancy map.
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -27,9 +27,11 @@ CameraPose Viewpoint() { return testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}
 
 // A room frame with a "table" detection around the static box.
 v1::SensorFrame RoomFrame(int64_t stamp) {
-  v1::SensorFrame frame = testing::FrameToProto(testing::RenderFrame(testing::StandardRoom(), Viewpoint(), stamp));
+  v1::SensorFrame frame =
+      testing::FrameToProto(testing::RenderFrame(testing::StandardRoom(), Viewpoint(), stamp));
   const Intrinsics k = testing::Vga();
-  const Eigen::Vector3d c = Viewpoint().orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - Viewpoint().position);
+  const Eigen::Vector3d c =
+      Viewpoint().orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - Viewpoint().position);
   const double u = k.fx * c.x() / c.z() + k.cx;
   const double v = k.fy * c.y() / c.z() + k.cy;
   v1::Detection* det = frame.add_detections();
@@ -59,11 +61,12 @@ class MappingLandmarksContractTest : public ::testing::Test {
       reloc_stub_ = rv1::RelocalizationService::NewStub(relocalization_->channel());
     }
     const std::string config = store_ + ".yaml";
-    std::ofstream(config) << "mapping:\n  store_directory: " << store_
-                          << "\n  live_snapshot_interval_s: 0\n  landmarks:\n    labels: [chair, table]\n"
-                          << "    embedding_dim: 4\n    live_map_id: robot_x\n    interval_s: 0.1\n"
-                          << "    deadline_ms: 500\n    relocalization: {address: \"" << relocalization_address
-                          << "\"}\n";
+    std::ofstream(config)
+        << "mapping:\n  store_directory: " << store_
+        << "\n  live_snapshot_interval_s: 0\n  landmarks:\n    labels: [chair, table]\n"
+        << "    embedding_dim: 4\n    live_map_id: robot_x\n    interval_s: 0.1\n"
+        << "    deadline_ms: 500\n    relocalization: {address: \"" << relocalization_address
+        << "\"}\n";
     absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> mapping =
         semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", config});
     ASSERT_TRUE(mapping.ok()) << mapping.status();
@@ -96,7 +99,8 @@ class MappingLandmarksContractTest : public ::testing::Test {
       auto reader = reloc_stub_->GetLandmarkMap(&context, request);
       rv1::GetLandmarkMapResponse page;
       std::vector<rv1::Landmark> out;
-      while (reader->Read(&page)) out.insert(out.end(), page.landmarks().begin(), page.landmarks().end());
+      while (reader->Read(&page))
+        out.insert(out.end(), page.landmarks().begin(), page.landmarks().end());
       if (reader->Finish().ok() && !out.empty()) return out;
       absl::SleepFor(absl::Milliseconds(50));
     }
@@ -169,7 +173,8 @@ TEST_F(MappingLandmarksContractTest, ResetMapEmptiesTheLiveLandmarkMap) {
   v1::ResetMapRequest reset;
   reset.set_request_id("reset-1");
   v1::ResetMapResponse reset_done;
-  ASSERT_TRUE(Call([&](grpc::ClientContext* c) { return stub_->ResetMap(c, reset, &reset_done); }).ok());
+  ASSERT_TRUE(
+      Call([&](grpc::ClientContext* c) { return stub_->ResetMap(c, reset, &reset_done); }).ok());
   bool emptied = false;
   for (int i = 0; i < 100 && !emptied; ++i) {
     rv1::GetLandmarkMapRequest request;
@@ -218,11 +223,14 @@ TEST_F(MappingLandmarksContractTest, SaveMapAndLoadMapCarryTheLandmarkMapUnderTh
   rv1::DeleteLandmarkMapRequest forget;
   forget.set_map_id("kitchen");
   rv1::DeleteLandmarkMapResponse forgotten;
-  ASSERT_TRUE(Call([&](grpc::ClientContext* c) { return reloc_stub_->DeleteLandmarkMap(c, forget, &forgotten); }).ok());
+  ASSERT_TRUE(Call([&](grpc::ClientContext* c) {
+                return reloc_stub_->DeleteLandmarkMap(c, forget, &forgotten);
+              }).ok());
   v1::ResetMapRequest reset;
   reset.set_request_id("reset-1");
   v1::ResetMapResponse was_reset;
-  ASSERT_TRUE(Call([&](grpc::ClientContext* c) { return stub_->ResetMap(c, reset, &was_reset); }).ok());
+  ASSERT_TRUE(
+      Call([&](grpc::ClientContext* c) { return stub_->ResetMap(c, reset, &was_reset); }).ok());
   v1::LoadMapRequest load;
   load.set_request_id("load-kitchen");
   load.set_map_id("kitchen");
@@ -241,7 +249,8 @@ TEST_F(MappingLandmarksContractTest, SaveMapAndLoadMapCarryTheLandmarkMapUnderTh
   remove.set_request_id("delete-kitchen");
   remove.set_map_id("kitchen");
   v1::DeleteMapResponse removed;
-  ASSERT_TRUE(Call([&](grpc::ClientContext* c) { return stub_->DeleteMap(c, remove, &removed); }).ok());
+  ASSERT_TRUE(
+      Call([&](grpc::ClientContext* c) { return stub_->DeleteMap(c, remove, &removed); }).ok());
   EXPECT_FALSE(std::filesystem::exists(store_ + "/kitchen.lmap"));
 }
 
@@ -262,8 +271,8 @@ TEST_F(MappingLandmarksContractTest, MappingKeepsWorkingWithoutRelocalization) {
 TEST_F(MappingLandmarksContractTest, BadLandmarkConfigStopsTheServiceNamingTheKey) {
   const std::string config = ::testing::TempDir() + "/mapping_landmarks_bad.yaml";
   std::ofstream(config) << "mapping:\n  landmarks:\n    labels: [chair, chair]\n";
-  absl::StatusOr<semnav::testing::ProcessResult> run =
-      semnav::testing::RunToCompletion("semnav-mapping", {"--config", config, "--listen", "127.0.0.1:0"});
+  absl::StatusOr<semnav::testing::ProcessResult> run = semnav::testing::RunToCompletion(
+      "semnav-mapping", {"--config", config, "--listen", "127.0.0.1:0"});
   ASSERT_TRUE(run.ok()) << run.status();
   EXPECT_NE(run->exit_code, 0);
   EXPECT_NE(run->output.find("mapping.landmarks.labels[1]"), std::string::npos) << run->output;

@@ -31,7 +31,8 @@ std::optional<absl::Duration> StatedLatency(const std::map<std::string, std::str
   auto it = headers.find(kSimulatedLatencyHeader);
   double seconds = 0.0;
   // Finite, non-negative and at most a day: anything else is ignored (the wall time stands).
-  if (it == headers.end() || !absl::SimpleAtod(it->second, &seconds) || !(seconds >= 0.0) || seconds > 86400.0) {
+  if (it == headers.end() || !absl::SimpleAtod(it->second, &seconds) || !(seconds >= 0.0) ||
+      seconds > 86400.0) {
     return std::nullopt;
   }
   return absl::Seconds(seconds);
@@ -44,7 +45,8 @@ HttpBackend::HttpBackend(HttpBackendSpec spec, ApiKey key, std::shared_ptr<HttpT
       wire_(MakeWire(spec_.kind)) {}
 
 absl::StatusOr<HttpResponse> HttpBackend::PostForBody(const std::string& path,
-                                                      const std::string& body, absl::Time deadline) {
+                                                      const std::string& body,
+                                                      absl::Time deadline) {
   if (!configured()) {
     return absl::FailedPreconditionError(absl::StrCat("no API key (", key_.source(), " is empty)"));
   }

@@ -1,9 +1,8 @@
 #include "services/modelproxy/core/model_proxy.h"
 
-#include <type_traits>
-
 #include <algorithm>
 #include <atomic>
+#include <type_traits>
 
 #include "absl/random/random.h"
 #include "absl/status/status.h"
@@ -176,7 +175,8 @@ ModelProxy::ChainOutcome<Reply> ModelProxy::RunChain(
       if (reply.ok()) {
         m->breaker.RecordSuccess();
         absl::Duration reported = latency;
-        if constexpr (std::is_same_v<Reply, BackendReply>) reported = reply->stated_latency.value_or(latency);
+        if constexpr (std::is_same_v<Reply, BackendReply>)
+          reported = reply->stated_latency.value_or(latency);
         out.attempts.push_back(Attempt{m->entry.name, absl::OkStatus(), reported});
         out.reply = std::move(reply);
         out.backend = m->entry.name;
@@ -210,8 +210,8 @@ ModelProxy::ChainOutcome<Reply> ModelProxy::RunChain(
   } else if (!out.attempts.empty() &&
              out.attempts.back().status.code() == absl::StatusCode::kInvalidArgument) {
     // The request was valid here but every backend refused it (e.g. too long for its model).
-    out.reply = WithReason(absl::InvalidArgumentError(Summary(alias, out.attempts)),
-                           "BACKEND_REJECTED");
+    out.reply =
+        WithReason(absl::InvalidArgumentError(Summary(alias, out.attempts)), "BACKEND_REJECTED");
   } else {
     out.reply = WithReason(
         absl::UnavailableError(absl::StrCat("no backend answered; ", Summary(alias, out.attempts))),
@@ -276,7 +276,8 @@ absl::StatusOr<CompletionResult> ModelProxy::Complete(CompletionRequest request,
   usage_.RecordAnswer(caller, result.backend, result.reply.usage, result.cached);
   result.latency = absl::Now() - start;
   // A simulated backend's answer takes the time it states (simulated); a cache hit is immediate.
-  if (!result.cached && result.reply.stated_latency.has_value()) result.latency = *result.reply.stated_latency;
+  if (!result.cached && result.reply.stated_latency.has_value())
+    result.latency = *result.reply.stated_latency;
   return result;
 }
 

@@ -6,8 +6,8 @@
 #include <thread>
 
 #include "absl/strings/match.h"
-#include "services/common/status/field_error.h"
 #include "nlohmann/json.hpp"
+#include "services/common/status/field_error.h"
 #include "services/modelproxy/core/http_backend.h"
 #include "services/modelproxy/core/model_proxy.h"
 #include "services/modelproxy/core/offline/offline_backend.h"

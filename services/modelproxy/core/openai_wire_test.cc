@@ -69,7 +69,9 @@ TEST(ModelProxyOpenAiWireTest, MalformedBodiesAreDataLoss) {
 // Found by tests/fuzz (model_answer): numbers beyond the target type were converted anyway
 // (undefined behaviour).
 TEST(ModelProxyOpenAiWireTest, OutOfRangeNumbersAreRejectedOrIgnored) {
-  EXPECT_EQ(OpenAiWire::ParseEmbeddings(R"({"data":[{"index":0,"embedding":[1e300]}]})", 1).status().code(),
+  EXPECT_EQ(OpenAiWire::ParseEmbeddings(R"({"data":[{"index":0,"embedding":[1e300]}]})", 1)
+                .status()
+                .code(),
             absl::StatusCode::kDataLoss);
   const auto reply = OpenAiWire().ParseChat(
       R"({"choices":[{"message":{"content":"hi"}}],"usage":{"prompt_tokens":1e300,"completion_tokens":7.9}})");

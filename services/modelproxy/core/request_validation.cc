@@ -150,8 +150,7 @@ absl::Status ValidateCompletionRequest(const CompletionRequest& request) {
   }
   if (request.format == ResponseFormat::kJsonSchema) {
     if (!nlohmann::json::parse(request.json_schema, nullptr, false).is_object()) {
-      return InvalidField("json_schema",
-                          "must be a JSON object with RESPONSE_FORMAT_JSON_SCHEMA");
+      return InvalidField("json_schema", "must be a JSON object with RESPONSE_FORMAT_JSON_SCHEMA");
     }
   } else if (!request.json_schema.empty()) {
     return InvalidField("json_schema", "is only allowed with RESPONSE_FORMAT_JSON_SCHEMA");

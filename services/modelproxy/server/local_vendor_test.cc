@@ -2,7 +2,6 @@
 // configured the way docs/services/modelproxy.md shows: base URL, model name, no key or a key
 // file. Checked against the scripted vendor server.
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 
 #include <cstdio>
@@ -34,9 +33,10 @@ CompletionRequest Question(const std::string& text) {
 }
 
 std::string LocalConfig(const std::string& base_url, const std::string& key_line) {
-  return absl::StrCat("modelproxy:\n  backends:\n    local:\n      kind: openai\n      base_url: \"", base_url,
-                      "\"\n      model: qwen2.5-vl-7b-instruct\n", key_line,
-                      "  aliases:\n    default: [local, offline]\n    vision: [local]\n");
+  return absl::StrCat(
+      "modelproxy:\n  backends:\n    local:\n      kind: openai\n      base_url: \"", base_url,
+      "\"\n      model: qwen2.5-vl-7b-instruct\n", key_line,
+      "  aliases:\n    default: [local, offline]\n    vision: [local]\n");
 }
 
 TEST(ModelProxyLocalVendorTest, NoKeyServerIsCalledWithoutAuthorization) {
@@ -52,7 +52,8 @@ TEST(ModelProxyLocalVendorTest, NoKeyServerIsCalledWithoutAuthorization) {
   const std::vector<testing::SeenRequest> seen = server.seen(Route::kOpenAiChat);
   ASSERT_EQ(seen.size(), 1u);
   EXPECT_EQ(seen[0].headers.count("authorization"), 0u);
-  EXPECT_NE(seen[0].body.find("\"model\":\"qwen2.5-vl-7b-instruct\""), std::string::npos) << seen[0].body;
+  EXPECT_NE(seen[0].body.find("\"model\":\"qwen2.5-vl-7b-instruct\""), std::string::npos)
+      << seen[0].body;
   // Listed as configured although it has no key.
   for (const BackendStatus& b : built->proxy->ListBackends(absl::Now())) {
     if (b.name == "local") {
@@ -66,7 +67,8 @@ TEST(ModelProxyLocalVendorTest, KeyFileIsSentAsBearer) {
   const std::string path = absl::StrCat(::testing::TempDir(), "/local_vendor_key");
   std::ofstream(path) << "sk-local-123\n";
   ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
-  absl::StatusOr<BuiltProxy> built = Build(LocalConfig(server.base_url(), absl::StrCat("      api_key_file: \"", path, "\"\n")));
+  absl::StatusOr<BuiltProxy> built =
+      Build(LocalConfig(server.base_url(), absl::StrCat("      api_key_file: \"", path, "\"\n")));
   ASSERT_TRUE(built.ok()) << built.status();
   ASSERT_TRUE(built->proxy->Complete(Question("hi"), {}, absl::Now() + absl::Seconds(5)).ok());
   const std::vector<testing::SeenRequest> seen = server.seen(Route::kOpenAiChat);
@@ -83,9 +85,11 @@ TEST(ModelProxyLocalVendorTest, DownLocalServerFallsBackToOffline) {
   }
   absl::StatusOr<BuiltProxy> built = Build(LocalConfig(base_url, ""));
   ASSERT_TRUE(built.ok()) << built.status();
-  CompletionRequest request = Question(R"({"task": "match_target", "target": "cup", "candidates": [{"id": "1", "label": "cup"}]})");
+  CompletionRequest request = Question(
+      R"({"task": "match_target", "target": "cup", "candidates": [{"id": "1", "label": "cup"}]})");
   request.format = ResponseFormat::kJsonObject;
-  absl::StatusOr<CompletionResult> result = built->proxy->Complete(request, {}, absl::Now() + absl::Seconds(5));
+  absl::StatusOr<CompletionResult> result =
+      built->proxy->Complete(request, {}, absl::Now() + absl::Seconds(5));
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_EQ(result->backend, "offline");
 }
@@ -93,10 +97,13 @@ TEST(ModelProxyLocalVendorTest, DownLocalServerFallsBackToOffline) {
 // A simulated vendor states its (simulated) latency; a real one's is measured.
 TEST(ModelProxyLocalVendorTest, StatedLatencyReplacesTheMeasuredOne) {
   FakeVendorServer server;
-  server.Script(Route::kOpenAiChat,
-                {Action::Answer("Code: B2A, Description: x").WithHeader(kSimulatedLatencyHeader, "2.5"),
-                 Action::Answer("measured"), Action::Answer("bad").WithHeader(kSimulatedLatencyHeader, "nan")});
-  absl::StatusOr<BuiltProxy> built = Build(LocalConfig(server.base_url(), "") + "  cache: {capacity: 0}\n");
+  server.Script(
+      Route::kOpenAiChat,
+      {Action::Answer("Code: B2A, Description: x").WithHeader(kSimulatedLatencyHeader, "2.5"),
+       Action::Answer("measured"),
+       Action::Answer("bad").WithHeader(kSimulatedLatencyHeader, "nan")});
+  absl::StatusOr<BuiltProxy> built =
+      Build(LocalConfig(server.base_url(), "") + "  cache: {capacity: 0}\n");
   ASSERT_TRUE(built.ok()) << built.status();
   absl::StatusOr<CompletionResult> stated =
       built->proxy->Complete(Question("one"), {}, absl::Now() + absl::Seconds(5));

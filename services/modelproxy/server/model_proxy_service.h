@@ -5,8 +5,8 @@
 #include <string>
 
 #include "semnav/modelproxy/v1/modelproxy.grpc.pb.h"
-#include "services/modelproxy/core/model_proxy.h"
 #include "services/common/server/worker_pool.h"
+#include "services/modelproxy/core/model_proxy.h"
 
 namespace semnav::modelproxy {
 

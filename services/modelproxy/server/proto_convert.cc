@@ -77,7 +77,8 @@ absl::StatusOr<CompletionRequest> ToCore(const v1::CompleteRequest& request) {
     out.messages.push_back(std::move(m));
   }
   if (!v1::ResponseFormat_IsValid(request.response_format())) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "response_format", "unknown response format");
+    return FieldError(absl::StatusCode::kInvalidArgument, "response_format",
+                      "unknown response format");
   }
   switch (request.response_format()) {
     case v1::RESPONSE_FORMAT_JSON_OBJECT:

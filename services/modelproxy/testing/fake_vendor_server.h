@@ -24,9 +24,9 @@ enum class Route { kOpenAiChat, kAnthropicMessages, kOpenAiEmbeddings };
 struct Action {
   enum class Kind { kAnswer, kMalformedJson, kStatus, kTruncated, kEchoKeyError };
   Kind kind = Kind::kAnswer;
-  std::string text = "ok";  // answer text (kAnswer)
-  int status = 200;         // HTTP status (kStatus)
-  absl::Duration delay;     // sleep before answering (any kind)
+  std::string text = "ok";                     // answer text (kAnswer)
+  int status = 200;                            // HTTP status (kStatus)
+  absl::Duration delay;                        // sleep before answering (any kind)
   std::map<std::string, std::string> headers;  // extra response headers (any kind)
 
   static Action Answer(std::string text) { return {Kind::kAnswer, std::move(text), 200, {}, {}}; }

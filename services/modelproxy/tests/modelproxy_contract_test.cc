@@ -140,7 +140,8 @@ TEST_F(ModelProxyContractTest, OfflineDecomposesAndResolvesOpenVocabularyTargets
     EXPECT_TRUE(response.offline());
     return nlohmann::json::parse(response.json(), nullptr, false);
   };
-  const nlohmann::json plan = ask(R"({"task": "decompose", "instruction": "先去厨房，然后找红色的杯子"})");
+  const nlohmann::json plan =
+      ask(R"({"task": "decompose", "instruction": "先去厨房，然后找红色的杯子"})");
   ASSERT_EQ(plan["subgoals"].size(), 2u);
   EXPECT_EQ(plan["subgoals"][0]["type"], "NAVIGATE");
   EXPECT_EQ(plan["subgoals"][0]["target"], "kitchen");
@@ -326,8 +327,8 @@ TEST_F(ModelProxyContractTest, HostileRequestsNameTheFieldAndChangeNoUsage) {
   common::v1::Image* bomb = request.mutable_messages(0)->add_parts()->mutable_image();
   bomb->set_encoding(common::v1::IMAGE_ENCODING_PNG);
   // Signature and an IHDR declaring 100000 x 100000 pixels: 40 GB once decoded.
-  bomb->set_data(std::string(
-      "\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\x01\x86\xa0\0\x01\x86\xa0\x08\x02\0\0\0", 29));
+  bomb->set_data(
+      std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\x01\x86\xa0\0\x01\x86\xa0\x08\x02\0\0\0", 29));
   expect_named(Complete(request, &response), "messages[0].parts[1].image.data");
   request = TaskRequest();
   request.mutable_timeout()->set_seconds(-5);

@@ -25,8 +25,8 @@ constexpr size_t kRows = 300;  // the first rows of each scenario file (short to
 nlohmann::json RunGridPlannerSuite(const std::string& data_dir) {
   nlohmann::json out;
   std::printf("GridPlanner (PlanPath 2D) at 0.05 m cells: clearance off (JPS) vs on (A* + cost)\n");
-  std::printf("%-12s %5s %10s %10s %10s %10s %12s\n", "map", "rows", "off_med", "off_p99",
-              "on_med", "on_p99", "length_ratio");
+  std::printf("%-12s %5s %10s %10s %10s %10s %12s\n", "map", "rows", "off_med", "off_p99", "on_med",
+              "on_p99", "length_ratio");
   for (const MapFile& file : kMaps) {
     const std::string base = data_dir + "/" + file.path;
     absl::StatusOr<PassabilityGrid> map = LoadMovingAiMap(base);

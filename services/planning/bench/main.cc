@@ -29,12 +29,12 @@ const std::vector<semnav::FlagSpec> kFlags = {{"json", "FILE", ""},
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string usage =
-      absl::StrCat("usage: ", argv[0],
-                   " [--json FILE] [--only movingai|gridplanner|multimodal|rrtstar] [--rrtstar_seconds S]"
-                   " [--threads N] [--movingai_dir DIR]\n"
-                   "A*/JPS on every Moving AI row, multi-modal Jump A* (seed 003 Table 2) and the"
-                   " OMPL RRT* anchor.\n");
+  const std::string usage = absl::StrCat(
+      "usage: ", argv[0],
+      " [--json FILE] [--only movingai|gridplanner|multimodal|rrtstar] [--rrtstar_seconds S]"
+      " [--threads N] [--movingai_dir DIR]\n"
+      "A*/JPS on every Moving AI row, multi-modal Jump A* (seed 003 Table 2) and the"
+      " OMPL RRT* anchor.\n");
   // `semnav bench` callers may pass Google Benchmark's --benchmark_* flags to every bench; this
   // one has no Google Benchmark part and ignores them.
   std::vector<char*> args;

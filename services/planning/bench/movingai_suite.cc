@@ -64,8 +64,8 @@ nlohmann::json RunMovingAiSuite(const std::string& data_dir, int threads) {
     absl::StatusOr<PassabilityGrid> map = LoadMovingAiMap(base);
     absl::StatusOr<std::vector<MovingAiScenario>> rows = LoadMovingAiScenarios(base + ".scen");
     if (!map.ok() || !rows.ok()) {
-      std::fprintf(stderr, "cannot load %s: %s %s\n", base.c_str(),
-                   map.status().ToString().c_str(), rows.status().ToString().c_str());
+      std::fprintf(stderr, "cannot load %s: %s %s\n", base.c_str(), map.status().ToString().c_str(),
+                   rows.status().ToString().c_str());
       out["error"] = "missing Moving AI data";
       return out;
     }
@@ -98,17 +98,16 @@ nlohmann::json RunMovingAiSuite(const std::string& data_dir, int threads) {
     std::printf("%-16s %6d %5d %10.4f %10.4f %10.4f %10.4f %11.0f %11.0f %8.2f\n", file.name, n,
                 a.mismatches + j.mismatches, a_med, Quantile(a.ms, 0.99), j_med,
                 Quantile(j.ms, 0.99), a.expansions / n, j.expansions / n, speedup);
-    const nlohmann::json per_map = {
-        {"rows", n},
-        {"astar_mismatches", a.mismatches},
-        {"jps_mismatches", j.mismatches},
-        {"astar_ms_median", a_med},
-        {"astar_ms_p99", Quantile(a.ms, 0.99)},
-        {"jps_ms_median", j_med},
-        {"jps_ms_p99", Quantile(j.ms, 0.99)},
-        {"astar_expansions_mean", a.expansions / n},
-        {"jps_expansions_mean", j.expansions / n},
-        {"jps_speedup", speedup}};
+    const nlohmann::json per_map = {{"rows", n},
+                                    {"astar_mismatches", a.mismatches},
+                                    {"jps_mismatches", j.mismatches},
+                                    {"astar_ms_median", a_med},
+                                    {"astar_ms_p99", Quantile(a.ms, 0.99)},
+                                    {"jps_ms_median", j_med},
+                                    {"jps_ms_p99", Quantile(j.ms, 0.99)},
+                                    {"astar_expansions_mean", a.expansions / n},
+                                    {"jps_expansions_mean", j.expansions / n},
+                                    {"jps_speedup", speedup}};
     out["maps"][file.name] = per_map;
     for (const char* key : {"jps_ms_median", "astar_ms_median", "jps_speedup"}) {
       out[std::string(file.name) + "." + key] = per_map[key];

@@ -44,7 +44,8 @@ struct Series {
 // can time the query path and the background job separately.
 struct ServiceCache {
   std::vector<std::function<void()>> jobs;
-  JumpAStarCache cache{size_t{1} << 30, [this](std::function<void()> job) { jobs.push_back(std::move(job)); }};
+  JumpAStarCache cache{size_t{1} << 30,
+                       [this](std::function<void()> job) { jobs.push_back(std::move(job)); }};
   Timed RunJobs() {
     return Time([&] {
       for (auto& job : jobs) job();

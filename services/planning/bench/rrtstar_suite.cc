@@ -1,13 +1,13 @@
 #include "services/planning/bench/rrtstar_suite.h"
 
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/rrt/RRTstar.h>
 #include <ompl/util/Console.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 
 #include "services/planning/bench/timing.h"
 #include "services/planning/core/jump_astar.h"
@@ -88,9 +88,9 @@ nlohmann::json RunRrtStarSuite(double seconds) {
   setup.getProblemDefinition()->setIntermediateSolutionCallback(
       [&](const ob::Planner*, const std::vector<const ob::State*>&, const ob::Cost&) {
         if (first_solution_ms < 0) {
-          first_solution_ms = std::chrono::duration<double, std::milli>(
-                                  std::chrono::steady_clock::now() - t0)
-                                  .count();
+          first_solution_ms =
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                  .count();
         }
       });
   const double solve_ms = TimeMs([&] { setup.solve(seconds); });
@@ -101,8 +101,8 @@ nlohmann::json RunRrtStarSuite(double seconds) {
   const double ja_ms = TimeMs([&] { ja = *planner.Plan(map.grid, map.start, map.goal, {}); });
   std::printf("\nAnchor: OMPL RRT* (%.1f s budget) vs improved Jump A* (alpha = beta = 1)\n",
               seconds);
-  std::printf("%-10s %10s %16s %10s %8s %10s\n", "planner", "time_ms", "first_sol_ms",
-              "length_m", "fly_m", "energy_j");
+  std::printf("%-10s %10s %16s %10s %8s %10s\n", "planner", "time_ms", "first_sol_ms", "length_m",
+              "fly_m", "energy_j");
   if (!setup.haveExactSolutionPath()) {
     std::printf("RRT* found no exact solution in %.1f s\n", seconds);
     out["rrtstar_ms"] = solve_ms;

@@ -52,7 +52,8 @@ std::vector<float> ClearanceCost(const PassabilityGrid& inflated, double resolut
   for (int i = 0; i < inflated.size(); ++i) {
     if (d[i] <= 0.0f || d[i] > reach_cells + 1e-6) continue;
     const double beyond_m = (d[i] - 1.0) * resolution_m;
-    cost[i] = static_cast<float>(config.cost_penalty * std::exp(-config.cost_scaling_per_m * beyond_m));
+    cost[i] =
+        static_cast<float>(config.cost_penalty * std::exp(-config.cost_scaling_per_m * beyond_m));
   }
   return cost;
 }

@@ -20,11 +20,10 @@ std::optional<Cell> CoverageMaxGoal(const PassabilityGrid& free, Cell robot, dou
     // 0, +1, -1, +2, -2, ... turn steps away from the heading.
     const int side = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
     const double yaw = yaw_rad + side * config.turn_step_rad;
-    const Cell target{
-        std::clamp(static_cast<int>(std::lround(robot.x + reach * std::cos(yaw))), 0,
-                   free.width() - 1),
-        std::clamp(static_cast<int>(std::lround(robot.y + reach * std::sin(yaw))), 0,
-                   free.height() - 1)};
+    const Cell target{std::clamp(static_cast<int>(std::lround(robot.x + reach * std::cos(yaw))), 0,
+                                 free.width() - 1),
+                      std::clamp(static_cast<int>(std::lround(robot.y + reach * std::sin(yaw))), 0,
+                                 free.height() - 1)};
     // The farthest reachable cell on the ray towards the boundary point, so
     // an obstacle on the boundary itself does not discard the direction.
     std::optional<Cell> best;

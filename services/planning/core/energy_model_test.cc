@@ -1,8 +1,8 @@
 #include "services/planning/core/energy_model.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace semnav::planning {
 namespace {

@@ -49,8 +49,9 @@ int ViewpointGain(const ExplorationLayers& layers, Cell viewpoint, const EroiCon
   int gain = 0;
   for (int r = 0; r < config.rays; ++r) {
     const double angle = 2 * std::numbers::pi * r / config.rays;
-    const Cell end{static_cast<int>(std::lround(viewpoint.x + config.ray_range_cells * std::cos(angle))),
-                   static_cast<int>(std::lround(viewpoint.y + config.ray_range_cells * std::sin(angle)))};
+    const Cell end{
+        static_cast<int>(std::lround(viewpoint.x + config.ray_range_cells * std::cos(angle))),
+        static_cast<int>(std::lround(viewpoint.y + config.ray_range_cells * std::sin(angle)))};
     for (const Cell& c : LineCells(viewpoint, end)) {
       if (!layers.explored.Contains(c)) break;
       const int i = layers.explored.Index(c);
@@ -82,8 +83,10 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
     if (!Active(layers, x0, y0, d)) continue;
     for (int v = 0; v < config.viewpoints_per_eroi; ++v) {
       const double angle = 2 * std::numbers::pi * v / config.viewpoints_per_eroi;
-      const Cell c{static_cast<int>(std::lround(x0 + d / 2.0 + config.viewpoint_radius_cells * std::cos(angle))),
-                   static_cast<int>(std::lround(y0 + d / 2.0 + config.viewpoint_radius_cells * std::sin(angle)))};
+      const Cell c{static_cast<int>(
+                       std::lround(x0 + d / 2.0 + config.viewpoint_radius_cells * std::cos(angle))),
+                   static_cast<int>(std::lround(y0 + d / 2.0 +
+                                                config.viewpoint_radius_cells * std::sin(angle)))};
       if (!IsFree(layers.free, c.x, c.y) || layers.explored.at(c) == 0) continue;
       const int gain = ViewpointGain(layers, c, config);
       if (gain > 0) nodes.push_back({c, e, static_cast<double>(gain)});
@@ -131,7 +134,8 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
       }
     }
     for (size_t j = 1; j < nodes.size(); ++j) {
-      const double edge = std::hypot(nodes[j].cell.x - nodes[i].cell.x, nodes[j].cell.y - nodes[i].cell.y);
+      const double edge =
+          std::hypot(nodes[j].cell.x - nodes[i].cell.x, nodes[j].cell.y - nodes[i].cell.y);
       if (edge > config.connect_radius_cells || l + edge >= dist[j]) continue;
       if (!SegmentFree(layers.free, nodes[i].cell, nodes[j].cell)) continue;
       dist[j] = l + edge;

@@ -11,14 +11,14 @@ namespace semnav::planning {
 // EROI_UTILITY (seed 000 sec. 2.1.1, eq. 4, eq. 24, Algorithm 3) on the 2D
 // explored / obstacle layers. Lengths are in cells unless noted.
 struct EroiConfig {
-  int eroi_size_cells = 40;        // Delta: EROI edge (2 m at 5 cm)
-  int viewpoints_per_eroi = 8;     // samples on a circle round each EROI centre
+  int eroi_size_cells = 40;     // Delta: EROI edge (2 m at 5 cm)
+  int viewpoints_per_eroi = 8;  // samples on a circle round each EROI centre
   double viewpoint_radius_cells = 10.0;
-  int rays = 72;                   // rays cast per viewpoint for the geometric gain
-  double ray_range_cells = 100.0;  // sensor range (5 m at 5 cm)
+  int rays = 72;                       // rays cast per viewpoint for the geometric gain
+  double ray_range_cells = 100.0;      // sensor range (5 m at 5 cm)
   double connect_radius_cells = 60.0;  // roadmap edges up to this length
-  double lambda = 0.05;            // eq. 24 path-cost coefficient, per cell
-  double k = 0.8;                  // eq. 24 dynamic threshold tau = k max s
+  double lambda = 0.05;                // eq. 24 path-cost coefficient, per cell
+  double k = 0.8;                      // eq. 24 dynamic threshold tau = k max s
 };
 
 // A map cell's state for the EROI search.
@@ -28,13 +28,13 @@ struct ExplorationLayers {
 };
 
 struct EroiChoice {
-  Cell viewpoint;              // the chosen roadmap node x*
-  int eroi = 0;                // index of its EROI (row-major over the EROI grid)
-  double gain = 0.0;           // I: unknown cells hit by its rays
-  double semantic = 0.0;       // s(x*)
-  double path_cells = 0.0;     // L: roadmap path length from the robot
-  double utility = 0.0;        // U by eq. 24
-  std::vector<Cell> route;     // roadmap nodes from the robot to x*
+  Cell viewpoint;           // the chosen roadmap node x*
+  int eroi = 0;             // index of its EROI (row-major over the EROI grid)
+  double gain = 0.0;        // I: unknown cells hit by its rays
+  double semantic = 0.0;    // s(x*)
+  double path_cells = 0.0;  // L: roadmap path length from the robot
+  double utility = 0.0;     // U by eq. 24
+  std::vector<Cell> route;  // roadmap nodes from the robot to x*
 };
 
 // Number of EROIs for a grid: ceil(w / Delta) x ceil(h / Delta).

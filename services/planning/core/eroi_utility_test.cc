@@ -25,7 +25,7 @@ TEST(EroiUtility, ViewpointGainCountsUnknownCellsUntilAnObstacle) {
   config.rays = 4;  // east, north, west, south
   config.ray_range_cells = 5;
   EXPECT_EQ(ViewpointGain(layers, {10, 10}, config), 20);  // 4 rays x 5 unknown cells
-  layers.explored.at(12, 10) = 1;  // an explored obstacle 2 cells east
+  layers.explored.at(12, 10) = 1;                          // an explored obstacle 2 cells east
   EXPECT_EQ(ViewpointGain(layers, {10, 10}, config), 16);  // east ray: 1 cell, then stops
 }
 
@@ -71,8 +71,8 @@ TEST(EroiUtility, PathCostFavoursTheNearerEroiBelowTheThreshold) {
   std::optional<EroiChoice> choice = SelectEroiGoal(layers, {2, 15}, {0.3, 0.0, 0.3}, config);
   ASSERT_TRUE(choice.has_value());
   EXPECT_EQ(choice->eroi, 0);
-  EXPECT_NEAR(choice->utility,
-              choice->gain * 0.3 * std::exp(-config.lambda * choice->path_cells), 1e-12);
+  EXPECT_NEAR(choice->utility, choice->gain * 0.3 * std::exp(-config.lambda * choice->path_cells),
+              1e-12);
   // Without semantic values (uniform 1/3 > 0.8 / 3) the gain alone decides.
   std::optional<EroiChoice> uniform = SelectEroiGoal(layers, {2, 15}, {}, SmallConfig());
   ASSERT_TRUE(uniform.has_value());

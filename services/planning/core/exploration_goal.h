@@ -50,7 +50,7 @@ struct ExplorationGoalConfig {
   FrontierScoreConfig score;  // seed 002 terms (reported; SEMANTIC_FRONTIER with value map off)
   FrontierValueConfig value;  // SEMANTIC_FRONTIER's value map
   CoverageGoalConfig coverage;
-  EroiConfig eroi;            // cells
+  EroiConfig eroi;  // cells
 };
 
 // Frontiers with the excluded cells removed, their path distances and scores.

@@ -9,10 +9,10 @@ namespace semnav::planning {
 // An object the caller relates to the instruction (from the scene graph
 // and the reasoning service), all scores in [0, 1].
 struct ScoredObject {
-  Point2 position;             // metres
-  double relevance = 0.0;      // language match with the instruction target
-  double relation = 0.0;       // on the instruction's relation chain (e.g. the table for "cup on table")
-  double cooccurrence = 0.0;   // commonsense co-occurrence with the target (e.g. ConceptNet)
+  Point2 position;         // metres
+  double relevance = 0.0;  // language match with the instruction target
+  double relation = 0.0;  // on the instruction's relation chain (e.g. the table for "cup on table")
+  double cooccurrence = 0.0;  // commonsense co-occurrence with the target (e.g. ConceptNet)
 };
 
 // Seed 002 sec. 3.2.4 (MTU3D-style) weights; the seed fixes the four term
@@ -30,7 +30,7 @@ struct FrontierScoreConfig {
 };
 
 struct FrontierCandidate {
-  Point2 centroid;            // metres
+  Point2 centroid;             // metres
   double path_distance_m = 0;  // from the robot; < 0 = unreachable
 };
 

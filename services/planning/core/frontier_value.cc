@@ -75,8 +75,7 @@ std::vector<int> Regions(const std::vector<FrontierCandidate>& candidates, doubl
 
 std::vector<FrontierValue> ValueFrontiers(const std::vector<Frontier>& frontiers,
                                           const std::vector<FrontierCandidate>& candidates,
-                                          const CellGrid<uint8_t>& explored,
-                                          double resolution_m,
+                                          const CellGrid<uint8_t>& explored, double resolution_m,
                                           const std::vector<ScoredObject>& objects,
                                           const FrontierValueConfig& config) {
   std::vector<FrontierValue> values(frontiers.size());

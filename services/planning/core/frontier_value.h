@@ -24,13 +24,13 @@ namespace semnav::planning {
 struct FrontierValueConfig {
   // Opt-in: on, the demo episode (SimLoopIntegrationTest.SearchEpisodeFindsTheCouchOutOfSight)
   // explores the far rooms first and runs out of budget; see docs/performance/mission.md.
-  bool enabled = false;              // false: SEMANTIC_FRONTIER takes the best seed 002 total
-  double evidence_sigma_m = 2.0;     // spread of an object's evidence: about half a room
-  double semantic_gain = 2.0;        // a frontier at full evidence counts 3x the unknown area
-  double gain_radius_m = 3.0;        // sensor range the gain is counted within
-  double distance_decay_per_m = 0.2; // Gonzalez-Banos & Latombe: U = G exp(-lambda C)
-  double region_link_m = 3.0;        // seed 002's 3 m region clustering
-  double min_gain_m2 = 0.25;         // one robot footprint
+  bool enabled = false;               // false: SEMANTIC_FRONTIER takes the best seed 002 total
+  double evidence_sigma_m = 2.0;      // spread of an object's evidence: about half a room
+  double semantic_gain = 2.0;         // a frontier at full evidence counts 3x the unknown area
+  double gain_radius_m = 3.0;         // sensor range the gain is counted within
+  double distance_decay_per_m = 0.2;  // Gonzalez-Banos & Latombe: U = G exp(-lambda C)
+  double region_link_m = 3.0;         // seed 002's 3 m region clustering
+  double min_gain_m2 = 0.25;          // one robot footprint
 };
 
 struct FrontierValue {
@@ -44,8 +44,7 @@ struct FrontierValue {
 // distances in metres, as ExtractFrontiers / BuildView give them).
 std::vector<FrontierValue> ValueFrontiers(const std::vector<Frontier>& frontiers,
                                           const std::vector<FrontierCandidate>& candidates,
-                                          const CellGrid<uint8_t>& explored,
-                                          double resolution_m,
+                                          const CellGrid<uint8_t>& explored, double resolution_m,
                                           const std::vector<ScoredObject>& objects,
                                           const FrontierValueConfig& config);
 

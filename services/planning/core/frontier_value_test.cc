@@ -1,8 +1,8 @@
 #include "services/planning/core/frontier_value.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "services/planning/core/exploration_goal.h"
 
@@ -89,12 +89,13 @@ TEST(FrontierValue, RegionFirstThenTheBestFrontierInIt) {
 TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesThePocket) {
   // The robot at (4, 1). West: a one-cell pocket 2 cells away. East: a 4 x 3 unknown room
   // behind a frontier 3 cells away.
-  const ExplorationGrid grid = GridOf({
-                                          "#########????",
-                                          "?.......?????",
-                                          "#########????",
-                                      },
-                                      0.5);
+  const ExplorationGrid grid = GridOf(
+      {
+          "#########????",
+          "?.......?????",
+          "#########????",
+      },
+      0.5);
   ExplorationQuery query;
   query.robot = {4, 1};
   query.min_frontier_cells = 1;
@@ -124,8 +125,8 @@ TEST(SelectExplorationGoal, NothingReachableIsNotFoundWithItsReason) {
   const ExplorationGrid grid = GridOf({"...", "...", "..."}, 0.5);
   ExplorationQuery query;
   query.robot = {1, 1};
-  for (ExplorationStrategy s : {ExplorationStrategy::kNearestFrontier,
-                                ExplorationStrategy::kSemanticFrontier}) {
+  for (ExplorationStrategy s :
+       {ExplorationStrategy::kNearestFrontier, ExplorationStrategy::kSemanticFrontier}) {
     absl::StatusOr<ExplorationChoice> choice = SelectExplorationGoal(grid, query, s, {});
     EXPECT_EQ(choice.status().code(), absl::StatusCode::kNotFound);
   }

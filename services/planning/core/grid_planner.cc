@@ -6,11 +6,11 @@
 #include "absl/strings/str_cat.h"
 #include "services/common/status/field_error.h"
 #include "services/planning/core/alternative_point.h"
-#include "services/planning/core/octile.h"
 #include "services/planning/core/inflation.h"
+#include "services/planning/core/octile.h"
+#include "services/planning/core/path_shortcut.h"
 #include "services/planning/core/plan_failure.h"
 #include "services/planning/core/reachability.h"
-#include "services/planning/core/path_shortcut.h"
 
 namespace semnav::planning {
 namespace {
@@ -64,7 +64,8 @@ std::optional<Cell> NearestFreeCell(const PassabilityGrid& grid, Cell start, Cel
       const long d2 = long{dx} * dx + long{dy} * dy;
       const Cell c{start.x + dx, start.y + dy};
       if (d2 > radius * radius || !IsFree(grid, c.x, c.y)) continue;
-      const long goal_d2 = long{c.x - goal.x} * (c.x - goal.x) + long{c.y - goal.y} * (c.y - goal.y);
+      const long goal_d2 =
+          long{c.x - goal.x} * (c.x - goal.x) + long{c.y - goal.y} * (c.y - goal.y);
       if (!best || d2 < best_d2 || (d2 == best_d2 && goal_d2 < best_goal_d2)) {
         best = c;
         best_d2 = d2;
@@ -82,8 +83,8 @@ struct Padding {
 };
 
 Padding PaddingFor(const PassabilityGrid& grid, Cell start) {
-  return {std::max(0, -start.x), std::max(0, start.x - (grid.width() - 1)),
-          std::max(0, -start.y), std::max(0, start.y - (grid.height() - 1))};
+  return {std::max(0, -start.x), std::max(0, start.x - (grid.width() - 1)), std::max(0, -start.y),
+          std::max(0, start.y - (grid.height() - 1))};
 }
 
 Padding Union(const Padding& a, const Padding& b) {
@@ -108,7 +109,8 @@ Cell Shift(Cell c, int dx, int dy) { return {c.x + dx, c.y + dy}; }
 absl::StatusOr<GridPath> GridPlanner::Search(const PassabilityGrid& grid, Cell start, Cell goal,
                                              const GridPlanRequest& request) {
   if (!clearance_cost_.empty()) {
-    absl::StatusOr<GridPath> path = astar_.Plan(grid, start, goal, request.limits, &clearance_cost_);
+    absl::StatusOr<GridPath> path =
+        astar_.Plan(grid, start, goal, request.limits, &clearance_cost_);
     if (path.ok()) {
       path->waypoints = ShortcutPath(grid, clearance_cost_, path->waypoints);
       path->length_cells = PolylineLengthCells(path->waypoints);
@@ -135,12 +137,12 @@ absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original
     // then grows past as the robot arrives.
     const Cell edge{std::clamp(request.goal.x, 0, request.free.width() - 1),
                     std::clamp(request.goal.y, 0, request.free.height() - 1)};
-    const double outside_m = std::hypot(edge.x - request.goal.x, edge.y - request.goal.y) *
-                             request.resolution_m;
+    const double outside_m =
+        std::hypot(edge.x - request.goal.x, edge.y - request.goal.y) * request.resolution_m;
     if (outside_m > config_.max_goal_outside_m) {
-      return InvalidField("goal", absl::StrCat("goal (", request.goal.x, ", ", request.goal.y,
-                                               ") is outside the ", request.free.width(), " x ",
-                                               request.free.height(), " grid"));
+      return InvalidField(
+          "goal", absl::StrCat("goal (", request.goal.x, ", ", request.goal.y, ") is outside the ",
+                               request.free.width(), " x ", request.free.height(), " grid"));
     }
     requested_goal = request.goal;
     request.goal = edge;
@@ -148,27 +150,29 @@ absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original
   absl::StatusOr<GridPlanResult> result = PlanPadded(request, /*pad_to_goal=*/false);
   if (result.ok() && requested_goal) {
     result->goal_adjusted = true;
-    result->adjustment_reason = result->adjustment_reason.empty()
-                                    ? "goal outside the grid moved to the grid's edge"
-                                    : absl::StrCat("goal outside the grid moved to the grid's edge; ",
-                                                   result->adjustment_reason);
+    result->adjustment_reason =
+        result->adjustment_reason.empty()
+            ? "goal outside the grid moved to the grid's edge"
+            : absl::StrCat("goal outside the grid moved to the grid's edge; ",
+                           result->adjustment_reason);
   }
   return result;
 }
 
-absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& request, bool pad_to_goal) {
+absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& request,
+                                                       bool pad_to_goal) {
   const Padding to_start = PaddingFor(request.free, request.start);
-  const Padding pad = pad_to_goal ? Union(to_start, PaddingFor(request.free, request.goal)) : to_start;
+  const Padding pad =
+      pad_to_goal ? Union(to_start, PaddingFor(request.free, request.goal)) : to_start;
   if (!pad.any()) return PlanInside(request);
-  const double outside_m = std::hypot(std::max(to_start.left, to_start.right),
-                                      std::max(to_start.bottom, to_start.top)) *
-                           request.resolution_m;
+  const double outside_m =
+      std::hypot(std::max(to_start.left, to_start.right), std::max(to_start.bottom, to_start.top)) *
+      request.resolution_m;
   if (outside_m > config_.max_start_outside_m) {
-    return InvalidField("start", absl::StrCat("start (", request.start.x, ", ", request.start.y,
-                                              ") is ", outside_m, " m outside the ",
-                                              request.free.width(), " x ", request.free.height(),
-                                              " grid (max_start_outside_m ",
-                                              config_.max_start_outside_m, ")"));
+    return InvalidField(
+        "start", absl::StrCat("start (", request.start.x, ", ", request.start.y, ") is ", outside_m,
+                              " m outside the ", request.free.width(), " x ", request.free.height(),
+                              " grid (max_start_outside_m ", config_.max_start_outside_m, ")"));
   }
   // The robot stands there, so the strip between it and the map is taken as free; so is the
   // strip out to a goal beyond the map when outside counts as free.
@@ -177,7 +181,8 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& re
   padded.obstacle_probability = Padded<uint8_t>(request.obstacle_probability, pad, 0);
   padded.start = Shift(request.start, pad.left, pad.bottom);
   padded.goal = Shift(request.goal, pad.left, pad.bottom);
-  if (padded.first_sighting) padded.first_sighting = Shift(*request.first_sighting, pad.left, pad.bottom);
+  if (padded.first_sighting)
+    padded.first_sighting = Shift(*request.first_sighting, pad.left, pad.bottom);
   absl::StatusOr<GridPlanResult> result = PlanInside(padded);
   if (!result.ok()) return result;
   for (Cell& c : result->path.waypoints) c = Shift(c, -pad.left, -pad.bottom);
@@ -193,8 +198,8 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& or
   GridPlanRequest request = original;
   if (grid.Contains(original.start) && grid.at(original.start) == 0 &&
       config_.start_snap_radius_m > 0.0) {
-    const std::optional<Cell> free =
-        NearestFreeCell(grid, original.start, original.goal, config_.start_snap_radius_m / original.resolution_m);
+    const std::optional<Cell> free = NearestFreeCell(
+        grid, original.start, original.goal, config_.start_snap_radius_m / original.resolution_m);
     if (!free) {
       return MakePlanFailure(PlanFailure::kStartOccupied,
                              absl::StrCat("start (", original.start.x, ", ", original.start.y,
@@ -215,9 +220,8 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& or
     // next to a counter). Leave it for the nearest cell within the snap radius the goal can be
     // reached from.
     const std::vector<uint8_t> to_goal = ReachableFrom(grid, request.goal);
-    const std::optional<Cell> exit =
-        NearestFreeWithin(grid, to_goal, original.start,
-                          config_.start_snap_radius_m / original.resolution_m);
+    const std::optional<Cell> exit = NearestFreeWithin(
+        grid, to_goal, original.start, config_.start_snap_radius_m / original.resolution_m);
     if (exit && !(*exit == request.start)) {
       request.start = *exit;
       result = PlanStages(grid, request);

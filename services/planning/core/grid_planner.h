@@ -62,13 +62,13 @@ struct GridPlanRequest {
 
 struct GridPlanResult {
   GridPath path;
-  Cell planned_goal;               // the goal actually planned to
-  Cell planned_start;              // the free cell the search began from
-  bool start_adjusted = false;     // the start was occupied and moved to planned_start
-  bool grid_padded = false;        // the start lay outside the grid, which was padded
-  bool goal_adjusted = false;      // moved within goal_tolerance_m
-  bool alternative_used = false;   // replaced by the seed 004 alternative point
-  std::string adjustment_reason;   // why the goal changed; empty when it did not
+  Cell planned_goal;              // the goal actually planned to
+  Cell planned_start;             // the free cell the search began from
+  bool start_adjusted = false;    // the start was occupied and moved to planned_start
+  bool grid_padded = false;       // the start lay outside the grid, which was padded
+  bool goal_adjusted = false;     // moved within goal_tolerance_m
+  bool alternative_used = false;  // replaced by the seed 004 alternative point
+  std::string adjustment_reason;  // why the goal changed; empty when it did not
   bool low_probability_cells_used = false;
 };
 

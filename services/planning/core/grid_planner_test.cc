@@ -317,14 +317,14 @@ TEST(GridPlanner, GapNarrowerThanTheRobotIsRefusedWithClearanceOn) {
 
 TEST(ClearanceCost, DecaysExponentiallyWithDistance) {
   const PassabilityGrid grid = GridFromRows({"@......"});
-  const std::vector<float> cost =
-      ClearanceCost(grid, 0.1, {.clearance_m = 0.3, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0});
+  const std::vector<float> cost = ClearanceCost(
+      grid, 0.1, {.clearance_m = 0.3, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0});
   ASSERT_EQ(cost.size(), 7u);
-  EXPECT_FLOAT_EQ(cost[0], 0.0f);                          // blocked
-  EXPECT_FLOAT_EQ(cost[1], 2.0f);                          // next to it
-  EXPECT_NEAR(cost[2], 2.0 * std::exp(-0.3), 1e-6);        // 0.1 m further
+  EXPECT_FLOAT_EQ(cost[0], 0.0f);                    // blocked
+  EXPECT_FLOAT_EQ(cost[1], 2.0f);                    // next to it
+  EXPECT_NEAR(cost[2], 2.0 * std::exp(-0.3), 1e-6);  // 0.1 m further
   EXPECT_NEAR(cost[3], 2.0 * std::exp(-0.6), 1e-6);
-  EXPECT_FLOAT_EQ(cost[4], 0.0f);                          // 0.4 m: beyond clearance_m
+  EXPECT_FLOAT_EQ(cost[4], 0.0f);  // 0.4 m: beyond clearance_m
   EXPECT_TRUE(ClearanceCost(PassabilityGrid(4, 4, 1), 0.1, {}).empty());  // nothing blocked
 }
 

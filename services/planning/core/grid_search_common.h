@@ -1,10 +1,10 @@
 #pragma once
 
 #include "absl/status/status.h"
-#include "services/planning/core/plan_failure.h"
-#include "services/planning/core/search_limits.h"
 #include "services/planning/core/cell_grid.h"
 #include "services/planning/core/grid_path.h"
+#include "services/planning/core/plan_failure.h"
+#include "services/planning/core/search_limits.h"
 #include "services/planning/core/search_workspace.h"
 
 namespace semnav::planning {

@@ -54,8 +54,7 @@ TEST(JpsPlanner, TypedFailuresMatchAStar) {
   EXPECT_EQ(PlanFailureOf(planner.Plan(grid, {0, 0}, {2, 0}).status()), PlanFailure::kNoPath);
   EXPECT_EQ(PlanFailureOf(planner.Plan(grid, {1, 1}, {0, 0}).status()),
             PlanFailure::kStartOccupied);
-  EXPECT_EQ(PlanFailureOf(planner.Plan(grid, {0, 0}, {2, 2}).status()),
-            PlanFailure::kGoalOccupied);
+  EXPECT_EQ(PlanFailureOf(planner.Plan(grid, {0, 0}, {2, 2}).status()), PlanFailure::kGoalOccupied);
 }
 
 TEST(JpsPlanner, SameLengthAsAStarOnRandomGrids) {

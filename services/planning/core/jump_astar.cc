@@ -74,7 +74,8 @@ void Summarise(const LayeredGrid& grid, const JumpAStarOptions& options, MultiMo
 absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell goal) {
   for (auto [cell, field] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
     if (!grid.Contains(cell)) {
-      return InvalidField(field, absl::StrCat(field, " (", cell.x, ", ", cell.y, ") is outside the grid"));
+      return InvalidField(field,
+                          absl::StrCat(field, " (", cell.x, ", ", cell.y, ") is outside the grid"));
     }
   }
   if (grid.at(start) >= kStructureValue) {

@@ -22,7 +22,8 @@ namespace semnav::planning {
 // Keyed by the grid content (hash, confirmed by a full compare) and the
 // step costs, so inline grids and live maps are treated alike and a changed
 // map is a new entry; least recently used entries are dropped while the
-// cache holds more than `budget_bytes` (the newest entry always stays). Results are exactly those of JumpAStarPlanner. Thread-safe.
+// cache holds more than `budget_bytes` (the newest entry always stays). Results are exactly those
+// of JumpAStarPlanner. Thread-safe.
 class JumpAStarCache {
  public:
   using RunLater = std::function<void(std::function<void()>)>;

@@ -24,8 +24,7 @@ bool HasStraightForcedNeighbour(const Space& space, Cell c, int dx, int dy) {
 
 template <typename Space>
 bool CanStepDiagonal(const Space& space, Cell c, int dx, int dy) {
-  return space.Free(c.x + dx, c.y + dy) && space.Free(c.x + dx, c.y) &&
-         space.Free(c.x, c.y + dy);
+  return space.Free(c.x + dx, c.y + dy) && space.Free(c.x + dx, c.y) && space.Free(c.x, c.y + dy);
 }
 
 // Scans from `from` along a cardinal direction; true with the jump point in

@@ -29,8 +29,8 @@ absl::StatusOr<PassabilityGrid> LoadMovingAiMap(const std::string& path) {
   std::string row;
   for (int y = 0; y < height; ++y) {
     if (!(in >> row) || static_cast<int>(row.size()) != width) {
-      return absl::InvalidArgumentError(absl::StrCat(path, ": map row ", y, " is not ", width,
-                                                     " characters"));
+      return absl::InvalidArgumentError(
+          absl::StrCat(path, ": map row ", y, " is not ", width, " characters"));
     }
     for (int x = 0; x < width; ++x) grid.at(x, y) = Passable(row[x]) ? 1 : 0;
   }

@@ -20,8 +20,10 @@ double StepCost(const PassabilityGrid& grid, const std::vector<float>& cost, Cel
 
 // Cost of the straight segment between the centres of a and b (each cell's share of its length
 // x (1 + its extra)), or nullopt when it touches a blocked cell. Walks the cells in order
-// (Amanatides-Woo); where the segment passes exactly through a corner, both side cells must be free.
-std::optional<double> SegmentCost(const PassabilityGrid& grid, const std::vector<float>& cost, Cell a, Cell b) {
+// (Amanatides-Woo); where the segment passes exactly through a corner, both side cells must be
+// free.
+std::optional<double> SegmentCost(const PassabilityGrid& grid, const std::vector<float>& cost,
+                                  Cell a, Cell b) {
   const int dx = b.x - a.x, dy = b.y - a.y;
   const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
   const int nx = std::abs(dx), ny = std::abs(dy);
@@ -46,7 +48,8 @@ std::optional<double> SegmentCost(const PassabilityGrid& grid, const std::vector
       t = (2.0 * iy + 1.0) / (2.0 * ny);
       ++iy;
     } else {
-      if (!IsFree(grid, at.x + step_x, at.y) || !IsFree(grid, at.x, at.y + step_y)) return std::nullopt;
+      if (!IsFree(grid, at.x + step_x, at.y) || !IsFree(grid, at.x, at.y + step_y))
+        return std::nullopt;
       next.x += step_x;
       next.y += step_y;
       t = (2.0 * ix + 1.0) / (2.0 * nx);
@@ -63,7 +66,8 @@ std::optional<double> SegmentCost(const PassabilityGrid& grid, const std::vector
 
 }  // namespace
 
-std::vector<Cell> ShortcutPath(const PassabilityGrid& grid, const std::vector<float>& clearance_cost,
+std::vector<Cell> ShortcutPath(const PassabilityGrid& grid,
+                               const std::vector<float>& clearance_cost,
                                const std::vector<Cell>& cells) {
   if (cells.size() <= 2) return cells;
   // Tolerance for the rounding of the two sums, relative.
@@ -75,7 +79,8 @@ std::vector<Cell> ShortcutPath(const PassabilityGrid& grid, const std::vector<fl
     double run_cost = StepCost(grid, clearance_cost, cells[anchor], cells[reach]);
     for (std::size_t j = anchor + 2; j < cells.size(); ++j) {
       run_cost += StepCost(grid, clearance_cost, cells[j - 1], cells[j]);
-      const std::optional<double> straight = SegmentCost(grid, clearance_cost, cells[anchor], cells[j]);
+      const std::optional<double> straight =
+          SegmentCost(grid, clearance_cost, cells[anchor], cells[j]);
       if (!straight.has_value() || *straight > run_cost * (1.0 + kSlack)) break;
       reach = j;
     }

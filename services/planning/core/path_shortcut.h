@@ -16,7 +16,8 @@ namespace semnav::planning {
 // 8-connected staircase of an A* path becomes a few straight legs, which a robot that turns in
 // place at every bend drives much faster. `clearance_cost` is per cell (ClearanceCost); empty =
 // length only.
-std::vector<Cell> ShortcutPath(const PassabilityGrid& grid, const std::vector<float>& clearance_cost,
+std::vector<Cell> ShortcutPath(const PassabilityGrid& grid,
+                               const std::vector<float>& clearance_cost,
                                const std::vector<Cell>& cells);
 
 // Euclidean length of a polyline, in cells.

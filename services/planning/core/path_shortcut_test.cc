@@ -45,7 +45,8 @@ TEST(ShortcutPath, KeepsTheCornerOfAnLShapedPath) {
   const std::vector<Cell> path = ShortcutPath(grid, {}, cells);
   ASSERT_EQ(path.size(), 3u);
   EXPECT_EQ(path[1], (Cell{0, 0}));
-  for (const Cell& c : CellsAlongLegs(path)) EXPECT_TRUE(IsFree(grid, c.x, c.y)) << c.x << "," << c.y;
+  for (const Cell& c : CellsAlongLegs(path))
+    EXPECT_TRUE(IsFree(grid, c.x, c.y)) << c.x << "," << c.y;
 }
 
 TEST(ShortcutPath, DoesNotSqueezeThroughADiagonalCorner) {
@@ -70,8 +71,8 @@ TEST(ShortcutPath, NeverTradesClearanceForLength) {
   std::vector<std::string> rows(9, std::string(40, '.'));
   rows[0] = rows[8] = std::string(40, '@');
   const PassabilityGrid grid = GridFromRows(rows);
-  const std::vector<float> cost =
-      ClearanceCost(grid, 0.1, {.clearance_m = 0.4, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0});
+  const std::vector<float> cost = ClearanceCost(
+      grid, 0.1, {.clearance_m = 0.4, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0});
   std::vector<Cell> cells = Staircase({1, 1}, {4, 4});
   for (const Cell& c : Staircase({4, 4}, {35, 4})) {
     if (!(c == cells.back())) cells.push_back(c);

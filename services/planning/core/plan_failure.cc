@@ -23,9 +23,7 @@ constexpr std::array<FailureInfo, 5> kFailures = {{
     {PlanFailure::kCancelled, "CANCELLED", absl::StatusCode::kCancelled},
 }};
 
-const FailureInfo& Info(PlanFailure failure) {
-  return kFailures[static_cast<size_t>(failure)];
-}
+const FailureInfo& Info(PlanFailure failure) { return kFailures[static_cast<size_t>(failure)]; }
 
 }  // namespace
 

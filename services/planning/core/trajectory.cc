@@ -28,7 +28,8 @@ std::vector<Point2> Resample(const std::vector<Point2>& path, double spacing) {
   for (size_t i = 1; i < path.size(); ++i) {
     const Point2 a = path[i - 1];
     const Point2 b = path[i];
-    const int pieces = std::max(1, static_cast<int>(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / spacing)));
+    const int pieces =
+        std::max(1, static_cast<int>(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / spacing)));
     for (int k = 1; k <= pieces; ++k) {
       const double t = static_cast<double>(k) / pieces;
       out.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
@@ -56,11 +57,10 @@ std::vector<Point2> SmoothPath(const PassabilityGrid& grid, const GridGeometry& 
   std::vector<Point2> p = original;
   for (int it = 0; it < config.iterations; ++it) {
     for (size_t i = 1; i + 1 < p.size(); ++i) {
-      const Point2 moved{
-          p[i].x + config.weight_data * (original[i].x - p[i].x) +
-              config.weight_smooth * (p[i - 1].x + p[i + 1].x - 2 * p[i].x),
-          p[i].y + config.weight_data * (original[i].y - p[i].y) +
-              config.weight_smooth * (p[i - 1].y + p[i + 1].y - 2 * p[i].y)};
+      const Point2 moved{p[i].x + config.weight_data * (original[i].x - p[i].x) +
+                             config.weight_smooth * (p[i - 1].x + p[i + 1].x - 2 * p[i].x),
+                         p[i].y + config.weight_data * (original[i].y - p[i].y) +
+                             config.weight_smooth * (p[i - 1].y + p[i + 1].y - 2 * p[i].y)};
       if (SegmentFree(grid, geometry, p[i - 1], moved) &&
           SegmentFree(grid, geometry, moved, p[i + 1])) {
         p[i] = moved;

@@ -33,7 +33,7 @@ struct TimeAllocationConfig {
 };
 
 struct TrajectoryPoint {
-  double x = 0.0;      // metres, same frame as the input
+  double x = 0.0;  // metres, same frame as the input
   double y = 0.0;
   double yaw = 0.0;    // heading of the next segment, radians
   double speed = 0.0;  // m/s

@@ -34,8 +34,8 @@ void ExplorationConfig::Read(ConfigReader& section) {
       .Read("grounding_weight", &score.grounding_weight)
       .Read("language_radius_m", &score.language_radius_m)
       .Read("novelty_radius_m", &score.novelty_radius_m);
-  score_section.Check(score.novelty_radius_m > 0 && score.language_radius_m > 0,
-                      "novelty_radius_m", "radii must be > 0");
+  score_section.Check(score.novelty_radius_m > 0 && score.language_radius_m > 0, "novelty_radius_m",
+                      "radii must be > 0");
   ConfigReader value_section = section.Child("value_map");
   value_section.Read("enabled", &value.enabled)
       .Read("evidence_sigma_m", &value.evidence_sigma_m)
@@ -47,21 +47,21 @@ void ExplorationConfig::Read(ConfigReader& section) {
   value_section.Check(std::isfinite(value.evidence_sigma_m) && value.evidence_sigma_m > 0 &&
                           value.evidence_sigma_m <= 100,
                       "evidence_sigma_m", "must be in (0, 100]");
-  value_section.Check(std::isfinite(value.gain_radius_m) && value.gain_radius_m > 0 &&
-                          value.gain_radius_m <= 100,
-                      "gain_radius_m", "must be in (0, 100]");
-  value_section.Check(std::isfinite(value.semantic_gain) && value.semantic_gain >= 0 &&
-                          value.semantic_gain <= 100,
-                      "semantic_gain", "must be in [0, 100]");
+  value_section.Check(
+      std::isfinite(value.gain_radius_m) && value.gain_radius_m > 0 && value.gain_radius_m <= 100,
+      "gain_radius_m", "must be in (0, 100]");
+  value_section.Check(
+      std::isfinite(value.semantic_gain) && value.semantic_gain >= 0 && value.semantic_gain <= 100,
+      "semantic_gain", "must be in [0, 100]");
   value_section.Check(std::isfinite(value.distance_decay_per_m) &&
                           value.distance_decay_per_m >= 0 && value.distance_decay_per_m <= 10,
                       "distance_decay_per_m", "must be in [0, 10]");
-  value_section.Check(std::isfinite(value.region_link_m) && value.region_link_m >= 0 &&
-                          value.region_link_m <= 100,
-                      "region_link_m", "must be in [0, 100]");
-  value_section.Check(std::isfinite(value.min_gain_m2) && value.min_gain_m2 >= 0 &&
-                          value.min_gain_m2 <= 1e4,
-                      "min_gain_m2", "must be in [0, 10000]");
+  value_section.Check(
+      std::isfinite(value.region_link_m) && value.region_link_m >= 0 && value.region_link_m <= 100,
+      "region_link_m", "must be in [0, 100]");
+  value_section.Check(
+      std::isfinite(value.min_gain_m2) && value.min_gain_m2 >= 0 && value.min_gain_m2 <= 1e4,
+      "min_gain_m2", "must be in [0, 10000]");
   ConfigReader eroi = section.Child("eroi");
   eroi.Read("size_m", &eroi_size_m)
       .Read("viewpoints", &eroi_viewpoints)
@@ -84,9 +84,9 @@ void TrajectoryConfig::Read(ConfigReader& section) {
       .Read("max_accel_mps2", &limits.max_accel_mps2)
       .Read("max_yaw_rate_rps", &limits.max_yaw_rate_rps);
   section.Check(smoothing.spacing_m > 0, "spacing_m", "must be > 0");
-  section.Check(limits.max_speed_mps > 0 && limits.max_accel_mps2 > 0 &&
-                    limits.max_yaw_rate_rps > 0,
-                "max_speed_mps", "limits must be > 0");
+  section.Check(
+      limits.max_speed_mps > 0 && limits.max_accel_mps2 > 0 && limits.max_yaw_rate_rps > 0,
+      "max_speed_mps", "limits must be > 0");
 }
 
 }  // namespace semnav::planning

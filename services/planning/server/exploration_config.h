@@ -13,17 +13,17 @@ namespace semnav::planning {
 // EROI settings (lengths in metres here, cells in the core).
 struct ExplorationConfig {
   int min_frontier_cells = 5;
-  FrontierScoreConfig score;        // seed 002 weights 0.2/0.3/0.2/0.3
-  FrontierValueConfig value;        // SEMANTIC_FRONTIER's value map (docs/algorithms/planning.md)
-  CoverageGoalConfig coverage;      // L_MAX, turn step
-  double eroi_size_m = 2.0;         // Delta
+  FrontierScoreConfig score;    // seed 002 weights 0.2/0.3/0.2/0.3
+  FrontierValueConfig value;    // SEMANTIC_FRONTIER's value map (docs/algorithms/planning.md)
+  CoverageGoalConfig coverage;  // L_MAX, turn step
+  double eroi_size_m = 2.0;     // Delta
   int eroi_viewpoints = 8;
   double eroi_viewpoint_radius_m = 0.5;
   int eroi_rays = 72;
   double eroi_ray_range_m = 5.0;
   double eroi_connect_radius_m = 3.0;
-  double eroi_lambda_per_m = 1.0;   // eq. 24 lambda
-  double eroi_k = 0.8;              // eq. 24 tau = k max s
+  double eroi_lambda_per_m = 1.0;  // eq. 24 lambda
+  double eroi_k = 0.8;             // eq. 24 tau = k max s
 
   EroiConfig EroiInCells(double resolution_m) const;
   ExplorationGoalConfig GoalConfig(double resolution_m) const;

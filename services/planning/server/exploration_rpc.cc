@@ -9,8 +9,8 @@
 #include "services/common/status/field_error.h"
 #include "services/common/status/grpc_status.h"
 #include "services/common/status/value_checks.h"
-#include "services/planning/server/request_checks.h"
 #include "services/planning/core/exploration_goal.h"
+#include "services/planning/server/request_checks.h"
 
 namespace semnav::planning {
 namespace {
@@ -105,8 +105,8 @@ Exclusions ReadExclusions(const pb::SelectExplorationGoalRequest& request) {
 struct SearchBounds {
   std::optional<pb::SearchArea> area;
   bool Outside(const Point2& p) const {
-    return area.has_value() &&
-           (p.x < area->min_x() || p.x > area->max_x() || p.y < area->min_y() || p.y > area->max_y());
+    return area.has_value() && (p.x < area->min_x() || p.x > area->max_x() || p.y < area->min_y() ||
+                                p.y > area->max_y());
   }
 };
 
@@ -116,8 +116,10 @@ absl::StatusOr<SearchBounds> ReadSearchBounds(const pb::SelectExplorationGoalReq
   const struct {
     double value;
     const char* field;
-  } corners[] = {{a.min_x(), "search_area.min_x"}, {a.min_y(), "search_area.min_y"},
-                 {a.max_x(), "search_area.max_x"}, {a.max_y(), "search_area.max_y"}};
+  } corners[] = {{a.min_x(), "search_area.min_x"},
+                 {a.min_y(), "search_area.min_y"},
+                 {a.max_x(), "search_area.max_x"},
+                 {a.max_y(), "search_area.max_y"}};
   for (const auto& corner : corners) {
     if (absl::Status s = CheckMagnitude(corner.value, corner.field, kMaxCoordinateM); !s.ok()) {
       return s;
@@ -139,10 +141,11 @@ struct GoalFilter {
 
 // The checked request pieces as the core's grid and query.
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
-                                       const semnav::common::v1::Pose2D& robot,
-                                       uint32_t min_cells, const std::string& min_cells_field,
+                                       const semnav::common::v1::Pose2D& robot, uint32_t min_cells,
+                                       const std::string& min_cells_field,
                                        const pb::SemanticContext& semantics,
-                                       const PlanningConfig& config, const GoalFilter& filter = {}) {
+                                       const PlanningConfig& config,
+                                       const GoalFilter& filter = {}) {
   FrontierView view;
   if (absl::Status s = CheckSemantics(semantics, "semantics"); !s.ok()) return s;
   if (min_cells > kMaxMinCells) {
@@ -211,9 +214,8 @@ absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
                                 const pb::ExtractFrontiersRequest& request,
                                 const PlanningConfig& config,
                                 pb::ExtractFrontiersResponse* response) {
-  absl::StatusOr<FrontierView> view =
-      BuildView(grid, field, request.robot(), request.min_cells(), "min_cells",
-                request.semantics(), config);
+  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(), request.min_cells(),
+                                                "min_cells", request.semantics(), config);
   if (!view.ok()) return view.status();
   const FrontierSet set = CollectFrontiers(view->grid, view->query, config.exploration.score);
   for (size_t i = 0; i < set.frontiers.size(); ++i) {
@@ -246,17 +248,15 @@ absl::Status ScoreFrontiersOn(const pb::ScoreFrontiersRequest& request,
     if (absl::Status s = CheckPose2D(f.centroid(), at + ".centroid"); !s.ok()) return s;
     if (absl::Status s = CheckPose2D(f.anchor(), at + ".anchor"); !s.ok()) return s;
     if (!std::isfinite(f.path_distance_m()) || std::abs(f.path_distance_m()) > kMaxPathM) {
-      return Invalid(at + ".path_distance_m",
-                     absl::StrCat("must be finite and within +-", kMaxPathM,
-                                  " (< 0 = unreachable)"));
+      return Invalid(at + ".path_distance_m", absl::StrCat("must be finite and within +-",
+                                                           kMaxPathM, " (< 0 = unreachable)"));
     }
     // A previous answer's score may be sent back; it is recomputed, but must still be a number.
     const pb::FrontierScore& score = f.score();
-    for (const auto& [value, name] : {std::pair{score.distance(), "distance"},
-                                      std::pair{score.novelty(), "novelty"},
-                                      std::pair{score.language(), "language"},
-                                      std::pair{score.grounding(), "grounding"},
-                                      std::pair{score.total(), "total"}}) {
+    for (const auto& [value, name] :
+         {std::pair{score.distance(), "distance"}, std::pair{score.novelty(), "novelty"},
+          std::pair{score.language(), "language"}, std::pair{score.grounding(), "grounding"},
+          std::pair{score.total(), "total"}}) {
       if (absl::Status s = CheckScore(value, absl::StrCat(at, ".score.", name)); !s.ok()) return s;
     }
     candidates.push_back({ToPoint(f.centroid()), f.path_distance_m()});
@@ -278,8 +278,8 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                           const pb::SelectExplorationGoalRequest& request,
                           const PlanningConfig& config,
                           pb::SelectExplorationGoalResponse* response) {
-  if (absl::Status s = CheckRange(request.excluded_radius_m(), "excluded_radius_m", 0.0,
-                                  2 * kMaxCoordinateM);
+  if (absl::Status s =
+          CheckRange(request.excluded_radius_m(), "excluded_radius_m", 0.0, 2 * kMaxCoordinateM);
       !s.ok()) {
     return s;
   }
@@ -294,8 +294,8 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       return s;
     }
   }
-  if (absl::Status s = CheckCount(request.eroi_semantic_values_size(), "eroi_semantic_values",
-                                  kMaxListItems);
+  if (absl::Status s =
+          CheckCount(request.eroi_semantic_values_size(), "eroi_semantic_values", kMaxListItems);
       !s.ok()) {
     return s;
   }
@@ -312,10 +312,9 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};
-  absl::StatusOr<FrontierView> view = BuildView(grid, field, request.robot(),
-                                                request.min_frontier_cells(),
-                                                "min_frontier_cells", request.semantics(),
-                                                config, filter);
+  absl::StatusOr<FrontierView> view =
+      BuildView(grid, field, request.robot(), request.min_frontier_cells(), "min_frontier_cells",
+                request.semantics(), config, filter);
   if (!view.ok()) return view.status();
   const ExplorationStrategy strategy = FromProto(request.strategy());
   view->query.eroi_values.assign(request.eroi_semantic_values().begin(),

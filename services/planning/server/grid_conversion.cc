@@ -30,8 +30,8 @@ absl::StatusOr<Cell> GridFrame::ToCell(const semnav::common::v1::Pose2D& pose,
   const double col = std::floor((pose.x() - origin_x) / resolution);
   const double row = std::floor((pose.y() - origin_y) / resolution);
   if (!(col >= 0 && row >= 0 && col < width && row < height)) {
-    return Invalid(field, absl::StrCat(field, " (", pose.x(), ", ", pose.y(),
-                                       ") m is outside the grid"));
+    return Invalid(field,
+                   absl::StrCat(field, " (", pose.x(), ", ", pose.y(), ") m is outside the grid"));
   }
   return Cell{static_cast<int>(col), static_cast<int>(row)};
 }
@@ -44,8 +44,8 @@ absl::StatusOr<Cell> GridFrame::ToCellAnywhere(const semnav::common::v1::Pose2D&
   // A pose this far out is no start a planner could pad to (and would overflow an int).
   constexpr double kMaxCellsOutside = 1 << 20;
   if (!(std::abs(col) < kMaxCellsOutside + width && std::abs(row) < kMaxCellsOutside + height)) {
-    return Invalid(field, absl::StrCat(field, " (", pose.x(), ", ", pose.y(),
-                                       ") m is far outside the grid"));
+    return Invalid(
+        field, absl::StrCat(field, " (", pose.x(), ", ", pose.y(), ") m is far outside the grid"));
   }
   return Cell{static_cast<int>(col), static_cast<int>(row)};
 }
@@ -97,8 +97,7 @@ const std::string* FindLayer(const GridMap& grid, GridLayerKind kind) {
   return nullptr;
 }
 
-absl::StatusOr<PassabilityGrid> ToPassability(const GridMap& grid,
-                                              const TraversabilityRules& rules,
+absl::StatusOr<PassabilityGrid> ToPassability(const GridMap& grid, const TraversabilityRules& rules,
                                               const std::string& field) {
   PassabilityGrid out(static_cast<int>(grid.width()), static_cast<int>(grid.height()), 0);
   const std::string* hierarchical =

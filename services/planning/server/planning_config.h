@@ -19,8 +19,9 @@ struct PlanningConfig {
   bool unknown_is_free = false;
   // grid.max_low_probability_percent: seed 004 second-stage limit;
   // grid.start_snap_radius_m (0.5), grid.max_start_outside_m (1.0), grid.max_goal_outside_m
-  // (1.0): how far an occupied start may snap and how far outside the grid a start / goal may lie; clearance.{clearance_m (0.4),
-  // cost_scaling_per_m (3.0), cost_penalty (2.0)}: the Nav2-style cost near obstacles.
+  // (1.0): how far an occupied start may snap and how far outside the grid a start / goal may lie;
+  // clearance.{clearance_m (0.4), cost_scaling_per_m (3.0), cost_penalty (2.0)}: the Nav2-style
+  // cost near obstacles.
   GridPlannerConfig grid_planner;
   // jump_astar.{alpha, beta, energy_unit_j, rolling_energy_j_per_m,
   // hover_power_w, flight_speed_mps}: seed 003 Table 1 and sec. 4.2.

@@ -49,9 +49,8 @@ absl::Status CheckRequest(const pb::PlanPathRequest& request) {
     return Invalid("planner", "unknown planner kind");
   }
   if (!NonNegative(request.robot_radius_m()) || request.robot_radius_m() > kMaxRobotRadiusM) {
-    return Invalid("robot_radius_m",
-                   absl::StrCat("robot_radius_m must be a finite value in [0, ", kMaxRobotRadiusM,
-                                "]"));
+    return Invalid("robot_radius_m", absl::StrCat("robot_radius_m must be a finite value in [0, ",
+                                                  kMaxRobotRadiusM, "]"));
   }
   if (!NonNegative(request.goal_tolerance_m()) || request.goal_tolerance_m() > kMaxPathM) {
     return Invalid("goal_tolerance_m",
@@ -66,12 +65,12 @@ absl::Status CheckRequest(const pb::PlanPathRequest& request) {
   }
   const pb::MultiModalOptions& mm = request.multimodal();
   if (mm.has_alpha() && (!NonNegative(mm.alpha()) || mm.alpha() > kMaxScore)) {
-    return Invalid("multimodal.alpha", absl::StrCat("alpha must be a finite value in [0, ",
-                                                    kMaxScore, "]"));
+    return Invalid("multimodal.alpha",
+                   absl::StrCat("alpha must be a finite value in [0, ", kMaxScore, "]"));
   }
   if (mm.has_beta() && (!NonNegative(mm.beta()) || mm.beta() > kMaxScore)) {
-    return Invalid("multimodal.beta", absl::StrCat("beta must be a finite value in [0, ",
-                                                   kMaxScore, "]"));
+    return Invalid("multimodal.beta",
+                   absl::StrCat("beta must be a finite value in [0, ", kMaxScore, "]"));
   }
   return absl::OkStatus();
 }
@@ -83,8 +82,10 @@ absl::Status FetchLiveGrid(semnav::mapping::v1::MappingService::Stub& mapping,
   // Only the layers grid_conversion reads: mapping then skips the semantic layer, most of a
   // GetGridMap's cost (callgrind, docs/performance/gateway.md).
   for (const semnav::common::v1::GridLayerKind kind :
-       {semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL, semnav::common::v1::GRID_LAYER_KIND_OCCUPANCY,
-        semnav::common::v1::GRID_LAYER_KIND_OBSTACLE_PROBABILITY, semnav::common::v1::GRID_LAYER_KIND_EXPLORED}) {
+       {semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL,
+        semnav::common::v1::GRID_LAYER_KIND_OCCUPANCY,
+        semnav::common::v1::GRID_LAYER_KIND_OBSTACLE_PROBABILITY,
+        semnav::common::v1::GRID_LAYER_KIND_EXPLORED}) {
     fetch.add_layers(kind);
   }
   if (live.has_window_min() || live.has_window_max()) {

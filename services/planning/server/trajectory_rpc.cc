@@ -3,9 +3,9 @@
 #include "absl/strings/str_cat.h"
 #include "services/common/status/grpc_status.h"
 #include "services/common/status/value_checks.h"
-#include "services/planning/server/request_checks.h"
 #include "services/planning/core/trajectory.h"
 #include "services/planning/server/grid_conversion.h"
+#include "services/planning/server/request_checks.h"
 
 namespace semnav::planning {
 

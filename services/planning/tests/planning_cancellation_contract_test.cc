@@ -111,7 +111,8 @@ TEST_F(PlanningCancellation, CallDeadlineGivesTypedTimeoutAndFreesTheWorker) {
   EXPECT_EQ(status.error_code(), grpc::StatusCode::DEADLINE_EXCEEDED) << status.error_message();
   // The server stopped the search itself (deadline - margin) and said why.
   std::optional<pb::PlanFailureDetail> detail = GetDetail<pb::PlanFailureDetail>(status);
-  ASSERT_TRUE(detail.has_value()) << "no typed detail after " << elapsed_ms << " ms: " << status.error_message();
+  ASSERT_TRUE(detail.has_value()) << "no typed detail after " << elapsed_ms
+                                  << " ms: " << status.error_message();
   EXPECT_EQ(detail->reason(), pb::PLAN_FAILURE_REASON_TIMEOUT);
   EXPECT_LT(elapsed_ms, 1200.0);
   // The only worker is free again at once.

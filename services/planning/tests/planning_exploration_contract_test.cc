@@ -270,7 +270,8 @@ TEST_F(ExplorationContract, SearchAreaBoundsEveryStrategy) {
 TEST_F(ExplorationContract, InvalidSearchAreaNamesTheField) {
   for (const pb::SearchArea& area : {Area(1.0, 0.0, 1.0, 2.0), Area(0.0, 3.0, 2.0, 1.0),
                                      Area(std::nan(""), 0.0, 2.0, 2.0), pb::SearchArea()}) {
-    pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
+    pb::SelectExplorationGoalRequest request =
+        GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
     *request.mutable_search_area() = area;
     pb::SelectExplorationGoalResponse response;
     grpc::ClientContext context;

@@ -1,8 +1,7 @@
 // Contract test across two real binaries: semnav-mapping builds a map from
 // rendered frames; semnav-planning fetches it by live_map and plans on it.
-#include <gtest/gtest.h>
-
 #include <grpcpp/client_context.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>

@@ -6,12 +6,13 @@
 //   fast_path_ratio            share of the fixed instruction set decided by the fast path
 //   instruction_to_first_command_us_p99  in-process decompose + resolve + first robot command
 //   instruction_to_command_ms_p99        loopback gRPC with real semnav-mapping and semnav-planning
-//                                        (instruction_to_command_planned: samples with a planned path)
+//                                        (instruction_to_command_planned: samples with a planned
+//                                        path)
 // Usage: semnav-bench-gateway [--json FILE] [--benchmark_* flags]
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -47,7 +48,8 @@ TargetSpec ExtinguisherNearDoor() {
 
 std::vector<float> TextEmbedding() {
   std::vector<float> text(kEmbeddingDims);
-  for (int i = 0; i < kEmbeddingDims; ++i) text[static_cast<std::size_t>(i)] = static_cast<float>((i * 7) % 13) - 6.0f;
+  for (int i = 0; i < kEmbeddingDims; ++i)
+    text[static_cast<std::size_t>(i)] = static_cast<float>((i * 7) % 13) - 6.0f;
   return text;
 }
 
@@ -71,7 +73,9 @@ P99 P99Micros(F&& body) {
     const double cpu_start = ThreadCpuMicros();
     const auto start = std::chrono::steady_clock::now();
     body();
-    wall.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+    wall.push_back(
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+            .count());
     cpu.push_back(ThreadCpuMicros() - cpu_start);
   }
   std::sort(wall.begin(), wall.end());
@@ -95,7 +99,8 @@ void BM_FastResolve500(benchmark::State& state) {
   const SceneGraph graph = testing::SyntheticScene(25, 20, kEmbeddingDims);
   const FastResolver resolver(&ShippedLexicon(), FastResolverConfig{});
   const std::vector<float> text = TextEmbedding();
-  for (auto _ : state) benchmark::DoNotOptimize(resolver.Resolve(ExtinguisherNearDoor(), graph, text, {}));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(resolver.Resolve(ExtinguisherNearDoor(), graph, text, {}));
 }
 BENCHMARK(BM_FastResolve500);
 
@@ -103,7 +108,8 @@ void BM_Esca200(benchmark::State& state) {
   const SceneGraph graph = testing::SyntheticScene(18, 11);
   const LabelMatcher matcher(&ShippedLexicon(), 0.5);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(SelectiveGrounding(ExtinguisherNearDoor(), graph, matcher, GroundingConfig{}));
+    benchmark::DoNotOptimize(
+        SelectiveGrounding(ExtinguisherNearDoor(), graph, matcher, GroundingConfig{}));
   }
 }
 BENCHMARK(BM_Esca200);
@@ -115,8 +121,9 @@ nlohmann::json Figures() {
     const SceneGraph graph = testing::SyntheticScene(25, 20, kEmbeddingDims);
     const std::vector<float> text = TextEmbedding();
     figures["fast_resolve_objects"] = graph.objects.size();
-    const P99 resolve =
-        P99Micros([&] { benchmark::DoNotOptimize(resolver.Resolve(ExtinguisherNearDoor(), graph, text, {})); });
+    const P99 resolve = P99Micros([&] {
+      benchmark::DoNotOptimize(resolver.Resolve(ExtinguisherNearDoor(), graph, text, {}));
+    });
     figures["fast_resolve_us_p99"] = resolve.wall_us;
     figures["fast_resolve_cpu_us_p99"] = resolve.cpu_us;
   }
@@ -135,10 +142,12 @@ nlohmann::json Figures() {
   absl::StatusOr<std::vector<testing::InstructionCase>> cases =
       testing::LoadInstructionSet(testing::FastPathInstructionsPath());
   if (!scene.ok() || !cases.ok()) {
-    std::fprintf(stderr, "fixtures: %s %s\n", scene.status().ToString().c_str(), cases.status().ToString().c_str());
+    std::fprintf(stderr, "fixtures: %s %s\n", scene.status().ToString().c_str(),
+                 cases.status().ToString().c_str());
     std::exit(1);
   }
-  TaskDecomposer decomposer(InstructionParser(&ShippedLexicon(), *TextSegmenter::Create()), DecomposerConfig{});
+  TaskDecomposer decomposer(InstructionParser(&ShippedLexicon(), *TextSegmenter::Create()),
+                            DecomposerConfig{});
   int fast = 0;
   for (const testing::InstructionCase& c : *cases) {
     const Decomposition decomposition = decomposer.Decompose(c.instruction);
@@ -148,12 +157,14 @@ nlohmann::json Figures() {
   figures["fast_path_instructions"] = cases->size();
   figures["fast_path_ratio"] = static_cast<double>(fast) / static_cast<double>(cases->size());
   DirectPlanner planner;
-  figures["instruction_to_first_command_us_p99"] = P99Micros([&] {
-    Decomposition decomposition = decomposer.Decompose("去红色灭火器旁边");
-    TaskExecutor task("去红色灭火器旁边", std::move(decomposition.subgoals), &resolver, &planner, nullptr, {});
-    task.OnSceneGraph(0, *scene);
-    benchmark::DoNotOptimize(task.Start(0, RobotPose{}));
-  }).wall_us;
+  figures["instruction_to_first_command_us_p99"] =
+      P99Micros([&] {
+        Decomposition decomposition = decomposer.Decompose("去红色灭火器旁边");
+        TaskExecutor task("去红色灭火器旁边", std::move(decomposition.subgoals), &resolver,
+                          &planner, nullptr, {});
+        task.OnSceneGraph(0, *scene);
+        benchmark::DoNotOptimize(task.Start(0, RobotPose{}));
+      }).wall_us;
   absl::StatusOr<LoopbackLatency> loopback = MeasureInstructionToCommand(200);
   if (loopback.ok()) {
     figures["instruction_to_command_ms_p50"] = loopback->p50_ms;
@@ -161,7 +172,8 @@ nlohmann::json Figures() {
     figures["instruction_to_command_samples"] = loopback->samples;
     figures["instruction_to_command_planned"] = loopback->planned;
   } else {
-    std::fprintf(stderr, "instruction_to_command not measured: %s\n", loopback.status().ToString().c_str());
+    std::fprintf(stderr, "instruction_to_command not measured: %s\n",
+                 loopback.status().ToString().c_str());
   }
   return figures;
 }
@@ -179,7 +191,8 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks();
   const nlohmann::json figures = semnav::reasoning::Figures();
   std::printf("\n%-40s %s\n", "figure", "value");
-  for (const auto& [name, value] : figures.items()) std::printf("%-40s %s\n", name.c_str(), value.dump().c_str());
+  for (const auto& [name, value] : figures.items())
+    std::printf("%-40s %s\n", name.c_str(), value.dump().c_str());
   if (!json_path.empty()) {
     std::ofstream out(json_path);
     out << figures.dump(2) << "\n";

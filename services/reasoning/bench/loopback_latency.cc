@@ -1,13 +1,12 @@
 #include "services/reasoning/bench/loopback_latency.h"
 
+#include <grpcpp/grpcpp.h>
+
+#include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-
-#include <grpcpp/grpcpp.h>
-
-#include <Eigen/Core>
 
 #include "absl/strings/str_cat.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
@@ -28,7 +27,8 @@ constexpr double kRobotY = 1.3;
 }  // namespace
 
 absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples) {
-  const std::string dir = (std::filesystem::temp_directory_path() / "semnav-bench-gateway").string();
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / "semnav-bench-gateway").string();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/maps\n"
@@ -36,13 +36,18 @@ absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples) {
   absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> mapping =
       semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", dir + "/mapping.yaml"});
   if (!mapping.ok()) return mapping.status();
-  if (absl::Status s = testing::StreamLabelledFrames((*mapping)->channel(), 1, 6, "clock", kClock); !s.ok()) return s;
-  std::ofstream(dir + "/planning.yaml") << "planning:\n  mapping:\n    address: " << (*mapping)->address() << "\n";
+  if (absl::Status s = testing::StreamLabelledFrames((*mapping)->channel(), 1, 6, "clock", kClock);
+      !s.ok())
+    return s;
+  std::ofstream(dir + "/planning.yaml")
+      << "planning:\n  mapping:\n    address: " << (*mapping)->address() << "\n";
   absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> planning =
-      semnav::testing::ServiceProcess::Start("semnav-planning", {"--config", dir + "/planning.yaml"});
+      semnav::testing::ServiceProcess::Start("semnav-planning",
+                                             {"--config", dir + "/planning.yaml"});
   if (!planning.ok()) return planning.status();
-  std::ofstream(dir + "/gateway.yaml") << "gateway:\n  mapping:\n    address: " << (*mapping)->address()
-                                       << "\n  planning:\n    address: " << (*planning)->address() << "\n";
+  std::ofstream(dir + "/gateway.yaml")
+      << "gateway:\n  mapping:\n    address: " << (*mapping)->address()
+      << "\n  planning:\n    address: " << (*planning)->address() << "\n";
   absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> gateway =
       semnav::testing::ServiceProcess::Start("semnav-gateway", {"--config", dir + "/gateway.yaml"});
   if (!gateway.ok()) return gateway.status();
@@ -57,9 +62,12 @@ absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples) {
   api::ConnectRequest hello;
   hello.mutable_hello()->set_robot_id("bench");
   api::ConnectResponse message;
-  if (!session->Write(hello) || !session->Read(&message)) return absl::InternalError("session did not open");
-  if (!session->Write(testing::PoseReport(kRobotX, kRobotY))) return absl::InternalError("session closed");
-  if (!testing::WaitUntilPoseSeen(*operator_stub, "bench", 5000)) return absl::DeadlineExceededError("pose never seen");
+  if (!session->Write(hello) || !session->Read(&message))
+    return absl::InternalError("session did not open");
+  if (!session->Write(testing::PoseReport(kRobotX, kRobotY)))
+    return absl::InternalError("session closed");
+  if (!testing::WaitUntilPoseSeen(*operator_stub, "bench", 5000))
+    return absl::DeadlineExceededError("pose never seen");
 
   LoopbackLatency latency;
   std::vector<double> millis;
@@ -73,7 +81,9 @@ absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples) {
       if (!session->Read(&message)) return absl::InternalError("session ended");
     } while (!(message.has_command() && message.command().has_navigate() &&
                message.command().task_id() == *task_id));
-    millis.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    millis.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count());
     if (message.command().navigate().path_size() > 0) ++latency.planned;
   }
   session_context.TryCancel();

@@ -8,7 +8,8 @@
 namespace semnav::reasoning {
 
 absl::StatusOr<ConceptNetCooccurrence> ConceptNetCooccurrence::Load(const std::string& json_path) {
-  absl::StatusOr<modelproxy::offline::PlacePrior> prior = modelproxy::offline::PlacePrior::Load(json_path);
+  absl::StatusOr<modelproxy::offline::PlacePrior> prior =
+      modelproxy::offline::PlacePrior::Load(json_path);
   if (!prior.ok()) return prior.status();
   return ConceptNetCooccurrence(*std::move(prior));
 }
@@ -24,7 +25,7 @@ double ConceptNetCooccurrence::Cooccurrence(std::string_view target, std::string
 }
 
 double ConceptNetCooccurrence::RoomCooccurrence(std::string_view target,
-                                                 const std::vector<std::string>& labels) const {
+                                                const std::vector<std::string>& labels) const {
   using modelproxy::offline::CanonicalTerm;
   constexpr size_t kAllPlaces = 1 << 16;
   const std::string target_term = CanonicalTerm(absl::string_view(target.data(), target.size()));

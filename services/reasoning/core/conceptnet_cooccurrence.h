@@ -25,10 +25,12 @@ class ConceptNetCooccurrence final : public CooccurrencePrior {
   // The room's place distribution is the mean of its known objects' P(place | object); the
   // value is its cosine with the target's (Relatedness of the target with the room as a whole:
   // sink + oven + fridge reads as a kitchen). 0 when no object is known.
-  double RoomCooccurrence(std::string_view target, const std::vector<std::string>& labels) const override;
+  double RoomCooccurrence(std::string_view target,
+                          const std::vector<std::string>& labels) const override;
 
  private:
-  explicit ConceptNetCooccurrence(modelproxy::offline::PlacePrior prior) : prior_(std::move(prior)) {}
+  explicit ConceptNetCooccurrence(modelproxy::offline::PlacePrior prior)
+      : prior_(std::move(prior)) {}
   modelproxy::offline::PlacePrior prior_;
 };
 

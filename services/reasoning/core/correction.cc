@@ -2,7 +2,8 @@
 
 namespace semnav::reasoning {
 
-std::optional<Correction> ReadCorrection(const ParsedInstruction& parsed, const TargetSpec& active) {
+std::optional<Correction> ReadCorrection(const ParsedInstruction& parsed,
+                                         const TargetSpec& active) {
   bool negated = false;
   bool deictic = false;
   for (const Clause& clause : parsed.clauses) {

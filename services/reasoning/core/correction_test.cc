@@ -17,7 +17,8 @@ class GatewayCorrectionTest : public ::testing::Test {
 };
 
 TEST_F(GatewayCorrectionTest, ChineseNotThisOneTheRedOne) {
-  std::optional<Correction> correction = ReadCorrection(parser_.Parse("不是这个，是那个红色的"), active_);
+  std::optional<Correction> correction =
+      ReadCorrection(parser_.Parse("不是这个，是那个红色的"), active_);
   ASSERT_TRUE(correction.has_value());
   EXPECT_TRUE(correction->exclude_current);
   EXPECT_EQ(correction->target.name, "cup");
@@ -25,14 +26,16 @@ TEST_F(GatewayCorrectionTest, ChineseNotThisOneTheRedOne) {
 }
 
 TEST_F(GatewayCorrectionTest, EnglishNotThatOneTheRedOne) {
-  std::optional<Correction> correction = ReadCorrection(parser_.Parse("not that one, the red one"), active_);
+  std::optional<Correction> correction =
+      ReadCorrection(parser_.Parse("not that one, the red one"), active_);
   ASSERT_TRUE(correction.has_value());
   EXPECT_TRUE(correction->exclude_current);
   EXPECT_EQ(correction->target.colours, std::vector<std::string>{"red"});
 }
 
 TEST_F(GatewayCorrectionTest, NamingAnotherObjectReplacesTheTarget) {
-  std::optional<Correction> correction = ReadCorrection(parser_.Parse("不对，是那个蓝色的瓶子"), active_);
+  std::optional<Correction> correction =
+      ReadCorrection(parser_.Parse("不对，是那个蓝色的瓶子"), active_);
   ASSERT_TRUE(correction.has_value());
   EXPECT_EQ(correction->target.name, "bottle");
   EXPECT_EQ(correction->target.colours, std::vector<std::string>{"blue"});

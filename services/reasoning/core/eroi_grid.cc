@@ -11,11 +11,14 @@ namespace semnav::reasoning {
 namespace {
 
 // Centres sit exactly on multiples of delta; the epsilon keeps 18/3 from flooring to 5.
-int FloorIndex(double offset, double delta) { return static_cast<int>(std::floor(offset / delta + 1e-9)); }
+int FloorIndex(double offset, double delta) {
+  return static_cast<int>(std::floor(offset / delta + 1e-9));
+}
 
 }  // namespace
 
-EroiGridSpec GridOverArea(const EroiGridSpec& base, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+EroiGridSpec GridOverArea(const EroiGridSpec& base, const Eigen::Vector2d& lo,
+                          const Eigen::Vector2d& hi) {
   EroiGridSpec spec = base;
   const Eigen::Vector2d extent = hi - lo;
   spec.delta = std::max(base.delta, extent.x() / 26.0);
@@ -54,8 +57,8 @@ EroiIndex EroiGrid::Unflatten(int flat) const {
 }
 
 bool EroiGrid::Contains(const EroiIndex& index) const {
-  return index.i >= 0 && index.i <= spec_.nx && index.j >= 0 && index.j <= spec_.ny && index.k >= 0 &&
-         index.k <= spec_.nz;
+  return index.i >= 0 && index.i <= spec_.nx && index.j >= 0 && index.j <= spec_.ny &&
+         index.k >= 0 && index.k <= spec_.nz;
 }
 
 EroiIndex EroiGrid::Cell(const Eigen::Vector3d& point) const {
@@ -78,7 +81,8 @@ std::vector<int> EroiGrid::Neighbourhood(const Eigen::Vector3d& point, double ra
     for (int j = centre.j - reach; j <= centre.j + reach; ++j) {
       for (int i = centre.i - reach; i <= centre.i + reach; ++i) {
         const EroiIndex index{i, j, k};
-        if (Contains(index) && (Centre(index) - point).norm() <= radius + 1e-9) out.push_back(Flatten(index));
+        if (Contains(index) && (Centre(index) - point).norm() <= radius + 1e-9)
+          out.push_back(Flatten(index));
       }
     }
   }
@@ -96,12 +100,14 @@ std::string EroiGrid::Encode(const Eigen::Vector3d& centre) const {
 absl::StatusOr<Eigen::Vector3d> EroiGrid::Decode(std::string_view code) const {
   if (code.size() < 3 || !std::isalpha(static_cast<unsigned char>(code.front())) ||
       !std::isalpha(static_cast<unsigned char>(code.back()))) {
-    return InvalidField("code", absl::StrCat("'", std::string(code), "' is not letter-digits-letter"));
+    return InvalidField("code",
+                        absl::StrCat("'", std::string(code), "' is not letter-digits-letter"));
   }
   int iy = 0;
   for (char c : code.substr(1, code.size() - 2)) {
     if (!std::isdigit(static_cast<unsigned char>(c)) || iy > 100000) {
-      return InvalidField("code", absl::StrCat("'", std::string(code), "' is not letter-digits-letter"));
+      return InvalidField("code",
+                          absl::StrCat("'", std::string(code), "' is not letter-digits-letter"));
     }
     iy = iy * 10 + (c - '0');
   }

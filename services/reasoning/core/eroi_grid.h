@@ -1,12 +1,12 @@
 // EROI partition of the search space (seed 000, eq. 1 and 4) and the letter-digit-letter codes of
-// Algorithm 1 with their inverse (eq. 14): "G5A" with delta 3 m and min (-5, -20, 0) is (13, -8, 0).
+// Algorithm 1 with their inverse (eq. 14): "G5A" with delta 3 m and min (-5, -20, 0) is (13, -8,
+// 0).
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "absl/status/statusor.h"
 
@@ -14,8 +14,8 @@ namespace semnav::reasoning {
 
 struct EroiGridSpec {
   Eigen::Vector3d min = Eigen::Vector3d::Zero();  // (x_min, y_min, z_min), world frame, metres.
-  double delta = 3.0;                              // EROI edge length, metres (isotropic, eq. 4).
-  int nx = 0, ny = 0, nz = 0;                      // index ranges i = 0..nx, j = 0..ny, k = 0..nz.
+  double delta = 3.0;                             // EROI edge length, metres (isotropic, eq. 4).
+  int nx = 0, ny = 0, nz = 0;                     // index ranges i = 0..nx, j = 0..ny, k = 0..nz.
 };
 
 struct EroiIndex {
@@ -26,7 +26,8 @@ struct EroiIndex {
 // `base` laid over the rectangle [lo, hi] of the map: centres from lo + delta / 2, enough of
 // them to cover it, the edge widened when the area needs more than the 26 letters on x
 // (delta >= width / 26); z (min, nz) stays as in `base`.
-EroiGridSpec GridOverArea(const EroiGridSpec& base, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
+EroiGridSpec GridOverArea(const EroiGridSpec& base, const Eigen::Vector2d& lo,
+                          const Eigen::Vector2d& hi);
 
 class EroiGrid {
  public:
@@ -34,7 +35,7 @@ class EroiGrid {
   static absl::StatusOr<EroiGrid> Create(const EroiGridSpec& spec);
 
   int size() const { return (spec_.nx + 1) * (spec_.ny + 1) * (spec_.nz + 1); }  // N of eq. 17
-  Eigen::Vector3d Centre(const EroiIndex& index) const;                           // eq. 4
+  Eigen::Vector3d Centre(const EroiIndex& index) const;                          // eq. 4
   Eigen::Vector3d Centre(int flat) const { return Centre(Unflatten(flat)); }
   int Flatten(const EroiIndex& index) const;
   EroiIndex Unflatten(int flat) const;

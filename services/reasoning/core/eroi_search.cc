@@ -18,12 +18,14 @@ absl::StatusOr<EroiSearch> EroiSearch::Create(std::string target, const EroiSear
 EroiSearch::EroiSearch(std::string target, EroiGrid grid, const EroiSearchConfig& config)
     : target_(std::move(target)),
       grid_(std::make_unique<const EroiGrid>(std::move(grid))),
-      evidence_radius_m_(config.evidence_radius_m > 0.0 ? config.evidence_radius_m : config.grid.delta),
+      evidence_radius_m_(config.evidence_radius_m > 0.0 ? config.evidence_radius_m
+                                                        : config.grid.delta),
       mapping_config_(config.mapping),
       regions_(grid_.get(), config.regions),
       values_(grid_->size()) {}
 
-EroiObservation EroiSearch::Annotate(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+EroiObservation EroiSearch::Annotate(const Eigen::Vector3d& position,
+                                     const Eigen::Quaterniond& orientation,
                                      const PinholeCamera& camera, cv::Mat& image) const {
   const InverseMapper mapper(grid_.get(), mapping_config_);
   EroiObservation observation;

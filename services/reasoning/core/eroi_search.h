@@ -34,8 +34,8 @@ struct EroiObservation {
 
 // What a VLM answer changed.
 struct EroiEvidence {
-  int codes_used = 0;             // pairs whose code decoded inside the grid
-  std::vector<RegionDue> due;     // region units now due for an LLM score
+  int codes_used = 0;          // pairs whose code decoded inside the grid
+  std::vector<RegionDue> due;  // region units now due for an LLM score
 };
 
 class EroiSearch {

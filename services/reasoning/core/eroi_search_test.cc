@@ -24,7 +24,8 @@ TEST(GatewayEroiSearchTest, VlmCodesAreStrongEvidenceWithinOneEdgeByHand) {
   EXPECT_DOUBLE_EQ(search->values().prior(), 0.05);
   // C2A = (i 2, j 1, k 0) = centre (4, 2, 0); r = delta = 2 m covers it and its 4 side
   // neighbours (m = 5): s = (1 - 1/5) 0.05 + 1/5 = 0.24 (eq. 20).
-  const EroiEvidence evidence = search->OnVlmAnswer("Code: C2A, Description: a mug on the kitchen shelf\nnoise");
+  const EroiEvidence evidence =
+      search->OnVlmAnswer("Code: C2A, Description: a mug on the kitchen shelf\nnoise");
   EXPECT_EQ(evidence.codes_used, 1);
   EXPECT_TRUE(evidence.due.empty());  // 1 of theta = 3
   for (auto [i, j] : std::vector<std::pair<int, int>>{{2, 1}, {1, 1}, {3, 1}, {2, 0}, {2, 2}}) {
@@ -39,7 +40,8 @@ TEST(GatewayEroiSearchTest, ThirdRecordInARegionUnitTriggersTheRegionScoreByHand
   ASSERT_TRUE(search.ok());
   search->OnVlmAnswer("Code: C2A, Description: shelf");
   search->OnVlmAnswer("Code: C2A, Description: counter");
-  const EroiEvidence third = search->OnVlmAnswer("Code: D1A, Description: sink");  // (3, 0): same 2x2 unit
+  const EroiEvidence third =
+      search->OnVlmAnswer("Code: D1A, Description: sink");  // (3, 0): same 2x2 unit
   ASSERT_EQ(third.due.size(), 1u);
   const RegionDue& region = third.due[0];
   ASSERT_EQ(region.erois.size(), 4u);  // i 2..3, j 0..1
@@ -64,7 +66,8 @@ TEST(GatewayEroiSearchTest, PlanarValuesAndWindowMatchPlanningsRowMajorEroiGrid)
   search->OnVlmAnswer("Code: A1B, Description: up high");  // (0, 0, 1) = (0, 0, 2)
   const std::vector<double> planar = search->PlanarValues();
   ASSERT_EQ(planar.size(), 20u);
-  // N = 40, prior 0.025; N_r of (0, 0, 2) with r = 2: itself, (2, 0, 2), (0, 2, 2), (0, 0, 0): m = 4.
+  // N = 40, prior 0.025; N_r of (0, 0, 2) with r = 2: itself, (2, 0, 2), (0, 2, 2), (0, 0, 0): m
+  // = 4.
   EXPECT_NEAR(planar[0], 0.75 * 0.025 + 0.25, 1e-12);  // column (0, 0): max of both layers
   EXPECT_NEAR(planar[1], 0.75 * 0.025 + 0.25, 1e-12);  // x fastest: (1, 0)
   EXPECT_NEAR(planar[5], 0.75 * 0.025 + 0.25, 1e-12);  // (0, 1)
@@ -78,9 +81,11 @@ TEST(GatewayEroiSearchTest, AnnotateDrawsDecodableCodesAndThePromptNamesTheTarge
   ASSERT_TRUE(search.ok());
   cv::Mat image(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
   const cv::Mat blank = image.clone();
-  // Camera 4 m before the grid looking along +x: centres 4..10 m ahead are inside the 3-12 m window.
-  const EroiObservation observation = search->Annotate(Eigen::Vector3d(-4, 3, 0), Eigen::Quaterniond::Identity(),
-                                                       PinholeCamera{320, 320, 320, 240, 640, 480}, image);
+  // Camera 4 m before the grid looking along +x: centres 4..10 m ahead are inside the 3-12 m
+  // window.
+  const EroiObservation observation =
+      search->Annotate(Eigen::Vector3d(-4, 3, 0), Eigen::Quaterniond::Identity(),
+                       PinholeCamera{320, 320, 320, 240, 640, 480}, image);
   ASSERT_FALSE(observation.labels.empty());
   for (const CodeLabel& label : observation.labels) {
     ASSERT_TRUE(search->grid().Decode(label.code).ok()) << label.code;

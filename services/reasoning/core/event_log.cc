@@ -5,15 +5,16 @@
 
 namespace semnav::reasoning {
 
-const LoggedEvent& EventLog::Append(int kind, std::string robot_id, std::string task_id, std::string message,
-                                    absl::Time now) {
-  events_.push_back({next_id_++, now, kind, std::move(robot_id), std::move(task_id), std::move(message)});
+const LoggedEvent& EventLog::Append(int kind, std::string robot_id, std::string task_id,
+                                    std::string message, absl::Time now) {
+  events_.push_back(
+      {next_id_++, now, kind, std::move(robot_id), std::move(task_id), std::move(message)});
   if (events_.size() > retained_) events_.pop_front();
   return events_.back();
 }
 
-std::vector<LoggedEvent> EventLog::After(uint64_t last_id, const std::string& robot_id, const std::string& task_id,
-                                         bool* truncated) const {
+std::vector<LoggedEvent> EventLog::After(uint64_t last_id, const std::string& robot_id,
+                                         const std::string& task_id, bool* truncated) const {
   *truncated = !events_.empty() && events_.front().id > last_id + 1;
   std::vector<LoggedEvent> out;
   for (const LoggedEvent& event : events_) {

@@ -13,7 +13,8 @@ double CooccurrencePrior::RoomCooccurrence(std::string_view target,
 }
 
 ExplorationContext BuildExplorationContext(const TargetSpec& target, const SceneGraph& graph,
-                                           const LabelMatcher& matcher, const CooccurrencePrior* prior,
+                                           const LabelMatcher& matcher,
+                                           const CooccurrencePrior* prior,
                                            const TopologicalMemory* memory) {
   ExplorationContext context;
   if (memory != nullptr) {
@@ -25,8 +26,10 @@ ExplorationContext BuildExplorationContext(const TargetSpec& target, const Scene
     const NormalisedLabel label = matcher.Normalise(object.label, object.attributes);
     ExplorationHint hint{object.label, object.position, matcher.Match(prepared, label), 0.0, 0.0};
     if (!target.anchor.empty() && matcher.SameName(label.name, target.anchor)) hint.relation = 1.0;
-    if (prior != nullptr && label.name != prepared.name) hint.cooccurrence = prior->Cooccurrence(prepared.name, label.name);
-    if (hint.relevance > 0.0 || hint.relation > 0.0 || hint.cooccurrence > 0.0) context.objects.push_back(hint);
+    if (prior != nullptr && label.name != prepared.name)
+      hint.cooccurrence = prior->Cooccurrence(prepared.name, label.name);
+    if (hint.relevance > 0.0 || hint.relation > 0.0 || hint.cooccurrence > 0.0)
+      context.objects.push_back(hint);
   }
   if (prior == nullptr) return context;
   // Rooms: the objects of a scene region (mapping's 3 m clusters) seen together say more about
@@ -46,7 +49,8 @@ ExplorationContext BuildExplorationContext(const TargetSpec& target, const Scene
     if (labels.size() < 2) continue;
     centre /= static_cast<double>(labels.size());
     const double room = prior->RoomCooccurrence(prepared.name, labels);
-    if (room > 0.0) context.objects.push_back({"region:" + std::to_string(region.id), centre, 0.0, 0.0, room});
+    if (room > 0.0)
+      context.objects.push_back({"region:" + std::to_string(region.id), centre, 0.0, 0.0, room});
   }
   return context;
 }

@@ -5,12 +5,11 @@
 // AtLocation prior, item 9), plus the places the robot already visited (topological memory).
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "services/reasoning/core/label_matcher.h"
 #include "services/reasoning/core/scene_graph.h"
@@ -27,13 +26,14 @@ class CooccurrencePrior {
   // Co-occurrence of the target with a room, known only by the objects seen in it together
   // (object-room co-occurrence without a room classifier). Default: the mean pairwise value, so
   // one stray object does not make a room; a prior that knows places overrides it.
-  virtual double RoomCooccurrence(std::string_view target, const std::vector<std::string>& labels) const;
+  virtual double RoomCooccurrence(std::string_view target,
+                                  const std::vector<std::string>& labels) const;
 };
 
 struct ExplorationHint {
   std::string label;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // map frame, metres
-  double relevance = 0.0;     // label match with the target, [0, 1]
+  double relevance = 0.0;                              // label match with the target, [0, 1]
   double relation = 0.0;      // 1 when the object is the anchor of the target's relation
   double cooccurrence = 0.0;  // commonsense co-occurrence with the target, [0, 1]
 };
@@ -48,7 +48,7 @@ struct ExplorationContext {
   // Objects with some non-zero term, then one hint per scene region of >= 2 objects (label
   // "region:<id>", at its objects' mean, co-occurrence = RoomCooccurrence of its objects).
   std::vector<ExplorationHint> objects;
-  std::vector<Eigen::Vector3d> visited;        // topological memory nodes
+  std::vector<Eigen::Vector3d> visited;  // topological memory nodes
   // EROI_UTILITY (seed 000): semantic value per EROI column of edge `eroi_edge_m` over the
   // rectangle [eroi_window_min, eroi_window_max], row-major with x fastest; empty = none.
   std::vector<double> eroi_values;
@@ -61,7 +61,8 @@ struct ExplorationContext {
 // `prior` and `memory` may be null (no co-occurrence / no visited places). A room target gives
 // no object terms (rooms are found through regions, not co-occurrence).
 ExplorationContext BuildExplorationContext(const TargetSpec& target, const SceneGraph& graph,
-                                           const LabelMatcher& matcher, const CooccurrencePrior* prior,
+                                           const LabelMatcher& matcher,
+                                           const CooccurrencePrior* prior,
                                            const TopologicalMemory* memory);
 
 }  // namespace semnav::reasoning

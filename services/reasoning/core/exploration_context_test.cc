@@ -12,7 +12,8 @@ namespace {
 // A prior with fixed pairs, so the context's terms can be checked by hand.
 class TablePrior final : public CooccurrencePrior {
  public:
-  explicit TablePrior(std::map<std::pair<std::string, std::string>, double> table) : table_(std::move(table)) {}
+  explicit TablePrior(std::map<std::pair<std::string, std::string>, double> table)
+      : table_(std::move(table)) {}
   double Cooccurrence(std::string_view target, std::string_view label) const override {
     auto it = table_.find({std::string(target), std::string(label)});
     return it == table_.end() ? 0.0 : it->second;
@@ -45,7 +46,8 @@ TEST_F(GatewayExplorationContextTest, RelevanceRelationAndCooccurrenceByHand) {
   target.anchor = "table";
   // The prior is asked with canonical lexicon names: "table" is the COCO "dining table".
   const TablePrior prior({{{"cup", "sink"}, 0.4}, {{"cup", "dining table"}, 0.3}});
-  const ExplorationContext context = BuildExplorationContext(target, graph, matcher_, &prior, nullptr);
+  const ExplorationContext context =
+      BuildExplorationContext(target, graph, matcher_, &prior, nullptr);
   ASSERT_EQ(context.objects.size(), 3u);  // the toilet has no term: left out
   EXPECT_EQ(context.objects[0].label, "coffee cup");
   EXPECT_DOUBLE_EQ(context.objects[0].relevance, 0.5);  // Jaccard {coffee, cup} vs {cup}
@@ -70,7 +72,8 @@ TEST_F(GatewayExplorationContextTest, VisitedPlacesComeFromMemoryAndRoomsGiveNoO
   kitchen.name = "kitchen";
   kitchen.is_room = true;
   const TablePrior prior({{{"kitchen", "sink"}, 0.9}});
-  const ExplorationContext context = BuildExplorationContext(kitchen, graph, matcher_, &prior, &memory);
+  const ExplorationContext context =
+      BuildExplorationContext(kitchen, graph, matcher_, &prior, &memory);
   EXPECT_TRUE(context.objects.empty());
   ASSERT_EQ(context.visited.size(), 2u);
   EXPECT_DOUBLE_EQ(context.visited[1].x(), 3.0);
@@ -84,7 +87,8 @@ TEST_F(GatewayExplorationContextTest, RegionsOfTwoOrMoreObjectsGiveARoomHint) {
   TargetSpec target;
   target.name = "cup";
   const TablePrior prior({{{"cup", "sink"}, 0.4}, {{"cup", "oven"}, 0.2}});
-  const ExplorationContext context = BuildExplorationContext(target, graph, matcher_, &prior, nullptr);
+  const ExplorationContext context =
+      BuildExplorationContext(target, graph, matcher_, &prior, nullptr);
   // cup (relevance 1), sink, oven as objects; then the kitchen-like region: the seen cup is left
   // out of it, the room value is the default mean (0.4 + 0.2) / 2 at the mean of x = 1 and 3.
   // The one-object region gives no hint.
@@ -115,7 +119,8 @@ TEST(GatewayConceptNetCooccurrenceTest, SharedPriorRelatesKitchenwareNotBathroom
   const double bathroom = prior->RoomCooccurrence("fork", {"toilet", "toothbrush"});
   EXPECT_GT(kitchen, bathroom);
   EXPECT_GT(kitchen, 0.3);
-  EXPECT_NEAR(prior->RoomCooccurrence("fork", {"knife"}), prior->Cooccurrence("fork", "knife"), 1e-12);
+  EXPECT_NEAR(prior->RoomCooccurrence("fork", {"knife"}), prior->Cooccurrence("fork", "knife"),
+              1e-12);
   EXPECT_EQ(prior->RoomCooccurrence("fork", {"fire extinguisher"}), 0.0);  // nothing known
   EXPECT_EQ(ConceptNetCooccurrence::Load("/nonexistent/conceptnet.json").status().code(),
             absl::StatusCode::kNotFound);

@@ -6,8 +6,9 @@ namespace semnav::reasoning {
 namespace {
 
 TEST(ExplorationStrategyTest, NamesRoundTripAndOtherTextIsRefused) {
-  for (ExplorationStrategy s : {ExplorationStrategy::kNearestFrontier, ExplorationStrategy::kCoverageMax,
-                                ExplorationStrategy::kSemanticFrontier, ExplorationStrategy::kEroiUtility}) {
+  for (ExplorationStrategy s :
+       {ExplorationStrategy::kNearestFrontier, ExplorationStrategy::kCoverageMax,
+        ExplorationStrategy::kSemanticFrontier, ExplorationStrategy::kEroiUtility}) {
     EXPECT_EQ(ParseExplorationStrategy(ExplorationStrategyName(s)), s);
   }
   EXPECT_EQ(ExplorationStrategyName(ExplorationStrategy::kEroiUtility), "EROI_UTILITY");

@@ -41,12 +41,14 @@ double FastResolver::SpatialHint(const TargetSpec& target, const SceneObject& ob
     int64_t other = -1;
     if (relation.subject_id == object.id && relation.relation == target.relation) {
       other = relation.object_id;
-    } else if (relation.object_id == object.id && !inverse.empty() && relation.relation == inverse) {
+    } else if (relation.object_id == object.id && !inverse.empty() &&
+               relation.relation == inverse) {
       other = relation.subject_id;
     }
     if (other < 0) continue;
     const SceneObject* anchor = graph.FindObject(other);
-    if (anchor != nullptr && matcher_.SameName(matcher_.Normalise(anchor->label, {}).name, target.anchor)) {
+    if (anchor != nullptr &&
+        matcher_.SameName(matcher_.Normalise(anchor->label, {}).name, target.anchor)) {
       return 1.0;
     }
   }
@@ -54,7 +56,8 @@ double FastResolver::SpatialHint(const TargetSpec& target, const SceneObject& ob
 }
 
 ScoredObject FastResolver::Score(const TargetSpec& target, const SceneObject& object,
-                                 const SceneGraph& graph, const std::vector<float>& text_embedding) const {
+                                 const SceneGraph& graph,
+                                 const std::vector<float>& text_embedding) const {
   return ScorePrepared(target, matcher_.Prepare(target), object, graph, text_embedding);
 }
 
@@ -66,14 +69,17 @@ ScoredObject FastResolver::ScorePrepared(const TargetSpec& target, const Prepare
   scored.label = matcher_.Match(prepared, matcher_.Normalise(object.label, object.attributes));
   if (scored.label <= 0.0) return scored;
   // Without a text and an object embedding the seed approximates the CLIP term by the label match.
-  const bool have_embeddings = !text_embedding.empty() && object.embedding.size() == text_embedding.size();
-  scored.embedding = have_embeddings ? std::max(0.0, Cosine(text_embedding, object.embedding)) : scored.label;
-  const double count_factor =
-      std::min(1.0, static_cast<double>(object.detection_count) / config_.detection_count_saturation);
+  const bool have_embeddings =
+      !text_embedding.empty() && object.embedding.size() == text_embedding.size();
+  scored.embedding =
+      have_embeddings ? std::max(0.0, Cosine(text_embedding, object.embedding)) : scored.label;
+  const double count_factor = std::min(
+      1.0, static_cast<double>(object.detection_count) / config_.detection_count_saturation);
   scored.detector = std::clamp(object.score, 0.0, 1.0) * count_factor;
   scored.spatial = SpatialHint(target, object, graph);
   scored.fused = config_.label_weight * scored.label + config_.embedding_weight * scored.embedding +
-                 config_.detector_weight * scored.detector + config_.spatial_weight * scored.spatial;
+                 config_.detector_weight * scored.detector +
+                 config_.spatial_weight * scored.spatial;
   return scored;
 }
 
@@ -86,9 +92,11 @@ FastResolution FastResolver::Resolve(const TargetSpec& target, const SceneGraph&
     if (excluded.count(object.id) > 0) continue;
     ScoredObject scored = ScorePrepared(target, prepared, object, graph, text_embedding);
     if (scored.label <= 0.0) continue;
-    if (!resolution.best.has_value() || scored.fused > resolution.best->fused) resolution.best = scored;
+    if (!resolution.best.has_value() || scored.fused > resolution.best->fused)
+      resolution.best = scored;
   }
-  resolution.accepted = resolution.best.has_value() && resolution.best->fused > config_.fast_threshold;
+  resolution.accepted =
+      resolution.best.has_value() && resolution.best->fused > config_.fast_threshold;
   return resolution;
 }
 

@@ -19,9 +19,9 @@ struct FastResolverConfig {
   double embedding_weight = 0.35;
   double detector_weight = 0.15;
   double spatial_weight = 0.15;
-  double fast_threshold = 0.75;           // fused > this -> goal without a model call.
-  int detection_count_saturation = 10;    // detector term = score * min(1, count / this).
-  double unknown_colour_factor = 0.5;     // label match when a colour is asked but not reported.
+  double fast_threshold = 0.75;         // fused > this -> goal without a model call.
+  int detection_count_saturation = 10;  // detector term = score * min(1, count / this).
+  double unknown_colour_factor = 0.5;   // label match when a colour is asked but not reported.
 };
 
 struct ScoredObject {
@@ -56,9 +56,11 @@ class FastResolver {
   const LabelMatcher& matcher() const { return matcher_; }
 
  private:
-  ScoredObject ScorePrepared(const TargetSpec& target, const PreparedTarget& prepared, const SceneObject& object,
-                             const SceneGraph& graph, const std::vector<float>& text_embedding) const;
-  double SpatialHint(const TargetSpec& target, const SceneObject& object, const SceneGraph& graph) const;
+  ScoredObject ScorePrepared(const TargetSpec& target, const PreparedTarget& prepared,
+                             const SceneObject& object, const SceneGraph& graph,
+                             const std::vector<float>& text_embedding) const;
+  double SpatialHint(const TargetSpec& target, const SceneObject& object,
+                     const SceneGraph& graph) const;
   LabelMatcher matcher_;
   FastResolverConfig config_;
 };

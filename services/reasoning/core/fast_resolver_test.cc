@@ -17,8 +17,8 @@ SceneObject Object(int64_t id, const char* label, double score, int count,
   return object;
 }
 
-TargetSpec Target(const char* name, std::vector<std::string> colours = {}, const char* relation = "",
-                  const char* anchor = "") {
+TargetSpec Target(const char* name, std::vector<std::string> colours = {},
+                  const char* relation = "", const char* anchor = "") {
   TargetSpec target;
   target.name = name;
   target.colours = std::move(colours);
@@ -38,7 +38,8 @@ TEST_F(GatewayFastResolverTest, AllFourTermsByHand) {
   graph.relations = {{2, "near", 1, 0.8}};  // stored from the door's side
   // label 1, embedding falls back to label 1, detector 0.85 * min(1, 15/10), spatial 1:
   // 0.35 + 0.35 + 0.15 * 0.85 + 0.15 = 0.9775
-  ScoredObject scored = resolver_.Score(Target("灭火器", {"红色"}, "near", "door"), graph.objects[0], graph, {});
+  ScoredObject scored =
+      resolver_.Score(Target("灭火器", {"红色"}, "near", "door"), graph.objects[0], graph, {});
   EXPECT_DOUBLE_EQ(scored.label, 1.0);
   EXPECT_DOUBLE_EQ(scored.embedding, 1.0);
   EXPECT_DOUBLE_EQ(scored.detector, 0.85);
@@ -61,7 +62,8 @@ TEST_F(GatewayFastResolverTest, EmbeddingCosineReplacesTheFallback) {
 
 TEST_F(GatewayFastResolverTest, ThresholdIsStrictlyAboveSeventyFivePercent) {
   SceneGraph graph;
-  // 0.7 + 0.15 * 0.9 * 0.5 = 0.7675 -> accepted; with 3 detections 0.7 + 0.15 * 0.27 = 0.7405 -> not.
+  // 0.7 + 0.15 * 0.9 * 0.5 = 0.7675 -> accepted; with 3 detections 0.7 + 0.15 * 0.27 = 0.7405 ->
+  // not.
   graph.objects = {Object(7, "cup", 0.9, 5)};
   EXPECT_TRUE(resolver_.Resolve(Target("杯子"), graph, {}, {}).accepted);
   graph.objects[0].detection_count = 3;
@@ -86,9 +88,11 @@ TEST_F(GatewayFastResolverTest, ColoursSelectAmongSameLabelObjects) {
 
 TEST_F(GatewayFastResolverTest, SpatialHintPicksTheChairLeftOfTheSofa) {
   SceneGraph graph;
-  graph.objects = {Object(1, "chair", 0.9, 10), Object(2, "chair", 0.9, 10), Object(3, "couch", 0.9, 10)};
+  graph.objects = {Object(1, "chair", 0.9, 10), Object(2, "chair", 0.9, 10),
+                   Object(3, "couch", 0.9, 10)};
   graph.relations = {{3, "right_of", 2, 1.0}, {1, "near", 3, 2.0}};  // couch right_of chair 2
-  FastResolution resolution = resolver_.Resolve(Target("chair", {}, "left_of", "沙发"), graph, {}, {});
+  FastResolution resolution =
+      resolver_.Resolve(Target("chair", {}, "left_of", "沙发"), graph, {}, {});
   EXPECT_EQ(resolution.best->object_id, 2);
   EXPECT_NEAR(resolution.best->fused, 0.35 + 0.35 + 0.135 + 0.15, 1e-12);
 }

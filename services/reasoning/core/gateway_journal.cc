@@ -7,7 +7,6 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
-
 #include <nlohmann/json.hpp>
 
 #include "absl/strings/numbers.h"
@@ -29,8 +28,8 @@ int64_t ToNanos(absl::Time t) { return absl::ToUnixNanos(t); }
 absl::Time FromNanos(int64_t ns) { return absl::FromUnixNanos(ns); }
 
 std::optional<TaskState> ParseState(const std::string& name) {
-  for (TaskState s : {TaskState::kRunning, TaskState::kPaused, TaskState::kSucceeded, TaskState::kFailed,
-                      TaskState::kCancelled}) {
+  for (TaskState s : {TaskState::kRunning, TaskState::kPaused, TaskState::kSucceeded,
+                      TaskState::kFailed, TaskState::kCancelled}) {
     if (TaskStateName(s) == name) return s;
   }
   return std::nullopt;
@@ -52,22 +51,23 @@ json SubgoalJson(const Subgoal& g) {
 json TaskJson(const JournaledTask& t) {
   json subgoals = json::array();
   for (const Subgoal& g : t.subgoals) subgoals.push_back(SubgoalJson(g));
-  json out = {{"task_id", t.task_id},
-              {"robot_id", t.robot_id},
-              {"instruction", t.instruction},
-              {"source", t.source},
-              {"strategy", t.strategy.has_value() ? std::string(ExplorationStrategyName(*t.strategy)) : ""},
-              {"subgoals", subgoals},
-              {"state", std::string(TaskStateName(t.progress.state))},
-              {"subgoal_index", t.progress.subgoal_index},
-              {"phase", t.progress.phase},
-              {"reason", t.progress.reason},
-              {"replans", t.progress.replans},
-              {"explore_goals", t.progress.explore_goals},
-              {"model_requests", t.progress.model_requests},
-              {"model_calls", t.model_calls},
-              {"created_ns", ToNanos(t.created)},
-              {"updated_ns", ToNanos(t.updated)}};
+  json out = {
+      {"task_id", t.task_id},
+      {"robot_id", t.robot_id},
+      {"instruction", t.instruction},
+      {"source", t.source},
+      {"strategy", t.strategy.has_value() ? std::string(ExplorationStrategyName(*t.strategy)) : ""},
+      {"subgoals", subgoals},
+      {"state", std::string(TaskStateName(t.progress.state))},
+      {"subgoal_index", t.progress.subgoal_index},
+      {"phase", t.progress.phase},
+      {"reason", t.progress.reason},
+      {"replans", t.progress.replans},
+      {"explore_goals", t.progress.explore_goals},
+      {"model_requests", t.progress.model_requests},
+      {"model_calls", t.model_calls},
+      {"created_ns", ToNanos(t.created)},
+      {"updated_ns", ToNanos(t.updated)}};
   if (t.search_area.has_value()) {
     out["search_area"] = {t.search_area->min.x(), t.search_area->min.y(), t.search_area->max.x(),
                           t.search_area->max.y()};
@@ -97,7 +97,8 @@ class Fields {
  private:
   template <typename T>
   T Fail(const char* name, const char* why) {
-    if (status_.ok()) status_ = absl::DataLossError(absl::StrCat("gateway journal: ", path_, ".", name, " ", why));
+    if (status_.ok())
+      status_ = absl::DataLossError(absl::StrCat("gateway journal: ", path_, ".", name, " ", why));
     return T{};
   }
   const json& object_;
@@ -106,7 +107,8 @@ class Fields {
 };
 
 absl::StatusOr<Subgoal> SubgoalFrom(const json& j, const std::string& path) {
-  if (!j.is_object()) return absl::DataLossError(absl::StrCat("gateway journal: ", path, " is not an object"));
+  if (!j.is_object())
+    return absl::DataLossError(absl::StrCat("gateway journal: ", path, " is not an object"));
   Fields f(j, path);
   Subgoal g;
   const std::optional<SubgoalType> type = ParseSubgoalType(f.Get<std::string>("type"));
@@ -115,9 +117,11 @@ absl::StatusOr<Subgoal> SubgoalFrom(const json& j, const std::string& path) {
   g.duration_s = f.Get<double>("duration_s");
   g.reason = f.Get<std::string>("reason");
   if (!f.status().ok()) return f.status();
-  if (!type.has_value()) return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".type is unknown"));
+  if (!type.has_value())
+    return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".type is unknown"));
   g.type = *type;
-  if (!target.is_object()) return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".target is not an object"));
+  if (!target.is_object())
+    return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".target is not an object"));
   Fields t(target, path + ".target");
   g.target.name = t.Get<std::string>("name");
   g.target.is_room = t.Get<bool>("is_room");
@@ -130,7 +134,8 @@ absl::StatusOr<Subgoal> SubgoalFrom(const json& j, const std::string& path) {
 }
 
 absl::StatusOr<JournaledTask> TaskFrom(const json& j, const std::string& path) {
-  if (!j.is_object()) return absl::DataLossError(absl::StrCat("gateway journal: ", path, " is not an object"));
+  if (!j.is_object())
+    return absl::DataLossError(absl::StrCat("gateway journal: ", path, " is not an object"));
   Fields f(j, path);
   JournaledTask t;
   t.task_id = f.Get<std::string>("task_id");
@@ -151,11 +156,14 @@ absl::StatusOr<JournaledTask> TaskFrom(const json& j, const std::string& path) {
   t.updated = FromNanos(f.Get<int64_t>("updated_ns"));
   if (f.Has("search_area")) {
     const auto area = f.Get<std::vector<double>>("search_area");
-    if (area.size() != 4) return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".search_area needs 4 numbers"));
+    if (area.size() != 4)
+      return absl::DataLossError(
+          absl::StrCat("gateway journal: ", path, ".search_area needs 4 numbers"));
     t.search_area = SearchArea{{area[0], area[1]}, {area[2], area[3]}};
   }
   if (!f.status().ok()) return f.status();
-  if (!state.has_value()) return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".state is unknown"));
+  if (!state.has_value())
+    return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".state is unknown"));
   t.progress.state = *state;
   if (!strategy.empty()) {
     t.strategy = ParseExplorationStrategy(strategy);
@@ -167,15 +175,18 @@ absl::StatusOr<JournaledTask> TaskFrom(const json& j, const std::string& path) {
     return absl::DataLossError(absl::StrCat("gateway journal: ", path, " has no task or robot id"));
   }
   if (!subgoals.is_array() || subgoals.empty()) {
-    return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".subgoals must be a non-empty list"));
+    return absl::DataLossError(
+        absl::StrCat("gateway journal: ", path, ".subgoals must be a non-empty list"));
   }
   for (std::size_t i = 0; i < subgoals.size(); ++i) {
     absl::StatusOr<Subgoal> g = SubgoalFrom(subgoals[i], absl::StrCat(path, ".subgoals[", i, "]"));
     if (!g.ok()) return g.status();
     t.subgoals.push_back(*std::move(g));
   }
-  if (t.progress.subgoal_index < 0 || t.progress.subgoal_index >= static_cast<int>(t.subgoals.size())) {
-    return absl::DataLossError(absl::StrCat("gateway journal: ", path, ".subgoal_index is out of range"));
+  if (t.progress.subgoal_index < 0 ||
+      t.progress.subgoal_index >= static_cast<int>(t.subgoals.size())) {
+    return absl::DataLossError(
+        absl::StrCat("gateway journal: ", path, ".subgoal_index is out of range"));
   }
   return t;
 }
@@ -196,12 +207,14 @@ std::string EncodeGatewayState(const GatewayState& state) {
                       {"holder", l.holder},
                       {"expires_ns", ToNanos(l.expires_at)}});
   }
-  return json{{"version", 1}, {"next_task", state.next_task}, {"tasks", tasks}, {"leases", leases}}.dump();
+  return json{{"version", 1}, {"next_task", state.next_task}, {"tasks", tasks}, {"leases", leases}}
+      .dump();
 }
 
 absl::StatusOr<GatewayState> DecodeGatewayState(absl::string_view text) {
   const json root = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
-  if (!root.is_object()) return absl::DataLossError("gateway journal: the state is not a JSON object");
+  if (!root.is_object())
+    return absl::DataLossError("gateway journal: the state is not a JSON object");
   Fields f(root, "state");
   GatewayState state;
   const int version = f.Get<int>("version");
@@ -209,15 +222,18 @@ absl::StatusOr<GatewayState> DecodeGatewayState(absl::string_view text) {
   const json tasks = f.Get<json>("tasks");
   const json leases = f.Get<json>("leases");
   if (!f.status().ok()) return f.status();
-  if (version != 1) return absl::DataLossError(absl::StrCat("gateway journal: unknown version ", version));
-  if (!tasks.is_array() || !leases.is_array()) return absl::DataLossError("gateway journal: tasks and leases must be lists");
+  if (version != 1)
+    return absl::DataLossError(absl::StrCat("gateway journal: unknown version ", version));
+  if (!tasks.is_array() || !leases.is_array())
+    return absl::DataLossError("gateway journal: tasks and leases must be lists");
   for (std::size_t i = 0; i < tasks.size(); ++i) {
     absl::StatusOr<JournaledTask> t = TaskFrom(tasks[i], absl::StrCat("tasks[", i, "]"));
     if (!t.ok()) return t.status();
     state.tasks.push_back(*std::move(t));
   }
   for (std::size_t i = 0; i < leases.size(); ++i) {
-    if (!leases[i].is_object()) return absl::DataLossError(absl::StrCat("gateway journal: leases[", i, "] is not an object"));
+    if (!leases[i].is_object())
+      return absl::DataLossError(absl::StrCat("gateway journal: leases[", i, "] is not an object"));
     Fields l(leases[i], absl::StrCat("leases[", i, "]"));
     LeaseInfo lease;
     lease.lease_id = l.Get<std::string>("lease_id");
@@ -231,12 +247,9 @@ absl::StatusOr<GatewayState> DecodeGatewayState(absl::string_view text) {
 }
 
 std::string EncodeEventLine(const LoggedEvent& event) {
-  const std::string body = json{{"id", event.id},
-                                {"time_ns", ToNanos(event.time)},
-                                {"kind", event.kind},
-                                {"robot_id", event.robot_id},
-                                {"task_id", event.task_id},
-                                {"message", event.message}}
+  const std::string body = json{{"id", event.id},           {"time_ns", ToNanos(event.time)},
+                                {"kind", event.kind},       {"robot_id", event.robot_id},
+                                {"task_id", event.task_id}, {"message", event.message}}
                                .dump();
   return absl::StrFormat("%08x %s\n", storage::Crc32(body), body);
 }
@@ -262,15 +275,21 @@ std::optional<LoggedEvent> DecodeEventLine(absl::string_view line) {
   return event;
 }
 
-absl::StatusOr<GatewayJournal> GatewayJournal::Open(std::string directory, std::size_t retained_events) {
+absl::StatusOr<GatewayJournal> GatewayJournal::Open(std::string directory,
+                                                    std::size_t retained_events) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
-  if (error) return absl::InternalError(absl::StrCat("cannot create ", directory, ": ", error.message()));
+  if (error)
+    return absl::InternalError(absl::StrCat("cannot create ", directory, ": ", error.message()));
   return GatewayJournal(std::move(directory), std::max<std::size_t>(1, retained_events));
 }
 
-std::string GatewayJournal::state_path() const { return (std::filesystem::path(directory_) / kStateFile).string(); }
-std::string GatewayJournal::events_path() const { return (std::filesystem::path(directory_) / kEventsFile).string(); }
+std::string GatewayJournal::state_path() const {
+  return (std::filesystem::path(directory_) / kStateFile).string();
+}
+std::string GatewayJournal::events_path() const {
+  return (std::filesystem::path(directory_) / kEventsFile).string();
+}
 
 std::vector<LoggedEvent> GatewayJournal::ReadEvents(int* damaged) const {
   std::deque<LoggedEvent> events;
@@ -311,7 +330,8 @@ absl::StatusOr<GatewayJournal::Recovered> GatewayJournal::Recover() {
 }
 
 absl::Status GatewayJournal::SaveState(const GatewayState& state) {
-  return storage::WriteFileAtomically(state_path(), storage::FrameWithChecksum(kStateMagic, EncodeGatewayState(state)));
+  return storage::WriteFileAtomically(
+      state_path(), storage::FrameWithChecksum(kStateMagic, EncodeGatewayState(state)));
 }
 
 absl::Status GatewayJournal::Rewrite(const std::vector<LoggedEvent>& events) {
@@ -334,8 +354,10 @@ absl::Status GatewayJournal::AppendEvents(const std::vector<LoggedEvent>& events
   while (written < text.size() && status.ok()) {
     const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) status = ErrnoStatus("write", path);
-    else written += static_cast<std::size_t>(n);
+    if (n < 0)
+      status = ErrnoStatus("write", path);
+    else
+      written += static_cast<std::size_t>(n);
   }
   if (status.ok() && ::fdatasync(fd) != 0) status = ErrnoStatus("fdatasync", path);
   ::close(fd);

@@ -10,10 +10,10 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include "absl/strings/string_view.h"
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "absl/strings/string_view.h"
 #include "absl/time/time.h"
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/exploration_context.h"
@@ -28,7 +28,7 @@ struct JournaledTask {
   std::string task_id;
   std::string robot_id;
   std::string instruction;
-  std::string source;    // decomposition source ("rules", "model", ...)
+  std::string source;                           // decomposition source ("rules", "model", ...)
   std::optional<ExplorationStrategy> strategy;  // nullopt = the configured default
   std::optional<SearchArea> search_area;
   std::vector<Subgoal> subgoals;

@@ -1,10 +1,10 @@
 #include "services/reasoning/core/gateway_journal.h"
 
-#include <filesystem>
-#include <fstream>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "services/common/storage/durable_file.h"
 
@@ -12,7 +12,8 @@ namespace semnav::reasoning {
 namespace {
 
 std::string FreshDirectory(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / ("journal_" + name);
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / ("journal_" + name);
   std::filesystem::remove_all(dir);
   return dir.string();
 }
@@ -50,8 +51,9 @@ JournaledTask FindCupTask() {
 }
 
 LoggedEvent Event(uint64_t id, std::string message) {
-  return LoggedEvent{id, absl::FromUnixSeconds(1'700'000'000 + static_cast<int64_t>(id)), 3, "go2", "task-7",
-                     std::move(message)};
+  return LoggedEvent{id,       absl::FromUnixSeconds(1'700'000'000 + static_cast<int64_t>(id)),
+                     3,        "go2",
+                     "task-7", std::move(message)};
 }
 
 TEST(GatewayJournalTest, StateRoundTripsEveryField) {
@@ -86,12 +88,14 @@ TEST(GatewayJournalTest, DecodeNamesTheBadField) {
   state.tasks = {FindCupTask()};
   std::string text = EncodeGatewayState(state);
   text.replace(text.find("\"FIND\""), 6, "\"FLY\"");
-  EXPECT_EQ(DecodeGatewayState(text).status().message(), "gateway journal: tasks[0].subgoals[1].type is unknown");
+  EXPECT_EQ(DecodeGatewayState(text).status().message(),
+            "gateway journal: tasks[0].subgoals[1].type is unknown");
   state.tasks[0].progress.subgoal_index = 2;  // past the end
   EXPECT_EQ(DecodeGatewayState(EncodeGatewayState(state)).status().message(),
             "gateway journal: tasks[0].subgoal_index is out of range");
   EXPECT_TRUE(absl::IsDataLoss(DecodeGatewayState("[1,2]").status()));
-  EXPECT_TRUE(absl::IsDataLoss(DecodeGatewayState(R"({"version":1,"next_task":"x","tasks":[],"leases":[]})").status()));
+  EXPECT_TRUE(absl::IsDataLoss(
+      DecodeGatewayState(R"({"version":1,"next_task":"x","tasks":[],"leases":[]})").status()));
 }
 
 TEST(GatewayJournalTest, EventLinesCarryAChecksum) {
@@ -143,7 +147,8 @@ TEST(GatewayJournalTest, ATornLastEventIsSkippedAndTheRestKept) {
   EXPECT_EQ(recovered->damaged_event_lines, 1);
   EXPECT_TRUE(recovered->state.tasks.empty());  // no state file yet: a fresh gateway
   // Recovery compacted the log: the torn line is gone.
-  EXPECT_EQ(*storage::ReadWholeFile(journal.events_path()), EncodeEventLine(Event(1, "a")) + EncodeEventLine(Event(2, "b")));
+  EXPECT_EQ(*storage::ReadWholeFile(journal.events_path()),
+            EncodeEventLine(Event(1, "a")) + EncodeEventLine(Event(2, "b")));
 }
 
 TEST(GatewayJournalTest, ADamagedStateFileIsDataLoss) {
@@ -155,7 +160,8 @@ TEST(GatewayJournalTest, ADamagedStateFileIsDataLoss) {
   std::string bytes = *storage::ReadWholeFile(journal.state_path());
   bytes[bytes.size() / 2] ^= 0x20;
   ASSERT_TRUE(storage::WriteFileAtomically(journal.state_path(), bytes).ok());
-  EXPECT_THAT(std::string(journal.Recover().status().message()), ::testing::HasSubstr("fails its checksum"));
+  EXPECT_THAT(std::string(journal.Recover().status().message()),
+              ::testing::HasSubstr("fails its checksum"));
 }
 
 TEST(GatewayJournalTest, TheEventLogIsCompactedAtTwiceTheRetainedCount) {
@@ -163,7 +169,8 @@ TEST(GatewayJournalTest, TheEventLogIsCompactedAtTwiceTheRetainedCount) {
   GatewayJournal journal = *GatewayJournal::Open(dir, 2);
   for (uint64_t id = 1; id <= 5; ++id) ASSERT_TRUE(journal.AppendEvents({Event(id, "e")}).ok());
   // After the 5th line (> 2 x 2) the file holds only the newest 2.
-  EXPECT_EQ(*storage::ReadWholeFile(journal.events_path()), EncodeEventLine(Event(4, "e")) + EncodeEventLine(Event(5, "e")));
+  EXPECT_EQ(*storage::ReadWholeFile(journal.events_path()),
+            EncodeEventLine(Event(4, "e")) + EncodeEventLine(Event(5, "e")));
 }
 
 }  // namespace

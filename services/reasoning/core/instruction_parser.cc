@@ -62,7 +62,8 @@ class ClauseBuilder {
 
   Clause Finish() {
     for (const std::string& colour : pending_colours_) clause_.loose_colours.push_back(colour);
-    // Pair each relation with its neighbours: English "target REL anchor", Chinese "anchor REL target".
+    // Pair each relation with its neighbours: English "target REL anchor", Chinese "anchor REL
+    // target".
     std::vector<bool> consumed(items_.size(), false);
     for (std::size_t i = 0; i < items_.size(); ++i) {
       if (items_[i].relation.empty()) continue;

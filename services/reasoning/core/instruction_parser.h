@@ -14,13 +14,13 @@
 namespace semnav::reasoning {
 
 struct Clause {
-  std::vector<std::string> actions;   // canonical action names in order: "go", "find", ...
-  TargetSpec room;                    // empty when no room is named.
-  std::vector<TargetSpec> objects;    // targets (anchors live inside their target's spec).
+  std::vector<std::string> actions;        // canonical action names in order: "go", "find", ...
+  TargetSpec room;                         // empty when no room is named.
+  std::vector<TargetSpec> objects;         // targets (anchors live inside their target's spec).
   std::vector<std::string> loose_colours;  // colours not followed by an object ("the red one").
-  bool negated = false;               // "not", "不是".
-  bool deictic = false;               // "that one", "这个".
-  int unknown_words = 0;              // words outside the lexicon.
+  bool negated = false;                    // "not", "不是".
+  bool deictic = false;                    // "that one", "这个".
+  int unknown_words = 0;                   // words outside the lexicon.
 };
 
 struct ParsedInstruction {

@@ -1,7 +1,6 @@
 #include "services/reasoning/core/inverse_mapping.h"
 
 #include <algorithm>
-
 #include <opencv2/imgproc.hpp>
 
 namespace semnav::reasoning {
@@ -30,7 +29,8 @@ std::vector<CodeLabel> InverseMapper::Project(const Eigen::Vector3d& camera_posi
     const Eigen::Vector3d world = grid_->Centre(flat);
     const Eigen::Vector3d p = r_wc * (world - camera_position);
     const double distance = p.norm();
-    if (p.z() <= 0.0 || distance <= config_.min_distance_m || distance >= config_.max_distance_m) continue;
+    if (p.z() <= 0.0 || distance <= config_.min_distance_m || distance >= config_.max_distance_m)
+      continue;
     const double u = camera.fx * p.x() / p.z() + camera.cx;
     const double v = camera.fy * p.y() / p.z() + camera.cy;
     if (u < 0.0 || v < 0.0 || u >= camera.width || v >= camera.height) continue;
@@ -42,16 +42,17 @@ std::vector<CodeLabel> InverseMapper::Project(const Eigen::Vector3d& camera_posi
     int baseline = 0;
     const cv::Size text = cv::getTextSize(label.code, cv::FONT_HERSHEY_SIMPLEX, config_.font_scale,
                                           config_.font_thickness, &baseline);
-    label.box = cv::Rect(static_cast<int>(u) - text.width / 2, static_cast<int>(v) - text.height / 2,
-                         text.width, text.height + baseline);
+    label.box = cv::Rect(static_cast<int>(u) - text.width / 2,
+                         static_cast<int>(v) - text.height / 2, text.width, text.height + baseline);
     labels.push_back(std::move(label));
   }
   return labels;
 }
 
 std::vector<CodeLabel> InverseMapper::Cull(std::vector<CodeLabel> candidates) {
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const CodeLabel& a, const CodeLabel& b) { return a.distance_m > b.distance_m; });
+  std::stable_sort(
+      candidates.begin(), candidates.end(),
+      [](const CodeLabel& a, const CodeLabel& b) { return a.distance_m > b.distance_m; });
   std::vector<CodeLabel> accepted;
   for (CodeLabel& candidate : candidates) {
     const bool free = std::none_of(accepted.begin(), accepted.end(), [&](const CodeLabel& other) {
@@ -68,8 +69,9 @@ void InverseMapper::Draw(const std::vector<CodeLabel>& labels, cv::Mat& image) c
     int baseline = 0;
     const cv::Size text = cv::getTextSize(label.code, cv::FONT_HERSHEY_SIMPLEX, config_.font_scale,
                                           config_.font_thickness, &baseline);
-    cv::putText(image, label.code, cv::Point(label.box.x, label.box.y + text.height), cv::FONT_HERSHEY_SIMPLEX,
-                config_.font_scale, cv::Scalar::all(255), config_.font_thickness, cv::LINE_AA);
+    cv::putText(image, label.code, cv::Point(label.box.x, label.box.y + text.height),
+                cv::FONT_HERSHEY_SIMPLEX, config_.font_scale, cv::Scalar::all(255),
+                config_.font_thickness, cv::LINE_AA);
   }
 }
 

@@ -7,12 +7,11 @@
 //            box overlaps no accepted box.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
+#include <string>
+#include <vector>
 
 #include "services/reasoning/core/eroi_grid.h"
 
@@ -31,14 +30,15 @@ struct InverseMappingConfig {
 };
 
 struct CodeLabel {
-  std::string code;        // Algorithm 1 code of the EROI centre
+  std::string code;                                 // Algorithm 1 code of the EROI centre
   Eigen::Vector3d world = Eigen::Vector3d::Zero();  // EROI centre, world frame
   Eigen::Vector2d pixel = Eigen::Vector2d::Zero();  // (u, v)
-  double distance_m = 0;   // |p^c|
-  cv::Rect box;            // text box centred on the pixel
+  double distance_m = 0;                            // |p^c|
+  cv::Rect box;                                     // text box centred on the pixel
 };
 
-// Eq. 5: camera body frame u (x forward, y left, z up) -> optical frame c (z forward, x right, y down).
+// Eq. 5: camera body frame u (x forward, y left, z up) -> optical frame c (z forward, x right, y
+// down).
 Eigen::Matrix3d BodyToOptical();
 // Eq. 6 for a camera orientation q = R_u^w.
 Eigen::Matrix3d WorldToOptical(const Eigen::Quaterniond& camera_orientation);

@@ -26,7 +26,8 @@ TEST(GatewayInverseMappingTest, FixedRotationOfEquationFive) {
   EXPECT_TRUE((BodyToOptical() * Eigen::Vector3d::UnitZ()).isApprox(-Eigen::Vector3d::UnitY()));
   // A camera yawed +90 deg looks along world +y: a point 5 m along +y is straight ahead.
   const Eigen::Quaterniond yaw90(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-  EXPECT_TRUE((WorldToOptical(yaw90) * Eigen::Vector3d(0, 5, 0)).isApprox(Eigen::Vector3d(0, 0, 5)));
+  EXPECT_TRUE(
+      (WorldToOptical(yaw90) * Eigen::Vector3d(0, 5, 0)).isApprox(Eigen::Vector3d(0, 0, 5)));
 }
 
 TEST(GatewayInverseMappingTest, PinholeProjectionAndDistanceWindowByHand) {

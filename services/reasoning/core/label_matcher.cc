@@ -12,7 +12,8 @@ std::vector<std::string> Words(const std::string& text) {
     std::size_t end = text.find(' ', start);
     if (end == std::string::npos) end = text.size();
     std::string word = text.substr(start, end - start);
-    if (!word.empty() && std::find(words.begin(), words.end(), word) == words.end()) words.push_back(std::move(word));
+    if (!word.empty() && std::find(words.begin(), words.end(), word) == words.end())
+      words.push_back(std::move(word));
     start = end + 1;
   }
   return words;
@@ -81,7 +82,8 @@ double LabelMatcher::Match(const PreparedTarget& target, const NormalisedLabel& 
     for (const std::string& word : target.words) common += HasWord(object.name, word) ? 1 : 0;
     if (common == 0) return 0.0;
     const std::size_t object_words = Words(object.name).size();
-    name_match = static_cast<double>(common) / static_cast<double>(target.words.size() + object_words - common);
+    name_match = static_cast<double>(common) /
+                 static_cast<double>(target.words.size() + object_words - common);
   }
   if (target.colours.empty()) return name_match;
   if (object.colours.empty()) return name_match * unknown_colour_factor_;

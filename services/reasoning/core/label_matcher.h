@@ -31,7 +31,8 @@ class LabelMatcher {
   // asks for a colour the object does not report.
   LabelMatcher(const Lexicon* lexicon, double unknown_colour_factor);
 
-  NormalisedLabel Normalise(std::string_view label, const std::vector<std::string>& attributes) const;
+  NormalisedLabel Normalise(std::string_view label,
+                            const std::vector<std::string>& attributes) const;
   PreparedTarget Prepare(const TargetSpec& target) const;
   // 1 for the same canonical name, else the Jaccard overlap of their words ("cup" vs
   // "coffee cup" = 0.5), times the colour factor: 1 if every asked colour is reported, 0 if the

@@ -27,20 +27,25 @@ void LeaseTable::Restore(const std::vector<LeaseInfo>& leases, absl::Time now) {
   }
 }
 
-absl::StatusOr<LeaseInfo> LeaseTable::Acquire(const std::string& robot_id, const std::string& holder,
-                                              absl::Duration ttl, absl::Time now) {
+absl::StatusOr<LeaseInfo> LeaseTable::Acquire(const std::string& robot_id,
+                                              const std::string& holder, absl::Duration ttl,
+                                              absl::Time now) {
   std::optional<LeaseInfo> current = Current(robot_id, now);
   if (current.has_value() && current->holder != holder) {
     return absl::FailedPreconditionError(absl::StrCat("lease of ", robot_id, " is held by ",
-                                                      current->holder, " until ", absl::FormatTime(current->expires_at)));
+                                                      current->holder, " until ",
+                                                      absl::FormatTime(current->expires_at)));
   }
-  LeaseInfo lease = current.has_value() ? *current : LeaseInfo{absl::StrFormat("%016x", random_()), robot_id, holder, now};
+  LeaseInfo lease = current.has_value()
+                        ? *current
+                        : LeaseInfo{absl::StrFormat("%016x", random_()), robot_id, holder, now};
   lease.expires_at = now + ttl;
   by_robot_[robot_id] = lease;
   return lease;
 }
 
-absl::StatusOr<LeaseInfo> LeaseTable::Renew(const std::string& lease_id, absl::Duration ttl, absl::Time now) {
+absl::StatusOr<LeaseInfo> LeaseTable::Renew(const std::string& lease_id, absl::Duration ttl,
+                                            absl::Time now) {
   for (auto& [robot, lease] : by_robot_) {
     if (lease.lease_id != lease_id) continue;
     if (lease.expires_at <= now) break;

@@ -31,7 +31,8 @@ class LeaseTable {
   absl::StatusOr<LeaseInfo> Renew(const std::string& lease_id, absl::Duration ttl, absl::Time now);
   void Release(const std::string& lease_id);
   // OK when the robot has no unexpired lease or `lease_id` is it; FAILED_PRECONDITION otherwise.
-  absl::Status CheckControl(const std::string& robot_id, const std::string& lease_id, absl::Time now) const;
+  absl::Status CheckControl(const std::string& robot_id, const std::string& lease_id,
+                            absl::Time now) const;
   std::optional<LeaseInfo> Current(const std::string& robot_id, absl::Time now) const;
   // Unexpired leases, for the gateway journal; Restore puts them back after a restart.
   std::vector<LeaseInfo> Unexpired(absl::Time now) const;

@@ -109,9 +109,7 @@ absl::StatusOr<Lexicon> Lexicon::Load(const std::string& path) {
   return Parse(buffer.str());
 }
 
-std::string Lexicon::DefaultPath() {
-  return SEMNAV_REASONING_DATA_DIR "/lexicon.tsv";
-}
+std::string Lexicon::DefaultPath() { return SEMNAV_REASONING_DATA_DIR "/lexicon.tsv"; }
 
 std::vector<const LexiconEntry*> Lexicon::Lookup(std::string_view form) const {
   std::vector<const LexiconEntry*> found;

@@ -16,7 +16,7 @@ enum class TermKind { kObject, kRoom, kColour, kRelation, kAction, kDeixis, kNeg
 
 struct LexiconEntry {
   TermKind kind;
-  std::string canonical;            // English canonical name, e.g. "couch", "left_of", "go".
+  std::string canonical;             // English canonical name, e.g. "couch", "left_of", "go".
   std::vector<std::string> english;  // lower-case forms, may contain spaces ("dining table").
   std::vector<std::string> chinese;
 };

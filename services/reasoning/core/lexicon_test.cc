@@ -56,7 +56,8 @@ TEST(GatewayLexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
 }
 
 TEST(GatewayLexiconTest, RejectsMalformedLines) {
-  EXPECT_EQ(Lexicon::Parse("object\tcup\tcup\n").status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(Lexicon::Parse("object\tcup\tcup\n").status().code(),
+            absl::StatusCode::kInvalidArgument);
   absl::StatusOr<Lexicon> bad_kind = Lexicon::Parse("gadget\tx\tx\tx\n");
   EXPECT_EQ(bad_kind.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_TRUE(absl::StrContains(bad_kind.status().message(), "line 1"));

@@ -9,11 +9,17 @@
 namespace semnav::reasoning {
 
 absl::Status ValidateModelCallPolicy(const ModelCallPolicyConfig& c) {
-  if (absl::Status s = CheckRange(c.new_view_move_m, "new_view_move_m", 0.0, 1e4); !s.ok()) return s;
-  if (absl::Status s = CheckRange(c.new_view_turn_rad, "new_view_turn_rad", 0.0, M_PI); !s.ok()) return s;
-  if (absl::Status s = CheckRange(c.backoff_initial_s, "backoff_initial_s", 0.0, 3600.0); !s.ok()) return s;
-  if (absl::Status s = CheckRange(c.backoff_multiplier, "backoff_multiplier", 1.0, 100.0); !s.ok()) return s;
-  if (absl::Status s = CheckRange(c.backoff_max_s, "backoff_max_s", c.backoff_initial_s, 86400.0); !s.ok()) return s;
+  if (absl::Status s = CheckRange(c.new_view_move_m, "new_view_move_m", 0.0, 1e4); !s.ok())
+    return s;
+  if (absl::Status s = CheckRange(c.new_view_turn_rad, "new_view_turn_rad", 0.0, M_PI); !s.ok())
+    return s;
+  if (absl::Status s = CheckRange(c.backoff_initial_s, "backoff_initial_s", 0.0, 3600.0); !s.ok())
+    return s;
+  if (absl::Status s = CheckRange(c.backoff_multiplier, "backoff_multiplier", 1.0, 100.0); !s.ok())
+    return s;
+  if (absl::Status s = CheckRange(c.backoff_max_s, "backoff_max_s", c.backoff_initial_s, 86400.0);
+      !s.ok())
+    return s;
   if (c.max_calls < 0) return InvalidField("max_calls", "must be >= 0");
   if (c.max_tokens < 0) return InvalidField("max_tokens", "must be >= 0");
   return absl::OkStatus();
@@ -50,7 +56,8 @@ CallVerdict ModelCallPolicy::MayAskVision(double now_s, const Eigen::Vector3d& p
 
 void ModelCallPolicy::OnAsked() { ++calls_; }
 
-void ModelCallPolicy::OnAskedVision(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) {
+void ModelCallPolicy::OnAskedVision(const Eigen::Vector3d& position,
+                                    const Eigen::Quaterniond& orientation) {
   OnAsked();
   last_position_ = position;
   last_orientation_ = orientation.normalized();
@@ -63,13 +70,15 @@ void ModelCallPolicy::OnAnswer(int64_t tokens) {
 }
 
 void ModelCallPolicy::OnFailure(double now_s, std::optional<double> retry_after_s) {
-  const double backoff = std::min(config_.backoff_max_s,
-                                  config_.backoff_initial_s * std::pow(config_.backoff_multiplier, failures_));
+  const double backoff =
+      std::min(config_.backoff_max_s,
+               config_.backoff_initial_s * std::pow(config_.backoff_multiplier, failures_));
   ++failures_;
   // The vendor's Retry-After wins when it asks for longer (capped like the back-off).
-  const double wait = retry_after_s.has_value() && std::isfinite(*retry_after_s)
-                          ? std::clamp(*retry_after_s, backoff, std::max(backoff, config_.backoff_max_s))
-                          : backoff;
+  const double wait =
+      retry_after_s.has_value() && std::isfinite(*retry_after_s)
+          ? std::clamp(*retry_after_s, backoff, std::max(backoff, config_.backoff_max_s))
+          : backoff;
   retry_at_s_ = now_s + wait;
 }
 
@@ -89,8 +98,10 @@ void ModelCallPolicy::StoreSlowAnswer(const std::string& question, std::string a
   slow_answers_[question] = std::move(answer);
 }
 
-int64_t EstimateTokens(const std::string& prompt, const std::string& answer, bool with_image, int64_t image_tokens) {
-  return static_cast<int64_t>((prompt.size() + 3) / 4 + (answer.size() + 3) / 4) + (with_image ? image_tokens : 0);
+int64_t EstimateTokens(const std::string& prompt, const std::string& answer, bool with_image,
+                       int64_t image_tokens) {
+  return static_cast<int64_t>((prompt.size() + 3) / 4 + (answer.size() + 3) / 4) +
+         (with_image ? image_tokens : 0);
 }
 
 }  // namespace semnav::reasoning

@@ -1,6 +1,7 @@
 // When a task may call the model (issue 15, call economy). The 636-call storm: every vision call
 // failed fast and the next camera frame asked again. A task's calls now go through this policy:
-//   - a vision call only on a new view: the camera moved or turned enough since the last asked frame;
+//   - a vision call only on a new view: the camera moved or turned enough since the last asked
+//   frame;
 //   - after a failure, no call until an exponential back-off (or the vendor's Retry-After) ends;
 //   - a budget of calls and tokens per task; once spent the task goes on without the model (the
 //     gateway logs the named event EVENT_KIND_MODEL_BUDGET once);
@@ -9,26 +10,25 @@
 // Plain value type; times are the gateway's clock in seconds.
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "absl/status/status.h"
 
 namespace semnav::reasoning {
 
 struct ModelCallPolicyConfig {
-  double new_view_move_m = 2.0;     // camera travel that makes a new view (about an EROI edge / 1.5)
-  double new_view_turn_rad = 0.5;   // or a turn of this much (~29 deg, half a 60 deg field of view)
-  double backoff_initial_s = 1.0;   // first wait after a failure
+  double new_view_move_m = 2.0;    // camera travel that makes a new view (about an EROI edge / 1.5)
+  double new_view_turn_rad = 0.5;  // or a turn of this much (~29 deg, half a 60 deg field of view)
+  double backoff_initial_s = 1.0;  // first wait after a failure
   double backoff_multiplier = 2.0;  // each further consecutive failure
   double backoff_max_s = 60.0;
-  int max_calls = 60;             // per task (vision, region, slow path, decomposition)
-  int64_t max_tokens = 120000;    // per task; ~100 vision calls of seed 000's 1083 + 18 tokens
+  int max_calls = 60;           // per task (vision, region, slow path, decomposition)
+  int64_t max_tokens = 120000;  // per task; ~100 vision calls of seed 000's 1083 + 18 tokens
 };
 
 // INVALID_ARGUMENT naming the field for non-finite, negative or inconsistent values.
@@ -49,7 +49,8 @@ class ModelCallPolicy {
   // A text call (region score, slow path, decomposition) now?
   CallVerdict MayAsk(double now_s) const;
   // A vision call for a frame taken at this camera pose (map frame)?
-  CallVerdict MayAskVision(double now_s, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) const;
+  CallVerdict MayAskVision(double now_s, const Eigen::Vector3d& position,
+                           const Eigen::Quaterniond& orientation) const;
 
   // A call was made (a vision call also records its view).
   void OnAsked();

@@ -7,14 +7,17 @@
 namespace semnav::reasoning {
 namespace {
 
-Eigen::Quaterniond Yaw(double rad) { return Eigen::Quaterniond(Eigen::AngleAxisd(rad, Eigen::Vector3d::UnitZ())); }
+Eigen::Quaterniond Yaw(double rad) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(rad, Eigen::Vector3d::UnitZ()));
+}
 
 TEST(ModelCallPolicyTest, VisionAsksOnlyOnANewView) {
   ModelCallPolicy policy;  // 2 m or 0.5 rad
   const Eigen::Vector3d start(0, 0, 1);
   EXPECT_EQ(policy.MayAskVision(0, start, Yaw(0)), CallVerdict::kAsk);  // the first frame
   policy.OnAskedVision(start, Yaw(0));
-  EXPECT_EQ(policy.MayAskVision(1, start + Eigen::Vector3d(1.9, 0, 0), Yaw(0.4)), CallVerdict::kSameView);
+  EXPECT_EQ(policy.MayAskVision(1, start + Eigen::Vector3d(1.9, 0, 0), Yaw(0.4)),
+            CallVerdict::kSameView);
   EXPECT_EQ(policy.MayAskVision(1, start + Eigen::Vector3d(2.0, 0, 0), Yaw(0)), CallVerdict::kAsk);
   EXPECT_EQ(policy.MayAskVision(1, start, Yaw(0.5)), CallVerdict::kAsk);
   EXPECT_EQ(policy.MayAskVision(1, start, Yaw(-0.6)), CallVerdict::kAsk);

@@ -18,13 +18,16 @@ TEST(GatewayLeaseTableTest, ExclusiveUntilExpiry) {
   EXPECT_EQ(leases.CheckControl("r1", "", kT0).code(), absl::StatusCode::kFailedPrecondition);
   EXPECT_TRUE(leases.CheckControl("r2", "", kT0).ok());  // unleased robot
   // Re-acquire by the holder keeps the id; renew extends; expiry frees the robot.
-  EXPECT_EQ(leases.Acquire("r1", "alice", absl::Seconds(5), kT0 + absl::Seconds(1))->lease_id, alice->lease_id);
+  EXPECT_EQ(leases.Acquire("r1", "alice", absl::Seconds(5), kT0 + absl::Seconds(1))->lease_id,
+            alice->lease_id);
   EXPECT_EQ(leases.Renew(alice->lease_id, absl::Seconds(20), kT0 + absl::Seconds(2))->expires_at,
             kT0 + absl::Seconds(22));
   EXPECT_TRUE(leases.CheckControl("r1", "", kT0 + absl::Seconds(22)).ok());
-  EXPECT_EQ(leases.Renew(alice->lease_id, absl::Seconds(20), kT0 + absl::Seconds(23)).status().code(),
-            absl::StatusCode::kNotFound);
-  absl::StatusOr<LeaseInfo> bob = leases.Acquire("r1", "bob", absl::Seconds(30), kT0 + absl::Seconds(23));
+  EXPECT_EQ(
+      leases.Renew(alice->lease_id, absl::Seconds(20), kT0 + absl::Seconds(23)).status().code(),
+      absl::StatusCode::kNotFound);
+  absl::StatusOr<LeaseInfo> bob =
+      leases.Acquire("r1", "bob", absl::Seconds(30), kT0 + absl::Seconds(23));
   ASSERT_TRUE(bob.ok());
   EXPECT_NE(bob->lease_id, alice->lease_id);
   leases.Release(bob->lease_id);
@@ -33,7 +36,8 @@ TEST(GatewayLeaseTableTest, ExclusiveUntilExpiry) {
 
 TEST(GatewayEventLogTest, ReplayAfterIdAndTruncation) {
   EventLog log(3);
-  for (int i = 0; i < 5; ++i) log.Append(1, i % 2 == 0 ? "r1" : "r2", "", absl::StrCat("e", i + 1), kT0);
+  for (int i = 0; i < 5; ++i)
+    log.Append(1, i % 2 == 0 ? "r1" : "r2", "", absl::StrCat("e", i + 1), kT0);
   bool truncated = false;
   std::vector<LoggedEvent> all = log.After(0, "", "", &truncated);
   EXPECT_TRUE(truncated);  // ids 1 and 2 were dropped

@@ -4,8 +4,7 @@
 
 namespace semnav::reasoning {
 
-RegionMap::RegionMap(const EroiGrid* grid, RegionMapConfig config)
-    : grid_(grid), config_(config) {
+RegionMap::RegionMap(const EroiGrid* grid, RegionMapConfig config) : grid_(grid), config_(config) {
   config_.region_size = std::max(1, config_.region_size);
   config_.theta = std::max(1, config_.theta);
 }

@@ -3,12 +3,11 @@
 // EROIs (the map g); when a unit has collected theta = 3 new descriptions it is due for scoring.
 #pragma once
 
+#include <Eigen/Core>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "absl/status/statusor.h"
 #include "services/reasoning/core/eroi_grid.h"
@@ -32,7 +31,8 @@ class RegionMap {
 
   // Algorithm 2 step 2-3: records the pair; returns the unit when U(r) reached theta (and resets
   // U(r) to 0). NOT_FOUND if `position` is outside the grid.
-  absl::StatusOr<std::optional<RegionDue>> Add(const Eigen::Vector3d& position, std::string description);
+  absl::StatusOr<std::optional<RegionDue>> Add(const Eigen::Vector3d& position,
+                                               std::string description);
 
   int RegionOf(int eroi) const;
   // M: descriptions per EROI centre.

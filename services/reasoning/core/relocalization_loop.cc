@@ -25,7 +25,8 @@ RobotCommand Rotate(uint64_t id, double rate, double duration, const std::string
 Eigen::Vector3d PlanarTransform::Apply(const Eigen::Vector3d& point) const {
   const double c = std::cos(yaw);
   const double s = std::sin(yaw);
-  return Eigen::Vector3d(c * point.x() - s * point.y(), s * point.x() + c * point.y(), point.z()) + translation;
+  return Eigen::Vector3d(c * point.x() - s * point.y(), s * point.x() + c * point.y(), point.z()) +
+         translation;
 }
 
 RobotPose PlanarTransform::Apply(const RobotPose& pose) const {
@@ -35,12 +36,15 @@ RobotPose PlanarTransform::Apply(const RobotPose& pose) const {
 PlanarTransform PlanarTransform::Inverse() const {
   PlanarTransform inverse;
   inverse.yaw = Wrap(-yaw);
-  inverse.translation = -PlanarTransform{Eigen::Vector3d::Zero(), -yaw}.Apply(translation);  // -R^T t
+  inverse.translation =
+      -PlanarTransform{Eigen::Vector3d::Zero(), -yaw}.Apply(translation);  // -R^T t
   return inverse;
 }
 
 RelocalizationLoop::RelocalizationLoop(RelocalizationLoopConfig config)
-    : config_(config), max_speed_mps_(config.default_speed_mps), max_yaw_rate_rps_(config.default_yaw_rate_rps) {}
+    : config_(config),
+      max_speed_mps_(config.default_speed_mps),
+      max_yaw_rate_rps_(config.default_yaw_rate_rps) {}
 
 void RelocalizationLoop::SetLimits(double max_speed_mps, double max_yaw_rate_rps) {
   max_speed_mps_ = max_speed_mps > 0.0 ? max_speed_mps : config_.default_speed_mps;
@@ -58,8 +62,10 @@ bool RelocalizationLoop::Jumped(double now, const RobotPose& odom_pose) const {
          turned > max_yaw_rate_rps_ * dt + config_.jump_yaw_rad;
 }
 
-std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now, const RobotPose& odom_pose,
-                                                              LocalizationReport report, const SceneGraph& graph,
+std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now,
+                                                              const RobotPose& odom_pose,
+                                                              LocalizationReport report,
+                                                              const SceneGraph& graph,
                                                               bool task_running) {
   const bool jumped = Jumped(now, odom_pose);
   const LocalizationReport previous = reported_;
@@ -73,7 +79,9 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now, const 
       return {};
     case Phase::kAwaitingAnswer:
       if (now >= phase_deadline_) {
-        return AttemptFailed(now, absl::StrFormat("relocalization did not answer within %.1f s", config_.answer_timeout_s),
+        return AttemptFailed(now,
+                             absl::StrFormat("relocalization did not answer within %.1f s",
+                                             config_.answer_timeout_s),
                              graph);
       }
       return {};
@@ -83,13 +91,16 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now, const 
   if (jumped) return Start(now, "pose jumped beyond the commanded motion", graph);
   if (report != LocalizationReport::kOk &&
       (previous == LocalizationReport::kOk || now - last_ended_ >= config_.retrigger_after_s)) {
-    return Start(now, report == LocalizationReport::kLost ? "robot reports LOST" : "robot reports UNCERTAIN", graph);
+    return Start(
+        now, report == LocalizationReport::kLost ? "robot reports LOST" : "robot reports UNCERTAIN",
+        graph);
   }
   if (!trusted_ && task_running) return Start(now, "a task started on an untrusted pose", graph);
   return {};
 }
 
-std::vector<RelocalizationAction> RelocalizationLoop::OnRequest(double now, const std::string& reason,
+std::vector<RelocalizationAction> RelocalizationLoop::OnRequest(double now,
+                                                                const std::string& reason,
                                                                 const SceneGraph& graph) {
   if (phase_ != Phase::kTracking) return {};
   return Start(now, reason.empty() ? "operator request" : "operator request: " + reason, graph);
@@ -99,7 +110,8 @@ std::vector<RelocalizationAction> RelocalizationLoop::Start(double now, const st
                                                             const SceneGraph& graph) {
   trigger_ = trigger;
   attempt_ = 0;
-  paused_task_ = true;  // the hub pauses only a running task; resuming a task it did not pause is a no-op there
+  paused_task_ = true;  // the hub pauses only a running task; resuming a task it did not pause is a
+                        // no-op there
   std::vector<RelocalizationAction> actions;
   RelocalizationAction pause;
   pause.kind = RelocalizationAction::Kind::kPauseTask;
@@ -112,13 +124,15 @@ std::vector<RelocalizationAction> RelocalizationLoop::Start(double now, const st
 
 // Starts a look-around (phase kTracking or a failed attempt), or, when one has just ended,
 // sends what it saw to relocalization.
-std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now, const SceneGraph& graph) {
+std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now,
+                                                                 const SceneGraph& graph) {
   std::vector<RelocalizationAction> actions;
   if (phase_ == Phase::kLookingAround) {
     std::vector<ObservedObject> observed = Observed(graph);
     if (static_cast<int>(observed.size()) < config_.min_observed_objects) {
-      return AttemptFailed(now, absl::StrFormat("the look-around saw %d objects, %d needed", observed.size(),
-                                                config_.min_observed_objects),
+      return AttemptFailed(now,
+                           absl::StrFormat("the look-around saw %d objects, %d needed",
+                                           observed.size(), config_.min_observed_objects),
                            graph);
     }
     RelocalizationAction hold;
@@ -141,8 +155,9 @@ std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now, con
   for (const SceneObject& object : graph.objects) baseline_[object.id] = object.detection_count;
   RelocalizationAction rotate;
   rotate.kind = RelocalizationAction::Kind::kCommand;
-  rotate.command = Rotate(next_command_id_++, config_.look_around_rate_rps, config_.look_around_duration_s,
-                          absl::StrFormat("relocalizing: looking around (attempt %d)", attempt_));
+  rotate.command =
+      Rotate(next_command_id_++, config_.look_around_rate_rps, config_.look_around_duration_s,
+             absl::StrFormat("relocalizing: looking around (attempt %d)", attempt_));
   actions.push_back(rotate);
   phase_ = Phase::kLookingAround;
   phase_deadline_ = now + config_.look_around_duration_s;
@@ -185,17 +200,19 @@ std::vector<ObservedObject> RelocalizationLoop::Observed(const SceneGraph& graph
   return out;
 }
 
-std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(double now,
-                                                               const absl::StatusOr<RelocalizationAnswer>& answer) {
+std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(
+    double now, const absl::StatusOr<RelocalizationAnswer>& answer) {
   if (phase_ != Phase::kAwaitingAnswer) return {};  // late answer of an attempt that timed out
   if (!answer.ok()) {
-    return AttemptFailed(now, absl::StrFormat("relocalization failed: %s", answer.status().message()), SceneGraph{});
+    return AttemptFailed(
+        now, absl::StrFormat("relocalization failed: %s", answer.status().message()), SceneGraph{});
   }
   if (!answer->reliable) {
-    return AttemptFailed(now,
-                         absl::StrFormat("relocalization answer not reliable (%d inliers, rms %.2f m)", answer->inliers,
-                                         answer->rms_residual_m),
-                         SceneGraph{});
+    return AttemptFailed(
+        now,
+        absl::StrFormat("relocalization answer not reliable (%d inliers, rms %.2f m)",
+                        answer->inliers, answer->rms_residual_m),
+        SceneGraph{});
   }
   const PlanarTransform previous = map_from_odom_;
   map_from_odom_ = answer->map_from_odom;
@@ -208,9 +225,10 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(double now,
   correct.kind = RelocalizationAction::Kind::kCorrect;
   correct.map_from_odom = map_from_odom_;
   correct.message = absl::StrFormat(
-      "relocalized (%s): map_from_odom moved by %.2f m, %.1f deg (%d inliers, rms %.2f m)", trigger_,
-      (map_from_odom_.translation - previous.translation).head<2>().norm(),
-      Wrap(map_from_odom_.yaw - previous.yaw) * 180.0 / M_PI, answer->inliers, answer->rms_residual_m);
+      "relocalized (%s): map_from_odom moved by %.2f m, %.1f deg (%d inliers, rms %.2f m)",
+      trigger_, (map_from_odom_.translation - previous.translation).head<2>().norm(),
+      Wrap(map_from_odom_.yaw - previous.yaw) * 180.0 / M_PI, answer->inliers,
+      answer->rms_residual_m);
   actions.push_back(correct);
   if (paused_task_) {
     RelocalizationAction resume;
@@ -222,7 +240,8 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(double now,
   return actions;
 }
 
-std::vector<RelocalizationAction> RelocalizationLoop::AttemptFailed(double now, const std::string& why,
+std::vector<RelocalizationAction> RelocalizationLoop::AttemptFailed(double now,
+                                                                    const std::string& why,
                                                                     const SceneGraph& graph) {
   if (attempt_ < config_.max_attempts) {
     phase_ = Phase::kTracking;  // LookAround from here starts a new look-around
@@ -246,7 +265,8 @@ std::vector<RelocalizationAction> RelocalizationLoop::AttemptFailed(double now, 
   actions.push_back(hold);
   RelocalizationAction fail;
   fail.kind = RelocalizationAction::Kind::kFailTask;
-  fail.message = absl::StrFormat("relocalization failed after %d attempts (%s): %s", attempt_, trigger_, why);
+  fail.message =
+      absl::StrFormat("relocalization failed after %d attempts (%s): %s", attempt_, trigger_, why);
   actions.push_back(fail);
   paused_task_ = false;
   return actions;

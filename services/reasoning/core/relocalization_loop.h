@@ -6,13 +6,12 @@
 // the hub runs the actions (services/reasoning/server/gateway_hub_relocalization.cc).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "absl/status/statusor.h"
 #include "services/reasoning/core/robot_types.h"
@@ -25,7 +24,7 @@ struct RelocalizationLoopConfig {
   // speed allows over the elapsed time (and turn this much more than its yaw rate allows).
   double jump_distance_m = 1.0;
   double jump_yaw_rad = 0.6;
-  double default_speed_mps = 1.0;    // top speed when the robot's hello gave none
+  double default_speed_mps = 1.0;  // top speed when the robot's hello gave none
   double default_yaw_rate_rps = 1.5;
   // Look-around: one full turn at the executor's LOOK_AROUND rate (seed 002's 12 s at 0.5 rad/s).
   double look_around_rate_rps = 0.5;
@@ -79,12 +78,12 @@ struct RelocalizationAnswer {
 // What the hub does for the loop, in order.
 struct RelocalizationAction {
   enum class Kind {
-    kPauseTask,      // pause the robot's task (reason in message); logs EVENT_KIND_RELOCALIZING
-    kCommand,        // send `command` (rotate in place or hold)
-    kRelocalize,     // call relocalization with `observed`
-    kCorrect,        // `map_from_odom` is the robot's new correction; logs EVENT_KIND_RELOCALIZED
-    kResumeTask,     // resume the task the loop paused
-    kFailTask,       // the task fails with `message`; logs EVENT_KIND_RELOCALIZATION_FAILED
+    kPauseTask,   // pause the robot's task (reason in message); logs EVENT_KIND_RELOCALIZING
+    kCommand,     // send `command` (rotate in place or hold)
+    kRelocalize,  // call relocalization with `observed`
+    kCorrect,     // `map_from_odom` is the robot's new correction; logs EVENT_KIND_RELOCALIZED
+    kResumeTask,  // resume the task the loop paused
+    kFailTask,    // the task fails with `message`; logs EVENT_KIND_RELOCALIZATION_FAILED
   };
   Kind kind = Kind::kCommand;
   std::string message;
@@ -101,12 +100,15 @@ class RelocalizationLoop {
   void SetLimits(double max_speed_mps, double max_yaw_rate_rps);
   // A robot state: `odom_pose` in the robot's odometry frame, `now` the robot's clock, `graph`
   // the gateway's scene graph (map frame) and whether a task of the robot is running.
-  std::vector<RelocalizationAction> OnState(double now, const RobotPose& odom_pose, LocalizationReport report,
-                                            const SceneGraph& graph, bool task_running);
+  std::vector<RelocalizationAction> OnState(double now, const RobotPose& odom_pose,
+                                            LocalizationReport report, const SceneGraph& graph,
+                                            bool task_running);
   // The operator asked (RelocalizeRobot). A relocalization already running goes on.
-  std::vector<RelocalizationAction> OnRequest(double now, const std::string& reason, const SceneGraph& graph);
+  std::vector<RelocalizationAction> OnRequest(double now, const std::string& reason,
+                                              const SceneGraph& graph);
   // Relocalization answered (or failed: NOT_FOUND, UNAVAILABLE, ...).
-  std::vector<RelocalizationAction> OnAnswer(double now, const absl::StatusOr<RelocalizationAnswer>& answer);
+  std::vector<RelocalizationAction> OnAnswer(double now,
+                                             const absl::StatusOr<RelocalizationAnswer>& answer);
   // A new session: the robot's odometry starts over, so the last pose is no reference for jumps.
   void OnSessionOpened();
 
@@ -124,9 +126,11 @@ class RelocalizationLoop {
  private:
   enum class Phase { kTracking, kLookingAround, kAwaitingAnswer };
 
-  std::vector<RelocalizationAction> Start(double now, const std::string& trigger, const SceneGraph& graph);
+  std::vector<RelocalizationAction> Start(double now, const std::string& trigger,
+                                          const SceneGraph& graph);
   std::vector<RelocalizationAction> LookAround(double now, const SceneGraph& graph);
-  std::vector<RelocalizationAction> AttemptFailed(double now, const std::string& why, const SceneGraph& graph);
+  std::vector<RelocalizationAction> AttemptFailed(double now, const std::string& why,
+                                                  const SceneGraph& graph);
   std::vector<ObservedObject> Observed(const SceneGraph& graph) const;
   bool Jumped(double now, const RobotPose& odom_pose) const;
 

@@ -26,7 +26,9 @@ SceneObject Object(int64_t id, double x, double y, int detections) {
   return object;
 }
 
-RobotPose Pose(double x, double y, double yaw = 0.0) { return RobotPose{Eigen::Vector3d(x, y, 0.0), yaw}; }
+RobotPose Pose(double x, double y, double yaw = 0.0) {
+  return RobotPose{Eigen::Vector3d(x, y, 0.0), yaw};
+}
 
 RelocalizationLoopConfig Config() {
   RelocalizationLoopConfig config;
@@ -37,12 +39,15 @@ RelocalizationLoopConfig Config() {
   return config;
 }
 
-// Before the loss the map has objects 1 and 2; the look-around finds 3, 4, 5 (new) and sees 1 again.
+// Before the loss the map has objects 1 and 2; the look-around finds 3, 4, 5 (new) and sees 1
+// again.
 SceneGraph Before() { return SceneGraph{1, {Object(1, 1, 0, 4), Object(2, 5, 0, 3)}, {}, {}}; }
 SceneGraph After() {
-  return SceneGraph{2, {Object(1, 1, 0, 6), Object(2, 5, 0, 3), Object(3, 2, 2, 1), Object(4, -1, 3, 2),
-                        Object(5, 0, -2, 1)},
-                    {}, {}};
+  return SceneGraph{2,
+                    {Object(1, 1, 0, 6), Object(2, 5, 0, 3), Object(3, 2, 2, 1),
+                     Object(4, -1, 3, 2), Object(5, 0, -2, 1)},
+                    {},
+                    {}};
 }
 
 TEST(PlanarTransformTest, InverseUndoesApply) {
@@ -61,7 +66,8 @@ TEST(RelocalizationLoopTest, LostReportPausesLooksAroundRelocalizesCorrectsAndRe
   RelocalizationLoop loop(Config());
   EXPECT_TRUE(loop.OnState(0.0, Pose(0, 0), LocalizationReport::kOk, Before(), true).empty());
   // t = 1: the robot reports LOST.
-  std::vector<RelocalizationAction> actions = loop.OnState(1.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  std::vector<RelocalizationAction> actions =
+      loop.OnState(1.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
   ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kPauseTask, Kind::kCommand}));
   EXPECT_TRUE(absl::StrContains(actions[0].message, "LOST"));
   EXPECT_EQ(actions[1].command.kind, CommandKind::kRotate);
@@ -107,7 +113,8 @@ TEST(RelocalizationLoopTest, ObservedObjectsAreInTheOdometryFrameOfTheCurrentCor
   SceneGraph before{3, {}, {}, {}};
   loop.OnRequest(20.0, "check", before);
   SceneGraph after{4, {Object(7, 12, 0, 1), Object(8, 11, 1, 1), Object(9, 10, -1, 1)}, {}, {}};
-  std::vector<RelocalizationAction> actions = loop.OnState(32.0, Pose(0, 0), LocalizationReport::kOk, after, false);
+  std::vector<RelocalizationAction> actions =
+      loop.OnState(32.0, Pose(0, 0), LocalizationReport::kOk, after, false);
   ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
   EXPECT_NEAR(actions[1].observed[2].position.x(), 2.0, 1e-12);  // object 7, farthest
   EXPECT_NEAR(actions[1].observed[0].position.x(), 0.0, 1e-12);  // object 9
@@ -120,7 +127,8 @@ TEST(RelocalizationLoopTest, PoseJumpBeyondTopSpeedTriggersButFastMotionWithinIt
   // 1.4 m in 0.5 s: top speed allows 0.5 m + 1.0 m jump margin.
   EXPECT_TRUE(loop.OnState(0.5, Pose(1.4, 0), LocalizationReport::kOk, Before(), true).empty());
   // 1.6 m in 0.5 s: beyond.
-  std::vector<RelocalizationAction> actions = loop.OnState(1.0, Pose(3.0, 0), LocalizationReport::kOk, Before(), true);
+  std::vector<RelocalizationAction> actions =
+      loop.OnState(1.0, Pose(3.0, 0), LocalizationReport::kOk, Before(), true);
   ASSERT_FALSE(actions.empty());
   EXPECT_EQ(actions[0].kind, Kind::kPauseTask);
   EXPECT_TRUE(absl::StrContains(actions[0].message, "jumped"));
@@ -131,16 +139,19 @@ TEST(RelocalizationLoopTest, YawJumpTriggersAndANewSessionIsNoJump) {
   loop.SetLimits(1.0, 1.0);
   loop.OnState(0.0, Pose(0, 0, 0.0), LocalizationReport::kOk, Before(), false);
   loop.OnSessionOpened();
-  EXPECT_TRUE(loop.OnState(0.1, Pose(20, 0, 3.0), LocalizationReport::kOk, Before(), false).empty());
+  EXPECT_TRUE(
+      loop.OnState(0.1, Pose(20, 0, 3.0), LocalizationReport::kOk, Before(), false).empty());
   // 0.1 s: 0.1 rad allowed + 0.6 rad margin; 1.0 rad is a jump.
-  EXPECT_FALSE(loop.OnState(0.2, Pose(20, 0, 2.0), LocalizationReport::kOk, Before(), false).empty());
+  EXPECT_FALSE(
+      loop.OnState(0.2, Pose(20, 0, 2.0), LocalizationReport::kOk, Before(), false).empty());
 }
 
 TEST(RelocalizationLoopTest, TooFewObjectsRetriesThenFailsTheTaskAndLeavesThePoseUntrusted) {
   RelocalizationLoop loop(Config());
   loop.OnState(0.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), true);
   // The first turn saw nothing new: a second look-around.
-  std::vector<RelocalizationAction> actions = loop.OnState(12.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), true);
+  std::vector<RelocalizationAction> actions =
+      loop.OnState(12.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), true);
   ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand}));
   EXPECT_EQ(actions[0].command.kind, CommandKind::kRotate);
   EXPECT_TRUE(absl::StrContains(actions[0].command.reason, "attempt 2"));
@@ -152,7 +163,8 @@ TEST(RelocalizationLoopTest, TooFewObjectsRetriesThenFailsTheTaskAndLeavesThePos
   EXPECT_FALSE(loop.trusted());
   EXPECT_EQ(loop.failures(), 1);
   // Idle on an untrusted pose: nothing; a new task on it relocalizes first.
-  EXPECT_TRUE(loop.OnState(25.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), false).empty());
+  EXPECT_TRUE(
+      loop.OnState(25.0, Pose(0, 0), LocalizationReport::kUncertain, Before(), false).empty());
   actions = loop.OnState(26.0, Pose(0, 0), LocalizationReport::kOk, Before(), true);
   ASSERT_FALSE(actions.empty());
   EXPECT_TRUE(absl::StrContains(actions[0].message, "untrusted"));

@@ -18,10 +18,10 @@ struct RobotRecord {
   double sim_now_s = 0.0;                // stamp of the last state (simulated clock)
   uint64_t synced_mapping_revision = 0;  // frames the scene graph was brought up to
   RobotPose pose;
-  bool fly_roll = false;                 // the latest hello offered the fly-roll mode
-  double footprint_radius_m = 0.0;       // the latest hello's footprint
+  bool fly_roll = false;            // the latest hello offered the fly-roll mode
+  double footprint_radius_m = 0.0;  // the latest hello's footprint
   bool emergency_stop = false;
-  std::string active_task;               // "" = none
+  std::string active_task;  // "" = none
   std::unique_ptr<TopologicalMemory> memory;
   uint64_t next_command_id = 1;
   uint64_t last_session_command = 0;   // id sent on the session

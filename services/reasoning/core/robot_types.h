@@ -1,17 +1,16 @@
 // What the executor exchanges with a robot session: pose in, feedback in, commands out.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace semnav::reasoning {
 
 struct RobotPose {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // map frame, metres
-  double yaw = 0.0;                                     // rad, counter-clockwise from +x
+  double yaw = 0.0;                                    // rad, counter-clockwise from +x
 };
 
 enum class RobotFeedback { kGoalReached, kFailed, kBlocked };
@@ -20,14 +19,14 @@ enum class CommandKind { kNavigate, kRotate, kStop, kHold };
 
 struct RobotCommand {
   CommandKind kind = CommandKind::kHold;
-  uint64_t id = 0;                                  // feedback refers to this id
-  Eigen::Vector3d goal = Eigen::Vector3d::Zero();   // kNavigate: final position
-  double goal_yaw = 0.0;                            // kNavigate: final heading, rad
-  double max_speed = 0.0;                           // kNavigate: m/s, 0 = robot default
-  std::vector<Eigen::Vector3d> path;                // kNavigate: planned waypoints incl. goal
-  double angular_speed = 0.0;                       // kRotate: rad/s (positive = counter-clockwise)
-  double duration_s = 0.0;                          // kRotate / kHold: seconds, 0 = until next command
-  std::string reason;                               // shown to the operator
+  uint64_t id = 0;                                 // feedback refers to this id
+  Eigen::Vector3d goal = Eigen::Vector3d::Zero();  // kNavigate: final position
+  double goal_yaw = 0.0;                           // kNavigate: final heading, rad
+  double max_speed = 0.0;                          // kNavigate: m/s, 0 = robot default
+  std::vector<Eigen::Vector3d> path;               // kNavigate: planned waypoints incl. goal
+  double angular_speed = 0.0;                      // kRotate: rad/s (positive = counter-clockwise)
+  double duration_s = 0.0;  // kRotate / kHold: seconds, 0 = until next command
+  std::string reason;       // shown to the operator
 };
 
 }  // namespace semnav::reasoning

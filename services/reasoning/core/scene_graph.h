@@ -3,21 +3,20 @@
 // converts mapping's protos into these.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace semnav::reasoning {
 
 struct SceneObject {
   int64_t id = 0;
-  std::string label;                    // open-vocabulary detector label, e.g. "red cup" or "sofa".
+  std::string label;  // open-vocabulary detector label, e.g. "red cup" or "sofa".
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // map frame, metres.
-  double score = 0.0;                   // detector confidence in [0, 1].
-  int detection_count = 0;              // how many frames confirmed the object.
-  int64_t region_id = -1;               // -1: no region.
+  double score = 0.0;                                  // detector confidence in [0, 1].
+  int detection_count = 0;                             // how many frames confirmed the object.
+  int64_t region_id = -1;                              // -1: no region.
   std::vector<std::string> attributes;  // e.g. colours reported by the detector/captioner.
   std::vector<float> embedding;         // visual embedding (CLIP-like); empty: none.
   double scale_m = 0.0;                 // largest extent of mapping's box, metres; 0: unknown.

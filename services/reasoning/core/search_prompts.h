@@ -16,8 +16,10 @@ namespace semnav::reasoning {
 // satisfies Logic(P_new) = Logic(P_old) and Target(P_new) = T_new by construction.
 std::string BuildSearchPrompt(std::string_view target);
 
-// Algorithm 2, step 3a: the descriptions collected in one region unit, asking for a score in [-5, 5].
-std::string BuildRegionScorePrompt(std::string_view target, const std::vector<std::string>& descriptions);
+// Algorithm 2, step 3a: the descriptions collected in one region unit, asking for a score in [-5,
+// 5].
+std::string BuildRegionScorePrompt(std::string_view target,
+                                   const std::vector<std::string>& descriptions);
 
 // The first integer in `answer`; INVALID_ARGUMENT if there is none or it is outside [-5, 5].
 absl::StatusOr<int> ParseRegionScore(std::string_view answer);

@@ -48,7 +48,8 @@ GroundedGraph SelectiveGrounding(const TargetSpec& target, const SceneGraph& gra
     if (!target.anchor.empty()) match = std::max(match, 0.5 * matcher.Match(anchor, label));
     if (match > 0.0) hits.push_back({match + 1e-3 * object.score, &object});
   }
-  std::stable_sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::stable_sort(hits.begin(), hits.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
   for (const auto& [match, object] : hits) {
     if (selection.Add(object->id)) out.keyword_hits.push_back(object->id);
   }
@@ -56,10 +57,12 @@ GroundedGraph SelectiveGrounding(const TargetSpec& target, const SceneGraph& gra
   // 2. One-hop relation expansion, nearest relation first.
   std::vector<const SceneRelation*> touching;
   for (const SceneRelation& relation : graph.relations) {
-    if (selection.Has(relation.subject_id) != selection.Has(relation.object_id)) touching.push_back(&relation);
+    if (selection.Has(relation.subject_id) != selection.Has(relation.object_id))
+      touching.push_back(&relation);
   }
-  std::stable_sort(touching.begin(), touching.end(),
-                   [](const SceneRelation* a, const SceneRelation* b) { return a->distance_m < b->distance_m; });
+  std::stable_sort(
+      touching.begin(), touching.end(),
+      [](const SceneRelation* a, const SceneRelation* b) { return a->distance_m < b->distance_m; });
   for (const SceneRelation* relation : touching) {
     selection.Add(selection.Has(relation->subject_id) ? relation->object_id : relation->subject_id);
   }
@@ -72,8 +75,9 @@ GroundedGraph SelectiveGrounding(const TargetSpec& target, const SceneGraph& gra
   for (const SceneRegion& region : graph.regions) {
     if (target.is_room && matcher.SameName(region.name, target.name)) regions.insert(region.id);
   }
-  const Eigen::Vector3d centre =
-      out.keyword_hits.empty() ? Eigen::Vector3d::Zero() : by_id.at(out.keyword_hits.front())->position;
+  const Eigen::Vector3d centre = out.keyword_hits.empty()
+                                     ? Eigen::Vector3d::Zero()
+                                     : by_id.at(out.keyword_hits.front())->position;
   std::vector<std::pair<double, int64_t>> region_members;
   for (const SceneRegion& region : graph.regions) {
     if (regions.count(region.id) == 0) continue;

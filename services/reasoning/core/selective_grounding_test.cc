@@ -4,8 +4,8 @@
 
 #include "gtest/gtest.h"
 #include "services/reasoning/core/scene_graph_json.h"
-#include "services/reasoning/testing/test_lexicon.h"
 #include "services/reasoning/testing/synthetic_scene.h"
+#include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -24,9 +24,11 @@ TEST(GatewayGroundingTest, TwoHundredObjectsShrinkToFifteenKeepingTheTarget) {
   EXPECT_EQ(grounded.keyword_hits, std::vector<int64_t>{testing::kSyntheticTargetId});
   EXPECT_TRUE(Contains(grounded.graph, testing::kSyntheticTargetId));
   EXPECT_TRUE(Contains(grounded.graph, testing::kSyntheticDoorId));
-  for (const SceneObject& object : grounded.graph.objects) EXPECT_EQ(object.region_id, 9) << object.id;
-  const double reduction = 1.0 - static_cast<double>(EstimateTokens(SceneGraphToPromptJson(grounded.graph))) /
-                                     EstimateTokens(SceneGraphToPromptJson(scene));
+  for (const SceneObject& object : grounded.graph.objects)
+    EXPECT_EQ(object.region_id, 9) << object.id;
+  const double reduction =
+      1.0 - static_cast<double>(EstimateTokens(SceneGraphToPromptJson(grounded.graph))) /
+                EstimateTokens(SceneGraphToPromptJson(scene));
   EXPECT_GE(reduction, 0.9);
 }
 
@@ -42,9 +44,9 @@ TEST(GatewayGroundingTest, OrderIsKeywordThenRelationThenRegion) {
   };
   add(1, "cup", 0, 0.0);
   add(2, "dining table", 1, 0.5);  // related to the cup, other region
-  add(3, "chair", 0, 3.0);          // same region, far
-  add(4, "sink", 0, 1.0);           // same region, near
-  add(5, "bed", 2, 9.0);            // unrelated
+  add(3, "chair", 0, 3.0);         // same region, far
+  add(4, "sink", 0, 1.0);          // same region, near
+  add(5, "bed", 2, 9.0);           // unrelated
   scene.relations = {{1, "on", 2, 0.4}};
   scene.regions = {{0, "kitchen", {1, 3, 4}}, {1, "dining", {2}}, {2, "bedroom", {5}}};
   LabelMatcher matcher(&ShippedLexicon(), 0.5);

@@ -5,7 +5,8 @@
 namespace semnav::reasoning {
 
 SemanticValues::SemanticValues(int eroi_count)
-    : prior_(1.0 / std::max(1, eroi_count)), values_(static_cast<std::size_t>(std::max(1, eroi_count)), prior_) {}
+    : prior_(1.0 / std::max(1, eroi_count)),
+      values_(static_cast<std::size_t>(std::max(1, eroi_count)), prior_) {}
 
 void SemanticValues::ApplyVlmEvidence(const std::vector<int>& neighbourhood) {
   if (neighbourhood.empty()) return;

@@ -51,7 +51,8 @@ TEST(GatewayRegionMapTest, ThirdObservationInAUnitTriggersScoring) {
   ASSERT_TRUE(due.ok() && due->has_value());
   EXPECT_EQ((*due)->region, 0);
   EXPECT_EQ((*due)->erois, (std::vector<int>{0, 1, 4, 5}));
-  EXPECT_EQ((*due)->descriptions, (std::vector<std::string>{"bike rack", "road side", "parking area"}));
+  EXPECT_EQ((*due)->descriptions,
+            (std::vector<std::string>{"bike rack", "road side", "parking area"}));
   EXPECT_FALSE(map.Add({0, 0, 0}, "again")->has_value());  // U(r) was reset
   EXPECT_EQ(map.Add({30, 0, 0}, "far away").status().code(), absl::StatusCode::kNotFound);
   EXPECT_EQ(map.descriptions().at(0).size(), 2u);

@@ -28,7 +28,8 @@ ResolveRequest BuildResolveRequest(std::string_view instruction, const TargetSpe
       "\".\nScene graph (objects with id, label, position in metres, detector score; relations as "
       "[subject, relation, object]; regions):\n",
       SceneGraphToPromptJson(subgraph),
-      "\nRank the candidates of the task below by how well they match the target; best_id \"\" when "
+      "\nRank the candidates of the task below by how well they match the target; best_id \"\" "
+      "when "
       "none of them is the target.");
   nlohmann::json candidates = nlohmann::json::array();
   for (const SceneObject& object : subgraph.objects) {
@@ -36,12 +37,18 @@ ResolveRequest BuildResolveRequest(std::string_view instruction, const TargetSpe
     for (const SceneRelation& relation : subgraph.relations) {
       if (relation.subject_id != object.id) continue;
       const SceneObject* other = subgraph.FindObject(relation.object_id);
-      if (other != nullptr) absl::StrAppend(&description, description.empty() ? "" : ", ", relation.relation, " ", other->label);
+      if (other != nullptr)
+        absl::StrAppend(&description, description.empty() ? "" : ", ", relation.relation, " ",
+                        other->label);
     }
-    candidates.push_back({{"id", absl::StrCat(object.id)}, {"label", object.label}, {"description", description}});
+    candidates.push_back(
+        {{"id", absl::StrCat(object.id)}, {"label", object.label}, {"description", description}});
   }
-  request.task_json =
-      nlohmann::json{{"task", "match_target"}, {"target", TargetText(target)}, {"candidates", candidates}}.dump();
+  request.task_json = nlohmann::json{
+      {"task", "match_target"},
+      {"target", TargetText(target)},
+      {"candidates",
+       candidates}}.dump();
   return request;
 }
 
@@ -76,14 +83,16 @@ absl::StatusOr<SlowDecision> ParseResolveAnswer(std::string_view answer, const S
   if (root.contains("ranking") && root["ranking"].is_array()) {
     for (const nlohmann::json& item : root["ranking"]) {
       // value("id", "") throws for an id that is not a string: check the type first.
-      if (item.is_object() && item.contains("id") && item["id"].is_string() && item["id"].get<std::string>() == best &&
-          item.contains("reason") && item["reason"].is_string()) {
+      if (item.is_object() && item.contains("id") && item["id"].is_string() &&
+          item["id"].get<std::string>() == best && item.contains("reason") &&
+          item["reason"].is_string()) {
         decision.explanation = item["reason"].get<std::string>();
       }
     }
   }
   if (best.empty()) return decision;  // not among the candidates: explore
-  if (!absl::SimpleAtoi(best, &decision.object_id) || subgraph.FindObject(decision.object_id) == nullptr) {
+  if (!absl::SimpleAtoi(best, &decision.object_id) ||
+      subgraph.FindObject(decision.object_id) == nullptr) {
     return absl::InvalidArgumentError(absl::StrCat("best_id: '", best, "' is not a candidate"));
   }
   if (decision.confidence >= config.confidence_threshold) {

@@ -16,11 +16,12 @@
 namespace semnav::reasoning {
 
 struct SlowPathConfig {
-  double confidence_threshold = 0.6;       // slow-path answers below this are not used as goals.
-  double vision_threshold = 0.5;           // below this a named candidate goes to vision verification.
+  double confidence_threshold = 0.6;  // slow-path answers below this are not used as goals.
+  double vision_threshold = 0.5;      // below this a named candidate goes to vision verification.
   bool vision_enabled = true;
-  double offline_confidence_factor = 0.75;  // proxy answers marked "offline" (commonsense prior, no
-                                            // model) are weighed lower, as the proxy asks callers to.
+  double offline_confidence_factor =
+      0.75;  // proxy answers marked "offline" (commonsense prior, no
+             // model) are weighed lower, as the proxy asks callers to.
 };
 
 enum class SlowAction {

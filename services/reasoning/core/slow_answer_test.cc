@@ -35,8 +35,10 @@ TEST(GatewaySlowAnswerTest, ThresholdsDecideTheAction) {
       {R"({"best_id": "42", "confidence": 0.49, "ranking": []})", SlowAction::kVisionVerify, 0.49},
       {R"({"best_id": "", "confidence": 0.0, "ranking": []})", SlowAction::kExplore, 0.0},
       // Offline prior answers count 0.75: 0.8 -> 0.6 (accepted), 0.7 -> 0.525 (not).
-      {R"({"best_id": "42", "confidence": 0.8, "ranking": [], "offline": true})", SlowAction::kGoal, 0.6},
-      {R"({"best_id": "42", "confidence": 0.7, "ranking": [], "offline": true})", SlowAction::kExplore, 0.525},
+      {R"({"best_id": "42", "confidence": 0.8, "ranking": [], "offline": true})", SlowAction::kGoal,
+       0.6},
+      {R"({"best_id": "42", "confidence": 0.7, "ranking": [], "offline": true})",
+       SlowAction::kExplore, 0.525},
   };
   for (const Row& row : rows) {
     absl::StatusOr<SlowDecision> decision = ParseResolveAnswer(row.answer, graph, config);
@@ -48,8 +50,8 @@ TEST(GatewaySlowAnswerTest, ThresholdsDecideTheAction) {
   no_vision.vision_enabled = false;
   EXPECT_EQ(ParseResolveAnswer(rows[2].answer, graph, no_vision)->action, SlowAction::kExplore);
   absl::StatusOr<SlowDecision> explained = ParseResolveAnswer(
-      R"({"best_id": "42", "confidence": 0.9, "ranking": [{"id": "42", "score": 0.9, "reason": "red cup"}]})", graph,
-      config);
+      R"({"best_id": "42", "confidence": 0.9, "ranking": [{"id": "42", "score": 0.9, "reason": "red cup"}]})",
+      graph, config);
   EXPECT_EQ(explained->explanation, "red cup");
   EXPECT_EQ(explained->object_id, 42);
 }

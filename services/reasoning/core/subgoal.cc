@@ -54,7 +54,8 @@ const TargetSpec* PrimaryTarget(const std::vector<Subgoal>& subgoals) {
 std::string DescribeSubgoals(const std::vector<Subgoal>& subgoals) {
   return absl::StrJoin(subgoals, " ", [](std::string* out, const Subgoal& goal) {
     std::string target = absl::StrJoin(goal.target.colours, " ");
-    if (!goal.target.name.empty()) absl::StrAppend(&target, target.empty() ? "" : " ", goal.target.name);
+    if (!goal.target.name.empty())
+      absl::StrAppend(&target, target.empty() ? "" : " ", goal.target.name);
     if (!goal.target.relation.empty()) {
       absl::StrAppend(&target, " ", goal.target.relation, " ", goal.target.anchor);
     }

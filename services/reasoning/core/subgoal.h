@@ -8,7 +8,16 @@
 
 namespace semnav::reasoning {
 
-enum class SubgoalType { kNavigate, kFind, kApproach, kVerify, kLookAround, kExplore, kBacktrack, kWait };
+enum class SubgoalType {
+  kNavigate,
+  kFind,
+  kApproach,
+  kVerify,
+  kLookAround,
+  kExplore,
+  kBacktrack,
+  kWait
+};
 
 // "NAVIGATE", "FIND", ... as used in model JSON and the operator API.
 std::string_view SubgoalTypeName(SubgoalType type);
@@ -18,7 +27,7 @@ bool RequiresTarget(SubgoalType type);
 
 // What the user wants to reach, in canonical (English) lexicon names.
 struct TargetSpec {
-  std::string name;                  // object or room, e.g. "cup", "kitchen"; empty: none.
+  std::string name;  // object or room, e.g. "cup", "kitchen"; empty: none.
   bool is_room = false;
   std::vector<std::string> colours;  // e.g. {"red"}.
   std::string relation;              // "near", "left_of", ...; empty: no spatial hint.

@@ -3,8 +3,8 @@
 #include <string>
 
 #include "absl/strings/str_cat.h"
-#include "services/reasoning/core/input_limits.h"
 #include "nlohmann/json.hpp"
+#include "services/reasoning/core/input_limits.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -15,7 +15,8 @@ absl::Status Invalid(const std::string& field, const std::string& problem) {
   return absl::InvalidArgumentError(absl::StrCat(field, ": ", problem));
 }
 
-absl::StatusOr<std::string> OptionalString(const json& item, const std::string& path, const char* key) {
+absl::StatusOr<std::string> OptionalString(const json& item, const std::string& path,
+                                           const char* key) {
   if (!item.contains(key)) return std::string();
   if (!item[key].is_string()) return Invalid(absl::StrCat(path, ".", key), "must be a string");
   return item[key].get<std::string>();
@@ -26,8 +27,8 @@ absl::StatusOr<std::string> OptionalString(const json& item, const std::string& 
 absl::StatusOr<double> OptionalNonNegative(const json& item, const std::string& path,
                                            const char* key, double max) {
   if (!item.contains(key)) return 0.0;
-  const bool in_range = item[key].is_number() && item[key].get<double>() >= 0.0 &&
-                        item[key].get<double>() <= max;
+  const bool in_range =
+      item[key].is_number() && item[key].get<double>() >= 0.0 && item[key].get<double>() <= max;
   if (!in_range) {
     return Invalid(absl::StrCat(path, ".", key),
                    absl::StrCat("must be a number in [0, ", max, "]"));
@@ -43,7 +44,8 @@ absl::StatusOr<Subgoal> ParseOne(const json& item, const std::string& path) {
   const std::string type_name = item["type"].get<std::string>();
   const std::optional<SubgoalType> type = ParseSubgoalType(type_name);
   if (!type.has_value()) {
-    return Invalid(absl::StrCat(path, ".type"), absl::StrCat("unknown subgoal type '", type_name, "'"));
+    return Invalid(absl::StrCat(path, ".type"),
+                   absl::StrCat("unknown subgoal type '", type_name, "'"));
   }
   Subgoal goal;
   goal.type = *type;
@@ -54,8 +56,9 @@ absl::StatusOr<Subgoal> ParseOne(const json& item, const std::string& path) {
   }
   goal.target.name = *target;
   goal.target.text = *target;
-  for (auto [field, key] : {std::pair{&goal.target.relation, "relation"},
-                            std::pair{&goal.target.anchor, "anchor"}, std::pair{&goal.reason, "reason"}}) {
+  for (auto [field, key] :
+       {std::pair{&goal.target.relation, "relation"}, std::pair{&goal.target.anchor, "anchor"},
+        std::pair{&goal.reason, "reason"}}) {
     absl::StatusOr<std::string> value = OptionalString(item, path, key);
     if (!value.ok()) return value.status();
     *field = *value;
@@ -84,13 +87,17 @@ DecomposeRequest BuildDecomposeRequest(std::string_view instruction) {
   DecomposeRequest request;
   request.prose = absl::StrCat(
       "A ground robot received this instruction (English or Chinese): \"", std::string(instruction),
-      "\"\nSplit it into subgoals, in order. Types: NAVIGATE (go to a room or object), FIND (search "
-      "for an object), APPROACH (close in, distance_m), VERIFY (confirm the object up close), LOOK_AROUND, "
-      "EXPLORE, BACKTRACK (return to where an object was last seen), WAIT (duration_s). NAVIGATE, FIND, "
+      "\"\nSplit it into subgoals, in order. Types: NAVIGATE (go to a room or object), FIND "
+      "(search "
+      "for an object), APPROACH (close in, distance_m), VERIFY (confirm the object up close), "
+      "LOOK_AROUND, "
+      "EXPLORE, BACKTRACK (return to where an object was last seen), WAIT (duration_s). NAVIGATE, "
+      "FIND, "
       "APPROACH and VERIFY need a target (an object or room name); give colours, and a relation "
       "(near, left_of, right_of, on, in) with its anchor object when the instruction names one.\n"
       "Answer with JSON only: {\"subgoals\": [{\"type\": \"FIND\", \"target\": \"cup\", "
-      "\"colours\": [\"red\"], \"relation\": \"near\", \"anchor\": \"door\", \"reason\": \"...\"}]}");
+      "\"colours\": [\"red\"], \"relation\": \"near\", \"anchor\": \"door\", \"reason\": "
+      "\"...\"}]}");
   request.task_json = json{{"task", "decompose"}, {"instruction", std::string(instruction)}}.dump();
   return request;
 }

@@ -1,6 +1,7 @@
 // The model path of decomposition: the request (prose for real models, the task object
 // {"task": "decompose", "instruction": ...} as the last part, docs/algorithms/modelproxy.md) and
-// the validation of model-produced subgoal lists. Expected shape (the decomposition prompt asks for it):
+// the validation of model-produced subgoal lists. Expected shape (the decomposition prompt asks for
+// it):
 //   {"subgoals": [{"type": "NAVIGATE", "target": "kitchen", "colours": ["red"],
 //                  "relation": "near", "anchor": "door", "distance_m": 0.5, "duration_s": 0,
 //                  "reason": "..."}]}

@@ -26,13 +26,15 @@ TEST(GatewaySubgoalJsonTest, RejectsAndNamesTheBadField) {
     const char* field;
   };
   const Case cases[] = {
-      {R"({"subgoals": [{"type": "NAVIGATE", "target": "a"}, {"type": "FLY"}]})", "subgoals[1].type"},
+      {R"({"subgoals": [{"type": "NAVIGATE", "target": "a"}, {"type": "FLY"}]})",
+       "subgoals[1].type"},
       {R"({"subgoals": [{"type": "FIND"}]})", "subgoals[0].target"},
       {R"({"subgoals": [{"type": "VERIFY", "target": ""}]})", "subgoals[0].target"},
       {R"({"subgoals": [{"target": "cup"}]})", "subgoals[0].type"},
       {R"({"subgoals": [{"type": "APPROACH", "target": "cup", "distance_m": -1}]})",
        "subgoals[0].distance_m"},
-      {R"({"subgoals": [{"type": "FIND", "target": "cup", "colours": "red"}]})", "subgoals[0].colours"},
+      {R"({"subgoals": [{"type": "FIND", "target": "cup", "colours": "red"}]})",
+       "subgoals[0].colours"},
       {R"({"subgoals": [{"type": "WAIT", "duration_s": 1e300}]})", "subgoals[0].duration_s"},
       {R"({"subgoals": [{"type": "APPROACH", "target": "cup", "distance_m": 1e9}]})",
        "subgoals[0].distance_m"},

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "absl/strings/str_cat.h"
-
 #include "services/reasoning/core/subgoal_json.h"
 
 namespace semnav::reasoning {
@@ -38,7 +37,8 @@ std::vector<Subgoal> TaskDecomposer::FromClause(const Clause& clause) const {
     const TargetSpec& where = clause.objects.empty() ? clause.room : clause.objects.front();
     out.push_back(Make(SubgoalType::kBacktrack, where, "return to where it was last seen"));
   }
-  if (Has(clause, "explore")) out.push_back(Make(SubgoalType::kExplore, {}, "explore unknown space"));
+  if (Has(clause, "explore"))
+    out.push_back(Make(SubgoalType::kExplore, {}, "explore unknown space"));
   for (const TargetSpec& object : clause.objects) {
     if (Has(clause, "backtrack")) break;
     if (find) {
@@ -80,7 +80,8 @@ Decomposition TaskDecomposer::Decompose(std::string_view instruction) {
   return result;
 }
 
-Decomposition TaskDecomposer::WithModelAnswer(Decomposition rules, std::string_view model_json) const {
+Decomposition TaskDecomposer::WithModelAnswer(Decomposition rules,
+                                              std::string_view model_json) const {
   absl::StatusOr<std::vector<Subgoal>> model = ParseModelSubgoals(model_json);
   if (!model.ok()) {
     rules.rejection = absl::StrCat("model answer rejected: ", model.status().message());

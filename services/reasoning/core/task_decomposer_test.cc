@@ -10,7 +10,8 @@ namespace {
 TaskDecomposer MakeDecomposer() {
   absl::StatusOr<TextSegmenter> segmenter = TextSegmenter::Create();
   EXPECT_TRUE(segmenter.ok());
-  return TaskDecomposer(InstructionParser(&ShippedLexicon(), *std::move(segmenter)), DecomposerConfig{});
+  return TaskDecomposer(InstructionParser(&ShippedLexicon(), *std::move(segmenter)),
+                        DecomposerConfig{});
 }
 
 struct Row {
@@ -30,14 +31,16 @@ TEST(GatewayDecomposerTest, RuleTableEnglishAndChinese) {
        "VERIFY(red fire extinguisher near )",
        false},
       {"go to the red fire extinguisher",
-       "NAVIGATE(red fire extinguisher) APPROACH(red fire extinguisher) VERIFY(red fire extinguisher)",
+       "NAVIGATE(red fire extinguisher) APPROACH(red fire extinguisher) VERIFY(red fire "
+       "extinguisher)",
        false},
-      {"找蓝色书包", "FIND(blue backpack) LOOK_AROUND() APPROACH(blue backpack) VERIFY(blue backpack)",
-       false},
+      {"找蓝色书包",
+       "FIND(blue backpack) LOOK_AROUND() APPROACH(blue backpack) VERIFY(blue backpack)", false},
       {"go to the chair near the door",
        "NAVIGATE(chair near door) APPROACH(chair near door) VERIFY(chair near door)", false},
       {"走到沙发左边的椅子那里",
-       "NAVIGATE(chair left_of couch) APPROACH(chair left_of couch) VERIFY(chair left_of couch)", false},
+       "NAVIGATE(chair left_of couch) APPROACH(chair left_of couch) VERIFY(chair left_of couch)",
+       false},
       {"去卫生间", "NAVIGATE(bathroom)", false},
       {"look around", "LOOK_AROUND()", false},
       {"回到有红色沙发的房间", "BACKTRACK(red couch)", false},
@@ -45,7 +48,8 @@ TEST(GatewayDecomposerTest, RuleTableEnglishAndChinese) {
       {"去厨房，然后找红色杯子",
        "NAVIGATE(kitchen) FIND(red cup) LOOK_AROUND() APPROACH(red cup) VERIFY(red cup)", true},
       {"find the cup and the bottle",
-       "FIND(cup) LOOK_AROUND() APPROACH(cup) VERIFY(cup) FIND(bottle) LOOK_AROUND() APPROACH(bottle) "
+       "FIND(cup) LOOK_AROUND() APPROACH(cup) VERIFY(cup) FIND(bottle) LOOK_AROUND() "
+       "APPROACH(bottle) "
        "VERIFY(bottle)",
        true},
       {"inspect whether the valve downstream leaks", "", true},
@@ -72,7 +76,8 @@ TEST(GatewayDecomposerTest, ValidModelAnswerReplacesRulesInvalidOneIsIgnored) {
   TaskDecomposer decomposer = MakeDecomposer();
   Decomposition rules = decomposer.Decompose("去厨房，然后找红色杯子");
   Decomposition from_model = decomposer.WithModelAnswer(
-      rules, R"({"subgoals": [{"type": "FIND", "target": "cup"}, {"type": "VERIFY", "target": "cup"}]})");
+      rules,
+      R"({"subgoals": [{"type": "FIND", "target": "cup"}, {"type": "VERIFY", "target": "cup"}]})");
   EXPECT_EQ(from_model.source, "model");
   EXPECT_EQ(DescribeSubgoals(from_model.subgoals), "FIND(cup) VERIFY(cup)");
   Decomposition rejected =
@@ -85,7 +90,8 @@ TEST(GatewayDecomposerTest, ValidModelAnswerReplacesRulesInvalidOneIsIgnored) {
 // every rejection names the field that failed.
 TEST(GatewayDecomposerTest, ModelAnswersAreValidatedBeforeTheyReplaceTheRules) {
   TaskDecomposer decomposer = MakeDecomposer();
-  const Decomposition rules = decomposer.Decompose("go to the kitchen and then find the red cup near the sink");
+  const Decomposition rules =
+      decomposer.Decompose("go to the kitchen and then find the red cup near the sink");
   ASSERT_TRUE(rules.complex);
   struct Case {
     const char* answer;
@@ -96,8 +102,8 @@ TEST(GatewayDecomposerTest, ModelAnswersAreValidatedBeforeTheyReplaceTheRules) {
       {R"({"subgoals": [{"type": "NAVIGATE", "target": "kitchen"},)"
        R"( {"type": "FIND", "target": "cup", "colours": ["red"], "relation": "near", "anchor": "sink"}]})",
        "model", ""},
-      {R"({"subgoals": [{"type": "NAVIGATE", "target": "kitchen"}, {"type": "FLY", "target": "cup"}]})", "rules",
-       "model answer rejected: subgoals[1].type: unknown subgoal type 'FLY'"},
+      {R"({"subgoals": [{"type": "NAVIGATE", "target": "kitchen"}, {"type": "FLY", "target": "cup"}]})",
+       "rules", "model answer rejected: subgoals[1].type: unknown subgoal type 'FLY'"},
       {R"({"subgoals": [{"type": "APPROACH", "distance_m": 0.5}]})", "rules",
        "model answer rejected: subgoals[0].target: APPROACH needs a target"},
       {R"({"subgoals": [{"type": "FIND", "target": "cup"})", "rules",

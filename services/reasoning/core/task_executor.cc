@@ -11,17 +11,23 @@ namespace semnav::reasoning {
 
 std::string_view TaskStateName(TaskState state) {
   switch (state) {
-    case TaskState::kRunning: return "RUNNING";
-    case TaskState::kPaused: return "PAUSED";
-    case TaskState::kSucceeded: return "SUCCEEDED";
-    case TaskState::kFailed: return "FAILED";
-    case TaskState::kCancelled: return "CANCELLED";
+    case TaskState::kRunning:
+      return "RUNNING";
+    case TaskState::kPaused:
+      return "PAUSED";
+    case TaskState::kSucceeded:
+      return "SUCCEEDED";
+    case TaskState::kFailed:
+      return "FAILED";
+    case TaskState::kCancelled:
+      return "CANCELLED";
   }
   return "UNKNOWN";
 }
 
-TaskExecutor::TaskExecutor(std::string instruction, std::vector<Subgoal> subgoals, const FastResolver* resolver,
-                           PathPlanner* planner, const TopologicalMemory* memory, ExecutorConfig config)
+TaskExecutor::TaskExecutor(std::string instruction, std::vector<Subgoal> subgoals,
+                           const FastResolver* resolver, PathPlanner* planner,
+                           const TopologicalMemory* memory, ExecutorConfig config)
     : instruction_(std::move(instruction)),
       subgoals_(std::move(subgoals)),
       resolver_(resolver),
@@ -32,10 +38,13 @@ TaskExecutor::TaskExecutor(std::string instruction, std::vector<Subgoal> subgoal
 bool TaskExecutor::finished() const { return Ended(progress_.state); }
 
 const TargetSpec& TaskExecutor::ActiveTarget() const {
-  const auto is_object = [](const Subgoal& goal) { return !goal.target.empty() && !goal.target.is_room; };
+  const auto is_object = [](const Subgoal& goal) {
+    return !goal.target.empty() && !goal.target.is_room;
+  };
   if (is_object(current())) return current().target;
   for (int i = progress_.subgoal_index; i >= 0; --i) {
-    if (is_object(subgoals_[static_cast<std::size_t>(i)])) return subgoals_[static_cast<std::size_t>(i)].target;
+    if (is_object(subgoals_[static_cast<std::size_t>(i)]))
+      return subgoals_[static_cast<std::size_t>(i)].target;
   }
   for (const Subgoal& goal : subgoals_) {
     if (is_object(goal)) return goal.target;
@@ -56,14 +65,16 @@ std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose)
   return EnterSubgoal(now);
 }
 
-std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
-                                               Phase phase, const std::string& reason) {
+std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d& goal, double yaw,
+                                               double speed, Phase phase,
+                                               const std::string& reason) {
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
   if (absl::IsUnavailable(path.status())) return PauseForDependency(now, path.status());
   if (!path.ok() && phase == Phase::kExploring) {
     // Without a frontier goal this was the fallback step: ExplorationFailed looks around rather
     // than chain more planning calls under the hub lock; the scan's end asks for a goal again.
-    return ExplorationFailed(now, absl::StrCat("no path to the exploration goal: ", path.status().message()));
+    return ExplorationFailed(
+        now, absl::StrCat("no path to the exploration goal: ", path.status().message()));
   }
   if (absl::IsNotFound(path.status())) {
     // No path to a known place: explore (the map grows) and try again when the target is seen.
@@ -78,32 +89,38 @@ std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d
 }
 
 std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector3d& goal,
-                                                 std::vector<Eigen::Vector3d> path, double yaw, double speed,
-                                                 Phase phase, const std::string& reason) {
+                                                 std::vector<Eigen::Vector3d> path, double yaw,
+                                                 double speed, Phase phase,
+                                                 const std::string& reason) {
   RobotCommand command = NewCommand(CommandKind::kNavigate, reason);
   command.goal = goal;
-  if (!path.empty()) command.goal.head<2>() = path.back().head<2>();  // alternative point or adjusted goal
+  if (!path.empty())
+    command.goal.head<2>() = path.back().head<2>();  // alternative point or adjusted goal
   command.goal_yaw = yaw;
   command.max_speed = speed;
   command.path = path;
   if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.path = std::move(path);
   active_goal_ = command.goal;
-  progress_.phase = phase == Phase::kExploring     ? "exploring"
-                    : phase == Phase::kVerifying   ? "verifying"
-                    : phase == Phase::kBackingOff  ? "backing_off"
-                                                   : "navigating";
+  progress_.phase = phase == Phase::kExploring    ? "exploring"
+                    : phase == Phase::kVerifying  ? "verifying"
+                    : phase == Phase::kBackingOff ? "backing_off"
+                                                  : "navigating";
   progress_.reason = reason;
   phase_ = phase;
-  phase_deadline_ = now + (phase == Phase::kVerifying ? config_.verify_timeout_s : config_.navigate_timeout_s);
+  phase_deadline_ =
+      now + (phase == Phase::kVerifying ? config_.verify_timeout_s : config_.navigate_timeout_s);
   return {command};
 }
 
 absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal) {
-  if ((goal - pose_.position).head<2>().norm() < 1e-6) return std::vector<Eigen::Vector3d>{};  // turn in place
+  if ((goal - pose_.position).head<2>().norm() < 1e-6)
+    return std::vector<Eigen::Vector3d>{};  // turn in place
   // After a block the path keeps more clearance (re-plan with inflated costs).
-  const double clearance = (config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0) + extra_clearance_m_;
-  PathQuery query{pose_.position, goal, config_.multi_modal, config_.robot_radius_m, clearance, std::nullopt};
+  const double clearance =
+      (config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0) + extra_clearance_m_;
+  PathQuery query{pose_.position,         goal,      config_.multi_modal,
+                  config_.robot_radius_m, clearance, std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
   if (absl::IsFailedPrecondition(path.status())) {
     // Seed 004: the goal lies in an obstacle; go to the free point nearest it seen from here.
@@ -114,8 +131,8 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen:
   return path;
 }
 
-std::vector<RobotCommand> TaskExecutor::Rotate(double now, double rate, double duration, Phase phase,
-                                               const std::string& reason) {
+std::vector<RobotCommand> TaskExecutor::Rotate(double now, double rate, double duration,
+                                               Phase phase, const std::string& reason) {
   RobotCommand command = NewCommand(CommandKind::kRotate, reason);
   command.angular_speed = rate;
   command.duration_s = duration;
@@ -127,7 +144,8 @@ std::vector<RobotCommand> TaskExecutor::Rotate(double now, double rate, double d
   return {command};
 }
 
-std::vector<RobotCommand> TaskExecutor::Hold(double now, double duration, const std::string& reason) {
+std::vector<RobotCommand> TaskExecutor::Hold(double now, double duration,
+                                             const std::string& reason) {
   RobotCommand command = NewCommand(CommandKind::kHold, reason);
   command.duration_s = duration;
   if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
@@ -146,7 +164,8 @@ RobotCommand TaskExecutor::NewCommand(CommandKind kind, const std::string& reaso
   return command;
 }
 
-std::vector<RobotCommand> TaskExecutor::Halt(TaskState state, CommandKind kind, const std::string& reason) {
+std::vector<RobotCommand> TaskExecutor::Halt(TaskState state, CommandKind kind,
+                                             const std::string& reason) {
   progress_.state = state;
   progress_.reason = reason;
   phase_ = Phase::kIdle;
@@ -209,14 +228,16 @@ std::vector<RobotCommand> TaskExecutor::Refuse(const absl::Status& refused) {
 
 std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& reason) {
   if (phase_ == Phase::kBackingOff) return ResumeAfterBackoff(now);
-  if (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) return ExplorationFailed(now, reason);
+  if (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan)
+    return ExplorationFailed(now, reason);
   return CountedReplan(now, reason);
 }
 
 std::vector<RobotCommand> TaskExecutor::CountedReplan(double now, const std::string& reason) {
   if (++progress_.replans > config_.max_replans) {
     if (progress_.target.has_value()) {
-      return SetTargetAside(now, absl::StrCat("could not reach it after ", config_.max_replans, " re-plans: ", reason));
+      return SetTargetAside(now, absl::StrCat("could not reach it after ", config_.max_replans,
+                                              " re-plans: ", reason));
     }
     return Fail(absl::StrCat("gave up after ", config_.max_replans, " re-plans: ", reason));
   }
@@ -229,8 +250,8 @@ std::vector<RobotCommand> TaskExecutor::CountedReplan(double now, const std::str
 std::vector<RobotCommand> TaskExecutor::ExplorationFailed(double now, const std::string& reason) {
   if (!explore_goal_.has_value()) {
     // The fallback step failed: the same step would be chosen again, so look around first.
-    return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
-                  absl::StrCat(reason, "; looking around"));
+    return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
+                  Phase::kExploreScan, absl::StrCat(reason, "; looking around"));
   }
   SpendExploreGoal(*explore_goal_, /*unreachable=*/true);
   // A goal never reached explored nothing: it does not use the budget (the spent list bounds
@@ -238,12 +259,14 @@ std::vector<RobotCommand> TaskExecutor::ExplorationFailed(double now, const std:
   --progress_.explore_goals;
   explore_goal_.reset();
   std::vector<RobotCommand> out = Explore(now);
-  if (progress_.state == TaskState::kRunning) progress_.reason = absl::StrCat(progress_.reason, " (", reason, ")");
+  if (progress_.state == TaskState::kRunning)
+    progress_.reason = absl::StrCat(progress_.reason, " (", reason, ")");
   return out;
 }
 
 // A located target the robot cannot reach (blocked approach, no path) is set aside while the
-// search goes on elsewhere; it is tried again from the next exploration goal, often from another side.
+// search goes on elsewhere; it is tried again from the next exploration goal, often from another
+// side.
 std::vector<RobotCommand> TaskExecutor::SetTargetAside(double now, const std::string& reason) {
   const int64_t id = progress_.target.has_value() ? progress_.target->object_id : -1;
   if (id >= 0) set_aside_.insert(id);
@@ -251,7 +274,8 @@ std::vector<RobotCommand> TaskExecutor::SetTargetAside(double now, const std::st
   progress_.replans = 0;
   for (int i = 0; i < static_cast<int>(subgoals_.size()); ++i) {
     const Subgoal& goal = subgoals_[static_cast<std::size_t>(i)];
-    if (goal.type == SubgoalType::kFind || (goal.type == SubgoalType::kNavigate && !goal.target.is_room)) {
+    if (goal.type == SubgoalType::kFind ||
+        (goal.type == SubgoalType::kNavigate && !goal.target.is_room)) {
       progress_.subgoal_index = std::min(progress_.subgoal_index, i);
       break;
     }
@@ -271,14 +295,17 @@ std::vector<RobotCommand> TaskExecutor::NextSubgoal(double now, const std::strin
 }
 
 bool TaskExecutor::TryResolve() {
-  if (progress_.target.has_value() && excluded_.count(progress_.target->object_id) == 0) return true;
+  if (progress_.target.has_value() && excluded_.count(progress_.target->object_id) == 0)
+    return true;
   progress_.target.reset();
   std::set<int64_t> skip = excluded_;
   skip.insert(set_aside_.begin(), set_aside_.end());
-  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
+  const FastResolution resolution =
+      resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
   if (!resolution.accepted) return false;
   const SceneObject* object = graph_.FindObject(resolution.best->object_id);
-  progress_.target = LocatedTarget{object->id, object->position, resolution.best->fused, ResolutionPath::kFast, 0};
+  progress_.target =
+      LocatedTarget{object->id, object->position, resolution.best->fused, ResolutionPath::kFast, 0};
   return true;
 }
 
@@ -289,7 +316,8 @@ void TaskExecutor::MaybeRequestModel() {
   }
   GroundingConfig grounding;
   grounding.max_objects = config_.grounding_max_objects;
-  GroundedGraph grounded = SelectiveGrounding(ActiveTarget(), graph_, resolver_->matcher(), grounding);
+  GroundedGraph grounded =
+      SelectiveGrounding(ActiveTarget(), graph_, resolver_->matcher(), grounding);
   // No candidate could be named: the proxy refuses an empty list, and asking again on every new
   // revision made a call (and a warning) every 200 ms while the robot explored.
   if (grounded.graph.objects.empty()) return;
@@ -309,27 +337,32 @@ std::optional<ModelRequest> TaskExecutor::TakeModelRequest() {
 }
 
 std::vector<RobotCommand> TaskExecutor::Explore(double now) {
-  if (InEndgame(now) && current().type != SubgoalType::kExplore && TakeBestCandidate()) return GoToBestCandidate(now);
+  if (InEndgame(now) && current().type != SubgoalType::kExplore && TakeBestCandidate())
+    return GoToBestCandidate(now);
   if (current().type != SubgoalType::kExplore && TakeLabelledCandidate()) return EnterSubgoal(now);
   if (progress_.explore_goals >= config_.max_explore_goals) {
     if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration budget used");
-    return Fail(absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
+    return Fail(
+        absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));
   }
   ++progress_.explore_goals;
   // Frontiers behind furniture or in unseen corners can be approached no closer than where the
   // robot stands (the alternative point is here): spend them and ask planning for the next.
   constexpr int kGoalsPerStep = 3;  // planning calls run under the gateway lock: keep them few
   for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
-    const absl::StatusOr<Eigen::Vector3d> goal =
-        planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
+    const absl::StatusOr<Eigen::Vector3d> goal = planner_->ExplorationGoal(
+        {pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
     if (absl::IsUnavailable(goal.status())) return PauseExploring(now, goal.status());
     if (!goal.ok()) break;
     explore_goal_ = *goal;
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
     if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
-    const bool moves = path.ok() && (path->empty() || (path->back() - pose_.position).head<2>().norm() >=
-                                                          config_.min_explore_step_m);
-    if (moves) return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring, "exploring for the target");
+    const bool moves =
+        path.ok() && (path->empty() || (path->back() - pose_.position).head<2>().norm() >=
+                                           config_.min_explore_step_m);
+    if (moves)
+      return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring,
+                      "exploring for the target");
     // No path: the frontiers around it lie in the same unreachable pocket.
     SpendExploreGoal(*goal, absl::IsNotFound(path.status()));
   }
@@ -348,17 +381,20 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
     const int side = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);  // 0, +1, -1, +2, -2, ... sectors
     const double yaw = least + side * (2.0 * M_PI / kDirections);
     const Eigen::Vector3d target =
-        pose_.position + config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
-    const bool failed_before = std::any_of(
-        failed_fallback_steps_.begin(), failed_fallback_steps_.end(), [&](const Eigen::Vector3d& failed) {
-          return (failed - target).head<2>().norm() <= config_.unreachable_region_m;
-        });
+        pose_.position +
+        config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
+    const bool failed_before =
+        std::any_of(failed_fallback_steps_.begin(), failed_fallback_steps_.end(),
+                    [&](const Eigen::Vector3d& failed) {
+                      return (failed - target).head<2>().norm() <= config_.unreachable_region_m;
+                    });
     if (failed_before) continue;
     ++asked;
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(target);
     if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
     if (path.ok()) {
-      return Navigate(now, target, *std::move(path), YawTo(target), 0.0, Phase::kExploring, "exploring for the target");
+      return Navigate(now, target, *std::move(path), YawTo(target), 0.0, Phase::kExploring,
+                      "exploring for the target");
     }
     if (absl::IsNotFound(path.status())) failed_fallback_steps_.push_back(target);
   }
@@ -367,25 +403,28 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
   if (!last_fallback_backed_off_ && trail_.size() >= 2) {
     last_fallback_backed_off_ = true;
     --progress_.explore_goals;  // the exploration step after backing off asks again
-    return BackOff(now, /*resume_exploring=*/true, "no path to the exploration goal from here; backing off");
+    return BackOff(now, /*resume_exploring=*/true,
+                   "no path to the exploration goal from here; backing off");
   }
   last_fallback_backed_off_ = false;
-  return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
-                "no path to the exploration goal; looking around");
+  return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
+                Phase::kExploreScan, "no path to the exploration goal; looking around");
 }
 
 void TaskExecutor::SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable) {
   spent_explore_goals_.push_back(goal);
   // Planning excludes a disc of excluded_radius_m (0 = 1 m) around each spent goal: cover the
   // region with such discs on a hexagonal lattice (spacing sqrt(3) r covers the plane).
-  const double r = config_.explore_exclusion_radius_m > 0.0 ? config_.explore_exclusion_radius_m : 1.0;
+  const double r =
+      config_.explore_exclusion_radius_m > 0.0 ? config_.explore_exclusion_radius_m : 1.0;
   const double region = config_.unreachable_region_m;
   if (!unreachable || region <= r) return;
   const double spacing = std::sqrt(3.0) * r;
   const int n = static_cast<int>(std::ceil(region / spacing)) + 1;
   for (int i = -n; i <= n; ++i) {
     for (int j = -n; j <= n; ++j) {
-      const Eigen::Vector3d offset(spacing * (i + 0.5 * j), spacing * (std::sqrt(3.0) / 2.0) * j, 0.0);
+      const Eigen::Vector3d offset(spacing * (i + 0.5 * j), spacing * (std::sqrt(3.0) / 2.0) * j,
+                                   0.0);
       const double distance = offset.head<2>().norm();
       if (distance > 1e-9 && distance <= region) spent_explore_goals_.push_back(goal + offset);
     }
@@ -393,14 +432,17 @@ void TaskExecutor::SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachabl
 }
 
 bool TaskExecutor::InEndgame(double now) const {
-  return config_.time_budget_s > 0.0 && now - start_time_ >= config_.time_budget_s - config_.endgame_s;
+  return config_.time_budget_s > 0.0 &&
+         now - start_time_ >= config_.time_budget_s - config_.endgame_s;
 }
 
 std::optional<ScoredObject> TaskExecutor::BestCandidate() const {
   std::set<int64_t> skip = excluded_;
   skip.insert(set_aside_.begin(), set_aside_.end());
-  const FastResolution resolution = resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
-  if (!resolution.best.has_value() || graph_.FindObject(resolution.best->object_id) == nullptr) return std::nullopt;
+  const FastResolution resolution =
+      resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
+  if (!resolution.best.has_value() || graph_.FindObject(resolution.best->object_id) == nullptr)
+    return std::nullopt;
   return resolution.best;
 }
 
@@ -410,8 +452,8 @@ bool TaskExecutor::TakeBestCandidate() {
   if (!best.has_value()) return false;
   endgame_taken_ = true;
   // The fast path found it (below its threshold): reported as a fast-path resolution.
-  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused,
-                                   ResolutionPath::kFast, 0};
+  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position,
+                                   best->fused, ResolutionPath::kFast, 0};
   return true;
 }
 
@@ -419,8 +461,8 @@ bool TaskExecutor::TakeLabelledCandidate() {
   if (config_.model_available || progress_.target.has_value()) return false;
   const std::optional<ScoredObject> best = BestCandidate();
   if (!best.has_value() || best->label < config_.approach_label_match) return false;
-  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position, best->fused,
-                                   ResolutionPath::kFast, 0};
+  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position,
+                                   best->fused, ResolutionPath::kFast, 0};
   return true;
 }
 
@@ -428,8 +470,9 @@ std::vector<RobotCommand> TaskExecutor::GoToBestCandidate(double now) {
   const int64_t id = progress_.target->object_id;
   std::vector<RobotCommand> out = EnterSubgoal(now);
   if (progress_.state == TaskState::kRunning) {
-    progress_.reason = absl::StrCat(progress_.reason, " (endgame: ", config_.time_budget_s - (now - start_time_),
-                                    " s left, best candidate seen: object ", id, ")");
+    progress_.reason =
+        absl::StrCat(progress_.reason, " (endgame: ", config_.time_budget_s - (now - start_time_),
+                     " s left, best candidate seen: object ", id, ")");
   }
   return out;
 }
@@ -457,7 +500,9 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
     case SubgoalType::kNavigate: {
       if (goal.target.is_room) {
         for (const SceneRegion& region : graph_.regions) {
-          if (!resolver_->matcher().SameName(region.name, goal.target.name) || region.object_ids.empty()) continue;
+          if (!resolver_->matcher().SameName(region.name, goal.target.name) ||
+              region.object_ids.empty())
+            continue;
           Eigen::Vector3d centre = Eigen::Vector3d::Zero();
           int count = 0;
           for (int64_t id : region.object_ids) {
@@ -468,7 +513,8 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
           }
           if (count > 0) {
             centre /= count;
-            return MoveTo(now, centre, YawTo(centre), 0.0, Phase::kMoving, "going to " + goal.target.name);
+            return MoveTo(now, centre, YawTo(centre), 0.0, Phase::kMoving,
+                          "going to " + goal.target.name);
           }
         }
         return NextSubgoal(now, goal.target.name + " is not in the map yet; searching from here");
@@ -476,17 +522,21 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
       if (!TryResolve()) return Search(now);
       const Eigen::Vector3d to_target = progress_.target->position - pose_.position;
       const double distance = to_target.head<2>().norm();
-      if (distance <= config_.navigate_standoff_m) return NextSubgoal(now, "already near the target");
-      const Eigen::Vector3d stop = progress_.target->position - to_target * (config_.navigate_standoff_m / distance);
-      return MoveTo(now, stop, YawTo(progress_.target->position), 0.0, Phase::kMoving, "going to the target");
+      if (distance <= config_.navigate_standoff_m)
+        return NextSubgoal(now, "already near the target");
+      const Eigen::Vector3d stop =
+          progress_.target->position - to_target * (config_.navigate_standoff_m / distance);
+      return MoveTo(now, stop, YawTo(progress_.target->position), 0.0, Phase::kMoving,
+                    "going to the target");
     }
     case SubgoalType::kFind:
-      if (TryResolve()) return NextSubgoal(now, absl::StrCat("found object ", progress_.target->object_id));
+      if (TryResolve())
+        return NextSubgoal(now, absl::StrCat("found object ", progress_.target->object_id));
       return Search(now);
     case SubgoalType::kLookAround:
       if (progress_.target.has_value()) return NextSubgoal(now, "target already located");
-      return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kRotating,
-                    "looking around");
+      return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
+                    Phase::kRotating, "looking around");
     case SubgoalType::kApproach: {
       if (!TryResolve()) return Search(now);
       const double stand_off = goal.distance_m > 0.0 ? goal.distance_m : 0.5;
@@ -494,8 +544,8 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
       const double distance = to_target.head<2>().norm();
       if (distance <= stand_off + 1e-6) return NextSubgoal(now, "already close");
       const Eigen::Vector3d stop = progress_.target->position - to_target * (stand_off / distance);
-      return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps, Phase::kMoving,
-                    "approaching the target");
+      return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps,
+                    Phase::kMoving, "approaching the target");
     }
     case SubgoalType::kVerify: {
       if (!TryResolve()) return Search(now);
@@ -513,14 +563,16 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
     case SubgoalType::kExplore:
       return Explore(now);
     case SubgoalType::kWait:
-      return Hold(now, goal.duration_s > 0.0 ? goal.duration_s : config_.wait_duration_s, "waiting");
+      return Hold(now, goal.duration_s > 0.0 ? goal.duration_s : config_.wait_duration_s,
+                  "waiting");
   }
   return {};
 }
 
 std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
   const double distance = (progress_.target->position - pose_.position).head<2>().norm();
-  if (distance <= config_.success_radius_m) return NextSubgoal(now, "target verified within the success radius");
+  if (distance <= config_.success_radius_m)
+    return NextSubgoal(now, "target verified within the success radius");
   constexpr double kSameSpotM = 0.25;
   if (too_far_at_.has_value() && (*too_far_at_ - pose_.position).head<2>().norm() <= kSameSpotM) {
     too_far_at_.reset();
@@ -534,9 +586,10 @@ std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
     }
   }
   const Eigen::Vector3d to_target = progress_.target->position - pose_.position;
-  const Eigen::Vector3d stop = progress_.target->position - to_target * (0.5 / to_target.head<2>().norm());
-  return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps, Phase::kMoving,
-                "verified but too far: approaching");
+  const Eigen::Vector3d stop =
+      progress_.target->position - to_target * (0.5 / to_target.head<2>().norm());
+  return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps,
+                Phase::kMoving, "verified but too far: approaching");
 }
 
 std::vector<RobotCommand> TaskExecutor::TargetReached(double now, const std::string& reason) {
@@ -544,7 +597,8 @@ std::vector<RobotCommand> TaskExecutor::TargetReached(double now, const std::str
   int next = progress_.subgoal_index;
   for (; next < static_cast<int>(subgoals_.size()); ++next) {
     const Subgoal& goal = subgoals_[static_cast<std::size_t>(next)];
-    const bool about_target = goal.type == SubgoalType::kFind || goal.type == SubgoalType::kApproach ||
+    const bool about_target = goal.type == SubgoalType::kFind ||
+                              goal.type == SubgoalType::kApproach ||
                               goal.type == SubgoalType::kVerify ||
                               (goal.type == SubgoalType::kNavigate && !goal.target.is_room);
     if (goal.type != SubgoalType::kLookAround && !(about_target && goal.target.name == name)) break;
@@ -553,7 +607,8 @@ std::vector<RobotCommand> TaskExecutor::TargetReached(double now, const std::str
   return NextSubgoal(now, reason);
 }
 
-std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now, int fresh_detections) {
+std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now,
+                                                                     int fresh_detections) {
   if (!progress_.target.has_value() || phase_ == Phase::kIdle) return std::nullopt;
   const SubgoalType type = current().type;
   const bool about_target = type == SubgoalType::kApproach || type == SubgoalType::kVerify ||
@@ -580,8 +635,8 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
   const double distance = (progress_.target->position - pose_.position).head<2>().norm();
   // Accepted only when seen from within reach at least once: a misplaced or phantom object
   // (office_03: a "tv" mapped on the wrong side of a cabinet) never is.
-  if (object != nullptr && distance <= config_.success_radius_m && close_target_ == id && close_detections_ >= 1 &&
-      object->detection_count >= config_.verify_accept_detections) {
+  if (object != nullptr && distance <= config_.success_radius_m && close_target_ == id &&
+      close_detections_ >= 1 && object->detection_count >= config_.verify_accept_detections) {
     return TargetReached(now, absl::StrCat("object ", id, " accepted: ", object->detection_count,
                                            " detections, within reach, none new while facing it"));
   }
@@ -600,7 +655,8 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
     for (int k = 0, planned = 0; k < kSides && planned < kViewPlans; ++k) {
       const int side = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);  // 0, +45, -45, +90, ... deg
       const double angle = own_side + side * (2.0 * M_PI / kSides);
-      Eigen::Vector3d view = target + config_.verify_view_m * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
+      Eigen::Vector3d view =
+          target + config_.verify_view_m * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
       view.z() = pose_.position.z();
       ++planned;
       absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(view);
@@ -609,17 +665,21 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
       const Eigen::Vector3d end = path->empty() ? view : path->back();
       if ((end - target).head<2>().norm() > config_.success_radius_m) continue;
       const Eigen::Vector3d to_target = target - end;
-      return Navigate(now, view, *std::move(path), std::atan2(to_target.y(), to_target.x()), 0.0, Phase::kVerifying,
-                      absl::StrCat("object ", id, " not confirmed yet: looking again from ", config_.verify_view_m,
-                                   " m", side == 0 ? "" : " on another side"));
+      return Navigate(
+          now, view, *std::move(path), std::atan2(to_target.y(), to_target.x()), 0.0,
+          Phase::kVerifying,
+          absl::StrCat("object ", id, " not confirmed yet: looking again from ",
+                       config_.verify_view_m, " m", side == 0 ? "" : " on another side"));
     }
   }
   second_look_target_ = -1;
-  return SetTargetAside(now, absl::StrCat("not confirmed within ", config_.verify_timeout_s, " s, twice"));
+  return SetTargetAside(
+      now, absl::StrCat("not confirmed within ", config_.verify_timeout_s, " s, twice"));
 }
 
 std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
-  if (phase_ == Phase::kBackingOff) return ResumeAfterBackoff(now);  // cannot back off: re-plan from here
+  if (phase_ == Phase::kBackingOff)
+    return ResumeAfterBackoff(now);  // cannot back off: re-plan from here
   const bool exploring = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
   if (!blocked_goal_.has_value() ||
       (active_goal_ - *blocked_goal_).head<2>().norm() > config_.blocked_spot_radius_m) {
@@ -632,13 +692,15 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
         return (spot - pose_.position).head<2>().norm() <= config_.blocked_spot_radius_m;
       });
   blocked_spots_.push_back(pose_.position);
-  extra_clearance_m_ = std::min(extra_clearance_m_ + config_.blocked_clearance_step_m, config_.blocked_clearance_max_m);
+  extra_clearance_m_ = std::min(extra_clearance_m_ + config_.blocked_clearance_step_m,
+                                config_.blocked_clearance_max_m);
   // The multi-modal search has no footprint inflation to raise: re-planning the same goal would
   // graze the same obstacle, so the goal is given up at once (the robot backed up already).
   if (same_spot || blocks_on_goal_ >= config_.max_blocks_per_goal || config_.multi_modal) {
-    const std::string why = same_spot           ? "robot blocked again where it was blocked before"
+    const std::string why = same_spot ? "robot blocked again where it was blocked before"
                             : config_.multi_modal ? "robot blocked"
-                                                  : absl::StrCat("robot blocked ", blocks_on_goal_, " times on the way");
+                                                  : absl::StrCat("robot blocked ", blocks_on_goal_,
+                                                                 " times on the way");
     blocked_goal_.reset();
     blocks_on_goal_ = 0;
     if (exploring) {
@@ -648,7 +710,8 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
         explore_goal_.reset();
         --progress_.explore_goals;  // never reached: no budget used
         std::vector<RobotCommand> out = Explore(now);
-        if (progress_.state == TaskState::kRunning) progress_.reason = absl::StrCat(progress_.reason, " (", why, ")");
+        if (progress_.state == TaskState::kRunning)
+          progress_.reason = absl::StrCat(progress_.reason, " (", why, ")");
         return out;
       }
       return ExplorationFailed(now, why);
@@ -663,7 +726,8 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
   return BackOff(now, exploring, "robot blocked; backing off to re-plan with more clearance");
 }
 
-std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_exploring, const std::string& reason) {
+std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_exploring,
+                                                const std::string& reason) {
   // Back to the newest trail point (space the robot just drove through) at least backoff_m away
   // and behind the robot: it faces the obstacle, and its own recovery may have backed it up past
   // the newest points already.
@@ -680,7 +744,8 @@ std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_explorin
   }
   if (path.size() == 1 || (path.back() - pose_.position).head<2>().norm() < config_.backoff_m) {
     path = {pose_.position,
-            pose_.position - config_.backoff_m * Eigen::Vector3d(std::cos(pose_.yaw), std::sin(pose_.yaw), 0.0)};
+            pose_.position -
+                config_.backoff_m * Eigen::Vector3d(std::cos(pose_.yaw), std::sin(pose_.yaw), 0.0)};
   }
   for (Eigen::Vector3d& point : path) point.z() = pose_.position.z();
   resume_exploring_ = resume_exploring;
@@ -697,7 +762,8 @@ std::vector<RobotCommand> TaskExecutor::ResumeAfterBackoff(double now) {
   if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
   if (!path.ok()) {
     phase_ = Phase::kExploring;
-    return ExplorationFailed(now, absl::StrCat("no path after backing off: ", path.status().message()));
+    return ExplorationFailed(now,
+                             absl::StrCat("no path after backing off: ", path.status().message()));
   }
   return Navigate(now, goal, *std::move(path), YawTo(goal), 0.0, Phase::kExploring,
                   "exploring for the target (re-planned with more clearance)");
@@ -720,22 +786,26 @@ std::vector<RobotCommand> TaskExecutor::NoProgress(double now) {
 }
 
 void TaskExecutor::WatchProgress(double now) {
-  const std::string key = absl::StrCat(progress_.subgoal_index, "/", static_cast<int>(phase_), "/",
-                                       progress_.target.has_value() ? progress_.target->object_id : -1);
-  if (key != progress_key_ || (pose_.position - progress_anchor_).head<2>().norm() >= config_.progress_distance_m) {
+  const std::string key =
+      absl::StrCat(progress_.subgoal_index, "/", static_cast<int>(phase_), "/",
+                   progress_.target.has_value() ? progress_.target->object_id : -1);
+  if (key != progress_key_ ||
+      (pose_.position - progress_anchor_).head<2>().norm() >= config_.progress_distance_m) {
     progress_key_ = key;
     progress_anchor_ = pose_.position;
     progress_since_ = now;
   }
 }
 
-std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_id, RobotFeedback feedback) {
+std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_id,
+                                                   RobotFeedback feedback) {
   if (progress_.state != TaskState::kRunning || command_id != active_command_) return {};
   if (feedback == RobotFeedback::kBlocked) return Blocked(now);
   if (feedback != RobotFeedback::kGoalReached) {
     // The robot could not drive a fallback step (its local planner found no way): that
     // direction is not offered again.
-    if (phase_ == Phase::kExploring && !explore_goal_.has_value()) failed_fallback_steps_.push_back(active_goal_);
+    if (phase_ == Phase::kExploring && !explore_goal_.has_value())
+      failed_fallback_steps_.push_back(active_goal_);
     return Replan(now, "robot reported failure");
   }
   if (phase_ == Phase::kMoving || phase_ == Phase::kExploring) {
@@ -748,9 +818,10 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
       return ResumeAfterBackoff(now);
     case Phase::kExploring:
       set_aside_.clear();  // a new vantage point: targets set aside may be reachable from here
-      if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration goal reached");
-      return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s, Phase::kExploreScan,
-                    "scanning at the exploration goal");
+      if (current().type == SubgoalType::kExplore)
+        return NextSubgoal(now, "exploration goal reached");
+      return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
+                    Phase::kExploreScan, "scanning at the exploration goal");
     case Phase::kExploreScan:
       if (explore_goal_.has_value()) SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
       return Explore(now);
@@ -786,7 +857,8 @@ std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose
                          current().type != SubgoalType::kExplore;
   if (searching && InEndgame(now) && TakeBestCandidate()) return GoToBestCandidate(now);
   WatchProgress(now);
-  const bool timed = phase_ == Phase::kRotating || phase_ == Phase::kWaiting || phase_ == Phase::kExploreScan;
+  const bool timed =
+      phase_ == Phase::kRotating || phase_ == Phase::kWaiting || phase_ == Phase::kExploreScan;
   if (!timed && now - progress_since_ >= config_.progress_timeout_s) {
     progress_since_ = now;
     return NoProgress(now);
@@ -812,7 +884,8 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
   if (progress_.target.has_value()) {
     const SceneObject* before = graph_.FindObject(progress_.target->object_id);
     const SceneObject* after = graph.FindObject(progress_.target->object_id);
-    if (before != nullptr && after != nullptr) fresh = std::max(0, after->detection_count - before->detection_count);
+    if (before != nullptr && after != nullptr)
+      fresh = std::max(0, after->detection_count - before->detection_count);
   }
   graph_ = graph;
   if (progress_.state != TaskState::kRunning) return {};
@@ -821,12 +894,14 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
       progress_.target->position = object->position;  // the map refines its estimate
     }
   }
-  if (std::optional<std::vector<RobotCommand>> reached = SuccessInView(now, fresh)) return *std::move(reached);
+  if (std::optional<std::vector<RobotCommand>> reached = SuccessInView(now, fresh))
+    return *std::move(reached);
   if (phase_ == Phase::kVerifying && progress_.target.has_value()) {
     const SceneObject* object = graph_.FindObject(progress_.target->object_id);
     if (object == nullptr) return {};
     progress_.target->position = object->position;
-    if (object->detection_count - progress_.target->detections_at_verify >= config_.verify_detections) {
+    if (object->detection_count - progress_.target->detections_at_verify >=
+        config_.verify_detections) {
       return CheckSuccessOrApproach(now);
     }
     return {};
@@ -849,16 +924,19 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
   }
   // Set aside as unreachable from here: taking it again would fail again at once.
   if (set_aside_.count(decision.object_id) > 0) {
-    progress_.reason = absl::StrCat("model names object ", decision.object_id, ", set aside until the next vantage point");
+    progress_.reason = absl::StrCat("model names object ", decision.object_id,
+                                    ", set aside until the next vantage point");
     return {};
   }
   const SceneObject* object = graph_.FindObject(decision.object_id);
   if (object == nullptr) {
-    progress_.reason = absl::StrCat("model answer for revision ", graph_revision, " names a vanished object");
+    progress_.reason =
+        absl::StrCat("model answer for revision ", graph_revision, " names a vanished object");
     return {};
   }
   // A vision-verify answer is only a candidate: the VERIFY subgoal confirms or rejects it.
-  progress_.target = LocatedTarget{object->id, object->position, decision.confidence, ResolutionPath::kSlow, 0};
+  progress_.target =
+      LocatedTarget{object->id, object->position, decision.confidence, ResolutionPath::kSlow, 0};
   const bool searching = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
   return searching ? EnterSubgoal(now) : std::vector<RobotCommand>{};
 }
@@ -873,7 +951,8 @@ std::vector<RobotCommand> TaskExecutor::OnVisionVerdict(double now, bool confirm
   progress_.target.reset();
   for (int i = 0; i < static_cast<int>(subgoals_.size()); ++i) {
     const SubgoalType type = subgoals_[static_cast<std::size_t>(i)].type;
-    if (type == SubgoalType::kFind || (type == SubgoalType::kNavigate && !subgoals_[static_cast<std::size_t>(i)].target.is_room)) {
+    if (type == SubgoalType::kFind || (type == SubgoalType::kNavigate &&
+                                       !subgoals_[static_cast<std::size_t>(i)].target.is_room)) {
       progress_.subgoal_index = i;
       break;
     }
@@ -908,7 +987,8 @@ std::vector<RobotCommand> TaskExecutor::Cancel(const std::string& reason) {
 }
 
 void TaskExecutor::Restore(const TaskProgress& saved, const std::string& reason) {
-  progress_.subgoal_index = std::clamp(saved.subgoal_index, 0, std::max(0, static_cast<int>(subgoals_.size()) - 1));
+  progress_.subgoal_index =
+      std::clamp(saved.subgoal_index, 0, std::max(0, static_cast<int>(subgoals_.size()) - 1));
   progress_.replans = saved.replans;
   progress_.explore_goals = saved.explore_goals;
   progress_.model_requests = saved.model_requests;
@@ -921,9 +1001,11 @@ void TaskExecutor::Restore(const TaskProgress& saved, const std::string& reason)
   phase_ = Phase::kIdle;
 }
 
-std::vector<RobotCommand> TaskExecutor::Retarget(double now, const TargetSpec& target, bool exclude_current) {
+std::vector<RobotCommand> TaskExecutor::Retarget(double now, const TargetSpec& target,
+                                                 bool exclude_current) {
   if (finished()) return {};
-  if (exclude_current && progress_.target.has_value()) excluded_.insert(progress_.target->object_id);
+  if (exclude_current && progress_.target.has_value())
+    excluded_.insert(progress_.target->object_id);
   progress_.target.reset();
   int first = -1;
   for (int i = 0; i < static_cast<int>(subgoals_.size()); ++i) {

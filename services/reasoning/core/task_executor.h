@@ -25,24 +25,25 @@
 namespace semnav::reasoning {
 
 struct ExecutorConfig {
-  double approach_speed_mps = 0.15;      // APPROACH speed (LOVON)
-  double look_around_rate_rps = 0.5;     // LOOK_AROUND angular speed
-  double look_around_duration_s = 12.0;  // seed 002: 12 s ~ one turn
-  double navigate_standoff_m = 1.0;      // NAVIGATE to an object stops this far from it
-  double navigate_timeout_s = 120.0;     // per motion command before re-planning
-  double verify_timeout_s = 10.0;        // VERIFY gives up (object rejected) after this
-  int verify_detections = 2;             // new detections of the target that confirm it
-  double wait_duration_s = 5.0;          // WAIT default
-  double success_radius_m = 1.0;         // seed 004: success within 1 m of the target
-  int max_replans = 3;                   // failures to reach one target before it is set aside
+  double approach_speed_mps = 0.15;         // APPROACH speed (LOVON)
+  double look_around_rate_rps = 0.5;        // LOOK_AROUND angular speed
+  double look_around_duration_s = 12.0;     // seed 002: 12 s ~ one turn
+  double navigate_standoff_m = 1.0;         // NAVIGATE to an object stops this far from it
+  double navigate_timeout_s = 120.0;        // per motion command before re-planning
+  double verify_timeout_s = 10.0;           // VERIFY gives up (object rejected) after this
+  int verify_detections = 2;                // new detections of the target that confirm it
+  double wait_duration_s = 5.0;             // WAIT default
+  double success_radius_m = 1.0;            // seed 004: success within 1 m of the target
+  int max_replans = 3;                      // failures to reach one target before it is set aside
   double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
-  int max_explore_goals = 30;            // exploration goals per search before giving up (failed ones do not count)
+  int max_explore_goals =
+      30;  // exploration goals per search before giving up (failed ones do not count)
   double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
-  double min_explore_step_m = 0.5;       // an exploration goal whose path ends closer is spent unvisited
-  bool model_available = false;          // offer slow-path model requests
-  int grounding_max_objects = 15;        // ESCA budget of a slow-path request
-  bool multi_modal = false;              // the robot can fly-roll: plan multi-modal paths
-  double robot_radius_m = 0.0;           // the robot's footprint radius for path planning
+  double min_explore_step_m = 0.5;  // an exploration goal whose path ends closer is spent unvisited
+  bool model_available = false;     // offer slow-path model requests
+  int grounding_max_objects = 15;   // ESCA budget of a slow-path request
+  bool multi_modal = false;         // the robot can fly-roll: plan multi-modal paths
+  double robot_radius_m = 0.0;      // the robot's footprint radius for path planning
   // Paths keep this much more than the footprint from mapped obstacles (Nav2 inflates beyond the
   // inscribed radius too): mapped walls are off by a cell or two, and paths hug inflated edges.
   double path_clearance_m = 0.1;
@@ -101,7 +102,8 @@ enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
 
 // SUCCEEDED, FAILED or CANCELLED: the task will not move the robot again.
 inline bool Ended(TaskState state) {
-  return state == TaskState::kSucceeded || state == TaskState::kFailed || state == TaskState::kCancelled;
+  return state == TaskState::kSucceeded || state == TaskState::kFailed ||
+         state == TaskState::kCancelled;
 }
 
 // How the target was resolved: the scene-graph match (fast) or the language model's choice (slow).
@@ -117,21 +119,21 @@ struct LocatedTarget {
 
 struct TaskProgress {
   TaskState state = TaskState::kRunning;
-  int subgoal_index = 0;                  // index into the subgoal list
-  std::string phase;                      // e.g. "navigating", "exploring", "verifying"
-  std::string reason;                     // latest decision or failure reason
+  int subgoal_index = 0;  // index into the subgoal list
+  std::string phase;      // e.g. "navigating", "exploring", "verifying"
+  std::string reason;     // latest decision or failure reason
   std::optional<LocatedTarget> target;
   int replans = 0;
   int explore_goals = 0;
   int model_requests = 0;
-  std::vector<Eigen::Vector3d> path;      // the active navigate path
+  std::vector<Eigen::Vector3d> path;  // the active navigate path
 };
 
 // A slow-path model call the server should run without blocking the executor.
 struct ModelRequest {
   uint64_t graph_revision = 0;
   ResolveRequest request;  // prose + match_target task for the model proxy
-  SceneGraph grounded;  // ESCA subgraph the answer must refer to
+  SceneGraph grounded;     // ESCA subgraph the answer must refer to
 };
 
 class TaskExecutor {
@@ -146,7 +148,8 @@ class TaskExecutor {
   std::vector<RobotCommand> OnPose(double now, const RobotPose& pose);
   std::vector<RobotCommand> OnFeedback(double now, uint64_t command_id, RobotFeedback feedback);
   std::vector<RobotCommand> OnSceneGraph(double now, const SceneGraph& graph);
-  std::vector<RobotCommand> OnSlowDecision(double now, uint64_t graph_revision, const SlowDecision& decision);
+  std::vector<RobotCommand> OnSlowDecision(double now, uint64_t graph_revision,
+                                           const SlowDecision& decision);
   std::vector<RobotCommand> OnVisionVerdict(double now, bool confirmed);
   // An operator's pause; during a dependency pause it stops the retries (the robot already holds).
   std::vector<RobotCommand> Pause();
@@ -182,7 +185,16 @@ class TaskExecutor {
   bool waiting_for_dependency() const { return dependency_wait_.has_value(); }
 
  private:
-  enum class Phase { kIdle, kMoving, kRotating, kWaiting, kExploring, kExploreScan, kVerifying, kBackingOff };
+  enum class Phase {
+    kIdle,
+    kMoving,
+    kRotating,
+    kWaiting,
+    kExploring,
+    kExploreScan,
+    kVerifying,
+    kBackingOff
+  };
 
   std::vector<RobotCommand> EnterSubgoal(double now);
   std::vector<RobotCommand> NextSubgoal(double now, const std::string& reason);
@@ -203,11 +215,13 @@ class TaskExecutor {
   std::vector<RobotCommand> Search(double now);
   absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(const Eigen::Vector3d& goal);
   std::vector<RobotCommand> Explore(double now);
-  std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw, double speed,
-                                   Phase phase, const std::string& reason);
-  std::vector<RobotCommand> Navigate(double now, const Eigen::Vector3d& goal, std::vector<Eigen::Vector3d> path,
-                                     double yaw, double speed, Phase phase, const std::string& reason);
-  std::vector<RobotCommand> Rotate(double now, double rate, double duration, Phase phase, const std::string& reason);
+  std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw,
+                                   double speed, Phase phase, const std::string& reason);
+  std::vector<RobotCommand> Navigate(double now, const Eigen::Vector3d& goal,
+                                     std::vector<Eigen::Vector3d> path, double yaw, double speed,
+                                     Phase phase, const std::string& reason);
+  std::vector<RobotCommand> Rotate(double now, double rate, double duration, Phase phase,
+                                   const std::string& reason);
   std::vector<RobotCommand> Hold(double now, double duration, const std::string& reason);
   std::vector<RobotCommand> CheckSuccessOrApproach(double now);
   // The located target is reached: the subgoals about it are done.
@@ -238,7 +252,9 @@ class TaskExecutor {
   std::vector<RobotCommand> FallbackStep(double now);
   bool TryResolve();
   void MaybeRequestModel();
-  const Subgoal& current() const { return subgoals_[static_cast<std::size_t>(progress_.subgoal_index)]; }
+  const Subgoal& current() const {
+    return subgoals_[static_cast<std::size_t>(progress_.subgoal_index)];
+  }
   const TargetSpec& ActiveTarget() const;
   double YawTo(const Eigen::Vector3d& point) const;
 
@@ -257,7 +273,7 @@ class TaskExecutor {
   std::vector<float> text_embedding_;
   // Targets the robot failed to reach; retried once it reached another exploration goal.
   std::set<int64_t> set_aside_;
-  std::optional<Eigen::Vector3d> explore_goal_;     // the active exploration goal from planning
+  std::optional<Eigen::Vector3d> explore_goal_;  // the active exploration goal from planning
   // Where the robot stood when a verified target was last found too far away: a second verdict
   // from the same spot means the approach cannot get closer.
   std::optional<Eigen::Vector3d> too_far_at_;

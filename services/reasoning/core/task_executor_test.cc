@@ -22,7 +22,8 @@ class ScriptedPlanner : public PathPlanner {
       return failure;
     }
     if (unreachable) return absl::NotFoundError("goal unreachable");
-    if (query.alternative_from.has_value()) return std::vector<Eigen::Vector3d>{query.start, alternative_point};
+    if (query.alternative_from.has_value())
+      return std::vector<Eigen::Vector3d>{query.start, alternative_point};
     return std::vector<Eigen::Vector3d>{query.start, query.goal};
   }
   std::vector<PathQuery> queries;
@@ -129,8 +130,9 @@ TEST_F(GatewayTaskExecutorTest, NavigateApproachVerifySucceedsWithinOneMetre) {
   EXPECT_EQ(task.progress().phase, "verifying");
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));  // turn in place
   EXPECT_TRUE(task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached).empty());
-  EXPECT_TRUE(task.OnSceneGraph(10, GraphWith({Extinguisher(16)}, 2)).empty());  // one new detection
-  out = task.OnSceneGraph(11, GraphWith({Extinguisher(17)}, 3));                 // two: verified
+  EXPECT_TRUE(
+      task.OnSceneGraph(10, GraphWith({Extinguisher(16)}, 2)).empty());  // one new detection
+  out = task.OnSceneGraph(11, GraphWith({Extinguisher(17)}, 3));         // two: verified
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kStop);
   EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
@@ -153,7 +155,8 @@ TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppea
   std::optional<ModelRequest> request = task.TakeModelRequest();
   ASSERT_TRUE(request.has_value());
   EXPECT_TRUE(absl::StrContains(request->request.prose, "instruction"));
-  EXPECT_TRUE(absl::StrContains(request->request.task_json, "\"target\":\"red fire extinguisher\""));
+  EXPECT_TRUE(
+      absl::StrContains(request->request.task_json, "\"target\":\"red fire extinguisher\""));
   EXPECT_FALSE(task.TakeModelRequest().has_value());
 
   out = task.OnFeedback(20, out[0].id, RobotFeedback::kGoalReached);
@@ -167,7 +170,8 @@ TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppea
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
   // The scanned goal is not offered again.
   ASSERT_EQ(planner_.exploration_queries.back().excluded_goals.size(), 1u);
-  EXPECT_TRUE(planner_.exploration_queries.back().excluded_goals[0].isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_TRUE(
+      planner_.exploration_queries.back().excluded_goals[0].isApprox(Eigen::Vector3d(10, 0, 0)));
 
   out = task.OnSceneGraph(33, GraphWith({chair, Extinguisher(12)}, 2));
   ASSERT_EQ(out.size(), 1u);  // FIND done, LOOK_AROUND skipped, APPROACH issued
@@ -262,7 +266,8 @@ TEST_F(GatewayTaskExecutorTest, UnreachableTargetIsSetAsideAndSearchGoesOn) {
   out = task.OnPose(121, At(1));  // navigate timeout: re-plan
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().replans, 1);
-  EXPECT_TRUE(task.OnFeedback(122, out[0].id - 1, RobotFeedback::kBlocked).empty());  // stale id ignored
+  EXPECT_TRUE(
+      task.OnFeedback(122, out[0].id - 1, RobotFeedback::kBlocked).empty());  // stale id ignored
   out = task.OnFeedback(122, out[0].id, RobotFeedback::kBlocked);
   out = task.OnFeedback(123, out[0].id, RobotFeedback::kFailed);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
@@ -294,12 +299,16 @@ TEST_F(GatewayTaskExecutorTest, ApproachThatCannotGetCloserSetsTheTargetAside) {
   // The robot gets stuck 3 m short of the target on every approach (say, behind a counter).
   const auto verify_from_here = [&](double now) {
     task.OnPose(now, At(2));
-    out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // navigate / approach "done"
-    if (task.progress().phase != "verifying") out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
+    out =
+        task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // navigate / approach "done"
+    if (task.progress().phase != "verifying")
+      out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
     EXPECT_EQ(task.progress().phase, "verifying");
     task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // facing the target
-    task.OnSceneGraph(now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
-    out = task.OnSceneGraph(now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+    task.OnSceneGraph(
+        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+    out = task.OnSceneGraph(
+        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
   };
   verify_from_here(1);
   ASSERT_EQ(out.size(), 1u);
@@ -335,7 +344,7 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   EXPECT_EQ(out[0].kind, CommandKind::kRotate);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
   EXPECT_EQ(task.progress().explore_goals, 1);  // one exploration step, not the whole budget
-  EXPECT_EQ(planner_.queries.size(), 3u);         // the least explored direction and its two neighbours
+  EXPECT_EQ(planner_.queries.size(), 3u);  // the least explored direction and its two neighbours
   // After the scan the fallback step has a path; when the robot fails on it, it looks around
   // again instead of being sent on the same step.
   planner_.unreachable = false;
@@ -356,8 +365,9 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
 }
 
 TEST_F(GatewayTaskExecutorTest, FailedExplorationGoalIsExcludedAndExplorationGoesOn) {
-  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(-10, 0, 0),
-                        Eigen::Vector3d(0, -10, 0), Eigen::Vector3d(5, 5, 0)};
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0),
+                        Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0),
+                        Eigen::Vector3d(5, 5, 0)};
   ExecutorConfig config;
   config.explore_exclusion_radius_m = 1.5;  // covers the 2 m unreachable region alone
   TaskExecutor task = Make(FindTarget(), config);
@@ -388,7 +398,8 @@ TEST_F(GatewayTaskExecutorTest, VerifyTimeoutAcceptsAWellSeenTargetWithinReach) 
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   task.Start(0, At(4.5));  // already 0.5 m away: NAVIGATE and APPROACH complete at once
   EXPECT_EQ(current_type(task), SubgoalType::kVerify);
-  EXPECT_TRUE(task.OnSceneGraph(1, GraphWith({Extinguisher(16)}, 2)).empty());  // one sighting from here
+  EXPECT_TRUE(
+      task.OnSceneGraph(1, GraphWith({Extinguisher(16)}, 2)).empty());  // one sighting from here
   EXPECT_TRUE(task.OnPose(9.5, At(4.5)).empty());
   std::vector<RobotCommand> out = task.OnPose(10, At(4.5));  // 10 s, one new detection
   ASSERT_EQ(out.size(), 1u);
@@ -417,7 +428,8 @@ TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetGetsASecondLookThenIsSetAside) 
   EXPECT_EQ(task.progress().subgoal_index, 0);
   EXPECT_FALSE(task.progress().target.has_value());
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));
-  EXPECT_TRUE(absl::StrContains(task.progress().reason, "object 7 set aside")) << task.progress().reason;
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "object 7 set aside"))
+      << task.progress().reason;
 }
 
 TEST_F(GatewayTaskExecutorTest, PauseResumeCancelAndCorrection) {
@@ -485,7 +497,8 @@ TEST_F(GatewayTaskExecutorTest, NavigateCarriesThePlannedPathAndTheRobotsModalit
   EXPECT_DOUBLE_EQ(query.clearance_m, 0.05);
   EXPECT_TRUE(query.start.isApprox(Eigen::Vector3d(0, 1, 0)));
   // Target (5, 0) from (0, 1): distance sqrt(26), 1 m stand-off along the line.
-  const Eigen::Vector3d stop = Eigen::Vector3d(5, 0, 0) - Eigen::Vector3d(5, -1, 0) / std::sqrt(26.0);
+  const Eigen::Vector3d stop =
+      Eigen::Vector3d(5, 0, 0) - Eigen::Vector3d(5, -1, 0) / std::sqrt(26.0);
   EXPECT_TRUE(query.goal.isApprox(stop));
   EXPECT_FALSE(query.alternative_from.has_value());
   ASSERT_EQ(out.size(), 1u);
@@ -505,12 +518,14 @@ TEST_F(GatewayTaskExecutorTest, OccupiedGoalIsReplannedWithTheAlternativePoint) 
   EXPECT_TRUE(planner_.queries[1].alternative_from->isApprox(Eigen::Vector3d::Zero()));
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
-  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(3.5, 0.5, 0)));  // the planned goal, not the occupied one
+  EXPECT_TRUE(out[0].goal.isApprox(
+      Eigen::Vector3d(3.5, 0.5, 0)));  // the planned goal, not the occupied one
   EXPECT_EQ(task.progress().replans, 0);
 }
 
 TEST_F(GatewayTaskExecutorTest, OccupiedFrontierIsApproachedByTheAlternativePoint) {
-  planner_.failures = {absl::NotFoundError("no path"), absl::FailedPreconditionError("goal occupied")};
+  planner_.failures = {absl::NotFoundError("no path"),
+                       absl::FailedPreconditionError("goal occupied")};
   planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
   planner_.alternative_point = Eigen::Vector3d(0, 9.2, 0);
   TaskExecutor task = Make(GoToTarget());
@@ -559,7 +574,7 @@ TEST_F(GatewayTaskExecutorTest, BlockedFeedbackBacksOffAndPlansAgainWithMoreClea
   ASSERT_GE(out[0].path.size(), 2u);
   EXPECT_TRUE(out[0].path.front().isApprox(Eigen::Vector3d(1, 0.5, 0)));
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0.5, 0.25, 0)));  // retraces the trail >= 0.5 m
-  EXPECT_EQ(planner_.queries.size(), 1u);                             // no planning to back off
+  EXPECT_EQ(planner_.queries.size(), 1u);                            // no planning to back off
   task.OnPose(4, At(0.5, 0.25));
   out = task.OnFeedback(4, out[0].id, RobotFeedback::kGoalReached);
   ASSERT_EQ(planner_.queries.size(), 2u);
@@ -796,26 +811,31 @@ TEST_F(GatewayTaskExecutorTest, WatchdogReplansANavigationThatMakesNoProgress) {
 // VERIFY times out and looks again from the view distance: its own side leads back to the same
 // alternative point, so from another side, and it succeeds when the tv is seen from there.
 TEST_F(GatewayTaskExecutorTest, VerifyFromAfarLooksAgainFromTheViewDistanceAndSucceeds) {
-  planner_.failures = {absl::FailedPreconditionError("goal occupied"), absl::FailedPreconditionError("goal occupied")};
+  planner_.failures = {absl::FailedPreconditionError("goal occupied"),
+                       absl::FailedPreconditionError("goal occupied")};
   planner_.alternative_point = Eigen::Vector3d(2.75, 0, 0);
   TaskExecutor task = Make(GoToTarget());
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   std::vector<RobotCommand> out = task.Start(0, At(0));
   task.OnPose(10, At(2.75));
-  out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);  // NAVIGATE at the alternative point
+  out = task.OnFeedback(10, out[0].id,
+                        RobotFeedback::kGoalReached);  // NAVIGATE at the alternative point
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(current_type(task), SubgoalType::kApproach);
   out = task.OnFeedback(11, out[0].id, RobotFeedback::kGoalReached);  // APPROACH: no closer
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "verifying");
-  EXPECT_TRUE(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());  // facing the tv
+  EXPECT_TRUE(
+      task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());  // facing the tv
   for (double now = 12; now < 21; now += 0.5) EXPECT_TRUE(task.OnPose(now, At(2.75)).empty());
-  planner_.failures = {absl::FailedPreconditionError("goal occupied")};  // the own side's view point
-  out = task.OnPose(21, At(2.75));  // 10 s in VERIFY without a detection
+  planner_.failures = {
+      absl::FailedPreconditionError("goal occupied")};  // the own side's view point
+  out = task.OnPose(21, At(2.75));                      // 10 s in VERIFY without a detection
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "verifying");
   EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
-  const Eigen::Vector3d side = Eigen::Vector3d(5, 0, 0) + 0.8 * Eigen::Vector3d(-std::sqrt(0.5), -std::sqrt(0.5), 0);
+  const Eigen::Vector3d side =
+      Eigen::Vector3d(5, 0, 0) + 0.8 * Eigen::Vector3d(-std::sqrt(0.5), -std::sqrt(0.5), 0);
   EXPECT_TRUE(out[0].goal.isApprox(side)) << out[0].goal.transpose();
   EXPECT_TRUE(absl::StrContains(task.progress().reason, "another side")) << task.progress().reason;
   EXPECT_EQ(task.progress().target->object_id, 7);  // not rejected
@@ -864,13 +884,14 @@ TEST_F(GatewayTaskExecutorTest, BlockedTwiceAtTheSameSpotGivesTheExplorationGoal
   out = task.OnFeedback(8.5, out[0].id, RobotFeedback::kBlocked);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "backing_off");
-  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(1.25, 0, 0))) << out[0].goal.transpose();  // 0.5 m behind
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(1.25, 0, 0)))
+      << out[0].goal.transpose();  // 0.5 m behind
   task.OnPose(10, At(1.5));
   out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "exploring");
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));  // the same goal ...
-  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);     // ... with more clearance
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);    // ... with more clearance
   task.OnPose(12, At(1.9));
   out = task.OnFeedback(12, out[0].id, RobotFeedback::kBlocked);  // within 0.5 m of (2, 0)
   ASSERT_EQ(out.size(), 1u);
@@ -943,13 +964,14 @@ TEST_F(GatewayTaskExecutorTest, UnreachableExplorationGoalsAreSetAsideWithTheirR
     covered = covered || (goal - Eigen::Vector3d(1.5, 10.8, 0)).head<2>().norm() <= 1.0;
   }
   EXPECT_TRUE(covered);
-  EXPECT_TRUE(excluded(Eigen::Vector3d(1.2, 11.2, 0)));   // the region around (0, 10) ...
-  EXPECT_FALSE(excluded(Eigen::Vector3d(0, 13.5, 0)));  // ... is 2 m (+ planning's 1 m)
+  EXPECT_TRUE(excluded(Eigen::Vector3d(1.2, 11.2, 0)));  // the region around (0, 10) ...
+  EXPECT_FALSE(excluded(Eigen::Vector3d(0, 13.5, 0)));   // ... is 2 m (+ planning's 1 m)
   // The three new fallback directions differ from the first three.
   ASSERT_GE(planner_.queries.size(), 8u);
   for (std::size_t i = 5; i < 8; ++i) {
     for (std::size_t j = 1; j < 4; ++j) {
-      EXPECT_GT((planner_.queries[i].goal - planner_.queries[j].goal).norm(), 1.0) << i << " vs " << j;
+      EXPECT_GT((planner_.queries[i].goal - planner_.queries[j].goal).norm(), 1.0)
+          << i << " vs " << j;
     }
   }
   EXPECT_EQ(out[0].kind, CommandKind::kRotate);  // backed off already: now look around
@@ -970,7 +992,8 @@ TEST_F(GatewayTaskExecutorTest, EndgameGoesToTheBestCandidateSeen) {
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));
   EXPECT_FALSE(task.progress().target.has_value());
-  for (double now = 1; now < 60; now += 1) EXPECT_TRUE(task.OnPose(now, At(-now / 10)).empty()) << now;
+  for (double now = 1; now < 60; now += 1)
+    EXPECT_TRUE(task.OnPose(now, At(-now / 10)).empty()) << now;
   out = task.OnPose(60, At(-6));
   ASSERT_EQ(out.size(), 1u);
   ASSERT_TRUE(task.progress().target.has_value());
@@ -982,8 +1005,8 @@ TEST_F(GatewayTaskExecutorTest, EndgameGoesToTheBestCandidateSeen) {
 
 // Without a model, a candidate whose label matches the target (seen once: below the fast path's
 // threshold) is driven to and verified at once instead of passed by (8-episode home bench: 2 of
-// 3 failures were "seen, never approached"). A partial match (a plain extinguisher for "red fire extinguisher", colour
-// unknown: 0.5) is not taken.
+// 3 failures were "seen, never approached"). A partial match (a plain extinguisher for "red fire
+// extinguisher", colour unknown: 0.5) is not taken.
 TEST_F(GatewayTaskExecutorTest, WithoutAModelALabelledCandidateIsApproachedAndVerified) {
   planner_.frontiers = {Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0)};
   ExecutorConfig config;

@@ -12,8 +12,8 @@ namespace {
 bool SameTarget(const std::optional<LocatedTarget>& a, const std::optional<LocatedTarget>& b) {
   if (a.has_value() != b.has_value()) return false;
   if (!a.has_value()) return true;
-  return a->object_id == b->object_id && a->position == b->position && a->confidence == b->confidence &&
-         a->path == b->path;
+  return a->object_id == b->object_id && a->position == b->position &&
+         a->confidence == b->confidence && a->path == b->path;
 }
 
 bool SameArea(const std::optional<SearchArea>& a, const std::optional<SearchArea>& b) {
@@ -24,12 +24,14 @@ bool SameArea(const std::optional<SearchArea>& a, const std::optional<SearchArea
 }  // namespace
 
 bool SameContent(const TaskView& a, const TaskView& b) {
-  return std::tie(a.task_id, a.robot_id, a.instruction, a.state, a.pending, a.subgoals, a.current_subgoal, a.phase,
-                  a.reason, a.path, a.progress, a.decomposition_source, a.replans, a.explore_goals,
-                  a.model_requests, a.model_calls, a.exploration_strategy, a.created) ==
-             std::tie(b.task_id, b.robot_id, b.instruction, b.state, b.pending, b.subgoals, b.current_subgoal,
-                      b.phase, b.reason, b.path, b.progress, b.decomposition_source, b.replans, b.explore_goals,
-                      b.model_requests, b.model_calls, b.exploration_strategy, b.created) &&
+  return std::tie(a.task_id, a.robot_id, a.instruction, a.state, a.pending, a.subgoals,
+                  a.current_subgoal, a.phase, a.reason, a.path, a.progress, a.decomposition_source,
+                  a.replans, a.explore_goals, a.model_requests, a.model_calls,
+                  a.exploration_strategy, a.created) ==
+             std::tie(b.task_id, b.robot_id, b.instruction, b.state, b.pending, b.subgoals,
+                      b.current_subgoal, b.phase, b.reason, b.path, b.progress,
+                      b.decomposition_source, b.replans, b.explore_goals, b.model_requests,
+                      b.model_calls, b.exploration_strategy, b.created) &&
          SameTarget(a.target, b.target) && SameArea(a.search_area, b.search_area);
 }
 
@@ -49,7 +51,8 @@ TaskView ViewOf(const TaskRecord& task, std::optional<ExplorationStrategy> explo
   view.target = progress.target;
   view.path = progress.path;
   const std::size_t count = view.subgoals.size();
-  view.progress = count == 0 ? 1.0 : std::min(1.0, static_cast<double>(progress.subgoal_index) / count);
+  view.progress =
+      count == 0 ? 1.0 : std::min(1.0, static_cast<double>(progress.subgoal_index) / count);
   view.decomposition_source = task.source;
   view.replans = progress.replans;
   view.explore_goals = progress.explore_goals;
@@ -86,7 +89,8 @@ const TaskRecord* TaskRegistry::Find(const std::string& task_id) const {
   return it == tasks_.end() ? nullptr : &it->second;
 }
 
-std::vector<const TaskRecord*> TaskRegistry::Select(const std::string& robot_id, bool unfinished_only) const {
+std::vector<const TaskRecord*> TaskRegistry::Select(const std::string& robot_id,
+                                                    bool unfinished_only) const {
   std::vector<const TaskRecord*> selected;
   for (const auto& [id, task] : tasks_) {
     if (!robot_id.empty() && task.robot_id != robot_id) continue;
@@ -95,7 +99,8 @@ std::vector<const TaskRecord*> TaskRegistry::Select(const std::string& robot_id,
   }
   // Ids are "task-<n>" with n counting up, so (length, id) is submission order.
   std::sort(selected.begin(), selected.end(), [](const TaskRecord* a, const TaskRecord* b) {
-    return std::make_pair(a->task_id.size(), a->task_id) < std::make_pair(b->task_id.size(), b->task_id);
+    return std::make_pair(a->task_id.size(), a->task_id) <
+           std::make_pair(b->task_id.size(), b->task_id);
   });
   return selected;
 }

@@ -4,14 +4,13 @@
 // (proto_convert); the hub coordinates tasks with robots, sessions and remote calls.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "absl/time/time.h"
 #include "services/reasoning/core/eroi_search.h"
@@ -44,7 +43,8 @@ struct TaskView {
   int explore_goals = 0;
   int model_requests = 0;
   int model_calls = 0;
-  std::optional<ExplorationStrategy> exploration_strategy;  // nullopt = not reported (no planning service)
+  std::optional<ExplorationStrategy>
+      exploration_strategy;  // nullopt = not reported (no planning service)
   std::optional<SearchArea> search_area;
   absl::Time created;
   absl::Time updated;
@@ -57,20 +57,21 @@ struct TaskRecord {
   std::string task_id;
   std::string robot_id;
   std::string instruction;
-  std::string source;    // decomposition source: "rules" or "model"
+  std::string source;                           // decomposition source: "rules" or "model"
   std::optional<ExplorationStrategy> strategy;  // the operator's; nullopt = the configured default
-  std::unique_ptr<PathPlanner> planner;  // before the executor, which refers to it
+  std::unique_ptr<PathPlanner> planner;         // before the executor, which refers to it
   std::unique_ptr<TaskExecutor> executor;
-  uint64_t executor_generation = 0;  // bumped when the model's plan replaces the executor
+  uint64_t executor_generation = 0;        // bumped when the model's plan replaces the executor
   std::optional<uint64_t> graph_revision;  // scene graph revision the executor was last given
   int model_calls = 0;
-  std::unique_ptr<EroiSearch> eroi;  // EROI_UTILITY tasks with a configured search volume
+  std::unique_ptr<EroiSearch> eroi;       // EROI_UTILITY tasks with a configured search volume
   std::optional<SearchArea> search_area;  // the operator's; unset = the whole map
-  bool vision_busy = false;          // a VLM call of the EROI search is running
-  ModelCallPolicy calls;             // call economy: new views, back-off, budget, slow-path cache
+  bool vision_busy = false;               // a VLM call of the EROI search is running
+  ModelCallPolicy calls;  // call economy: new views, back-off, budget, slow-path cache
   bool started = false;
   bool paused_by_session = false;
-  bool resume_on_state = false;  // restored after a gateway crash: resumes on the robot's next state
+  bool resume_on_state =
+      false;  // restored after a gateway crash: resumes on the robot's next state
   // The executor is inside a remote (planning) call with the hub's lock released: nothing else
   // may enter it until the call ends; readers use `published`.
   bool in_remote_call = false;

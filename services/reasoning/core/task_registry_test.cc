@@ -25,8 +25,8 @@ class TaskRegistryTest : public ::testing::Test {
     task.robot_id = robot_id;
     Subgoal wait;
     wait.type = SubgoalType::kWait;
-    task.executor = std::make_unique<TaskExecutor>("wait", std::vector<Subgoal>{wait}, &resolver_, &planner_,
-                                                   nullptr, ExecutorConfig{});
+    task.executor = std::make_unique<TaskExecutor>("wait", std::vector<Subgoal>{wait}, &resolver_,
+                                                   &planner_, nullptr, ExecutorConfig{});
     return task;
   }
 
@@ -74,8 +74,9 @@ TEST_F(TaskRegistryTest, ViewsDifferInContentOnlyByWhatAnOperatorSees) {
   EXPECT_TRUE(SameContent(first, bumped));
 
   task.started = true;
-  EXPECT_FALSE(SameContent(first, ViewOf(task, ExplorationStrategy::kSemanticFrontier)));  // PENDING -> RUNNING
-  EXPECT_FALSE(SameContent(first, ViewOf(task, std::nullopt)));  // strategy no longer reported
+  EXPECT_FALSE(SameContent(
+      first, ViewOf(task, ExplorationStrategy::kSemanticFrontier)));  // PENDING -> RUNNING
+  EXPECT_FALSE(SameContent(first, ViewOf(task, std::nullopt)));       // strategy no longer reported
   task.started = false;
   task.executor->Cancel("operator");
   const TaskView cancelled = ViewOf(task, ExplorationStrategy::kSemanticFrontier);

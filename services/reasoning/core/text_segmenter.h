@@ -2,12 +2,12 @@
 // dictionary mode splits Chinese runs into words (seed 002, section 11.1 P0 item).
 #pragma once
 
+#include <unicode/uversion.h>
+
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <unicode/uversion.h>
 
 #include "absl/status/statusor.h"
 
@@ -18,9 +18,9 @@ U_NAMESPACE_END
 namespace semnav::reasoning {
 
 struct TextToken {
-  std::string text;   // UTF-8; ASCII letters lower-cased.
-  bool is_word;       // false for punctuation (clause separators such as "," or "，").
-  bool is_cjk;        // the token is made of ideographs (joined to neighbours without a space).
+  std::string text;  // UTF-8; ASCII letters lower-cased.
+  bool is_word;      // false for punctuation (clause separators such as "," or "，").
+  bool is_cjk;       // the token is made of ideographs (joined to neighbours without a space).
 };
 
 class TextSegmenter {

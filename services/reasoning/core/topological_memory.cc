@@ -28,7 +28,8 @@ void TopologicalMemory::Link(int64_t a, int64_t b) {
   }
 }
 
-int64_t TopologicalMemory::Update(const Eigen::Vector3d& position, const std::vector<std::string>& labels,
+int64_t TopologicalMemory::Update(const Eigen::Vector3d& position,
+                                  const std::vector<std::string>& labels,
                                   const std::vector<float>& embedding) {
   if (!position.allFinite()) return -1;
   ++clock_;
@@ -46,7 +47,8 @@ int64_t TopologicalMemory::Update(const Eigen::Vector3d& position, const std::ve
     id = nearest->id;
     if (id != current_) ++nearest->visits;
     for (const std::string& label : labels) {
-      if (std::find(nearest->labels.begin(), nearest->labels.end(), label) == nearest->labels.end()) {
+      if (std::find(nearest->labels.begin(), nearest->labels.end(), label) ==
+          nearest->labels.end()) {
         nearest->labels.push_back(label);
       }
     }
@@ -100,8 +102,8 @@ double TopologicalMemory::LabelScore(const PreparedTarget& target, const TopoNod
   return best;
 }
 
-std::optional<MemoryMatch> TopologicalMemory::Query(const TargetSpec& target,
-                                                    const std::vector<float>& text_embedding) const {
+std::optional<MemoryMatch> TopologicalMemory::Query(
+    const TargetSpec& target, const std::vector<float>& text_embedding) const {
   std::optional<MemoryMatch> best;
   const PreparedTarget prepared = matcher_->Prepare(target);
   for (const TopoNode& node : nodes_) {
@@ -109,7 +111,8 @@ std::optional<MemoryMatch> TopologicalMemory::Query(const TargetSpec& target,
     if (!text_embedding.empty() && node.embedding.size() == text_embedding.size()) {
       score = 0.5 * score + 0.5 * std::max(0.0, Cosine(text_embedding, node.embedding));
     }
-    if (score > 0.0 && (!best.has_value() || score > best->score)) best = MemoryMatch{node.id, node.position, score};
+    if (score > 0.0 && (!best.has_value() || score > best->score))
+      best = MemoryMatch{node.id, node.position, score};
   }
   return best;
 }
@@ -132,11 +135,13 @@ double TopologicalMemory::LeastExploredYaw(const Eigen::Vector3d& position) cons
   return yaw > M_PI ? yaw - 2.0 * M_PI : yaw;
 }
 
-std::optional<Eigen::Vector3d> TopologicalMemory::BacktrackPosition(const TargetSpec& target) const {
+std::optional<Eigen::Vector3d> TopologicalMemory::BacktrackPosition(
+    const TargetSpec& target) const {
   const TopoNode* seen = nullptr;
   const PreparedTarget prepared = matcher_->Prepare(target);
   for (const TopoNode& node : nodes_) {
-    if (!target.empty() && LabelScore(prepared, node) > 0.0 && (seen == nullptr || node.last_visit > seen->last_visit)) {
+    if (!target.empty() && LabelScore(prepared, node) > 0.0 &&
+        (seen == nullptr || node.last_visit > seen->last_visit)) {
       seen = &node;
     }
   }

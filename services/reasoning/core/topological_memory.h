@@ -3,12 +3,11 @@
 // pruning of the oldest, least-visited nodes past 500.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "services/reasoning/core/label_matcher.h"
 
@@ -49,7 +48,8 @@ class TopologicalMemory {
 
   // Best node for a text target: label match over its labels, averaged with max(0, cosine) when
   // both embeddings exist. nullopt when nothing matches.
-  std::optional<MemoryMatch> Query(const TargetSpec& target, const std::vector<float>& text_embedding) const;
+  std::optional<MemoryMatch> Query(const TargetSpec& target,
+                                   const std::vector<float>& text_embedding) const;
   // Yaw (rad, 0 = +x, counter-clockwise) of the centre of the sector around `position` holding the
   // fewest node visits; ties go to the lowest sector index.
   double LeastExploredYaw(const Eigen::Vector3d& position) const;

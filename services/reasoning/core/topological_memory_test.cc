@@ -49,8 +49,9 @@ TEST_F(GatewayTopologicalMemoryTest, TextQueryAndBacktrack) {
 TEST_F(GatewayTopologicalMemoryTest, LeastExploredSector) {
   TopologicalMemory memory(&matcher_, TopologicalMemoryConfig{});
   // Nodes east (0), north-east (1), north (2), west (4) and south (6) of the origin.
-  for (Eigen::Vector3d p : {Eigen::Vector3d(3, 0, 0), Eigen::Vector3d(3, 3, 0), Eigen::Vector3d(0, 3, 0),
-                            Eigen::Vector3d(-3, 0, 0), Eigen::Vector3d(0, -3, 0)}) {
+  for (Eigen::Vector3d p :
+       {Eigen::Vector3d(3, 0, 0), Eigen::Vector3d(3, 3, 0), Eigen::Vector3d(0, 3, 0),
+        Eigen::Vector3d(-3, 0, 0), Eigen::Vector3d(0, -3, 0)}) {
     memory.Update(p, {}, {});
   }
   // Sector 3 (north-west, 135 deg) is the first empty one.

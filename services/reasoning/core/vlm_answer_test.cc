@@ -1,8 +1,8 @@
 #include "services/reasoning/core/vlm_answer.h"
 
+#include "absl/strings/match.h"
 #include "gtest/gtest.h"
 #include "services/reasoning/core/search_prompts.h"
-#include "absl/strings/match.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -44,7 +44,8 @@ TEST(GatewaySearchPromptTest, RegionScoreParsing) {
   EXPECT_EQ(*ParseRegionScore("Score: -3 because..."), -3);
   EXPECT_EQ(ParseRegionScore("7").status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_EQ(ParseRegionScore("likely").status().code(), absl::StatusCode::kInvalidArgument);
-  EXPECT_TRUE(absl::StrContains(BuildRegionScorePrompt("helmet", {"bike rack", "road side"}), "- bike rack\n"));
+  EXPECT_TRUE(absl::StrContains(BuildRegionScorePrompt("helmet", {"bike rack", "road side"}),
+                                "- bike rack\n"));
 }
 
 }  // namespace

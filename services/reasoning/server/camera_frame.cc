@@ -20,13 +20,16 @@ absl::StatusOr<DecodedCameraFrame> DecodeCameraFrame(const v1::CameraFrame& fram
   switch (image.encoding()) {
     case common::v1::IMAGE_ENCODING_PNG:
     case common::v1::IMAGE_ENCODING_JPEG: {
-      const cv::Mat bytes(1, static_cast<int>(image.data().size()), CV_8UC1, const_cast<char*>(image.data().data()));
+      const cv::Mat bytes(1, static_cast<int>(image.data().size()), CV_8UC1,
+                          const_cast<char*>(image.data().data()));
       out.image = cv::imdecode(bytes, cv::IMREAD_COLOR);
-      if (out.image.empty()) return Invalid("camera.image.data", "is not a decodable PNG/JPEG file");
+      if (out.image.empty())
+        return Invalid("camera.image.data", "is not a decodable PNG/JPEG file");
       break;
     }
     case common::v1::IMAGE_ENCODING_RGB8: {
-      if (image.data().size() != static_cast<std::size_t>(image.width()) * image.height() * 3 || image.width() == 0) {
+      if (image.data().size() != static_cast<std::size_t>(image.width()) * image.height() * 3 ||
+          image.width() == 0) {
         return Invalid("camera.image.data", "RGB8 needs width * height * 3 bytes");
       }
       const cv::Mat rgb(static_cast<int>(image.height()), static_cast<int>(image.width()), CV_8UC3,
@@ -38,8 +41,10 @@ absl::StatusOr<DecodedCameraFrame> DecodeCameraFrame(const v1::CameraFrame& fram
       return Invalid("camera.image.encoding", "must be PNG, JPEG or RGB8");
   }
   const common::v1::CameraIntrinsics& k = frame.intrinsics();
-  if (!(k.fx() > 0.0) || !(k.fy() > 0.0)) return Invalid("camera.intrinsics.fx", "fx and fy must be > 0");
-  if (k.width() != static_cast<uint32_t>(out.image.cols) || k.height() != static_cast<uint32_t>(out.image.rows)) {
+  if (!(k.fx() > 0.0) || !(k.fy() > 0.0))
+    return Invalid("camera.intrinsics.fx", "fx and fy must be > 0");
+  if (k.width() != static_cast<uint32_t>(out.image.cols) ||
+      k.height() != static_cast<uint32_t>(out.image.rows)) {
     return Invalid("camera.intrinsics.width", "width and height must equal the image's");
   }
   out.camera = PinholeCamera{k.fx(), k.fy(), k.cx(), k.cy(), out.image.cols, out.image.rows};
@@ -47,7 +52,8 @@ absl::StatusOr<DecodedCameraFrame> DecodeCameraFrame(const v1::CameraFrame& fram
   out.position = Eigen::Vector3d(pose.position().x(), pose.position().y(), pose.position().z());
   const Eigen::Quaterniond q(pose.orientation().w(), pose.orientation().x(), pose.orientation().y(),
                              pose.orientation().z());
-  if (!(q.norm() > 1e-9)) return Invalid("camera.camera_pose.orientation", "must be a non-zero quaternion");
+  if (!(q.norm() > 1e-9))
+    return Invalid("camera.camera_pose.orientation", "must be a non-zero quaternion");
   out.orientation = q.normalized();
   return out;
 }

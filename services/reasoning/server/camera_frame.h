@@ -14,8 +14,8 @@ namespace semnav::reasoning {
 struct DecodedCameraFrame {
   cv::Mat image;  // 8-bit BGR
   PinholeCamera camera;
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();                   // map frame, metres
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();      // camera body -> map
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();               // map frame, metres
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // camera body -> map
 };
 
 absl::StatusOr<DecodedCameraFrame> DecodeCameraFrame(const v1::CameraFrame& frame);

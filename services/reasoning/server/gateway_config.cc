@@ -6,9 +6,7 @@
 
 namespace semnav::reasoning {
 
-std::string GatewayConfig::DefaultPriorPath() {
-  return SEMNAV_REASONING_PRIOR_PATH;
-}
+std::string GatewayConfig::DefaultPriorPath() { return SEMNAV_REASONING_PRIOR_PATH; }
 
 EroiSearchConfig DefaultEroiSearch() {
   EroiSearchConfig search;
@@ -31,9 +29,10 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("fast_threshold", &c.fast_path.fast_threshold)
       .Read("detection_count_saturation", &c.fast_path.detection_count_saturation)
       .Read("unknown_colour_factor", &c.fast_path.unknown_colour_factor);
-  fast.Check(c.fast_path.detection_count_saturation > 0, "detection_count_saturation", "must be > 0");
-  fast.Check(c.fast_path.fast_threshold >= 0.0 && c.fast_path.fast_threshold <= 1.0, "fast_threshold",
-             "must be in [0, 1]");
+  fast.Check(c.fast_path.detection_count_saturation > 0, "detection_count_saturation",
+             "must be > 0");
+  fast.Check(c.fast_path.fast_threshold >= 0.0 && c.fast_path.fast_threshold <= 1.0,
+             "fast_threshold", "must be in [0, 1]");
 
   ConfigReader slow = section.Child("slow_path");
   slow.Read("confidence_threshold", &c.slow_path.confidence_threshold)
@@ -76,7 +75,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("approach_label_match", &c.executor.approach_label_match);
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
-  executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m", "must be >= 0");
+  executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m",
+                 "must be >= 0");
   executor.Check(c.executor.path_clearance_m >= 0.0, "path_clearance_m", "must be >= 0");
   executor.Check(c.executor.dependency_retry_s > 0.0, "dependency_retry_s", "must be > 0");
   executor.Check(c.executor.dependency_timeout_s >= c.executor.dependency_retry_s,
@@ -84,23 +84,30 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(c.executor.verify_timeout_s > 0.0, "verify_timeout_s", "must be > 0");
   executor.Check(c.executor.progress_timeout_s > 0.0, "progress_timeout_s", "must be > 0");
   executor.Check(c.executor.progress_distance_m > 0.0, "progress_distance_m", "must be > 0");
-  executor.Check(c.executor.success_margin_m >= 0.0 && c.executor.success_margin_m < c.executor.success_radius_m,
+  executor.Check(c.executor.success_margin_m >= 0.0 &&
+                     c.executor.success_margin_m < c.executor.success_radius_m,
                  "success_margin_m", "must be in [0, success_radius_m)");
-  executor.Check(c.executor.verify_accept_detections >= 1, "verify_accept_detections", "must be >= 1");
-  executor.Check(c.executor.verify_view_m > 0.0 && c.executor.verify_view_m <= c.executor.success_radius_m,
-                 "verify_view_m", "must be in (0, success_radius_m]");
-  executor.Check(c.executor.backoff_m >= 0.0 && c.executor.backoff_m <= 5.0, "backoff_m", "must be in [0, 5]");
-  executor.Check(c.executor.blocked_clearance_step_m >= 0.0, "blocked_clearance_step_m", "must be >= 0");
-  executor.Check(c.executor.blocked_clearance_max_m >= 0.0 && c.executor.blocked_clearance_max_m <= 2.0,
-                 "blocked_clearance_max_m", "must be in [0, 2]");
+  executor.Check(c.executor.verify_accept_detections >= 1, "verify_accept_detections",
+                 "must be >= 1");
+  executor.Check(
+      c.executor.verify_view_m > 0.0 && c.executor.verify_view_m <= c.executor.success_radius_m,
+      "verify_view_m", "must be in (0, success_radius_m]");
+  executor.Check(c.executor.backoff_m >= 0.0 && c.executor.backoff_m <= 5.0, "backoff_m",
+                 "must be in [0, 5]");
+  executor.Check(c.executor.blocked_clearance_step_m >= 0.0, "blocked_clearance_step_m",
+                 "must be >= 0");
+  executor.Check(
+      c.executor.blocked_clearance_max_m >= 0.0 && c.executor.blocked_clearance_max_m <= 2.0,
+      "blocked_clearance_max_m", "must be in [0, 2]");
   executor.Check(c.executor.max_blocks_per_goal >= 1, "max_blocks_per_goal", "must be >= 1");
   executor.Check(c.executor.blocked_spot_radius_m >= 0.0, "blocked_spot_radius_m", "must be >= 0");
   executor.Check(c.executor.unreachable_region_m >= 0.0 && c.executor.unreachable_region_m <= 20.0,
                  "unreachable_region_m", "must be in [0, 20]");
   executor.Check(c.executor.time_budget_s >= 0.0, "time_budget_s", "must be >= 0 (0 = none)");
   executor.Check(c.executor.endgame_s >= 0.0, "endgame_s", "must be >= 0");
-  executor.Check(std::isfinite(c.executor.approach_label_match) && c.executor.approach_label_match >= 0.0,
-                 "approach_label_match", "must be a finite value >= 0 (above 1 = off)");
+  executor.Check(
+      std::isfinite(c.executor.approach_label_match) && c.executor.approach_label_match >= 0.0,
+      "approach_label_match", "must be a finite value >= 0 (above 1 = off)");
 
   ConfigReader memory = section.Child("memory");
   memory.Read("node_spacing_m", &c.memory.node_spacing_m)
@@ -147,17 +154,20 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("default_object_scale_m", &loop.default_object_scale_m);
     reloc.Check(c.relocalization.map_id.size() <= 128, "map_id", "must be at most 128 characters");
     reloc.Check(c.relocalization.deadline_ms > 0, "deadline_ms", "must be > 0");
-    reloc.Check(c.relocalization.simulated_latency_s >= 0.0 && c.relocalization.simulated_latency_s < loop.answer_timeout_s,
+    reloc.Check(c.relocalization.simulated_latency_s >= 0.0 &&
+                    c.relocalization.simulated_latency_s < loop.answer_timeout_s,
                 "simulated_latency_s", "must be in [0, answer_timeout_s)");
     reloc.Check(loop.jump_distance_m > 0.0, "jump_distance_m", "must be > 0");
     reloc.Check(loop.jump_yaw_rad > 0.0, "jump_yaw_rad", "must be > 0");
-    reloc.Check(loop.look_around_rate_rps > 0.0 && loop.look_around_rate_rps <= 10.0, "look_around_rate_rps",
-                "must be in (0, 10]");
+    reloc.Check(loop.look_around_rate_rps > 0.0 && loop.look_around_rate_rps <= 10.0,
+                "look_around_rate_rps", "must be in (0, 10]");
     reloc.Check(loop.look_around_duration_s > 0.0, "look_around_duration_s", "must be > 0");
     reloc.Check(loop.answer_timeout_s > 0.0, "answer_timeout_s", "must be > 0");
-    reloc.Check(loop.min_observed_objects >= 3, "min_observed_objects", "must be >= 3 (a pose needs 3 objects)");
-    reloc.Check(loop.max_observed_objects >= loop.min_observed_objects && loop.max_observed_objects <= 1000,
-                "max_observed_objects", "must be in [min_observed_objects, 1000]");
+    reloc.Check(loop.min_observed_objects >= 3, "min_observed_objects",
+                "must be >= 3 (a pose needs 3 objects)");
+    reloc.Check(
+        loop.max_observed_objects >= loop.min_observed_objects && loop.max_observed_objects <= 1000,
+        "max_observed_objects", "must be in [min_observed_objects, 1000]");
     reloc.Check(loop.max_attempts >= 1, "max_attempts", "must be >= 1");
     reloc.Check(loop.retrigger_after_s >= 0.0, "retrigger_after_s", "must be >= 0");
     reloc.Check(loop.default_object_scale_m > 0.0, "default_object_scale_m", "must be > 0");
@@ -173,7 +183,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("embedding_retry_s", &c.model_proxy.embedding_retry_s)
         .Read("text_embeddings", &c.model_proxy.text_embeddings);
     model.Check(c.model_proxy.deadline_ms > 0, "deadline_ms", "must be > 0");
-    model.Check(c.model_proxy.max_in_flight >= 1 && c.model_proxy.max_in_flight <= 16, "max_in_flight", "must be in [1, 16]");
+    model.Check(c.model_proxy.max_in_flight >= 1 && c.model_proxy.max_in_flight <= 16,
+                "max_in_flight", "must be in [1, 16]");
     model.Check(c.model_proxy.embedding_retry_s >= 0.0, "embedding_retry_s", "must be >= 0");
     ConfigReader calls = model.Child("calls");
     ModelCallPolicyConfig& p = c.model_proxy.calls;
@@ -220,8 +231,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("memory_label_radius_m", &c.memory_label_radius_m)
       .Read("lexicon_path", &c.lexicon_path)
       .Read("prior_path", &c.prior_path);
-  section.Check(c.default_lease_ttl_s >= 1.0 && c.default_lease_ttl_s <= c.max_lease_ttl_s, "default_lease_ttl_s",
-                "must be in [1, max_lease_ttl_s]");
+  section.Check(c.default_lease_ttl_s >= 1.0 && c.default_lease_ttl_s <= c.max_lease_ttl_s,
+                "default_lease_ttl_s", "must be in [1, max_lease_ttl_s]");
   section.Check(c.retained_events > 0, "retained_events", "must be > 0");
   section.Check(c.journal_flush_interval_s >= 0.05 && c.journal_flush_interval_s <= 60.0,
                 "journal_flush_interval_s", "must be in [0.05, 60]");

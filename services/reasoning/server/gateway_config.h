@@ -7,13 +7,13 @@
 #include "absl/status/statusor.h"
 #include "services/common/client/channel.h"
 #include "services/common/config/config_reader.h"
-#include "services/reasoning/core/model_call_policy.h"
 #include "services/reasoning/core/eroi_search.h"
+#include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/fast_resolver.h"
+#include "services/reasoning/core/model_call_policy.h"
+#include "services/reasoning/core/relocalization_loop.h"
 #include "services/reasoning/core/slow_answer.h"
 #include "services/reasoning/core/task_decomposer.h"
-#include "services/reasoning/core/exploration_strategy.h"
-#include "services/reasoning/core/relocalization_loop.h"
 #include "services/reasoning/core/task_executor.h"
 #include "services/reasoning/core/topological_memory.h"
 
@@ -22,18 +22,19 @@ namespace semnav::reasoning {
 // The planning service (section "planning"). No address = no planning: the robot plans every
 // path locally and exploration steps toward the topological memory's least-explored sector.
 struct PlanningSettings {
-  ClientOptions channel;                                 // address empty = no planning service
+  ClientOptions channel;  // address empty = no planning service
   ExplorationStrategy exploration_strategy = ExplorationStrategy::kSemanticFrontier;
-  int deadline_ms = 2000;                                // per PlanPath / SelectExplorationGoal
-  double goal_tolerance_m = 0.0;  // an occupied goal may move this far; 0 = use the alternative point
+  int deadline_ms = 2000;  // per PlanPath / SelectExplorationGoal
+  double goal_tolerance_m =
+      0.0;  // an occupied goal may move this far; 0 = use the alternative point
 };
 
 // The model proxy (section "model_proxy"). No address = offline default: fast path, the commonsense
 // prior for exploration and plain exploration; no slow-path calls.
 struct ModelSettings {
-  ClientOptions channel;          // address empty = no model proxy (127.0.0.1:50054 in the local stack)
-  std::string model_alias;        // Complete alias; "" = the proxy's default
-  std::string vision_alias;       // Complete alias for image prompts (a VLM chain); "" = the default
+  ClientOptions channel;     // address empty = no model proxy (127.0.0.1:50054 in the local stack)
+  std::string model_alias;   // Complete alias; "" = the proxy's default
+  std::string vision_alias;  // Complete alias for image prompts (a VLM chain); "" = the default
   std::string embedding_alias;    // Embed alias; "" = the proxy's default
   int deadline_ms = 5000;         // per call including the proxy's fallbacks (seed 000 Table 3:
                                   // VLM 1.51 s, LLM 0.35 s mean)
@@ -47,9 +48,9 @@ struct ModelSettings {
 // docs/algorithms/relocalization.md, "The loop"). No address = no loop: robot reports and pose
 // jumps are ignored and RelocalizeRobot is FAILED_PRECONDITION, as before the loop existed.
 struct RelocalizationSettings {
-  ClientOptions channel;             // address empty = no relocalization service
-  std::string map_id;                // landmark map robots relocalize in; "" = the robot's id
-  int deadline_ms = 2000;            // per Relocalize call (wall clock)
+  ClientOptions channel;   // address empty = no relocalization service
+  std::string map_id;      // landmark map robots relocalize in; "" = the robot's id
+  int deadline_ms = 2000;  // per Relocalize call (wall clock)
   // Simulated-clock robots get the answer this many simulated seconds after the call (the
   // service's median is ~5 ms; the rest is the robot's link), so episodes replay exactly.
   double simulated_latency_s = 0.5;
@@ -74,8 +75,9 @@ struct GatewayConfig {
   // only. A running task comes back PAUSED and resumes with its robot's next state.
   std::string state_directory;
   double journal_flush_interval_s = 1.0;  // the most a crash can lose
-  std::string lexicon_path = Lexicon::DefaultPath();  // bilingual lexicon (TSV); default: the source tree's
-  ClientOptions mapping;              // mapping service; empty address = no scene graph
+  std::string lexicon_path =
+      Lexicon::DefaultPath();  // bilingual lexicon (TSV); default: the source tree's
+  ClientOptions mapping;       // mapping service; empty address = no scene graph
   PlanningSettings planning;
   RelocalizationSettings relocalization;
   ModelSettings model_proxy;

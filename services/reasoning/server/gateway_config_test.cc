@@ -32,7 +32,8 @@ TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
   EXPECT_EQ(config.model_proxy.deadline_ms, 5000);
   EXPECT_EQ(config.model_proxy.max_in_flight, 2);
   EXPECT_FALSE(config.eroi.has_value());
-  EXPECT_TRUE(absl::EndsWith(config.prior_path, "conceptnet_atlocation_coco80/conceptnet-data.json"));
+  EXPECT_TRUE(
+      absl::EndsWith(config.prior_path, "conceptnet_atlocation_coco80/conceptnet-data.json"));
 }
 
 TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
@@ -52,19 +53,22 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
   EXPECT_EQ(config.eroi->grid.nz, 2);
   EXPECT_EQ(config.eroi->regions.theta, 4);
 
-  for (const char* yaml : {"model_proxy: {address: x, deadline_ms: 0}", "model_proxy: {address: x, max_in_flight: 64}",
-                           "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}"}) {
+  for (const char* yaml :
+       {"model_proxy: {address: x, deadline_ms: 0}", "model_proxy: {address: x, max_in_flight: 64}",
+        "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
     const absl::Status status = GatewayConfig::FromYaml(*bad).status();
     EXPECT_FALSE(status.ok()) << yaml;
-    EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'm' ? "model_proxy." : "eroi.")) << status;
+    EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'm' ? "model_proxy." : "eroi."))
+        << status;
   }
 }
 
 TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
-      "planning: {address: 127.0.0.1:50052, exploration_strategy: EROI_UTILITY, deadline_ms: 500}\n");
+      "planning: {address: 127.0.0.1:50052, exploration_strategy: EROI_UTILITY, deadline_ms: "
+      "500}\n");
   ASSERT_TRUE(reader.ok());
   const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
@@ -73,8 +77,8 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   EXPECT_EQ(config.planning.exploration_strategy, ExplorationStrategy::kEroiUtility);
   EXPECT_EQ(config.planning.deadline_ms, 500);
 
-  absl::StatusOr<ConfigReader> bad =
-      ConfigReader::FromString("planning: {address: 127.0.0.1:50052, exploration_strategy: RANDOM}\n");
+  absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(
+      "planning: {address: 127.0.0.1:50052, exploration_strategy: RANDOM}\n");
   ASSERT_TRUE(bad.ok());
   const absl::Status status = GatewayConfig::FromYaml(*bad).status();
   EXPECT_FALSE(status.ok());
@@ -85,7 +89,8 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
       "fast_path: {fast_threshold: 0.8}\n"
       "executor: {success_radius_m: 0.5, dependency_retry_s: 0.5, dependency_timeout_s: 5,\n"
-      "           progress_timeout_s: 20, verify_view_m: 0.4, success_margin_m: 0.1, unreachable_region_m: 3,\n"
+      "           progress_timeout_s: 20, verify_view_m: 0.4, success_margin_m: 0.1, "
+      "unreachable_region_m: 3,\n"
       "           time_budget_s: 250, endgame_s: 30, max_blocks_per_goal: 3}\n"
       "mapping: {address: 127.0.0.1:50051}\n");
   ASSERT_TRUE(reader.ok());
@@ -105,22 +110,24 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   EXPECT_EQ(config.executor.max_blocks_per_goal, 3);
   EXPECT_EQ(config.mapping.address, "127.0.0.1:50051");
 
-  for (const char* yaml : {"fast_path: {fast_threshold: 1.5}", "executor: {success_radius_m: 0}",
-                           "fast_path: {fast_treshold: 0.8}", "executor: {dependency_retry_s: 0}",
-                           "executor: {dependency_timeout_s: 1}", "executor: {progress_timeout_s: 0}",
-                           "executor: {success_margin_m: 1.0}", "executor: {verify_view_m: 1.5}",
-                           "executor: {time_budget_s: -1}", "executor: {max_blocks_per_goal: 0}"}) {
+  for (const char* yaml :
+       {"fast_path: {fast_threshold: 1.5}", "executor: {success_radius_m: 0}",
+        "fast_path: {fast_treshold: 0.8}", "executor: {dependency_retry_s: 0}",
+        "executor: {dependency_timeout_s: 1}", "executor: {progress_timeout_s: 0}",
+        "executor: {success_margin_m: 1.0}", "executor: {verify_view_m: 1.5}",
+        "executor: {time_budget_s: -1}", "executor: {max_blocks_per_goal: 0}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
     const absl::Status status = GatewayConfig::FromYaml(*bad).status();
     EXPECT_FALSE(status.ok()) << yaml;
-    EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'f' ? "fast_path." : "executor.")) << status;
+    EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'f' ? "fast_path." : "executor."))
+        << status;
   }
 }
 
 TEST(GatewayConfigTest, ReadsTheJournalKeysAndBoundsTheFlushInterval) {
-  absl::StatusOr<ConfigReader> reader =
-      ConfigReader::FromString("state_directory: /var/lib/semnav/gateway\njournal_flush_interval_s: 0.25\n");
+  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+      "state_directory: /var/lib/semnav/gateway\njournal_flush_interval_s: 0.25\n");
   ASSERT_TRUE(reader.ok());
   const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
@@ -131,7 +138,8 @@ TEST(GatewayConfigTest, ReadsTheJournalKeysAndBoundsTheFlushInterval) {
   for (const char* yaml : {"journal_flush_interval_s: 0", "journal_flush_interval_s: 61"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
-    EXPECT_TRUE(absl::StrContains(GatewayConfig::FromYaml(*bad).status().message(), "journal_flush_interval_s"))
+    EXPECT_TRUE(absl::StrContains(GatewayConfig::FromYaml(*bad).status().message(),
+                                  "journal_flush_interval_s"))
         << yaml;
   }
 }

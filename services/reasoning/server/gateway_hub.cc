@@ -16,7 +16,8 @@ namespace semnav::reasoning {
 
 using namespace hub_internal;
 
-GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner, GatewayBackends backends)
+GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner,
+                       GatewayBackends backends)
     : config_(config),
       lexicon_(lexicon),
       planner_(planner),
@@ -28,7 +29,8 @@ GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner
       requests_(static_cast<std::size_t>(std::max(1, config.idempotency_entries))) {
   absl::StatusOr<TextSegmenter> segmenter = TextSegmenter::Create();
   if (segmenter.ok()) {
-    decomposer_ = std::make_unique<TaskDecomposer>(InstructionParser(lexicon, *std::move(segmenter)), config.decomposer);
+    decomposer_ = std::make_unique<TaskDecomposer>(
+        InstructionParser(lexicon, *std::move(segmenter)), config.decomposer);
   }
   journal_enabled_ = !config_.state_directory.empty();
   if (journal_enabled_) {
@@ -51,15 +53,18 @@ void GatewayHub::Tick() {
     mu_.AwaitWithTimeout(absl::Condition(&shut_down_), absl::Milliseconds(100));
     if (shut_down_) break;
     for (auto& [robot_id, robot] : robots_) {
-      if (robot.simulated_clock || !PoseTrusted(robot)) continue;  // its states are its clock / relocalizing
+      if (robot.simulated_clock || !PoseTrusted(robot))
+        continue;  // its states are its clock / relocalizing
       Task* task = tasks_.Find(robot.active_task);
-      // A task inside a planning call is skipped: the next tick (or its robot's next state) checks it.
+      // A task inside a planning call is skipped: the next tick (or its robot's next state) checks
+      // it.
       if (task != nullptr && task->started && !task->in_remote_call) {
         Apply(*task, task->executor->OnPose(Now(), robot.pose));
       }
     }
     const absl::Time now = absl::Now();
-    for (const auto& [sink, robot_id] : slow_watchers_.TakeDue(now)) sink->Send(SlowSample(robot_id));
+    for (const auto& [sink, robot_id] : slow_watchers_.TakeDue(now))
+      sink->Send(SlowSample(robot_id));
   }
 }
 
@@ -71,7 +76,8 @@ double GatewayHub::Now() const { return absl::ToDoubleSeconds(absl::Now() - star
 
 GatewayHub::Robot& GatewayHub::RobotRecord(const std::string& robot_id) {
   Robot& robot = robots_[robot_id];
-  if (robot.memory == nullptr) robot.memory = std::make_unique<TopologicalMemory>(&matcher_, config_.memory);
+  if (robot.memory == nullptr)
+    robot.memory = std::make_unique<TopologicalMemory>(&matcher_, config_.memory);
   return robot;
 }
 
@@ -95,7 +101,8 @@ void GatewayHub::RunRemoteCall(const std::string& task_id, absl::FunctionRef<voi
 
 void GatewayHub::AwaitExecutor(const Task& task) {
   if (!task.in_remote_call) return;
-  mu_.Await(absl::Condition(+[](const Task* waited) { return !waited->in_remote_call; }, &task));
+  mu_.Await(absl::Condition(
+      +[](const Task* waited) { return !waited->in_remote_call; }, &task));
 }
 
 GatewayHub::Task* GatewayHub::SettledActiveTask(Robot& robot) {
@@ -108,7 +115,8 @@ GatewayHub::Task* GatewayHub::SettledActiveTask(Robot& robot) {
 }
 
 GatewayHub::RequestInFlight GatewayHub::BeginRequest(const std::string& key) {
-  auto free = [this, &key]() ABSL_SHARED_LOCKS_REQUIRED(mu_) { return !requests_in_flight_.contains(key); };
+  auto free = [this, &key]()
+                  ABSL_SHARED_LOCKS_REQUIRED(mu_) { return !requests_in_flight_.contains(key); };
   mu_.Await(absl::Condition(&free));
   return RequestInFlight(&requests_in_flight_, key);
 }
@@ -121,12 +129,14 @@ api::TaskSnapshot GatewayHub::ReadableSnapshot(const Task& task) const {
 absl::Status GatewayHub::CheckControl(const std::string& robot_id, const std::string& lease_id) {
   absl::Status status = leases_.CheckControl(robot_id, lease_id, absl::Now());
   if (status.ok()) return status;
-  return FieldError(absl::StatusCode::kFailedPrecondition, "lease_id", status.message(), "LEASE_HELD");
+  return FieldError(absl::StatusCode::kFailedPrecondition, "lease_id", status.message(),
+                    "LEASE_HELD");
 }
 
 void GatewayHub::Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id,
                      std::string message) {
-  const LoggedEvent& event = events_.Append(kind, robot_id, task_id, std::move(message), absl::Now());
+  const LoggedEvent& event =
+      events_.Append(kind, robot_id, task_id, std::move(message), absl::Now());
   if (journal_enabled_) unjournaled_events_.push_back(event);
   api::StreamEventsResponse response;
   *response.mutable_event() = ToProto(event);
@@ -136,7 +146,9 @@ void GatewayHub::Log(api::EventKind kind, const std::string& robot_id, const std
 }
 
 TaskView GatewayHub::View(const Task& task) const {
-  return ViewOf(task, backends_.explorer != nullptr ? std::optional<ExplorationStrategy>(StrategyOf(task)) : std::nullopt);
+  return ViewOf(task, backends_.explorer != nullptr
+                          ? std::optional<ExplorationStrategy>(StrategyOf(task))
+                          : std::nullopt);
 }
 
 api::TaskSnapshot GatewayHub::Snapshot(const Task& task) const { return ToProto(View(task)); }
@@ -151,7 +163,8 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
     api::ConnectResponse response;
     robot.last_session_command = robot.next_command_id++;
     robot.last_executor_command = command.id;
-    *response.mutable_command() = ToProto(InRobotFrame(robot, command), robot.last_session_command, task.task_id);
+    *response.mutable_command() =
+        ToProto(InRobotFrame(robot, command), robot.last_session_command, task.task_id);
     robot.last_command = response.command();
     robot.session->Send(response);
   }
@@ -175,14 +188,16 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   }
   // A dependency pause is logged even when the task was already PAUSED (an operator's resume
   // that found planning gone) or had no snapshot yet (it paused as it started).
-  const bool dependency_lost = now.phase == "dependency_unavailable" && before.phase != "dependency_unavailable";
+  const bool dependency_lost =
+      now.phase == "dependency_unavailable" && before.phase != "dependency_unavailable";
   const bool status_changed =
       !before.task_id.empty() && (before.state != now.state || before.pending != now.pending);
   if (status_changed || dependency_lost) {
     Log(api::EVENT_KIND_TASK_STATUS, task.robot_id, task.task_id,
         absl::StrCat(api::TaskStatus_Name(snapshot.status()), ": ", now.reason));
   } else if (before.current_subgoal != now.current_subgoal) {
-    Log(api::EVENT_KIND_SUBGOAL, task.robot_id, task.task_id, absl::StrCat("subgoal ", now.current_subgoal));
+    Log(api::EVENT_KIND_SUBGOAL, task.robot_id, task.task_id,
+        absl::StrCat("subgoal ", now.current_subgoal));
   }
   task.published = std::move(now);
   auto watchers = task_watchers_.find(task.task_id);
@@ -191,7 +206,8 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   }
   if (task.executor->finished()) {
     if (watchers != task_watchers_.end()) {
-      for (StreamSink<api::WatchTaskResponse>* watcher : watchers->second) watcher->Close(grpc::Status::OK);
+      for (StreamSink<api::WatchTaskResponse>* watcher : watchers->second)
+        watcher->Close(grpc::Status::OK);
       task_watchers_.erase(watchers);
     }
     if (robot.active_task == task.task_id) robot.active_task.clear();
@@ -224,7 +240,8 @@ void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
   executor.model_available = backends_.model != nullptr;
   ++task.executor_generation;
   task.executor = std::make_unique<TaskExecutor>(task.instruction, std::move(subgoals), &resolver_,
-                                                 task.planner.get(), RobotRecord(task.robot_id).memory.get(), executor);
+                                                 task.planner.get(),
+                                                 RobotRecord(task.robot_id).memory.get(), executor);
   GiveSceneGraph(task, NowFor(task.robot_id));
   const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
   task.eroi.reset();
@@ -236,7 +253,8 @@ void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
     fitted.grid = GridOverArea(fitted.grid, task.search_area->min, task.search_area->max);
     eroi = fitted;
   }
-  if (StrategyOf(task) == ExplorationStrategy::kEroiUtility && eroi.has_value() && target != nullptr) {
+  if (StrategyOf(task) == ExplorationStrategy::kEroiUtility && eroi.has_value() &&
+      target != nullptr) {
     absl::StatusOr<EroiSearch> search =
         EroiSearch::Create(target->text.empty() ? target->name : target->text, *eroi);
     if (search.ok()) task.eroi = std::make_unique<EroiSearch>(*std::move(search));
@@ -253,7 +271,8 @@ void GatewayHub::SetMobility(Task& task, const Robot& robot) {
   task.executor->SetMobility(robot.fly_roll, robot.footprint_radius_m);
 }
 
-absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::SubmitInstructionRequest& request) {
+absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(
+    const api::SubmitInstructionRequest& request) {
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
@@ -276,7 +295,8 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   Robot& robot = RobotRecord(request.robot_id());
   Task* const settled = SettledActiveTask(robot);  // before the checks: waiting releases mu_
   if (robot.emergency_stop) {
-    return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", "emergency stop active", "EMERGENCY_STOP");
+    return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", "emergency stop active",
+                      "EMERGENCY_STOP");
   }
   if (absl::Status s = CheckControl(request.robot_id(), request.lease_id()); !s.ok()) return s;
 
@@ -285,10 +305,13 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
     Task& task = *settled;
     const TargetSpec* target = PrimaryTarget(task.executor->subgoals());
     std::optional<Correction> correction =
-        target != nullptr ? ReadCorrection(decomposer_->parser().Parse(request.instruction()), *target) : std::nullopt;
+        target != nullptr
+            ? ReadCorrection(decomposer_->parser().Parse(request.instruction()), *target)
+            : std::nullopt;
     if (correction.has_value()) {
       Log(api::EVENT_KIND_CORRECTION, task.robot_id, task.task_id, request.instruction());
-      Apply(task, task.executor->Retarget(NowFor(task.robot_id), correction->target, correction->exclude_current));
+      Apply(task, task.executor->Retarget(NowFor(task.robot_id), correction->target,
+                                          correction->exclude_current));
       response.set_task_id(task.task_id);
       response.set_correction_applied(true);
       *response.mutable_task() = Snapshot(task);
@@ -298,7 +321,8 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   }
   Decomposition decomposition = decomposer_->Decompose(request.instruction());
   if (decomposition.subgoals.empty()) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "instruction", "no actionable step understood");
+    return FieldError(absl::StatusCode::kInvalidArgument, "instruction",
+                      "no actionable step understood");
   }
   if (settled != nullptr && !settled->executor->finished()) {
     Task& previous = *settled;
@@ -312,12 +336,14 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(const api::Sub
   task.source = decomposition.source;
   task.search_area = search_area;
   task.created = task.updated = absl::Now();
-  task.strategy = StrategyFromProto(request.exploration_strategy());  // nullopt = the configured default
+  task.strategy =
+      StrategyFromProto(request.exploration_strategy());  // nullopt = the configured default
   task.planner = PlannerFor(task_id, task.strategy);
   InstallExecutor(task, decomposition.subgoals);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());
-  if (decomposition.complex && backends_.model != nullptr) RequestDecomposition(task, std::move(decomposition));
+  if (decomposition.complex && backends_.model != nullptr)
+    RequestDecomposition(task, std::move(decomposition));
   StartIfPossible(task);
   response.set_task_id(task_id);
   *response.mutable_task() = Snapshot(task);
@@ -345,7 +371,8 @@ absl::StatusOr<api::ListTasksResponse> GatewayHub::ListTasks(const api::ListTask
 
 // Cancel, pause and resume share validation, the lease check and idempotency.
 template <typename Request, typename Action>
-absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, const Request& request, Action action) {
+absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method,
+                                                          const Request& request, Action action) {
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
@@ -372,13 +399,15 @@ absl::StatusOr<api::TaskSnapshot> GatewayHub::ControlTask(const char* method, co
 
 absl::StatusOr<api::TaskSnapshot> GatewayHub::Cancel(const api::CancelTaskRequest& request) {
   return ControlTask("Cancel", request, [&](Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_) {
-    Apply(task, task.executor->Cancel(request.reason().empty() ? "cancelled by the operator" : request.reason()));
+    Apply(task, task.executor->Cancel(request.reason().empty() ? "cancelled by the operator"
+                                                               : request.reason()));
   });
 }
 
 absl::StatusOr<api::TaskSnapshot> GatewayHub::Pause(const api::PauseTaskRequest& request) {
-  return ControlTask("Pause", request,
-                     [&](Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_) { Apply(task, task.executor->Pause()); });
+  return ControlTask("Pause", request, [&](Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_) {
+    Apply(task, task.executor->Pause());
+  });
 }
 
 absl::StatusOr<api::TaskSnapshot> GatewayHub::Resume(const api::ResumeTaskRequest& request) {
@@ -419,20 +448,23 @@ void GatewayHub::OnSceneGraph(const SceneGraph& graph) {
   }
 }
 
-absl::StatusOr<api::ResolveTargetResponse> GatewayHub::ResolveTarget(const api::ResolveTargetRequest& request) {
+absl::StatusOr<api::ResolveTargetResponse> GatewayHub::ResolveTarget(
+    const api::ResolveTargetRequest& request) {
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   TargetSpec target;
   if (request.has_target()) {
     target = FromProto(request.target());
-    if (target.empty()) return FieldError(absl::StatusCode::kInvalidArgument, "target.name", "is required");
+    if (target.empty())
+      return FieldError(absl::StatusCode::kInvalidArgument, "target.name", "is required");
   } else {
     if (absl::Status s = Required(request.text(), "text"); !s.ok()) return s;
     if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
     const Decomposition decomposition = decomposer_->Decompose(request.text());
     const TargetSpec* primary = PrimaryTarget(decomposition.subgoals);
-    if (primary == nullptr) return FieldError(absl::StatusCode::kInvalidArgument, "text", "no target understood");
+    if (primary == nullptr)
+      return FieldError(absl::StatusCode::kInvalidArgument, "text", "no target understood");
     target = *primary;
   }
   api::ResolveTargetResponse response;

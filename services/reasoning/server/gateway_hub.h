@@ -20,18 +20,18 @@
 #include "absl/time/time.h"
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "semnav/reasoning/v1/robot_session.pb.h"
-#include "services/reasoning/core/model_call_policy.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/reasoning/core/event_log.h"
+#include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/gateway_journal.h"
 #include "services/reasoning/core/lease_table.h"
-#include "services/common/idempotency/first_answer_cache.h"
+#include "services/reasoning/core/model_call_policy.h"
 #include "services/reasoning/core/robot_record.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
 #include "services/reasoning/core/task_registry.h"
 #include "services/reasoning/core/telemetry_subscriptions.h"
 #include "services/reasoning/core/topological_memory.h"
-#include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/server/gateway_config.h"
 #include "services/reasoning/server/language_model.h"
 #include "services/reasoning/server/relocalization_client.h"
@@ -44,8 +44,8 @@ namespace api = ::semnav::reasoning::v1;
 
 // Optional services of the hub; each must outlive it. Null = not configured.
 struct GatewayBackends {
-  ExplorationService* explorer = nullptr;  // planning's SelectExplorationGoal with task context
-  LanguageModel* model = nullptr;          // model proxy: slow path and text embeddings
+  ExplorationService* explorer = nullptr;    // planning's SelectExplorationGoal with task context
+  LanguageModel* model = nullptr;            // model proxy: slow path and text embeddings
   const CooccurrencePrior* prior = nullptr;  // commonsense co-occurrence for exploration
   Relocalizer* relocalizer = nullptr;        // relocalization: the lost-robot loop (null = no loop)
 };
@@ -55,10 +55,12 @@ class GatewayHub {
   // `lexicon` and `planner` must outlive the hub. Starts the 10 Hz ticker that drives the
   // executor timeouts of wall-clock robots and slow telemetry; Shutdown() stops it (and the
   // model's pending calls).
-  GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner, GatewayBackends backends = {});
+  GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner* planner,
+             GatewayBackends backends = {});
   ~GatewayHub();
 
-  absl::StatusOr<api::SubmitInstructionResponse> Submit(const api::SubmitInstructionRequest& request);
+  absl::StatusOr<api::SubmitInstructionResponse> Submit(
+      const api::SubmitInstructionRequest& request);
   absl::StatusOr<api::TaskSnapshot> GetTask(const std::string& task_id);
   absl::StatusOr<api::ListTasksResponse> ListTasks(const api::ListTasksRequest& request);
   absl::StatusOr<api::TaskSnapshot> Cancel(const api::CancelTaskRequest& request);
@@ -67,32 +69,40 @@ class GatewayHub {
   absl::StatusOr<api::Lease> AcquireLease(const api::AcquireLeaseRequest& request);
   absl::StatusOr<api::Lease> RenewLease(const api::RenewLeaseRequest& request);
   absl::Status ReleaseLease(const api::ReleaseLeaseRequest& request);
-  absl::StatusOr<api::EmergencyStopResponse> EmergencyStop(const api::EmergencyStopRequest& request);
+  absl::StatusOr<api::EmergencyStopResponse> EmergencyStop(
+      const api::EmergencyStopRequest& request);
   absl::Status ClearEmergencyStop(const api::ClearEmergencyStopRequest& request);
-  absl::StatusOr<api::DecomposeInstructionResponse> Decompose(const api::DecomposeInstructionRequest& request);
-  absl::StatusOr<api::ResolveTargetResponse> ResolveTarget(const api::ResolveTargetRequest& request);
+  absl::StatusOr<api::DecomposeInstructionResponse> Decompose(
+      const api::DecomposeInstructionRequest& request);
+  absl::StatusOr<api::ResolveTargetResponse> ResolveTarget(
+      const api::ResolveTargetRequest& request);
   // The operator's relocalization request (gateway_hub_relocalization.cc).
-  absl::StatusOr<api::RelocalizeRobotResponse> RelocalizeRobot(const api::RelocalizeRobotRequest& request);
+  absl::StatusOr<api::RelocalizeRobotResponse> RelocalizeRobot(
+      const api::RelocalizeRobotRequest& request);
   // True when `fast` (ResolveTarget's answer) should go on to the slow path: allow_slow_path, no
   // fast-path target and a model proxy configured.
-  bool WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const;
+  bool WantsSlowPath(const api::ResolveTargetRequest& request,
+                     const api::ResolveTargetResponse& fast) const;
   // The slow path for ResolveTarget: ESCA grounding, the model asked without blocking, `done`
   // called later (on the model's thread) with `fast` completed by the model's decision.
   void ResolveSlow(const api::ResolveTargetRequest& request, api::ResolveTargetResponse fast,
-                   std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done) ABSL_LOCKS_EXCLUDED(mu_);
+                   std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done)
+      ABSL_LOCKS_EXCLUDED(mu_);
   // A new revision of mapping's scene graph (shared by all robots of this gateway). Tasks of
   // simulated-clock robots see it at their robot's next state, not at once.
   void OnSceneGraph(const SceneGraph& graph);
   // How a simulated-clock state brings the scene graph up to the robot's last frame: fetches
   // mapping's current graph and hands it to OnSceneGraph, within `timeout`. Unset = the graph
   // arrives only by the watch (tests without mapping).
-  void SetSceneGraphSync(std::function<absl::Status(absl::Duration timeout)> sync) ABSL_LOCKS_EXCLUDED(mu_);
+  void SetSceneGraphSync(std::function<absl::Status(absl::Duration timeout)> sync)
+      ABSL_LOCKS_EXCLUDED(mu_);
 
   // Streams. Watchers get the current snapshot / replayed events at once, then live ones; request
   // errors close the sink with the error.
   void WatchTask(const api::WatchTaskRequest& request, StreamSink<api::WatchTaskResponse>* sink);
   void UnwatchTask(StreamSink<api::WatchTaskResponse>* sink);
-  void WatchEvents(const api::StreamEventsRequest& request, StreamSink<api::StreamEventsResponse>* sink);
+  void WatchEvents(const api::StreamEventsRequest& request,
+                   StreamSink<api::StreamEventsResponse>* sink);
   void UnwatchEvents(StreamSink<api::StreamEventsResponse>* sink);
   // The retained events of a robot or task at once, with the log's newest id to stream on from.
   absl::StatusOr<api::ListEventsResponse> ListEvents(const api::ListEventsRequest& request);
@@ -149,7 +159,8 @@ class GatewayHub {
   using Task = TaskRecord;
 
   template <typename Request, typename Action>
-  absl::StatusOr<api::TaskSnapshot> ControlTask(const char* method, const Request& request, Action action);
+  absl::StatusOr<api::TaskSnapshot> ControlTask(const char* method, const Request& request,
+                                                Action action);
   double Now() const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The clock of `robot_id`'s tasks: its last state stamp for a simulated-clock robot, else Now().
   double NowFor(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
@@ -157,35 +168,41 @@ class GatewayHub {
   // simulated-clock robot the answer is held (HeldAnswer) and applied by the state whose stamp
   // first reaches issue time + reported latency. Sets caller.reported_latency.
   template <typename Answer>
-  std::function<void(Answer)> AtSimulatedArrival(ModelCaller& caller, std::function<void(Answer)> handler)
+  std::function<void(Answer)> AtSimulatedArrival(ModelCaller& caller,
+                                                 std::function<void(Answer)> handler)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Simulated clock: waits (bounded) for the robot's model calls to come back and applies the
   // answers due by its current time, in (due, issue) order; mu_ is released while handlers run.
   void ApplyDueAnswers(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Gives the executor the hub's scene graph at `now` (and notes its revision).
-  std::vector<RobotCommand> GiveSceneGraph(Task& task, double now) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  std::vector<RobotCommand> GiveSceneGraph(Task& task, double now)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // One simulated-clock state: see OnRobotState.
   absl::Status OnSimulatedStep(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state,
                                const RobotPose& pose) ABSL_LOCKS_EXCLUDED(mu_);
   // The pose part of a state: memory, fast telemetry and the executor.
-  void HandlePose(const std::string& robot_id, Robot& robot, const api::RobotState& state, const RobotPose& pose)
+  void HandlePose(const std::string& robot_id, Robot& robot, const api::RobotState& state,
+                  const RobotPose& pose) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void HandleFeedback(Robot& robot, const api::CommandFeedback& feedback)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void HandleFeedback(Robot& robot, const api::CommandFeedback& feedback) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  absl::Status HandleCameraFrame(const std::string& robot_id, Robot& robot, const api::CameraFrame& frame)
-      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  absl::Status HandleCameraFrame(const std::string& robot_id, Robot& robot,
+                                 const api::CameraFrame& frame) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   Robot& RobotRecord(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   absl::StatusOr<Task*> FindTask(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The task's view now, and as the API's snapshot.
   TaskView View(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   api::TaskSnapshot Snapshot(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Sends the executor's commands to the robot, bumps the revision and notifies watchers.
-  void Apply(Task& task, const std::vector<RobotCommand>& commands) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void Apply(Task& task, const std::vector<RobotCommand>& commands)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The task's path planner with `strategy` (nullopt = the configured default) and its exploration
   // context.
-  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id, std::optional<ExplorationStrategy> strategy);
+  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id,
+                                          std::optional<ExplorationStrategy> strategy);
   // The task's RemoteCallRunner: called by its executor under mu_; runs `call` without mu_.
-  void RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Waits (mu_ released meanwhile) until the task's executor is out of its remote call; every
   // event for an executor goes through this first. State may have changed on return.
   void AwaitExecutor(const Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
@@ -202,11 +219,12 @@ class GatewayHub {
   void SetMobility(Task& task, const Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // A new executor for `subgoals` (with the scene graph, the EROI search and the target's text
   // embedding asked for); the task's robot is not commanded yet.
-  void InstallExecutor(Task& task, std::vector<Subgoal> subgoals) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void InstallExecutor(Task& task, std::vector<Subgoal> subgoals)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Asks the model to decompose a complex instruction; the task runs the rule subgoals meanwhile.
   void RequestDecomposition(Task& task, Decomposition rules) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void OnDecomposition(const std::string& task_id, const Decomposition& rules, absl::StatusOr<std::string> answer)
-      ABSL_LOCKS_EXCLUDED(mu_);
+  void OnDecomposition(const std::string& task_id, const Decomposition& rules,
+                       absl::StatusOr<std::string> answer) ABSL_LOCKS_EXCLUDED(mu_);
   // Runs the executor's pending slow-path request on the model, without waiting for it.
   void DispatchModelRequest(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void RequestTextEmbedding(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
@@ -218,10 +236,10 @@ class GatewayHub {
   void OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding)
       ABSL_LOCKS_EXCLUDED(mu_);
   ExplorationContext ContextFor(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer, int64_t prompt_tokens)
-      ABSL_LOCKS_EXCLUDED(mu_);
-  void OnRegionScore(const std::string& task_id, const RegionDue& region, absl::StatusOr<std::string> answer)
-      ABSL_LOCKS_EXCLUDED(mu_);
+  void OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer,
+                      int64_t prompt_tokens) ABSL_LOCKS_EXCLUDED(mu_);
+  void OnRegionScore(const std::string& task_id, const RegionDue& region,
+                     absl::StatusOr<std::string> answer) ABSL_LOCKS_EXCLUDED(mu_);
   // The strategy a task explores with: its own, else the configured default.
   ExplorationStrategy StrategyOf(const Task& task) const;
   void Tick() ABSL_LOCKS_EXCLUDED(mu_);
@@ -236,23 +254,28 @@ class GatewayHub {
   RobotCommand InRobotFrame(const Robot& robot, const RobotCommand& command) const;
   void OnLocalizationSession(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   api::RobotLocalization LocalizationOf(const Robot& robot) const;
-  void RunLocalizationActions(const std::string& robot_id, Robot& robot, std::vector<RelocalizationAction> actions)
+  void RunLocalizationActions(const std::string& robot_id, Robot& robot,
+                              std::vector<RelocalizationAction> actions)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void SendLocalizationUpdate(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void OnRelocalizationAnswer(const std::string& robot_id, absl::StatusOr<RelocalizationAnswer> answer)
-      ABSL_LOCKS_EXCLUDED(mu_);
+  void OnRelocalizationAnswer(const std::string& robot_id,
+                              absl::StatusOr<RelocalizationAnswer> answer) ABSL_LOCKS_EXCLUDED(mu_);
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
   // shutdown, outside mu_ for the file writes.
   void RestoreFromJournal() ABSL_LOCKS_EXCLUDED(mu_);
-  void RestoreTask(const JournaledTask& saved, uint64_t next_number) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void RestoreTask(const JournaledTask& saved, uint64_t next_number)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   JournaledTask JournalEntry(const Task& task) const ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void FlushJournalLoop() ABSL_LOCKS_EXCLUDED(mu_);
   void FlushJournal() ABSL_LOCKS_EXCLUDED(mu_);
-  api::StreamSlowTelemetryResponse SlowSample(const std::string& robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id, std::string message)
+  api::StreamSlowTelemetryResponse SlowSample(const std::string& robot_id)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  Robot* RobotOfSink(StreamSink<api::ConnectResponse>* sink, std::string* robot_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  absl::Status CheckControl(const std::string& robot_id, const std::string& lease_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void Log(api::EventKind kind, const std::string& robot_id, const std::string& task_id,
+           std::string message) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  Robot* RobotOfSink(StreamSink<api::ConnectResponse>* sink, std::string* robot_id)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  absl::Status CheckControl(const std::string& robot_id, const std::string& lease_id)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
 
   const GatewayConfig config_;
   const Lexicon* lexicon_;
@@ -267,14 +290,18 @@ class GatewayHub {
   std::map<std::string, Robot> robots_ ABSL_GUARDED_BY(mu_);
   TaskRegistry tasks_ ABSL_GUARDED_BY(mu_);
   // Operators watching each task (by id), until it ends.
-  std::map<std::string, std::set<StreamSink<api::WatchTaskResponse>*>> task_watchers_ ABSL_GUARDED_BY(mu_);
+  std::map<std::string, std::set<StreamSink<api::WatchTaskResponse>*>> task_watchers_
+      ABSL_GUARDED_BY(mu_);
   LeaseTable leases_ ABSL_GUARDED_BY(mu_);
   EventLog events_ ABSL_GUARDED_BY(mu_);
   FirstAnswerCache<std::string> requests_ ABSL_GUARDED_BY(mu_);  // serialized first answers
   std::set<std::string> requests_in_flight_ ABSL_GUARDED_BY(mu_);
-  std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_ ABSL_GUARDED_BY(mu_);
-  TelemetrySubscriptions<StreamSink<api::StreamFastTelemetryResponse>*> fast_watchers_ ABSL_GUARDED_BY(mu_);
-  TelemetrySubscriptions<StreamSink<api::StreamSlowTelemetryResponse>*> slow_watchers_ ABSL_GUARDED_BY(mu_);
+  std::map<StreamSink<api::StreamEventsResponse>*, std::string> event_watchers_
+      ABSL_GUARDED_BY(mu_);
+  TelemetrySubscriptions<StreamSink<api::StreamFastTelemetryResponse>*> fast_watchers_
+      ABSL_GUARDED_BY(mu_);
+  TelemetrySubscriptions<StreamSink<api::StreamSlowTelemetryResponse>*> slow_watchers_
+      ABSL_GUARDED_BY(mu_);
   SceneGraph scene_graph_ ABSL_GUARDED_BY(mu_);
   uint64_t fast_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
@@ -295,7 +322,8 @@ class GatewayHub {
 
 class GatewayHub::RequestInFlight {
  public:
-  RequestInFlight(std::set<std::string>* keys, std::string key) : keys_(keys), key_(std::move(key)) {
+  RequestInFlight(std::set<std::string>* keys, std::string key)
+      : keys_(keys), key_(std::move(key)) {
     keys_->insert(key_);
   }
   RequestInFlight(const RequestInFlight&) = delete;
@@ -308,7 +336,8 @@ class GatewayHub::RequestInFlight {
 };
 
 template <typename Answer>
-std::function<void(Answer)> GatewayHub::AtSimulatedArrival(ModelCaller& caller, std::function<void(Answer)> handler) {
+std::function<void(Answer)> GatewayHub::AtSimulatedArrival(ModelCaller& caller,
+                                                           std::function<void(Answer)> handler) {
   Robot& robot = RobotRecord(caller.robot_id);
   if (!robot.simulated_clock) return handler;
   ++robot.model_calls_in_flight;
@@ -318,8 +347,9 @@ std::function<void(Answer)> GatewayHub::AtSimulatedArrival(ModelCaller& caller, 
     absl::MutexLock lock(&mu_);
     Robot& arrived = RobotRecord(robot_id);
     --arrived.model_calls_in_flight;
-    arrived.held_answers.push_back({issued_s + absl::ToDoubleSeconds(*latency), order,
-                                    [handler, answer = std::move(answer)]() mutable { handler(std::move(answer)); }});
+    arrived.held_answers.push_back(
+        {issued_s + absl::ToDoubleSeconds(*latency), order,
+         [handler, answer = std::move(answer)]() mutable { handler(std::move(answer)); }});
   };
 }
 

@@ -19,7 +19,8 @@ namespace {
 api::RobotState StepState(double x, double y, double stamp_s, uint64_t step) {
   api::RobotState state = At(x, y);
   state.mutable_header()->mutable_stamp()->set_seconds(static_cast<int64_t>(stamp_s));
-  state.mutable_header()->mutable_stamp()->set_nanos(static_cast<int32_t>((stamp_s - static_cast<int64_t>(stamp_s)) * 1e9));
+  state.mutable_header()->mutable_stamp()->set_nanos(
+      static_cast<int32_t>((stamp_s - static_cast<int64_t>(stamp_s)) * 1e9));
   state.set_step(step);
   return state;
 }
@@ -60,7 +61,8 @@ class SimulatedClockTest : public ::testing::Test {
     ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(0, 0, 1.0, 1)).ok());
     ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(6, 0, 2.0, 2)).ok());
     ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 3.0, 3)).ok());
-    absl::StatusOr<api::SubmitInstructionResponse> response = hub_->Submit(SubmitRequest("回到沙发那里"));
+    absl::StatusOr<api::SubmitInstructionResponse> response =
+        hub_->Submit(SubmitRequest("回到沙发那里"));
     ASSERT_TRUE(response.ok()) << response.status();
     task_id_ = response->task_id();
   }
@@ -136,13 +138,17 @@ class LatencyModel : public LanguageModel {
     matches_.push_back({caller, std::move(done)});
   }
   void Decompose(const ModelCaller&, const DecomposeRequest&, AnswerDone done) override {
-    std::thread([done = std::move(done)] { done(absl::UnimplementedError("no decompose")); }).detach();
+    std::thread([done = std::move(done)] {
+      done(absl::UnimplementedError("no decompose"));
+    }).detach();
   }
   void Ask(const ModelCaller&, const ModelQuestion&, AnswerDone done) override {
     std::thread([done = std::move(done)] { done(absl::UnimplementedError("no vision")); }).detach();
   }
   void EmbedText(const ModelCaller&, const std::string&, EmbeddingDone done) override {
-    std::thread([done = std::move(done)] { done(absl::UnavailableError("no embedding backend")); }).detach();
+    std::thread([done = std::move(done)] {
+      done(absl::UnavailableError("no embedding backend"));
+    }).detach();
   }
   void Stop() override {}
 
@@ -151,8 +157,8 @@ class LatencyModel : public LanguageModel {
     return matches_.size();
   }
   // Answers call `index` from another thread, as the proxy client does.
-  std::thread AnswerLater(std::size_t index, absl::Duration wall_delay, absl::Duration reported_latency,
-                          std::string answer) {
+  std::thread AnswerLater(std::size_t index, absl::Duration wall_delay,
+                          absl::Duration reported_latency, std::string answer) {
     absl::MutexLock lock(&mu_);
     Call call = matches_[index];
     return std::thread([call, wall_delay, reported_latency, answer] {
@@ -174,18 +180,21 @@ class LatencyModel : public LanguageModel {
 TEST(SimulatedClockModelTest, AnAnswerIsUsedOnlyOnceItsSimulatedLatencyHasPassed) {
   RobotLocalPlanner planner;
   LatencyModel model;
-  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner, GatewayBackends{nullptr, &model, nullptr});
+  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner,
+                 GatewayBackends{nullptr, &model, nullptr});
   hub.OnSceneGraph(CupScene());
   RecordingSink session;
   ASSERT_TRUE(hub.OpenSession(SimulatedHello("r1"), &session).ok());
   ASSERT_TRUE(hub.OnRobotState(&session, StepState(0, 0, 10.0, 1)).ok());
-  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(SubmitRequest("find the red cup"));
+  absl::StatusOr<api::SubmitInstructionResponse> submitted =
+      hub.Submit(SubmitRequest("find the red cup"));
   ASSERT_TRUE(submitted.ok()) << submitted.status();
   const std::string task_id = submitted->task_id();
   ASSERT_EQ(model.matches(), 1u);  // asked at t = 10 s
 
   // The answer comes back at once in wall time, but the model took 2 s of simulated time.
-  const std::string pick = R"({"best_id": "7", "confidence": 0.8, "ranking": [{"id": "7", "score": 0.8}]})";
+  const std::string pick =
+      R"({"best_id": "7", "confidence": 0.8, "ranking": [{"id": "7", "score": 0.8}]})";
   model.AnswerLater(0, absl::ZeroDuration(), absl::Seconds(2), pick).join();
   ASSERT_TRUE(hub.OnRobotState(&session, StepState(0, 0, 11.0, 2)).ok());
   EXPECT_FALSE(hub.GetTask(task_id)->has_target());
@@ -206,12 +215,14 @@ TEST(SimulatedClockModelTest, AnAnswerIsUsedOnlyOnceItsSimulatedLatencyHasPassed
 TEST(SimulatedClockModelTest, AStepWaitsForAnAnswerStillOnTheWaySoWallSpeedDoesNotMatter) {
   RobotLocalPlanner planner;
   LatencyModel model;
-  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner, GatewayBackends{nullptr, &model, nullptr});
+  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner,
+                 GatewayBackends{nullptr, &model, nullptr});
   hub.OnSceneGraph(CupScene());
   RecordingSink session;
   ASSERT_TRUE(hub.OpenSession(SimulatedHello("r1"), &session).ok());
   ASSERT_TRUE(hub.OnRobotState(&session, StepState(0, 0, 10.0, 1)).ok());
-  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(SubmitRequest("find the red cup"));
+  absl::StatusOr<api::SubmitInstructionResponse> submitted =
+      hub.Submit(SubmitRequest("find the red cup"));
   ASSERT_TRUE(submitted.ok()) << submitted.status();
   ASSERT_EQ(model.matches(), 1u);
 

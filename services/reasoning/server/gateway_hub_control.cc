@@ -1,7 +1,6 @@
 // GatewayHub: control leases and the emergency stop.
-#include "services/reasoning/server/gateway_hub.h"
-
 #include "absl/strings/str_cat.h"
+#include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
 #include "services/reasoning/server/request_checks.h"
@@ -19,16 +18,20 @@ absl::StatusOr<api::Lease> GatewayHub::AcquireLease(const api::AcquireLeaseReque
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   if (absl::Status s = Required(request.holder(), "holder"); !s.ok()) return s;
   double ttl = config_.default_lease_ttl_s;
-  if (request.has_ttl()) ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
+  if (request.has_ttl())
+    ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
   if (ttl < 1.0 || ttl > config_.max_lease_ttl_s) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "ttl", "must be between 1 s and max_lease_ttl_s");
+    return FieldError(absl::StatusCode::kInvalidArgument, "ttl",
+                      "must be between 1 s and max_lease_ttl_s");
   }
   absl::StatusOr<LeaseInfo> lease =
       leases_.Acquire(request.robot_id(), request.holder(), absl::Seconds(ttl), absl::Now());
   if (!lease.ok()) {
-    return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", lease.status().message(), "LEASE_HELD");
+    return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", lease.status().message(),
+                      "LEASE_HELD");
   }
-  Log(api::EVENT_KIND_LEASE, request.robot_id(), "", absl::StrCat("lease acquired by ", request.holder()));
+  Log(api::EVENT_KIND_LEASE, request.robot_id(), "",
+      absl::StrCat("lease acquired by ", request.holder()));
   journal_dirty_ = true;
   api::Lease out = ToProto(*lease);
   requests_.Remember(key, out.SerializeAsString());
@@ -40,12 +43,17 @@ absl::StatusOr<api::Lease> GatewayHub::RenewLease(const api::RenewLeaseRequest& 
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.lease_id(), "lease_id"); !s.ok()) return s;
   double ttl = config_.default_lease_ttl_s;
-  if (request.has_ttl()) ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
+  if (request.has_ttl())
+    ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
   if (ttl < 1.0 || ttl > config_.max_lease_ttl_s) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "ttl", "must be between 1 s and max_lease_ttl_s");
+    return FieldError(absl::StatusCode::kInvalidArgument, "ttl",
+                      "must be between 1 s and max_lease_ttl_s");
   }
-  absl::StatusOr<LeaseInfo> lease = leases_.Renew(request.lease_id(), absl::Seconds(ttl), absl::Now());
-  if (!lease.ok()) return FieldError(absl::StatusCode::kNotFound, "lease_id", "unknown or expired lease", "NOT_FOUND");
+  absl::StatusOr<LeaseInfo> lease =
+      leases_.Renew(request.lease_id(), absl::Seconds(ttl), absl::Now());
+  if (!lease.ok())
+    return FieldError(absl::StatusCode::kNotFound, "lease_id", "unknown or expired lease",
+                      "NOT_FOUND");
   journal_dirty_ = true;
   return ToProto(*lease);
 }
@@ -59,7 +67,8 @@ absl::Status GatewayHub::ReleaseLease(const api::ReleaseLeaseRequest& request) {
   return absl::OkStatus();
 }
 
-absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::EmergencyStopRequest& request) {
+absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(
+    const api::EmergencyStopRequest& request) {
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
@@ -95,7 +104,8 @@ absl::StatusOr<api::EmergencyStopResponse> GatewayHub::EmergencyStop(const api::
       robot.session->Send(stop);
       response.add_stopped_robot_ids(robot_id);
     }
-    Log(api::EVENT_KIND_EMERGENCY_STOP, robot_id, "", absl::StrCat("emergency stop: ", request.reason()));
+    Log(api::EVENT_KIND_EMERGENCY_STOP, robot_id, "",
+        absl::StrCat("emergency stop: ", request.reason()));
   }
   for (const std::string& task_id : cancel_after_call) {
     Task& task = *tasks_.Find(task_id);

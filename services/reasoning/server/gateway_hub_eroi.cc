@@ -3,11 +3,10 @@
 // are dropped, motion never waits); answers update the semantic values, and region units that
 // collected theta descriptions are scored by the language model. Planning's EROI_UTILITY gets the
 // values with every exploration request (ContextFor).
-#include "services/reasoning/server/gateway_hub.h"
-
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
 #include "services/reasoning/server/camera_frame.h"
+#include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/request_checks.h"
 
@@ -15,7 +14,8 @@ namespace semnav::reasoning {
 
 using namespace hub_internal;
 
-absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, const api::CameraFrame& frame) {
+absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink,
+                                       const api::CameraFrame& frame) {
   if (absl::Status s = Validate(frame); !s.ok()) return s;
   absl::MutexLock lock(&mu_);
   std::string robot_id;
@@ -30,7 +30,8 @@ absl::Status GatewayHub::OnCameraFrame(StreamSink<api::ConnectResponse>* sink, c
   return HandleCameraFrame(robot_id, *robot, frame);
 }
 
-absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& robot, const api::CameraFrame& frame) {
+absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& robot,
+                                           const api::CameraFrame& frame) {
   if (backends_.model == nullptr || shut_down_) return absl::OkStatus();
   Task* task = tasks_.Find(robot.active_task);
   if (task == nullptr || task->eroi == nullptr || task->vision_busy ||
@@ -41,12 +42,13 @@ absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& r
   if (!decoded.ok()) return decoded.status();
   // Call economy: only a new view, not while backing off after a failure, within the budget.
   ModelCallPolicy& calls = task->calls;
-  if (!AllowModelCall(*task, calls.MayAskVision(NowFor(robot_id), decoded->position, decoded->orientation))) {
+  if (!AllowModelCall(
+          *task, calls.MayAskVision(NowFor(robot_id), decoded->position, decoded->orientation))) {
     return absl::OkStatus();
   }
   calls.OnAskedVision(decoded->position, decoded->orientation);
-  const EroiObservation observation =
-      task->eroi->Annotate(decoded->position, decoded->orientation, decoded->camera, decoded->image);
+  const EroiObservation observation = task->eroi->Annotate(decoded->position, decoded->orientation,
+                                                           decoded->camera, decoded->image);
   task->vision_busy = true;
   ++task->model_calls;
   ++model_calls_;
@@ -54,7 +56,9 @@ absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& r
   ModelCaller caller{robot_id, task_id};
   LanguageModel::AnswerDone done = AtSimulatedArrival<absl::StatusOr<std::string>>(
       caller, [this, task_id, prompt_tokens = EstimateTokens(observation.prompt, "", true)](
-                  absl::StatusOr<std::string> answer) { OnVisionAnswer(task_id, std::move(answer), prompt_tokens); });
+                  absl::StatusOr<std::string> answer) {
+        OnVisionAnswer(task_id, std::move(answer), prompt_tokens);
+      });
   backends_.model->Ask(caller, {observation.prompt, EncodePng(decoded->image)}, std::move(done));
   return absl::OkStatus();
 }
@@ -67,13 +71,16 @@ void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::
   Task& t = *task;
   t.vision_busy = false;
   if (!answer.ok()) {
-    t.calls.OnFailure(NowFor(t.robot_id));  // back off: the next frame does not ask again at once (the 636-call storm)
+    t.calls.OnFailure(NowFor(
+        t.robot_id));  // back off: the next frame does not ask again at once (the 636-call storm)
     LogDebug("eroi_vision_failed", {{"task", task_id}, {"message", answer.status().message()}});
     return;
   }
   t.calls.OnAnswer(prompt_tokens + EstimateTokens("", *answer, false));
   const EroiEvidence evidence = t.eroi->OnVlmAnswer(*answer);
-  LogDebug("eroi_vision_answer", {{"task", task_id}, {"codes", evidence.codes_used}, {"regions_due", evidence.due.size()}});
+  LogDebug(
+      "eroi_vision_answer",
+      {{"task", task_id}, {"codes", evidence.codes_used}, {"regions_due", evidence.due.size()}});
   for (const RegionDue& region : evidence.due) {
     if (!AllowModelCall(t, t.calls.MayAsk(NowFor(t.robot_id)))) break;
     t.calls.OnAsked();
@@ -98,9 +105,11 @@ void GatewayHub::OnRegionScore(const std::string& task_id, const RegionDue& regi
   } else {
     task->calls.OnFailure(NowFor(task->robot_id));
   }
-  const absl::Status applied = answer.ok() ? task->eroi->OnRegionAnswer(region, *answer) : answer.status();
+  const absl::Status applied =
+      answer.ok() ? task->eroi->OnRegionAnswer(region, *answer) : answer.status();
   if (!applied.ok()) {
-    LogDebug("eroi_region_score_unused", {{"task", task_id}, {"region", region.region}, {"message", applied.message()}});
+    LogDebug("eroi_region_score_unused",
+             {{"task", task_id}, {"region", region.region}, {"message", applied.message()}});
   }
 }
 

@@ -51,16 +51,19 @@ void GatewayHub::RestoreTask(const JournaledTask& saved, uint64_t next_number) {
   task.planner = PlannerFor(saved.task_id, saved.strategy);
   if (Ended(saved.progress.state)) {
     // History only: no embedding, no EROI search, no model.
-    task.executor = std::make_unique<TaskExecutor>(task.instruction, saved.subgoals, &resolver_, task.planner.get(),
-                                                   RobotRecord(task.robot_id).memory.get(), config_.executor);
+    task.executor = std::make_unique<TaskExecutor>(
+        task.instruction, saved.subgoals, &resolver_, task.planner.get(),
+        RobotRecord(task.robot_id).memory.get(), config_.executor);
     task.executor->Restore(saved.progress, saved.progress.reason);
     task.started = true;
     return;
   }
   InstallExecutor(task, saved.subgoals);
   // An operator's pause stays the operator's; any other unfinished task resumes by itself.
-  const bool operator_paused = saved.progress.state == TaskState::kPaused && saved.progress.phase != "dependency_unavailable";
-  task.executor->Restore(saved.progress, operator_paused ? saved.progress.reason : kRestartedReason);
+  const bool operator_paused = saved.progress.state == TaskState::kPaused &&
+                               saved.progress.phase != "dependency_unavailable";
+  task.executor->Restore(saved.progress,
+                         operator_paused ? saved.progress.reason : kRestartedReason);
   task.started = true;
   task.resume_on_state = !operator_paused;
   RobotRecord(task.robot_id).active_task = task.task_id;  // a robot has one unfinished task at most
@@ -68,10 +71,11 @@ void GatewayHub::RestoreTask(const JournaledTask& saved, uint64_t next_number) {
 
 void GatewayHub::RestoreFromJournal() {
   absl::MutexLock journal_lock(&journal_mu_);
-  absl::StatusOr<GatewayJournal> opened =
-      GatewayJournal::Open(config_.state_directory, static_cast<std::size_t>(config_.retained_events));
+  absl::StatusOr<GatewayJournal> opened = GatewayJournal::Open(
+      config_.state_directory, static_cast<std::size_t>(config_.retained_events));
   if (!opened.ok()) {
-    LogError("gateway_journal_unavailable", {{"directory", config_.state_directory}, {"error", opened.status().ToString()}});
+    LogError("gateway_journal_unavailable",
+             {{"directory", config_.state_directory}, {"error", opened.status().ToString()}});
     return;
   }
   journal_ = std::make_unique<GatewayJournal>(*std::move(opened));
@@ -81,7 +85,8 @@ void GatewayHub::RestoreFromJournal() {
     const std::string aside = absl::StrCat(journal_->state_path(), ".damaged");
     std::error_code error;
     std::filesystem::rename(journal_->state_path(), aside, error);
-    LogError("gateway_journal_damaged", {{"moved_to", aside}, {"error", recovered.status().ToString()}});
+    LogError("gateway_journal_damaged",
+             {{"moved_to", aside}, {"error", recovered.status().ToString()}});
     return;
   }
   absl::MutexLock lock(&mu_);
@@ -95,7 +100,8 @@ void GatewayHub::RestoreFromJournal() {
     if (!task.executor->finished()) {
       ++resumable;
       Log(api::EVENT_KIND_TASK_STATUS, task.robot_id, task.task_id,
-          absl::StrCat(api::TaskStatus_Name(Snapshot(task).status()), ": ", task.executor->progress().reason));
+          absl::StrCat(api::TaskStatus_Name(Snapshot(task).status()), ": ",
+                       task.executor->progress().reason));
     }
   }
   if (!recovered->state.tasks.empty() || !recovered->events.empty()) {
@@ -124,11 +130,13 @@ void GatewayHub::FlushJournal() {
     }
   }
   if (absl::Status s = journal_->AppendEvents(events); !s.ok()) {
-    LogError("gateway_journal_write_failed", {{"file", journal_->events_path()}, {"error", s.ToString()}});
+    LogError("gateway_journal_write_failed",
+             {{"file", journal_->events_path()}, {"error", s.ToString()}});
   }
   if (!state.has_value()) return;
   if (absl::Status s = journal_->SaveState(*state); !s.ok()) {
-    LogError("gateway_journal_write_failed", {{"file", journal_->state_path()}, {"error", s.ToString()}});
+    LogError("gateway_journal_write_failed",
+             {{"file", journal_->state_path()}, {"error", s.ToString()}});
     absl::MutexLock lock(&mu_);
     journal_dirty_ = true;  // try again next interval
   }

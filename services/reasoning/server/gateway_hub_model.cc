@@ -1,10 +1,9 @@
 // GatewayHub: the slow path over the model proxy (asynchronous: the robot keeps exploring while
 // the model thinks, seed 000 3.5), target text embeddings, and the exploration context.
-#include "services/reasoning/server/gateway_hub.h"
-
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
 #include "services/reasoning/core/selective_grounding.h"
+#include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
 
@@ -21,7 +20,9 @@ SlowDecision DecideSlow(const absl::StatusOr<std::string>& answer, const ModelRe
   SlowDecision decision;
   if (!answer.ok()) {
     decision.explanation = absl::StrCat("model call failed: ", answer.status().message());
-  } else if (absl::StatusOr<SlowDecision> parsed = ParseResolveAnswer(*answer, request.grounded, config); parsed.ok()) {
+  } else if (absl::StatusOr<SlowDecision> parsed =
+                 ParseResolveAnswer(*answer, request.grounded, config);
+             parsed.ok()) {
     decision = *std::move(parsed);
   } else {
     decision.explanation = absl::StrCat("model answer rejected: ", parsed.status().message());
@@ -47,13 +48,17 @@ void GatewayHub::DispatchModelRequest(Task& task) {
   if (!request.has_value()) return;
   // Call economy: a question already answered is answered from the task's cache; none is asked
   // while backing off or over budget (the executor keeps exploring and asks on a newer graph).
-  std::optional<absl::StatusOr<std::string>> settled = task.calls.CachedSlowAnswer(request->request.task_json);
-  if (const CallVerdict verdict = task.calls.MayAsk(NowFor(task.robot_id)); !settled.has_value() && !AllowModelCall(task, verdict)) {
-    settled = absl::ResourceExhaustedError(absl::StrCat("not asked (", CallVerdictName(verdict), ")"));
+  std::optional<absl::StatusOr<std::string>> settled =
+      task.calls.CachedSlowAnswer(request->request.task_json);
+  if (const CallVerdict verdict = task.calls.MayAsk(NowFor(task.robot_id));
+      !settled.has_value() && !AllowModelCall(task, verdict)) {
+    settled =
+        absl::ResourceExhaustedError(absl::StrCat("not asked (", CallVerdictName(verdict), ")"));
   }
   if (settled.has_value()) {
-    const std::vector<RobotCommand> commands = task.executor->OnSlowDecision(
-        NowFor(task.robot_id), request->graph_revision, DecideSlow(*settled, *request, config_.slow_path));
+    const std::vector<RobotCommand> commands =
+        task.executor->OnSlowDecision(NowFor(task.robot_id), request->graph_revision,
+                                      DecideSlow(*settled, *request, config_.slow_path));
     if (!commands.empty()) Apply(task, commands);
     return;
   }
@@ -71,8 +76,8 @@ void GatewayHub::DispatchModelRequest(Task& task) {
   backends_.model->MatchTarget(caller, shared->request, std::move(done));
 }
 
-void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, const ModelRequest& request,
-                               absl::StatusOr<std::string> answer) {
+void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation,
+                               const ModelRequest& request, absl::StatusOr<std::string> answer) {
   absl::MutexLock lock(&mu_);
   Task* task = tasks_.Find(task_id);
   if (task == nullptr) return;
@@ -80,21 +85,23 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation, 
   // An answer for the rule plan's executor after the model's plan replaced it is not for this one.
   if (shut_down_ || task->executor_generation != generation) return;
   if (answer.ok()) {
-    task->calls.OnAnswer(EstimateTokens(request.request.prose + request.request.task_json, *answer, false));
+    task->calls.OnAnswer(
+        EstimateTokens(request.request.prose + request.request.task_json, *answer, false));
     task->calls.StoreSlowAnswer(request.request.task_json, *answer);
   } else {
     task->calls.OnFailure(NowFor(task->robot_id));
   }
   const SlowDecision decision = DecideSlow(answer, request, config_.slow_path);
-  LogDebug("slow_path_answer", {{"task", task_id},
-                                {"action", decision.action == SlowAction::kGoal           ? "goal"
-                                           : decision.action == SlowAction::kVisionVerify ? "verify"
-                                                                                          : "explore"},
-                                {"object", decision.object_id},
-                                {"confidence", decision.confidence},
-                                {"explanation", decision.explanation}});
-  Apply(*task, task->executor->OnSlowDecision(NowFor(task->robot_id), request.graph_revision,
-                                                            decision));
+  LogDebug("slow_path_answer",
+           {{"task", task_id},
+            {"action", decision.action == SlowAction::kGoal           ? "goal"
+                       : decision.action == SlowAction::kVisionVerify ? "verify"
+                                                                      : "explore"},
+            {"object", decision.object_id},
+            {"confidence", decision.confidence},
+            {"explanation", decision.explanation}});
+  Apply(*task,
+        task->executor->OnSlowDecision(NowFor(task->robot_id), request.graph_revision, decision));
 }
 
 // Seed 000 3.5 / the issue: the model never blocks motion. The task starts on the rule subgoals
@@ -132,11 +139,14 @@ void GatewayHub::OnDecomposition(const std::string& task_id, const Decomposition
   const TaskState state = task.executor->progress().state;
   if (chosen.source == "model" && state != TaskState::kRunning) {
     chosen = rules;
-    chosen.rejection = absl::StrCat("the model's plan came when the task was ", std::string(TaskStateName(state)));
+    chosen.rejection =
+        absl::StrCat("the model's plan came when the task was ", std::string(TaskStateName(state)));
   }
-  LogDebug("decomposition", {{"task", task_id}, {"source", chosen.source}, {"rejection", chosen.rejection}});
+  LogDebug("decomposition",
+           {{"task", task_id}, {"source", chosen.source}, {"rejection", chosen.rejection}});
   if (chosen.source != "model") {
-    Log(api::EVENT_KIND_DECOMPOSITION, task.robot_id, task_id, absl::StrCat("rules kept: ", chosen.rejection));
+    Log(api::EVENT_KIND_DECOMPOSITION, task.robot_id, task_id,
+        absl::StrCat("rules kept: ", chosen.rejection));
     return;
   }
   Log(api::EVENT_KIND_DECOMPOSITION, task.robot_id, task_id,
@@ -159,10 +169,12 @@ void GatewayHub::RequestTextEmbedding(Task& task) {
       caller, [this, task_id](absl::StatusOr<std::vector<float>> embedding) {
         OnTextEmbedding(task_id, std::move(embedding));
       });
-  backends_.model->EmbedText(caller, target->text.empty() ? target->name : target->text, std::move(done));
+  backends_.model->EmbedText(caller, target->text.empty() ? target->name : target->text,
+                             std::move(done));
 }
 
-void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding) {
+void GatewayHub::OnTextEmbedding(const std::string& task_id,
+                                 absl::StatusOr<std::vector<float>> embedding) {
   absl::MutexLock lock(&mu_);
   Task* task = tasks_.Find(task_id);
   if (task == nullptr) return;
@@ -170,18 +182,21 @@ void GatewayHub::OnTextEmbedding(const std::string& task_id, absl::StatusOr<std:
   if (shut_down_) return;
   if (!embedding.ok()) {
     // The seed's fallback stays: the label match stands in for the embedding term.
-    LogDebug("text_embedding_unavailable", {{"task", task_id}, {"message", embedding.status().message()}});
+    LogDebug("text_embedding_unavailable",
+             {{"task", task_id}, {"message", embedding.status().message()}});
     return;
   }
   task->executor->SetTextEmbedding(*std::move(embedding));
   Apply(*task, GiveSceneGraph(*task, NowFor(task->robot_id)));
 }
 
-bool GatewayHub::WantsSlowPath(const api::ResolveTargetRequest& request, const api::ResolveTargetResponse& fast) const {
+bool GatewayHub::WantsSlowPath(const api::ResolveTargetRequest& request,
+                               const api::ResolveTargetResponse& fast) const {
   return request.allow_slow_path() && !fast.has_target() && backends_.model != nullptr;
 }
 
-void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request, api::ResolveTargetResponse fast,
+void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request,
+                             api::ResolveTargetResponse fast,
                              std::function<void(absl::StatusOr<api::ResolveTargetResponse>)> done) {
   absl::MutexLock lock(&mu_);
   if (shut_down_) {
@@ -191,7 +206,8 @@ void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request, api::Reso
   const TargetSpec target = FromProto(fast.understood());
   GroundingConfig grounding;
   grounding.max_objects = config_.executor.grounding_max_objects;
-  auto grounded = std::make_shared<const SceneGraph>(SelectiveGrounding(target, scene_graph_, matcher_, grounding).graph);
+  auto grounded = std::make_shared<const SceneGraph>(
+      SelectiveGrounding(target, scene_graph_, matcher_, grounding).graph);
   fast.set_grounded_objects(static_cast<int>(grounded->objects.size()));
   if (grounded->objects.empty()) {
     fast.set_explanation("slow path not run: the scene graph has nothing to ground the target on");
@@ -202,14 +218,17 @@ void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request, api::Reso
   const ResolveRequest call = BuildResolveRequest(request.text(), target, *grounded);
   backends_.model->MatchTarget(
       {request.robot_id(), ""}, call,
-      [this, grounded, fast = std::move(fast), done = std::move(done)](absl::StatusOr<std::string> answer) mutable {
+      [this, grounded, fast = std::move(fast),
+       done = std::move(done)](absl::StatusOr<std::string> answer) mutable {
         if (!answer.ok()) {
           done(answer.status());
           return;
         }
-        const absl::StatusOr<SlowDecision> decision = ParseResolveAnswer(*answer, *grounded, config_.slow_path);
+        const absl::StatusOr<SlowDecision> decision =
+            ParseResolveAnswer(*answer, *grounded, config_.slow_path);
         if (!decision.ok()) {
-          done(absl::Status(decision.status().code(), absl::StrCat("model answer: ", decision.status().message())));
+          done(absl::Status(decision.status().code(),
+                            absl::StrCat("model answer: ", decision.status().message())));
           return;
         }
         fast.set_explanation(decision->explanation);
@@ -233,8 +252,9 @@ ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {
   if (task == nullptr) return {};
   const TargetSpec* target = PrimaryTarget(task->executor->subgoals());
   const Robot& robot = RobotRecord(task->robot_id);
-  ExplorationContext context = BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, scene_graph_,
-                                                       matcher_, backends_.prior, robot.memory.get());
+  ExplorationContext context =
+      BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, scene_graph_, matcher_,
+                              backends_.prior, robot.memory.get());
   if (const EroiSearch* search = task->eroi.get(); search != nullptr) {
     context.eroi_values = search->PlanarValues();
     context.eroi_window_min = search->WindowMin();

@@ -24,10 +24,12 @@ class ScriptedModel : public LanguageModel {
     ResolveRequest request;
     AnswerDone done;
   };
-  void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override {
+  void MatchTarget(const ModelCaller& caller, const ResolveRequest& request,
+                   AnswerDone done) override {
     matches.push_back({caller, request, std::move(done)});
   }
-  void Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) override {
+  void Decompose(const ModelCaller& caller, const DecomposeRequest& request,
+                 AnswerDone done) override {
     decomposes.push_back({caller, request, std::move(done)});
   }
   void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) override {
@@ -74,7 +76,8 @@ class DecompositionEvents : public StreamSink<api::StreamEventsResponse> {
  public:
   void Send(const api::StreamEventsResponse& message) override {
     absl::MutexLock lock(&mu_);
-    if (message.event().kind() == api::EVENT_KIND_DECOMPOSITION) messages_.push_back(message.event().message());
+    if (message.event().kind() == api::EVENT_KIND_DECOMPOSITION)
+      messages_.push_back(message.event().message());
   }
   void Close(const grpc::Status&) override {}
   std::vector<std::string> messages() {
@@ -116,7 +119,8 @@ class GatewayHubModelTest : public ::testing::Test {
 
   RobotLocalPlanner planner_;
   ScriptedModel model_;
-  GatewayHub hub_{GatewayConfig{}, &ShippedLexicon(), &planner_, GatewayBackends{nullptr, &model_, nullptr}};
+  GatewayHub hub_{GatewayConfig{}, &ShippedLexicon(), &planner_,
+                  GatewayBackends{nullptr, &model_, nullptr}};
   RecordingSink session_;
 };
 
@@ -139,14 +143,16 @@ TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnswere
   const api::RobotState there = At(explore.navigate().goal().x(), explore.navigate().goal().y());
   ASSERT_TRUE(hub_.OnRobotState(&session_, there).ok());
   Reached(hub_, session_, explore);
-  EXPECT_TRUE(session_.Last().has_rotate()) << session_.Last().ShortDebugString();  // scan at the goal
+  EXPECT_TRUE(session_.Last().has_rotate())
+      << session_.Last().ShortDebugString();  // scan at the goal
 
   // The embedding backend is missing (offline default): the fast path keeps its fallback.
   std::thread([&] { model_.embeds[0](absl::UnavailableError("offline: UNIMPLEMENTED")); }).join();
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
 
   // The answer: cup 7 at 0.8 >= 0.6 -> goal by the slow path; the robot approaches it.
-  model_.Answer(0, R"({"best_id": "7", "confidence": 0.8, "ranking": [{"id": "7", "score": 0.8}]})");
+  model_.Answer(0,
+                R"({"best_id": "7", "confidence": 0.8, "ranking": [{"id": "7", "score": 0.8}]})");
   const api::TaskSnapshot task = *hub_.GetTask(task_id);
   ASSERT_TRUE(task.has_target());
   EXPECT_EQ(task.target().object_id(), 7);
@@ -163,7 +169,9 @@ TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnswere
 TEST_F(GatewayHubModelTest, OfflineAnswersAreWeighedLowerAndNotInGraphKeepsExploring) {
   const std::string task_id = SubmitFindRedCup();
   // Offline prior 0.7 x 0.75 = 0.525: below 0.6, not below 0.5 -> neither goal nor vision check.
-  model_.Answer(0, R"({"best_id": "7", "confidence": 0.7, "ranking": [{"id": "7", "score": 0.7}], "offline": true})");
+  model_.Answer(
+      0,
+      R"({"best_id": "7", "confidence": 0.7, "ranking": [{"id": "7", "score": 0.7}], "offline": true})");
   EXPECT_FALSE(hub_.GetTask(task_id)->has_target());
   EXPECT_EQ(hub_.GetTask(task_id)->phase(), "exploring");
 
@@ -172,7 +180,8 @@ TEST_F(GatewayHubModelTest, OfflineAnswersAreWeighedLowerAndNotInGraphKeepsExplo
   same.revision = 4;
   hub_.OnSceneGraph(same);
   ASSERT_EQ(model_.matches.size(), 1u);
-  // A newer scene graph that changes a candidate: the executor asks again; "not in the graph" -> keep exploring.
+  // A newer scene graph that changes a candidate: the executor asks again; "not in the graph" ->
+  // keep exploring.
   SceneGraph graph = CupScene();
   graph.revision = 5;
   graph.objects[0].attributes.push_back("ceramic");
@@ -203,7 +212,8 @@ TEST_F(GatewayHubModelTest, FailedOrMalformedAnswersKeepExploringAndSayWhy) {
   graph.objects[0].attributes.push_back("small");
   hub_.OnSceneGraph(graph);
   EXPECT_EQ(model_.matches.size(), 2u);
-  EXPECT_EQ(hub_.GetTask(task_id)->reason(), "model: keep exploring (model call failed: not asked (backing_off))");
+  EXPECT_EQ(hub_.GetTask(task_id)->reason(),
+            "model: keep exploring (model call failed: not asked (backing_off))");
 }
 
 constexpr char kComplex[] = "go to the kitchen and then find the red cup";
@@ -222,23 +232,25 @@ TEST_F(GatewayHubModelTest, ComplexInstructionStartsOnRulesAndAValidModelPlanRep
   const std::size_t commands_before = session_.messages().size();
   ASSERT_GT(commands_before, 0u);
   const int calls_before = rules.model_calls();
-  EXPECT_EQ(calls_before, static_cast<int>(model_.decomposes.size() + model_.matches.size() + model_.embeds.size()));
+  EXPECT_EQ(calls_before, static_cast<int>(model_.decomposes.size() + model_.matches.size() +
+                                           model_.embeds.size()));
 
-  model_.AnswerDecompose(0, R"({"subgoals": [{"type": "FIND", "target": "cup", "colours": ["red"]},)"
-                            R"( {"type": "APPROACH", "target": "cup", "distance_m": 0.5},)"
-                            R"( {"type": "VERIFY", "target": "cup"}]})");
+  model_.AnswerDecompose(0,
+                         R"({"subgoals": [{"type": "FIND", "target": "cup", "colours": ["red"]},)"
+                         R"( {"type": "APPROACH", "target": "cup", "distance_m": 0.5},)"
+                         R"( {"type": "VERIFY", "target": "cup"}]})");
   const api::TaskSnapshot model = *hub_.GetTask(task_id);
   EXPECT_EQ(model.decomposition_source(), "model");
   ASSERT_EQ(model.subgoals_size(), 3);
   EXPECT_EQ(model.subgoals(0).type(), api::SUBGOAL_TYPE_FIND);
   EXPECT_EQ(model.current_subgoal(), 0);
   EXPECT_GT(session_.messages().size(), commands_before);  // the new plan's first command went out
-  EXPECT_EQ(events.messages(),
-            std::vector<std::string>{"model subgoals used: FIND(red cup) APPROACH(cup) VERIFY(cup)"});
+  EXPECT_EQ(events.messages(), std::vector<std::string>{
+                                   "model subgoals used: FIND(red cup) APPROACH(cup) VERIFY(cup)"});
   // The new plan asks for its own target's embedding (and the slow path for the red cup).
   EXPECT_GT(model.model_calls(), calls_before);
-  EXPECT_EQ(model.model_calls(),
-            static_cast<int>(model_.decomposes.size() + model_.matches.size() + model_.embeds.size()));
+  EXPECT_EQ(model.model_calls(), static_cast<int>(model_.decomposes.size() + model_.matches.size() +
+                                                  model_.embeds.size()));
 }
 
 TEST_F(GatewayHubModelTest, RejectedOrFailedModelPlansKeepTheRulesAndSayWhy) {
@@ -251,10 +263,13 @@ TEST_F(GatewayHubModelTest, RejectedOrFailedModelPlansKeepTheRulesAndSayWhy) {
        "rules kept: model answer rejected: subgoals[0].type: unknown subgoal type 'TELEPORT'"},
       {R"({"subgoals": [{"type": "NAVIGATE", "target": "kitchen"}, {"type": "FIND"}]})",
        "rules kept: model answer rejected: subgoals[1].target: FIND needs a target"},
-      {R"(subgoals: FIND cup)", "rules kept: model answer rejected: subgoals: answer is not valid JSON"},
+      {R"(subgoals: FIND cup)",
+       "rules kept: model answer rejected: subgoals: answer is not valid JSON"},
       // What the proxy's offline backend answers: it has no decompose task.
-      {absl::InvalidArgumentError("model_alias 'default': offline: INVALID_ARGUMENT: target must be a non-empty string"),
-       "rules kept: model call failed: model_alias 'default': offline: INVALID_ARGUMENT: target must be a "
+      {absl::InvalidArgumentError(
+           "model_alias 'default': offline: INVALID_ARGUMENT: target must be a non-empty string"),
+       "rules kept: model call failed: model_alias 'default': offline: INVALID_ARGUMENT: target "
+       "must be a "
        "non-empty string"},
   };
   for (std::size_t i = 0; i < std::size(cases); ++i) {
@@ -289,7 +304,8 @@ TEST_F(GatewayHubModelTest, AValidModelPlanForAPausedTaskKeepsTheRules) {
   EXPECT_EQ(task.status(), api::TASK_STATUS_PAUSED);
   EXPECT_EQ(task.decomposition_source(), "rules");
   EXPECT_EQ(task.subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);
-  EXPECT_EQ(events.messages(), std::vector<std::string>{"rules kept: the model's plan came when the task was PAUSED"});
+  EXPECT_EQ(events.messages(),
+            std::vector<std::string>{"rules kept: the model's plan came when the task was PAUSED"});
 }
 
 TEST_F(GatewayHubModelTest, ResolveTargetRunsTheSlowPathWithoutBlockingAndReportsTheGrounding) {
@@ -303,10 +319,13 @@ TEST_F(GatewayHubModelTest, ResolveTargetRunsTheSlowPathWithoutBlockingAndReport
   EXPECT_NEAR(fast->best_candidate().score().fused(), 0.485, 1e-9);
   ASSERT_TRUE(hub_.WantsSlowPath(request, *fast));
   std::optional<absl::StatusOr<api::ResolveTargetResponse>> result;
-  hub_.ResolveSlow(request, *fast, [&](absl::StatusOr<api::ResolveTargetResponse> r) { result = std::move(r); });
+  hub_.ResolveSlow(request, *fast,
+                   [&](absl::StatusOr<api::ResolveTargetResponse> r) { result = std::move(r); });
   EXPECT_FALSE(result.has_value());  // returned before the model answered
   ASSERT_EQ(model_.matches.size(), 1u);
-  model_.Answer(0, R"({"best_id": "7", "confidence": 0.9, "ranking": [{"id": "7", "score": 0.9, "reason": "a cup"}]})");
+  model_.Answer(
+      0,
+      R"({"best_id": "7", "confidence": 0.9, "ranking": [{"id": "7", "score": 0.9, "reason": "a cup"}]})");
   ASSERT_TRUE(result.has_value() && result->ok());
   const api::ResolveTargetResponse& slow = **result;
   EXPECT_EQ(slow.grounded_objects(), 1);
@@ -333,7 +352,8 @@ TEST_F(GatewayHubModelTest, ShutdownStopsTheModelAndLateAnswersAreIgnored) {
 // Records the context of every exploration request; planning has no goal to offer.
 class RecordingExplorer : public ExplorationService {
  public:
-  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery&, std::optional<ExplorationStrategy> strategy,
+  absl::StatusOr<Eigen::Vector3d> SelectGoal(const ExplorationQuery&,
+                                             std::optional<ExplorationStrategy> strategy,
                                              const ExplorationContext& context) override {
     strategies.push_back(strategy);
     contexts.push_back(context);
@@ -351,7 +371,8 @@ void OpenUavSession(GatewayHub& hub, RecordingSink* session) {
   EXPECT_TRUE(hub.OnRobotState(session, At(0, 0)).ok());
 }
 
-api::SubmitInstructionRequest UavSearch(const std::string& request_id, const std::string& instruction) {
+api::SubmitInstructionRequest UavSearch(const std::string& request_id,
+                                        const std::string& instruction) {
   api::SubmitInstructionRequest request;
   request.set_request_id(request_id);
   request.set_robot_id("uav");
@@ -430,7 +451,8 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   EXPECT_EQ(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_MONO8)).message(),
             "camera.image.encoding: must be PNG, JPEG or RGB8");
   ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
-  ASSERT_TRUE(hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());  // busy: dropped
+  ASSERT_TRUE(
+      hub.OnCameraFrame(&session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());  // busy: dropped
   ASSERT_EQ(model.asks.size(), 1u);
   EXPECT_FALSE(model.asks[0].question.png.empty());
   EXPECT_NE(model.asks[0].question.prompt.find("[red backpack]"), std::string::npos);
@@ -445,12 +467,13 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   ASSERT_EQ(model.asks.size(), 4u);
   EXPECT_TRUE(model.asks[3].question.png.empty());  // the language model scores the region
   model.Reply(3, "5");
-  EXPECT_EQ(hub.GetTask(submitted->task_id())->model_calls(), 5);  // 3 frames, 1 region, 1 embedding
+  EXPECT_EQ(hub.GetTask(submitted->task_id())->model_calls(),
+            5);  // 3 frames, 1 region, 1 embedding
 
   // The next exploration request carries the values: (2, 1) got C2A twice (0.392) then the
   // region score 5 over k = 4 (eq. 22): 0.392 + 0.608 * 5 / 20 = 0.544.
   const api::RobotCommand explore = session.Last();
-  Reached(hub, session, explore);  // -> scan
+  Reached(hub, session, explore);         // -> scan
   Reached(hub, session, session.Last());  // -> next exploration goal
   ASSERT_EQ(explorer.contexts.size(), 2u);
   EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
@@ -472,14 +495,19 @@ TEST(GatewayHubEroiTest, FailingVisionCallsBackOffInsteadOfAskingOnEveryFrame) {
   ASSERT_TRUE(fixture.hub.Submit(request).ok());
   const absl::Time start = absl::Now();
   for (int i = 0; i < 300; ++i) {
-    ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.1 * i)).ok());
+    ASSERT_TRUE(
+        fixture.hub
+            .OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.1 * i))
+            .ok());
     if (fixture.model.asks.size() > static_cast<size_t>(i) || i == 0) {
       const size_t last = fixture.model.asks.size() - 1;
-      if (fixture.model.asks[last].done) fixture.model.Reply(last, absl::UnavailableError("no vision backend"));
+      if (fixture.model.asks[last].done)
+        fixture.model.Reply(last, absl::UnavailableError("no vision backend"));
       fixture.model.asks[last].done = nullptr;
     }
   }
-  ASSERT_LT(absl::Now() - start, absl::Seconds(1)) << "the machine is too slow for this test's timing";
+  ASSERT_LT(absl::Now() - start, absl::Seconds(1))
+      << "the machine is too slow for this test's timing";
   EXPECT_EQ(fixture.model.asks.size(), 1u);
 }
 
@@ -495,14 +523,19 @@ TEST(GatewayHubEroiTest, OnlyANewViewIsAskedAbout) {
   area->set_max_y(10.0);
   ASSERT_TRUE(fixture.hub.Submit(request).ok());
   for (int i = 0; i < 20; ++i) {
-    ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.05 * i)).ok());
+    ASSERT_TRUE(
+        fixture.hub
+            .OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.05 * i))
+            .ok());
     if (fixture.model.asks.back().done) {
       fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
       fixture.model.asks.back().done = nullptr;
     }
   }
   EXPECT_EQ(fixture.model.asks.size(), 1u);  // 0.95 m moved, not turned: the same view
-  ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 2.0)).ok());
+  ASSERT_TRUE(
+      fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 2.0))
+          .ok());
   EXPECT_EQ(fixture.model.asks.size(), 2u);  // 2 m from the asked frame: a new view
 }
 
@@ -521,7 +554,10 @@ TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
   absl::StatusOr<api::SubmitInstructionResponse> submitted = fixture.hub.Submit(request);
   ASSERT_TRUE(submitted.ok());
   for (int i = 0; i < 10; ++i) {
-    ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 3.0 * i)).ok());
+    ASSERT_TRUE(
+        fixture.hub
+            .OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 3.0 * i))
+            .ok());
     if (fixture.model.asks.back().done) {
       fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
       fixture.model.asks.back().done = nullptr;
@@ -529,9 +565,11 @@ TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
   }
   EXPECT_EQ(fixture.model.asks.size(), 3u);
   int budget_events = 0;
-  const absl::StatusOr<api::ListEventsResponse> events = fixture.hub.ListEvents(api::ListEventsRequest());
+  const absl::StatusOr<api::ListEventsResponse> events =
+      fixture.hub.ListEvents(api::ListEventsRequest());
   ASSERT_TRUE(events.ok()) << events.status();
-  for (const api::Event& event : events->events()) budget_events += event.kind() == api::EVENT_KIND_MODEL_BUDGET;
+  for (const api::Event& event : events->events())
+    budget_events += event.kind() == api::EVENT_KIND_MODEL_BUDGET;
   EXPECT_EQ(budget_events, 1);
   EXPECT_EQ(fixture.hub.GetTask(submitted->task_id())->status(), api::TASK_STATUS_RUNNING);
 }
@@ -553,7 +591,8 @@ TEST(GatewayHubEroiTest, SearchAreaIsTheVolumeWhenNoneIsConfigured) {
   ASSERT_EQ(explorer.contexts[0].eroi_values.size(), 20u);  // 5 x 4 centres cover 10 x 8 m
   EXPECT_TRUE(explorer.contexts[0].eroi_window_min.isApprox(Eigen::Vector2d(-6, 0)));
   EXPECT_DOUBLE_EQ(explorer.contexts[0].eroi_edge_m, 2.0);
-  ASSERT_TRUE(fixture.hub.OnCameraFrame(&fixture.session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  ASSERT_TRUE(
+      fixture.hub.OnCameraFrame(&fixture.session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
   EXPECT_EQ(fixture.model.asks.size(), 1u);  // the frame went to the vision model
 }
 
@@ -572,7 +611,8 @@ TEST(GatewayHubSearchAreaTest, SearchAreaReachesPlanning) {
   area->set_min_y(-3.0);
   area->set_max_x(-2.0);  // empty
   area->set_max_y(40.0);
-  EXPECT_EQ(hub.Submit(request).status().message(), "search_area: min_x must be < max_x and min_y < max_y");
+  EXPECT_EQ(hub.Submit(request).status().message(),
+            "search_area: min_x must be < max_x and min_y < max_y");
   area->set_max_x(std::nan(""));
   EXPECT_EQ(hub.Submit(request).status().message(), "search_area.max_x: must be a finite number");
   area->set_max_x(1e6);  // beyond kMaxCoordinateM

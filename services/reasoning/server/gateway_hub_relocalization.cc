@@ -19,9 +19,12 @@ namespace {
 
 LocalizationReport ReportOf(api::LocalizationStatus status) {
   switch (status) {
-    case api::LOCALIZATION_STATUS_LOST: return LocalizationReport::kLost;
-    case api::LOCALIZATION_STATUS_UNCERTAIN: return LocalizationReport::kUncertain;
-    default: return LocalizationReport::kOk;  // UNSPECIFIED (robots without the field) = OK
+    case api::LOCALIZATION_STATUS_LOST:
+      return LocalizationReport::kLost;
+    case api::LOCALIZATION_STATUS_UNCERTAIN:
+      return LocalizationReport::kUncertain;
+    default:
+      return LocalizationReport::kOk;  // UNSPECIFIED (robots without the field) = OK
   }
 }
 
@@ -30,12 +33,14 @@ bool IsIdentity(const PlanarTransform& t) { return t.translation.isZero(0.0) && 
 }  // namespace
 
 bool GatewayHub::PoseTrusted(const Robot& robot) const {
-  return robot.localization == nullptr || (!robot.localization->relocalizing() && robot.localization->trusted());
+  return robot.localization == nullptr ||
+         (!robot.localization->relocalizing() && robot.localization->trusted());
 }
 
 bool GatewayHub::MayCommand(const Robot& robot, const RobotCommand& command) const {
   // Stops and holds are always safe; motion waits for a trusted pose.
-  return PoseTrusted(robot) || command.kind == CommandKind::kStop || command.kind == CommandKind::kHold;
+  return PoseTrusted(robot) || command.kind == CommandKind::kStop ||
+         command.kind == CommandKind::kHold;
 }
 
 RobotCommand GatewayHub::InRobotFrame(const Robot& robot, const RobotCommand& command) const {
@@ -57,7 +62,8 @@ void GatewayHub::OnLocalizationSession(Robot& robot) {
     robot.localization_paused_task.clear();
   }
   robot.localization->OnSessionOpened();
-  robot.localization->SetLimits(robot.capabilities.max_linear_speed_mps(), robot.capabilities.max_angular_speed_rps());
+  robot.localization->SetLimits(robot.capabilities.max_linear_speed_mps(),
+                                robot.capabilities.max_angular_speed_rps());
   if (!IsIdentity(robot.localization->map_from_odom())) SendLocalizationUpdate(robot);
 }
 
@@ -82,13 +88,14 @@ void GatewayHub::SendLocalizationUpdate(Robot& robot) {
   if (robot.session == nullptr || robot.localization == nullptr) return;
   api::ConnectResponse update;
   const PlanarTransform& correction = robot.localization->map_from_odom();
-  *update.mutable_localization()->mutable_map_from_odom() = ToProtoPose(RobotPose{correction.translation, correction.yaw});
+  *update.mutable_localization()->mutable_map_from_odom() =
+      ToProtoPose(RobotPose{correction.translation, correction.yaw});
   update.mutable_localization()->set_relocalizing(robot.localization->relocalizing());
   robot.session->Send(update);
 }
 
-bool GatewayHub::TrackLocalization(const std::string& robot_id, Robot& robot, const api::RobotState& state,
-                                   const RobotPose& odom_pose) {
+bool GatewayHub::TrackLocalization(const std::string& robot_id, Robot& robot,
+                                   const api::RobotState& state, const RobotPose& odom_pose) {
   if (backends_.relocalizer == nullptr) {
     robot.pose = odom_pose;
     return true;
@@ -102,7 +109,8 @@ bool GatewayHub::TrackLocalization(const std::string& robot_id, Robot& robot, co
       NowFor(robot_id), odom_pose, ReportOf(state.localization()), scene_graph_, task_running);
   robot.pose = robot.localization->map_from_odom().Apply(odom_pose);
   RunLocalizationActions(robot_id, robot, std::move(actions));
-  robot.pose = robot.localization->map_from_odom().Apply(odom_pose);  // a correction applies at once
+  robot.pose =
+      robot.localization->map_from_odom().Apply(odom_pose);  // a correction applies at once
   if (was_relocalizing != robot.localization->relocalizing()) SendLocalizationUpdate(robot);
   return PoseTrusted(robot);
 }
@@ -126,7 +134,8 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
         if (robot.session == nullptr) break;
         api::ConnectResponse response;
         robot.last_session_command = robot.next_command_id++;
-        robot.last_executor_command = action.command.id;  // not the executor's: its feedback is ignored there
+        robot.last_executor_command =
+            action.command.id;  // not the executor's: its feedback is ignored there
         *response.mutable_command() = ToProto(action.command, robot.last_session_command, task_id);
         robot.last_command = response.command();
         robot.session->Send(response);
@@ -143,22 +152,26 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
           // Held like a model answer (AtSimulatedArrival): the step waits for the call and applies
           // the answer at issue time + the configured latency, so episodes replay exactly.
           ++robot.model_calls_in_flight;
-          handler = [this, robot_id, due = robot.sim_now_s + config_.relocalization.simulated_latency_s,
+          handler = [this, robot_id,
+                     due = robot.sim_now_s + config_.relocalization.simulated_latency_s,
                      order = next_model_call_++](absl::StatusOr<RelocalizationAnswer> answer) {
             absl::MutexLock lock(&mu_);
             Robot& arrived = RobotRecord(robot_id);
             --arrived.model_calls_in_flight;
-            arrived.held_answers.push_back({due, order, [this, robot_id, answer = std::move(answer)]() mutable {
-                                              OnRelocalizationAnswer(robot_id, std::move(answer));
-                                            }});
+            arrived.held_answers.push_back(
+                {due, order, [this, robot_id, answer = std::move(answer)]() mutable {
+                   OnRelocalizationAnswer(robot_id, std::move(answer));
+                 }});
           };
         }
         std::string observed;  // for the log: what the turn saw, in the robot's odometry frame
         for (const ObservedObject& o : action.observed) {
-          absl::StrAppend(&observed, o.object_id, "@(", absl::StrFormat("%.2f,%.2f", o.position.x(), o.position.y()),
-                          ") s", absl::StrFormat("%.2f", o.scale_m), " n", o.observations, "; ");
+          absl::StrAppend(&observed, o.object_id, "@(",
+                          absl::StrFormat("%.2f,%.2f", o.position.x(), o.position.y()), ") s",
+                          absl::StrFormat("%.2f", o.scale_m), " n", o.observations, "; ");
         }
-        LogWarning("relocalization_request", {{"robot", robot_id}, {"map_id", map_id}, {"observed", observed}});
+        LogWarning("relocalization_request",
+                   {{"robot", robot_id}, {"map_id", map_id}, {"observed", observed}});
         backends_.relocalizer->Relocalize(map_id, action.observed, std::move(handler));
         break;
       }
@@ -167,8 +180,10 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
         break;
       case Kind::kResumeTask:
         if (active != nullptr && robot.localization_paused_task == active->task_id &&
-            active->executor->progress().state == TaskState::kPaused && !active->paused_by_session) {
-          Apply(*active, active->executor->OnPose(NowFor(robot_id), robot.pose));  // paused: only takes the pose
+            active->executor->progress().state == TaskState::kPaused &&
+            !active->paused_by_session) {
+          Apply(*active, active->executor->OnPose(NowFor(robot_id),
+                                                  robot.pose));  // paused: only takes the pose
           Apply(*active, active->executor->Resume(NowFor(robot_id)));
         }
         robot.localization_paused_task.clear();
@@ -182,22 +197,27 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
   }
 }
 
-void GatewayHub::OnRelocalizationAnswer(const std::string& robot_id, absl::StatusOr<RelocalizationAnswer> answer) {
+void GatewayHub::OnRelocalizationAnswer(const std::string& robot_id,
+                                        absl::StatusOr<RelocalizationAnswer> answer) {
   absl::MutexLock lock(&mu_);
   if (shut_down_) return;
   auto found = robots_.find(robot_id);
   if (found == robots_.end() || found->second.localization == nullptr) return;
   Robot& robot = found->second;
   const bool was_relocalizing = robot.localization->relocalizing();
-  std::vector<RelocalizationAction> actions = robot.localization->OnAnswer(NowFor(robot_id), answer);
+  std::vector<RelocalizationAction> actions =
+      robot.localization->OnAnswer(NowFor(robot_id), answer);
   const bool acted = !actions.empty();
   const RobotPose odom_pose = FromProto(robot.last_state);
-  robot.pose = robot.localization->map_from_odom().Apply(odom_pose);  // before the task resumes on it
+  robot.pose =
+      robot.localization->map_from_odom().Apply(odom_pose);  // before the task resumes on it
   RunLocalizationActions(robot_id, robot, std::move(actions));
-  if (was_relocalizing != robot.localization->relocalizing() || acted) SendLocalizationUpdate(robot);
+  if (was_relocalizing != robot.localization->relocalizing() || acted)
+    SendLocalizationUpdate(robot);
 }
 
-absl::StatusOr<api::RelocalizeRobotResponse> GatewayHub::RelocalizeRobot(const api::RelocalizeRobotRequest& request) {
+absl::StatusOr<api::RelocalizeRobotResponse> GatewayHub::RelocalizeRobot(
+    const api::RelocalizeRobotRequest& request) {
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.request_id(), "request_id"); !s.ok()) return s;
@@ -216,13 +236,14 @@ absl::StatusOr<api::RelocalizeRobotResponse> GatewayHub::RelocalizeRobot(const a
                       "RELOCALIZATION_UNAVAILABLE");
   }
   if (robot.session == nullptr) {
-    return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", "the robot's session is down",
-                      "RELOCALIZATION_UNAVAILABLE");
+    return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id",
+                      "the robot's session is down", "RELOCALIZATION_UNAVAILABLE");
   }
   if (robot.localization == nullptr) OnLocalizationSession(robot);
   const bool was_relocalizing = robot.localization->relocalizing();
-  RunLocalizationActions(request.robot_id(), robot,
-                         robot.localization->OnRequest(NowFor(request.robot_id()), request.reason(), scene_graph_));
+  RunLocalizationActions(
+      request.robot_id(), robot,
+      robot.localization->OnRequest(NowFor(request.robot_id()), request.reason(), scene_graph_));
   if (was_relocalizing != robot.localization->relocalizing()) SendLocalizationUpdate(robot);
   api::RelocalizeRobotResponse response;
   *response.mutable_localization() = LocalizationOf(robot);

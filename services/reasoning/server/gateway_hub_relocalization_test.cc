@@ -71,7 +71,8 @@ std::vector<api::ConnectResponse> Since(RecordingSink& sink, std::size_t from) {
 }
 
 template <typename Match>
-std::optional<api::ConnectResponse> Find(const std::vector<api::ConnectResponse>& messages, Match match) {
+std::optional<api::ConnectResponse> Find(const std::vector<api::ConnectResponse>& messages,
+                                         Match match) {
   for (const api::ConnectResponse& m : messages) {
     if (match(m)) return m;
   }
@@ -119,14 +120,18 @@ class HubRelocalizationTest : public ::testing::Test {
 
 TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResumedInItsOwnFrame) {
   std::size_t mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 14.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(
+      hub_->OnRobotState(&session_, StepState(12, 0, 14.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
   std::vector<api::ConnectResponse> step = Since(session_, mark);
-  std::optional<api::ConnectResponse> rotate =
-      Find(step, [](const api::ConnectResponse& m) { return m.has_command() && m.command().has_rotate(); });
+  std::optional<api::ConnectResponse> rotate = Find(step, [](const api::ConnectResponse& m) {
+    return m.has_command() && m.command().has_rotate();
+  });
   ASSERT_TRUE(rotate.has_value());
   EXPECT_DOUBLE_EQ(rotate->command().rotate().angular_speed_rps(), 0.5);
-  EXPECT_TRUE(absl::StartsWith(rotate->command().reason(), "relocalizing")) << rotate->command().reason();
-  std::optional<api::ConnectResponse> update = Find(step, [](const api::ConnectResponse& m) { return m.has_localization(); });
+  EXPECT_TRUE(absl::StartsWith(rotate->command().reason(), "relocalizing"))
+      << rotate->command().reason();
+  std::optional<api::ConnectResponse> update =
+      Find(step, [](const api::ConnectResponse& m) { return m.has_localization(); });
   ASSERT_TRUE(update.has_value());
   EXPECT_TRUE(update->localization().relocalizing());
   EXPECT_EQ(hub_->GetTask(task_id_)->status(), api::TASK_STATUS_PAUSED);
@@ -139,10 +144,13 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
   seen.objects.push_back(Landmark(13, "lamp", 10, 2));
   hub_->OnSceneGraph(seen);
   mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 20.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(
+      hub_->OnRobotState(&session_, StepState(12, 0, 20.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
   EXPECT_TRUE(relocalizer_.calls.empty());  // still turning
-  for (const api::ConnectResponse& m : Since(session_, mark)) EXPECT_FALSE(m.command().has_navigate());
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 26.0, 6, api::LOCALIZATION_STATUS_LOST)).ok());
+  for (const api::ConnectResponse& m : Since(session_, mark))
+    EXPECT_FALSE(m.command().has_navigate());
+  ASSERT_TRUE(
+      hub_->OnRobotState(&session_, StepState(12, 0, 26.0, 6, api::LOCALIZATION_STATUS_LOST)).ok());
   ASSERT_EQ(relocalizer_.calls.size(), 1u);
   EXPECT_EQ(relocalizer_.map_ids[0], "r1");  // the robot's own map by default
   ASSERT_EQ(relocalizer_.calls[0].size(), 3u);
@@ -157,10 +165,13 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
   relocalizer_.Answer(answer);
   // Held until its simulated arrival (26 + 0.5 s).
   mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 26.2, 7, api::LOCALIZATION_STATUS_LOST)).ok());
-  EXPECT_FALSE(Find(Since(session_, mark), [](const api::ConnectResponse& m) { return m.has_localization(); }));
+  ASSERT_TRUE(
+      hub_->OnRobotState(&session_, StepState(12, 0, 26.2, 7, api::LOCALIZATION_STATUS_LOST)).ok());
+  EXPECT_FALSE(Find(Since(session_, mark),
+                    [](const api::ConnectResponse& m) { return m.has_localization(); }));
   mark = session_.messages().size();
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 26.5, 8, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(
+      hub_->OnRobotState(&session_, StepState(12, 0, 26.5, 8, api::LOCALIZATION_STATUS_LOST)).ok());
   step = Since(session_, mark);
   update = Find(step, [](const api::ConnectResponse& m) { return m.has_localization(); });
   ASSERT_TRUE(update.has_value());
@@ -168,8 +179,9 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
   EXPECT_NEAR(update->localization().map_from_odom().position().x(), -2.0, 1e-12);
   EXPECT_EQ(hub_->GetTask(task_id_)->status(), api::TASK_STATUS_RUNNING);
   // The same goal in the map is 2 m further along +x in the robot's odometry frame.
-  std::optional<api::ConnectResponse> navigate =
-      Find(step, [](const api::ConnectResponse& m) { return m.has_command() && m.command().has_navigate(); });
+  std::optional<api::ConnectResponse> navigate = Find(step, [](const api::ConnectResponse& m) {
+    return m.has_command() && m.command().has_navigate();
+  });
   ASSERT_TRUE(navigate.has_value());
   EXPECT_NEAR(navigate->command().navigate().goal().x(), first_goal_.x() + 2.0, 1e-9);
   EXPECT_NEAR(navigate->command().navigate().goal().y(), first_goal_.y(), 1e-9);
@@ -189,13 +201,15 @@ TEST_F(HubRelocalizationTest, LostRobotIsPausedTurnedRelocalizedCorrectedAndResu
 }
 
 TEST_F(HubRelocalizationTest, AnOperatorResumeDuringTheTurnMovesNothing) {
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 14.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(
+      hub_->OnRobotState(&session_, StepState(12, 0, 14.0, 4, api::LOCALIZATION_STATUS_LOST)).ok());
   const std::size_t mark = session_.messages().size();
   api::ResumeTaskRequest resume;
   resume.set_request_id("resume");
   resume.set_task_id(task_id_);
   ASSERT_TRUE(hub_->Resume(resume).ok());
-  ASSERT_TRUE(hub_->OnRobotState(&session_, StepState(12, 0, 15.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
+  ASSERT_TRUE(
+      hub_->OnRobotState(&session_, StepState(12, 0, 15.0, 5, api::LOCALIZATION_STATUS_LOST)).ok());
   for (const api::ConnectResponse& m : Since(session_, mark)) {
     EXPECT_FALSE(m.command().has_navigate()) << m.ShortDebugString();
   }

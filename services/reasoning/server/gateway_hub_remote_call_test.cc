@@ -2,12 +2,12 @@
 // robot's path delays neither another robot's command nor an operator's GetTask. Real gRPC on
 // loopback on both sides: planning is an in-process PlanningService, operators call the
 // gateway's OperatorService; the robot sessions are recording sinks on the hub.
+#include <grpcpp/grpcpp.h>
+
 #include <atomic>
 #include <chrono>
 #include <memory>
 #include <thread>
-
-#include <grpcpp/grpcpp.h>
 
 #include "absl/synchronization/mutex.h"
 #include "absl/synchronization/notification.h"
@@ -55,8 +55,10 @@ std::unique_ptr<grpc::Server> Serve(grpc::Service* service, int* port) {
 }
 
 std::shared_ptr<grpc::Channel> Connect(int port) {
-  auto channel = grpc::CreateChannel("127.0.0.1:" + std::to_string(port), grpc::InsecureChannelCredentials());
-  EXPECT_TRUE(channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(5)));
+  auto channel =
+      grpc::CreateChannel("127.0.0.1:" + std::to_string(port), grpc::InsecureChannelCredentials());
+  EXPECT_TRUE(
+      channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(5)));
   return channel;
 }
 
@@ -86,7 +88,8 @@ TEST(GatewayHubRemoteCallTest, SlowPlanningForOneRobotDelaysNeitherAnotherRobotN
 
   RecordingSink slow_session;  // its path takes kStall
   RecordingSink quick_session;
-  for (auto [robot_id, session, x] : {std::tuple{"slow", &slow_session, -4.0}, {"quick", &quick_session, 6.0}}) {
+  for (auto [robot_id, session, x] :
+       {std::tuple{"slow", &slow_session, -4.0}, {"quick", &quick_session, 6.0}}) {
     api::SessionHello hello;
     hello.set_robot_id(robot_id);
     ASSERT_TRUE(hub->OpenSession(hello, session).ok());
@@ -107,7 +110,8 @@ TEST(GatewayHubRemoteCallTest, SlowPlanningForOneRobotDelaysNeitherAnotherRobotN
   {
     grpc::ClientContext context;
     api::SubmitInstructionResponse response;
-    const grpc::Status status = operators->SubmitInstruction(&context, FindTheSofa("quick"), &response);
+    const grpc::Status status =
+        operators->SubmitInstruction(&context, FindTheSofa("quick"), &response);
     ASSERT_TRUE(status.ok()) << status.error_message();
   }
   EXPECT_LT(Clock::now() - submitted, kPrompt);
@@ -131,7 +135,8 @@ TEST(GatewayHubRemoteCallTest, SlowPlanningForOneRobotDelaysNeitherAnotherRobotN
     EXPECT_LT(Clock::now() - asked, kPrompt) << task_id;
     EXPECT_EQ(response.task().robot_id(), task_id == std::string("task-1") ? "slow" : "quick");
   }
-  EXPECT_FALSE(planning.stall_ended) << "the checks above ran after the stall: the test measured nothing";
+  EXPECT_FALSE(planning.stall_ended)
+      << "the checks above ran after the stall: the test measured nothing";
 
   slow_submit.join();
   ASSERT_TRUE(slow_status.ok()) << slow_status.error_message();
@@ -154,7 +159,8 @@ TEST(GatewayHubRemoteCallTest, EmergencyStopDuringAPlanningCallIsSentAtOnceAndTh
   PlanningSettings settings;
   settings.deadline_ms = 10000;
   PlanningClient planner(Connect(planning_port), settings);
-  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner, GatewayBackends{&planner, nullptr, nullptr});
+  GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner,
+                 GatewayBackends{&planner, nullptr, nullptr});
   hub.OnSceneGraph(SofaScene());
   RecordingSink session;
   api::SessionHello hello;
@@ -187,8 +193,8 @@ TEST(GatewayHubRemoteCallTest, EmergencyStopDuringAPlanningCallIsSentAtOnceAndTh
   EXPECT_EQ(stopped->stopped_robot_ids_size(), 1);
   ASSERT_EQ(stopped->cancelled_task_ids_size(), 1);  // cancelled once its planning call ended
   EXPECT_EQ(stopped->cancelled_task_ids(0), "task-1");
-  EXPECT_TRUE(session.Last().stop().emergency()) << "the stalled plan reached a stopped robot: "
-                                                 << session.Last().ShortDebugString();
+  EXPECT_TRUE(session.Last().stop().emergency())
+      << "the stalled plan reached a stopped robot: " << session.Last().ShortDebugString();
   absl::StatusOr<api::TaskSnapshot> task = hub.GetTask("task-1");
   ASSERT_TRUE(task.ok());
   EXPECT_EQ(task->status(), api::TASK_STATUS_CANCELLED);

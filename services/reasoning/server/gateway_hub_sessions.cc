@@ -1,12 +1,11 @@
 // GatewayHub: robot sessions (hello, state, feedback, loss).
-#include "services/reasoning/server/gateway_hub.h"
-
 #include <algorithm>
 #include <tuple>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
 #include "services/common/status/field_error.h"
+#include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
 #include "services/reasoning/server/request_checks.h"
@@ -44,8 +43,8 @@ double GatewayHub::NowFor(const std::string& robot_id) {
   return robot != robots_.end() && robot->second.simulated_clock ? robot->second.sim_now_s : Now();
 }
 
-absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionHello& hello,
-                                                             StreamSink<api::ConnectResponse>* sink) {
+absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(
+    const api::SessionHello& hello, StreamSink<api::ConnectResponse>* sink) {
   absl::MutexLock lock(&mu_);
   if (shut_down_) return absl::UnavailableError("gateway shutting down");
   if (absl::Status s = Validate(hello); !s.ok()) return s;
@@ -61,7 +60,8 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   robot.session = sink;
   robot.capabilities = hello.capabilities();
   const auto& modes = hello.capabilities().modes();
-  robot.fly_roll = std::find(modes.begin(), modes.end(), api::LOCOMOTION_MODE_FLY_ROLL) != modes.end();
+  robot.fly_roll =
+      std::find(modes.begin(), modes.end(), api::LOCOMOTION_MODE_FLY_ROLL) != modes.end();
   robot.footprint_radius_m = hello.capabilities().footprint_radius_m();
   robot.simulated_clock = hello.clock() == api::CLOCK_KIND_SIMULATED;
   // A new simulated session is a new simulation: its clock and frames start over.
@@ -91,7 +91,8 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(const api::SessionH
   return accepted;
 }
 
-GatewayHub::Robot* GatewayHub::RobotOfSink(StreamSink<api::ConnectResponse>* sink, std::string* robot_id) {
+GatewayHub::Robot* GatewayHub::RobotOfSink(StreamSink<api::ConnectResponse>* sink,
+                                           std::string* robot_id) {
   for (auto& [id, robot] : robots_) {
     if (robot.session == sink) {
       *robot_id = id;
@@ -119,8 +120,8 @@ absl::Status GatewayHub::OnRobotState(StreamSink<api::ConnectResponse>* sink,
   return OnSimulatedStep(sink, state, *pose);
 }
 
-absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink, const api::RobotState& state,
-                                         const RobotPose& pose) {
+absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink,
+                                         const api::RobotState& state, const RobotPose& pose) {
   absl::StatusOr<double> now = SimulatedSeconds(state);
   if (!now.ok()) return now.status();
   std::function<absl::Status(absl::Duration)> sync;
@@ -130,8 +131,9 @@ absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink,
     Robot* robot = RobotOfSink(sink, &robot_id);
     if (robot == nullptr) return absl::OkStatus();
     if (*now < robot->sim_now_s) {
-      return InvalidField("state.header.stamp", absl::StrCat("simulated time went back from ", robot->sim_now_s,
-                                                             " s to ", *now, " s"));
+      return InvalidField(
+          "state.header.stamp",
+          absl::StrCat("simulated time went back from ", robot->sim_now_s, " s to ", *now, " s"));
     }
     if (state.mapping_revision() > robot->synced_mapping_revision) sync = scene_sync_;
   }
@@ -140,7 +142,8 @@ absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink,
   if (sync) {
     if (absl::Status synced = sync(kSimulatedStepWait); !synced.ok()) {
       LogWarning("simulated_step_scene_graph_unsynced",
-                 {{"mapping_revision", static_cast<int64_t>(state.mapping_revision())}, {"message", synced.message()}});
+                 {{"mapping_revision", static_cast<int64_t>(state.mapping_revision())},
+                  {"message", synced.message()}});
     }
   }
   absl::MutexLock lock(&mu_);
@@ -148,7 +151,8 @@ absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink,
   Robot* robot = RobotOfSink(sink, &robot_id);
   if (robot == nullptr) return absl::OkStatus();
   robot->sim_now_s = *now;
-  robot->synced_mapping_revision = std::max(robot->synced_mapping_revision, state.mapping_revision());
+  robot->synced_mapping_revision =
+      std::max(robot->synced_mapping_revision, state.mapping_revision());
   ApplyDueAnswers(robot_id);
   robot = RobotOfSink(sink, &robot_id);  // handlers ran without the lock
   if (robot == nullptr) return absl::OkStatus();
@@ -209,7 +213,8 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
                             const RobotPose& pose) {
   Task* const task = SettledActiveTask(robot);
   robot.last_state = state;
-  const bool pose_trusted = TrackLocalization(robot_id, robot, state, pose);  // sets robot.pose (map frame)
+  const bool pose_trusted =
+      TrackLocalization(robot_id, robot, state, pose);  // sets robot.pose (map frame)
   std::vector<std::string> nearby;
   for (const SceneObject& object : scene_graph_.objects) {
     if ((object.position - robot.pose.position).head<2>().norm() <= config_.memory_label_radius_m) {
@@ -217,7 +222,8 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
     }
   }
   robot.memory->Update(robot.pose.position, nearby, {});
-  for (StreamSink<api::StreamFastTelemetryResponse>* watcher : fast_watchers_.TakeDue(robot_id, absl::Now())) {
+  for (StreamSink<api::StreamFastTelemetryResponse>* watcher :
+       fast_watchers_.TakeDue(robot_id, absl::Now())) {
     api::StreamFastTelemetryResponse sample;
     *sample.mutable_state() = state;
     sample.set_task_id(robot.active_task);
@@ -230,7 +236,8 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
     // Restored after a gateway crash: this is the first pose the gateway can trust.
     task->resume_on_state = false;
     SetMobility(*task, robot);
-    Apply(*task, task->executor->OnPose(NowFor(robot_id), robot.pose));  // paused: only takes the pose
+    Apply(*task,
+          task->executor->OnPose(NowFor(robot_id), robot.pose));  // paused: only takes the pose
     Apply(*task, task->executor->Resume(NowFor(robot_id)));
   } else if (task != nullptr && task->started) {
     // A graph that came while the task was inside a planning call (OnSceneGraph skipped it).
@@ -260,10 +267,12 @@ absl::Status GatewayHub::OnFeedback(StreamSink<api::ConnectResponse>* sink,
 
 void GatewayHub::HandleFeedback(Robot& robot, const api::CommandFeedback& feedback) {
   const std::optional<RobotFeedback> kind = FromProto(feedback.kind());
-  Task* const task = SettledActiveTask(robot);  // its planning call may send the command this refers to
+  Task* const task =
+      SettledActiveTask(robot);  // its planning call may send the command this refers to
   if (feedback.command_id() != robot.last_session_command || !kind.has_value()) return;
   if (task == nullptr || !task->started) return;
-  Apply(*task, task->executor->OnFeedback(NowFor(task->robot_id), robot.last_executor_command, *kind));
+  Apply(*task,
+        task->executor->OnFeedback(NowFor(task->robot_id), robot.last_executor_command, *kind));
 }
 
 void GatewayHub::CloseSession(StreamSink<api::ConnectResponse>* sink) {
@@ -277,7 +286,8 @@ void GatewayHub::CloseSession(StreamSink<api::ConnectResponse>* sink) {
   if (robot->session != nullptr) return;  // the robot came back while its task was planning
   // A task waiting for planning pauses for the session too, so the robot's return resumes it.
   if (task == nullptr || !task->started ||
-      (task->executor->progress().state != TaskState::kRunning && !task->executor->waiting_for_dependency())) {
+      (task->executor->progress().state != TaskState::kRunning &&
+       !task->executor->waiting_for_dependency())) {
     return;
   }
   task->paused_by_session = true;

@@ -1,7 +1,6 @@
 // GatewayHub: task watchers, the event stream and telemetry.
-#include "services/reasoning/server/gateway_hub.h"
-
 #include "absl/strings/str_cat.h"
+#include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_internal.h"
 #include "services/reasoning/server/proto_convert.h"
 #include "services/reasoning/server/request_checks.h"
@@ -10,12 +9,13 @@ namespace semnav::reasoning {
 
 using namespace hub_internal;
 
-void GatewayHub::WatchTask(const api::WatchTaskRequest& request, StreamSink<api::WatchTaskResponse>* sink) {
+void GatewayHub::WatchTask(const api::WatchTaskRequest& request,
+                           StreamSink<api::WatchTaskResponse>* sink) {
   absl::MutexLock lock(&mu_);
   absl::Status valid = Validate(request);
-  absl::StatusOr<Task*> found = shut_down_ ? absl::UnavailableError("gateway shutting down")
-                                : !valid.ok()  ? absl::StatusOr<Task*>(valid)
-                                               : FindTask(request.task_id());
+  absl::StatusOr<Task*> found = shut_down_    ? absl::UnavailableError("gateway shutting down")
+                                : !valid.ok() ? absl::StatusOr<Task*>(valid)
+                                              : FindTask(request.task_id());
   if (!found.ok()) {
     sink->Close(ToGrpcStatus(found.status()));
     return;
@@ -38,7 +38,8 @@ void GatewayHub::UnwatchTask(StreamSink<api::WatchTaskResponse>* sink) {
   for (auto& [id, watchers] : task_watchers_) watchers.erase(sink);
 }
 
-void GatewayHub::WatchEvents(const api::StreamEventsRequest& request, StreamSink<api::StreamEventsResponse>* sink) {
+void GatewayHub::WatchEvents(const api::StreamEventsRequest& request,
+                             StreamSink<api::StreamEventsResponse>* sink) {
   absl::MutexLock lock(&mu_);
   if (shut_down_) {
     sink->Close(grpc::Status(grpc::StatusCode::UNAVAILABLE, "gateway shutting down"));
@@ -50,7 +51,8 @@ void GatewayHub::WatchEvents(const api::StreamEventsRequest& request, StreamSink
   }
   if (request.last_event_id() > 0) {
     bool truncated = false;
-    std::vector<LoggedEvent> replay = events_.After(request.last_event_id(), request.robot_id(), "", &truncated);
+    std::vector<LoggedEvent> replay =
+        events_.After(request.last_event_id(), request.robot_id(), "", &truncated);
     for (std::size_t i = 0; i < replay.size(); ++i) {
       api::StreamEventsResponse response;
       *response.mutable_event() = ToProto(replay[i]);
@@ -66,12 +68,14 @@ void GatewayHub::UnwatchEvents(StreamSink<api::StreamEventsResponse>* sink) {
   event_watchers_.erase(sink);
 }
 
-absl::StatusOr<api::ListEventsResponse> GatewayHub::ListEvents(const api::ListEventsRequest& request) {
+absl::StatusOr<api::ListEventsResponse> GatewayHub::ListEvents(
+    const api::ListEventsRequest& request) {
   if (absl::Status s = Validate(request); !s.ok()) return s;
   absl::MutexLock lock(&mu_);
   api::ListEventsResponse response;
   bool truncated = false;
-  for (const LoggedEvent& event : events_.After(request.after_event_id(), request.robot_id(), request.task_id(), &truncated)) {
+  for (const LoggedEvent& event :
+       events_.After(request.after_event_id(), request.robot_id(), request.task_id(), &truncated)) {
     *response.add_events() = ToProto(event);
   }
   // The log drops its oldest events first, so a task whose creation is still listed lost none.
@@ -91,7 +95,8 @@ api::StreamSlowTelemetryResponse GatewayHub::SlowSample(const std::string& robot
   const Robot& robot = found != robots_.end() ? found->second : kUnknownRobot;
   out.set_session_connected(robot.session != nullptr);
   *out.mutable_capabilities() = robot.capabilities;
-  if (std::optional<LeaseInfo> lease = leases_.Current(robot_id, absl::Now())) *out.mutable_lease() = ToProto(*lease);
+  if (std::optional<LeaseInfo> lease = leases_.Current(robot_id, absl::Now()))
+    *out.mutable_lease() = ToProto(*lease);
   out.set_emergency_stop_active(robot.emergency_stop);
   out.set_task_id(robot.active_task);
   out.set_fast_path_resolutions(fast_resolutions_);
@@ -112,10 +117,11 @@ void GatewayHub::WatchFastTelemetry(const api::StreamFastTelemetryRequest& reque
     return;
   }
   if (shut_down_ || request.robot_id().empty() || request.max_rate_hz() > 50) {
-    sink->Close(ToGrpcStatus(shut_down_ ? absl::UnavailableError("gateway shutting down")
-                                        : FieldError(absl::StatusCode::kInvalidArgument,
-                                                     request.robot_id().empty() ? "robot_id" : "max_rate_hz",
-                                                     request.robot_id().empty() ? "is required" : "must be 1 to 50")));
+    sink->Close(ToGrpcStatus(
+        shut_down_ ? absl::UnavailableError("gateway shutting down")
+                   : FieldError(absl::StatusCode::kInvalidArgument,
+                                request.robot_id().empty() ? "robot_id" : "max_rate_hz",
+                                request.robot_id().empty() ? "is required" : "must be 1 to 50")));
     return;
   }
   const uint32_t rate = request.max_rate_hz() == 0 ? 10 : request.max_rate_hz();
@@ -135,12 +141,14 @@ void GatewayHub::WatchSlowTelemetry(const api::StreamSlowTelemetryRequest& reque
     return;
   }
   absl::Duration period = absl::Seconds(1);
-  if (request.has_period()) period = absl::Milliseconds(TimeUtil::DurationToMilliseconds(request.period()));
+  if (request.has_period())
+    period = absl::Milliseconds(TimeUtil::DurationToMilliseconds(request.period()));
   if (shut_down_ || request.robot_id().empty() || period < absl::Milliseconds(100)) {
-    sink->Close(ToGrpcStatus(shut_down_ ? absl::UnavailableError("gateway shutting down")
-                                        : FieldError(absl::StatusCode::kInvalidArgument,
-                                                     request.robot_id().empty() ? "robot_id" : "period",
-                                                     request.robot_id().empty() ? "is required" : "must be >= 100 ms")));
+    sink->Close(ToGrpcStatus(
+        shut_down_ ? absl::UnavailableError("gateway shutting down")
+                   : FieldError(absl::StatusCode::kInvalidArgument,
+                                request.robot_id().empty() ? "robot_id" : "period",
+                                request.robot_id().empty() ? "is required" : "must be >= 100 ms")));
     return;
   }
   slow_watchers_.Add(sink, request.robot_id(), period);

@@ -15,7 +15,8 @@
 namespace semnav::reasoning {
 namespace {
 
-api::SubmitInstructionRequest SubmitRequest(const std::string& request_id, const std::string& robot_id,
+api::SubmitInstructionRequest SubmitRequest(const std::string& request_id,
+                                            const std::string& robot_id,
                                             const std::string& instruction) {
   api::SubmitInstructionRequest request;
   request.set_request_id(request_id);
@@ -38,7 +39,8 @@ TEST(GatewayHubTest, BacktrackReturnsToWhereTheSofaWasSeen) {
   ASSERT_TRUE(hub.OnRobotState(&session, At(6, 0)).ok());   // node 2, 5 m from the sofa: not seen
   ASSERT_TRUE(hub.OnRobotState(&session, At(12, 0)).ok());  // node 3
 
-  absl::StatusOr<api::SubmitInstructionResponse> response = hub.Submit(SubmitRequest("back-1", "r1", "回到沙发那里"));
+  absl::StatusOr<api::SubmitInstructionResponse> response =
+      hub.Submit(SubmitRequest("back-1", "r1", "回到沙发那里"));
   ASSERT_TRUE(response.ok()) << response.status();
   ASSERT_EQ(response->task().subgoals(0).type(), api::SUBGOAL_TYPE_BACKTRACK);
   ASSERT_GE(session.messages().size(), 2u);  // accepted + navigate
@@ -91,7 +93,8 @@ TEST(GatewayHubTest, TaskThatStartsWhilePlanningIsGoneHoldsAndLogsIt) {
 TEST(GatewayHubTest, ControlOfAFinishedTaskIsRefusedButARetryGetsTheFirstAnswer) {
   RobotLocalPlanner planner;
   GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner);
-  absl::StatusOr<api::SubmitInstructionResponse> submitted = hub.Submit(SubmitRequest("s-1", "r1", "wait"));
+  absl::StatusOr<api::SubmitInstructionResponse> submitted =
+      hub.Submit(SubmitRequest("s-1", "r1", "wait"));
   ASSERT_TRUE(submitted.ok()) << submitted.status();
   api::CancelTaskRequest cancel;
   cancel.set_request_id("c-1");
@@ -130,7 +133,8 @@ TEST(GatewayHubTest, LeaseErrorsNameTheFieldOnce) {
   acquire.set_holder("bob");
   const absl::Status held = hub.AcquireLease(acquire).status();
   EXPECT_EQ(held.code(), absl::StatusCode::kFailedPrecondition);
-  EXPECT_TRUE(absl::StartsWith(held.message(), "robot_id: lease of r2 is held by alice until ")) << held.message();
+  EXPECT_TRUE(absl::StartsWith(held.message(), "robot_id: lease of r2 is held by alice until "))
+      << held.message();
 
   const absl::Status refused = hub.Submit(SubmitRequest("s-1", "r2", "wait")).status();
   EXPECT_EQ(refused.message(), "lease_id: robot r2 is leased by alice");
@@ -141,14 +145,16 @@ TEST(GatewayHubTest, LeaseErrorsNameTheFieldOnce) {
 TEST(GatewayHubTest, ListEventsGivesAFinishedTasksEventsAndTheNewestId) {
   RobotLocalPlanner planner;
   GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner);
-  absl::StatusOr<api::SubmitInstructionResponse> first = hub.Submit(SubmitRequest("s-1", "r1", "wait"));
+  absl::StatusOr<api::SubmitInstructionResponse> first =
+      hub.Submit(SubmitRequest("s-1", "r1", "wait"));
   ASSERT_TRUE(first.ok()) << first.status();
   api::CancelTaskRequest cancel;
   cancel.set_request_id("c-1");
   cancel.set_task_id(first->task_id());
   cancel.set_reason("changed my mind");
   ASSERT_TRUE(hub.Cancel(cancel).ok());
-  absl::StatusOr<api::SubmitInstructionResponse> second = hub.Submit(SubmitRequest("s-2", "r2", "wait"));
+  absl::StatusOr<api::SubmitInstructionResponse> second =
+      hub.Submit(SubmitRequest("s-2", "r2", "wait"));
   ASSERT_TRUE(second.ok()) << second.status();
 
   api::ListEventsRequest request;
@@ -291,8 +297,7 @@ TEST_F(GatewayHubValidationTest, HelloAndCameraFramesAreChecked) {
   EXPECT_TRUE(session.messages().empty());  // not accepted
   hello.mutable_capabilities()->set_max_linear_speed_mps(1.0);
   hello.mutable_capabilities()->add_modes(static_cast<api::LocomotionMode>(42));
-  EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()),
-            "hello.capabilities.modes[0]");
+  EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()), "hello.capabilities.modes[0]");
   hello.mutable_capabilities()->clear_modes();
   ASSERT_TRUE(hub_.OpenSession(hello, &session).ok());
 

@@ -10,9 +10,9 @@
 #include "google/protobuf/timestamp.pb.h"
 #include "google/protobuf/util/time_util.h"
 #include "semnav/reasoning/v1/operator.pb.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/common/status/grpc_status.h"
 #include "services/reasoning/core/lease_table.h"
-#include "services/common/idempotency/first_answer_cache.h"
 
 namespace semnav::reasoning::hub_internal {
 

@@ -1,7 +1,8 @@
 // What the gateway needs from a language model: the slow path's match_target call, the
-// decomposition of complex instructions and text embeddings. Implemented over the model proxy (ModelProxyClient) and by scripted fakes in tests.
-// Calls never block: they return at once and `done` runs later on another thread (seed 000, 3.5:
-// the robot keeps exploring while the model thinks), never inside the call itself.
+// decomposition of complex instructions and text embeddings. Implemented over the model proxy
+// (ModelProxyClient) and by scripted fakes in tests. Calls never block: they return at once and
+// `done` runs later on another thread (seed 000, 3.5: the robot keeps exploring while the model
+// thinks), never inside the call itself.
 #pragma once
 
 #include <functional>
@@ -40,14 +41,18 @@ class LanguageModel {
   virtual ~LanguageModel() = default;
   // The match_target request; `done` gets the answer object as JSON text (with "offline": true
   // when the proxy's commonsense prior answered) or the call's error.
-  virtual void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) = 0;
+  virtual void MatchTarget(const ModelCaller& caller, const ResolveRequest& request,
+                           AnswerDone done) = 0;
   // The decompose request; `done` gets the {"subgoals": [...]} answer as JSON text or the call's
-  // error (the proxy's offline backend answers it by rules; when it fails, the gateway's rules are kept).
-  virtual void Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) = 0;
+  // error (the proxy's offline backend answers it by rules; when it fails, the gateway's rules are
+  // kept).
+  virtual void Decompose(const ModelCaller& caller, const DecomposeRequest& request,
+                         AnswerDone done) = 0;
   // A free-text answer (the EROI search's VLM and region-score prompts).
   virtual void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) = 0;
   // The text embedding of `text`; UNAVAILABLE while the proxy offers no embedding backend.
-  virtual void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) = 0;
+  virtual void EmbedText(const ModelCaller& caller, const std::string& text,
+                         EmbeddingDone done) = 0;
   // Ends pending calls (their `done` runs with CANCELLED); returns once no `done` runs or will
   // run. Idempotent.
   virtual void Stop() = 0;

@@ -1,7 +1,7 @@
 #include "services/reasoning/server/mapping_watcher.h"
 
-#include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "absl/strings/str_cat.h"
+#include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "services/common/logging/log.h"
 
 namespace semnav::reasoning {
@@ -38,8 +38,10 @@ absl::Status MappingWatcher::CatchUp(absl::Duration timeout) {
   // back-off) is waited for, so whether a step sees its frame never depends on wall time.
   context.set_wait_for_ready(true);
   mapping::v1::GetSceneGraphResponse response;
-  const grpc::Status status = stub->GetSceneGraph(&context, mapping::v1::GetSceneGraphRequest(), &response);
-  if (!status.ok()) return absl::UnavailableError(absl::StrCat("mapping GetSceneGraph: ", status.error_message()));
+  const grpc::Status status =
+      stub->GetSceneGraph(&context, mapping::v1::GetSceneGraphRequest(), &response);
+  if (!status.ok())
+    return absl::UnavailableError(absl::StrCat("mapping GetSceneGraph: ", status.error_message()));
   mapping::v1::WatchSceneGraphResponse snapshot;
   *snapshot.mutable_snapshot() = std::move(*response.mutable_graph());
   SceneGraphMirror fetched;
@@ -79,9 +81,10 @@ void MappingWatcher::Run() {
     // Mapping not (yet) up is normal at start-up and while it restarts: retry quietly. A stream
     // that had delivered and then broke, or any other error, is worth a warning.
     const bool not_up = status.error_code() == grpc::StatusCode::UNAVAILABLE && !delivered;
-    (not_up ? LogDebug : LogWarning)("mapping_watch_ended", {{"code", static_cast<int>(status.error_code())},
-                                                             {"message", status.error_message()},
-                                                             {"retry_s", 1}});
+    (not_up ? LogDebug : LogWarning)("mapping_watch_ended",
+                                     {{"code", static_cast<int>(status.error_code())},
+                                      {"message", status.error_message()},
+                                      {"retry_s", 1}});
     mu_.AwaitWithTimeout(absl::Condition(&stopping_), absl::Seconds(1));
   }
 }

@@ -4,13 +4,13 @@
 // Revisions reach the callback in increasing order (a new snapshot after a reconnect excepted).
 #pragma once
 
+#include <grpcpp/channel.h>
+#include <grpcpp/client_context.h>
+
 #include <functional>
 #include <memory>
 #include <optional>
 #include <thread>
-
-#include <grpcpp/channel.h>
-#include <grpcpp/client_context.h>
 
 #include "absl/status/status.h"
 #include "absl/synchronization/mutex.h"
@@ -22,7 +22,8 @@ namespace semnav::reasoning {
 
 class MappingWatcher {
  public:
-  MappingWatcher(std::shared_ptr<grpc::Channel> channel, std::function<void(const SceneGraph&)> on_graph);
+  MappingWatcher(std::shared_ptr<grpc::Channel> channel,
+                 std::function<void(const SceneGraph&)> on_graph);
   ~MappingWatcher();  // Stop()
   void Stop();
   // GetSceneGraph within `timeout`; the graph goes to the callback (on the calling thread) when

@@ -17,7 +17,9 @@ void SetTimeout(int milliseconds, google::protobuf::Duration* out) {
   out->set_nanos((milliseconds % 1000) * 1000000);
 }
 
-void AddText(pb::ChatMessage* message, const std::string& text) { message->add_parts()->set_text(text); }
+void AddText(pb::ChatMessage* message, const std::string& text) {
+  message->add_parts()->set_text(text);
+}
 
 // The answer object; the proxy's `offline` flag is copied into it when the JSON lacks it, so the
 // slow path weighs prior answers lower either way.
@@ -81,7 +83,8 @@ void ModelProxyClient::Work() {
       queue_.pop_front();
       active_.insert(&context);
     }
-    context.set_deadline(std::chrono::system_clock::now() + std::chrono::milliseconds(settings_.deadline_ms));
+    context.set_deadline(std::chrono::system_clock::now() +
+                         std::chrono::milliseconds(settings_.deadline_ms));
     job(context);
     absl::MutexLock lock(&mu_);
     active_.erase(&context);
@@ -97,7 +100,8 @@ void ModelProxyClient::Complete(const ModelCaller& caller, pb::CompleteRequest c
     const grpc::Status status = stub_->Complete(&context, call, &response);
     ReportLatency(response.latency(), latency.get());
     if (!status.ok()) {
-      LogInfo("model_call_failed", {{"rpc", "Complete"}, {"alias", call.model_alias()},
+      LogInfo("model_call_failed", {{"rpc", "Complete"},
+                                    {"alias", call.model_alias()},
                                     {"code", static_cast<int>(status.error_code())},
                                     {"message", status.error_message()}});
       done(FromGrpcStatus(status));
@@ -108,7 +112,8 @@ void ModelProxyClient::Complete(const ModelCaller& caller, pb::CompleteRequest c
 }
 
 void ModelProxyClient::CompleteTask(const ModelCaller& caller, const std::string& prose,
-                                    const std::string& task_json, std::string_view schema, AnswerDone done) {
+                                    const std::string& task_json, std::string_view schema,
+                                    AnswerDone done) {
   pb::CompleteRequest call;
   call.set_model_alias(settings_.model_alias);
   pb::ChatMessage* message = call.add_messages();
@@ -117,20 +122,25 @@ void ModelProxyClient::CompleteTask(const ModelCaller& caller, const std::string
   AddText(message, task_json);  // last part: the task object the offline backend reads
   call.set_response_format(pb::RESPONSE_FORMAT_JSON_SCHEMA);
   call.set_json_schema(std::string(schema));
-  Complete(caller, std::move(call), [done = std::move(done)](absl::StatusOr<pb::CompleteResponse> response) {
-    done(response.ok() ? AnswerJson(*response) : absl::StatusOr<std::string>(response.status()));
-  });
+  Complete(caller, std::move(call),
+           [done = std::move(done)](absl::StatusOr<pb::CompleteResponse> response) {
+             done(response.ok() ? AnswerJson(*response)
+                                : absl::StatusOr<std::string>(response.status()));
+           });
 }
 
-void ModelProxyClient::MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) {
+void ModelProxyClient::MatchTarget(const ModelCaller& caller, const ResolveRequest& request,
+                                   AnswerDone done) {
   CompleteTask(caller, request.prose, request.task_json, MatchTargetSchema(), std::move(done));
 }
 
-void ModelProxyClient::Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) {
+void ModelProxyClient::Decompose(const ModelCaller& caller, const DecomposeRequest& request,
+                                 AnswerDone done) {
   CompleteTask(caller, request.prose, request.task_json, SubgoalsSchema(), std::move(done));
 }
 
-void ModelProxyClient::Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) {
+void ModelProxyClient::Ask(const ModelCaller& caller, const ModelQuestion& question,
+                           AnswerDone done) {
   pb::CompleteRequest call;
   call.set_model_alias(question.png.empty() ? settings_.model_alias : settings_.vision_alias);
   pb::ChatMessage* message = call.add_messages();
@@ -142,12 +152,15 @@ void ModelProxyClient::Ask(const ModelCaller& caller, const ModelQuestion& quest
     image->set_data(question.png);
   }
   call.set_response_format(pb::RESPONSE_FORMAT_TEXT);
-  Complete(caller, std::move(call), [done = std::move(done)](absl::StatusOr<pb::CompleteResponse> response) {
-    done(response.ok() ? absl::StatusOr<std::string>(response->text()) : absl::StatusOr<std::string>(response.status()));
-  });
+  Complete(caller, std::move(call),
+           [done = std::move(done)](absl::StatusOr<pb::CompleteResponse> response) {
+             done(response.ok() ? absl::StatusOr<std::string>(response->text())
+                                : absl::StatusOr<std::string>(response.status()));
+           });
 }
 
-void ModelProxyClient::EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) {
+void ModelProxyClient::EmbedText(const ModelCaller& caller, const std::string& text,
+                                 EmbeddingDone done) {
   pb::EmbedRequest call;
   call.set_model_alias(settings_.embedding_alias);
   call.add_texts(text);
@@ -177,10 +190,12 @@ void ModelProxyClient::EmbedText(const ModelCaller& caller, const std::string& t
       return;
     }
     if (response.embeddings_size() != 1) {
-      done(absl::InvalidArgumentError(absl::StrCat("embeddings: expected 1 vector, got ", response.embeddings_size())));
+      done(absl::InvalidArgumentError(
+          absl::StrCat("embeddings: expected 1 vector, got ", response.embeddings_size())));
       return;
     }
-    done(std::vector<float>(response.embeddings(0).values().begin(), response.embeddings(0).values().end()));
+    done(std::vector<float>(response.embeddings(0).values().begin(),
+                            response.embeddings(0).values().end()));
   });
 }
 

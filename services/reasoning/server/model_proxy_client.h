@@ -1,10 +1,14 @@
 // LanguageModel over semnav-model-proxy (semnav.modelproxy.v1): Complete with the match_target
-// and decompose tasks and their JSON schemas (docs/algorithms/modelproxy.md), Embed for target text embeddings. Calls
-// run on a few worker threads with the configured deadline, so callers (the gateway hub, under
-// its lock) only enqueue. After Embed fails as unavailable (the offline default has no embedding
-// backend) the client answers UNAVAILABLE itself for `embedding_retry_s` instead of asking again.
-// Stop() cancels calls in flight and queued ones: every `done` runs once, with CANCELLED then.
+// and decompose tasks and their JSON schemas (docs/algorithms/modelproxy.md), Embed for target text
+// embeddings. Calls run on a few worker threads with the configured deadline, so callers (the
+// gateway hub, under its lock) only enqueue. After Embed fails as unavailable (the offline default
+// has no embedding backend) the client answers UNAVAILABLE itself for `embedding_retry_s` instead
+// of asking again. Stop() cancels calls in flight and queued ones: every `done` runs once, with
+// CANCELLED then.
 #pragma once
+
+#include <grpcpp/channel.h>
+#include <grpcpp/client_context.h>
 
 #include <deque>
 #include <functional>
@@ -12,9 +16,6 @@
 #include <set>
 #include <thread>
 #include <vector>
-
-#include <grpcpp/channel.h>
-#include <grpcpp/client_context.h>
 
 #include "absl/synchronization/mutex.h"
 #include "absl/time/time.h"
@@ -29,8 +30,10 @@ class ModelProxyClient final : public LanguageModel {
   ModelProxyClient(std::shared_ptr<grpc::Channel> channel, ModelSettings settings);
   ~ModelProxyClient() override;
 
-  void MatchTarget(const ModelCaller& caller, const ResolveRequest& request, AnswerDone done) override;
-  void Decompose(const ModelCaller& caller, const DecomposeRequest& request, AnswerDone done) override;
+  void MatchTarget(const ModelCaller& caller, const ResolveRequest& request,
+                   AnswerDone done) override;
+  void Decompose(const ModelCaller& caller, const DecomposeRequest& request,
+                 AnswerDone done) override;
   void Ask(const ModelCaller& caller, const ModelQuestion& question, AnswerDone done) override;
   void EmbedText(const ModelCaller& caller, const std::string& text, EmbeddingDone done) override;
   void Stop() override;
@@ -44,8 +47,8 @@ class ModelProxyClient final : public LanguageModel {
                 std::function<void(absl::StatusOr<modelproxy::v1::CompleteResponse>)> done);
   // Complete with prose, the task object as the last part and a JSON schema; `done` gets the
   // answer object as JSON text.
-  void CompleteTask(const ModelCaller& caller, const std::string& prose, const std::string& task_json,
-                    std::string_view schema, AnswerDone done);
+  void CompleteTask(const ModelCaller& caller, const std::string& prose,
+                    const std::string& task_json, std::string_view schema, AnswerDone done);
   void Work();
 
   std::unique_ptr<modelproxy::v1::ModelProxyService::Stub> stub_;

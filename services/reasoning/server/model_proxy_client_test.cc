@@ -23,7 +23,8 @@ class ScriptedProxy final : public pb::ModelProxyService::Service {
     last_complete = *request;
     const auto& metadata = context->client_metadata();
     auto robot = metadata.find("x-semnav-robot-id");
-    robot_id = robot == metadata.end() ? "" : std::string(robot->second.data(), robot->second.size());
+    robot_id =
+        robot == metadata.end() ? "" : std::string(robot->second.data(), robot->second.size());
     ++completes;
     mu.Await(absl::Condition(&release));
     if (!answer_status.ok()) return answer_status;
@@ -57,7 +58,8 @@ class GatewayModelProxyClientTest : public ::testing::Test {
     ASSERT_NE(port, 0);
     settings_.model_alias = "default";
     settings_.deadline_ms = 1500;
-    channel_ = grpc::CreateChannel("127.0.0.1:" + std::to_string(port), grpc::InsecureChannelCredentials());
+    channel_ = grpc::CreateChannel("127.0.0.1:" + std::to_string(port),
+                                   grpc::InsecureChannelCredentials());
   }
   void TearDown() override {
     {
@@ -103,7 +105,8 @@ TEST_F(GatewayModelProxyClientTest, MatchTargetFollowsTheProxyContractAndMarksOf
   EXPECT_EQ(request.messages(0).role(), pb::ROLE_USER);
   ASSERT_EQ(request.messages(0).parts_size(), 2);
   EXPECT_EQ(request.messages(0).parts(0).text(), "prose");
-  EXPECT_EQ(request.messages(0).parts(1).text(), R"({"task":"match_target"})");  // last part: the task
+  EXPECT_EQ(request.messages(0).parts(1).text(),
+            R"({"task":"match_target"})");  // last part: the task
   EXPECT_EQ(request.response_format(), pb::RESPONSE_FORMAT_JSON_SCHEMA);
   EXPECT_EQ(request.json_schema(), std::string(MatchTargetSchema()));
   EXPECT_EQ(request.timeout().seconds(), 1);
@@ -159,7 +162,8 @@ TEST_F(GatewayModelProxyClientTest, CallsReturnAtOnceAndTheDeadlineEndsASlowMode
 }
 
 TEST_F(GatewayModelProxyClientTest, ErrorsComeBackAsStatusAndStopCancelsPendingCalls) {
-  proxy_.answer_status = grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, "candidates[1].id 'a' repeats");
+  proxy_.answer_status =
+      grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, "candidates[1].id 'a' repeats");
   ModelProxyClient client(channel_, settings_);
   const absl::StatusOr<std::string> answer = Match(client);
   EXPECT_EQ(answer.status().code(), absl::StatusCode::kInvalidArgument);
@@ -184,7 +188,8 @@ TEST_F(GatewayModelProxyClientTest, ErrorsComeBackAsStatusAndStopCancelsPendingC
   for (int i = 0; i < 200; ++i) {  // wait until the call reached the proxy
     absl::MutexLock lock(&proxy_.mu);
     if (proxy_.completes == 2) break;
-    proxy_.mu.AwaitWithTimeout(absl::Condition(+[](int* n) { return *n == 2; }, &proxy_.completes),
+    proxy_.mu.AwaitWithTimeout(absl::Condition(
+                                   +[](int* n) { return *n == 2; }, &proxy_.completes),
                                absl::Milliseconds(50));
   }
   const absl::Time start = absl::Now();
@@ -207,11 +212,12 @@ TEST_F(GatewayModelProxyClientTest, MissingEmbeddingBackendIsNotAskedAgainWithin
     absl::Notification done;
     absl::StatusCode code = absl::StatusCode::kOk;
     hub.Lock();
-    client.EmbedText({"r1", "task-1"}, "red cup", [&](absl::StatusOr<std::vector<float>> embedding) {
-      absl::MutexLock answering(&hub);
-      code = embedding.status().code();
-      done.Notify();
-    });
+    client.EmbedText({"r1", "task-1"}, "red cup",
+                     [&](absl::StatusOr<std::vector<float>> embedding) {
+                       absl::MutexLock answering(&hub);
+                       code = embedding.status().code();
+                       done.Notify();
+                     });
     hub.Unlock();
     ASSERT_TRUE(done.WaitForNotificationWithTimeout(absl::Seconds(10)));
     EXPECT_EQ(code, absl::StatusCode::kUnavailable);

@@ -8,7 +8,8 @@ namespace {
 
 // Finishes a unary call with `result`, storing the value through `store` when OK.
 template <typename T, typename Store>
-grpc::ServerUnaryReactor* Reply(grpc::CallbackServerContext* context, absl::StatusOr<T> result, Store store) {
+grpc::ServerUnaryReactor* Reply(grpc::CallbackServerContext* context, absl::StatusOr<T> result,
+                                Store store) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
   if (result.ok()) store(*std::move(result));
   reactor->Finish(ToGrpcStatus(result.status()));
@@ -38,10 +39,10 @@ class HubStreamReactor : public QueuedWriter<grpc::ServerWriteReactor<Response>,
   std::shared_ptr<GatewayHub> hub_;
 };
 
-using TaskWatchReactor = HubStreamReactor<api::WatchTaskRequest, api::WatchTaskResponse, &GatewayHub::WatchTask,
-                                          &GatewayHub::UnwatchTask>;
-using EventReactor = HubStreamReactor<api::StreamEventsRequest, api::StreamEventsResponse, &GatewayHub::WatchEvents,
-                                      &GatewayHub::UnwatchEvents>;
+using TaskWatchReactor = HubStreamReactor<api::WatchTaskRequest, api::WatchTaskResponse,
+                                          &GatewayHub::WatchTask, &GatewayHub::UnwatchTask>;
+using EventReactor = HubStreamReactor<api::StreamEventsRequest, api::StreamEventsResponse,
+                                      &GatewayHub::WatchEvents, &GatewayHub::UnwatchEvents>;
 using FastTelemetryReactor =
     HubStreamReactor<api::StreamFastTelemetryRequest, api::StreamFastTelemetryResponse,
                      &GatewayHub::WatchFastTelemetry, &GatewayHub::UnwatchFastTelemetry>;
@@ -51,10 +52,11 @@ using SlowTelemetryReactor =
 
 }  // namespace
 
-grpc::ServerUnaryReactor* OperatorServiceImpl::SubmitInstruction(grpc::CallbackServerContext* context,
-                                                                 const api::SubmitInstructionRequest* request,
-                                                                 api::SubmitInstructionResponse* response) {
-  return Reply(context, hub_->Submit(*request), [&](api::SubmitInstructionResponse r) { *response = std::move(r); });
+grpc::ServerUnaryReactor* OperatorServiceImpl::SubmitInstruction(
+    grpc::CallbackServerContext* context, const api::SubmitInstructionRequest* request,
+    api::SubmitInstructionResponse* response) {
+  return Reply(context, hub_->Submit(*request),
+               [&](api::SubmitInstructionResponse r) { *response = std::move(r); });
 }
 
 grpc::ServerUnaryReactor* OperatorServiceImpl::GetTask(grpc::CallbackServerContext* context,
@@ -71,18 +73,20 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::ListTasks(grpc::CallbackServerCon
                [&](api::ListTasksResponse r) { *response = std::move(r); });
 }
 
-grpc::ServerWriteReactor<api::WatchTaskResponse>* OperatorServiceImpl::WatchTask(grpc::CallbackServerContext*,
-                                                                                 const api::WatchTaskRequest* request) {
+grpc::ServerWriteReactor<api::WatchTaskResponse>* OperatorServiceImpl::WatchTask(
+    grpc::CallbackServerContext*, const api::WatchTaskRequest* request) {
   return new TaskWatchReactor(hub_, *request);
 }
 
-grpc::ServerWriteReactor<api::StreamFastTelemetryResponse>* OperatorServiceImpl::StreamFastTelemetry(
-    grpc::CallbackServerContext*, const api::StreamFastTelemetryRequest* request) {
+grpc::ServerWriteReactor<api::StreamFastTelemetryResponse>*
+OperatorServiceImpl::StreamFastTelemetry(grpc::CallbackServerContext*,
+                                         const api::StreamFastTelemetryRequest* request) {
   return new FastTelemetryReactor(hub_, *request);
 }
 
-grpc::ServerWriteReactor<api::StreamSlowTelemetryResponse>* OperatorServiceImpl::StreamSlowTelemetry(
-    grpc::CallbackServerContext*, const api::StreamSlowTelemetryRequest* request) {
+grpc::ServerWriteReactor<api::StreamSlowTelemetryResponse>*
+OperatorServiceImpl::StreamSlowTelemetry(grpc::CallbackServerContext*,
+                                         const api::StreamSlowTelemetryRequest* request) {
   return new SlowTelemetryReactor(hub_, *request);
 }
 
@@ -127,21 +131,23 @@ grpc::ServerUnaryReactor* OperatorServiceImpl::ReleaseLease(grpc::CallbackServer
   return Reply(context, hub_->ReleaseLease(*request));
 }
 
-grpc::ServerUnaryReactor* OperatorServiceImpl::EmergencyStop(grpc::CallbackServerContext* context,
-                                                             const api::EmergencyStopRequest* request,
-                                                             api::EmergencyStopResponse* response) {
-  return Reply(context, hub_->EmergencyStop(*request), [&](api::EmergencyStopResponse r) { *response = std::move(r); });
+grpc::ServerUnaryReactor* OperatorServiceImpl::EmergencyStop(
+    grpc::CallbackServerContext* context, const api::EmergencyStopRequest* request,
+    api::EmergencyStopResponse* response) {
+  return Reply(context, hub_->EmergencyStop(*request),
+               [&](api::EmergencyStopResponse r) { *response = std::move(r); });
 }
 
-grpc::ServerUnaryReactor* OperatorServiceImpl::RelocalizeRobot(grpc::CallbackServerContext* context,
-                                                               const api::RelocalizeRobotRequest* request,
-                                                               api::RelocalizeRobotResponse* response) {
-  return Reply(context, hub_->RelocalizeRobot(*request), [&](api::RelocalizeRobotResponse r) { *response = std::move(r); });
+grpc::ServerUnaryReactor* OperatorServiceImpl::RelocalizeRobot(
+    grpc::CallbackServerContext* context, const api::RelocalizeRobotRequest* request,
+    api::RelocalizeRobotResponse* response) {
+  return Reply(context, hub_->RelocalizeRobot(*request),
+               [&](api::RelocalizeRobotResponse r) { *response = std::move(r); });
 }
 
-grpc::ServerUnaryReactor* OperatorServiceImpl::ClearEmergencyStop(grpc::CallbackServerContext* context,
-                                                                  const api::ClearEmergencyStopRequest* request,
-                                                                  api::ClearEmergencyStopResponse*) {
+grpc::ServerUnaryReactor* OperatorServiceImpl::ClearEmergencyStop(
+    grpc::CallbackServerContext* context, const api::ClearEmergencyStopRequest* request,
+    api::ClearEmergencyStopResponse*) {
   return Reply(context, hub_->ClearEmergencyStop(*request));
 }
 
@@ -153,29 +159,32 @@ grpc::ServerWriteReactor<api::StreamEventsResponse>* OperatorServiceImpl::Stream
 grpc::ServerUnaryReactor* OperatorServiceImpl::ListEvents(grpc::CallbackServerContext* context,
                                                           const api::ListEventsRequest* request,
                                                           api::ListEventsResponse* response) {
-  return Reply(context, hub_->ListEvents(*request), [&](api::ListEventsResponse r) { *response = std::move(r); });
+  return Reply(context, hub_->ListEvents(*request),
+               [&](api::ListEventsResponse r) { *response = std::move(r); });
 }
 
-grpc::ServerUnaryReactor* OperatorServiceImpl::DecomposeInstruction(grpc::CallbackServerContext* context,
-                                                                    const api::DecomposeInstructionRequest* request,
-                                                                    api::DecomposeInstructionResponse* response) {
+grpc::ServerUnaryReactor* OperatorServiceImpl::DecomposeInstruction(
+    grpc::CallbackServerContext* context, const api::DecomposeInstructionRequest* request,
+    api::DecomposeInstructionResponse* response) {
   return Reply(context, hub_->Decompose(*request),
                [&](api::DecomposeInstructionResponse r) { *response = std::move(r); });
 }
 
-grpc::ServerUnaryReactor* OperatorServiceImpl::ResolveTarget(grpc::CallbackServerContext* context,
-                                                             const api::ResolveTargetRequest* request,
-                                                             api::ResolveTargetResponse* response) {
+grpc::ServerUnaryReactor* OperatorServiceImpl::ResolveTarget(
+    grpc::CallbackServerContext* context, const api::ResolveTargetRequest* request,
+    api::ResolveTargetResponse* response) {
   absl::StatusOr<api::ResolveTargetResponse> fast = hub_->ResolveTarget(*request);
   if (!fast.ok() || !hub_->WantsSlowPath(*request, *fast)) {
-    return Reply(context, std::move(fast), [&](api::ResolveTargetResponse r) { *response = std::move(r); });
+    return Reply(context, std::move(fast),
+                 [&](api::ResolveTargetResponse r) { *response = std::move(r); });
   }
   // The model answers later on another thread; the reactor finishes then (no thread waits).
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  hub_->ResolveSlow(*request, *std::move(fast), [reactor, response](absl::StatusOr<api::ResolveTargetResponse> r) {
-    if (r.ok()) *response = *std::move(r);
-    reactor->Finish(ToGrpcStatus(r.status()));
-  });
+  hub_->ResolveSlow(*request, *std::move(fast),
+                    [reactor, response](absl::StatusOr<api::ResolveTargetResponse> r) {
+                      if (r.ok()) *response = *std::move(r);
+                      reactor->Finish(ToGrpcStatus(r.status()));
+                    });
   return reactor;
 }
 

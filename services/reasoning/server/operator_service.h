@@ -15,22 +15,28 @@ class OperatorServiceImpl : public api::OperatorService::CallbackService {
   grpc::ServerUnaryReactor* SubmitInstruction(grpc::CallbackServerContext* context,
                                               const api::SubmitInstructionRequest* request,
                                               api::SubmitInstructionResponse* response) override;
-  grpc::ServerUnaryReactor* GetTask(grpc::CallbackServerContext* context, const api::GetTaskRequest* request,
+  grpc::ServerUnaryReactor* GetTask(grpc::CallbackServerContext* context,
+                                    const api::GetTaskRequest* request,
                                     api::GetTaskResponse* response) override;
-  grpc::ServerUnaryReactor* ListTasks(grpc::CallbackServerContext* context, const api::ListTasksRequest* request,
+  grpc::ServerUnaryReactor* ListTasks(grpc::CallbackServerContext* context,
+                                      const api::ListTasksRequest* request,
                                       api::ListTasksResponse* response) override;
-  grpc::ServerWriteReactor<api::WatchTaskResponse>* WatchTask(grpc::CallbackServerContext* context,
-                                                              const api::WatchTaskRequest* request) override;
-  grpc::ServerUnaryReactor* CancelTask(grpc::CallbackServerContext* context, const api::CancelTaskRequest* request,
+  grpc::ServerWriteReactor<api::WatchTaskResponse>* WatchTask(
+      grpc::CallbackServerContext* context, const api::WatchTaskRequest* request) override;
+  grpc::ServerUnaryReactor* CancelTask(grpc::CallbackServerContext* context,
+                                       const api::CancelTaskRequest* request,
                                        api::CancelTaskResponse* response) override;
-  grpc::ServerUnaryReactor* PauseTask(grpc::CallbackServerContext* context, const api::PauseTaskRequest* request,
+  grpc::ServerUnaryReactor* PauseTask(grpc::CallbackServerContext* context,
+                                      const api::PauseTaskRequest* request,
                                       api::PauseTaskResponse* response) override;
-  grpc::ServerUnaryReactor* ResumeTask(grpc::CallbackServerContext* context, const api::ResumeTaskRequest* request,
+  grpc::ServerUnaryReactor* ResumeTask(grpc::CallbackServerContext* context,
+                                       const api::ResumeTaskRequest* request,
                                        api::ResumeTaskResponse* response) override;
   grpc::ServerUnaryReactor* AcquireLease(grpc::CallbackServerContext* context,
                                          const api::AcquireLeaseRequest* request,
                                          api::AcquireLeaseResponse* response) override;
-  grpc::ServerUnaryReactor* RenewLease(grpc::CallbackServerContext* context, const api::RenewLeaseRequest* request,
+  grpc::ServerUnaryReactor* RenewLease(grpc::CallbackServerContext* context,
+                                       const api::RenewLeaseRequest* request,
                                        api::RenewLeaseResponse* response) override;
   grpc::ServerUnaryReactor* ReleaseLease(grpc::CallbackServerContext* context,
                                          const api::ReleaseLeaseRequest* request,
@@ -42,17 +48,21 @@ class OperatorServiceImpl : public api::OperatorService::CallbackService {
                                                const api::ClearEmergencyStopRequest* request,
                                                api::ClearEmergencyStopResponse* response) override;
   grpc::ServerWriteReactor<api::StreamFastTelemetryResponse>* StreamFastTelemetry(
-      grpc::CallbackServerContext* context, const api::StreamFastTelemetryRequest* request) override;
+      grpc::CallbackServerContext* context,
+      const api::StreamFastTelemetryRequest* request) override;
   grpc::ServerWriteReactor<api::StreamSlowTelemetryResponse>* StreamSlowTelemetry(
-      grpc::CallbackServerContext* context, const api::StreamSlowTelemetryRequest* request) override;
+      grpc::CallbackServerContext* context,
+      const api::StreamSlowTelemetryRequest* request) override;
   grpc::ServerWriteReactor<api::StreamEventsResponse>* StreamEvents(
       grpc::CallbackServerContext* context, const api::StreamEventsRequest* request) override;
-  grpc::ServerUnaryReactor* ListEvents(grpc::CallbackServerContext* context, const api::ListEventsRequest* request,
+  grpc::ServerUnaryReactor* ListEvents(grpc::CallbackServerContext* context,
+                                       const api::ListEventsRequest* request,
                                        api::ListEventsResponse* response) override;
-  grpc::ServerUnaryReactor* DecomposeInstruction(grpc::CallbackServerContext* context,
-                                                 const api::DecomposeInstructionRequest* request,
-                                                 api::DecomposeInstructionResponse* response) override;
-  grpc::ServerUnaryReactor* ResolveTarget(grpc::CallbackServerContext* context, const api::ResolveTargetRequest* request,
+  grpc::ServerUnaryReactor* DecomposeInstruction(
+      grpc::CallbackServerContext* context, const api::DecomposeInstructionRequest* request,
+      api::DecomposeInstructionResponse* response) override;
+  grpc::ServerUnaryReactor* ResolveTarget(grpc::CallbackServerContext* context,
+                                          const api::ResolveTargetRequest* request,
                                           api::ResolveTargetResponse* response) override;
   grpc::ServerUnaryReactor* RelocalizeRobot(grpc::CallbackServerContext* context,
                                             const api::RelocalizeRobotRequest* request,

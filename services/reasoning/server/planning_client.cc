@@ -1,8 +1,8 @@
 #include "services/reasoning/server/planning_client.h"
 
-#include <chrono>
-
 #include <grpcpp/client_context.h>
+
+#include <chrono>
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
@@ -46,10 +46,14 @@ absl::Status Unavailable(const char* call, const grpc::Status& status) {
 // The one place a core strategy becomes planning's proto enum.
 pb::ExplorationStrategy ToProto(ExplorationStrategy strategy) {
   switch (strategy) {
-    case ExplorationStrategy::kNearestFrontier: return pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER;
-    case ExplorationStrategy::kCoverageMax: return pb::EXPLORATION_STRATEGY_COVERAGE_MAX;
-    case ExplorationStrategy::kSemanticFrontier: return pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER;
-    case ExplorationStrategy::kEroiUtility: return pb::EXPLORATION_STRATEGY_EROI_UTILITY;
+    case ExplorationStrategy::kNearestFrontier:
+      return pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER;
+    case ExplorationStrategy::kCoverageMax:
+      return pb::EXPLORATION_STRATEGY_COVERAGE_MAX;
+    case ExplorationStrategy::kSemanticFrontier:
+      return pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER;
+    case ExplorationStrategy::kEroiUtility:
+      return pb::EXPLORATION_STRATEGY_EROI_UTILITY;
   }
   return pb::EXPLORATION_STRATEGY_UNSPECIFIED;
 }
@@ -69,7 +73,9 @@ void AddEroiValues(const ExplorationContext& context, pb::SelectExplorationGoalR
 }
 
 PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings)
-    : channel_(channel), stub_(pb::PlanningService::NewStub(channel)), settings_(std::move(settings)) {
+    : channel_(channel),
+      stub_(pb::PlanningService::NewStub(channel)),
+      settings_(std::move(settings)) {
   channel_->GetState(/*try_to_connect=*/true);
 }
 
@@ -96,7 +102,8 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   SetPose(query.goal, request.mutable_goal());
   request.set_planner(query.multi_modal ? pb::PLANNER_KIND_JUMP_ASTAR : pb::PLANNER_KIND_JPS);
   request.set_goal_tolerance_m(settings_.goal_tolerance_m);
-  request.set_keep_clearance(true);  // the robot's path keeps away from obstacles (planning.clearance)
+  request.set_keep_clearance(
+      true);  // the robot's path keeps away from obstacles (planning.clearance)
   if (query.alternative_from.has_value()) {
     request.set_allow_alternative_point(true);
     SetPose(*query.alternative_from, request.mutable_first_sighting());
@@ -115,13 +122,15 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
     const std::optional<pb::PlanFailureDetail> detail =
         status.ok() ? std::nullopt : GetDetail<pb::PlanFailureDetail>(status);
     reason = detail.has_value() ? detail->reason() : pb::PLAN_FAILURE_REASON_UNSPECIFIED;
-    const bool footprint_may_help =
-        reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED || reason == pb::PLAN_FAILURE_REASON_NO_PATH;
+    const bool footprint_may_help = reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED ||
+                                    reason == pb::PLAN_FAILURE_REASON_NO_PATH;
     if (!footprint_may_help || query.clearance_m <= 0.0) break;
   }
   if (!status.ok()) {
-    if (reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED) return absl::FailedPreconditionError(status.error_message());
-    if (reason == pb::PLAN_FAILURE_REASON_NO_PATH) return absl::NotFoundError(status.error_message());
+    if (reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED)
+      return absl::FailedPreconditionError(status.error_message());
+    if (reason == pb::PLAN_FAILURE_REASON_NO_PATH)
+      return absl::NotFoundError(status.error_message());
     if (DependencyGone(status)) return Unavailable("PlanPath", status);
     LogWarning("planning_failed", {{"code", static_cast<int>(status.error_code())},
                                    {"message", status.error_message()},
@@ -133,7 +142,8 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   }
   std::vector<Eigen::Vector3d> path;
   path.reserve(static_cast<std::size_t>(response.path_size()));
-  for (const common::v1::Pose2D& point : response.path()) path.emplace_back(point.x(), point.y(), query.goal.z());
+  for (const common::v1::Pose2D& point : response.path())
+    path.emplace_back(point.x(), point.y(), query.goal.z());
   return path;
 }
 
@@ -148,9 +158,9 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::ExplorationGoal(const Exploratio
   return SelectGoal(query, std::nullopt, ExplorationContext{});
 }
 
-absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuery& query,
-                                                           std::optional<ExplorationStrategy> strategy,
-                                                           const ExplorationContext& context) {
+absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
+    const ExplorationQuery& query, std::optional<ExplorationStrategy> strategy,
+    const ExplorationContext& context) {
   if (absl::Status ready = Ready("SelectExplorationGoal"); !ready.ok()) return ready;
   const RobotPose& pose = query.pose;
   pb::SelectExplorationGoalRequest request;
@@ -167,10 +177,13 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuer
     object->set_relation(hint.relation);
     object->set_cooccurrence(hint.cooccurrence);
   }
-  for (const Eigen::Vector3d& place : context.visited) SetPose(place, request.mutable_semantics()->add_visited());
-  const bool eroi_values = chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
+  for (const Eigen::Vector3d& place : context.visited)
+    SetPose(place, request.mutable_semantics()->add_visited());
+  const bool eroi_values =
+      chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
   if (eroi_values) AddEroiValues(context, &request);
-  for (const Eigen::Vector3d& goal : query.excluded_goals) SetPose(goal, request.add_excluded_goals());
+  for (const Eigen::Vector3d& goal : query.excluded_goals)
+    SetPose(goal, request.add_excluded_goals());
   request.set_excluded_radius_m(query.excluded_radius_m);
   if (context.search_area.has_value()) {
     pb::SearchArea* area = request.mutable_search_area();
@@ -184,14 +197,16 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(const ExplorationQuer
   if (eroi_values && status.error_code() == grpc::StatusCode::INVALID_ARGUMENT) {
     // Our grid and planning's disagree (eroi.delta != planning's eroi_size_m): explore on
     // planning's uniform values rather than not at all.
-    LogWarning("eroi_values_rejected", {{"message", status.error_message()}, {"fallback", "uniform values"}});
+    LogWarning("eroi_values_rejected",
+               {{"message", status.error_message()}, {"fallback", "uniform values"}});
     request.mutable_source()->mutable_live_map()->Clear();
     request.clear_eroi_semantic_values();
     status = Select(request, &response);
   }
   if (DependencyGone(status)) return Unavailable("SelectExplorationGoal", status);
   if (!status.ok()) {
-    return absl::NotFoundError(absl::StrCat("no exploration goal from planning: ", status.error_message()));
+    return absl::NotFoundError(
+        absl::StrCat("no exploration goal from planning: ", status.error_message()));
   }
   return Eigen::Vector3d(response.goal().x(), response.goal().y(), pose.position.z());
 }

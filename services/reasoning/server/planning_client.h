@@ -10,9 +10,9 @@
 // planner answers UNAVAILABLE (the task retries), instead of blocking gRPC threads.
 #pragma once
 
-#include <memory>
-
 #include <grpcpp/channel.h>
+
+#include <memory>
 
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/reasoning/core/navigation_interfaces.h"
@@ -22,7 +22,8 @@
 namespace semnav::reasoning {
 
 // EROI_UTILITY: the live-map window whose EROIs are the context's columns, and their values.
-void AddEroiValues(const ExplorationContext& context, planning::v1::SelectExplorationGoalRequest* request);
+void AddEroiValues(const ExplorationContext& context,
+                   planning::v1::SelectExplorationGoalRequest* request);
 
 // SelectGoal sends the task's SemanticContext (SEMANTIC_FRONTIER's language and grounding inputs);
 // ExplorationGoal without a task asks with the configured strategy and no context.

@@ -30,13 +30,15 @@ class RecordingPlanning final : public pb::PlanningService::Service {
     if (failure.ok()) *response->add_path() = request->goal();
     return failure;
   }
-  grpc::Status SelectExplorationGoal(grpc::ServerContext*, const pb::SelectExplorationGoalRequest* request,
+  grpc::Status SelectExplorationGoal(grpc::ServerContext*,
+                                     const pb::SelectExplorationGoalRequest* request,
                                      pb::SelectExplorationGoalResponse* response) override {
     absl::MutexLock lock(&mu);
     requests.push_back(*request);
     if (!failure.ok()) return failure;
     if (refuse_values && request->eroi_semantic_values_size() > 0) {
-      return grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, "eroi_semantic_values has 2 values; this grid has 6");
+      return grpc::Status(grpc::StatusCode::INVALID_ARGUMENT,
+                          "eroi_semantic_values has 2 values; this grid has 6");
     }
     response->mutable_goal()->set_x(4.0);
     response->mutable_goal()->set_y(-1.0);
@@ -58,8 +60,10 @@ class GatewayPlanningClientTest : public ::testing::Test {
     builder.AddListeningPort("127.0.0.1:0", grpc::InsecureServerCredentials(), &port);
     builder.RegisterService(&planning_);
     server_ = builder.BuildAndStart();
-    auto channel = grpc::CreateChannel("127.0.0.1:" + std::to_string(port), grpc::InsecureChannelCredentials());
-    ASSERT_TRUE(channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(5)));
+    auto channel = grpc::CreateChannel("127.0.0.1:" + std::to_string(port),
+                                       grpc::InsecureChannelCredentials());
+    ASSERT_TRUE(
+        channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(5)));
     const PlanningSettings settings;  // SEMANTIC_FRONTIER by default, 2 s deadline
     client_ = std::make_unique<PlanningClient>(channel, settings);
   }
@@ -78,7 +82,8 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   RobotPose pose;
   pose.position = Eigen::Vector3d(1.0, 2.0, 0.3);
   const ExplorationQuery query{pose, {Eigen::Vector3d(5.0, 6.0, 0.3)}, 1.5};
-  absl::StatusOr<Eigen::Vector3d> goal = client_->SelectGoal(query, ExplorationStrategy::kCoverageMax, context);
+  absl::StatusOr<Eigen::Vector3d> goal =
+      client_->SelectGoal(query, ExplorationStrategy::kCoverageMax, context);
   ASSERT_TRUE(goal.ok()) << goal.status();
   EXPECT_TRUE(goal->isApprox(Eigen::Vector3d(4.0, -1.0, 0.3)));  // z stays the robot's
 
@@ -86,7 +91,8 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   ASSERT_EQ(planning_.requests.size(), 1u);
   const pb::SelectExplorationGoalRequest& request = planning_.requests[0];
   EXPECT_EQ(request.strategy(), pb::EXPLORATION_STRATEGY_COVERAGE_MAX);
-  ASSERT_EQ(request.excluded_goals_size(), 1);  // spent goals reach planning with the task's context
+  ASSERT_EQ(request.excluded_goals_size(),
+            1);  // spent goals reach planning with the task's context
   EXPECT_EQ(request.excluded_goals(0).x(), 5.0);
   EXPECT_EQ(request.excluded_goals(0).y(), 6.0);
   EXPECT_EQ(request.excluded_radius_m(), 1.5);
@@ -191,7 +197,8 @@ TEST_F(GatewayPlanningClientTest, NoPathWithTheClearanceIsRetriedWithTheBareFoot
     absl::MutexLock lock(&planning_.mu);
     planning_.no_path_above_m = 0.3;
   }
-  const PathQuery query{Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.25, 0.15, std::nullopt};
+  const PathQuery query{
+      Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.25, 0.15, std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> planned = client_->Plan(query);
   ASSERT_TRUE(planned.ok()) << planned.status();
   ASSERT_EQ(planned->size(), 1u);

@@ -50,7 +50,8 @@ api::Subgoal ToProto(const Subgoal& subgoal) {
   return out;
 }
 
-api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id, const std::string& task_id) {
+api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id,
+                          const std::string& task_id) {
   api::RobotCommand out;
   out.set_command_id(session_command_id);
   out.set_task_id(task_id);
@@ -61,7 +62,8 @@ api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_
       SetVector(command.goal, navigate->mutable_goal());
       navigate->set_goal_yaw(command.goal_yaw);
       navigate->set_max_speed_mps(command.max_speed);
-      for (const Eigen::Vector3d& point : command.path) SetVector(point, navigate->add_path()->mutable_position());
+      for (const Eigen::Vector3d& point : command.path)
+        SetVector(point, navigate->add_path()->mutable_position());
       break;
     }
     case CommandKind::kRotate:
@@ -81,7 +83,8 @@ api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_
 api::Event ToProto(const LoggedEvent& event) {
   api::Event out;
   out.set_event_id(event.id);
-  *out.mutable_time() = google::protobuf::util::TimeUtil::NanosecondsToTimestamp(absl::ToUnixNanos(event.time));
+  *out.mutable_time() =
+      google::protobuf::util::TimeUtil::NanosecondsToTimestamp(absl::ToUnixNanos(event.time));
   out.set_kind(static_cast<api::EventKind>(event.kind));
   out.set_robot_id(event.robot_id);
   out.set_task_id(event.task_id);
@@ -91,30 +94,42 @@ api::Event ToProto(const LoggedEvent& event) {
 
 api::TaskStatus ToProto(TaskState state) {
   switch (state) {
-    case TaskState::kRunning: return api::TASK_STATUS_RUNNING;
-    case TaskState::kPaused: return api::TASK_STATUS_PAUSED;
-    case TaskState::kSucceeded: return api::TASK_STATUS_SUCCEEDED;
-    case TaskState::kFailed: return api::TASK_STATUS_FAILED;
-    case TaskState::kCancelled: return api::TASK_STATUS_CANCELLED;
+    case TaskState::kRunning:
+      return api::TASK_STATUS_RUNNING;
+    case TaskState::kPaused:
+      return api::TASK_STATUS_PAUSED;
+    case TaskState::kSucceeded:
+      return api::TASK_STATUS_SUCCEEDED;
+    case TaskState::kFailed:
+      return api::TASK_STATUS_FAILED;
+    case TaskState::kCancelled:
+      return api::TASK_STATUS_CANCELLED;
   }
   return api::TASK_STATUS_UNSPECIFIED;
 }
 
 api::ResolutionPath ToProto(ResolutionPath path) {
   switch (path) {
-    case ResolutionPath::kFast: return api::RESOLUTION_PATH_FAST;
-    case ResolutionPath::kSlow: return api::RESOLUTION_PATH_SLOW;
+    case ResolutionPath::kFast:
+      return api::RESOLUTION_PATH_FAST;
+    case ResolutionPath::kSlow:
+      return api::RESOLUTION_PATH_SLOW;
   }
   return api::RESOLUTION_PATH_UNSPECIFIED;
 }
 
 std::optional<ExplorationStrategy> StrategyFromProto(api::ExplorationStrategy strategy) {
   switch (strategy) {
-    case api::EXPLORATION_STRATEGY_NEAREST_FRONTIER: return ExplorationStrategy::kNearestFrontier;
-    case api::EXPLORATION_STRATEGY_COVERAGE_MAX: return ExplorationStrategy::kCoverageMax;
-    case api::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER: return ExplorationStrategy::kSemanticFrontier;
-    case api::EXPLORATION_STRATEGY_EROI_UTILITY: return ExplorationStrategy::kEroiUtility;
-    default: return std::nullopt;
+    case api::EXPLORATION_STRATEGY_NEAREST_FRONTIER:
+      return ExplorationStrategy::kNearestFrontier;
+    case api::EXPLORATION_STRATEGY_COVERAGE_MAX:
+      return ExplorationStrategy::kCoverageMax;
+    case api::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER:
+      return ExplorationStrategy::kSemanticFrontier;
+    case api::EXPLORATION_STRATEGY_EROI_UTILITY:
+      return ExplorationStrategy::kEroiUtility;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -159,7 +174,8 @@ RobotPose FromProto(const common::v1::Pose& p) {
   RobotPose pose;
   pose.position = Eigen::Vector3d(p.position().x(), p.position().y(), p.position().z());
   const common::v1::Quaternion& q = p.orientation();
-  pose.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
+  pose.yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()),
+                        1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
   return pose;
 }
 
@@ -191,10 +207,14 @@ api::SearchArea ToProto(const SearchArea& area) {
 
 std::optional<RobotFeedback> FromProto(api::FeedbackKind kind) {
   switch (kind) {
-    case api::FEEDBACK_KIND_GOAL_REACHED: return RobotFeedback::kGoalReached;
-    case api::FEEDBACK_KIND_FAILED: return RobotFeedback::kFailed;
-    case api::FEEDBACK_KIND_BLOCKED: return RobotFeedback::kBlocked;
-    default: return std::nullopt;
+    case api::FEEDBACK_KIND_GOAL_REACHED:
+      return RobotFeedback::kGoalReached;
+    case api::FEEDBACK_KIND_FAILED:
+      return RobotFeedback::kFailed;
+    case api::FEEDBACK_KIND_BLOCKED:
+      return RobotFeedback::kBlocked;
+    default:
+      return std::nullopt;
   }
 }
 

@@ -4,10 +4,10 @@
 #include <optional>
 #include <string>
 
+#include "absl/status/statusor.h"
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "semnav/reasoning/v1/robot_session.pb.h"
 #include "semnav/reasoning/v1/task.pb.h"
-#include "absl/status/statusor.h"
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/exploration_strategy.h"
@@ -23,7 +23,8 @@ namespace api = ::semnav::reasoning::v1;
 api::TargetSpec ToProto(const TargetSpec& target);
 TargetSpec FromProto(const api::TargetSpec& target);
 api::Subgoal ToProto(const Subgoal& subgoal);
-api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id, const std::string& task_id);
+api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id,
+                          const std::string& task_id);
 api::Event ToProto(const LoggedEvent& event);
 api::TaskStatus ToProto(TaskState state);
 // The operator's TaskSnapshot (the only place a task becomes a message).

@@ -2,9 +2,9 @@
 // written one at a time; Close finishes the call after the queue drains.
 #pragma once
 
-#include <deque>
-
 #include <grpcpp/support/status.h>
+
+#include <deque>
 
 #include "absl/synchronization/mutex.h"
 #include "services/reasoning/server/stream_sink.h"

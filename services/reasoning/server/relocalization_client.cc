@@ -1,8 +1,8 @@
 #include "services/reasoning/server/relocalization_client.h"
 
-#include <chrono>
-
 #include <grpcpp/client_context.h>
+
+#include <chrono>
 
 #include "services/common/status/grpc_status.h"
 #include "services/reasoning/server/proto_convert.h"
@@ -41,8 +41,9 @@ RelocalizationAnswer FromRelocalizeResponse(const reloc_api::RelocalizeResponse&
 RelocalizationClient::RelocalizationClient(std::shared_ptr<grpc::Channel> channel, int deadline_ms)
     : stub_(reloc_api::RelocalizationService::NewStub(channel)), deadline_ms_(deadline_ms) {}
 
-void RelocalizationClient::Relocalize(const std::string& map_id, const std::vector<ObservedObject>& observed,
-                                      std::function<void(absl::StatusOr<RelocalizationAnswer>)> done) {
+void RelocalizationClient::Relocalize(
+    const std::string& map_id, const std::vector<ObservedObject>& observed,
+    std::function<void(absl::StatusOr<RelocalizationAnswer>)> done) {
   struct Call {
     grpc::ClientContext context;
     reloc_api::RelocalizeRequest request;
@@ -50,7 +51,8 @@ void RelocalizationClient::Relocalize(const std::string& map_id, const std::vect
   };
   auto call = std::make_shared<Call>();
   call->request = ToRelocalizeRequest(map_id, observed);
-  call->context.set_deadline(std::chrono::system_clock::now() + std::chrono::milliseconds(deadline_ms_));
+  call->context.set_deadline(std::chrono::system_clock::now() +
+                             std::chrono::milliseconds(deadline_ms_));
   stub_->async()->Relocalize(&call->context, &call->request, &call->response,
                              [call, done = std::move(done)](grpc::Status status) {
                                if (!status.ok()) {

@@ -3,12 +3,12 @@
 // map -> odom answer. Calls run asynchronously (gRPC callback API); `done` runs on gRPC's thread.
 #pragma once
 
+#include <grpcpp/channel.h>
+
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <grpcpp/channel.h>
 
 #include "absl/status/statusor.h"
 #include "semnav/relocalization/v1/relocalization.grpc.pb.h"
@@ -25,9 +25,10 @@ class Relocalizer {
 };
 
 // Request and answer conversions, shared by the client and its tests.
-semnav::relocalization::v1::RelocalizeRequest ToRelocalizeRequest(const std::string& map_id,
-                                                                   const std::vector<ObservedObject>& observed);
-RelocalizationAnswer FromRelocalizeResponse(const semnav::relocalization::v1::RelocalizeResponse& response);
+semnav::relocalization::v1::RelocalizeRequest ToRelocalizeRequest(
+    const std::string& map_id, const std::vector<ObservedObject>& observed);
+RelocalizationAnswer FromRelocalizeResponse(
+    const semnav::relocalization::v1::RelocalizeResponse& response);
 
 class RelocalizationClient : public Relocalizer {
  public:

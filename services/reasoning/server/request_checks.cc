@@ -221,7 +221,8 @@ absl::Status Validate(const api::SessionHello& hello) {
 
 absl::Status Validate(const api::CommandFeedback& feedback) {
   // Every door refuses numbers it does not know, enums included (as planning does).
-  if (!api::FeedbackKind_IsValid(feedback.kind())) return InvalidField("feedback.kind", "unknown kind");
+  if (!api::FeedbackKind_IsValid(feedback.kind()))
+    return InvalidField("feedback.kind", "unknown kind");
   return CheckLength(feedback.detail(), "feedback.detail", kMaxTextBytes);
 }
 
@@ -263,7 +264,8 @@ absl::StatusOr<RobotPose> ValidatedPose(const api::RobotState& state) {
     return InvalidField("state.mode", absl::StrCat("unknown mode ", state.mode()));
   }
   if (!api::LocalizationStatus_IsValid(state.localization())) {
-    return InvalidField("state.localization", absl::StrCat("unknown status ", state.localization()));
+    return InvalidField("state.localization",
+                        absl::StrCat("unknown status ", state.localization()));
   }
   // In [0, 1]; any negative value means unknown.
   const double lowest = std::numeric_limits<double>::lowest();

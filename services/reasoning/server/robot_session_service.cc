@@ -8,11 +8,15 @@
 namespace semnav::reasoning {
 namespace {
 
-// Reads hello, then states, feedback and camera frames; the hub writes commands through the queued writer.
+// Reads hello, then states, feedback and camera frames; the hub writes commands through the queued
+// writer.
 class SessionReactor
-    : public QueuedWriter<grpc::ServerBidiReactor<api::ConnectRequest, api::ConnectResponse>, api::ConnectResponse> {
+    : public QueuedWriter<grpc::ServerBidiReactor<api::ConnectRequest, api::ConnectResponse>,
+                          api::ConnectResponse> {
  public:
-  explicit SessionReactor(std::shared_ptr<GatewayHub> hub) : hub_(std::move(hub)) { StartRead(&request_); }
+  explicit SessionReactor(std::shared_ptr<GatewayHub> hub) : hub_(std::move(hub)) {
+    StartRead(&request_);
+  }
 
   void OnReadDone(bool ok) override {
     if (!ok) {  // the robot closed its side or the call ended
@@ -38,7 +42,8 @@ class SessionReactor
   absl::Status Handle() {
     if (!open_) {
       if (!request_.has_hello()) {
-        return FieldError(absl::StatusCode::kInvalidArgument, "hello", "the first message must be a hello");
+        return FieldError(absl::StatusCode::kInvalidArgument, "hello",
+                          "the first message must be a hello");
       }
       absl::StatusOr<api::SessionAccepted> accepted = hub_->OpenSession(request_.hello(), this);
       open_ = accepted.ok();
@@ -60,7 +65,8 @@ class SessionReactor
         }
         return absl::OkStatus();
       case api::ConnectRequest::kHello:
-        return FieldError(absl::StatusCode::kInvalidArgument, "hello", "only the first message may be a hello");
+        return FieldError(absl::StatusCode::kInvalidArgument, "hello",
+                          "only the first message may be a hello");
       case api::ConnectRequest::BODY_NOT_SET:
         break;
     }
@@ -74,8 +80,8 @@ class SessionReactor
 
 }  // namespace
 
-grpc::ServerBidiReactor<api::ConnectRequest, api::ConnectResponse>* RobotSessionServiceImpl::Connect(
-    grpc::CallbackServerContext*) {
+grpc::ServerBidiReactor<api::ConnectRequest, api::ConnectResponse>*
+RobotSessionServiceImpl::Connect(grpc::CallbackServerContext*) {
   return new SessionReactor(hub_);
 }
 

@@ -9,14 +9,22 @@ namespace mapping_api = ::semnav::mapping::v1;
 
 const char* RelationName(mapping_api::RelationKind kind) {
   switch (kind) {
-    case mapping_api::RELATION_KIND_NEAR: return "near";
-    case mapping_api::RELATION_KIND_LEFT_OF: return "left_of";
-    case mapping_api::RELATION_KIND_RIGHT_OF: return "right_of";
-    case mapping_api::RELATION_KIND_IN_FRONT_OF: return "in_front_of";
-    case mapping_api::RELATION_KIND_BEHIND: return "behind";
-    case mapping_api::RELATION_KIND_ON: return "on";
-    case mapping_api::RELATION_KIND_ABOVE: return "above";
-    default: return "";
+    case mapping_api::RELATION_KIND_NEAR:
+      return "near";
+    case mapping_api::RELATION_KIND_LEFT_OF:
+      return "left_of";
+    case mapping_api::RELATION_KIND_RIGHT_OF:
+      return "right_of";
+    case mapping_api::RELATION_KIND_IN_FRONT_OF:
+      return "in_front_of";
+    case mapping_api::RELATION_KIND_BEHIND:
+      return "behind";
+    case mapping_api::RELATION_KIND_ON:
+      return "on";
+    case mapping_api::RELATION_KIND_ABOVE:
+      return "above";
+    default:
+      return "";
   }
 }
 
@@ -61,7 +69,8 @@ bool SceneGraphMirror::Apply(const mapping_api::WatchSceneGraphResponse& update)
   if (update.has_snapshot()) {
     const mapping_api::SceneGraph& snapshot = update.snapshot();
     objects_.clear();
-    for (const mapping_api::SceneObject& object : snapshot.objects()) objects_[object.id()] = FromProto(object);
+    for (const mapping_api::SceneObject& object : snapshot.objects())
+      objects_[object.id()] = FromProto(object);
     SetRelationsAndRegions(snapshot.relations(), snapshot.regions());
     Rebuild(snapshot.revision());
     return true;
@@ -69,7 +78,8 @@ bool SceneGraphMirror::Apply(const mapping_api::WatchSceneGraphResponse& update)
   const mapping_api::SceneGraphDelta& delta = update.delta();
   if (delta.from_revision() != graph_.revision) return false;
   for (uint64_t id : delta.removed_object_ids()) objects_.erase(id);
-  for (const mapping_api::SceneObject& object : delta.upserted_objects()) objects_[object.id()] = FromProto(object);
+  for (const mapping_api::SceneObject& object : delta.upserted_objects())
+    objects_[object.id()] = FromProto(object);
   SetRelationsAndRegions(delta.relations(), delta.regions());
   Rebuild(delta.revision());
   return true;

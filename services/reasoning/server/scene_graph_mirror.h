@@ -19,8 +19,9 @@ class SceneGraphMirror {
   const SceneGraph& graph() const { return graph_; }
 
  private:
-  void SetRelationsAndRegions(const google::protobuf::RepeatedPtrField<mapping::v1::Relation>& relations,
-                              const google::protobuf::RepeatedPtrField<mapping::v1::Region>& regions);
+  void SetRelationsAndRegions(
+      const google::protobuf::RepeatedPtrField<mapping::v1::Relation>& relations,
+      const google::protobuf::RepeatedPtrField<mapping::v1::Region>& regions);
   void Rebuild(uint64_t revision);
 
   std::map<uint64_t, SceneObject> objects_;

@@ -9,7 +9,6 @@
 #include <optional>
 
 #include "absl/functional/function_ref.h"
-
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/navigation_interfaces.h"
@@ -35,7 +34,8 @@ class TaskPlanner final : public PathPlanner {
   // `explorer` may be null (no planning service: the shared planner's exploration fallback).
   // `context` is called for every exploration goal, on the caller's thread, before the call.
   // `strategy`: nullopt = the configured default.
-  TaskPlanner(PathPlanner* paths, ExplorationService* explorer, std::optional<ExplorationStrategy> strategy,
+  TaskPlanner(PathPlanner* paths, ExplorationService* explorer,
+              std::optional<ExplorationStrategy> strategy,
               std::function<ExplorationContext()> context, RemoteCallRunner remote = nullptr)
       : paths_(paths),
         explorer_(explorer),

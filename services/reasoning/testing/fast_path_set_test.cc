@@ -4,8 +4,8 @@
 #include "gtest/gtest.h"
 #include "services/reasoning/core/fast_resolver.h"
 #include "services/reasoning/core/task_decomposer.h"
-#include "services/reasoning/testing/test_lexicon.h"
 #include "services/reasoning/testing/fixture.h"
+#include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -17,7 +17,8 @@ TEST(GatewayFastPathSetTest, EveryInstructionResolvesAsExpected) {
       testing::LoadInstructionSet(testing::FastPathInstructionsPath());
   ASSERT_TRUE(cases.ok()) << cases.status();
   ASSERT_EQ(cases->size(), 32u);
-  TaskDecomposer decomposer(InstructionParser(&ShippedLexicon(), *TextSegmenter::Create()), DecomposerConfig{});
+  TaskDecomposer decomposer(InstructionParser(&ShippedLexicon(), *TextSegmenter::Create()),
+                            DecomposerConfig{});
   FastResolver resolver(&ShippedLexicon(), FastResolverConfig{});
   int fast = 0;
   for (const testing::InstructionCase& c : *cases) {
@@ -26,12 +27,13 @@ TEST(GatewayFastPathSetTest, EveryInstructionResolvesAsExpected) {
     ASSERT_NE(target, nullptr) << c.instruction;
     const FastResolution resolution = resolver.Resolve(*target, *scene, {}, {});
     if (c.expected_object.has_value()) {
-      ASSERT_TRUE(resolution.accepted) << c.instruction << " best fused "
-                                       << (resolution.best ? resolution.best->fused : 0.0);
+      ASSERT_TRUE(resolution.accepted)
+          << c.instruction << " best fused " << (resolution.best ? resolution.best->fused : 0.0);
       EXPECT_EQ(resolution.best->object_id, *c.expected_object) << c.instruction;
       ++fast;
     } else {
-      EXPECT_FALSE(resolution.accepted) << c.instruction << " picked " << resolution.best->object_id;
+      EXPECT_FALSE(resolution.accepted)
+          << c.instruction << " picked " << resolution.best->object_id;
     }
   }
   EXPECT_EQ(fast, 26);  // fast_path_ratio = 26 / 32 = 0.8125

@@ -62,13 +62,15 @@ absl::StatusOr<std::vector<InstructionCase>> LoadInstructionSet(const std::strin
   for (std::string line; std::getline(lines, line);) {
     if (line.empty() || line.front() == '#') continue;
     const std::size_t tab = line.find('\t');
-    if (tab == std::string::npos) return absl::InvalidArgumentError(absl::StrCat(path, ": missing tab in '", line, "'"));
+    if (tab == std::string::npos)
+      return absl::InvalidArgumentError(absl::StrCat(path, ": missing tab in '", line, "'"));
     InstructionCase c;
     c.instruction = line.substr(0, tab);
     const std::string expected = line.substr(tab + 1);
     if (expected != "-") {
       int64_t id = 0;
-      if (!absl::SimpleAtoi(expected, &id)) return absl::InvalidArgumentError(absl::StrCat(path, ": bad id '", expected, "'"));
+      if (!absl::SimpleAtoi(expected, &id))
+        return absl::InvalidArgumentError(absl::StrCat(path, ": bad id '", expected, "'"));
       c.expected_object = id;
     }
     cases.push_back(std::move(c));
@@ -77,6 +79,8 @@ absl::StatusOr<std::vector<InstructionCase>> LoadInstructionSet(const std::strin
 }
 
 std::string FastPathScenePath() { return SEMNAV_REASONING_TESTING_DIR "/fast_path_scene.json"; }
-std::string FastPathInstructionsPath() { return SEMNAV_REASONING_TESTING_DIR "/fast_path_instructions.tsv"; }
+std::string FastPathInstructionsPath() {
+  return SEMNAV_REASONING_TESTING_DIR "/fast_path_instructions.tsv";
+}
 
 }  // namespace semnav::reasoning::testing

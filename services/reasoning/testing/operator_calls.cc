@@ -1,9 +1,9 @@
 #include "services/reasoning/testing/operator_calls.h"
 
+#include <grpcpp/client_context.h>
+
 #include <chrono>
 #include <thread>
-
-#include <grpcpp/client_context.h>
 
 #include "absl/strings/str_cat.h"
 
@@ -18,11 +18,13 @@ absl::StatusOr<std::string> Submit(v1::OperatorService::Stub& stub, const std::s
   v1::SubmitInstructionResponse response;
   grpc::ClientContext context;
   const grpc::Status status = stub.SubmitInstruction(&context, request, &response);
-  if (!status.ok()) return absl::UnknownError(absl::StrCat("SubmitInstruction: ", status.error_message()));
+  if (!status.ok())
+    return absl::UnknownError(absl::StrCat("SubmitInstruction: ", status.error_message()));
   return response.task_id();
 }
 
-bool WaitUntilPoseSeen(v1::OperatorService::Stub& stub, const std::string& robot_id, int timeout_ms) {
+bool WaitUntilPoseSeen(v1::OperatorService::Stub& stub, const std::string& robot_id,
+                       int timeout_ms) {
   v1::StreamSlowTelemetryRequest request;
   request.set_robot_id(robot_id);
   request.mutable_period()->set_nanos(100'000'000);
@@ -47,7 +49,8 @@ v1::ConnectRequest PoseReport(double x, double y) {
   return state;
 }
 
-absl::StatusOr<v1::TaskSnapshot> FetchTask(v1::OperatorService::Stub& stub, const std::string& task_id) {
+absl::StatusOr<v1::TaskSnapshot> FetchTask(v1::OperatorService::Stub& stub,
+                                           const std::string& task_id) {
   v1::GetTaskRequest request;
   request.set_task_id(task_id);
   v1::GetTaskResponse response;
@@ -57,8 +60,8 @@ absl::StatusOr<v1::TaskSnapshot> FetchTask(v1::OperatorService::Stub& stub, cons
   return response.task();
 }
 
-bool WaitUntilFastResolvable(v1::OperatorService::Stub& stub, const std::string& robot_id, const std::string& text,
-                             int timeout_ms) {
+bool WaitUntilFastResolvable(v1::OperatorService::Stub& stub, const std::string& robot_id,
+                             const std::string& text, int timeout_ms) {
   for (int waited = 0; waited <= timeout_ms; waited += 25) {
     v1::ResolveTargetRequest request;
     request.set_robot_id(robot_id);

@@ -16,15 +16,17 @@ absl::StatusOr<std::string> Submit(v1::OperatorService::Stub& stub, const std::s
 
 // True once the gateway has processed a pose of `robot_id` (its topological memory has a node),
 // read from slow telemetry every 100 ms; false after `timeout_ms`.
-bool WaitUntilPoseSeen(v1::OperatorService::Stub& stub, const std::string& robot_id, int timeout_ms);
+bool WaitUntilPoseSeen(v1::OperatorService::Stub& stub, const std::string& robot_id,
+                       int timeout_ms);
 
 // A robot-session state message placing the robot at (x, y), heading +x.
 v1::ConnectRequest PoseReport(double x, double y);
 
-absl::StatusOr<v1::TaskSnapshot> FetchTask(v1::OperatorService::Stub& stub, const std::string& task_id);
+absl::StatusOr<v1::TaskSnapshot> FetchTask(v1::OperatorService::Stub& stub,
+                                           const std::string& task_id);
 
 // Polls ResolveTarget(text) every 25 ms until the fast path resolves it; false after `timeout_ms`.
-bool WaitUntilFastResolvable(v1::OperatorService::Stub& stub, const std::string& robot_id, const std::string& text,
-                             int timeout_ms);
+bool WaitUntilFastResolvable(v1::OperatorService::Stub& stub, const std::string& robot_id,
+                             const std::string& text, int timeout_ms);
 
 }  // namespace semnav::reasoning::testing

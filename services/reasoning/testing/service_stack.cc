@@ -14,18 +14,19 @@ std::string FreshDir(const std::string& name) {
   return dir;
 }
 
-absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartWithConfig(const std::string& binary,
-                                                                                 const std::string& dir,
-                                                                                 const std::string& file,
-                                                                                 const std::string& yaml) {
+absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartWithConfig(
+    const std::string& binary, const std::string& dir, const std::string& file,
+    const std::string& yaml) {
   const std::string path = dir + "/" + file;
   std::ofstream(path) << yaml;
   return semnav::testing::ServiceProcess::Start(binary, {"--config", path});
 }
 
-absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartMapping(const std::string& dir) {
-  return StartWithConfig("semnav-mapping", dir, "mapping.yaml",
-                         "mapping:\n  store_directory: " + dir + "/maps\n  watch_min_interval_ms: 20\n");
+absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartMapping(
+    const std::string& dir) {
+  return StartWithConfig(
+      "semnav-mapping", dir, "mapping.yaml",
+      "mapping:\n  store_directory: " + dir + "/maps\n  watch_min_interval_ms: 20\n");
 }
 
 }  // namespace semnav::reasoning::testing

@@ -14,12 +14,12 @@ namespace semnav::reasoning::testing {
 std::string FreshDir(const std::string& name);
 
 // Writes `yaml` to <dir>/<file> and starts `binary` with it as --config.
-absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartWithConfig(const std::string& binary,
-                                                                                 const std::string& dir,
-                                                                                 const std::string& file,
-                                                                                 const std::string& yaml);
+absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartWithConfig(
+    const std::string& binary, const std::string& dir, const std::string& file,
+    const std::string& yaml);
 
 // semnav-mapping storing maps under <dir>/maps, publishing scene-graph deltas every 20 ms.
-absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartMapping(const std::string& dir);
+absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> StartMapping(
+    const std::string& dir);
 
 }  // namespace semnav::reasoning::testing

@@ -7,12 +7,13 @@ namespace semnav::reasoning::testing {
 namespace {
 
 constexpr std::array<const char*, 16> kLabels = {
-    "chair", "couch", "dining table", "tv", "bed", "potted plant", "bottle", "cup",
-    "book", "laptop", "sink", "refrigerator", "oven", "clock", "vase", "backpack"};
+    "chair",  "couch", "dining table", "tv",   "bed",   "potted plant", "bottle",  "cup", "book",
+    "laptop", "sink",  "refrigerator", "oven", "clock", "vase",         "backpack"};
 
 std::vector<float> Embedding(int dims, int64_t seed) {
   std::vector<float> out(static_cast<std::size_t>(dims));
-  for (int i = 0; i < dims; ++i) out[static_cast<std::size_t>(i)] = static_cast<float>(((seed * 31 + i * 17) % 97) - 48);
+  for (int i = 0; i < dims; ++i)
+    out[static_cast<std::size_t>(i)] = static_cast<float>(((seed * 31 + i * 17) % 97) - 48);
   return out;
 }
 

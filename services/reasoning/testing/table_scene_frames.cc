@@ -12,11 +12,14 @@ namespace {
 
 constexpr int64_t kFrameNs = 100'000'000;
 
-mapping::CameraPose Viewpoint() { return mapping::testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}); }
+mapping::CameraPose Viewpoint() {
+  return mapping::testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0});
+}
 
 }  // namespace
 
-mapping::v1::SensorFrame LabelledFrame(int64_t stamp_ns, const std::string& label, const Eigen::Vector3d& point) {
+mapping::v1::SensorFrame LabelledFrame(int64_t stamp_ns, const std::string& label,
+                                       const Eigen::Vector3d& point) {
   mapping::v1::SensorFrame frame = mapping::testing::FrameToProto(
       mapping::testing::RenderFrame(mapping::testing::StandardRoom(), Viewpoint(), stamp_ns));
   const mapping::Intrinsics k = mapping::testing::Vga();
@@ -33,8 +36,9 @@ mapping::v1::SensorFrame LabelledFrame(int64_t stamp_ns, const std::string& labe
   return frame;
 }
 
-absl::Status StreamLabelledFrames(const std::shared_ptr<grpc::Channel>& mapping, int64_t first_index, int count,
-                                  const std::string& label, const Eigen::Vector3d& point) {
+absl::Status StreamLabelledFrames(const std::shared_ptr<grpc::Channel>& mapping,
+                                  int64_t first_index, int count, const std::string& label,
+                                  const Eigen::Vector3d& point) {
   auto stub = mapping::v1::MappingService::NewStub(mapping);
   grpc::ClientContext context;
   auto stream = stub->StreamFrames(&context);
@@ -44,12 +48,14 @@ absl::Status StreamLabelledFrames(const std::shared_ptr<grpc::Channel>& mapping,
     mapping::v1::StreamFramesResponse response;
     if (!stream->Write(request) || !stream->Read(&response)) break;
     if (!response.ack().accepted()) {
-      return absl::InternalError(absl::StrCat("frame rejected: ", response.ack().ShortDebugString()));
+      return absl::InternalError(
+          absl::StrCat("frame rejected: ", response.ack().ShortDebugString()));
     }
   }
   stream->WritesDone();
   const grpc::Status status = stream->Finish();
-  if (!status.ok()) return absl::InternalError(absl::StrCat("StreamFrames: ", status.error_message()));
+  if (!status.ok())
+    return absl::InternalError(absl::StrCat("StreamFrames: ", status.error_message()));
   return absl::OkStatus();
 }
 

@@ -1,13 +1,13 @@
 // Contract test: the real semnav-gateway binary on a loopback port, a scripted robot on the
 // session stream and an operator through the generated stubs.
+#include <grpcpp/grpcpp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <thread>
-
-#include <grpcpp/grpcpp.h>
 
 #include "gtest/gtest.h"
 #include "semnav/common/v1/errors.pb.h"
@@ -98,7 +98,8 @@ class ScriptedRobot {
 class GatewayContractTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> process = semnav::testing::ServiceProcess::Start("semnav-gateway");
+    absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> process =
+        semnav::testing::ServiceProcess::Start("semnav-gateway");
     ASSERT_TRUE(process.ok()) << process.status();
     process_ = *std::move(process);
     operator_ = api::OperatorService::NewStub(process_->channel());
@@ -164,11 +165,13 @@ TEST_F(GatewayContractTest, RobotReceivesCommandsUntilSuccessAndWatchSeesIt) {
   events_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(3));
   auto event_reader = operator_->StreamEvents(&events_context, events);
   std::vector<api::EventKind> kinds;
-  for (api::StreamEventsResponse event; kinds.empty() || kinds.back() != api::EVENT_KIND_TASK_STATUS;) {
+  for (api::StreamEventsResponse event;
+       kinds.empty() || kinds.back() != api::EVENT_KIND_TASK_STATUS;) {
     ASSERT_TRUE(event_reader->Read(&event));
     kinds.push_back(event.event().kind());
     if (kinds.back() == api::EVENT_KIND_TASK_STATUS) {
-      EXPECT_EQ(event.event().message().rfind("TASK_STATUS_SUCCEEDED", 0), 0u) << event.event().message();
+      EXPECT_EQ(event.event().message().rfind("TASK_STATUS_SUCCEEDED", 0), 0u)
+          << event.event().message();
     }
   }
   EXPECT_NE(std::find(kinds.begin(), kinds.end(), api::EVENT_KIND_TASK_CREATED), kinds.end());
@@ -215,7 +218,8 @@ TEST_F(GatewayContractTest, LeaseIdempotencyAndFieldErrors) {
   acquire.set_holder("bob");
   api::AcquireLeaseResponse bob;
   grpc::ClientContext bob_context;
-  EXPECT_EQ(operator_->AcquireLease(&bob_context, acquire, &bob).error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(operator_->AcquireLease(&bob_context, acquire, &bob).error_code(),
+            grpc::StatusCode::FAILED_PRECONDITION);
 
   api::SubmitInstructionResponse response;
   grpc::Status no_lease = Submit("req-1", "go to the kitchen", &response);
@@ -238,7 +242,8 @@ TEST_F(GatewayContractTest, LeaseIdempotencyAndFieldErrors) {
   unknown.set_task_id("task-999");
   api::GetTaskResponse ignored;
   grpc::ClientContext context;
-  EXPECT_EQ(operator_->GetTask(&context, unknown, &ignored).error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(operator_->GetTask(&context, unknown, &ignored).error_code(),
+            grpc::StatusCode::NOT_FOUND);
 }
 
 TEST_F(GatewayContractTest, EmergencyStopWinsUntilCleared) {
@@ -262,7 +267,8 @@ TEST_F(GatewayContractTest, EmergencyStopWinsUntilCleared) {
   EXPECT_EQ(Get(submitted.task_id()).status(), api::TASK_STATUS_CANCELLED);
 
   api::SubmitInstructionResponse refused;
-  EXPECT_EQ(Submit("req-2", "find the bottle", &refused).error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(Submit("req-2", "find the bottle", &refused).error_code(),
+            grpc::StatusCode::FAILED_PRECONDITION);
   api::ClearEmergencyStopRequest clear;
   clear.set_request_id("clear-1");
   clear.set_robot_id("r1");
@@ -572,11 +578,12 @@ TEST_F(GatewayContractTest, EmergencyStopOfEveryRobotSkipsDisconnectedOnes) {
 TEST(GatewayBinaryTest, UnreadablePriorPathIsAConfigError) {
   const std::string config = ::testing::TempDir() + "/gateway_bad_prior.yaml";
   std::ofstream(config) << "gateway:\n  prior_path: /nonexistent/conceptnet-data.json\n";
-  absl::StatusOr<semnav::testing::ProcessResult> run =
-      semnav::testing::RunToCompletion("semnav-gateway", {"--config", config, "--listen", "127.0.0.1:0"});
+  absl::StatusOr<semnav::testing::ProcessResult> run = semnav::testing::RunToCompletion(
+      "semnav-gateway", {"--config", config, "--listen", "127.0.0.1:0"});
   ASSERT_TRUE(run.ok()) << run.status();
   EXPECT_EQ(run->exit_code, 2) << run->output;
-  EXPECT_NE(run->output.find("prior_path: offline prior file /nonexistent/conceptnet-data.json cannot be read"),
+  EXPECT_NE(run->output.find(
+                "prior_path: offline prior file /nonexistent/conceptnet-data.json cannot be read"),
             std::string::npos)
       << run->output;
 }

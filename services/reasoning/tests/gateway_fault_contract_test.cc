@@ -3,6 +3,7 @@
 // gateway must pause the task with the robot holding and name planning in the event log, never
 // send a navigate goal while planning is dead, and resume with a planned path once planning is
 // back on the same port; or fail the task after dependency_timeout_s.
+#include <grpcpp/grpcpp.h>
 #include <signal.h>
 
 #include <chrono>
@@ -11,8 +12,6 @@
 #include <mutex>
 #include <optional>
 #include <thread>
-
-#include <grpcpp/grpcpp.h>
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
@@ -74,9 +73,10 @@ class GatewayFaultContractTest : public ::testing::Test {
   void StartStack(const std::string& executor, double journal_flush_s = 0.0) {
     dir_ = testing::FreshDir("gateway_fault_contract");
     const std::string gateway_extra =
-        journal_flush_s > 0.0 ? absl::StrCat("  state_directory: ", dir_, "/gateway_state\n  journal_flush_interval_s: ",
-                                             journal_flush_s, "\n")
-                              : "";
+        journal_flush_s > 0.0
+            ? absl::StrCat("  state_directory: ", dir_,
+                           "/gateway_state\n  journal_flush_interval_s: ", journal_flush_s, "\n")
+            : "";
     auto mapping = testing::StartMapping(dir_);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
@@ -311,11 +311,13 @@ TEST_F(GatewayFaultContractTest, GatewayKilledMidTaskKeepsTheTaskAndResumesOnThe
   const std::vector<std::string> events = EventMessages();
   ASSERT_FALSE(events.empty());
   EXPECT_EQ(events.front(), "go to the clock");  // the creation event, from before the crash
-  EXPECT_TRUE(AnyEventContains("TASK_STATUS_PAUSED: gateway_restarted")) << absl::StrJoin(events, "\n");
+  EXPECT_TRUE(AnyEventContains("TASK_STATUS_PAUSED: gateway_restarted"))
+      << absl::StrJoin(events, "\n");
 
   ASSERT_NO_FATAL_FAILURE(OpenSession());
   EXPECT_EQ(accepted_.resumed_task_id(), task_id_);
-  if (const std::optional<api::RobotCommand> early = reader_->Next(std::chrono::milliseconds(1000))) {
+  if (const std::optional<api::RobotCommand> early =
+          reader_->Next(std::chrono::milliseconds(1000))) {
     ADD_FAILURE() << "command before the robot's first state: " << early->ShortDebugString();
   }
   ASSERT_TRUE(session_->Write(testing::PoseReport(kStart.x(), kStart.y())));
@@ -325,7 +327,8 @@ TEST_F(GatewayFaultContractTest, GatewayKilledMidTaskKeepsTheTaskAndResumesOnThe
   EXPECT_EQ(running->status(), api::TASK_STATUS_RUNNING);
 }
 
-// A clean stop ends the gateway's tasks, so a fresh start keeps them as history and never drives one.
+// A clean stop ends the gateway's tasks, so a fresh start keeps them as history and never drives
+// one.
 TEST_F(GatewayFaultContractTest, GatewayStoppedCleanlyCancelsItsTasksAndKeepsThem) {
   ASSERT_NO_FATAL_FAILURE(StartStack("dependency_retry_s: 0.5, dependency_timeout_s: 60", 1.0));
   ASSERT_TRUE(NextPlannedNavigate(std::chrono::seconds(15)).has_value());
@@ -339,7 +342,8 @@ TEST_F(GatewayFaultContractTest, GatewayStoppedCleanlyCancelsItsTasksAndKeepsThe
   ASSERT_NO_FATAL_FAILURE(OpenSession());
   EXPECT_EQ(accepted_.resumed_task_id(), "");
   ASSERT_TRUE(session_->Write(testing::PoseReport(kStart.x(), kStart.y())));
-  if (const std::optional<api::RobotCommand> command = reader_->Next(std::chrono::milliseconds(1500))) {
+  if (const std::optional<api::RobotCommand> command =
+          reader_->Next(std::chrono::milliseconds(1500))) {
     ADD_FAILURE() << "a cancelled task commanded the robot: " << command->ShortDebugString();
   }
 }

@@ -2,10 +2,10 @@
 // detection, real semnav-gateway following its scene graph, a scripted robot on the session
 // stream. "go to the table" must run NAVIGATE -> APPROACH -> VERIFY (confirmed by new detections)
 // and end with a STOP within 1 m of the table.
+#include <grpcpp/grpcpp.h>
+
 #include <chrono>
 #include <thread>
-
-#include <grpcpp/grpcpp.h>
 
 #include "gtest/gtest.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
@@ -32,8 +32,9 @@ class GatewayMappingContractTest : public ::testing::Test {
     auto mapping = testing::StartMapping(dir);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
-    auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
-                                            "gateway:\n  mapping:\n    address: " + mapping_->address() + "\n");
+    auto gateway = testing::StartWithConfig(
+        "semnav-gateway", dir, "gateway.yaml",
+        "gateway:\n  mapping:\n    address: " + mapping_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
@@ -84,7 +85,8 @@ TEST_F(GatewayMappingContractTest, GoToTheTableEndsStoppedWithinOneMetre) {
   };
   report(nullptr, 0.5, 2.0);
 
-  const absl::StatusOr<std::string> task_id = testing::Submit(*operator_, "go-table", "r1", "go to the table");
+  const absl::StatusOr<std::string> task_id =
+      testing::Submit(*operator_, "go-table", "r1", "go to the table");
   ASSERT_TRUE(task_id.ok()) << task_id.status();
 
   // NAVIGATE: 1 m short of the table, facing it.

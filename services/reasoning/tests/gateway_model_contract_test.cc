@@ -4,9 +4,9 @@
 // not confident on the fast path (the clock reports no colour: fused 0.43), so the gateway asks
 // the proxy while the robot explores; the offline answer (lexical 0.9 x offline factor 0.75 =
 // 0.675 >= 0.6) makes the clock the goal, and the robot is driven to it until success.
-#include <chrono>
-
 #include <grpcpp/grpcpp.h>
+
+#include <chrono>
 
 #include "gtest/gtest.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
@@ -33,9 +33,10 @@ class GatewayModelContractTest : public ::testing::Test {
     auto proxy = semnav::testing::ServiceProcess::Start("semnav-model-proxy");
     ASSERT_TRUE(proxy.ok()) << proxy.status();
     proxy_ = *std::move(proxy);
-    auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
-                                            "gateway:\n  mapping:\n    address: " + mapping_->address() +
-                                                "\n  model_proxy:\n    address: " + proxy_->address() + "\n");
+    auto gateway =
+        testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
+                                 "gateway:\n  mapping:\n    address: " + mapping_->address() +
+                                     "\n  model_proxy:\n    address: " + proxy_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
@@ -85,7 +86,8 @@ TEST_F(GatewayModelContractTest, SlowPathThroughTheOfflineProxyDrivesTheRobotToT
   ASSERT_TRUE(session->Write(testing::PoseReport(1.5, 1.3)));
   ASSERT_TRUE(testing::WaitUntilPoseSeen(*operator_, "r1", 5000));
 
-  const absl::StatusOr<std::string> task_id = testing::Submit(*operator_, "find-red-clock", "r1", "find the red clock");
+  const absl::StatusOr<std::string> task_id =
+      testing::Submit(*operator_, "find-red-clock", "r1", "find the red clock");
   ASSERT_TRUE(task_id.ok()) << task_id.status();
 
   // The first command explores: the model's answer is not awaited.
@@ -107,8 +109,10 @@ TEST_F(GatewayModelContractTest, SlowPathThroughTheOfflineProxyDrivesTheRobotToT
   EXPECT_EQ(task->model_requests(), 1);
   EXPECT_EQ(task->model_calls(), 2);  // Complete + Embed (which the offline proxy cannot answer)
   const Eigen::Vector2d close(approach.navigate().goal().x(), approach.navigate().goal().y());
-  EXPECT_NEAR((close - Eigen::Vector2d(task->target().position().x(), task->target().position().y())).norm(), 0.5,
-              1e-6);
+  EXPECT_NEAR(
+      (close - Eigen::Vector2d(task->target().position().x(), task->target().position().y()))
+          .norm(),
+      0.5, 1e-6);
   report(approach, close.x(), close.y());
 
   // VERIFY: two new detections confirm the clock; then STOP within 1 m.
@@ -143,7 +147,8 @@ TEST_F(GatewayModelContractTest, ComplexInstructionRunsOnTheOfflineProxysSubgoal
   api::StreamEventsResponse event;
   std::string decomposition;
   while (decomposition.empty() && events->Read(&event)) {
-    if (event.event().kind() == api::EVENT_KIND_DECOMPOSITION) decomposition = event.event().message();
+    if (event.event().kind() == api::EVENT_KIND_DECOMPOSITION)
+      decomposition = event.event().message();
   }
   EXPECT_EQ(event.event().task_id(), *task_id);
   EXPECT_EQ(decomposition, "model subgoals used: NAVIGATE(kitchen) FIND(clock)");
@@ -154,7 +159,7 @@ TEST_F(GatewayModelContractTest, ComplexInstructionRunsOnTheOfflineProxysSubgoal
   ASSERT_GE(task->subgoals_size(), 2);
   EXPECT_EQ(task->subgoals(0).type(), api::SUBGOAL_TYPE_NAVIGATE);  // kitchen
   EXPECT_EQ(task->subgoals(1).type(), api::SUBGOAL_TYPE_FIND);      // clock
-  EXPECT_GE(task->model_calls(), 1);  // the decompose call is counted
+  EXPECT_GE(task->model_calls(), 1);                                // the decompose call is counted
   events_context.TryCancel();
 }
 

@@ -1,16 +1,16 @@
 // End-to-end contract with planning in the loop: real semnav-mapping (synthetic room frames),
 // real semnav-planning on mapping's live map, real semnav-gateway. A robot whose straight line to
 // the table crosses the tall box must receive a navigate command whose planned path goes round it.
+#include <grpcpp/grpcpp.h>
+
 #include <chrono>
 #include <cmath>
 
-#include <grpcpp/grpcpp.h>
-
 #include "gtest/gtest.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
+#include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 #include "semnav/reasoning/v1/robot_session.grpc.pb.h"
-#include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/reasoning/core/eroi_search.h"
 #include "services/reasoning/server/planning_client.h"
 #include "services/reasoning/testing/operator_calls.h"
@@ -32,8 +32,10 @@ int CellAt(const GridMap& grid, double x, double y) {
   }
   const double column = std::floor((x - grid.origin().x()) / grid.resolution());
   const double row = std::floor((y - grid.origin().y()) / grid.resolution());
-  if (layer == nullptr || column < 0 || row < 0 || column >= grid.width() || row >= grid.height()) return 255;
-  return static_cast<unsigned char>((*layer)[static_cast<std::size_t>(row) * grid.width() + static_cast<std::size_t>(column)]);
+  if (layer == nullptr || column < 0 || row < 0 || column >= grid.width() || row >= grid.height())
+    return 255;
+  return static_cast<unsigned char>(
+      (*layer)[static_cast<std::size_t>(row) * grid.width() + static_cast<std::size_t>(column)]);
 }
 
 // True when a point every 1 cm along a -> b lies on a known obstacle cell (1-100).
@@ -58,13 +60,15 @@ class GatewayPlanningContractTest : public ::testing::Test {
     auto mapping = testing::StartMapping(dir);
     ASSERT_TRUE(mapping.ok()) << mapping.status();
     mapping_ = *std::move(mapping);
-    auto planning = testing::StartWithConfig("semnav-planning", dir, "planning.yaml",
-                                             "planning:\n  mapping:\n    address: " + mapping_->address() + "\n");
+    auto planning = testing::StartWithConfig(
+        "semnav-planning", dir, "planning.yaml",
+        "planning:\n  mapping:\n    address: " + mapping_->address() + "\n");
     ASSERT_TRUE(planning.ok()) << planning.status();
     planning_ = *std::move(planning);
-    auto gateway = testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
-                                            "gateway:\n  mapping:\n    address: " + mapping_->address() +
-                                                "\n  planning:\n    address: " + planning_->address() + "\n");
+    auto gateway =
+        testing::StartWithConfig("semnav-gateway", dir, "gateway.yaml",
+                                 "gateway:\n  mapping:\n    address: " + mapping_->address() +
+                                     "\n  planning:\n    address: " + planning_->address() + "\n");
     ASSERT_TRUE(gateway.ok()) << gateway.status();
     gateway_ = *std::move(gateway);
     operator_ = api::OperatorService::NewStub(gateway_->channel());
@@ -85,19 +89,25 @@ class GatewayPlanningContractTest : public ::testing::Test {
 };
 
 // Checks a navigate command's path: from `from` to the goal, every leg clear of obstacles.
-void ExpectClearPath(const GridMap& grid, const api::NavigateAction& navigate, const Eigen::Vector2d& from) {
+void ExpectClearPath(const GridMap& grid, const api::NavigateAction& navigate,
+                     const Eigen::Vector2d& from) {
   ASSERT_GE(navigate.path_size(), 2) << navigate.ShortDebugString();
   const auto point = [&](int i) {
     return Eigen::Vector2d(navigate.path(i).position().x(), navigate.path(i).position().y());
   };
   EXPECT_LT((point(0) - from).norm(), 0.05);  // planned from the robot's cell centre
-  EXPECT_LT((point(navigate.path_size() - 1) - Eigen::Vector2d(navigate.goal().x(), navigate.goal().y())).norm(), 1e-6);
+  EXPECT_LT(
+      (point(navigate.path_size() - 1) - Eigen::Vector2d(navigate.goal().x(), navigate.goal().y()))
+          .norm(),
+      1e-6);
   for (int i = 1; i < navigate.path_size(); ++i) {
-    EXPECT_FALSE(CrossesObstacle(grid, point(i - 1), point(i))) << "leg " << i << " of " << navigate.ShortDebugString();
+    EXPECT_FALSE(CrossesObstacle(grid, point(i - 1), point(i)))
+        << "leg " << i << " of " << navigate.ShortDebugString();
   }
 }
 
-TEST_F(GatewayPlanningContractTest, NavigateCarriesAPlannedPathRoundTheTableAndIsReplannedWhenBlocked) {
+TEST_F(GatewayPlanningContractTest,
+       NavigateCarriesAPlannedPathRoundTheTableAndIsReplannedWhenBlocked) {
   ASSERT_TRUE(testing::StreamLabelledFrames(mapping_->channel(), 1, 6, "clock", kClock).ok());
   ASSERT_TRUE(testing::WaitUntilFastResolvable(*operator_, "r1", "go to the clock", 5000));
   const GridMap grid = LiveGrid();
@@ -115,8 +125,10 @@ TEST_F(GatewayPlanningContractTest, NavigateCarriesAPlannedPathRoundTheTableAndI
   ASSERT_TRUE(session->Read(&accepted));
   ASSERT_TRUE(accepted.has_accepted());
   ASSERT_TRUE(session->Write(testing::PoseReport(kStart.x(), kStart.y())));
-  ASSERT_TRUE(testing::WaitUntilPoseSeen(*operator_, "r1", 5000));  // the task must start from kStart
-  const absl::StatusOr<std::string> task_id = testing::Submit(*operator_, "go-clock", "r1", "go to the clock");
+  ASSERT_TRUE(
+      testing::WaitUntilPoseSeen(*operator_, "r1", 5000));  // the task must start from kStart
+  const absl::StatusOr<std::string> task_id =
+      testing::Submit(*operator_, "go-clock", "r1", "go to the clock");
   ASSERT_TRUE(task_id.ok()) << task_id.status();
 
   // A planning call that runs past its deadline (about once in 10 runs on the loaded dev VM)
@@ -151,7 +163,8 @@ TEST_F(GatewayPlanningContractTest, NavigateCarriesAPlannedPathRoundTheTableAndI
   ASSERT_NO_FATAL_FAILURE(ExpectClearPath(grid, navigate.navigate(), kStart));
 
   // Blocked half-way round: the gateway plans again from where the robot stands.
-  const Eigen::Vector2d stuck(navigate.navigate().path(1).position().x(), navigate.navigate().path(1).position().y());
+  const Eigen::Vector2d stuck(navigate.navigate().path(1).position().x(),
+                              navigate.navigate().path(1).position().y());
   ASSERT_TRUE(session->Write(testing::PoseReport(stuck.x(), stuck.y())));
   ASSERT_TRUE(block(navigate.command_id()));
   const api::RobotCommand replanned = next_planned();
@@ -191,12 +204,14 @@ TEST_F(GatewayPlanningContractTest, EroiValuesFitPlanningsEroiGridOverTheGateway
   // Planning's default EROI edge is 2 m: 4 x 2 columns from (0, 0) fit at any grid size.
   for (auto [nx, ny] : std::vector<std::pair<int, int>>{{3, 1}, {4, 2}, {2, 3}}) {
     const grpc::Status status = select(2.0, nx, ny);
-    EXPECT_NE(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << nx << "x" << ny << ": " << status.error_message();
+    EXPECT_NE(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << nx << "x" << ny << ": " << status.error_message();
   }
   // A 3 m gateway grid does not match planning's 2 m EROIs: refused by field.
   const grpc::Status mismatch = select(3.0, 2, 1);
   EXPECT_EQ(mismatch.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  EXPECT_NE(mismatch.error_message().find("eroi_semantic_values"), std::string::npos) << mismatch.error_message();
+  EXPECT_NE(mismatch.error_message().find("eroi_semantic_values"), std::string::npos)
+      << mismatch.error_message();
 }
 
 }  // namespace

@@ -3,17 +3,17 @@
 // Google Benchmark timings of the hot steps.
 //   semnav-bench-relocalization [--json FILE] [--keyframes N] [--seed S] [--seed-method]
 //       [--retrieval-labels K] [--max-hypotheses H] [--twin-radius R] [--benchmark_*]
+#include <benchmark/benchmark.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <vector>
-
-#include <benchmark/benchmark.h>
-#include <nlohmann/json.hpp>
 
 #include "services/common/cli/benchmark_flags.h"
 #include "services/common/cli/help.h"
@@ -39,13 +39,14 @@ constexpr char kUsage[] =
 // Our flags and Google Benchmark's.
 Options ParseOptions(int* argc, char** argv) {
   const ParsedFlags flags = ParseBenchmarkFlagsOrExit(
-      argc, argv, {{"json", "FILE", ""},
-                   {"keyframes", "N", ""},
-                   {"seed", "S", ""},
-                   {"seed-method", "", "the seed's method alone (SeedMethodParams)"},
-                   {"retrieval-labels", "K", "hash buckets per query landmark"},
-                   {"max-hypotheses", "H", "stage-1 hypotheses tried"},
-                   {"twin-radius", "R", "look-alike twin radius of the alias check (0 = off)"}},
+      argc, argv,
+      {{"json", "FILE", ""},
+       {"keyframes", "N", ""},
+       {"seed", "S", ""},
+       {"seed-method", "", "the seed's method alone (SeedMethodParams)"},
+       {"retrieval-labels", "K", "hash buckets per query landmark"},
+       {"max-hypotheses", "H", "stage-1 hypotheses tried"},
+       {"twin-radius", "R", "look-alike twin radius of the alias check (0 = off)"}},
       "semnav-bench-relocalization", kUsage);
   Options o;
   o.json_path = flags.Get("json").value_or(o.json_path);
@@ -127,7 +128,8 @@ void BM_Relocalize50Vs5000(benchmark::State& state) {
   size_t k = 0;
   for (auto _ : state) {
     const eval::Keyframe& kf = s.keyframes[k++ % s.keyframes.size()];
-    benchmark::DoNotOptimize(Relocalize(IndexedLandmarks(kf.observed), map, RelocalizationParams{}));
+    benchmark::DoNotOptimize(
+        Relocalize(IndexedLandmarks(kf.observed), map, RelocalizationParams{}));
   }
 }
 BENCHMARK(BM_Relocalize50Vs5000)->Unit(benchmark::kMillisecond);
@@ -147,17 +149,22 @@ int Main(int argc, char** argv) {
   const eval::BaselineParams baseline;
   const eval::SuccessBounds bounds;
 
-  const Comparison standard = RunComparison(eval::GenerateScenario(Standard(options)), params, baseline, bounds);
-  const Comparison heavy = RunComparison(eval::GenerateScenario(HeavyLookalikes(options)), params, baseline, bounds);
+  const Comparison standard =
+      RunComparison(eval::GenerateScenario(Standard(options)), params, baseline, bounds);
+  const Comparison heavy =
+      RunComparison(eval::GenerateScenario(HeavyLookalikes(options)), params, baseline, bounds);
   const Comparison smoke =
       RunComparison(eval::GenerateScenario(Smoke(options)), params, baseline, bounds);
   // Equal keyframe counts per scenario: the pooled rate is the mean of the three.
-  const double reliable_wrong_rate = (ReliableWrongRate(standard.method) +
-                                      ReliableWrongRate(heavy.method) +
-                                      ReliableWrongRate(smoke.method)) / 3.0;
+  const double reliable_wrong_rate =
+      (ReliableWrongRate(standard.method) + ReliableWrongRate(heavy.method) +
+       ReliableWrongRate(smoke.method)) /
+      3.0;
 
-  std::printf("keyframes per scenario: %zu, seed %u; relocalized = reliable answer within %.1f m and %.1f deg\n",
-              options.keyframes, options.seed, bounds.max_position_error_m, bounds.max_rotation_error_deg);
+  std::printf(
+      "keyframes per scenario: %zu, seed %u; relocalized = reliable answer within %.1f m and %.1f "
+      "deg\n",
+      options.keyframes, options.seed, bounds.max_position_error_m, bounds.max_rotation_error_deg);
   std::printf("%-16s %-22s %7s %9s %7s %7s %7s %7s %8s %7s %7s %7s %7s\n", "scenario", "method",
               "recall", "answered", "e_x(m)", "e_y(m)", "e_z(m)", "e_p(m)", "e_r(deg)", "ms_med",
               "ms_p99", "cpu_med", "cpu_p99");
@@ -195,7 +202,8 @@ int Main(int argc, char** argv) {
         {"keyframes", options.keyframes},
         {"seed", options.seed},
         {"tables",
-         {{"standard", {{"method", ToJson(standard.method)}, {"baseline", ToJson(standard.baseline)}}},
+         {{"standard",
+           {{"method", ToJson(standard.method)}, {"baseline", ToJson(standard.baseline)}}},
           {"heavy_lookalike",
            {{"method", ToJson(heavy.method)}, {"baseline", ToJson(heavy.baseline)}}},
           {"smoke", {{"method", ToJson(smoke.method)}, {"baseline", ToJson(smoke.baseline)}}}}}};

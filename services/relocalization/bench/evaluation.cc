@@ -12,7 +12,8 @@ class Stopwatch {
  public:
   Stopwatch() : wall_(std::chrono::steady_clock::now()), cpu_(ThreadCpuMs()) {}
   void Stop(eval::KeyframeOutcome& o) const {
-    o.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_).count();
+    o.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_).count();
     o.cpu_ms = ThreadCpuMs() - cpu_;
   }
 
@@ -43,7 +44,8 @@ Comparison RunComparison(const eval::Scenario& scenario, const RelocalizationPar
 
     eval::KeyframeOutcome ob;
     const Stopwatch baseline_watch;
-    const auto b = eval::RelocalizeNearestDescriptorRansac(IndexedLandmarks(k.observed), map, baseline);
+    const auto b =
+        eval::RelocalizeNearestDescriptorRansac(IndexedLandmarks(k.observed), map, baseline);
     baseline_watch.Stop(ob);
     ob.answered = b.ok();
     if (ob.answered) ob.error = eval::ComputePoseError(b->map_from_query, k.map_from_query);

@@ -74,7 +74,8 @@ std::vector<int> MaxSimilarityAssignment(const Eigen::MatrixXd& similarity) {
     result = MinCostRowAssignment(cost);
   } else {
     const std::vector<int> row_of_col = MinCostRowAssignment(cost.transpose());
-    for (Eigen::Index c = 0; c < cols; ++c) result[static_cast<size_t>(row_of_col[c])] = static_cast<int>(c);
+    for (Eigen::Index c = 0; c < cols; ++c)
+      result[static_cast<size_t>(row_of_col[c])] = static_cast<int>(c);
   }
   for (Eigen::Index r = 0; r < rows; ++r) {
     const int c = result[static_cast<size_t>(r)];

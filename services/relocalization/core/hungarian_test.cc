@@ -1,10 +1,10 @@
 #include "services/relocalization/core/hungarian.h"
 
+#include <gtest/gtest.h>
+
 #include <limits>
 #include <random>
 #include <set>
-
-#include <gtest/gtest.h>
 
 namespace semnav::relocalization {
 namespace {
@@ -32,24 +32,20 @@ double BruteForceBest(const Eigen::MatrixXd& s, Eigen::Index row, std::vector<bo
 
 TEST(RelocHungarianTest, BeatsGreedyOnHandMadeMatrix) {
   Eigen::MatrixXd s(2, 2);
-  s << 0.9, 0.8,
-       0.85, 0.1;
+  s << 0.9, 0.8, 0.85, 0.1;
   // Greedy would take 0.9 + 0.1 = 1.0; the optimum crosses over: 0.8 + 0.85.
   EXPECT_EQ(MaxSimilarityAssignment(s), (std::vector<int>{1, 0}));
 }
 
 TEST(RelocHungarianTest, ZeroSimilarityIsNeverMatched) {
   Eigen::MatrixXd s(2, 2);
-  s << 0.0, 0.5,
-       0.0, 0.4;
+  s << 0.0, 0.5, 0.0, 0.4;
   EXPECT_EQ(MaxSimilarityAssignment(s), (std::vector<int>{1, -1}));
 }
 
 TEST(RelocHungarianTest, RectangularBothWays) {
   Eigen::MatrixXd tall(3, 2);
-  tall << 0.2, 0.1,
-          0.9, 0.3,
-          0.8, 0.7;
+  tall << 0.2, 0.1, 0.9, 0.3, 0.8, 0.7;
   EXPECT_EQ(MaxSimilarityAssignment(tall), (std::vector<int>{-1, 0, 1}));
   EXPECT_EQ(MaxSimilarityAssignment(tall.transpose()), (std::vector<int>{1, 2}));
 }
@@ -89,11 +85,9 @@ TEST(RelocHungarianTest, NonFiniteSimilaritiesAreNoMatchAndTerminate) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   Eigen::MatrixXd s(2, 2);
-  s << nan, 0.5,
-       0.7, nan;
+  s << nan, 0.5, 0.7, nan;
   EXPECT_EQ(MaxSimilarityAssignment(s), (std::vector<int>{1, 0}));
-  s << nan, nan,
-       nan, nan;
+  s << nan, nan, nan, nan;
   EXPECT_EQ(MaxSimilarityAssignment(s), (std::vector<int>{-1, -1}));
   Eigen::MatrixXd wide(1, 2);
   wide << inf, 0.2;

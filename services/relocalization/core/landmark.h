@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "absl/status/status.h"
 #include "absl/strings/string_view.h"
@@ -16,11 +15,11 @@ using Descriptor = std::vector<float>;
 
 // A 3D landmark reconstructed from a generalized object point.
 struct Landmark {
-  uint64_t id = 0;                                   // 0 = not yet stored in a map
+  uint64_t id = 0;                                     // 0 = not yet stored in a map
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // metres, map (or query) frame
-  double scale = 0.0;                                // metric object size, metres
+  double scale = 0.0;                                  // metric object size, metres
   Descriptor descriptor;
-  uint32_t observations = 1;                         // frames fused into this landmark
+  uint32_t observations = 1;  // frames fused into this landmark
 };
 
 // Index of the largest descriptor entry (the hash key of seed 001, 3.1); -1 if empty.
@@ -35,10 +34,10 @@ double CosineSimilarity(const Descriptor& a, const Descriptor& b);
 
 // Request limits (docs/protocol.md, Relocalization): bounds that keep one request's memory and
 // arithmetic sane (squared distances and descriptor dot products stay far from overflow).
-inline constexpr double kMaxLandmarkScaleM = 1e3;       // no object is larger than 1 km
-inline constexpr size_t kMaxDescriptorDim = 4096;       // floats per embedding
-inline constexpr double kMaxDescriptorValue = 1e6;      // |each embedding entry|
-inline constexpr uint32_t kMaxObservations = 1000000;   // fused frames; sums stay in uint32
+inline constexpr double kMaxLandmarkScaleM = 1e3;         // no object is larger than 1 km
+inline constexpr size_t kMaxDescriptorDim = 4096;         // floats per embedding
+inline constexpr double kMaxDescriptorValue = 1e6;        // |each embedding entry|
+inline constexpr uint32_t kMaxObservations = 1000000;     // fused frames; sums stay in uint32
 inline constexpr size_t kMaxLandmarksPerRequest = 10000;  // upserted or observed landmarks
 
 // Checks each position coordinate within +-kMaxCoordinateM, scale in (0, kMaxLandmarkScaleM],

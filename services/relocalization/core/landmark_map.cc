@@ -15,7 +15,8 @@ void Fuse(Landmark& into, const Landmark& from) {
   into.position = (wa * into.position + wb * from.position) / w;
   into.scale = (wa * into.scale + wb * from.scale) / w;
   for (size_t d = 0; d < into.descriptor.size(); ++d) {
-    into.descriptor[d] = static_cast<float>((wa * into.descriptor[d] + wb * from.descriptor[d]) / w);
+    into.descriptor[d] =
+        static_cast<float>((wa * into.descriptor[d] + wb * from.descriptor[d]) / w);
   }
   into.observations += from.observations;
 }

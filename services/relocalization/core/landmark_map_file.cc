@@ -54,7 +54,8 @@ std::string Encode(const LandmarkMap& map) {
     for (int a = 0; a < 3; ++a) Put(out, l.position[a]);
     Put(out, l.scale);
     Put(out, l.observations);
-    out.append(reinterpret_cast<const char*>(l.descriptor.data()), l.descriptor.size() * sizeof(float));
+    out.append(reinterpret_cast<const char*>(l.descriptor.data()),
+               l.descriptor.size() * sizeof(float));
   }
   Put(out, Fnv1a64(out));
   return out;
@@ -68,7 +69,8 @@ absl::Status WriteLandmarkMapFile(const std::string& path, const LandmarkMap& ma
 
 absl::StatusOr<LandmarkMap> ReadLandmarkMapFile(const std::string& path) {
   absl::StatusOr<std::string> file = storage::ReadWholeFile(path);
-  if (absl::IsNotFound(file.status())) return absl::NotFoundError(absl::StrCat("no landmark map file ", path));
+  if (absl::IsNotFound(file.status()))
+    return absl::NotFoundError(absl::StrCat("no landmark map file ", path));
   if (!file.ok()) return file.status();
   const std::string& bytes = *file;
   auto corrupt = [&](absl::string_view why) {

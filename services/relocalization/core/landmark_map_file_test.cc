@@ -1,9 +1,9 @@
 #include "services/relocalization/core/landmark_map_file.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 namespace semnav::relocalization {
 namespace {
@@ -33,7 +33,8 @@ TEST(RelocLandmarkMapFileTest, RoundTripKeepsEverything) {
   const std::string path = TempDir("roundtrip") + "/m.lmap";
   const LandmarkMap map = TwoLandmarks();
   ASSERT_TRUE(WriteLandmarkMapFile(path, map).ok());
-  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path())) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(path).parent_path())) {
     EXPECT_EQ(entry.path(), path) << "left behind";  // no temporary
   }
   const auto read = ReadLandmarkMapFile(path);

@@ -1,9 +1,9 @@
 #include "services/relocalization/core/landmark_map.h"
 
-#include <limits>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <limits>
 
 #include "services/common/status/field_error.h"
 
@@ -22,8 +22,8 @@ Landmark Make(double x, double y, Descriptor d, double scale = 0.5) {
 
 LandmarkMap ThreeLandmarks() {
   LandmarkMap map;
-  const auto s = map.Upsert({Make(0, 0, {1, 0, 0}), Make(2, 0, {0, 1, 0}), Make(0, 3, {0.9f, 0.1f, 0})},
-                            MergeParams{});
+  const auto s = map.Upsert(
+      {Make(0, 0, {1, 0, 0}), Make(2, 0, {0, 1, 0}), Make(0, 3, {0.9f, 0.1f, 0})}, MergeParams{});
   EXPECT_TRUE(s.ok());
   return map;
 }

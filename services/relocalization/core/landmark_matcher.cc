@@ -8,8 +8,8 @@
 namespace semnav::relocalization {
 namespace {
 
-SimilarityTerms TermsWithoutPosition(const IndexedLandmarks& a, size_t i,
-                                     const IndexedLandmarks& b, size_t j) {
+SimilarityTerms TermsWithoutPosition(const IndexedLandmarks& a, size_t i, const IndexedLandmarks& b,
+                                     size_t j) {
   return {1.0, ScaleSimilarity(a.at(i).scale, b.at(j).scale),
           std::max(0.0, b.DescriptorSimilarity(j, a.unit_descriptor(i)))};
 }
@@ -18,7 +18,10 @@ SimilarityTerms TermsWithoutPosition(const IndexedLandmarks& a, size_t i,
 
 NeighbourhoodMatcher::NeighbourhoodMatcher(const IndexedLandmarks& query,
                                            const IndexedLandmarks& map, const MatchParams& params)
-    : query_(query), map_(map), params_(params), candidates_(query.size()),
+    : query_(query),
+      map_(map),
+      params_(params),
+      candidates_(query.size()),
       map_used_(map.size(), false) {
   std::vector<double> best(query.size(), 0.0);
   for (size_t q = 0; q < query.size(); ++q) {
@@ -47,7 +50,8 @@ NeighbourhoodMatcher::NeighbourhoodMatcher(const IndexedLandmarks& query,
 double NeighbourhoodMatcher::NeighbourhoodScore(size_t query, const std::vector<size_t>& nq,
                                                 const Candidate& candidate) const {
   const SimilarityParams& sp = params_.similarity;
-  const double anchor = CombinedSimilarity(TermsWithoutPosition(query_, query, map_, candidate.map), sp);
+  const double anchor =
+      CombinedSimilarity(TermsWithoutPosition(query_, query, map_, candidate.map), sp);
   if (anchor <= 0.0) return 0.0;
   const std::vector<size_t> nm = map_.Neighbourhood(candidate.map, params_.neighbourhood_size);
   const Eigen::Vector3d& qa = query_.at(query).position;
@@ -104,7 +108,8 @@ std::vector<Match> MatchUnderPose(const IndexedLandmarks& query, const IndexedLa
     const Eigen::Vector3d x = map_from_query * query.at(q).position;
     for (size_t m : map.tree().WithinRadius(x, params.rematch_radius_m)) {
       SimilarityTerms terms = TermsWithoutPosition(query, q, map, m);
-      terms.pos = PositionSimilarity((map.at(m).position - x).norm(), params.similarity.pos_sigma_m);
+      terms.pos =
+          PositionSimilarity((map.at(m).position - x).norm(), params.similarity.pos_sigma_m);
       const double s = CombinedSimilarity(terms, params.similarity);
       if (s > 0.0) edges.push_back({q, m, s});
     }
@@ -137,7 +142,8 @@ std::vector<Match> MatchUnderPose(const IndexedLandmarks& query, const IndexedLa
     };
     Eigen::MatrixXd s = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()),
                                               static_cast<Eigen::Index>(cols.size()));
-    for (size_t e : group) s(index_of(rows, edges[e].query), index_of(cols, edges[e].map)) = edges[e].s;
+    for (size_t e : group)
+      s(index_of(rows, edges[e].query), index_of(cols, edges[e].map)) = edges[e].s;
     const std::vector<int> assignment = MaxSimilarityAssignment(s);
     for (size_t r = 0; r < rows.size(); ++r) {
       if (assignment[r] < 0) continue;

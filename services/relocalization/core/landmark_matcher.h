@@ -1,8 +1,7 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "services/relocalization/core/indexed_landmarks.h"
 #include "services/relocalization/core/similarity.h"
@@ -12,15 +11,15 @@ namespace semnav::relocalization {
 // Retrieval and matching parameters (seed 001, 3.1).
 struct MatchParams {
   SimilarityParams similarity;
-  size_t neighbourhood_size = 8;      // |N(P)|: nearest landmarks compared around each point
-  size_t max_candidates = 16;         // hash candidates tried per query, best descriptor first
+  size_t neighbourhood_size = 8;  // |N(P)|: nearest landmarks compared around each point
+  size_t max_candidates = 16;     // hash candidates tried per query, best descriptor first
   // Hash buckets looked up per query landmark: its `retrieval_labels` most similar labels.
   // The seed uses 1 (the arg-max only); smoke often swaps the top two labels, so the
   // default also looks up the runner-up labels (docs/algorithms/relocalization.md, 3.1).
   size_t retrieval_labels = 3;
-  size_t min_neighbour_matches = 3;   // neighbour pairs the Hungarian step must find
-  size_t early_stop_matches = 6;      // m: stop retrieval after this many matches
-  double rematch_radius_m = 0.5;      // search radius around each re-projected query landmark
+  size_t min_neighbour_matches = 3;  // neighbour pairs the Hungarian step must find
+  size_t early_stop_matches = 6;     // m: stop retrieval after this many matches
+  double rematch_radius_m = 0.5;     // search radius around each re-projected query landmark
 };
 
 // A query landmark paired with a map landmark.

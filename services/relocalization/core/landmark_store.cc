@@ -28,7 +28,8 @@ absl::Status ValidateMapId(absl::string_view map_id) {
   if (map_id.empty() || map_id.size() > 128 || map_id.front() == '.' || !chars_ok) {
     // Preview: a 1 MB id is never echoed back.
     return InvalidField("map_id", absl::StrCat("must be 1-128 characters of [A-Za-z0-9_.-] not "
-                                               "starting with '.', got \"", Preview(map_id), "\""));
+                                               "starting with '.', got \"",
+                                               Preview(map_id), "\""));
   }
   return absl::OkStatus();
 }
@@ -39,7 +40,9 @@ absl::StatusOr<std::unique_ptr<LandmarkStore>> LandmarkStore::Open(const std::st
   if (folder.empty()) return store;
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
-  if (ec) return absl::FailedPreconditionError(absl::StrCat("storage folder ", folder, ": ", ec.message()));
+  if (ec)
+    return absl::FailedPreconditionError(
+        absl::StrCat("storage folder ", folder, ": ", ec.message()));
   absl::MutexLock lock(&store->mu_);
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     const std::filesystem::path& path = entry.path();

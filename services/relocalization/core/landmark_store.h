@@ -33,7 +33,8 @@ class LandmarkStore {
   absl::Status Delete(absl::string_view map_id);
 
  private:
-  LandmarkStore(std::string folder, const MergeParams& merge) : folder_(std::move(folder)), merge_(merge) {}
+  LandmarkStore(std::string folder, const MergeParams& merge)
+      : folder_(std::move(folder)), merge_(merge) {}
   std::string PathOf(absl::string_view map_id) const;
   absl::Status CheckNotCorrupt(absl::string_view map_id) const ABSL_SHARED_LOCKS_REQUIRED(mu_);
 

@@ -1,11 +1,11 @@
 #include "services/relocalization/core/landmark_store.h"
 
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 #include "services/common/status/field_error.h"
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include "absl/strings/string_view.h"
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/string_view.h"
 #include "services/common/status/field_error.h"
 #include "services/common/status/value_checks.h"
 
@@ -120,7 +120,7 @@ double BoxIou(const PixelBox& a, const PixelBox& b) {
 }
 
 absl::StatusOr<std::vector<ObjectPoint>> ExtractObjectPoints(const HeadTensors& heads,
-                                                            const ObjectPointParams& params) {
+                                                             const ObjectPointParams& params) {
   if (auto s = Validate(heads, params); !s.ok()) return s;
   const std::vector<double> m = GeneralizedConfidence(heads);
 

@@ -38,15 +38,15 @@ struct ObjectPoint {
 
 // Inference-head parameters (seed 001, 2.2).
 struct ObjectPointParams {
-  int nms_kernel = 1;               // k: max-pool window is (2k+1) x (2k+1) cells
-  int top_k = 100;                  // points kept from the pooled heatmap
-  double box_iou_threshold = 0.5;   // final suppression: drop a box overlapping a kept one more
+  int nms_kernel = 1;              // k: max-pool window is (2k+1) x (2k+1) cells
+  int top_k = 100;                 // points kept from the pooled heatmap
+  double box_iou_threshold = 0.5;  // final suppression: drop a box overlapping a kept one more
 };
 
 // Sum channels -> sigmoid -> max-pool NMS -> top-k -> boxes -> IoU suppression.
 // Malformed tensors -> INVALID_ARGUMENT naming the tensor.
 absl::StatusOr<std::vector<ObjectPoint>> ExtractObjectPoints(const HeadTensors& heads,
-                                                            const ObjectPointParams& params);
+                                                             const ObjectPointParams& params);
 
 // Intersection over union of two boxes; 0 when either has no area.
 double BoxIou(const PixelBox& a, const PixelBox& b);

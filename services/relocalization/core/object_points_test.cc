@@ -1,10 +1,10 @@
 #include "services/relocalization/core/object_points.h"
 
-#include <cmath>
-#include <limits>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
 
 #include "services/common/status/field_error.h"
 

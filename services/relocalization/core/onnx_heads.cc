@@ -41,7 +41,8 @@ absl::StatusOr<std::unique_ptr<OnnxHeads>> OnnxHeads::Load(const OnnxHeadsConfig
   try {
     cv::dnn::Net net = cv::dnn::readNetFromONNX(config.model_path);
     if (net.empty()) {
-      return absl::InvalidArgumentError(absl::StrCat("model_path: cannot load ", config.model_path));
+      return absl::InvalidArgumentError(
+          absl::StrCat("model_path: cannot load ", config.model_path));
     }
     return std::unique_ptr<OnnxHeads>(new OnnxHeads(config, std::move(net)));
   } catch (const cv::Exception& e) {
@@ -71,7 +72,8 @@ absl::StatusOr<HeadTensors> OnnxHeads::Run(const cv::Mat& image) {
   }
   HeadTensors h;
   int channels = 0;
-  if (auto s = TakePlanes(outputs[0], names[0], &h.heatmap_channels, &h.height, &h.width, &h.heatmap);
+  if (auto s =
+          TakePlanes(outputs[0], names[0], &h.heatmap_channels, &h.height, &h.width, &h.heatmap);
       !s.ok()) {
     return s;
   }
@@ -81,12 +83,13 @@ absl::StatusOr<HeadTensors> OnnxHeads::Run(const cv::Mat& image) {
       return s;
     }
     if (channels != 2) {
-      return absl::InvalidArgumentError(absl::StrCat("model output ", names[i], ": needs 2 channels"));
+      return absl::InvalidArgumentError(
+          absl::StrCat("model output ", names[i], ": needs 2 channels"));
     }
   }
   if (outputs.size() > 3) {
-    if (auto s = TakePlanes(outputs[3], names[3], &h.feature_channels, &h.height, &h.width,
-                            &h.features);
+    if (auto s =
+            TakePlanes(outputs[3], names[3], &h.feature_channels, &h.height, &h.width, &h.features);
         !s.ok()) {
       return s;
     }

@@ -1,10 +1,9 @@
 #pragma once
 
 #include <memory>
-#include <string>
-
 #include <opencv2/core.hpp>
 #include <opencv2/dnn.hpp>
+#include <string>
 
 #include "absl/base/thread_annotations.h"
 #include "absl/status/statusor.h"
@@ -15,16 +14,16 @@ namespace semnav::relocalization {
 
 // A CenterNet-style ONNX detector: one image input, heads as named NCHW float outputs.
 struct OnnxHeadsConfig {
-  std::string model_path;          // .onnx file
-  int input_width = 512;           // the image is resized to this before inference
+  std::string model_path;  // .onnx file
+  int input_width = 512;   // the image is resized to this before inference
   int input_height = 512;
-  double pixel_scale = 1.0 / 255.0;  // blob = (pixel - mean) * pixel_scale
+  double pixel_scale = 1.0 / 255.0;                 // blob = (pixel - mean) * pixel_scale
   double mean_r = 0.0, mean_g = 0.0, mean_b = 0.0;  // per-channel mean, 0-255
-  bool swap_rb = true;             // feed RGB from OpenCV's BGR images
-  std::string heatmap_output = "heatmap";  // [1, C, H, W] logits
-  std::string offset_output = "offset";    // [1, 2, H, W]
-  std::string size_output = "size";        // [1, 2, H, W]
-  std::string feature_output;              // [1, F, H, W]; empty = no feature head
+  bool swap_rb = true;                              // feed RGB from OpenCV's BGR images
+  std::string heatmap_output = "heatmap";           // [1, C, H, W] logits
+  std::string offset_output = "offset";             // [1, 2, H, W]
+  std::string size_output = "size";                 // [1, 2, H, W]
+  std::string feature_output;                       // [1, F, H, W]; empty = no feature head
 };
 
 // Runs the detector with OpenCV DNN and returns its heads as HeadTensors whose strides
@@ -38,7 +37,8 @@ class OnnxHeads {
   absl::StatusOr<HeadTensors> Run(const cv::Mat& image);
 
  private:
-  OnnxHeads(const OnnxHeadsConfig& config, cv::dnn::Net net) : config_(config), net_(std::move(net)) {}
+  OnnxHeads(const OnnxHeadsConfig& config, cv::dnn::Net net)
+      : config_(config), net_(std::move(net)) {}
 
   const OnnxHeadsConfig config_;
   absl::Mutex mu_;  // cv::dnn::Net::forward is not thread-safe

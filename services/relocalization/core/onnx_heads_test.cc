@@ -1,12 +1,12 @@
 #include "services/relocalization/core/onnx_heads.h"
 
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 namespace semnav::relocalization {
 namespace {
@@ -83,7 +83,11 @@ TEST(RelocOnnxHeadsTest, BadModelAndImageAreNamed) {
   EXPECT_THAT(missing.status().message(), HasSubstr("model_path"));
 
   const std::string garbage = ::testing::TempDir() + "/garbage.onnx";
-  { std::FILE* f = std::fopen(garbage.c_str(), "w"); std::fputs("not a model", f); std::fclose(f); }
+  {
+    std::FILE* f = std::fopen(garbage.c_str(), "w");
+    std::fputs("not a model", f);
+    std::fclose(f);
+  }
   auto bad = OnnxHeads::Load(TinyConfig(garbage));
   EXPECT_EQ(bad.status().code(), absl::StatusCode::kInvalidArgument);
 

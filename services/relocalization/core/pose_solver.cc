@@ -153,9 +153,9 @@ absl::StatusOr<PoseEstimate> SolvePose(const std::vector<Eigen::Vector3d>& p,
   initial.translation() = mean_displacement / static_cast<double>(est.inliers.size());
   est.map_from_query =
       RefinePoseLevenbergMarquardt(p, q, est.inliers, initial, params, &est.iterations);
-  est.rms_residual_m = std::sqrt(Cost(p, q, est.inliers, est.map_from_query.linear(),
-                                      est.map_from_query.translation()) /
-                                 static_cast<double>(est.inliers.size()));
+  est.rms_residual_m = std::sqrt(
+      Cost(p, q, est.inliers, est.map_from_query.linear(), est.map_from_query.translation()) /
+      static_cast<double>(est.inliers.size()));
   return est;
 }
 

@@ -1,9 +1,8 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "absl/status/statusor.h"
 
@@ -17,10 +16,10 @@ struct PoseParams {
   // Pairs j used for each median (evenly spaced over the remaining pairs); bounds the
   // cost on large alignments. 0 = all.
   size_t max_reference_pairs = 64;
-  size_t min_inliers = 3;          // fewer consistent pairs -> NOT_FOUND
-  int lm_max_iterations = 50;      // Levenberg-Marquardt iterations
-  double lm_initial_lambda = 1e-3; // initial damping (relative to diag(J^T J))
-  double lm_min_step = 1e-10;      // stop when the update norm falls below this
+  size_t min_inliers = 3;           // fewer consistent pairs -> NOT_FOUND
+  int lm_max_iterations = 50;       // Levenberg-Marquardt iterations
+  double lm_initial_lambda = 1e-3;  // initial damping (relative to diag(J^T J))
+  double lm_min_step = 1e-10;       // stop when the update norm falls below this
 };
 
 // q = R p + t: a query-frame point p expressed in the map frame.

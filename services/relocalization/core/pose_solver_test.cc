@@ -1,10 +1,10 @@
 #include "services/relocalization/core/pose_solver.h"
 
-#include <numbers>
-#include <random>
+#include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <gtest/gtest.h>
+#include <numbers>
+#include <random>
 
 namespace semnav::relocalization {
 namespace {

@@ -22,8 +22,10 @@ absl::StatusOr<Landmark> ReconstructLandmark(const ObjectPoint& point, double de
                                   depth_m * (point.v - camera.cy) / camera.fy, depth_m);
   Landmark l;
   l.position = world_from_camera * in_camera;
-  l.scale = 0.5 * ((point.box.x1 - point.box.x0) / camera.fx +
-                   (point.box.y1 - point.box.y0) / camera.fy) * depth_m;
+  l.scale =
+      0.5 *
+      ((point.box.x1 - point.box.x0) / camera.fx + (point.box.y1 - point.box.y0) / camera.fy) *
+      depth_m;
   l.descriptor = point.descriptor;
   return l;
 }
@@ -55,7 +57,8 @@ std::vector<Landmark> StableLandmarkTracker::AddFrame(const std::vector<Landmark
     track.mean.position = (n * track.mean.position + obs.position) / (n + 1.0);
     track.mean.scale = (n * track.mean.scale + obs.scale) / (n + 1.0);
     for (size_t d = 0; d < track.mean.descriptor.size() && d < obs.descriptor.size(); ++d) {
-      track.mean.descriptor[d] = static_cast<float>((n * track.mean.descriptor[d] + obs.descriptor[d]) / (n + 1.0));
+      track.mean.descriptor[d] =
+          static_cast<float>((n * track.mean.descriptor[d] + obs.descriptor[d]) / (n + 1.0));
     }
     track.mean.observations += 1;
     next.push_back(std::move(track));

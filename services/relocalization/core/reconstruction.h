@@ -1,8 +1,7 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "services/relocalization/core/landmark.h"
@@ -25,8 +24,8 @@ absl::StatusOr<Landmark> ReconstructLandmark(const ObjectPoint& point, double de
 
 // Keeps only object points tracked over consecutive frames (seed 001, 1.1).
 struct TrackerParams {
-  int min_stable_frames = 3;             // consecutive observations before a landmark is kept
-  double gate_radius_m = 0.3;            // an observation continues a track within this distance
+  int min_stable_frames = 3;               // consecutive observations before a landmark is kept
+  double gate_radius_m = 0.3;              // an observation continues a track within this distance
   double min_descriptor_similarity = 0.7;  // ... and with at least this cosine similarity
 };
 

@@ -10,8 +10,8 @@ using ::testing::HasSubstr;
 
 TEST(RelocReconstructionTest, BackProjectsWithMetricScale) {
   ObjectPoint point;
-  point.u = 420.0;  // 100 px right of the principal point
-  point.v = 190.0;  // 50 px above it
+  point.u = 420.0;                           // 100 px right of the principal point
+  point.v = 190.0;                           // 50 px above it
   point.box = {400.0, 170.0, 440.0, 230.0};  // 40 x 60 px
   point.descriptor = {0.2f, 0.8f};
   const PinholeCamera camera{500.0, 600.0, 320.0, 240.0};
@@ -19,7 +19,7 @@ TEST(RelocReconstructionTest, BackProjectsWithMetricScale) {
   world_from_camera.translation() = Eigen::Vector3d(10.0, 0.0, 1.0);
   const auto l = ReconstructLandmark(point, 2.5, camera, world_from_camera);
   ASSERT_TRUE(l.ok()) << l.status();
-  EXPECT_NEAR(l->position.x(), 10.5, 1e-12);            // 10 + 2.5 * 100 / 500
+  EXPECT_NEAR(l->position.x(), 10.5, 1e-12);  // 10 + 2.5 * 100 / 500
   EXPECT_NEAR(l->position.y(), -2.5 * 50 / 600, 1e-12);
   EXPECT_NEAR(l->position.z(), 3.5, 1e-12);
   EXPECT_NEAR(l->scale, 0.5 * (40.0 / 500 + 60.0 / 600) * 2.5, 1e-12);  // 0.225 m
@@ -27,10 +27,12 @@ TEST(RelocReconstructionTest, BackProjectsWithMetricScale) {
 }
 
 TEST(RelocReconstructionTest, RejectsBadDepthAndCamera) {
-  const auto bad_depth = ReconstructLandmark({}, 0.0, {500, 500, 320, 240}, Eigen::Isometry3d::Identity());
+  const auto bad_depth =
+      ReconstructLandmark({}, 0.0, {500, 500, 320, 240}, Eigen::Isometry3d::Identity());
   EXPECT_EQ(bad_depth.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(bad_depth.status().message(), HasSubstr("depth_m"));
-  const auto bad_camera = ReconstructLandmark({}, 1.0, {0, 500, 320, 240}, Eigen::Isometry3d::Identity());
+  const auto bad_camera =
+      ReconstructLandmark({}, 1.0, {0, 500, 320, 240}, Eigen::Isometry3d::Identity());
   EXPECT_THAT(bad_camera.status().message(), HasSubstr("camera"));
 }
 

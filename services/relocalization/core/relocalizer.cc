@@ -1,11 +1,10 @@
 #include "services/relocalization/core/relocalizer.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <optional>
-
-#include <Eigen/Eigenvalues>
 
 #include "absl/strings/str_cat.h"
 
@@ -115,8 +114,7 @@ absl::StatusOr<RelocalizationResult> RematchAndSolve(const IndexedLandmarks& que
 
 // Indices into result.matches of the inliers whose map landmark has no look-alike twin.
 std::vector<size_t> DistinctiveInliers(const IndexedLandmarks& map,
-                                       const RelocalizationResult& result,
-                                       const TwinParams& twin) {
+                                       const RelocalizationResult& result, const TwinParams& twin) {
   std::vector<size_t> distinctive;
   for (size_t i : result.inliers) {
     if (!map.HasLookalikeWithin(result.matches[i].map, twin.radius_m, twin.min_cosine)) {
@@ -128,10 +126,11 @@ std::vector<size_t> DistinctiveInliers(const IndexedLandmarks& map,
 
 // The pose solved (from the current one) from the distinctive inliers alone; nullopt when
 // fewer than 3 of them or when every inlier is distinctive (nothing can be aliased).
-std::optional<Eigen::Isometry3d> PoseFromDistinctiveInliers(
-    const IndexedLandmarks& query, const IndexedLandmarks& map,
-    const RelocalizationResult& result, const std::vector<size_t>& distinctive,
-    const PoseParams& params) {
+std::optional<Eigen::Isometry3d> PoseFromDistinctiveInliers(const IndexedLandmarks& query,
+                                                            const IndexedLandmarks& map,
+                                                            const RelocalizationResult& result,
+                                                            const std::vector<size_t>& distinctive,
+                                                            const PoseParams& params) {
   if (distinctive.size() < 3 || distinctive.size() == result.inliers.size()) return std::nullopt;
   std::vector<Eigen::Vector3d> p, q;
   for (size_t i : distinctive) {
@@ -167,9 +166,8 @@ void CheckReliability(const IndexedLandmarks& query, const IndexedLandmarks& map
   }
   // Twins agree with each other at a pitch offset and dilute the RMS of a bent pose; the
   // bound must also hold for the distinctive inliers once there are enough to judge (3).
-  const bool distinctive_fit =
-      params.reliable_max_rms_m <= 0.0 || result.distinctive_inliers < 3 ||
-      result.distinctive_rms_m <= params.reliable_max_rms_m;
+  const bool distinctive_fit = params.reliable_max_rms_m <= 0.0 || result.distinctive_inliers < 3 ||
+                               result.distinctive_rms_m <= params.reliable_max_rms_m;
   result.reliable =
       result.inliers.size() >= params.reliable_min_inliers &&
       (params.reliable_max_rms_m <= 0.0 || result.rms_residual_m <= params.reliable_max_rms_m) &&
@@ -200,11 +198,10 @@ absl::StatusOr<RelocalizationResult> RefineHypothesis(const IndexedLandmarks& qu
   if (params.twin.radius_m > 0.0) {
     if (const std::optional<Eigen::Isometry3d> alternative = PoseFromDistinctiveInliers(
             query, map, *result, DistinctiveInliers(map, *result, params.twin), params.pose);
-        alternative &&
-        (TranslationDifferenceM(*alternative, result->map_from_query) >
-             params.twin.pose_tolerance_m ||
-         RotationDifferenceDeg(*alternative, result->map_from_query) >
-             params.twin.pose_tolerance_deg)) {
+        alternative && (TranslationDifferenceM(*alternative, result->map_from_query) >
+                            params.twin.pose_tolerance_m ||
+                        RotationDifferenceDeg(*alternative, result->map_from_query) >
+                            params.twin.pose_tolerance_deg)) {
       absl::StatusOr<RelocalizationResult> other =
           RematchAndSolve(query, map, initial, *alternative, params);
       if (other.ok() && BetterSupported(*other, *result)) result = std::move(other);

@@ -1,8 +1,7 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "services/relocalization/core/indexed_landmarks.h"
@@ -17,8 +16,8 @@ namespace semnav::relocalization {
 // answer has such inliers and >= 3 others, the pose is re-solved from the others alone,
 // stage 2 is run again from there, and the better supported answer is kept.
 struct TwinParams {
-  double radius_m = 1.0;      // twin search radius (> the 0.6 m shelf pitch); 0 = check off
-  double min_cosine = 0.95;   // same-label objects of one class: ~0.83; boxes of one kind: ~0.99
+  double radius_m = 1.0;     // twin search radius (> the 0.6 m shelf pitch); 0 = check off
+  double min_cosine = 0.95;  // same-label objects of one class: ~0.83; boxes of one kind: ~0.99
   // The re-solved pose closer than this to the stage-2 pose needs no second stage 2.
   double pose_tolerance_m = 0.1;
   double pose_tolerance_deg = 1.0;

@@ -1,9 +1,9 @@
 #include "services/relocalization/core/relocalizer.h"
 
-#include <cmath>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "services/relocalization/eval/scenario.h"
 
@@ -41,8 +41,8 @@ TEST(RelocRelocalizerTest, FindsKeyframePosesInASmallScene) {
       const Match& m = r->matches[i];
       correct += k.truth[m.query] == static_cast<int64_t>(m.map);
     }
-    EXPECT_GE(correct, 20u);                     // of 25 real landmarks in view
-    EXPECT_GE(correct + 2, r->inliers.size());   // at most a couple of wrong inliers
+    EXPECT_GE(correct, 20u);                    // of 25 real landmarks in view
+    EXPECT_GE(correct + 2, r->inliers.size());  // at most a couple of wrong inliers
   }
   EXPECT_GE(reliable, 9u);
 }
@@ -236,8 +236,8 @@ TEST(RelocRelocalizerTest, SecondPrincipalSpreadOfLineAndRectangle) {
   // Points at +-1 along x: covariance diag(1, 0, 0) -> second eigenvalue 0.
   EXPECT_NEAR(SecondPrincipalSpread({{-1, 0, 0}, {1, 0, 0}, {0, 0, 0}}), 0.0, 1e-9);
   // Square corners (+-1, +-0.5): covariance diag(1, 0.25, 0) -> sqrt(0.25) = 0.5.
-  EXPECT_NEAR(SecondPrincipalSpread({{1, 0.5, 0}, {-1, 0.5, 0}, {1, -0.5, 0}, {-1, -0.5, 0}}),
-              0.5, 1e-9);
+  EXPECT_NEAR(SecondPrincipalSpread({{1, 0.5, 0}, {-1, 0.5, 0}, {1, -0.5, 0}, {-1, -0.5, 0}}), 0.5,
+              1e-9);
   EXPECT_EQ(SecondPrincipalSpread({{1, 2, 3}}), 0.0);
 }
 
@@ -245,7 +245,8 @@ TEST(RelocRelocalizerTest, TooFewLandmarksIsNotFound) {
   const eval::Scenario scene = eval::GenerateScenario(SmallScene());
   std::vector<Landmark> two(scene.keyframes[0].observed.begin(),
                             scene.keyframes[0].observed.begin() + 2);
-  const auto r = Relocalize(IndexedLandmarks(two), IndexedLandmarks(scene.map), RelocalizationParams{});
+  const auto r =
+      Relocalize(IndexedLandmarks(two), IndexedLandmarks(scene.map), RelocalizationParams{});
   EXPECT_EQ(r.status().code(), absl::StatusCode::kNotFound);
   EXPECT_THAT(r.status().message(), HasSubstr("too few landmarks"));
 }

@@ -5,13 +5,13 @@ namespace semnav::relocalization {
 // Weights and per-term thresholds of the object similarity (seed 001, 3.1):
 // s = alpha s_pos + beta s_scale + gamma s_desc, or 0 when any term <= its threshold.
 struct SimilarityParams {
-  double alpha = 0.4;          // weight of the position term
-  double beta = 0.2;           // weight of the scale term
-  double gamma = 0.4;          // weight of the descriptor term
-  double pos_threshold = 0.3;  // T_pos
+  double alpha = 0.4;            // weight of the position term
+  double beta = 0.2;             // weight of the scale term
+  double gamma = 0.4;            // weight of the descriptor term
+  double pos_threshold = 0.3;    // T_pos
   double scale_threshold = 0.5;  // T_scale
   double desc_threshold = 0.5;   // T_desc
-  double pos_sigma_m = 0.2;    // s_pos = exp(-e^2 / (2 sigma^2)) for a position error e
+  double pos_sigma_m = 0.2;      // s_pos = exp(-e^2 / (2 sigma^2)) for a position error e
 };
 
 // The three similarity terms, each in [0, 1].

@@ -1,8 +1,8 @@
 #include "services/relocalization/core/similarity.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace semnav::relocalization {
 namespace {

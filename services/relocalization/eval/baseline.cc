@@ -1,8 +1,7 @@
 #include "services/relocalization/eval/baseline.h"
 
-#include <random>
-
 #include <Eigen/Geometry>
+#include <random>
 
 #include "absl/strings/str_cat.h"
 

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "absl/status/statusor.h"
 #include "services/relocalization/core/indexed_landmarks.h"
@@ -13,9 +12,9 @@ namespace semnav::relocalization::eval {
 // The comparison method: nearest-descriptor matching + RANSAC + closed-form (Umeyama)
 // pose, i.e. what a descriptor-only retrieval would do (seed 001, 4.2's baseline role).
 struct BaselineParams {
-  int iterations = 500;             // RANSAC hypotheses (3-point samples)
-  double inlier_threshold_m = 0.25; // residual below which a pair supports a hypothesis
-  size_t min_inliers = 6;           // fewer -> NOT_FOUND
+  int iterations = 500;              // RANSAC hypotheses (3-point samples)
+  double inlier_threshold_m = 0.25;  // residual below which a pair supports a hypothesis
+  size_t min_inliers = 6;            // fewer -> NOT_FOUND
   uint32_t seed = 1;
 };
 

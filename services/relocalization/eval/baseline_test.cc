@@ -18,7 +18,8 @@ TEST(RelocBaselineTest, FindsThePoseWhenDescriptorsAreDistinctive) {
   const Scenario s = GenerateScenario(p);
   const IndexedLandmarks map(s.map);
   for (const Keyframe& k : s.keyframes) {
-    const auto r = RelocalizeNearestDescriptorRansac(IndexedLandmarks(k.observed), map, BaselineParams{});
+    const auto r =
+        RelocalizeNearestDescriptorRansac(IndexedLandmarks(k.observed), map, BaselineParams{});
     ASSERT_TRUE(r.ok()) << r.status();
     EXPECT_GE(r->inliers, 25u);  // of 30 real landmarks
     EXPECT_LT(TranslationDifferenceM(r->map_from_query, k.map_from_query), 0.1);
@@ -36,7 +37,8 @@ TEST(RelocBaselineTest, IdenticalDescriptorsDefeatIt) {
   const IndexedLandmarks map(s.map);
   size_t found = 0;
   for (const Keyframe& k : s.keyframes) {
-    found += RelocalizeNearestDescriptorRansac(IndexedLandmarks(k.observed), map, BaselineParams{}).ok();
+    found +=
+        RelocalizeNearestDescriptorRansac(IndexedLandmarks(k.observed), map, BaselineParams{}).ok();
   }
   EXPECT_LE(found, 1u);
 }

@@ -1,8 +1,7 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Geometry>
+#include <vector>
 
 namespace semnav::relocalization::eval {
 
@@ -27,14 +26,14 @@ struct KeyframeOutcome {
 };
 
 struct MethodSummary {
-  double recall = 0.0;            // relocalized keyframes / all keyframes (seed 001, 4)
-  double answered_rate = 0.0;     // answered keyframes / all (incl. wrong answers)
+  double recall = 0.0;         // relocalized keyframes / all keyframes (seed 001, 4)
+  double answered_rate = 0.0;  // answered keyframes / all (incl. wrong answers)
   double median_ex = 0, median_ey = 0, median_ez = 0;
   double median_pos_err_m = 0.0;  // over relocalized keyframes
   double median_rot_err_deg = 0.0;
-  double ms_median = 0.0;         // wall time, over all keyframes
+  double ms_median = 0.0;  // wall time, over all keyframes
   double ms_p99 = 0.0;
-  double cpu_ms_median = 0.0;     // thread CPU time, over all keyframes
+  double cpu_ms_median = 0.0;  // thread CPU time, over all keyframes
   double cpu_ms_p99 = 0.0;
 };
 MethodSummary Summarize(const std::vector<KeyframeOutcome>& outcomes, const SuccessBounds& bounds);

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <random>
 
-#include "services/relocalization/core/indexed_landmarks.h"
 #include "services/common/geometry/kd_tree.h"
+#include "services/relocalization/core/indexed_landmarks.h"
 
 namespace semnav::relocalization::eval {
 namespace {
@@ -61,12 +61,15 @@ void AddShelves(const ScenarioParams& p, const Descriptor& box, size_t count, Rn
   const double box_scale = Uniform(rng, p.scale_min_m, p.scale_max_m) * 0.5;
   while (count > 0) {
     const Eigen::Vector3d origin(Uniform(rng, 0.0, p.area_m), Uniform(rng, 0.0, p.area_m), 0.3);
-    const Eigen::Vector3d along = Eigen::AngleAxisd(std::floor(Uniform(rng, 0.0, 4.0)) * 90.0 * kDeg,
-                                                    Eigen::Vector3d::UnitZ()) * Eigen::Vector3d::UnitX();
+    const Eigen::Vector3d along =
+        Eigen::AngleAxisd(std::floor(Uniform(rng, 0.0, 4.0)) * 90.0 * kDeg,
+                          Eigen::Vector3d::UnitZ()) *
+        Eigen::Vector3d::UnitX();
     for (size_t c = 0; c < kShelfColumns && count > 0; ++c) {
       for (size_t level = 0; level < kShelfLevels && count > 0; ++level, --count) {
         Landmark l;
-        l.position = origin + along * (c * kShelfPitchM) + Eigen::Vector3d::UnitZ() * (level * kShelfPitchM);
+        l.position =
+            origin + along * (c * kShelfPitchM) + Eigen::Vector3d::UnitZ() * (level * kShelfPitchM);
         l.scale = box_scale * Uniform(rng, 0.95, 1.05);
         l.descriptor = Perturb(box, 0.02, rng);
         s.map.push_back(std::move(l));
@@ -102,7 +105,8 @@ Keyframe Observe(const Scenario& s, const ScenarioParams& p, const std::vector<D
     for (int a = 0; a < 3; ++a) l.position[a] = Uniform(rng, lo[a] - 0.5, hi[a] + 0.5);
     l.scale = Uniform(rng, p.scale_min_m, p.scale_max_m);
     const size_t label = std::uniform_int_distribution<size_t>(0, p.labels - 1)(rng);
-    l.descriptor = Perturb(UnitDescriptor(Perturb(protos[label], p.descriptor_spread, rng)), smoke_sigma, rng);
+    l.descriptor =
+        Perturb(UnitDescriptor(Perturb(protos[label], p.descriptor_spread, rng)), smoke_sigma, rng);
     k.observed.push_back(std::move(l));
     k.truth.push_back(-1);
   }
@@ -136,7 +140,8 @@ Scenario GenerateScenario(const ScenarioParams& p) {
   AddShelves(p, box, boxes, rng, s);
   while (s.map.size() < p.map_landmarks) {
     Landmark l;
-    l.position = {Uniform(rng, 0.0, p.area_m), Uniform(rng, 0.0, p.area_m), Uniform(rng, 0.0, p.height_m)};
+    l.position = {Uniform(rng, 0.0, p.area_m), Uniform(rng, 0.0, p.area_m),
+                  Uniform(rng, 0.0, p.height_m)};
     l.scale = Uniform(rng, p.scale_min_m, p.scale_max_m);
     const size_t label = std::uniform_int_distribution<size_t>(0, p.labels - 1)(rng);
     l.descriptor = Perturb(protos[label], p.descriptor_spread, rng);
@@ -151,13 +156,15 @@ Scenario GenerateScenario(const ScenarioParams& p) {
   std::vector<size_t> shelf_boxes, others;
   for (size_t i = 0; i < s.map.size(); ++i) (s.lookalike[i] ? shelf_boxes : others).push_back(i);
   for (size_t k = 0; k < p.keyframes; ++k) {
-    const bool on_shelf = !shelf_boxes.empty() && Uniform(rng, 0.0, 1.0) < p.view_on_lookalike_fraction;
+    const bool on_shelf =
+        !shelf_boxes.empty() && Uniform(rng, 0.0, 1.0) < p.view_on_lookalike_fraction;
     const std::vector<size_t>& pool = on_shelf || others.empty() ? shelf_boxes : others;
     const size_t centre = pool[std::uniform_int_distribution<size_t>(0, pool.size() - 1)(rng)];
     std::vector<size_t> view = tree.Nearest(s.map[centre].position, in_view);
     std::shuffle(view.begin(), view.end(), rng);
     view.resize(std::min(view.size(), p.observed_true));
-    s.keyframes.push_back(Observe(s, p, protos, view, RandomPoseNear(s.map[centre].position, p, rng), p.observed_false, rng));
+    s.keyframes.push_back(Observe(
+        s, p, protos, view, RandomPoseNear(s.map[centre].position, p, rng), p.observed_false, rng));
   }
   return s;
 }

@@ -63,7 +63,8 @@ TEST(RelocScenarioTest, SmokeDegradesDescriptorsByItsNorm) {
   size_t n = 0;
   for (const Keyframe& k : s.keyframes) {
     for (size_t i = 0; i < k.observed.size(); ++i) {
-      const std::vector<float> clean = UnitDescriptor(s.map[static_cast<size_t>(k.truth[i])].descriptor);
+      const std::vector<float> clean =
+          UnitDescriptor(s.map[static_cast<size_t>(k.truth[i])].descriptor);
       for (size_t d = 0; d < clean.size(); ++d) {
         const double e = k.observed[i].descriptor[d] - clean[d];
         sum_sq += e * e;

@@ -1,9 +1,8 @@
 #include "services/relocalization/server/image_decode.h"
 
-#include <vector>
-
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/grpc_status.h"

@@ -38,8 +38,10 @@ absl::StatusOr<std::vector<Landmark>> LandmarksFromProto(
   out.reserve(static_cast<size_t>(protos.size()));
   for (int i = 0; i < protos.size(); ++i) {
     // Without a map yet, the first landmark fixes the length for the rest.
-    const size_t dim = descriptor_dim != 0 || out.empty() ? descriptor_dim : out.front().descriptor.size();
-    absl::StatusOr<Landmark> l = LandmarkFromProto(protos[i], dim, absl::StrCat(field, "[", i, "]"));
+    const size_t dim =
+        descriptor_dim != 0 || out.empty() ? descriptor_dim : out.front().descriptor.size();
+    absl::StatusOr<Landmark> l =
+        LandmarkFromProto(protos[i], dim, absl::StrCat(field, "[", i, "]"));
     if (!l.ok()) return l.status();
     out.push_back(*std::move(l));
   }

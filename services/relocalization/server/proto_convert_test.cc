@@ -1,10 +1,10 @@
 #include "services/relocalization/server/proto_convert.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "semnav/common/v1/errors.pb.h"
 #include "services/common/status/field_error.h"
@@ -57,10 +57,12 @@ TEST(RelocProtoConvertTest, ErrorsCarryTheRequestFieldPath) {
 }
 
 TEST(RelocProtoConvertTest, WithErrorInfoKeepsTheFieldCoreNamedAndNeverParsesMessages) {
-  const absl::Status named = WithErrorInfo(InvalidField("tensors.offset", "must be finite"), "DETECTOR_FAILED");
+  const absl::Status named =
+      WithErrorInfo(InvalidField("tensors.offset", "must be finite"), "DETECTOR_FAILED");
   EXPECT_EQ(FieldOf(named), "tensors.offset");
   EXPECT_EQ(named.message(), "tensors.offset: must be finite");
-  EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(FromGrpcStatus(ToGrpcStatus(named)))->reason(), "FIELD_INVALID");
+  EXPECT_EQ(GetDetail<common::v1::ErrorInfo>(FromGrpcStatus(ToGrpcStatus(named)))->reason(),
+            "FIELD_INVALID");
   const absl::Status reason_only =
       WithErrorInfo(absl::NotFoundError("no_field: 2 of 9 pairs agree"), "RELOCALIZATION_FAILED");
   EXPECT_EQ(FieldOf(reason_only), "");
@@ -71,7 +73,8 @@ TEST(RelocProtoConvertTest, WithErrorInfoKeepsTheFieldCoreNamedAndNeverParsesMes
 
 TEST(RelocProtoConvertTest, PoseToProtoWritesAUnitQuaternion) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  pose.linear() =
+      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   pose.translation() = Eigen::Vector3d(1, 2, 3);
   common::v1::Pose out;
   PoseToProto(pose, &out);

@@ -145,7 +145,8 @@ absl::Status RelocalizationServiceImpl::DoExtract(const v1::ExtractObjectPointsR
     default:
       return FieldError(absl::StatusCode::kInvalidArgument, "input", "set tensors or image");
   }
-  absl::StatusOr<std::vector<ObjectPoint>> points = relocalization::ExtractObjectPoints(heads, params);
+  absl::StatusOr<std::vector<ObjectPoint>> points =
+      relocalization::ExtractObjectPoints(heads, params);
   if (!points.ok()) return WithErrorInfo(points.status(), "FIELD_INVALID");
   for (const ObjectPoint& p : *points) ObjectPointToProto(p, response.add_points());
   return absl::OkStatus();
@@ -159,7 +160,8 @@ absl::Status RelocalizationServiceImpl::DoUpsert(const v1::UpsertLandmarksReques
     response = *std::move(first);
     return absl::OkStatus();
   }
-  if (absl::Status s = ValidateMapId(request.map_id()); !s.ok()) return WithErrorInfo(s, "FIELD_INVALID");
+  if (absl::Status s = ValidateMapId(request.map_id()); !s.ok())
+    return WithErrorInfo(s, "FIELD_INVALID");
   if (request.landmarks().empty()) {
     return InvalidField("landmarks", "must contain at least one landmark");
   }
@@ -168,14 +170,16 @@ absl::Status RelocalizationServiceImpl::DoUpsert(const v1::UpsertLandmarksReques
       existing.ok()) {
     dim = (*existing)->descriptor_dim();
   }
-  absl::StatusOr<std::vector<Landmark>> landmarks = LandmarksFromProto(request.landmarks(), dim, "landmarks");
+  absl::StatusOr<std::vector<Landmark>> landmarks =
+      LandmarksFromProto(request.landmarks(), dim, "landmarks");
   if (!landmarks.ok()) return landmarks.status();
   absl::StatusOr<UpsertSummary> summary = store_->Upsert(request.map_id(), *std::move(landmarks));
   if (!summary.ok()) {
     const absl::StatusCode code = summary.status().code();
     return WithErrorInfo(summary.status(), code == absl::StatusCode::kDataLoss ? "MAP_CORRUPT"
-                                           : code == absl::StatusCode::kNotFound ? "LANDMARK_NOT_FOUND"
-                                                                                 : "FIELD_INVALID");
+                                           : code == absl::StatusCode::kNotFound
+                                               ? "LANDMARK_NOT_FOUND"
+                                               : "FIELD_INVALID");
   }
   response.set_revision(summary->revision);
   response.set_inserted(static_cast<uint32_t>(summary->inserted));
@@ -192,7 +196,8 @@ absl::Status RelocalizationServiceImpl::DoDelete(const v1::DeleteLandmarkMapRequ
   if (delete_answers_.Find(request.request_id())) return absl::OkStatus();
   absl::Status s = store_->Delete(request.map_id());
   if (!s.ok()) {
-    return WithErrorInfo(s, s.code() == absl::StatusCode::kNotFound ? "MAP_NOT_FOUND" : "FIELD_INVALID");
+    return WithErrorInfo(
+        s, s.code() == absl::StatusCode::kNotFound ? "MAP_NOT_FOUND" : "FIELD_INVALID");
   }
   delete_answers_.Remember(request.request_id(), v1::DeleteLandmarkMapResponse());
   return absl::OkStatus();
@@ -207,8 +212,8 @@ absl::Status RelocalizationServiceImpl::DoRelocalize(const v1::RelocalizeRequest
       LandmarksFromProto(request.observed(), (*map)->descriptor_dim(), "observed");
   if (!observed.ok()) return observed.status();
   const std::shared_ptr<const IndexedLandmarks> index = (*map)->index();
-  absl::StatusOr<RelocalizationResult> result =
-      relocalization::Relocalize(IndexedLandmarks(*std::move(observed)), *index, config_.relocalization);
+  absl::StatusOr<RelocalizationResult> result = relocalization::Relocalize(
+      IndexedLandmarks(*std::move(observed)), *index, config_.relocalization);
   if (!result.ok()) return WithErrorInfo(result.status(), "RELOCALIZATION_FAILED");
   SolutionToProto(*result, {}, IdsOf(**map), response.mutable_solution());
   response.set_map_revision((*map)->revision());
@@ -220,15 +225,17 @@ absl::Status RelocalizationServiceImpl::DoAlign(const v1::AlignMapsRequest& requ
   absl::StatusOr<std::shared_ptr<const LandmarkMap>> reference =
       GetMap(request.reference_map_id(), "reference_map_id");
   if (!reference.ok()) return reference.status();
-  absl::StatusOr<std::shared_ptr<const LandmarkMap>> moving = GetMap(request.moving_map_id(), "moving_map_id");
+  absl::StatusOr<std::shared_ptr<const LandmarkMap>> moving =
+      GetMap(request.moving_map_id(), "moving_map_id");
   if (!moving.ok()) return moving.status();
   if ((*moving)->descriptor_dim() != (*reference)->descriptor_dim()) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "moving_map_id",
-                      absl::StrCat("descriptor length ", (*moving)->descriptor_dim(),
-                                   " differs from the reference map's ", (*reference)->descriptor_dim()));
+    return FieldError(
+        absl::StatusCode::kInvalidArgument, "moving_map_id",
+        absl::StrCat("descriptor length ", (*moving)->descriptor_dim(),
+                     " differs from the reference map's ", (*reference)->descriptor_dim()));
   }
-  absl::StatusOr<RelocalizationResult> result =
-      relocalization::Relocalize(*(*moving)->index(), *(*reference)->index(), config_.relocalization);
+  absl::StatusOr<RelocalizationResult> result = relocalization::Relocalize(
+      *(*moving)->index(), *(*reference)->index(), config_.relocalization);
   if (!result.ok()) return WithErrorInfo(result.status(), "ALIGNMENT_FAILED");
   SolutionToProto(*result, IdsOf(**moving), IdsOf(**reference), response.mutable_solution());
   response.set_reference_revision((*reference)->revision());
@@ -265,9 +272,9 @@ grpc::ServerUnaryReactor* RelocalizationServiceImpl::DeleteLandmarkMap(
   return Answer(context, DoDelete(*request));
 }
 
-grpc::ServerUnaryReactor* RelocalizationServiceImpl::Relocalize(grpc::CallbackServerContext* context,
-                                                                const v1::RelocalizeRequest* request,
-                                                                v1::RelocalizeResponse* response) {
+grpc::ServerUnaryReactor* RelocalizationServiceImpl::Relocalize(
+    grpc::CallbackServerContext* context, const v1::RelocalizeRequest* request,
+    v1::RelocalizeResponse* response) {
   return Answer(context, DoRelocalize(*request, *response));
 }
 

@@ -7,9 +7,9 @@
 #include "absl/base/thread_annotations.h"
 #include "absl/synchronization/mutex.h"
 #include "semnav/relocalization/v1/relocalization.grpc.pb.h"
+#include "services/common/idempotency/first_answer_cache.h"
 #include "services/relocalization/core/landmark_store.h"
 #include "services/relocalization/core/onnx_heads.h"
-#include "services/common/idempotency/first_answer_cache.h"
 #include "services/relocalization/server/service_config.h"
 
 namespace semnav::relocalization {
@@ -41,7 +41,8 @@ class RelocalizationServiceImpl final : public v1::RelocalizationService::Callba
  private:
   absl::Status DoExtract(const v1::ExtractObjectPointsRequest& request,
                          v1::ExtractObjectPointsResponse& response);
-  absl::Status DoUpsert(const v1::UpsertLandmarksRequest& request, v1::UpsertLandmarksResponse& response);
+  absl::Status DoUpsert(const v1::UpsertLandmarksRequest& request,
+                        v1::UpsertLandmarksResponse& response);
   absl::Status DoDelete(const v1::DeleteLandmarkMapRequest& request);
   absl::Status DoRelocalize(const v1::RelocalizeRequest& request, v1::RelocalizeResponse& response);
   absl::Status DoAlign(const v1::AlignMapsRequest& request, v1::AlignMapsResponse& response);

@@ -6,10 +6,13 @@ namespace semnav::relocalization {
 namespace {
 
 void ReadObjectPoints(ConfigReader r, ObjectPointParams& p) {
-  r.Read("nms_kernel", &p.nms_kernel).Read("top_k", &p.top_k).Read("box_iou_threshold", &p.box_iou_threshold);
+  r.Read("nms_kernel", &p.nms_kernel)
+      .Read("top_k", &p.top_k)
+      .Read("box_iou_threshold", &p.box_iou_threshold);
   r.Check(p.nms_kernel >= 0, "nms_kernel", "must be >= 0");
   r.Check(p.top_k > 0, "top_k", "must be > 0");
-  r.Check(p.box_iou_threshold > 0.0 && p.box_iou_threshold <= 1.0, "box_iou_threshold", "must be in (0, 1]");
+  r.Check(p.box_iou_threshold > 0.0 && p.box_iou_threshold <= 1.0, "box_iou_threshold",
+          "must be in (0, 1]");
 }
 
 void ReadDetector(ConfigReader r, OnnxHeadsConfig& d) {
@@ -30,7 +33,8 @@ void ReadDetector(ConfigReader r, OnnxHeadsConfig& d) {
     d.mean_g = mean[1];
     d.mean_b = mean[2];
   }
-  r.Check(d.input_width > 0 && d.input_height > 0, "input_width", "input_width/input_height must be > 0");
+  r.Check(d.input_width > 0 && d.input_height > 0, "input_width",
+          "input_width/input_height must be > 0");
 }
 
 void ReadMatching(ConfigReader r, MatchParams& m) {
@@ -107,7 +111,8 @@ absl::StatusOr<ServiceConfig> ServiceConfig::FromYaml(ConfigReader& section) {
   ReadObjectPoints(section.Child("object_points"), c.object_points);
   ReadDetector(section.Child("detector"), c.detector);
   ConfigReader merge = section.Child("merge");
-  merge.Read("radius_m", &c.merge.radius_m).Read("min_descriptor_similarity", &c.merge.min_descriptor_similarity);
+  merge.Read("radius_m", &c.merge.radius_m)
+      .Read("min_descriptor_similarity", &c.merge.min_descriptor_similarity);
   merge.Check(c.merge.radius_m >= 0, "radius_m", "must be >= 0");
   ReadMatching(section.Child("matching"), c.relocalization.match);
   ReadPose(section.Child("pose"), c.relocalization.pose);

@@ -15,11 +15,11 @@ namespace semnav::relocalization {
 // Settings of semnav-relocalization (YAML section "relocalization"); every default is the
 // seed-001 parameter set documented in docs/algorithms/relocalization.md.
 struct ServiceConfig {
-  std::string storage_dir;          // landmark map files; empty = memory only
-  size_t idempotency_cache = 1024;  // remembered request_id answers
-  ObjectPointParams object_points;  // "object_points"
-  OnnxHeadsConfig detector;         // "detector"; model_path empty = no ONNX detector
-  MergeParams merge;                // "merge"
+  std::string storage_dir;              // landmark map files; empty = memory only
+  size_t idempotency_cache = 1024;      // remembered request_id answers
+  ObjectPointParams object_points;      // "object_points"
+  OnnxHeadsConfig detector;             // "detector"; model_path empty = no ONNX detector
+  MergeParams merge;                    // "merge"
   RelocalizationParams relocalization;  // "matching", "pose", "reliability", rematch_rounds
 
   static absl::StatusOr<ServiceConfig> FromYaml(ConfigReader& section);

@@ -1,6 +1,11 @@
 // semnav.relocalization.v1.RelocalizationService through gRPC against the real binary:
 // build a map, relocalize a transformed subset, align two maps with a known transform,
 // and bad input -> named error with state unchanged.
+#include <gmock/gmock.h>
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -9,11 +14,6 @@
 #include <limits>
 #include <memory>
 #include <string>
-
-#include <Eigen/Geometry>
-#include <gmock/gmock.h>
-#include <grpcpp/grpcpp.h>
-#include <gtest/gtest.h>
 
 #include "semnav/common/v1/errors.pb.h"
 #include "semnav/relocalization/v1/relocalization.grpc.pb.h"
@@ -51,7 +51,8 @@ void ToProto(const Landmark& l, v1::Landmark* out) {
 Eigen::Isometry3d FromProto(const common::v1::Pose& p) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = Eigen::Quaterniond(p.orientation().w(), p.orientation().x(), p.orientation().y(),
-                                     p.orientation().z()).toRotationMatrix();
+                                     p.orientation().z())
+                      .toRotationMatrix();
   pose.translation() = Eigen::Vector3d(p.position().x(), p.position().y(), p.position().z());
   return pose;
 }
@@ -159,7 +160,8 @@ TEST_F(RelocalizationContractTest, AlignsTwoRobotMapsWithAKnownTransformAsTheyGr
   Eigen::Isometry3d a_from_b = Eigen::Isometry3d::Identity();
   a_from_b.linear() = Eigen::AngleAxisd(-2.5, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   a_from_b.translation() = Eigen::Vector3d(-7.0, 3.0, 0.2);
-  const eval::Keyframe robot_b = eval::ObserveRegion(scene, p, {15.0, 15.0, 2.0}, 7.0, a_from_b, 20, 5);
+  const eval::Keyframe robot_b =
+      eval::ObserveRegion(scene, p, {15.0, 15.0, 2.0}, 7.0, a_from_b, 20, 5);
   v1::UpsertLandmarksResponse ignored;
   ASSERT_TRUE(Upsert("robot-a", scene.map, &ignored).ok());
   // Robot B's map grows while the robots explore: align after each upload.
@@ -180,7 +182,8 @@ TEST_F(RelocalizationContractTest, AlignsTwoRobotMapsWithAKnownTransformAsTheyGr
     // B's frame origin is ~20 m from its landmarks: 0.2 deg of rotation error moves it 7 cm.
     EXPECT_LT(TranslationError(FromProto(response.solution().map_from_query()), a_from_b), 0.15);
     EXPECT_LT(RotationErrorDeg(FromProto(response.solution().map_from_query()), a_from_b), 0.5);
-    for (const v1::LandmarkMatch& m : response.solution().matches()) EXPECT_NE(m.query_landmark_id(), 0u);
+    for (const v1::LandmarkMatch& m : response.solution().matches())
+      EXPECT_NE(m.query_landmark_id(), 0u);
   }
 }
 
@@ -384,7 +387,7 @@ TEST_F(RelocalizationContractTest, ExtractsObjectPointsFromTensors) {
   t->set_height(2);
   t->set_heatmap_channels(1);
   for (float v : {-4.f, -4.f, -4.f, -4.f, 2.f, -4.f}) t->add_heatmap(v);  // peak at (1, 1)
-  for (int i = 0; i < 12; ++i) t->add_offset(i == 4 ? 0.5f : 0.0f);     // du = 0.5 at the peak
+  for (int i = 0; i < 12; ++i) t->add_offset(i == 4 ? 0.5f : 0.0f);       // du = 0.5 at the peak
   for (int i = 0; i < 12; ++i) t->add_box_size(1.0f);
   t->set_stride_x(4.0);
   t->set_stride_y(4.0);
@@ -419,10 +422,13 @@ TEST_F(RelocalizationContractTest, ExtractsObjectPointsFromAnImageWithTheOnnxDet
     GTEST_SKIP() << "python3-onnx is not installed (apt install python3-onnx)";
   }
   const std::string model = ::testing::TempDir() + "/contract_centernet.onnx";
-  ASSERT_EQ(std::system((python + " " SEMNAV_RELOC_TESTDATA "/make_centernet_onnx.py " + model).c_str()), 0);
+  ASSERT_EQ(
+      std::system((python + " " SEMNAV_RELOC_TESTDATA "/make_centernet_onnx.py " + model).c_str()),
+      0);
   const std::string config = ::testing::TempDir() + "/reloc_onnx.yaml";
-  std::ofstream(config) << "relocalization:\n  detector:\n    model_path: " << model
-                        << "\n    input_width: 8\n    input_height: 8\n    feature_output: features\n";
+  std::ofstream(config)
+      << "relocalization:\n  detector:\n    model_path: " << model
+      << "\n    input_width: 8\n    input_height: 8\n    feature_output: features\n";
   Start({"--config", config});
 
   // 8 x 8 RGB8 image: G = 128 everywhere, R = 255 at pixel (5, 2) (see the model script).

@@ -8,7 +8,8 @@ namespace semnav::modelproxy::offline {
 namespace {
 
 nlohmann::json Subgoals(const std::string& instruction) {
-  absl::StatusOr<nlohmann::json> answer = DecomposeOffline({{"task", "decompose"}, {"instruction", instruction}});
+  absl::StatusOr<nlohmann::json> answer =
+      DecomposeOffline({{"task", "decompose"}, {"instruction", instruction}});
   EXPECT_TRUE(answer.ok()) << instruction << ": " << answer.status();
   if (!answer.ok()) return nlohmann::json::array();
   EXPECT_EQ((*answer)["offline"], true);
@@ -21,8 +22,8 @@ TEST(ModelProxyOfflineDecomposeTest, SplitsTheIssuesExampleIntoNavigateThenFind)
   EXPECT_EQ(Subgoals("go to the kitchen, then find the red cup"),
             nlohmann::json::parse(R"([{"type": "NAVIGATE", "target": "kitchen"},
                                       {"type": "FIND", "target": "cup", "colours": ["red"]}])"));
-  absl::StatusOr<nlohmann::json> answer =
-      DecomposeOffline({{"task", "decompose"}, {"instruction", "Go to the kitchen and then look for a mug"}});
+  absl::StatusOr<nlohmann::json> answer = DecomposeOffline(
+      {{"task", "decompose"}, {"instruction", "Go to the kitchen and then look for a mug"}});
   ASSERT_TRUE(answer.ok());
   EXPECT_EQ((*answer)["subgoals"][0]["reason"], "offline rules: \"go to the kitchen\"");
   EXPECT_EQ((*answer)["subgoals"][1]["type"], "FIND");
@@ -39,8 +40,10 @@ TEST(ModelProxyOfflineDecomposeTest, ChineseClausesColoursAndRelations) {
 }
 
 TEST(ModelProxyOfflineDecomposeTest, RelationsWaitsAndAndBetweenVerbs) {
-  EXPECT_EQ(Subgoals("find the blue chair next to the table and wait 5 seconds, then go back to the door"),
-            nlohmann::json::parse(R"([{"type": "FIND", "target": "chair", "colours": ["blue"],
+  EXPECT_EQ(
+      Subgoals(
+          "find the blue chair next to the table and wait 5 seconds, then go back to the door"),
+      nlohmann::json::parse(R"([{"type": "FIND", "target": "chair", "colours": ["blue"],
                                        "relation": "near", "anchor": "dining table"},
                                       {"type": "WAIT", "duration_s": 5.0},
                                       {"type": "BACKTRACK", "target": "door"}])"));
@@ -48,7 +51,8 @@ TEST(ModelProxyOfflineDecomposeTest, RelationsWaitsAndAndBetweenVerbs) {
   EXPECT_EQ(Subgoals("look around and find the cup in the living room"),
             nlohmann::json::parse(R"([{"type": "LOOK_AROUND"},
                                       {"type": "FIND", "target": "cup", "relation": "in", "anchor": "living room"}])"));
-  EXPECT_EQ(Subgoals("等2分钟")[0], nlohmann::json::parse(R"({"type": "WAIT", "duration_s": 120.0})"));
+  EXPECT_EQ(Subgoals("等2分钟")[0],
+            nlohmann::json::parse(R"({"type": "WAIT", "duration_s": 120.0})"));
 }
 
 TEST(ModelProxyOfflineDecomposeTest, UnknownTargetsAreKeptAsSaid) {
@@ -57,13 +61,18 @@ TEST(ModelProxyOfflineDecomposeTest, UnknownTargetsAreKeptAsSaid) {
 }
 
 TEST(ModelProxyOfflineDecomposeTest, RefusesWhatItCannotRead) {
-  EXPECT_EQ(DecomposeOffline({{"task", "decompose"}}).status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(DecomposeOffline({{"task", "decompose"}}).status().code(),
+            absl::StatusCode::kInvalidArgument);
   EXPECT_EQ(DecomposeOffline({{"task", "decompose"}, {"instruction", ""}}).status().code(),
             absl::StatusCode::kInvalidArgument);
-  EXPECT_EQ(DecomposeOffline({{"task", "decompose"}, {"instruction", std::string(3000, 'a')}}).status().code(),
+  EXPECT_EQ(DecomposeOffline({{"task", "decompose"}, {"instruction", std::string(3000, 'a')}})
+                .status()
+                .code(),
             absl::StatusCode::kInvalidArgument);
   // No action at all: the gateway keeps its rule plan.
-  EXPECT_EQ(DecomposeOffline({{"task", "decompose"}, {"instruction", "the weather is nice"}}).status().code(),
+  EXPECT_EQ(DecomposeOffline({{"task", "decompose"}, {"instruction", "the weather is nice"}})
+                .status()
+                .code(),
             absl::StatusCode::kInvalidArgument);
 }
 

@@ -1,10 +1,8 @@
 #include "services/modelproxy/core/offline/offline_tasks.h"
 
-#include "services/modelproxy/core/offline/offline_decompose.h"
-
 #include <algorithm>
-#include <optional>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -13,6 +11,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "absl/strings/str_join.h"
+#include "services/modelproxy/core/offline/offline_decompose.h"
 
 namespace semnav::modelproxy::offline {
 namespace {
@@ -36,8 +35,8 @@ std::string PriorName(const std::string& target, const PlacePrior& prior) {
 }
 
 struct Target {
-  std::string canonical;   // for lexical matching
-  std::string prior_name;  // for the place prior
+  std::string canonical;            // for lexical matching
+  std::string prior_name;           // for the place prior
   std::optional<StandIn> stand_in;  // open vocabulary: only for targets the prior does not know
 };
 
@@ -107,13 +106,16 @@ void ScoreLabel(Scored& item, const Target& target, const std::string& label,
   if (!stand_in.known_class.empty()) {
     const double s = params.stand_in_class_weight *
                      LexicalMatch(CanonicalTerm(stand_in.known_class), label, params.lexical);
-    Consider(item, s, absl::StrFormat("open vocabulary: a '%s' is seen as a '%s' (%.2f)", stand_in.phrase,
-                                      stand_in.known_class, s));
+    Consider(item, s,
+             absl::StrFormat("open vocabulary: a '%s' is seen as a '%s' (%.2f)", stand_in.phrase,
+                             stand_in.known_class, s));
   }
   if (!stand_in.place.empty()) {
     const double s = params.stand_in_place_weight * prior.Affinity(label, stand_in.place);
-    Consider(item, s, absl::StrFormat("open vocabulary: '%s' is typical of the %s, where a '%s' is kept (%.2f)",
-                                      label, stand_in.place, stand_in.phrase, s));
+    Consider(
+        item, s,
+        absl::StrFormat("open vocabulary: '%s' is typical of the %s, where a '%s' is kept (%.2f)",
+                        label, stand_in.place, stand_in.phrase, s));
   }
 }
 
@@ -145,9 +147,11 @@ Scored ScoreRegion(const nlohmann::json& r, const Target& target, const PlacePri
     }
   }
   if (target.stand_in && !target.stand_in->place.empty()) {
-    const double s = params.place_weight * LexicalMatch(name, CanonicalTerm(target.stand_in->place), params.lexical);
-    Consider(item, s, absl::StrFormat("open vocabulary: a '%s' is kept in the %s (%.2f)", target.stand_in->phrase,
-                                      target.stand_in->place, s));
+    const double s = params.place_weight *
+                     LexicalMatch(name, CanonicalTerm(target.stand_in->place), params.lexical);
+    Consider(item, s,
+             absl::StrFormat("open vocabulary: a '%s' is kept in the %s (%.2f)",
+                             target.stand_in->phrase, target.stand_in->place, s));
   }
   ScoreDescription(item, target, OptionalString(r, "description"), params);
   return item;

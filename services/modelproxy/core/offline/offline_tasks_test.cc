@@ -115,31 +115,39 @@ TEST(ModelProxyOfflineTasksTest, OpenVocabularyTargetsResolveToAKnownClass) {
       R"([{"id": "o1", "label": "door"}, {"id": "o2", "label": "fire extinguisher"}, {"id": "o3", "label": "chair"}])";
   // English: the lexical rule already scores the label as the target minus modifiers (0.9);
   // Chinese: only the stand-in knows that 灭火器箱 is seen as a fire extinguisher (0.85 x 1).
-  for (const auto& [target, confidence] : std::vector<std::pair<std::string, double>>{
-           {"fire extinguisher cabinet", 0.9}, {"灭火器箱", 0.85}, {"the red fire-extinguisher box", 0.9}}) {
-    const nlohmann::json answer =
-        RunTask(R"({"task": "match_target", "target": ")" + target + R"(", "candidates": )" + candidates + "}");
+  for (const auto& [target, confidence] :
+       std::vector<std::pair<std::string, double>>{{"fire extinguisher cabinet", 0.9},
+                                                   {"灭火器箱", 0.85},
+                                                   {"the red fire-extinguisher box", 0.9}}) {
+    const nlohmann::json answer = RunTask(R"({"task": "match_target", "target": ")" + target +
+                                          R"(", "candidates": )" + candidates + "}");
     EXPECT_EQ(answer["best_id"], "o2") << target;
     EXPECT_DOUBLE_EQ(answer["confidence"].get<double>(), confidence) << target;
     EXPECT_EQ(answer["open_vocabulary"]["known_class"], "fire extinguisher") << target;
     EXPECT_EQ(answer["target_in_prior"], false);
   }
   // A known target has no stand-in.
-  EXPECT_TRUE(RunTask(R"({"task": "match_target", "target": "cup", "candidates": )" + candidates + "}")["open_vocabulary"]
+  EXPECT_TRUE(RunTask(R"({"task": "match_target", "target": "cup", "candidates": )" + candidates +
+                      "}")["open_vocabulary"]
                   .is_null());
 }
 
 TEST(ModelProxyOfflineTasksTest, OpenVocabularyTargetsResolveToAPlace) {
   const std::string regions =
       R"([{"id": "r1", "name": "bedroom"}, {"id": "r2", "name": "kitchen"}, {"id": "r3", "name": "office"}])";
-  for (const auto& [target, best] : std::vector<std::pair<std::string, std::string>>{
-           {"coffee machine", "r2"}, {"咖啡机", "r2"}, {"wifi router", "r3"}, {"无线路由器", "r3"}}) {
-    const nlohmann::json answer =
-        RunTask(R"({"task": "rank_regions", "target": ")" + target + R"(", "regions": )" + regions + "}");
+  for (const auto& [target, best] :
+       std::vector<std::pair<std::string, std::string>>{{"coffee machine", "r2"},
+                                                        {"咖啡机", "r2"},
+                                                        {"wifi router", "r3"},
+                                                        {"无线路由器", "r3"}}) {
+    const nlohmann::json answer = RunTask(R"({"task": "rank_regions", "target": ")" + target +
+                                          R"(", "regions": )" + regions + "}");
     EXPECT_EQ(answer["best_id"], best) << target;
-    EXPECT_DOUBLE_EQ(answer["confidence"].get<double>(), 0.8) << target;  // place_weight x exact place name
+    EXPECT_DOUBLE_EQ(answer["confidence"].get<double>(), 0.8)
+        << target;  // place_weight x exact place name
   }
-  // Among objects, a place stand-in only hints (the kitchen's microwave), never reaches a goal's 0.6.
+  // Among objects, a place stand-in only hints (the kitchen's microwave), never reaches a goal's
+  // 0.6.
   const nlohmann::json hint = RunTask(
       R"({"task": "match_target", "target": "coffee machine",
           "candidates": [{"id": "o1", "label": "bed"}, {"id": "o2", "label": "microwave"}]})");
