@@ -36,6 +36,11 @@ namespace {
 namespace loop = semnav::sim::loop;
 namespace sim = semnav::sim;
 
+bool IsEroiUtility(const std::string& strategy) {
+  return loop::RequestedStrategy(strategy) ==
+         semnav::reasoning::v1::EXPLORATION_STRATEGY_EROI_UTILITY;
+}
+
 constexpr char kUsage[] =
     "usage: semnav-bench-mission [--suite DIR] [--episodes N] [--outdoor-episodes N] "
     "[--flyroll-episodes N]\n"
@@ -219,9 +224,8 @@ int main(int argc, char** argv) {
     }
     accuracies.push_back(accuracy);
   }
-  if (!accuracies.empty() &&
-      (flags["--model"] != "sim" ||
-       std::find(strategies.begin(), strategies.end(), "EROI_UTILITY") == strategies.end())) {
+  if (!accuracies.empty() && (flags["--model"] != "sim" ||
+                              std::none_of(strategies.begin(), strategies.end(), IsEroiUtility))) {
     std::cerr
         << "semnav-bench-mission: --vlm-sweep needs --model sim and EROI_UTILITY in --strategies\n"
         << kUsage;
@@ -234,7 +238,7 @@ int main(int argc, char** argv) {
   };
   std::vector<Job> jobs;
   for (const std::string& strategy : strategies) {
-    const bool swept = strategy == "EROI_UTILITY" && !accuracies.empty();
+    const bool swept = IsEroiUtility(strategy) && !accuracies.empty();
     for (const std::optional<double> accuracy :
          swept ? std::vector<std::optional<double>>(accuracies.begin(), accuracies.end())
                : std::vector<std::optional<double>>{std::nullopt}) {
@@ -418,7 +422,7 @@ int main(int argc, char** argv) {
         semnav::sim::bench::SweepSummary(records, "outdoor", "EROI_UTILITY", accuracies);
     std::cout
         << "\nVLM-quality sweep, outdoor EROI_UTILITY:\n\n| accuracy | episodes | SR | path / "
-        << semnav::sim::bench::kExplorationOnly << " (both found) | vision calls | model calls |\n"
+        << "NEAREST_FRONTIER (both found) | vision calls | model calls |\n"
         << "|---|---|---|---|---|---|\n";
     for (const semnav::sim::bench::SweepPoint& p : points) {
       std::cout << absl::StrFormat(

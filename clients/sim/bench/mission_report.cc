@@ -9,6 +9,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "clients/sim/loop/episode_runner.h"
 
 namespace semnav::sim::bench {
 namespace {
@@ -65,11 +66,20 @@ std::vector<EpisodeRecord> InGroup(const std::vector<EpisodeRecord>& records,
   return out;
 }
 
+}  // namespace
+
+bool IsExplorationOnly(const std::string& strategy_label) {
+  return loop::RequestedStrategy(strategy_label) ==
+         reasoning::v1::EXPLORATION_STRATEGY_NEAREST_FRONTIER;
+}
+
+namespace {
+
 // Mean path of `strategy` over mean path of the exploration-only baseline on the same episodes.
 std::optional<double> PathVsExplorationOnly(const std::vector<StrategySummary>& summaries,
                                             const StrategySummary& s) {
   for (const StrategySummary& base : summaries) {
-    if (base.strategy == kExplorationOnly && base.path_m > 0) return s.path_m / base.path_m;
+    if (IsExplorationOnly(base.strategy) && base.path_m > 0) return s.path_m / base.path_m;
   }
   return std::nullopt;
 }
@@ -85,7 +95,7 @@ std::optional<PairedRatio> PathVsExplorationOnlyBothFound(const std::vector<Epis
                                                           const std::string& strategy) {
   std::vector<const EpisodeRecord*> base, mine;
   for (const EpisodeRecord& r : group) {
-    if (r.strategy == kExplorationOnly) base.push_back(&r);
+    if (IsExplorationOnly(r.strategy)) base.push_back(&r);
     if (r.strategy == strategy) mine.push_back(&r);
   }
   PairedRatio paired;

@@ -11,8 +11,9 @@
 
 namespace semnav::sim::bench {
 
-// The exploration-only baseline outdoor path lengths are compared against (seed 000).
-inline constexpr char kExplorationOnly[] = "NEAREST_FRONTIER";
+// Whether a record's strategy label is the exploration-only baseline (NEAREST_FRONTIER) that
+// outdoor path lengths are compared against (seed 000).
+bool IsExplorationOnly(const std::string& strategy_label);
 
 // Targets of a recovery (issue 16): within 15 s of simulated time, 0.2 m and 3 deg off after it.
 inline constexpr double kRecoveryTimeTargetS = 15.0;

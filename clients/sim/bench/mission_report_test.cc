@@ -216,5 +216,12 @@ TEST(SimBenchMissionReportTest, PoseLossGroupsReportRecoveriesAndTheSameEpisodes
             std::string::npos);
 }
 
+TEST(MissionReportTest, OnlyNearestFrontierIsTheExplorationOnlyBaseline) {
+  EXPECT_TRUE(IsExplorationOnly("NEAREST_FRONTIER"));
+  EXPECT_FALSE(IsExplorationOnly("SEMANTIC_FRONTIER"));
+  EXPECT_FALSE(IsExplorationOnly("EROI_UTILITY@0.7"));
+  EXPECT_FALSE(IsExplorationOnly("smoke"));
+}
+
 }  // namespace
 }  // namespace semnav::sim::bench

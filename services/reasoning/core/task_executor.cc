@@ -268,8 +268,12 @@ std::vector<RobotCommand> TaskExecutor::ExplorationFailed(double now, const std:
 // search goes on elsewhere; it is tried again from the next exploration goal, often from another
 // side.
 std::vector<RobotCommand> TaskExecutor::SetTargetAside(double now, const std::string& reason) {
+  if (progress_.target.has_value()) set_aside_.insert(progress_.target->object_id);
+  return ReleaseTarget(now, absl::StrCat("set aside: ", reason));
+}
+
+std::vector<RobotCommand> TaskExecutor::ReleaseTarget(double now, const std::string& reason) {
   const int64_t id = progress_.target.has_value() ? progress_.target->object_id : -1;
-  if (id >= 0) set_aside_.insert(id);
   progress_.target.reset();
   progress_.replans = 0;
   for (int i = 0; i < static_cast<int>(subgoals_.size()); ++i) {
@@ -282,7 +286,7 @@ std::vector<RobotCommand> TaskExecutor::SetTargetAside(double now, const std::st
   }
   std::vector<RobotCommand> out = Explore(now);
   if (progress_.state == TaskState::kRunning) {
-    progress_.reason = absl::StrCat(progress_.reason, " (object ", id, " set aside: ", reason, ")");
+    progress_.reason = absl::StrCat(progress_.reason, " (object ", id, " ", reason, ")");
   }
   return out;
 }
@@ -298,8 +302,7 @@ bool TaskExecutor::TryResolve() {
   if (progress_.target.has_value() && excluded_.count(progress_.target->object_id) == 0)
     return true;
   progress_.target.reset();
-  std::set<int64_t> skip = excluded_;
-  skip.insert(set_aside_.begin(), set_aside_.end());
+  const std::set<int64_t> skip = SkippedObjects();
   const FastResolution resolution =
       resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
   if (!resolution.accepted) return false;
@@ -437,8 +440,7 @@ bool TaskExecutor::InEndgame(double now) const {
 }
 
 std::optional<ScoredObject> TaskExecutor::BestCandidate() const {
-  std::set<int64_t> skip = excluded_;
-  skip.insert(set_aside_.begin(), set_aside_.end());
+  const std::set<int64_t> skip = SkippedObjects();
   const FastResolution resolution =
       resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
   if (!resolution.best.has_value() || graph_.FindObject(resolution.best->object_id) == nullptr)
@@ -455,6 +457,28 @@ bool TaskExecutor::TakeBestCandidate() {
   progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position,
                                    best->fused, ResolutionPath::kFast, 0};
   return true;
+}
+
+bool TaskExecutor::RuledOut(int64_t id) const {
+  const auto it = ruled_out_at_.find(id);
+  if (it == ruled_out_at_.end()) return false;
+  const SceneObject* object = graph_.FindObject(id);
+  return object != nullptr &&
+         (object->position - it->second).head<2>().norm() <= config_.success_radius_m;
+}
+
+std::set<int64_t> TaskExecutor::SkippedObjects() const {
+  std::set<int64_t> skip = excluded_;
+  skip.insert(set_aside_.begin(), set_aside_.end());
+  for (const auto& [id, where] : ruled_out_at_) {
+    if (RuledOut(id)) skip.insert(id);
+  }
+  return skip;
+}
+
+bool TaskExecutor::ReadsAsTarget(const SceneObject& object) const {
+  const LabelMatcher& matcher = resolver_->matcher();
+  return matcher.Match(ActiveTarget(), matcher.Normalise(object.label, object.attributes)) > 0.0;
 }
 
 bool TaskExecutor::TakeLabelledCandidate() {
@@ -673,6 +697,15 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
     }
   }
   second_look_target_ = -1;
+  // Looked at twice from within reach and never detected there: the detections that made it a
+  // candidate were false or another object's (home_04: one phantom "bowl" verified four times,
+  // 100 s of the budget). Ruled out while the map keeps it there (a misplaced object that later
+  // views move is tried at its new place); an object merely out of reach is set aside.
+  if (distance <= config_.success_radius_m) {
+    ruled_out_at_[id] = progress_.target->position;
+    return ReleaseTarget(now, absl::StrCat("ruled out: not confirmed within reach in ",
+                                           config_.verify_timeout_s, " s, twice"));
+  }
   return SetTargetAside(
       now, absl::StrCat("not confirmed within ", config_.verify_timeout_s, " s, twice"));
 }
@@ -892,6 +925,14 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
   if (progress_.target.has_value()) {
     if (const SceneObject* object = graph_.FindObject(progress_.target->object_id)) {
       progress_.target->position = object->position;  // the map refines its estimate
+      // Mapping's label is a vote over the object's detections: a first detection under another
+      // object's label (a detector confusion) is outvoted by the next ones. The new detections
+      // then confirm that other object, not the target (home_01: a chair first seen as a
+      // "potted plant" was approached and verified).
+      if (progress_.target->path == ResolutionPath::kFast && !ReadsAsTarget(*object)) {
+        return ReleaseTarget(
+            now, absl::StrCat("dropped: mapping now labels it \"", object->label, "\""));
+      }
     }
   }
   if (std::optional<std::vector<RobotCommand>> reached = SuccessInView(now, fresh))
@@ -918,7 +959,8 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
                                                        const SlowDecision& decision) {
   awaiting_model_ = false;
   if (progress_.state != TaskState::kRunning || progress_.target.has_value()) return {};
-  if (decision.action == SlowAction::kExplore || excluded_.count(decision.object_id) > 0) {
+  if (decision.action == SlowAction::kExplore || excluded_.count(decision.object_id) > 0 ||
+      RuledOut(decision.object_id)) {
     progress_.reason = absl::StrCat("model: keep exploring (", decision.explanation, ")");
     return {};
   }

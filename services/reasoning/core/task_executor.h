@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -211,7 +212,16 @@ class TaskExecutor {
   std::vector<RobotCommand> RetryDependency(double now);
   std::vector<RobotCommand> PauseExploring(double now, const absl::Status& unavailable);
   std::vector<RobotCommand> ExplorationFailed(double now, const std::string& reason);
+  // Sets the target aside until the next vantage point (out of reach from here) and explores.
   std::vector<RobotCommand> SetTargetAside(double now, const std::string& reason);
+  // Lets go of the target (the reason says why) and explores.
+  std::vector<RobotCommand> ReleaseTarget(double now, const std::string& reason);
+  // Ruled out by VERIFY and still where it was then.
+  bool RuledOut(int64_t id) const;
+  // Objects the resolver must not pick: excluded, set aside, or ruled out.
+  std::set<int64_t> SkippedObjects() const;
+  // The object's current label still matches the active target.
+  bool ReadsAsTarget(const SceneObject& object) const;
   std::vector<RobotCommand> Search(double now);
   absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(const Eigen::Vector3d& goal);
   std::vector<RobotCommand> Explore(double now);
@@ -273,6 +283,8 @@ class TaskExecutor {
   std::vector<float> text_embedding_;
   // Targets the robot failed to reach; retried once it reached another exploration goal.
   std::set<int64_t> set_aside_;
+  // Targets VERIFY ruled out from within reach, with where the map had them then.
+  std::map<int64_t, Eigen::Vector3d> ruled_out_at_;
   std::optional<Eigen::Vector3d> explore_goal_;  // the active exploration goal from planning
   // Where the robot stood when a verified target was last found too far away: a second verdict
   // from the same spot means the approach cannot get closer.
