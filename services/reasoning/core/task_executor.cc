@@ -510,6 +510,12 @@ std::vector<RobotCommand> TaskExecutor::PauseExploring(double now,
 
 std::vector<RobotCommand> TaskExecutor::Search(double now) {
   MaybeRequestModel();
+  // Look around before choosing where to go: the target may stand behind the robot.
+  if (!start_scan_done_ && config_.start_scan_duration_s > 0.0) {
+    start_scan_done_ = true;
+    return Rotate(now, config_.look_around_rate_rps, config_.start_scan_duration_s,
+                  Phase::kExploreScan, "looking around before exploring");
+  }
   return Explore(now);
 }
 
@@ -853,7 +859,11 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
       set_aside_.clear();  // a new vantage point: targets set aside may be reachable from here
       if (current().type == SubgoalType::kExplore)
         return NextSubgoal(now, "exploration goal reached");
-      return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
+      if (config_.explore_scan_duration_s <= 0.0) {
+        if (explore_goal_.has_value()) SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
+        return Explore(now);
+      }
+      return Rotate(now, config_.look_around_rate_rps, config_.explore_scan_duration_s,
                     Phase::kExploreScan, "scanning at the exploration goal");
     case Phase::kExploreScan:
       if (explore_goal_.has_value()) SpendExploreGoal(*explore_goal_, /*unreachable=*/false);

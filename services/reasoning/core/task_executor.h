@@ -26,9 +26,16 @@
 namespace semnav::reasoning {
 
 struct ExecutorConfig {
-  double approach_speed_mps = 0.15;         // APPROACH speed (LOVON)
-  double look_around_rate_rps = 0.5;        // LOOK_AROUND angular speed
-  double look_around_duration_s = 12.0;     // seed 002: 12 s ~ one turn
+  double approach_speed_mps = 0.15;      // APPROACH speed (LOVON)
+  double look_around_rate_rps = 0.5;     // LOOK_AROUND angular speed
+  double look_around_duration_s = 12.0;  // seed 002: 12 s ~ one turn
+  // The turn at each reached exploration goal (0 = none: the next goal at once; VLFM and
+  // ApexNav turn only at the start).
+  double explore_scan_duration_s = 0.0;
+  // The turn before the first exploration goal of a search (VLFM's initial spin; one turn at
+  // 0.5 rad/s is 12.6 s); 0 = none. Off: it raised SPL but lowered SR over 80 episodes
+  // (docs/performance/mission.md).
+  double start_scan_duration_s = 0.0;
   double navigate_standoff_m = 1.0;         // NAVIGATE to an object stops this far from it
   double navigate_timeout_s = 120.0;        // per motion command before re-planning
   double verify_timeout_s = 10.0;           // VERIFY gives up (object rejected) after this
@@ -313,6 +320,7 @@ class TaskExecutor {
   // Fallback steps with no path: other directions are tried next.
   std::vector<Eigen::Vector3d> failed_fallback_steps_;
   bool last_fallback_backed_off_ = false;
+  bool start_scan_done_ = false;  // the search's first look around (start_scan_duration_s)
   double start_time_ = 0.0;
   bool endgame_taken_ = false;
   uint64_t next_command_id_ = 1;

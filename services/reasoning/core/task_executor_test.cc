@@ -97,6 +97,12 @@ SubgoalType current_type(const TaskExecutor& task) {
   return task.subgoals()[static_cast<std::size_t>(task.progress().subgoal_index)].type;
 }
 
+ExecutorConfig WithStartScan() {
+  ExecutorConfig config;
+  config.start_scan_duration_s = 12.6;  // 2 pi / 0.5 rad/s: one turn
+  return config;
+}
+
 class GatewayTaskExecutorTest : public ::testing::Test {
  protected:
   TaskExecutor Make(std::vector<Subgoal> goals, ExecutorConfig config = {}) {
@@ -142,6 +148,7 @@ TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppea
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
   ExecutorConfig config;
   config.model_available = true;
+  config.explore_scan_duration_s = 12.0;  // a turn at each reached exploration goal
   TaskExecutor task = Make(FindTarget(), config);
   SceneObject chair;
   chair.id = 1;
@@ -177,6 +184,62 @@ TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppea
   ASSERT_EQ(out.size(), 1u);  // FIND done, LOOK_AROUND skipped, APPROACH issued
   EXPECT_EQ(current_type(task), SubgoalType::kApproach);
   EXPECT_DOUBLE_EQ(out[0].max_speed, 0.15);
+}
+
+TEST_F(GatewayTaskExecutorTest, WithoutAScanTheNextExplorationGoalFollowsAtOnce) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.explore_scan_duration_s = 0.0;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
+
+  task.OnPose(20, At(10));
+  out = task.OnFeedback(20, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);  // no turn: on to the next goal
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_EQ(task.progress().phase, "exploring");
+  // The reached goal is spent all the same.
+  ASSERT_EQ(planner_.exploration_queries.back().excluded_goals.size(), 1u);
+  EXPECT_TRUE(
+      planner_.exploration_queries.back().excluded_goals[0].isApprox(Eigen::Vector3d(10, 0, 0)));
+}
+
+TEST_F(GatewayTaskExecutorTest, SearchFirstLooksAroundThenExplores) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  TaskExecutor task = Make(FindTarget(), WithStartScan());
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  EXPECT_DOUBLE_EQ(out[0].angular_speed, 0.5);
+  EXPECT_DOUBLE_EQ(out[0].duration_s, 12.6);  // 2 pi / 0.5 rad/s: one turn
+  EXPECT_TRUE(planner_.exploration_queries.empty());
+  EXPECT_TRUE(task.OnPose(12, At(0)).empty());
+  out = task.OnPose(12.6, At(0));  // the turn is over: the first exploration goal
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
+
+  // Only once per task: an unreachable goal later does not start another turn.
+  out = task.OnFeedback(13, out[0].id, RobotFeedback::kFailed);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+}
+
+TEST_F(GatewayTaskExecutorTest, TargetSeenDuringTheFirstLookAroundIsApproachedAtOnce) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0)};
+  TaskExecutor task = Make(FindTarget(), WithStartScan());
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  out = task.OnSceneGraph(4, GraphWith({Extinguisher(12)}, 1));  // behind the robot at the start
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(planner_.exploration_queries.empty());  // no exploration goal was needed
 }
 
 TEST_F(GatewayTaskExecutorTest, SlowPathAnswerProvidesTheGoal) {
@@ -282,9 +345,8 @@ TEST_F(GatewayTaskExecutorTest, UnreachableTargetIsSetAsideAndSearchGoesOn) {
   EXPECT_FALSE(task.progress().target.has_value());
   EXPECT_TRUE(absl::StrContains(task.progress().reason, "object 7 set aside"));
   EXPECT_TRUE(task.OnSceneGraph(125, GraphWith({Extinguisher(16)}, 2)).empty());  // still set aside
-  // Once the robot reached the next exploration goal, object 7 is tried again.
-  task.OnFeedback(130, out[0].id, RobotFeedback::kGoalReached);
-  out = task.OnSceneGraph(131, GraphWith({Extinguisher(17)}, 3));
+  // Once the robot reached the next exploration goal, object 7 is tried again at once.
+  out = task.OnFeedback(130, out[0].id, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "navigating");
   EXPECT_EQ(task.progress().target->object_id, 7);

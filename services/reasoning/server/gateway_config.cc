@@ -44,6 +44,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Read("approach_speed_mps", &c.executor.approach_speed_mps)
       .Read("look_around_rate_rps", &c.executor.look_around_rate_rps)
       .Read("look_around_duration_s", &c.executor.look_around_duration_s)
+      .Read("explore_scan_duration_s", &c.executor.explore_scan_duration_s)
+      .Read("start_scan_duration_s", &c.executor.start_scan_duration_s)
       .Read("navigate_standoff_m", &c.executor.navigate_standoff_m)
       .Read("navigate_timeout_s", &c.executor.navigate_timeout_s)
       .Read("verify_timeout_s", &c.executor.verify_timeout_s)
@@ -73,6 +75,12 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("time_budget_s", &c.executor.time_budget_s)
       .Read("endgame_s", &c.executor.endgame_s)
       .Read("approach_label_match", &c.executor.approach_label_match);
+  executor.Check(
+      c.executor.explore_scan_duration_s >= 0.0 && c.executor.explore_scan_duration_s <= 120.0,
+      "explore_scan_duration_s", "must be in [0, 120] (0 = no turn)");
+  executor.Check(
+      c.executor.start_scan_duration_s >= 0.0 && c.executor.start_scan_duration_s <= 120.0,
+      "start_scan_duration_s", "must be in [0, 120] (0 = no turn)");
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
   executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m",
