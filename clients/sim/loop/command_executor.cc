@@ -167,7 +167,12 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
   }
   const StepReport report = robot_.Step(dt);
   if (report.collision.has_value()) {
-    const std::string detail = absl::StrCat("collision with ", report.collision->kind);
+    // Where the body was (in the air: at what altitude) says which obstacle a path misjudged.
+    const double altitude = report.collision->position.z();
+    const std::string detail = absl::StrCat(
+        "collision with ", report.collision->kind,
+        altitude > 1e-6 ? absl::StrCat(" at ", std::round(altitude * 100) / 100, " m altitude")
+                        : std::string());
     if (phase_ == Phase::kDriving && robot_.modality() == Modality::kFlyRoll &&
         BackUpThenReport(detail)) {
       return std::nullopt;

@@ -17,7 +17,7 @@ TEST(LayeredInflation, RaisesCellsNearObstaclesToTheTallestAndWidensStructure) {
   EXPECT_EQ(out.at(1, 2), 30);  // only the low one is this close
   EXPECT_EQ(out.at(4, 2), 60);
   EXPECT_EQ(out.at(3, 1), 60);
-  EXPECT_EQ(out.at(2, 1), 60);  // above the low one, beside the tall one
+  EXPECT_EQ(out.at(2, 1), 30);  // beside the low one; the tall one is sqrt(2) cells away
   EXPECT_EQ(out.at(1, 1), 0);   // diagonal: sqrt(2) > 1 cell from (2, 2)
   EXPECT_EQ(out.at(5, 2), 0);
   EXPECT_EQ(out.at(7, 2), kStructureValue);
