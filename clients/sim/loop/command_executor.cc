@@ -86,6 +86,19 @@ bool CommandExecutor::Recover() {
   return robot_.Apply(follow).ok();
 }
 
+bool CommandExecutor::BackUpThenReport(std::string detail) {
+  const Pose& pose = robot_.pose();
+  const Eigen::Vector3d back =
+      pose.position - kBackUpM * Eigen::Vector3d(std::cos(pose.yaw), std::sin(pose.yaw), 0.0);
+  const MotionMode mode = pose.position.z() > 1e-6 ? MotionMode::kFly : MotionMode::kRoll;
+  FollowPath follow;
+  follow.waypoints.push_back(Waypoint{back, mode, true});
+  if (!robot_.Apply(follow).ok()) return false;
+  blocked_detail_ = std::move(detail);
+  phase_ = Phase::kBackingUp;
+  return true;
+}
+
 Feedback CommandExecutor::Done(api::FeedbackKind kind, std::string detail) {
   phase_ = Phase::kIdle;
   return Feedback{command_id_, kind, std::move(detail)};
@@ -154,9 +167,19 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
   }
   const StepReport report = robot_.Step(dt);
   if (report.collision.has_value()) {
-    if (phase_ == Phase::kDriving && Recover()) return std::nullopt;
-    return Done(api::FEEDBACK_KIND_BLOCKED,
-                absl::StrCat("collision with ", report.collision->kind));
+    // Where the body was (in the air: at what altitude) says which obstacle a path misjudged.
+    const double altitude = report.collision->position.z();
+    const std::string detail = absl::StrCat(
+        "collision with ", report.collision->kind,
+        altitude > 1e-6 ? absl::StrCat(" at ", std::round(altitude * 100) / 100, " m altitude")
+                        : std::string());
+    if (phase_ == Phase::kDriving && robot_.modality() == Modality::kFlyRoll &&
+        BackUpThenReport(detail)) {
+      return std::nullopt;
+    }
+    if (phase_ == Phase::kDriving && robot_.modality() != Modality::kFlyRoll && Recover())
+      return std::nullopt;
+    return Done(api::FEEDBACK_KIND_BLOCKED, phase_ == Phase::kBackingUp ? blocked_detail_ : detail);
   }
   switch (phase_) {
     case Phase::kDriving:
@@ -176,6 +199,9 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
       remaining_s_ -= dt;
       if (remaining_s_ > 1e-9) return std::nullopt;
       return Done(api::FEEDBACK_KIND_GOAL_REACHED, "");
+    case Phase::kBackingUp:
+      if (!report.arrived) return std::nullopt;
+      return Done(api::FEEDBACK_KIND_BLOCKED, blocked_detail_);
     case Phase::kIdle:
       return std::nullopt;
   }

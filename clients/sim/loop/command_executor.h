@@ -41,7 +41,8 @@ class CommandExecutor {
   bool stop_issued() const { return robot_.stopped(); }
 
  private:
-  enum class Phase { kIdle, kDriving, kFacing, kRotating, kHolding };
+  // kBackingUp: a fly-roll robot backs away from what it touched, then reports BLOCKED.
+  enum class Phase { kIdle, kDriving, kFacing, kRotating, kHolding, kBackingUp };
   Feedback Done(semnav::reasoning::v1::FeedbackKind kind, std::string detail);
   absl::StatusOr<FollowPath> ToFollowPath(const semnav::reasoning::v1::NavigateAction& navigate);
   absl::StatusOr<FollowPath> PlanLocally(const Eigen::Vector3d& from,
@@ -49,6 +50,10 @@ class CommandExecutor {
   // After a collision: back up and re-plan to the navigate goal; false when the recoveries are used
   // up.
   bool Recover();
+  // A fly-roll robot after a collision: it has no local planner for flight, and heading straight
+  // for the goal hits the same obstacle again, so it backs up (at its altitude) and hands the
+  // re-plan to the gateway (BLOCKED once backed up). False when it cannot back up.
+  bool BackUpThenReport(std::string detail);
 
   SimRobot& robot_;
   LocalPlanFn local_planner_;
@@ -59,7 +64,8 @@ class CommandExecutor {
   double remaining_s_ = 0.0;                   // < 0: until the next command
   std::optional<Eigen::Vector3d> local_goal_;  // set while driving a locally planned path
   Eigen::Vector3d navigate_goal_ = Eigen::Vector3d::Zero();  // where the current navigate ends
-  int recoveries_ = 0;  // back-up and re-plan attempts of this command
+  int recoveries_ = 0;          // back-up and re-plan attempts of this command
+  std::string blocked_detail_;  // kBackingUp: what the robot touched
   double since_plan_s_ = 0.0;
 };
 

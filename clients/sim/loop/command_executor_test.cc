@@ -125,5 +125,84 @@ TEST_F(CommandExecutorTest, FlightWaypointFailsOnAGroundRobot) {
   EXPECT_FALSE(feedback.detail.empty());
 }
 
+// A fly-roll robot (radius 0.2 m, body 0.05-0.4 m) in the square with a 1 m crate across x = 3.
+class FlyRollExecutorTest : public ::testing::Test {
+ protected:
+  FlyRollExecutorTest()
+      : world_(MakeWorld()),
+        scene_(Scene::Build(world_)),
+        robot_(world_, scene_, world_.starts[0], RobotConfig::ForModality(Modality::kFlyRoll),
+               SensorConfig{}, 1),
+        executor_(robot_) {}
+
+  static World MakeWorld() {
+    World world = testing::OpenWorld();
+    world.starts[0].modality = Modality::kFlyRoll;
+    world.obstacles.push_back(Obstacle{"crate", Rgb{}, testing::Box(3.0, 0.0, 0.4, 10.0, 1.0)});
+    return world;
+  }
+
+  std::optional<Feedback> RunUntilOutcome(int max_steps) {
+    for (int i = 0; i < max_steps; ++i) {
+      if (std::optional<Feedback> f = executor_.Step(0.5); f.has_value()) return f;
+    }
+    return std::nullopt;
+  }
+
+  static void Add(api::NavigateAction* nav, double x, double z, api::LocomotionMode mode) {
+    api::PathWaypoint* w = nav->add_path();
+    w->mutable_position()->set_x(x);
+    w->mutable_position()->set_z(z);
+    w->set_mode(mode);
+  }
+
+  World world_;
+  Scene scene_;
+  SimRobot robot_;
+  CommandExecutor executor_;
+};
+
+// The gateway's multi-modal path (planning_client RobotPath): roll, climb, fly over, land, roll.
+TEST_F(FlyRollExecutorTest, ClimbsFliesOverTheCrateAndLands) {
+  api::RobotCommand command;
+  command.set_command_id(1);
+  api::NavigateAction* nav = command.mutable_navigate();
+  nav->mutable_goal()->set_x(4.5);
+  Add(nav, 2.4, 0.0, api::LOCOMOTION_MODE_GROUND);
+  Add(nav, 2.4, 1.3, api::LOCOMOTION_MODE_AIR);
+  Add(nav, 3.6, 1.3, api::LOCOMOTION_MODE_AIR);
+  Add(nav, 3.6, 0.0, api::LOCOMOTION_MODE_AIR);
+  Add(nav, 4.5, 0.0, api::LOCOMOTION_MODE_GROUND);
+  ASSERT_EQ(executor_.Start(command).kind, api::FEEDBACK_KIND_ACCEPTED);
+  const std::optional<Feedback> outcome = RunUntilOutcome(60);
+  ASSERT_TRUE(outcome.has_value());
+  EXPECT_EQ(outcome->kind, api::FEEDBACK_KIND_GOAL_REACHED) << outcome->detail;
+  EXPECT_TRUE(robot_.collisions().empty());
+  EXPECT_NEAR(robot_.pose().position.x(), 4.5, 1e-6);
+  EXPECT_NEAR(robot_.pose().position.z(), 0.0, 1e-9);
+  EXPECT_NEAR(robot_.fly_distance_m(), 1.3 + 1.2 + 1.3, 1e-6);
+}
+
+// Regression (flyroll_01/02: "robot blocked" loops): after a contact the fly-roll robot drove
+// straight for the goal twice more (its recovery is a ground robot's local re-plan, which it does
+// not have), touching the same crate each time. Now it backs up once and reports BLOCKED, so the
+// gateway re-plans with more clearance.
+TEST_F(FlyRollExecutorTest, AContactBacksUpOnceThenReportsBlocked) {
+  api::RobotCommand command;
+  command.set_command_id(2);
+  command.mutable_navigate()->mutable_goal()->set_x(4.5);
+  Add(command.mutable_navigate(), 4.5, 0.0, api::LOCOMOTION_MODE_GROUND);
+  ASSERT_EQ(executor_.Start(command).kind, api::FEEDBACK_KIND_ACCEPTED);
+  const std::optional<Feedback> outcome = RunUntilOutcome(40);
+  ASSERT_TRUE(outcome.has_value());
+  EXPECT_EQ(outcome->kind, api::FEEDBACK_KIND_BLOCKED);
+  EXPECT_EQ(outcome->detail, "collision with crate");
+  EXPECT_EQ(robot_.collisions().size(), 1u);
+  // Halted before the crate face at x = 2.8 less the 0.2 m radius, then 0.25 m back.
+  EXPECT_LT(robot_.pose().position.x(), 2.6 - 0.25 + 1e-6);
+  EXPECT_GT(robot_.pose().position.x(), 2.25);
+  EXPECT_NEAR(robot_.pose().yaw, 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace semnav::sim::loop

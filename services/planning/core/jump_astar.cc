@@ -1,6 +1,7 @@
 #include "services/planning/core/jump_astar.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/status/field_error.h"
@@ -29,6 +30,16 @@ struct RegionSpace {
   }
 };
 
+// The tallest obstacle value a unit move touches (both cells, and both side cells of a diagonal);
+// structure is never touched by a passable move.
+uint8_t TallestTouched(const LayeredGrid& grid, Cell from, int dx, int dy) {
+  uint8_t top = std::max(grid.at(from), grid.at(from.x + dx, from.y + dy));
+  if (dx != 0 && dy != 0) {
+    top = std::max({top, grid.at(from.x + dx, from.y), grid.at(from.x, from.y + dy)});
+  }
+  return top;
+}
+
 // Splits the cell path into maximal single-mode segments with their
 // lengths and eq. 10 / eq. 12 energies, and reduces the waypoints to the
 // turning points (heading or mode changes).
@@ -52,9 +63,10 @@ void Summarise(const LayeredGrid& grid, const JumpAStarOptions& options, MultiMo
     }
     if (new_segment) {
       const int at = static_cast<int>(path->waypoints.size()) - 1;
-      path->segments.push_back({cells[i - 1], cells[i - 1], at, at, mode, 0.0, 0.0});
+      path->segments.push_back({cells[i - 1], cells[i - 1], at, at, mode, 0.0, 0.0, 0});
     }
     ModalSegment& segment = path->segments.back();
+    if (flying) segment.top = std::max(segment.top, TallestTouched(grid, cells[i - 1], dx, dy));
     segment.to = cells[i];
     segment.last_point = static_cast<int>(path->waypoints.size());  // cells[i] comes next
     segment.length_m += length;
@@ -85,6 +97,36 @@ absl::Status CheckMultiModalEndpoints(const LayeredGrid& grid, Cell start, Cell 
     return MakePlanFailure(PlanFailure::kGoalOccupied, "goal is on building structure");
   }
   return absl::OkStatus();
+}
+
+double FlightAltitude(uint8_t top, double foot_m, double ceiling_m, double margin_m) {
+  if (top == 0 || !(ceiling_m > foot_m)) return 0.0;
+  return foot_m + (top + 0.5) / 100.0 * (ceiling_m - foot_m) + margin_m;
+}
+
+void PrependStart(Cell start, const JumpAStarOptions& options, MultiModalPath* path) {
+  if (path->waypoints.empty()) return;
+  const Cell first = path->waypoints.front();
+  const double length = std::hypot(first.x - start.x, first.y - start.y) * options.resolution_m;
+  path->waypoints.insert(path->waypoints.begin(), start);
+  if (path->segments.empty()) {
+    path->segments.push_back({start, first, 0, 1, MotionMode::kRolling, 0.0, 0.0, 0});
+  } else {
+    for (ModalSegment& s : path->segments) {
+      ++s.first_point;
+      ++s.last_point;
+    }
+  }
+  ModalSegment& head = path->segments.front();
+  head.from = start;
+  head.first_point = 0;
+  const bool flying = head.mode == MotionMode::kFlying;
+  const double energy = flying ? options.energy.Fly(length) : options.energy.Roll(length);
+  head.length_m += length;
+  head.energy_j += energy;
+  (flying ? path->fly_m : path->roll_m) += length;
+  path->length_m += length;
+  path->energy_j += energy;
 }
 
 StepCosts StepCostsOf(const JumpAStarOptions& options) {

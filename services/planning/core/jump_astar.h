@@ -37,6 +37,9 @@ struct ModalSegment {
   MotionMode mode = MotionMode::kRolling;
   double length_m = 0.0;
   double energy_j = 0.0;
+  // Flying: the tallest obstacle value (1-99, eq. 3) of the cells the segment touches, what the
+  // robot has to clear; 0 when rolling.
+  uint8_t top = 0;
 };
 
 struct MultiModalPath {
@@ -52,6 +55,15 @@ struct MultiModalPath {
   double cost = 0.0;  // alpha g + beta e at the goal
   int expansions = 0;
 };
+
+// Base altitude, metres above map z = 0, that clears an obstacle of hierarchical value `top` by
+// margin_m: eq. 3 inverted, z = h_f + (top + 0.5) / 100 * (h_c - h_f) (the half unit covers the
+// rounding of eq. 3). 0 when top is 0 or the grid carries no heights (ceiling_m <= foot_m).
+double FlightAltitude(uint8_t top, double foot_m, double ceiling_m, double margin_m);
+
+// Puts `start` before the path's first point (a start that snapped to a passable cell): the
+// straight step joins the first segment, in its mode, and counts in the lengths and energies.
+void PrependStart(Cell start, const JumpAStarOptions& options, MultiModalPath* path);
 
 // The eq. 14 cost of one cell-length move in each mode under `options`.
 StepCosts StepCostsOf(const JumpAStarOptions& options);

@@ -64,7 +64,7 @@ void FillResponse(const GridFrame& frame, const GridPlanResult& result,
   response->set_expansions(static_cast<uint32_t>(result.path.expansions));
 }
 
-void FillResponse(const GridFrame& frame, const MultiModalPath& path,
+void FillResponse(const GridFrame& frame, const MultiModalPath& path, const FlightHeights& heights,
                   pb::PlanPathResponse* response) {
   FillPath(frame, path.waypoints, response);
   response->set_length_m(path.length_m);
@@ -80,6 +80,8 @@ void FillResponse(const GridFrame& frame, const MultiModalPath& path,
                                                     : pb::MOTION_MODE_ROLLING);
     segment->set_length_m(s.length_m);
     segment->set_energy_j(s.energy_j);
+    segment->set_altitude_m(
+        FlightAltitude(s.top, heights.foot_m, heights.ceiling_m, heights.margin_m));
   }
   *response->mutable_planned_goal() = frame.ToPose(path.waypoints.back());
   response->set_expansions(static_cast<uint32_t>(path.expansions));

@@ -58,13 +58,17 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromYaml(ConfigReader& section) {
       .Read("rolling_energy_j_per_m", &ja.energy.rolling_j_per_m)
       .Read("hover_power_w", &ja.energy.hover_power_w)
       .Read("flight_speed_mps", &ja.energy.flight_speed_mps)
-      .Read("cache_mb", &config.jump_astar_cache_mb);
+      .Read("cache_mb", &config.jump_astar_cache_mb)
+      .Read("flight_margin_m", &config.flight_margin_m);
   jump.Check(ja.alpha >= 0 && ja.beta >= 0 && ja.alpha + ja.beta > 0, "alpha",
              "alpha and beta must be >= 0 and not both 0");
   jump.Check(ja.energy_unit_j > 0, "energy_unit_j", "must be > 0");
   jump.Check(ja.energy.rolling_j_per_m > 0, "rolling_energy_j_per_m", "must be > 0");
   jump.Check(ja.energy.hover_power_w > 0, "hover_power_w", "must be > 0");
   jump.Check(ja.energy.flight_speed_mps > 0, "flight_speed_mps", "must be > 0");
+  jump.Check(std::isfinite(config.flight_margin_m) && config.flight_margin_m >= 0 &&
+                 config.flight_margin_m <= 5,
+             "flight_margin_m", "must be in [0, 5]");
   jump.Check(config.jump_astar_cache_mb >= 0 && config.jump_astar_cache_mb <= 65536, "cache_mb",
              "must be in 0..65536");
 

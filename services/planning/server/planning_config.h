@@ -30,6 +30,10 @@ struct PlanningConfig {
   // kept for repeated queries, least recently used dropped first; ~1.9 bytes
   // per cell plus 32 once the landmarks exist (~22 MB at 800 x 800 cells).
   int jump_astar_cache_mb = 256;
+  // jump_astar.flight_margin_m: a flying segment's altitude clears its tallest mapped obstacle by
+  // this much (seed 003 gives none): half a 0.05 m voxel of the mapped top, depth noise on the
+  // top, and room for the fly-roll robot's 0.05 m ground clearance, rounded up to 0.25 m.
+  double flight_margin_m = 0.25;
   // exploration.*: frontier, coverage-max, semantic frontier, EROI settings.
   ExplorationConfig exploration;
   // trajectory.*: smoothing and time-allocation limits.

@@ -8,6 +8,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "services/common/status/grpc_status.h"
+#include "services/planning/core/layered_inflation.h"
 #include "services/planning/core/plan_failure.h"
 #include "services/planning/server/exploration_rpc.h"
 #include "services/planning/server/grid_conversion.h"
@@ -238,8 +239,36 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     if (options.alpha + options.beta <= 0.0) {
       return Invalid("multimodal.alpha", "alpha and beta must not both be 0");
     }
-    absl::StatusOr<MultiModalPath> path = jump_astar_.Plan(*grid, *start, *goal, options, limits);
-    if (path.ok()) FillResponse(*frame, *path, response);
+    // The footprint (robot_radius_m): rolling keeps the radius from obstacles, flying clears the
+    // tallest one within it, structure stays that far away. A start the inflation walls in (the
+    // robot stands near a wall) moves to the nearest passable cell within start_snap_radius_m.
+    const double radius_cells = request.robot_radius_m() / frame->resolution;
+    const LayeredGrid inflated = InflateLayeredGrid(*grid, radius_cells);
+    Cell from = *start;
+    if (inflated.Contains(from) && !Passable(inflated, from.x, from.y) &&
+        Passable(*grid, from.x, from.y)) {
+      const std::optional<Cell> snapped = NearestPassableCell(
+          inflated, from, config_.grid_planner.start_snap_radius_m / frame->resolution);
+      if (snapped.has_value()) from = *snapped;
+    }
+    // A goal the inflation walls in (a frontier or a view point near a wall) moves the same way,
+    // within goal_tolerance_m.
+    Cell to = *goal;
+    if (inflated.Contains(to) && !Passable(inflated, to.x, to.y) && Passable(*grid, to.x, to.y)) {
+      const std::optional<Cell> snapped =
+          NearestPassableCell(inflated, to, request.goal_tolerance_m() / frame->resolution);
+      if (snapped.has_value()) to = *snapped;
+    }
+    absl::StatusOr<MultiModalPath> path = jump_astar_.Plan(inflated, from, to, options, limits);
+    if (path.ok()) {
+      if (!(from == *start)) PrependStart(*start, options, &*path);
+      FillResponse(*frame, *path,
+                   FlightHeights{map.foot_height(), map.ceiling_height(), config_.flight_margin_m},
+                   response);
+      response->set_start_adjusted(!(from == *start));
+      response->set_goal_adjusted(!(to == *goal));
+      *response->mutable_planned_start() = frame->ToPose(from);
+    }
     failure = path.status();
   } else {
     absl::StatusOr<PassabilityGrid> free =

@@ -733,13 +733,12 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
   blocked_spots_.push_back(pose_.position);
   extra_clearance_m_ = std::min(extra_clearance_m_ + config_.blocked_clearance_step_m,
                                 config_.blocked_clearance_max_m);
-  // The multi-modal search has no footprint inflation to raise: re-planning the same goal would
-  // graze the same obstacle, so the goal is given up at once (the robot backed up already).
-  if (same_spot || blocks_on_goal_ >= config_.max_blocks_per_goal || config_.multi_modal) {
-    const std::string why = same_spot ? "robot blocked again where it was blocked before"
-                            : config_.multi_modal ? "robot blocked"
-                                                  : absl::StrCat("robot blocked ", blocks_on_goal_,
-                                                                 " times on the way");
+  // Fly-roll robots too: the multi-modal search inflates by the footprint and the clearance, so
+  // the re-plan keeps the wider berth (it gave the goal up at once while it had no inflation).
+  if (same_spot || blocks_on_goal_ >= config_.max_blocks_per_goal) {
+    const std::string why =
+        same_spot ? "robot blocked again where it was blocked before"
+                  : absl::StrCat("robot blocked ", blocks_on_goal_, " times on the way");
     blocked_goal_.reset();
     blocks_on_goal_ = 0;
     if (exploring) {

@@ -1002,8 +1002,6 @@ TEST_F(GatewayTaskExecutorTest, BlockedTwiceAtTheSameSpotGivesTheExplorationGoal
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
 }
 
-// Fly-roll (multi-modal) paths have no footprint inflation to raise: a block gives the
-// exploration goal up at once instead of backing off to re-plan the same grazing path.
 // Default (the robot backs up by itself): a block re-plans the same goal at once, with more
 // clearance, from where the robot stands.
 TEST_F(GatewayTaskExecutorTest, BlockedReplansTheSameGoalWithMoreClearance) {
@@ -1021,16 +1019,29 @@ TEST_F(GatewayTaskExecutorTest, BlockedReplansTheSameGoalWithMoreClearance) {
   EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);
 }
 
-TEST_F(GatewayTaskExecutorTest, MultiModalBlockGivesTheExplorationGoalUpAtOnce) {
+// Regression (flyroll_01/02: "robot blocked: collision with crate" ended every goal at once):
+// planning's multi-modal search now inflates by the footprint and the clearance, so a fly-roll
+// block re-plans the same goal with 0.1 m more clearance, as a ground robot's does; a second
+// block at the same spot gives it up.
+TEST_F(GatewayTaskExecutorTest, MultiModalBlockReplansWithMoreClearance) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
   ExecutorConfig config;
   config.multi_modal = true;
+  config.robot_radius_m = 0.2;
   TaskExecutor task = Make(FindTarget(), config);
   std::vector<RobotCommand> out = task.Start(0, At(0));
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.1);
   for (int i = 1; i <= 8; ++i) task.OnPose(i, At(0.25 * i));
   out = task.OnFeedback(8, out[0].id, RobotFeedback::kBlocked);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));  // the same goal ...
+  EXPECT_TRUE(planner_.queries.back().multi_modal);
+  EXPECT_TRUE(planner_.queries.back().start.isApprox(Eigen::Vector3d(2, 0, 0)));
+  EXPECT_DOUBLE_EQ(planner_.queries.back().clearance_m, 0.2);  // ... with more clearance
+  task.OnPose(9, At(2.1));
+  out = task.OnFeedback(9, out[0].id, RobotFeedback::kBlocked);  // the same spot again
+  ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
   EXPECT_EQ(task.progress().explore_goals, 1);
 }

@@ -165,6 +165,8 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
     robot.last_executor_command = command.id;
     *response.mutable_command() =
         ToProto(InRobotFrame(robot, command), robot.last_session_command, task.task_id);
+    if (robot.fly_roll && response.command().has_navigate())
+      SetFlyRollModes(response.mutable_command()->mutable_navigate());
     robot.last_command = response.command();
     robot.session->Send(response);
   }

@@ -2,6 +2,7 @@
 
 #include <grpcpp/client_context.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "absl/strings/match.h"
@@ -72,6 +73,31 @@ void AddEroiValues(const ExplorationContext& context, pb::SelectExplorationGoalR
   for (double value : context.eroi_values) request->add_eroi_semantic_values(value);
 }
 
+std::vector<Eigen::Vector3d> RobotPath(const pb::PlanPathResponse& response,
+                                       const PathQuery& query) {
+  std::vector<Eigen::Vector3d> path;
+  auto xy = [&](int i) { return Eigen::Vector2d(response.path(i).x(), response.path(i).y()); };
+  if (!query.multi_modal || response.path_size() == 0) {
+    for (int i = 0; i < response.path_size(); ++i)
+      path.emplace_back(xy(i).x(), xy(i).y(), query.goal.z());
+    return path;
+  }
+  auto add = [&](const Eigen::Vector2d& p, double z) {
+    if (!path.empty() && path.back().head<2>() == p && path.back().z() == z) return;
+    path.emplace_back(p.x(), p.y(), z);
+  };
+  add(xy(0), query.start.z());
+  for (const pb::PathSegment& s : response.segments()) {
+    const double z = s.mode() == pb::MOTION_MODE_FLYING ? s.altitude_m() : 0.0;
+    const int first = static_cast<int>(s.first_point());
+    const int last = std::min(static_cast<int>(s.last_point()), response.path_size() - 1);
+    if (first > last) continue;
+    add(xy(first), z);  // straight up or down where the mode (or the altitude) changes
+    for (int i = first + 1; i <= last; ++i) add(xy(i), z);
+  }
+  return path;
+}
+
 PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings)
     : channel_(channel),
       stub_(pb::PlanningService::NewStub(channel)),
@@ -140,11 +166,7 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
                                    {"fallback", "robot plans locally"}});
     return std::vector<Eigen::Vector3d>{};
   }
-  std::vector<Eigen::Vector3d> path;
-  path.reserve(static_cast<std::size_t>(response.path_size()));
-  for (const common::v1::Pose2D& point : response.path())
-    path.emplace_back(point.x(), point.y(), query.goal.z());
-  return path;
+  return RobotPath(response, query);
 }
 
 grpc::Status PlanningClient::Select(const pb::SelectExplorationGoalRequest& request,

@@ -25,6 +25,14 @@ namespace semnav::reasoning {
 void AddEroiValues(const ExplorationContext& context,
                    planning::v1::SelectExplorationGoalRequest* request);
 
+// The robot's waypoints for a PlanPath answer to `query`. 2D paths keep the goal's z. Multi-modal
+// paths put rolling points on the floor (z = 0) and flying segments at their altitude_m: the
+// robot climbs straight up where a flying segment begins and lands straight down where the next
+// rolling one begins, so it never slants into what it flies over; the first point keeps the
+// robot's own altitude (start z).
+std::vector<Eigen::Vector3d> RobotPath(const planning::v1::PlanPathResponse& response,
+                                       const PathQuery& query);
+
 // SelectGoal sends the task's SemanticContext (SEMANTIC_FRONTIER's language and grounding inputs);
 // ExplorationGoal without a task asks with the configured strategy and no context.
 class PlanningClient : public PathPlanner, public ExplorationService {

@@ -8,6 +8,7 @@
 #include "absl/synchronization/mutex.h"
 #include "gtest/gtest.h"
 #include "services/common/status/grpc_status.h"
+#include "services/reasoning/server/proto_convert.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -213,6 +214,77 @@ TEST_F(GatewayPlanningClientTest, NoPathWithTheClearanceIsRetriedWithTheBareFoot
   EXPECT_TRUE(absl::IsNotFound(client_->Plan(query).status()));
   absl::MutexLock lock(&planning_.mu);
   EXPECT_EQ(planning_.radii.size(), 2u);
+}
+
+pb::PlanPathResponse FlyOverCrate() {
+  pb::PlanPathResponse response;
+  for (double x : {0.0, 1.0, 2.0, 3.0}) {
+    common::v1::Pose2D* p = response.add_path();
+    p->set_x(x);
+    p->set_y(0.5);
+  }
+  auto segment = [&](uint32_t first, uint32_t last, pb::MotionMode mode, double altitude) {
+    pb::PathSegment* s = response.add_segments();
+    s->set_first_point(first);
+    s->set_last_point(last);
+    s->set_mode(mode);
+    s->set_altitude_m(altitude);
+  };
+  segment(0, 1, pb::MOTION_MODE_ROLLING, 0.0);
+  segment(1, 2, pb::MOTION_MODE_FLYING, 1.4);
+  segment(2, 3, pb::MOTION_MODE_ROLLING, 0.0);
+  return response;
+}
+
+// Regression (flyroll_01/02: "robot blocked: collision with crate"): the gateway dropped the
+// segments of JUMP_ASTAR's answer and sent every point at the goal's z, so the fly-roll robot
+// rolled into each crate its path flew over. Now it climbs straight up where the flight begins,
+// flies at the segment's altitude and lands straight down where rolling resumes.
+TEST(GatewayRobotPath, FlyingSegmentsClimbFlyAndLand) {
+  PathQuery query;
+  query.goal = Eigen::Vector3d(3, 0.5, 0.7);  // an object's height: not where the robot drives
+  query.multi_modal = true;
+  const std::vector<Eigen::Vector3d> path = RobotPath(FlyOverCrate(), query);
+  const std::vector<Eigen::Vector3d> expected = {{0, 0.5, 0},   {1, 0.5, 0}, {1, 0.5, 1.4},
+                                                 {2, 0.5, 1.4}, {2, 0.5, 0}, {3, 0.5, 0}};
+  ASSERT_EQ(path.size(), expected.size());
+  for (size_t i = 0; i < path.size(); ++i)
+    EXPECT_TRUE(path[i].isApprox(expected[i])) << i << ": " << path[i].transpose();
+  // The robot's modes: the climb, the flight and the landing are flown.
+  api::NavigateAction navigate;
+  for (const Eigen::Vector3d& p : path) {
+    common::v1::Vector3* v = navigate.add_path()->mutable_position();
+    v->set_x(p.x());
+    v->set_y(p.y());
+    v->set_z(p.z());
+  }
+  SetFlyRollModes(&navigate);
+  const std::vector<api::LocomotionMode> modes = {
+      api::LOCOMOTION_MODE_GROUND, api::LOCOMOTION_MODE_GROUND, api::LOCOMOTION_MODE_AIR,
+      api::LOCOMOTION_MODE_AIR,    api::LOCOMOTION_MODE_AIR,    api::LOCOMOTION_MODE_GROUND};
+  for (int i = 0; i < navigate.path_size(); ++i) EXPECT_EQ(navigate.path(i).mode(), modes[i]) << i;
+}
+
+TEST(GatewayRobotPath, AHoveringRobotLandsFirstAndTwoDimensionalPathsKeepTheGoalHeight) {
+  PathQuery query;
+  query.start = Eigen::Vector3d(0, 0.5, 1.4);  // still in the air after a flight
+  query.goal = Eigen::Vector3d(3, 0.5, 0.7);
+  query.multi_modal = true;
+  pb::PlanPathResponse rolling = FlyOverCrate();
+  rolling.mutable_segments()->Clear();
+  pb::PathSegment* s = rolling.add_segments();
+  s->set_first_point(0);
+  s->set_last_point(3);
+  s->set_mode(pb::MOTION_MODE_ROLLING);
+  std::vector<Eigen::Vector3d> path = RobotPath(rolling, query);
+  ASSERT_EQ(path.size(), 5u);
+  EXPECT_TRUE(path[0].isApprox(Eigen::Vector3d(0, 0.5, 1.4)));
+  EXPECT_TRUE(path[1].isApprox(Eigen::Vector3d(0, 0.5, 0)));  // straight down
+  EXPECT_TRUE(path[4].isApprox(Eigen::Vector3d(3, 0.5, 0)));
+  query.multi_modal = false;
+  path = RobotPath(rolling, query);
+  ASSERT_EQ(path.size(), 4u);
+  for (const Eigen::Vector3d& p : path) EXPECT_DOUBLE_EQ(p.z(), 0.7);
 }
 
 }  // namespace

@@ -50,6 +50,17 @@ api::Subgoal ToProto(const Subgoal& subgoal) {
   return out;
 }
 
+void SetFlyRollModes(api::NavigateAction* navigate) {
+  constexpr double kAboveFloorM = 1e-6;
+  double previous_z = navigate->path().empty() ? 0.0 : navigate->path(0).position().z();
+  for (api::PathWaypoint& w : *navigate->mutable_path()) {
+    const double z = w.position().z();
+    w.set_mode(z > kAboveFloorM || previous_z > kAboveFloorM ? api::LOCOMOTION_MODE_AIR
+                                                             : api::LOCOMOTION_MODE_GROUND);
+    previous_z = z;
+  }
+}
+
 api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id,
                           const std::string& task_id) {
   api::RobotCommand out;

@@ -25,6 +25,10 @@ TargetSpec FromProto(const api::TargetSpec& target);
 api::Subgoal ToProto(const Subgoal& subgoal);
 api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_id,
                           const std::string& task_id);
+// A fly-roll robot's navigate path: each waypoint's mode says how the segment ending there is
+// travelled, AIR when it starts or ends above the floor (take-off, flight, landing), GROUND
+// otherwise. The first segment starts where the first waypoint is (the robot's position).
+void SetFlyRollModes(api::NavigateAction* navigate);
 api::Event ToProto(const LoggedEvent& event);
 api::TaskStatus ToProto(TaskState state);
 // The operator's TaskSnapshot (the only place a task becomes a message).
