@@ -158,7 +158,7 @@ std::vector<RobotCommand> TaskExecutor::Hold(double now, double duration,
 
 RobotCommand TaskExecutor::NewCommand(CommandKind kind, const std::string& reason) {
   RobotCommand command;
-  command.kind = kind;
+  command.kind = active_kind_ = kind;
   command.id = active_command_ = next_command_id_++;
   command.reason = reason;
   return command;
@@ -593,6 +593,24 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
   return {};
 }
 
+std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
+  // The hold's own end: the window is the executor's clock (OnPose ends it at the deadline; the
+  // robot's timer may run a step ahead of it).
+  if (active_kind_ == CommandKind::kHold) {
+    return now >= phase_deadline_ ? VerifyTimedOut(now) : std::vector<RobotCommand>{};
+  }
+  if (now >= phase_deadline_) return VerifyTimedOut(now);
+  // Facing the target: the robot is told at once to hold for the rest of the window, rather than
+  // left without a command until detections (or the vision model) decide.
+  RobotCommand command =
+      NewCommand(CommandKind::kHold, absl::StrCat("verifying object ", progress_.target->object_id,
+                                                  ": holding while detections confirm it"));
+  command.duration_s = phase_deadline_ - now;
+  if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
+  progress_.reason = command.reason;
+  return {command};
+}
+
 std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
   const double distance = (progress_.target->position - pose_.position).head<2>().norm();
   if (distance <= config_.success_radius_m)
@@ -859,7 +877,7 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
       if (explore_goal_.has_value()) SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
       return Explore(now);
     case Phase::kVerifying:
-      return {};  // facing the target; confirmation comes from detections or the vision model
+      return HoldToVerify(now);
     case Phase::kMoving:
     case Phase::kRotating:
     case Phase::kWaiting:

@@ -1,6 +1,6 @@
 // Per-task state machine over the action primitives (seed 002, 3.2.5, LOVON): NAVIGATE (goal with
 // yaw toward the target), APPROACH (stop 0.5 m away at 0.15 m/s), LOOK_AROUND (0.5 rad/s for 12 s),
-// VERIFY (turn to face, confirm by new detections or the vision model), BACKTRACK, EXPLORE,
+// VERIFY (turn to face, hold, confirm by new detections or the vision model), BACKTRACK, EXPLORE,
 // WAIT; with timeouts, re-planning on failure, and success = stopped within 1 m of a verified
 // target (seed 004). Goal resolution uses the fast path; when it is not confident the executor
 // keeps exploring and offers a slow-path model request that the server runs asynchronously
@@ -238,6 +238,8 @@ class TaskExecutor {
   std::vector<RobotCommand> TargetReached(double now, const std::string& reason);
   // Success in view: within reach of the located target and seeing it; nullopt = not yet.
   std::optional<std::vector<RobotCommand>> SuccessInView(double now, int fresh_detections);
+  // VERIFY: the robot reached its view of the target; it holds for the rest of the window.
+  std::vector<RobotCommand> HoldToVerify(double now);
   // VERIFY ran out of time without enough new detections: accept, look again, or set aside.
   std::vector<RobotCommand> VerifyTimedOut(double now);
   // The robot reported BLOCKED: back off and re-plan with more clearance, or give the goal up.
@@ -317,6 +319,7 @@ class TaskExecutor {
   bool endgame_taken_ = false;
   uint64_t next_command_id_ = 1;
   uint64_t active_command_ = 0;
+  CommandKind active_kind_ = CommandKind::kHold;
   double phase_deadline_ = 0.0;
   uint64_t requested_revision_ = 0;
   bool awaiting_model_ = false;
