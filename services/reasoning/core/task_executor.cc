@@ -169,7 +169,21 @@ std::vector<RobotCommand> TaskExecutor::Halt(TaskState state, CommandKind kind,
   progress_.state = state;
   progress_.reason = reason;
   phase_ = Phase::kIdle;
+  if (Ended(state)) ReleaseSearchState();
   return {NewCommand(kind, reason)};
+}
+
+void TaskExecutor::ReleaseSearchState() {
+  // The gateway keeps every task it ran for GetTask; an ended one needs only its progress. Its
+  // copy of the scene graph (embeddings included) and search lists grew the gateway's memory by
+  // each finished task (fleet bench, 50 robots: +11 MiB in 150 s).
+  graph_ = SceneGraph{};
+  text_embedding_ = {};
+  spent_explore_goals_ = {};
+  trail_ = {};
+  blocked_spots_ = {};
+  failed_fallback_steps_ = {};
+  pending_request_.reset();
 }
 
 std::vector<RobotCommand> TaskExecutor::Abandon(const std::string& reason) {
@@ -938,6 +952,7 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
     if (before != nullptr && after != nullptr)
       fresh = std::max(0, after->detection_count - before->detection_count);
   }
+  if (Ended(progress_.state)) return {};  // nothing to decide: no copy kept
   graph_ = graph;
   if (progress_.state != TaskState::kRunning) return {};
   if (progress_.target.has_value()) {

@@ -180,6 +180,8 @@ class TaskExecutor {
   // A pending slow-path request, handed out once.
   std::optional<ModelRequest> TakeModelRequest();
   const TaskProgress& progress() const { return progress_; }
+  // The scene graph the executor decides on; empty once the task ended (not kept for GetTask).
+  const SceneGraph& scene_graph() const { return graph_; }
   const std::vector<Subgoal>& subgoals() const { return subgoals_; }
   bool finished() const;
   // PAUSED because the planner's dependency is gone (not by the operator or the session).
@@ -201,6 +203,8 @@ class TaskExecutor {
   std::vector<RobotCommand> NextSubgoal(double now, const std::string& reason);
   RobotCommand NewCommand(CommandKind kind, const std::string& reason);
   std::vector<RobotCommand> Halt(TaskState state, CommandKind kind, const std::string& reason);
+  // An ended task drops what only a running search needs (the scene graph copy, search lists).
+  void ReleaseSearchState();
   std::vector<RobotCommand> Fail(const std::string& reason);
   // Fails the task instead of sending a command that CheckCommand refused.
   std::vector<RobotCommand> Refuse(const absl::Status& refused);

@@ -429,6 +429,21 @@ TEST_F(GatewayTaskExecutorTest, VerifyAnswersTheRobotAtOnceWithAHoldForTheRestOf
   EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
 }
 
+// Regression (fleet bench: the gateway grew with every finished task): an ended task keeps its
+// progress for GetTask but no copy of the scene graph, and later graphs are not copied into it.
+TEST_F(GatewayTaskExecutorTest, AnEndedTaskKeepsNoSceneGraph) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  task.Start(0, At(0));
+  ASSERT_EQ(task.scene_graph().objects.size(), 1u);
+  ASSERT_EQ(task.Cancel("operator").at(0).kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kCancelled);
+  EXPECT_TRUE(task.scene_graph().objects.empty());
+  EXPECT_TRUE(task.OnSceneGraph(1, GraphWith({Extinguisher(16)}, 2)).empty());
+  EXPECT_TRUE(task.scene_graph().objects.empty());
+  EXPECT_EQ(task.progress().target->object_id, 7);  // what GetTask reports stays
+}
+
 // Regression (the mission bench's "episodes ended within 0.4-0.5 m but never succeeded"): close
 // up, the camera no longer framed the target (facing its mapped centre), VERIFY got one new
 // detection instead of two, and its timeout rejected the right object for good. A target seen
