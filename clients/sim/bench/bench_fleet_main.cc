@@ -66,8 +66,14 @@ const std::vector<semnav::FlagSpec> kFlags = {
 
 constexpr absl::Duration kStep = absl::Milliseconds(200);  // 5 Hz state, real-time stepping
 constexpr double kStepS = 0.2;
-constexpr int kStepsPerFrame = 5;     // 1 Hz frames to mapping
-constexpr double kWarmUpShare = 0.2;  // RSS growth is counted from this share of the run on
+constexpr int kStepsPerFrame = 5;  // 1 Hz frames to mapping
+// Warm-up: RSS growth is counted from the later of this share of the run and the time the live
+// map settled (its explored area grew by less than kSettledGrowth over the next kSettleWindowS):
+// until then mapping's memory follows the map of a home the robots are still discovering, which
+// is bounded by the home, not a leak.
+constexpr double kWarmUpShare = 0.2;
+constexpr double kSettledGrowth = 0.01;
+constexpr double kSettleWindowS = 30.0;
 constexpr absl::Duration kRssPeriod = absl::Milliseconds(500);
 constexpr int kMapEveryRss = 10;  // the live map's size every 10 RSS samples (5 s)
 constexpr absl::Duration kRpcDeadline = absl::Seconds(10);
@@ -488,6 +494,18 @@ std::optional<MapSize> SampleMap(const std::shared_ptr<grpc::Channel>& mapping) 
   return size;
 }
 
+// Seconds into the run when the explored area first stays within kSettledGrowth for
+// kSettleWindowS; nullopt when it never did within the run.
+std::optional<double> MapSettledAt(const std::vector<MapSize>& sizes) {
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    for (size_t j = i + 1; j < sizes.size(); ++j) {
+      if (sizes[j].explored_cells > (1.0 + kSettledGrowth) * sizes[i].explored_cells) break;
+      if (sizes[j].at_s - sizes[i].at_s >= kSettleWindowS) return sizes[i].at_s;
+    }
+  }
+  return std::nullopt;
+}
+
 struct ServiceRss {
   long start_kb = 0;              // first sample, robots connected
   long warm_kb = 0;               // first sample after the warm-up share of the run
@@ -508,7 +526,9 @@ struct RunResult {
   std::map<std::string, int> tasks_ended;
   std::map<std::string, ServiceRss> rss;
   std::vector<MapSize> map_sizes;  // every kMapPeriod
-  double load_average_1m = 0.0;    // over the machine, at the end of the run
+  double warm_up_s = 0.0;          // RSS growth is counted from here on
+  std::optional<double> map_settled_at_s;
+  double load_average_1m = 0.0;  // over the machine, at the end of the run
 
   // Feedback -> next command when there are samples; instruction -> first command otherwise.
   const std::vector<double>& command_ms() const {
@@ -564,7 +584,6 @@ absl::StatusOr<RunResult> RunFleet(int robots, absl::Duration duration, const Sh
     }
     const absl::Time begin = absl::Now();
     const absl::Time end = begin + duration;
-    const absl::Time warm = begin + duration * kWarmUpShare;
     std::atomic<bool> sampling{true};
     std::map<std::string, std::vector<std::pair<absl::Time, long>>> samples;
     const std::shared_ptr<grpc::Channel> mapping = (*stack)->endpoints().mapping;
@@ -592,6 +611,10 @@ absl::StatusOr<RunResult> RunFleet(int robots, absl::Duration duration, const Sh
     }
     sampling = false;
     sampler.join();
+    result.map_settled_at_s = MapSettledAt(result.map_sizes);
+    result.warm_up_s = std::max(absl::ToDoubleSeconds(duration) * kWarmUpShare,
+                                result.map_settled_at_s.value_or(0.0));
+    const absl::Time warm = begin + absl::Seconds(result.warm_up_s);
     for (const auto& [name, series] : samples) {
       if (series.empty()) continue;
       ServiceRss rss;
@@ -657,6 +680,9 @@ nlohmann::json RunJson(const RunResult& r) {
   out["tasks_submitted"] = r.tasks_submitted;
   out["tasks_ended"] = r.tasks_ended;
   out["rss_growth_pct"] = r.rss_growth_pct();
+  out["warm_up_s"] = r.warm_up_s;
+  out["map_settled_at_s"] =
+      r.map_settled_at_s.has_value() ? nlohmann::json(*r.map_settled_at_s) : nlohmann::json();
   for (const auto& [name, rss] : r.rss) {
     out["services"][name] = {{"rss_start_kb", rss.start_kb},
                              {"rss_warm_kb", rss.warm_kb},
@@ -690,6 +716,10 @@ void PrintRun(const RunResult& r) {
       r.instruction_ms.size(), ms(Percentile(r.operator_ms, 50)), ms(Percentile(r.operator_ms, 99)),
       r.operator_ms.size(), r.errors, r.late_steps, r.tasks_submitted, r.rss_growth_pct(),
       r.load_average_1m, r.MeetsTargets() ? "meets targets" : "misses targets");
+  std::cout << absl::StrFormat("    warm-up %.0f s (map settled %s)\n", r.warm_up_s,
+                               r.map_settled_at_s.has_value()
+                                   ? absl::StrFormat("at %.0f s", *r.map_settled_at_s)
+                                   : std::string("never"));
   for (const auto& [name, rss] : r.rss) {
     std::cout << absl::StrFormat(
         "    %-10s RSS start %7ld KiB, after warm-up %7ld KiB, end %7ld KiB (%+.1f %%)\n", name,
