@@ -66,9 +66,16 @@ const std::vector<semnav::FlagSpec> kFlags = {
 
 constexpr absl::Duration kStep = absl::Milliseconds(200);  // 5 Hz state, real-time stepping
 constexpr double kStepS = 0.2;
-constexpr int kStepsPerFrame = 5;     // 1 Hz frames to mapping
-constexpr double kWarmUpShare = 0.2;  // RSS growth is counted from this share of the run on
+constexpr int kStepsPerFrame = 5;  // 1 Hz frames to mapping
+// Warm-up: RSS growth is counted from the later of this share of the run and the time the live
+// map settled (its explored area grew by less than kSettledGrowth over the next kSettleWindowS):
+// until then mapping's memory follows the map of a home the robots are still discovering, which
+// is bounded by the home, not a leak.
+constexpr double kWarmUpShare = 0.2;
+constexpr double kSettledGrowth = 0.01;
+constexpr double kSettleWindowS = 30.0;
 constexpr absl::Duration kRssPeriod = absl::Milliseconds(500);
+constexpr int kMapEveryRss = 10;  // the live map's size every 10 RSS samples (5 s)
 constexpr absl::Duration kRpcDeadline = absl::Seconds(10);
 
 // The targets for "a fleet of N meets them".
@@ -88,14 +95,16 @@ bool Terminal(api::TaskStatus status) {
          status == api::TASK_STATUS_CANCELLED;
 }
 
-// Whether the gateway's next command answers this command's GOAL_REACHED: a navigate that moves
-// the robot. Not a rotate or hold, which the gateway also ends by its own clock (the next command
-// may already be on its way when the robot reports), nor a navigate to where the robot stands,
-// which turns it to verify a target: the gateway answers that one when detections confirm it.
-bool AnsweredOnFeedback(const api::RobotCommand& command, const sim::SimRobot& robot) {
-  if (!command.has_navigate()) return false;
-  const Eigen::Vector2d goal(command.navigate().goal().x(), command.navigate().goal().y());
-  return (goal - robot.odometry_pose().position.head<2>()).norm() > 0.1;
+// Whether the robot's report that ends this command makes the gateway's next command due at
+// once: a navigate's GOAL_REACHED, BLOCKED or FAILED (the executor answers each with a command,
+// VERIFY's with a hold). Not a rotate or hold: those are intentional waits that the gateway ends
+// by its own clock, so their successor is due at the gateway's deadline and may be on its way
+// before the robot reports.
+bool AnsweredOnReport(const api::RobotCommand& command) { return command.has_navigate(); }
+
+bool EndsCommand(api::FeedbackKind kind) {
+  return kind == api::FEEDBACK_KIND_GOAL_REACHED || kind == api::FEEDBACK_KIND_BLOCKED ||
+         kind == api::FEEDBACK_KIND_FAILED;
 }
 
 double Ms(absl::Duration d) { return absl::ToDoubleMilliseconds(d); }
@@ -123,11 +132,28 @@ std::optional<long> RssKb(pid_t pid) {
   return std::nullopt;
 }
 
+// One of the slowest report -> next command samples: what the robot reported the end of, and
+// what came next (the commands' reasons), so a slow p99 can be read.
+struct SlowCommand {
+  double ms = 0.0;
+  std::string reported;
+  std::string next;
+};
+constexpr size_t kSlowestKept = 5;
+
 // Everything the threads record, under one lock: the run's figures.
 class Recorder {
  public:
   void Instruction(absl::Duration d) { Add(instruction_ms_, Ms(d)); }
-  void Feedback(absl::Duration d) { Add(feedback_ms_, Ms(d)); }
+  // A report -> next command sample, with both commands' reasons for the slowest few.
+  void Feedback(absl::Duration d, const std::string& reported, const std::string& next) {
+    absl::MutexLock lock(&mu_);
+    feedback_ms_.push_back(Ms(d));
+    slowest_.push_back({Ms(d), reported, next});
+    std::sort(slowest_.begin(), slowest_.end(),
+              [](const SlowCommand& a, const SlowCommand& b) { return a.ms > b.ms; });
+    if (slowest_.size() > kSlowestKept) slowest_.pop_back();
+  }
   void Operator(absl::Duration d) { Add(operator_ms_, Ms(d)); }
   void Error(const std::string& what) {
     absl::MutexLock lock(&mu_);
@@ -149,6 +175,10 @@ class Recorder {
 
   std::vector<double> instruction_ms() { return Copy(instruction_ms_); }
   std::vector<double> feedback_ms() { return Copy(feedback_ms_); }
+  std::vector<SlowCommand> slowest() {
+    absl::MutexLock lock(&mu_);
+    return slowest_;
+  }
   std::vector<double> operator_ms() { return Copy(operator_ms_); }
   int errors() {
     absl::MutexLock lock(&mu_);
@@ -184,6 +214,7 @@ class Recorder {
   absl::Mutex mu_;
   std::vector<double> instruction_ms_ ABSL_GUARDED_BY(mu_);
   std::vector<double> feedback_ms_ ABSL_GUARDED_BY(mu_);
+  std::vector<SlowCommand> slowest_ ABSL_GUARDED_BY(mu_);
   std::vector<double> operator_ms_ ABSL_GUARDED_BY(mu_);
   int errors_ ABSL_GUARDED_BY(mu_) = 0;
   std::vector<std::string> error_samples_ ABSL_GUARDED_BY(mu_);
@@ -213,10 +244,9 @@ struct FleetRobot {
   int tasks = 0;
   absl::Time submitted_at;
   bool first_command_seen = true;
-  // The latest command and, once the robot reported it reached, when it did so.
+  // The latest command and, once the robot reported its end, when it did so.
   std::optional<api::RobotCommand> current;
-  bool current_answered_on_feedback = false;
-  std::optional<absl::Time> goal_reached_sent_at;
+  std::optional<absl::Time> report_sent_at;
   // Shared with the operator thread.
   absl::Mutex task_mu;
   std::string task_id ABSL_GUARDED_BY(task_mu);
@@ -357,26 +387,28 @@ class Fleet {
         recorder_.Instruction(received.received_at - robot.submitted_at);
         robot.first_command_seen = true;
       }
-      // The answer to the robot's GOAL_REACHED: the task's next command after the report.
-      if (robot.goal_reached_sent_at.has_value() && robot.current.has_value() &&
+      // The answer to the robot's report: the task's next command after it.
+      if (robot.report_sent_at.has_value() && robot.current.has_value() &&
           command.task_id() == robot.current->task_id() &&
           command.command_id() > robot.current->command_id() &&
-          received.received_at >= *robot.goal_reached_sent_at) {
-        recorder_.Feedback(received.received_at - *robot.goal_reached_sent_at);
+          received.received_at >= *robot.report_sent_at) {
+        recorder_.Feedback(received.received_at - *robot.report_sent_at, robot.current->reason(),
+                           command.reason());
       }
-      robot.goal_reached_sent_at.reset();
+      robot.report_sent_at.reset();
       robot.current = command;
-      robot.current_answered_on_feedback = AnsweredOnFeedback(command, *robot.sim);
+      const absl::Time accepted_at = absl::Now();
       const loop::Feedback accepted = robot.executor->Start(KeepAlive(command));
       if (absl::Status s = robot.session->Send(loop::FeedbackMessage(accepted)); !s.ok()) return s;
+      if (accepted.kind == api::FEEDBACK_KIND_FAILED && AnsweredOnReport(command))
+        robot.report_sent_at = accepted_at;  // refused at once: the gateway re-plans
     }
     if (std::optional<loop::Feedback> outcome = robot.executor->Step(kStepS); outcome.has_value()) {
       const absl::Time sent_at = absl::Now();  // before the write: its time is part of the latency
       if (absl::Status s = robot.session->Send(loop::FeedbackMessage(*outcome)); !s.ok()) return s;
-      if (outcome->kind == api::FEEDBACK_KIND_GOAL_REACHED && robot.current.has_value() &&
-          outcome->command_id == robot.current->command_id() &&
-          robot.current_answered_on_feedback) {
-        robot.goal_reached_sent_at = sent_at;
+      if (EndsCommand(outcome->kind) && robot.current.has_value() &&
+          outcome->command_id == robot.current->command_id() && AnsweredOnReport(*robot.current)) {
+        robot.report_sent_at = sent_at;
       }
     }
     if (absl::Status s = robot.session->Send(loop::StateMessage(*robot.sim, robot.id)); !s.ok())
@@ -429,23 +461,73 @@ class Fleet {
   std::vector<std::unique_ptr<FleetRobot>> robots_;
 };
 
+// The live map's size at one time (GetSceneGraph, GetGridMap's explored layer): what mapping's
+// memory should follow while the robots explore a finite home.
+struct MapSize {
+  double at_s = 0.0;  // seconds into the run
+  long objects = 0;
+  long relations = 0;
+  long explored_cells = 0;
+};
+
+std::optional<MapSize> SampleMap(const std::shared_ptr<grpc::Channel>& mapping) {
+  auto stub = semnav::mapping::v1::MappingService::NewStub(mapping);
+  MapSize size;
+  {
+    grpc::ClientContext context;
+    context.set_deadline(absl::ToChronoTime(absl::Now() + kRpcDeadline));
+    semnav::mapping::v1::GetSceneGraphResponse response;
+    if (!stub->GetSceneGraph(&context, {}, &response).ok()) return std::nullopt;
+    size.objects = response.graph().objects_size();
+    size.relations = response.graph().relations_size();
+  }
+  grpc::ClientContext context;
+  context.set_deadline(absl::ToChronoTime(absl::Now() + kRpcDeadline));
+  semnav::mapping::v1::GetGridMapRequest request;
+  request.add_layers(semnav::common::v1::GRID_LAYER_KIND_EXPLORED);
+  semnav::mapping::v1::GetGridMapResponse response;
+  if (!stub->GetGridMap(&context, request, &response).ok()) return std::nullopt;
+  for (const auto& layer : response.grid().layers()) {
+    size.explored_cells =
+        std::count_if(layer.data().begin(), layer.data().end(), [](char c) { return c != 0; });
+  }
+  return size;
+}
+
+// Seconds into the run when the explored area first stays within kSettledGrowth for
+// kSettleWindowS; nullopt when it never did within the run.
+std::optional<double> MapSettledAt(const std::vector<MapSize>& sizes) {
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    for (size_t j = i + 1; j < sizes.size(); ++j) {
+      if (sizes[j].explored_cells > (1.0 + kSettledGrowth) * sizes[i].explored_cells) break;
+      if (sizes[j].at_s - sizes[i].at_s >= kSettleWindowS) return sizes[i].at_s;
+    }
+  }
+  return std::nullopt;
+}
+
 struct ServiceRss {
-  long start_kb = 0;        // first sample, robots connected
-  long warm_kb = 0;         // first sample after the warm-up share of the run
-  long end_kb = 0;          // last sample
-  double growth_pct = 0.0;  // warm -> end
+  long start_kb = 0;              // first sample, robots connected
+  long warm_kb = 0;               // first sample after the warm-up share of the run
+  long end_kb = 0;                // last sample
+  double growth_pct = 0.0;        // warm -> end
+  std::vector<long> every_5s_kb;  // one sample per kMapEveryRss, to see the curve
 };
 
 struct RunResult {
   int robots = 0;
   double duration_s = 0.0;
   std::vector<double> instruction_ms, feedback_ms, operator_ms;
+  std::vector<SlowCommand> slowest;
   int errors = 0;
   std::vector<std::string> error_samples;
   int late_steps = 0;
   int tasks_submitted = 0;
   std::map<std::string, int> tasks_ended;
   std::map<std::string, ServiceRss> rss;
+  std::vector<MapSize> map_sizes;  // every kMapPeriod
+  double warm_up_s = 0.0;          // RSS growth is counted from here on
+  std::optional<double> map_settled_at_s;
   double load_average_1m = 0.0;  // over the machine, at the end of the run
 
   // Feedback -> next command when there are samples; instruction -> first command otherwise.
@@ -502,15 +584,21 @@ absl::StatusOr<RunResult> RunFleet(int robots, absl::Duration duration, const Sh
     }
     const absl::Time begin = absl::Now();
     const absl::Time end = begin + duration;
-    const absl::Time warm = begin + duration * kWarmUpShare;
     std::atomic<bool> sampling{true};
     std::map<std::string, std::vector<std::pair<absl::Time, long>>> samples;
+    const std::shared_ptr<grpc::Channel> mapping = (*stack)->endpoints().mapping;
     std::thread sampler([&] {
-      while (sampling) {
+      for (int i = 0; sampling; ++i) {
         const absl::Time now = absl::Now();
         for (const auto& [name, pid] : pids) {
           if (std::optional<long> kb = RssKb(pid); kb.has_value())
             samples[name].emplace_back(now, *kb);
+        }
+        if (i % kMapEveryRss == 0) {
+          if (std::optional<MapSize> size = SampleMap(mapping)) {
+            size->at_s = absl::ToDoubleSeconds(now - begin);
+            result.map_sizes.push_back(*size);
+          }
         }
         absl::SleepFor(kRssPeriod);
       }
@@ -523,6 +611,10 @@ absl::StatusOr<RunResult> RunFleet(int robots, absl::Duration duration, const Sh
     }
     sampling = false;
     sampler.join();
+    result.map_settled_at_s = MapSettledAt(result.map_sizes);
+    result.warm_up_s = std::max(absl::ToDoubleSeconds(duration) * kWarmUpShare,
+                                result.map_settled_at_s.value_or(0.0));
+    const absl::Time warm = begin + absl::Seconds(result.warm_up_s);
     for (const auto& [name, series] : samples) {
       if (series.empty()) continue;
       ServiceRss rss;
@@ -536,10 +628,13 @@ absl::StatusOr<RunResult> RunFleet(int robots, absl::Duration duration, const Sh
         }
       }
       rss.growth_pct = 100.0 * (rss.end_kb - rss.warm_kb) / std::max(rss.warm_kb, 1L);
+      for (size_t i = 0; i < series.size(); i += kMapEveryRss)
+        rss.every_5s_kb.push_back(series[i].second);
       result.rss[name] = rss;
     }
     result.instruction_ms = recorder.instruction_ms();
     result.feedback_ms = recorder.feedback_ms();
+    result.slowest = recorder.slowest();
     result.operator_ms = recorder.operator_ms();
     result.errors = recorder.errors();
     result.error_samples = recorder.error_samples();
@@ -568,6 +663,11 @@ nlohmann::json RunJson(const RunResult& r) {
   out["feedback_to_command_ms_p50"] = Number(Percentile(r.feedback_ms, 50));
   out["feedback_to_command_ms_p99"] = Number(Percentile(r.feedback_ms, 99));
   out["feedback_to_command_samples"] = r.feedback_ms.size();
+  out["command_slowest"] = nlohmann::json::array();
+  for (const SlowCommand& slow : r.slowest) {
+    out["command_slowest"].push_back(
+        {{"ms", slow.ms}, {"reported", slow.reported}, {"next", slow.next}});
+  }
   out["instruction_to_command_ms_p50"] = Number(Percentile(r.instruction_ms, 50));
   out["instruction_to_command_ms_p99"] = Number(Percentile(r.instruction_ms, 99));
   out["instruction_to_command_samples"] = r.instruction_ms.size();
@@ -580,11 +680,21 @@ nlohmann::json RunJson(const RunResult& r) {
   out["tasks_submitted"] = r.tasks_submitted;
   out["tasks_ended"] = r.tasks_ended;
   out["rss_growth_pct"] = r.rss_growth_pct();
+  out["warm_up_s"] = r.warm_up_s;
+  out["map_settled_at_s"] =
+      r.map_settled_at_s.has_value() ? nlohmann::json(*r.map_settled_at_s) : nlohmann::json();
   for (const auto& [name, rss] : r.rss) {
     out["services"][name] = {{"rss_start_kb", rss.start_kb},
                              {"rss_warm_kb", rss.warm_kb},
                              {"rss_end_kb", rss.end_kb},
-                             {"rss_growth_pct", rss.growth_pct}};
+                             {"rss_growth_pct", rss.growth_pct},
+                             {"rss_every_5s_kb", rss.every_5s_kb}};
+  }
+  for (const MapSize& size : r.map_sizes) {
+    out["map_sizes"].push_back({{"at_s", size.at_s},
+                                {"objects", size.objects},
+                                {"relations", size.relations},
+                                {"explored_cells", size.explored_cells}});
   }
   out["meets_targets"] = r.MeetsTargets();
   out["load_average_1m"] = r.load_average_1m;
@@ -606,10 +716,18 @@ void PrintRun(const RunResult& r) {
       r.instruction_ms.size(), ms(Percentile(r.operator_ms, 50)), ms(Percentile(r.operator_ms, 99)),
       r.operator_ms.size(), r.errors, r.late_steps, r.tasks_submitted, r.rss_growth_pct(),
       r.load_average_1m, r.MeetsTargets() ? "meets targets" : "misses targets");
+  std::cout << absl::StrFormat("    warm-up %.0f s (map settled %s)\n", r.warm_up_s,
+                               r.map_settled_at_s.has_value()
+                                   ? absl::StrFormat("at %.0f s", *r.map_settled_at_s)
+                                   : std::string("never"));
   for (const auto& [name, rss] : r.rss) {
     std::cout << absl::StrFormat(
         "    %-10s RSS start %7ld KiB, after warm-up %7ld KiB, end %7ld KiB (%+.1f %%)\n", name,
         rss.start_kb, rss.warm_kb, rss.end_kb, rss.growth_pct);
+  }
+  for (const SlowCommand& slow : r.slowest) {
+    std::cout << absl::StrFormat("    slow command %.1f ms: \"%s\" reported -> \"%s\"\n", slow.ms,
+                                 slow.reported, slow.next);
   }
   for (const std::string& error : r.error_samples) std::cout << "    error: " << error << "\n";
 }

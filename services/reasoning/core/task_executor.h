@@ -1,6 +1,6 @@
 // Per-task state machine over the action primitives (seed 002, 3.2.5, LOVON): NAVIGATE (goal with
 // yaw toward the target), APPROACH (stop 0.5 m away at 0.15 m/s), LOOK_AROUND (0.5 rad/s for 12 s),
-// VERIFY (turn to face, confirm by new detections or the vision model), BACKTRACK, EXPLORE,
+// VERIFY (turn to face, hold, confirm by new detections or the vision model), BACKTRACK, EXPLORE,
 // WAIT; with timeouts, re-planning on failure, and success = stopped within 1 m of a verified
 // target (seed 004). Goal resolution uses the fast path; when it is not confident the executor
 // keeps exploring and offers a slow-path model request that the server runs asynchronously
@@ -187,6 +187,8 @@ class TaskExecutor {
   // A pending slow-path request, handed out once.
   std::optional<ModelRequest> TakeModelRequest();
   const TaskProgress& progress() const { return progress_; }
+  // The scene graph the executor decides on; empty once the task ended (not kept for GetTask).
+  const SceneGraph& scene_graph() const { return graph_; }
   const std::vector<Subgoal>& subgoals() const { return subgoals_; }
   bool finished() const;
   // PAUSED because the planner's dependency is gone (not by the operator or the session).
@@ -208,6 +210,8 @@ class TaskExecutor {
   std::vector<RobotCommand> NextSubgoal(double now, const std::string& reason);
   RobotCommand NewCommand(CommandKind kind, const std::string& reason);
   std::vector<RobotCommand> Halt(TaskState state, CommandKind kind, const std::string& reason);
+  // An ended task drops what only a running search needs (the scene graph copy, search lists).
+  void ReleaseSearchState();
   std::vector<RobotCommand> Fail(const std::string& reason);
   // Fails the task instead of sending a command that CheckCommand refused.
   std::vector<RobotCommand> Refuse(const absl::Status& refused);
@@ -245,6 +249,8 @@ class TaskExecutor {
   std::vector<RobotCommand> TargetReached(double now, const std::string& reason);
   // Success in view: within reach of the located target and seeing it; nullopt = not yet.
   std::optional<std::vector<RobotCommand>> SuccessInView(double now, int fresh_detections);
+  // VERIFY: the robot reached its view of the target; it holds for the rest of the window.
+  std::vector<RobotCommand> HoldToVerify(double now);
   // VERIFY ran out of time without enough new detections: accept, look again, or set aside.
   std::vector<RobotCommand> VerifyTimedOut(double now);
   // The robot reported BLOCKED: back off and re-plan with more clearance, or give the goal up.
@@ -325,6 +331,7 @@ class TaskExecutor {
   bool endgame_taken_ = false;
   uint64_t next_command_id_ = 1;
   uint64_t active_command_ = 0;
+  CommandKind active_kind_ = CommandKind::kHold;
   double phase_deadline_ = 0.0;
   uint64_t requested_revision_ = 0;
   bool awaiting_model_ = false;

@@ -134,8 +134,11 @@ TEST_F(GatewayTaskExecutorTest, NavigateApproachVerifySucceedsWithinOneMetre) {
   out = task.OnFeedback(9, out[0].id, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "verifying");
-  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));  // turn in place
-  EXPECT_TRUE(task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached).empty());
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));      // turn in place
+  out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);  // facing it: hold
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  EXPECT_DOUBLE_EQ(out[0].duration_s, 9.0);  // the rest of the 10 s window begun at 9
   EXPECT_TRUE(
       task.OnSceneGraph(10, GraphWith({Extinguisher(16)}, 2)).empty());  // one new detection
   out = task.OnSceneGraph(11, GraphWith({Extinguisher(17)}, 3));         // two: verified
@@ -450,6 +453,59 @@ TEST_F(GatewayTaskExecutorTest, FailedExplorationGoalIsExcludedAndExplorationGoe
   EXPECT_EQ(task.progress().explore_goals, 1);  // goals never reached do not use the budget
 }
 
+// Regression (fleet bench, command p99 3.2 s): once the robot faced the target, VERIFY sent it
+// nothing until detections confirmed it, so the robot's GOAL_REACHED went unanswered for seconds.
+// Now every report is answered at once: a hold for the rest of the window, which the executor's
+// clock ends (a hold reported over early changes nothing; over at the deadline it times out).
+TEST_F(GatewayTaskExecutorTest, VerifyAnswersTheRobotAtOnceWithAHoldForTheRestOfTheWindow) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0)};
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(4.5));  // within 0.5 m: VERIFY at once
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);  // turn to face it
+  const std::vector<RobotCommand> hold =
+      task.OnFeedback(2.5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(hold.size(), 1u);
+  EXPECT_EQ(hold[0].kind, CommandKind::kHold);
+  EXPECT_DOUBLE_EQ(hold[0].duration_s, 7.5);
+  EXPECT_TRUE(absl::StrContains(hold[0].reason, "verifying object 7")) << hold[0].reason;
+  EXPECT_EQ(task.progress().phase, "verifying");
+  // The robot's timer ran a step ahead: nothing yet, the window is the executor's.
+  EXPECT_TRUE(task.OnFeedback(9.8, hold[0].id, RobotFeedback::kGoalReached).empty());
+  EXPECT_EQ(task.progress().phase, "verifying");
+  // Over at the deadline: the timeout's second look (seen only from afar, not accepted).
+  out = task.OnFeedback(10, hold[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));  // 0.8 m from the target
+  // Detections during a hold confirm the target as before.
+  out = task.OnFeedback(11, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  task.OnSceneGraph(12, GraphWith({Extinguisher(16)}, 2));
+  out = task.OnSceneGraph(13, GraphWith({Extinguisher(17)}, 3));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+// Regression (fleet bench: the gateway grew with every finished task): an ended task keeps its
+// progress for GetTask but no copy of the scene graph, and later graphs are not copied into it.
+TEST_F(GatewayTaskExecutorTest, AnEndedTaskKeepsNoSceneGraph) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  task.Start(0, At(0));
+  ASSERT_EQ(task.scene_graph().objects.size(), 1u);
+  ASSERT_EQ(task.Cancel("operator").at(0).kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kCancelled);
+  EXPECT_TRUE(task.scene_graph().objects.empty());
+  EXPECT_TRUE(task.OnSceneGraph(1, GraphWith({Extinguisher(16)}, 2)).empty());
+  EXPECT_TRUE(task.scene_graph().objects.empty());
+  EXPECT_EQ(task.progress().target->object_id, 7);  // what GetTask reports stays
+}
+
 // Regression (the mission bench's "episodes ended within 0.4-0.5 m but never succeeded"): close
 // up, the camera no longer framed the target (facing its mapped centre), VERIFY got one new
 // detection instead of two, and its timeout rejected the right object for good. A target seen
@@ -484,8 +540,12 @@ TEST_F(GatewayTaskExecutorTest, UnconfirmedTargetGetsASecondLookThenIsRuledOutWh
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));  // 0.8 m from the target
   EXPECT_NEAR(out[0].goal_yaw, 0.0, 1e-9);
   task.OnPose(12, At(4.2));
-  EXPECT_TRUE(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());
-  out = task.OnPose(20, At(4.2));  // the second look times out too
+  const std::vector<RobotCommand> hold =
+      task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(hold.size(), 1u);
+  EXPECT_EQ(hold[0].kind, CommandKind::kHold);
+  EXPECT_DOUBLE_EQ(hold[0].duration_s, 8.0);  // the second look's window began at 10
+  out = task.OnPose(20, At(4.2));             // the second look times out too
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().subgoal_index, 0);
   EXPECT_FALSE(task.progress().target.has_value());
@@ -925,8 +985,8 @@ TEST_F(GatewayTaskExecutorTest, VerifyFromAfarLooksAgainFromTheViewDistanceAndSu
   out = task.OnFeedback(11, out[0].id, RobotFeedback::kGoalReached);  // APPROACH: no closer
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().phase, "verifying");
-  EXPECT_TRUE(
-      task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).empty());  // facing the tv
+  EXPECT_EQ(task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached).at(0).kind,
+            CommandKind::kHold);  // facing the tv
   for (double now = 12; now < 21; now += 0.5) EXPECT_TRUE(task.OnPose(now, At(2.75)).empty());
   planner_.failures = {
       absl::FailedPreconditionError("goal occupied")};  // the own side's view point
@@ -940,7 +1000,8 @@ TEST_F(GatewayTaskExecutorTest, VerifyFromAfarLooksAgainFromTheViewDistanceAndSu
   EXPECT_TRUE(absl::StrContains(task.progress().reason, "another side")) << task.progress().reason;
   EXPECT_EQ(task.progress().target->object_id, 7);  // not rejected
   task.OnPose(27, RobotPose{side, 0.0});
-  EXPECT_TRUE(task.OnFeedback(27, out[0].id, RobotFeedback::kGoalReached).empty());
+  EXPECT_EQ(task.OnFeedback(27, out[0].id, RobotFeedback::kGoalReached).at(0).kind,
+            CommandKind::kHold);
   EXPECT_TRUE(task.OnSceneGraph(28, GraphWith({Extinguisher(16)}, 2)).empty());
   out = task.OnSceneGraph(28.5, GraphWith({Extinguisher(17)}, 3));
   ASSERT_EQ(out.size(), 1u);
