@@ -360,10 +360,14 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
       robot.Kidnap(*spec.kidnap_to);
       executor.Interrupt();
       recovery.OnKidnap(robot.time_s());
+      const Pose odom = believed();
       result.timeline.push_back(absl::StrCat(
           Stamp(robot),
-          absl::StrFormat("kidnapped to (%.2f, %.2f, %.0f deg)", spec.kidnap_to->position.x(),
-                          spec.kidnap_to->position.y(), spec.kidnap_to->yaw * 180.0 / M_PI)));
+          absl::StrFormat("kidnapped to (%.2f, %.2f, %.0f deg); the robot believes (%.2f, %.2f, "
+                          "%.0f deg)",
+                          spec.kidnap_to->position.x(), spec.kidnap_to->position.y(),
+                          spec.kidnap_to->yaw * 180.0 / M_PI, odom.position.x(), odom.position.y(),
+                          odom.yaw * 180.0 / M_PI)));
     }
     const std::optional<Feedback> outcome = executor.Step(spec.step_s);
     result.steps = step + 1;

@@ -181,6 +181,7 @@ std::vector<ObservedObject> RelocalizationLoop::Observed(const SceneGraph& graph
     observed.embedding = object.embedding;
     observed.observations = fresh ? std::max(1, object.detection_count)
                                   : std::max(1, object.detection_count - before->second);
+    if (observed.observations < config_.min_object_detections) continue;
     ranked.emplace_back(fresh ? 0 : 1, std::move(observed));
   }
   const Eigen::Vector3d here = pose_.position;
@@ -215,6 +216,21 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(
         SceneGraph{});
   }
   const PlanarTransform previous = map_from_odom_;
+  if (reported_ != LocalizationReport::kOk) {
+    const RobotPose before = previous.Apply(pose_);
+    const RobotPose after = answer->map_from_odom.Apply(pose_);
+    const double moved = (after.position - before.position).head<2>().norm();
+    const double turned = std::abs(Wrap(after.yaw - before.yaw));
+    if (moved < config_.confirming_answer_m && turned < config_.confirming_answer_rad) {
+      return AttemptFailed(
+          now,
+          absl::StrFormat("the answer confirms the pose the robot reports %s (moves it %.2f m, "
+                          "%.1f deg; %d inliers, rms %.2f m): the look-around matched itself?",
+                          reported_ == LocalizationReport::kLost ? "LOST" : "UNCERTAIN", moved,
+                          turned * 180.0 / M_PI, answer->inliers, answer->rms_residual_m),
+          SceneGraph{});
+    }
+  }
   map_from_odom_ = answer->map_from_odom;
   trusted_ = true;
   ++recoveries_;

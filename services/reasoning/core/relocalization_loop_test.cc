@@ -35,6 +35,7 @@ RelocalizationLoopConfig Config() {
   config.look_around_duration_s = 12.0;
   config.answer_timeout_s = 5.0;
   config.min_observed_objects = 3;
+  config.min_object_detections = 1;  // the tests below count on single detections
   config.max_attempts = 2;
   return config;
 }
@@ -213,6 +214,80 @@ TEST(RelocalizationLoopTest, ServiceErrorIsARetryThenTheTaskFailsNamingIt) {
       loop.OnAnswer(12.1, absl::NotFoundError("too few landmarks in map 'kitchen'"));
   ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kFailTask}));
   EXPECT_TRUE(absl::StrContains(actions[1].message, "too few landmarks in map 'kitchen'"));
+}
+
+// The kidnapped bench group's look-arounds (mission.md, "Losing the pose"): objects detected once
+// during the turn were mostly ghosts far from any object of their label, so by default an object
+// needs two detections in the turn, and a re-seen object two more than before it.
+TEST(RelocalizationLoopTest, ObjectsDetectedOnceDuringTheLookAroundStayOut) {
+  RelocalizationLoopConfig config = Config();
+  config.min_object_detections = RelocalizationLoopConfig{}.min_object_detections;
+  ASSERT_EQ(config.min_object_detections, 2);
+  RelocalizationLoop loop(config);
+  loop.OnState(0.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  // Object 1 seen once more (4 -> 5), object 2 twice more (3 -> 5); new: 3 (once), 4 (twice),
+  // 5 (once), 6 (three times).
+  const SceneGraph after{2,
+                         {Object(1, 1, 0, 5), Object(2, 5, 0, 5), Object(3, 2, 2, 1),
+                          Object(4, -1, 3, 2), Object(5, 0, -2, 1), Object(6, 0, 4, 3)},
+                         {},
+                         {}};
+  const std::vector<RelocalizationAction> actions =
+      loop.OnState(12.0, Pose(0, 0), LocalizationReport::kLost, after, true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
+  // New first (4 at 3.16 m, 6 at 4 m), then the re-seen object 2; 3, 5 and 1 stay out.
+  ASSERT_EQ(actions[1].observed.size(), 3u);
+  EXPECT_EQ(actions[1].observed[0].object_id, 4);
+  EXPECT_EQ(actions[1].observed[1].object_id, 6);
+  EXPECT_EQ(actions[1].observed[2].object_id, 2);
+  EXPECT_EQ(actions[1].observed[2].observations, 2);
+}
+
+// Too few objects seen twice is a failed attempt, not a call with ghosts.
+TEST(RelocalizationLoopTest, SingleDetectionsDoNotMakeUpTheMinimum) {
+  RelocalizationLoopConfig config = Config();
+  config.min_object_detections = 2;
+  RelocalizationLoop loop(config);
+  loop.OnState(0.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  // After(): new 3 (once), 4 (twice), 5 (once); 1 seen twice more: 2 objects qualify.
+  const std::vector<RelocalizationAction> actions =
+      loop.OnState(12.0, Pose(0, 0), LocalizationReport::kLost, After(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kRotate);  // the second attempt's turn
+}
+
+// Mapping's live landmark map already holds the look-around's objects when the query arrives, so
+// relocalization can answer the robot's believed pose back with a perfect fit. While the robot
+// reports LOST that answer is a failed attempt; once the robot reports OK, a small one is fine.
+TEST(RelocalizationLoopTest, AnAnswerConfirmingTheLostPoseIsNoRecovery) {
+  RelocalizationLoop loop(Config());
+  loop.OnState(0.0, Pose(2, 1, 0.3), LocalizationReport::kLost, Before(), true);
+  std::vector<RelocalizationAction> actions =
+      loop.OnState(12.0, Pose(2, 1, 0.3), LocalizationReport::kLost, After(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
+  RelocalizationAnswer self;  // 0.05 m, 0.5 deg: the pose the robot believes, back again
+  self.map_from_odom = PlanarTransform{Eigen::Vector3d(0.05, 0.0, 0.0), 0.5 * M_PI / 180.0};
+  self.reliable = true;
+  self.inliers = 4;
+  actions = loop.OnAnswer(12.5, self);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand}));  // the second turn
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kRotate);
+  EXPECT_EQ(loop.recoveries(), 0);
+  EXPECT_TRUE(loop.relocalizing());
+  // Second attempt, the same answer: the task fails with the reason, the pose stays untrusted.
+  actions = loop.OnState(25.0, Pose(2, 1, 0.3), LocalizationReport::kLost, After(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRelocalize}));
+  actions = loop.OnAnswer(25.5, self);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kFailTask}));
+  EXPECT_TRUE(absl::StrContains(actions[1].message, "confirms the pose the robot reports LOST"));
+  EXPECT_FALSE(loop.trusted());
+  // An operator's check on a robot reporting OK may confirm its pose.
+  loop.OnState(30.0, Pose(2, 1, 0.3), LocalizationReport::kOk, Before(), false);
+  loop.OnRequest(31.0, "check", Before());
+  loop.OnState(43.0, Pose(2, 1, 0.3), LocalizationReport::kOk, After(), false);
+  actions = loop.OnAnswer(43.5, self);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_TRUE(loop.trusted());
 }
 
 }  // namespace

@@ -157,6 +157,9 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("answer_timeout_s", &loop.answer_timeout_s)
         .Read("min_observed_objects", &loop.min_observed_objects)
         .Read("max_observed_objects", &loop.max_observed_objects)
+        .Read("min_object_detections", &loop.min_object_detections)
+        .Read("confirming_answer_m", &loop.confirming_answer_m)
+        .Read("confirming_answer_rad", &loop.confirming_answer_rad)
         .Read("max_attempts", &loop.max_attempts)
         .Read("retrigger_after_s", &loop.retrigger_after_s)
         .Read("default_object_scale_m", &loop.default_object_scale_m);
@@ -176,6 +179,12 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     reloc.Check(
         loop.max_observed_objects >= loop.min_observed_objects && loop.max_observed_objects <= 1000,
         "max_observed_objects", "must be in [min_observed_objects, 1000]");
+    reloc.Check(loop.min_object_detections >= 1 && loop.min_object_detections <= 100,
+                "min_object_detections", "must be in [1, 100]");
+    reloc.Check(loop.confirming_answer_m >= 0.0 && loop.confirming_answer_m <= 10.0,
+                "confirming_answer_m", "must be in [0, 10]");
+    reloc.Check(loop.confirming_answer_rad >= 0.0 && loop.confirming_answer_rad <= M_PI,
+                "confirming_answer_rad", "must be in [0, pi]");
     reloc.Check(loop.max_attempts >= 1, "max_attempts", "must be >= 1");
     reloc.Check(loop.retrigger_after_s >= 0.0, "retrigger_after_s", "must be >= 0");
     reloc.Check(loop.default_object_scale_m > 0.0, "default_object_scale_m", "must be > 0");

@@ -166,7 +166,8 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
         }
         std::string observed;  // for the log: what the turn saw, in the robot's odometry frame
         for (const ObservedObject& o : action.observed) {
-          absl::StrAppend(&observed, o.object_id, "@(",
+          const SceneObject* seen = scene_graph_.FindObject(o.object_id);
+          absl::StrAppend(&observed, o.object_id, seen != nullptr ? ":" + seen->label : "", "@(",
                           absl::StrFormat("%.2f,%.2f", o.position.x(), o.position.y()), ") s",
                           absl::StrFormat("%.2f", o.scale_m), " n", o.observations, "; ");
         }
