@@ -36,6 +36,14 @@ TEST(Inflation, BlocksCellsWithinTheRadius) {
   EXPECT_EQ(blocked, 9);
 }
 
+TEST(Inflation, DiscOffsetsHoldTheCellsWithinTheRadius) {
+  EXPECT_EQ(DiscOffsets(0.0).size(), 1u);  // the cell itself
+  EXPECT_EQ(DiscOffsets(1.0).size(), 5u);  // and its 4-neighbours
+  EXPECT_EQ(DiscOffsets(1.5).size(), 9u);  // and the diagonals: sqrt(2) <= 1.5
+  EXPECT_EQ(DiscOffsets(2.0).size(), 13u);
+  EXPECT_TRUE(DiscOffsets(-1.0).empty());
+}
+
 TEST(GridPlanner, FootprintInflationClosesANarrowGap) {
   // A one-cell door in a wall; a 1-cell-radius robot cannot pass it.
   const PassabilityGrid grid = GridFromRows({

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "services/planning/core/inflation.h"
+
 namespace semnav::planning {
 namespace {
 
@@ -26,13 +28,7 @@ bool RaisesNeighbours(const LayeredGrid& grid, int x, int y) {
 
 LayeredGrid InflateLayeredGrid(const LayeredGrid& grid, double radius_cells) {
   if (radius_cells <= 0.0) return grid;
-  const int r = static_cast<int>(std::floor(radius_cells));
-  std::vector<Cell> disc;
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      if (dx * dx + dy * dy <= radius_cells * radius_cells) disc.push_back({dx, dy});
-    }
-  }
+  const std::vector<Cell> disc = DiscOffsets(radius_cells);
   LayeredGrid out = grid;
   for (int y = 0; y < grid.height(); ++y) {
     for (int x = 0; x < grid.width(); ++x) {
