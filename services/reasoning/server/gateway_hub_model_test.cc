@@ -143,8 +143,8 @@ TEST_F(GatewayHubModelTest, RobotExploresWhileTheModelThinksThenGoesToTheAnswere
   const api::RobotState there = At(explore.navigate().goal().x(), explore.navigate().goal().y());
   ASSERT_TRUE(hub_.OnRobotState(&session_, there).ok());
   Reached(hub_, session_, explore);
-  EXPECT_TRUE(session_.Last().has_rotate())
-      << session_.Last().ShortDebugString();  // scan at the goal
+  EXPECT_TRUE(session_.Last().has_navigate())
+      << session_.Last().ShortDebugString();  // the next exploration goal, no turn at this one
 
   // The embedding backend is missing (offline default): the fast path keeps its fallback.
   std::thread([&] { model_.embeds[0](absl::UnavailableError("offline: UNIMPLEMENTED")); }).join();
@@ -473,8 +473,7 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   // The next exploration request carries the values: (2, 1) got C2A twice (0.392) then the
   // region score 5 over k = 4 (eq. 22): 0.392 + 0.608 * 5 / 20 = 0.544.
   const api::RobotCommand explore = session.Last();
-  Reached(hub, session, explore);         // -> scan
-  Reached(hub, session, session.Last());  // -> next exploration goal
+  Reached(hub, session, explore);  // -> next exploration goal
   ASSERT_EQ(explorer.contexts.size(), 2u);
   EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
 }

@@ -191,8 +191,9 @@ TEST_F(GatewayContractTest, SearchWithoutMapExploresAndCancelStops) {
   EXPECT_EQ(explore.navigate().path_size(), 0);
   robot.ReportPose(3.0, 0.0);
   robot.Report(explore, api::FEEDBACK_KIND_GOAL_REACHED);
-  EXPECT_TRUE(robot.NextCommand().has_rotate());  // scan at the exploration goal
-  EXPECT_EQ(Get(submitted.task_id()).phase(), "looking_around");
+  // No turn at the goal (explore_scan_duration_s 0): the next step follows at once.
+  EXPECT_TRUE(robot.NextCommand().has_navigate());
+  EXPECT_EQ(Get(submitted.task_id()).phase(), "exploring");
 
   api::CancelTaskRequest cancel;
   cancel.set_request_id("cancel-1");

@@ -113,6 +113,8 @@ TEST_F(GatewayMappingContractTest, GoToTheTableEndsStoppedWithinOneMetre) {
   ASSERT_TRUE(verify.has_navigate()) << verify.ShortDebugString();
   EXPECT_NEAR(verify.navigate().goal().x(), close.x(), 1e-9);
   report(&verify, close.x(), close.y());
+  ASSERT_TRUE(session->Read(&message));  // facing it: hold while detections confirm it
+  EXPECT_TRUE(message.command().has_hold()) << message.command().ShortDebugString();
   StreamFrames(2);
   ASSERT_TRUE(session->Read(&message));
   EXPECT_TRUE(message.command().has_stop()) << message.command().ShortDebugString();

@@ -119,6 +119,8 @@ TEST_F(GatewayModelContractTest, SlowPathThroughTheOfflineProxyDrivesTheRobotToT
   ASSERT_TRUE(session->Read(&message));
   ASSERT_TRUE(message.command().has_navigate()) << message.command().ShortDebugString();
   report(message.command(), close.x(), close.y());
+  ASSERT_TRUE(session->Read(&message));  // facing it: hold while detections confirm it
+  EXPECT_TRUE(message.command().has_hold()) << message.command().ShortDebugString();
   ASSERT_TRUE(testing::StreamLabelledFrames(mapping_->channel(), 7, 2, "clock", kClock).ok());
   ASSERT_TRUE(session->Read(&message));
   EXPECT_TRUE(message.command().has_stop()) << message.command().ShortDebugString();
