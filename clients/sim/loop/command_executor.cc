@@ -62,12 +62,15 @@ absl::StatusOr<FollowPath> CommandExecutor::ToFollowPath(const api::NavigateActi
   return PlanLocally(here, goal);
 }
 
+Eigen::Vector3d CommandExecutor::BackUpPoint() const {
+  const Pose& pose = robot_.pose();
+  return pose.position - kBackUpM * Eigen::Vector3d(std::cos(pose.yaw), std::sin(pose.yaw), 0.0);
+}
+
 bool CommandExecutor::Recover() {
   if (recoveries_ >= kMaxRecoveries) return false;
   ++recoveries_;
-  const Pose& pose = robot_.pose();
-  const Eigen::Vector3d back =
-      pose.position - kBackUpM * Eigen::Vector3d(std::cos(pose.yaw), std::sin(pose.yaw), 0.0);
+  const Eigen::Vector3d back = BackUpPoint();
   FollowPath follow;
   follow.waypoints.push_back(
       Waypoint{back, ToMotionMode(api::LOCOMOTION_MODE_UNSPECIFIED, robot_.modality()), true});
@@ -87,12 +90,9 @@ bool CommandExecutor::Recover() {
 }
 
 bool CommandExecutor::BackUpThenReport(std::string detail) {
-  const Pose& pose = robot_.pose();
-  const Eigen::Vector3d back =
-      pose.position - kBackUpM * Eigen::Vector3d(std::cos(pose.yaw), std::sin(pose.yaw), 0.0);
-  const MotionMode mode = pose.position.z() > 1e-6 ? MotionMode::kFly : MotionMode::kRoll;
+  const MotionMode mode = robot_.pose().position.z() > 1e-6 ? MotionMode::kFly : MotionMode::kRoll;
   FollowPath follow;
-  follow.waypoints.push_back(Waypoint{back, mode, true});
+  follow.waypoints.push_back(Waypoint{BackUpPoint(), mode, true});
   if (!robot_.Apply(follow).ok()) return false;
   blocked_detail_ = std::move(detail);
   phase_ = Phase::kBackingUp;
@@ -173,12 +173,10 @@ std::optional<Feedback> CommandExecutor::Step(double dt) {
         "collision with ", report.collision->kind,
         altitude > 1e-6 ? absl::StrCat(" at ", std::round(altitude * 100) / 100, " m altitude")
                         : std::string());
-    if (phase_ == Phase::kDriving && robot_.modality() == Modality::kFlyRoll &&
-        BackUpThenReport(detail)) {
+    if (phase_ == Phase::kDriving &&
+        (robot_.modality() == Modality::kFlyRoll ? BackUpThenReport(detail) : Recover())) {
       return std::nullopt;
     }
-    if (phase_ == Phase::kDriving && robot_.modality() != Modality::kFlyRoll && Recover())
-      return std::nullopt;
     return Done(api::FEEDBACK_KIND_BLOCKED, phase_ == Phase::kBackingUp ? blocked_detail_ : detail);
   }
   switch (phase_) {

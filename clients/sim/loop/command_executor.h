@@ -50,6 +50,8 @@ class CommandExecutor {
   // After a collision: back up and re-plan to the navigate goal; false when the recoveries are used
   // up.
   bool Recover();
+  // kBackUpM behind the robot along its heading.
+  Eigen::Vector3d BackUpPoint() const;
   // A fly-roll robot after a collision: it has no local planner for flight, and heading straight
   // for the goal hits the same obstacle again, so it backs up (at its altitude) and hands the
   // re-plan to the gateway (BLOCKED once backed up). False when it cannot back up.

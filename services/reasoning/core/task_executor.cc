@@ -614,12 +614,10 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
 }
 
 std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
-  // The hold's own end: the window is the executor's clock (OnPose ends it at the deadline; the
-  // robot's timer may run a step ahead of it).
-  if (active_kind_ == CommandKind::kHold) {
-    return now >= phase_deadline_ ? VerifyTimedOut(now) : std::vector<RobotCommand>{};
-  }
+  // The window runs on the executor's clock (OnPose ends it at the deadline); a hold already
+  // sent ends on the robot's timer, which may run a step ahead of it: keep waiting then.
   if (now >= phase_deadline_) return VerifyTimedOut(now);
+  if (active_kind_ == CommandKind::kHold) return {};
   // Facing the target: the robot is told at once to hold for the rest of the window, rather than
   // left without a command until detections (or the vision model) decide.
   RobotCommand command =
@@ -890,12 +888,11 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
       set_aside_.clear();  // a new vantage point: targets set aside may be reachable from here
       if (current().type == SubgoalType::kExplore)
         return NextSubgoal(now, "exploration goal reached");
-      if (config_.explore_scan_duration_s <= 0.0) {
-        if (explore_goal_.has_value()) SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
-        return Explore(now);
+      if (config_.explore_scan_duration_s > 0.0) {
+        return Rotate(now, config_.look_around_rate_rps, config_.explore_scan_duration_s,
+                      Phase::kExploreScan, "scanning at the exploration goal");
       }
-      return Rotate(now, config_.look_around_rate_rps, config_.explore_scan_duration_s,
-                    Phase::kExploreScan, "scanning at the exploration goal");
+      [[fallthrough]];  // no turn: the goal is spent as after one
     case Phase::kExploreScan:
       if (explore_goal_.has_value()) SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
       return Explore(now);
