@@ -34,7 +34,7 @@ RUN apt-get update \
       --shell /usr/sbin/nologin semnav
 COPY --from=build /src/build/release/bin/semnav-gateway /src/build/release/bin/semnav /usr/local/bin/
 COPY deploy/k8s/config/gateway.yaml /etc/semnav/gateway.yaml
-COPY services/reasoning/data/lexicon.tsv /usr/local/share/semnav/lexicon.tsv
+COPY services/common/lexicon/lexicon.tsv /usr/local/share/semnav/lexicon.tsv
 # The commonsense prior of SEMANTIC_FRONTIER exploration (ConceptNet /r/AtLocation, CC BY-SA 4.0),
 # the same folder as in the model-proxy image; gateway.prior_path points into it.
 COPY --from=shared-data object-priors/conceptnet_atlocation_coco80 /usr/local/share/semnav/object-priors/conceptnet_atlocation_coco80

@@ -18,6 +18,7 @@
 namespace {
 
 using namespace semnav::reasoning;
+using semnav::Lexicon;
 
 // Everything the hub refers to, owned in one place. The hub is declared last, so it is destroyed
 // first; every shared_ptr to it (services, shutdown hooks) keeps the whole stack alive.

@@ -120,7 +120,7 @@ class Pki:
         return (text.replace("/etc/semnav/", self.etc + "/")
                 .replace("/var/lib/semnav", self.var)
                 .replace("/usr/local/share/semnav/lexicon.tsv",
-                         os.path.join(SOURCE, "services/reasoning/data/lexicon.tsv"))
+                         os.path.join(SOURCE, "services/common/lexicon/lexicon.tsv"))
                 .replace("/usr/local/share/semnav/object-priors", os.path.join(SHARED, "object-priors")))
 
 

@@ -115,7 +115,7 @@ secret_file "$work/wrong.token" "not-$robot_token"
 # The shipped config with this host's folders in place of /etc/semnav and /var/lib/semnav.
 localize() {  # host config-name
   sed -e "s|/etc/semnav/|$work/$1/etc/semnav/|g" -e "s|/var/lib/semnav|$work/$1/var|g" \
-    -e "s|/usr/local/share/semnav/lexicon.tsv|$source_dir/services/reasoning/data/lexicon.tsv|g" \
+    -e "s|/usr/local/share/semnav/lexicon.tsv|$source_dir/services/common/lexicon/lexicon.tsv|g" \
     -e "s|/usr/local/share/semnav/object-priors|$shared_dir/object-priors|g" \
     "$source_dir/deploy/systemd/etc/semnav/$2.yaml" >"$work/$1/etc/semnav/$2.yaml"
 }

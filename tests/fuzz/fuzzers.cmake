@@ -22,8 +22,6 @@ semnav_fuzzer(octomap_import DEPS semnav_sim_worlds semnav_fuzz_support)
 semnav_fuzzer(model_answer DEPS semnav_modelproxy_core semnav_fuzz_support)
 semnav_fuzzer(subgoal_json DEPS semnav_reasoning_core semnav_fuzz_support)
 semnav_fuzzer(offline_task DEPS semnav_modelproxy_core semnav_fuzz_support)
-target_compile_definitions(fuzz_offline_task PRIVATE 
-  SEMNAV_MODELPROXY_PRIOR_DIR="${SEMNAV_SHARED_DATA_DIR}/object-priors/conceptnet_atlocation_coco80")
 semnav_fuzzer(rpc_mapping DEPS semnav_mapping_server semnav_fuzz_rpc semnav_fuzz_support)
 semnav_fuzzer(rpc_planning DEPS semnav_planning_server semnav_fuzz_rpc)
 semnav_fuzzer(rpc_relocalization DEPS semnav_relocalization_server semnav_fuzz_rpc)

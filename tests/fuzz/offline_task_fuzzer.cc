@@ -5,15 +5,15 @@
 #include <cstdlib>
 
 #include "nlohmann/json.hpp"
+#include "services/common/place_prior/place_prior.h"
 #include "services/modelproxy/core/offline/offline_tasks.h"
-#include "services/modelproxy/core/offline/place_prior.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace semnav::modelproxy::offline;
+  using semnav::PlacePrior;
   static const PlacePrior* prior = [] {
-    absl::StatusOr<PlacePrior> loaded =
-        PlacePrior::Load(SEMNAV_MODELPROXY_PRIOR_DIR "/conceptnet-data.json");
+    absl::StatusOr<PlacePrior> loaded = PlacePrior::Load(PlacePrior::DefaultPath());
     if (!loaded.ok()) {
       std::fprintf(stderr, "offline prior: %s\n", std::string(loaded.status().message()).c_str());
       std::abort();

@@ -15,6 +15,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace semnav::reasoning;
+  using semnav::Lexicon;
   static semnav::fuzz::RpcHarness* harness = [] {
     semnav::ConfigReader section = semnav::ConfigReader::Empty();
     GatewayConfig config = *GatewayConfig::FromYaml(section);

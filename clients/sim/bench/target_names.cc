@@ -5,7 +5,7 @@
 namespace semnav::sim::bench {
 
 std::optional<std::string> ChineseName(std::string_view label) {
-  const reasoning::LexiconEntry* entry = ObjectEntry(label);
+  const LexiconEntry* entry = ObjectEntry(label);
   if (entry == nullptr || entry->chinese.empty()) return std::nullopt;
   return entry->chinese.front();
 }

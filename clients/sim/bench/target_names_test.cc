@@ -10,11 +10,11 @@ namespace {
 // Every label a world may use (any English form of a lexicon object) has a Chinese name: the
 // lexicon's first Chinese form of that object.
 TEST(SimBenchTargetNamesTest, EveryLexiconLabelHasItsChineseName) {
-  const absl::StatusOr<const reasoning::Lexicon*> lexicon = LabelLexicon();
+  const absl::StatusOr<const Lexicon*> lexicon = LabelLexicon();
   ASSERT_TRUE(lexicon.ok()) << lexicon.status();
   int labels = 0;
-  for (const reasoning::LexiconEntry& entry : (*lexicon)->entries()) {
-    if (entry.kind != reasoning::TermKind::kObject) continue;
+  for (const LexiconEntry& entry : (*lexicon)->entries()) {
+    if (entry.kind != TermKind::kObject) continue;
     ASSERT_FALSE(entry.chinese.empty()) << entry.canonical;
     for (const std::string& form : entry.english) {
       ++labels;

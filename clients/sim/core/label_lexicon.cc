@@ -4,10 +4,9 @@
 
 namespace semnav::sim {
 
-absl::StatusOr<const reasoning::Lexicon*> LabelLexicon() {
-  static const absl::StatusOr<reasoning::Lexicon>* const lexicon =
-      new absl::StatusOr<reasoning::Lexicon>(
-          reasoning::Lexicon::Load(reasoning::Lexicon::DefaultPath()));
+absl::StatusOr<const Lexicon*> LabelLexicon() {
+  static const absl::StatusOr<Lexicon>* const lexicon =
+      new absl::StatusOr<Lexicon>(Lexicon::Load(Lexicon::DefaultPath()));
   if (!lexicon->ok()) {
     return absl::FailedPreconditionError(
         absl::StrCat("object lexicon: ", lexicon->status().message()));
@@ -15,10 +14,10 @@ absl::StatusOr<const reasoning::Lexicon*> LabelLexicon() {
   return &**lexicon;
 }
 
-const reasoning::LexiconEntry* ObjectEntry(std::string_view label) {
-  const absl::StatusOr<const reasoning::Lexicon*> lexicon = LabelLexicon();
+const LexiconEntry* ObjectEntry(std::string_view label) {
+  const absl::StatusOr<const Lexicon*> lexicon = LabelLexicon();
   if (!lexicon.ok()) return nullptr;
-  return (*lexicon)->Find(label, reasoning::TermKind::kObject);
+  return (*lexicon)->Find(label, TermKind::kObject);
 }
 
 }  // namespace semnav::sim

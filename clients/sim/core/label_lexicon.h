@@ -1,4 +1,4 @@
-// The gateway's bilingual lexicon (services/reasoning/data/lexicon.tsv) as the simulator's
+// The gateway's bilingual lexicon (services/common/lexicon/lexicon.tsv) as the simulator's
 // vocabulary of object labels: world files may only use its objects, and the benchmark asks for
 // targets by its Chinese names.
 #pragma once
@@ -8,15 +8,15 @@
 #include <string_view>
 
 #include "absl/status/statusor.h"
-#include "services/reasoning/core/lexicon.h"
+#include "services/common/lexicon/lexicon.h"
 
 namespace semnav::sim {
 
 // The lexicon, read once from Lexicon::DefaultPath(); FAILED_PRECONDITION when unreadable.
-absl::StatusOr<const reasoning::Lexicon*> LabelLexicon();
+absl::StatusOr<const Lexicon*> LabelLexicon();
 
 // The lexicon's object entry having `label` among its English forms ("sofa" -> couch), or
 // nullptr (also when the lexicon is unreadable).
-const reasoning::LexiconEntry* ObjectEntry(std::string_view label);
+const LexiconEntry* ObjectEntry(std::string_view label);
 
 }  // namespace semnav::sim

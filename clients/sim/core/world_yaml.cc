@@ -203,7 +203,7 @@ absl::Status CheckReferences(const World& world) {
 absl::Status CheckLabels(const World& world) {
   SIM_ASSIGN_OR_RETURN(lexicon, LabelLexicon());
   for (size_t i = 0; i < world.objects.size(); ++i) {
-    if (lexicon->Find(world.objects[i].label, reasoning::TermKind::kObject) == nullptr) {
+    if (lexicon->Find(world.objects[i].label, TermKind::kObject) == nullptr) {
       return Invalid(yf::Index("objects", i) + ".label",
                      absl::StrCat("\"", Preview(world.objects[i].label),
                                   "\" is not an object of the reasoning lexicon"));

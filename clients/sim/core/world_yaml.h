@@ -9,7 +9,7 @@
 // World files (YAML, format in docs/simulation.md). Errors are INVALID_ARGUMENT naming the
 // field path (InvalidField: the field also travels as the status payload); a missing file or
 // folder is NOT_FOUND. Besides the format, the loader rejects object labels that are not
-// objects of the reasoning lexicon (services/reasoning/data/lexicon.tsv), geometry, rooms and
+// objects of the reasoning lexicon (services/common/lexicon/lexicon.tsv), geometry, rooms and
 // starts outside the bounds, and starts where the robot's body (RobotConfig of the start's
 // modality) touches a solid; FAILED_PRECONDITION when the lexicon cannot be read.
 namespace semnav::sim {

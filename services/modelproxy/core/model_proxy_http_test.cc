@@ -7,6 +7,7 @@
 
 #include "absl/strings/match.h"
 #include "nlohmann/json.hpp"
+#include "services/common/place_prior/place_prior.h"
 #include "services/common/status/field_error.h"
 #include "services/modelproxy/core/http_backend.h"
 #include "services/modelproxy/core/model_proxy.h"
@@ -62,9 +63,7 @@ class ModelProxyHttpTest : public ::testing::Test {
                                       claude, ApiKey::FromEnv("SEMNAV_TEST_OPENAI_KEY"), transport),
                                   FastPolicy()})
                     .ok());
-    auto prior = offline::PlacePrior::Load(
-        std::string(SEMNAV_SHARED_DATA_DIR) +
-        "/object-priors/conceptnet_atlocation_coco80/conceptnet-data.json");
+    auto prior = PlacePrior::Load(PlacePrior::DefaultPath());
     ASSERT_TRUE(prior.ok());
     ASSERT_TRUE(proxy_
                     ->AddBackend({"offline", "offline",

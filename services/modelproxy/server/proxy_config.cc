@@ -6,6 +6,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "services/common/logging/log.h"
+#include "services/common/place_prior/place_prior.h"
 #include "services/modelproxy/core/http_backend.h"
 #include "services/modelproxy/core/offline/offline_backend.h"
 
@@ -85,7 +86,7 @@ absl::StatusOr<BackendEntry> ReadHttpBackend(const std::string& name, ConfigRead
 }
 
 absl::StatusOr<BackendEntry> ReadOfflineBackend(ConfigReader& r) {
-  std::string data_dir = SEMNAV_MODELPROXY_PRIOR_DIR;
+  std::string data_dir = PlacePrior::DefaultDir();
   offline::OfflineParams params;
   r.Read("data_dir", &data_dir)
       .Read("min_score", &params.min_score)
@@ -96,8 +97,7 @@ absl::StatusOr<BackendEntry> ReadOfflineBackend(ConfigReader& r) {
   policy.retry.max_attempts = 1;
   policy.max_in_flight = 64;
   policy = ReadPolicy(r, policy);
-  absl::StatusOr<offline::PlacePrior> prior =
-      offline::PlacePrior::Load(data_dir + "/conceptnet-data.json");
+  absl::StatusOr<PlacePrior> prior = PlacePrior::Load(absl::StrCat(data_dir, "/", kPlacePriorFile));
   if (!prior.ok())
     return absl::Status(prior.status().code(),
                         absl::StrCat("data_dir: ", prior.status().message()));

@@ -3,19 +3,17 @@
 #include <cmath>
 #include <map>
 
-#include "services/modelproxy/core/offline/lexicon.h"
+#include "services/common/lexicon/canonical_term.h"
 
 namespace semnav::reasoning {
 
 absl::StatusOr<ConceptNetCooccurrence> ConceptNetCooccurrence::Load(const std::string& json_path) {
-  absl::StatusOr<modelproxy::offline::PlacePrior> prior =
-      modelproxy::offline::PlacePrior::Load(json_path);
+  absl::StatusOr<PlacePrior> prior = PlacePrior::Load(json_path);
   if (!prior.ok()) return prior.status();
   return ConceptNetCooccurrence(*std::move(prior));
 }
 
 double ConceptNetCooccurrence::Cooccurrence(std::string_view target, std::string_view label) const {
-  using modelproxy::offline::CanonicalTerm;
   const std::string target_term = CanonicalTerm(absl::string_view(target.data(), target.size()));
   const std::string label_term = CanonicalTerm(absl::string_view(label.data(), label.size()));
   if (prior_.Knows(label_term)) return prior_.Relatedness(target_term, label_term);
@@ -26,7 +24,6 @@ double ConceptNetCooccurrence::Cooccurrence(std::string_view target, std::string
 
 double ConceptNetCooccurrence::RoomCooccurrence(std::string_view target,
                                                 const std::vector<std::string>& labels) const {
-  using modelproxy::offline::CanonicalTerm;
   constexpr size_t kAllPlaces = 1 << 16;
   const std::string target_term = CanonicalTerm(absl::string_view(target.data(), target.size()));
   std::map<std::string, double> room;

@@ -1,9 +1,9 @@
-// CooccurrencePrior over the model proxy's ConceptNet AtLocation prior (shared/data, CC BY-SA
-// 4.0; the same file and loader the proxy's offline backend uses): two objects co-occur as much
-// as their place distributions overlap (PlacePrior::Relatedness, cosine in [0, 1]; fork ~ knife
-// > 0.6, fork ~ toilet = 0). A label the prior has no object for is read as a place: the
-// target's AtLocation affinity to it (car ~ road 0.6, boat ~ river 0.34). Names go through the
-// proxy's canonical terms ("sofa" -> "couch").
+// CooccurrencePrior over the ConceptNet AtLocation place prior (services/common/place_prior,
+// data in shared/data, CC BY-SA 4.0; the same file and loader the model proxy's offline backend
+// uses): two objects co-occur as much as their place distributions overlap
+// (PlacePrior::Relatedness, cosine in [0, 1]; fork ~ knife > 0.6, fork ~ toilet = 0). A label the
+// prior has no object for is read as a place: the target's AtLocation affinity to it (car ~ road
+// 0.6, boat ~ river 0.34). Names go through CanonicalTerm ("sofa" -> "couch").
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
-#include "services/modelproxy/core/offline/place_prior.h"
+#include "services/common/place_prior/place_prior.h"
 #include "services/reasoning/core/exploration_context.h"
 
 namespace semnav::reasoning {
@@ -29,9 +29,8 @@ class ConceptNetCooccurrence final : public CooccurrencePrior {
                           const std::vector<std::string>& labels) const override;
 
  private:
-  explicit ConceptNetCooccurrence(modelproxy::offline::PlacePrior prior)
-      : prior_(std::move(prior)) {}
-  modelproxy::offline::PlacePrior prior_;
+  explicit ConceptNetCooccurrence(PlacePrior prior) : prior_(std::move(prior)) {}
+  PlacePrior prior_;
 };
 
 }  // namespace semnav::reasoning

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "services/reasoning/core/lexicon.h"
+#include "services/common/lexicon/lexicon.h"
 #include "services/reasoning/core/subgoal.h"
 #include "services/reasoning/core/text_segmenter.h"
 

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "services/reasoning/core/lexicon.h"
+#include "services/common/lexicon/lexicon.h"
 #include "services/reasoning/core/scene_graph.h"
 #include "services/reasoning/core/subgoal.h"
 

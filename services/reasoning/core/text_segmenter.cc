@@ -5,7 +5,7 @@
 #include <unicode/unistr.h>
 
 #include "absl/strings/str_cat.h"
-#include "services/reasoning/core/lexicon.h"
+#include "services/common/lexicon/lexicon.h"
 
 namespace semnav::reasoning {
 

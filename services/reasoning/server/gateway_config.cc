@@ -2,11 +2,12 @@
 
 #include <cmath>
 
+#include "services/common/place_prior/place_prior.h"
 #include "services/common/status/field_error.h"
 
 namespace semnav::reasoning {
 
-std::string GatewayConfig::DefaultPriorPath() { return SEMNAV_REASONING_PRIOR_PATH; }
+std::string GatewayConfig::DefaultPriorPath() { return PlacePrior::DefaultPath(); }
 
 EroiSearchConfig DefaultEroiSearch() {
   EroiSearchConfig search;

@@ -1,7 +1,7 @@
 // The shipped lexicon, loaded once per test binary.
 #pragma once
 
-#include "services/reasoning/core/lexicon.h"
+#include "services/common/lexicon/lexicon.h"
 
 namespace semnav::reasoning {
 

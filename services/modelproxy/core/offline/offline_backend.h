@@ -1,9 +1,9 @@
 #pragma once
 // The embedded backend used when there is no network or key: answers the structured tasks
 // carried as a JSON text part of the last user message; marks every answer offline.
+#include "services/common/place_prior/place_prior.h"
 #include "services/modelproxy/core/backend.h"
 #include "services/modelproxy/core/offline/offline_tasks.h"
-#include "services/modelproxy/core/offline/place_prior.h"
 
 namespace semnav::modelproxy::offline {
 

@@ -12,7 +12,7 @@
 #include "absl/strings/str_split.h"
 #include "absl/strings/string_view.h"
 #include "absl/strings/strip.h"
-#include "services/modelproxy/core/offline/lexicon.h"
+#include "services/common/lexicon/canonical_term.h"
 
 namespace semnav::modelproxy::offline {
 namespace {

@@ -11,6 +11,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "absl/strings/str_join.h"
+#include "services/common/lexicon/canonical_term.h"
 #include "services/modelproxy/core/offline/offline_decompose.h"
 
 namespace semnav::modelproxy::offline {

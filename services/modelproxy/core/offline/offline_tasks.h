@@ -3,9 +3,9 @@
 // (spec: docs/algorithms/modelproxy.md, "Offline structured tasks").
 #include "absl/status/statusor.h"
 #include "nlohmann/json.hpp"
-#include "services/modelproxy/core/offline/lexicon.h"
+#include "services/common/place_prior/place_prior.h"
+#include "services/modelproxy/core/offline/lexical_match.h"
 #include "services/modelproxy/core/offline/open_vocabulary.h"
-#include "services/modelproxy/core/offline/place_prior.h"
 
 namespace semnav::modelproxy::offline {
 

@@ -1,17 +1,11 @@
 #pragma once
-// Lexical normalization for the offline backend: object and place phrases in English (and the
-// common Chinese names of COCO objects and rooms) map to one canonical English phrase, so
-// "Sofas", "the sofa", "couch" and "沙发" all compare equal.
+// How well a label names a target for the offline backend, on canonical phrases
+// (CanonicalTerm, services/common/lexicon/canonical_term.h: "Sofas", "the sofa", "couch" and
+// "沙发" are all "couch").
 #include <string>
 #include <vector>
 
-#include "absl/strings/string_view.h"
-
 namespace semnav::modelproxy::offline {
-
-// Lower-case, '_' and '-' to spaces, punctuation dropped, leading articles dropped, each word
-// singularized by suffix rules, then synonym phrases (longest first) replaced by canonical names.
-std::string CanonicalTerm(absl::string_view phrase);
 
 // Words of a canonical phrase.
 std::vector<std::string> Words(const std::string& canonical);

@@ -1,6 +1,8 @@
 #pragma once
 // Object -> place commonsense prior from ConceptNet 5 /r/AtLocation edges (CC BY-SA 4.0).
-// For each object, edge weights are summed per canonical place and normalized to P(place|obj).
+// For each object, edge weights are summed per canonical place (CanonicalTerm) and normalized
+// to P(place|obj). The model proxy's offline backend and the gateway's exploration co-occurrence
+// both read it.
 #include <map>
 #include <string>
 #include <utility>
@@ -8,14 +10,22 @@
 
 #include "absl/status/statusor.h"
 
-namespace semnav::modelproxy::offline {
+namespace semnav {
 
 inline constexpr char kPriorProvenance[] =
     "offline commonsense prior: ConceptNet 5 /r/AtLocation edges for the COCO classes "
     "(conceptnet.io), CC BY-SA 4.0";
 
+// The prior's file inside its data folder (shared/data/object-priors/conceptnet_atlocation_coco80).
+inline constexpr char kPlacePriorFile[] = "conceptnet-data.json";
+
 class PlacePrior {
  public:
+  // The data folder fixed at build time (<SEMNAV_SHARED_DATA_DIR>/object-priors/
+  // conceptnet_atlocation_coco80): the default of modelproxy.offline.data_dir.
+  static std::string DefaultDir();
+  // DefaultDir()/conceptnet-data.json: the default of gateway.prior_path.
+  static std::string DefaultPath();
   // Reads conceptnet-data.json ({class: [{start:{term}, end:{term}, weight}, ...]}). NOT_FOUND
   // if unreadable, INVALID_ARGUMENT naming the entry if malformed.
   static absl::StatusOr<PlacePrior> Load(const std::string& json_path);
@@ -38,4 +48,4 @@ class PlacePrior {
   size_t edge_count_ = 0;
 };
 
-}  // namespace semnav::modelproxy::offline
+}  // namespace semnav

@@ -1,5 +1,7 @@
-// Bilingual (English / Chinese) lexicon of objects, rooms, colours, spatial relations and
-// instruction words, loaded from services/reasoning/data/lexicon.tsv.
+// The bilingual (English / Chinese) lexicon of objects, rooms, colours, spatial relations and
+// instruction words: services/common/lexicon/lexicon.tsv, the one synonym table of the stack.
+// The gateway parses instructions with it, the simulator checks world labels against it, and
+// CanonicalTerm (canonical_term.h) takes its object and room synonyms from it.
 #pragma once
 
 #include <cstddef>
@@ -10,7 +12,7 @@
 
 #include "absl/status/statusor.h"
 
-namespace semnav::reasoning {
+namespace semnav {
 
 enum class TermKind { kObject, kRoom, kColour, kRelation, kAction, kDeixis, kNegation, kFiller };
 
@@ -26,7 +28,7 @@ class Lexicon {
   // Parses the tab-separated format documented at the top of lexicon.tsv.
   static absl::StatusOr<Lexicon> Parse(std::string_view tsv);
   static absl::StatusOr<Lexicon> Load(const std::string& path);
-  // The data file shipped with the source tree.
+  // The data file in the source tree (the gateway's default `lexicon_path`).
   static std::string DefaultPath();
 
   // Entries having `form` (lower-cased English or Chinese) among their forms; empty if none.
@@ -49,4 +51,4 @@ class Lexicon {
 
 std::string ToLowerAscii(std::string_view text);
 
-}  // namespace semnav::reasoning
+}  // namespace semnav

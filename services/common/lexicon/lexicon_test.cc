@@ -1,16 +1,24 @@
-#include "services/reasoning/core/lexicon.h"
+#include "services/common/lexicon/lexicon.h"
 
 #include <fstream>
 #include <string>
 
 #include "absl/strings/match.h"
 #include "gtest/gtest.h"
-#include "services/reasoning/testing/test_lexicon.h"
 
-namespace semnav::reasoning {
+namespace semnav {
 namespace {
 
-TEST(GatewayLexiconTest, CoversAllCoco80ClassesInBothLanguages) {
+const Lexicon& ShippedLexicon() {
+  static const Lexicon* const lexicon = [] {
+    absl::StatusOr<Lexicon> loaded = Lexicon::Load(Lexicon::DefaultPath());
+    EXPECT_TRUE(loaded.ok()) << loaded.status();
+    return new Lexicon(loaded.ok() ? *std::move(loaded) : Lexicon());
+  }();
+  return *lexicon;
+}
+
+TEST(LexiconTest, CoversAllCoco80ClassesInBothLanguages) {
   std::ifstream classes(std::string(SEMNAV_SHARED_DATA_DIR) +
                         "/object-priors/conceptnet_atlocation_coco80/ms-coco-80-categories.txt");
   ASSERT_TRUE(classes.good());
@@ -28,7 +36,7 @@ TEST(GatewayLexiconTest, CoversAllCoco80ClassesInBothLanguages) {
 
 // Every object and room can be asked for in Chinese (the simulator's benchmark names its targets
 // by the first Chinese form: clients/sim/bench/target_names.h).
-TEST(GatewayLexiconTest, EveryObjectAndRoomHasAChineseName) {
+TEST(LexiconTest, EveryObjectAndRoomHasAChineseName) {
   int objects = 0;
   for (const LexiconEntry& entry : ShippedLexicon().entries()) {
     if (entry.kind != TermKind::kObject && entry.kind != TermKind::kRoom) continue;
@@ -39,7 +47,7 @@ TEST(GatewayLexiconTest, EveryObjectAndRoomHasAChineseName) {
   EXPECT_GE(objects, 80);
 }
 
-TEST(GatewayLexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
+TEST(LexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
   const Lexicon& lexicon = ShippedLexicon();
   EXPECT_EQ(lexicon.CanonicalObject("Sofa"), "couch");
   EXPECT_EQ(lexicon.CanonicalObject("沙发"), "couch");
@@ -55,7 +63,7 @@ TEST(GatewayLexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
   EXPECT_EQ(lexicon.Lookup("orange").size(), 2u);
 }
 
-TEST(GatewayLexiconTest, RejectsMalformedLines) {
+TEST(LexiconTest, RejectsMalformedLines) {
   EXPECT_EQ(Lexicon::Parse("object\tcup\tcup\n").status().code(),
             absl::StatusCode::kInvalidArgument);
   absl::StatusOr<Lexicon> bad_kind = Lexicon::Parse("gadget\tx\tx\tx\n");
@@ -64,4 +72,4 @@ TEST(GatewayLexiconTest, RejectsMalformedLines) {
 }
 
 }  // namespace
-}  // namespace semnav::reasoning
+}  // namespace semnav

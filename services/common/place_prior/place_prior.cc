@@ -1,4 +1,4 @@
-#include "services/modelproxy/core/offline/place_prior.h"
+#include "services/common/place_prior/place_prior.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "nlohmann/json.hpp"
-#include "services/modelproxy/core/offline/lexicon.h"
+#include "services/common/lexicon/canonical_term.h"
 
-namespace semnav::modelproxy::offline {
+namespace semnav {
 namespace {
 
 // "/c/en/living_room/n" -> "living room" (canonical).
@@ -22,6 +22,10 @@ std::string TermName(const std::string& term) {
 }
 
 }  // namespace
+
+std::string PlacePrior::DefaultDir() { return SEMNAV_PLACE_PRIOR_DIR; }
+
+std::string PlacePrior::DefaultPath() { return absl::StrCat(DefaultDir(), "/", kPlacePriorFile); }
 
 absl::StatusOr<PlacePrior> PlacePrior::Load(const std::string& json_path) {
   std::ifstream in(json_path);
@@ -105,4 +109,4 @@ std::vector<std::pair<std::string, double>> PlacePrior::TopPlaces(const std::str
   return out;
 }
 
-}  // namespace semnav::modelproxy::offline
+}  // namespace semnav

@@ -1,14 +1,14 @@
-#include "services/modelproxy/core/offline/place_prior.h"
+#include "services/common/place_prior/place_prior.h"
 
 #include <gtest/gtest.h>
 
-namespace semnav::modelproxy::offline {
+namespace semnav {
 namespace {
 
 const std::string kPriorJson = std::string(SEMNAV_SHARED_DATA_DIR) +
                                "/object-priors/conceptnet_atlocation_coco80/conceptnet-data.json";
 
-TEST(ModelProxyPlacePriorTest, LoadsTheConceptNetFile) {
+TEST(PlacePriorTest, LoadsTheConceptNetFile) {
   const auto prior = PlacePrior::Load(kPriorJson);
   ASSERT_TRUE(prior.ok()) << prior.status();
   EXPECT_EQ(prior->object_count(), 66u);  // SOURCE.txt: 66 of the 80 COCO classes
@@ -23,7 +23,7 @@ TEST(ModelProxyPlacePriorTest, LoadsTheConceptNetFile) {
   EXPECT_EQ(prior->TopPlaces("toilet", 2)[1].first, "house");
 }
 
-TEST(ModelProxyPlacePriorTest, RelatednessIsTheCosineOfPlaceDistributions) {
+TEST(PlacePriorTest, RelatednessIsTheCosineOfPlaceDistributions) {
   const auto prior = PlacePrior::Load(kPriorJson);
   ASSERT_TRUE(prior.ok());
   EXPECT_NEAR(prior->Relatedness("toilet", "toilet"), 1.0, 1e-12);
@@ -33,9 +33,9 @@ TEST(ModelProxyPlacePriorTest, RelatednessIsTheCosineOfPlaceDistributions) {
   EXPECT_NEAR(prior->Relatedness("fork", "knife"), prior->Relatedness("knife", "fork"), 1e-12);
 }
 
-TEST(ModelProxyPlacePriorTest, MissingFileIsNotFound) {
+TEST(PlacePriorTest, MissingFileIsNotFound) {
   EXPECT_EQ(PlacePrior::Load("/nonexistent.json").status().code(), absl::StatusCode::kNotFound);
 }
 
 }  // namespace
-}  // namespace semnav::modelproxy::offline
+}  // namespace semnav

@@ -1,4 +1,4 @@
-#include "services/reasoning/core/lexicon.h"
+#include "services/common/lexicon/lexicon.h"
 
 #include <algorithm>
 #include <fstream>
@@ -6,7 +6,7 @@
 
 #include "absl/strings/str_cat.h"
 
-namespace semnav::reasoning {
+namespace semnav {
 namespace {
 
 // Debian's Abseil is built with its own string_view type, so splitting and trimming of
@@ -109,7 +109,7 @@ absl::StatusOr<Lexicon> Lexicon::Load(const std::string& path) {
   return Parse(buffer.str());
 }
 
-std::string Lexicon::DefaultPath() { return SEMNAV_REASONING_DATA_DIR "/lexicon.tsv"; }
+std::string Lexicon::DefaultPath() { return SEMNAV_LEXICON_TSV; }
 
 std::vector<const LexiconEntry*> Lexicon::Lookup(std::string_view form) const {
   std::vector<const LexiconEntry*> found;
@@ -136,4 +136,4 @@ std::string Lexicon::CanonicalObject(std::string_view label) const {
   return entry != nullptr ? entry->canonical : lower;
 }
 
-}  // namespace semnav::reasoning
+}  // namespace semnav
