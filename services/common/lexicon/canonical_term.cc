@@ -10,99 +10,10 @@
 #include "absl/strings/str_join.h"
 #include "absl/strings/str_replace.h"
 #include "absl/strings/str_split.h"
+#include "services/common/lexicon/lexicon.h"
 
 namespace semnav {
 namespace {
-
-// Surface phrase -> canonical name (COCO class or room name as spelled in ConceptNet).
-constexpr std::pair<const char*, const char*> kSynonyms[] = {
-    {"sofa", "couch"},
-    {"settee", "couch"},
-    {"television", "tv"},
-    {"tv monitor", "tv"},
-    {"monitor", "tv"},
-    {"fridge", "refrigerator"},
-    {"mobile phone", "cell phone"},
-    {"cellphone", "cell phone"},
-    {"phone", "cell phone"},
-    {"smartphone", "cell phone"},
-    {"mug", "cup"},
-    {"table", "dining table"},
-    {"dinner table", "dining table"},
-    {"plant", "potted plant"},
-    {"houseplant", "potted plant"},
-    {"notebook computer", "laptop"},
-    {"computer mouse", "mouse"},
-    {"remote control", "remote"},
-    {"motorbike", "motorcycle"},
-    {"bike", "bicycle"},
-    {"plane", "airplane"},
-    {"aeroplane", "airplane"},
-    {"hair dryer", "hair drier"},
-    {"hairdryer", "hair drier"},
-    {"puppy", "dog"},
-    {"kitten", "cat"},
-    {"man", "person"},
-    {"woman", "person"},
-    {"people", "person"},
-    {"purse", "handbag"},
-    {"doughnut", "donut"},
-    {"basin", "sink"},
-    {"washbasin", "sink"},
-    {"stove", "oven"},
-    {"cooker", "oven"},
-    {"microwave oven", "microwave"},
-    {"livingroom", "living room"},
-    {"lounge", "living room"},
-    {"sitting room", "living room"},
-    {"restroom", "bathroom"},
-    {"washroom", "bathroom"},
-    {"lavatory", "bathroom"},
-    {"wc", "bathroom"},
-    {"bath room", "bathroom"},
-    {"study", "office"},
-    {"cellar", "basement"},
-    {"dining area", "dining room"},
-    // Identity entries keep these phrases whole (else "table" would become "dining table").
-    {"coffee table", "coffee table"},
-    {"bedside table", "bedside table"},
-    // Chinese names (matched as substrings: Chinese text has no spaces).
-    {"笔记本电脑", "laptop"},
-    {"卫生间", "bathroom"},
-    {"洗手间", "bathroom"},
-    {"微波炉", "microwave"},
-    {"椅子", "chair"},
-    {"沙发", "couch"},
-    {"电视", "tv"},
-    {"冰箱", "refrigerator"},
-    {"马桶", "toilet"},
-    {"杯子", "cup"},
-    {"瓶子", "bottle"},
-    {"键盘", "keyboard"},
-    {"鼠标", "mouse"},
-    {"手机", "cell phone"},
-    {"时钟", "clock"},
-    {"花瓶", "vase"},
-    {"水槽", "sink"},
-    {"烤箱", "oven"},
-    {"餐桌", "dining table"},
-    {"盆栽", "potted plant"},
-    {"背包", "backpack"},
-    {"雨伞", "umbrella"},
-    {"剪刀", "scissors"},
-    {"牙刷", "toothbrush"},
-    {"书架", "bookshelf"},
-    {"书房", "office"},
-    {"书", "book"},
-    {"床", "bed"},
-    {"厨房", "kitchen"},
-    {"卧室", "bedroom"},
-    {"浴室", "bathroom"},
-    {"客厅", "living room"},
-    {"办公室", "office"},
-    {"车库", "garage"},
-    {"行人", "person"},
-};
 
 std::string Singular(const std::string& word) {
   auto ends = [&](const char* suffix) { return absl::EndsWith(word, suffix); };
@@ -136,26 +47,37 @@ std::vector<std::string> NormalizedWords(absl::string_view phrase) {
   return words;
 }
 
+std::string Normalized(absl::string_view phrase) {
+  return absl::StrJoin(NormalizedWords(phrase), " ");
+}
+
 struct SynonymTable {
   std::map<std::string, std::string> ascii;                  // normalized phrase -> canonical
   std::vector<std::pair<std::string, std::string>> chinese;  // substring -> canonical
 };
 
+// The object and room entries of the lexicon. Canonical names map to themselves before any
+// form is added, so "dining table" never becomes "dining dining table" through the "table" form
+// and a compound the lexicon lists ("coffee table") is never read as a modifier plus a synonym.
 const SynonymTable& Synonyms() {
   static const SynonymTable* table = [] {
     auto* t = new SynonymTable;
-    for (const auto& [surface, canonical] : kSynonyms) {
-      const std::string target = absl::StrJoin(NormalizedWords(canonical), " ");
-      // Canonical names map to themselves first, so "dining table" never becomes
-      // "dining dining table" through the "table" entry.
-      t->ascii.emplace(target, target);
-      if (static_cast<unsigned char>(surface[0]) >= 0x80) {
-        t->chinese.emplace_back(surface, target);
-      } else {
-        t->ascii.emplace(absl::StrJoin(NormalizedWords(surface), " "), target);
+    std::vector<const LexiconEntry*> terms;
+    for (const LexiconEntry& entry : Lexicon::Embedded().entries()) {
+      if (entry.kind == TermKind::kObject || entry.kind == TermKind::kRoom) {
+        terms.push_back(&entry);
       }
     }
-    // Longest Chinese names first so "笔记本电脑" wins over "书".
+    for (const LexiconEntry* entry : terms) {
+      const std::string target = Normalized(entry->canonical);
+      t->ascii.emplace(target, target);
+    }
+    for (const LexiconEntry* entry : terms) {
+      const std::string target = Normalized(entry->canonical);
+      for (const std::string& form : entry->english) t->ascii.emplace(Normalized(form), target);
+      for (const std::string& form : entry->chinese) t->chinese.emplace_back(form, target);
+    }
+    // Longest Chinese names first so "笔记本电脑" wins over "笔记本" and "车库" over "车".
     std::stable_sort(t->chinese.begin(), t->chinese.end(),
                      [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
     return t;

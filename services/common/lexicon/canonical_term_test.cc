@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "services/common/lexicon/lexicon.h"
+
 namespace semnav {
 namespace {
 
@@ -16,7 +18,9 @@ TEST(CanonicalTermTest, NormalizesCaseArticlesPluralsAndSynonyms) {
   EXPECT_EQ(CanonicalTerm("glass"), "glass");  // -ss is not a plural
   EXPECT_EQ(CanonicalTerm("bus"), "bus");      // too short to strip
   EXPECT_EQ(CanonicalTerm("coffee table"), "coffee table");
+  EXPECT_EQ(CanonicalTerm("bedside tables"), "bedside table");
   EXPECT_EQ(CanonicalTerm("table"), "dining table");
+  EXPECT_EQ(CanonicalTerm("cellar"), "basement");
 }
 
 TEST(CanonicalTermTest, ChineseNamesMapInsideLongerText) {
@@ -24,6 +28,37 @@ TEST(CanonicalTermTest, ChineseNamesMapInsideLongerText) {
   EXPECT_EQ(CanonicalTerm("红色沙发"), "红色 couch");
   EXPECT_EQ(CanonicalTerm("笔记本电脑"), "laptop");  // not "笔记本" + "电脑"
   EXPECT_EQ(CanonicalTerm("卫生间"), "bathroom");
+  EXPECT_EQ(CanonicalTerm("车库"), "garage");    // not "车" (car) + "库"
+  EXPECT_EQ(CanonicalTerm("书包"), "backpack");  // not "书" (book) + "包" (handbag)
+}
+
+// The synonyms are the lexicon's: forms that were only in lexicon.tsv before the model proxy's
+// own list was folded into it.
+TEST(CanonicalTermTest, TakesTheSynonymsOfTheLexicon) {
+  EXPECT_EQ(CanonicalTerm("cupboards"), "cabinet");
+  EXPECT_EQ(CanonicalTerm("Hallway"), "corridor");
+  EXPECT_EQ(CanonicalTerm("bookshelf"), "shelf");
+  EXPECT_EQ(CanonicalTerm("书架"), "shelf");
+  EXPECT_EQ(CanonicalTerm("rucksack"), "backpack");
+  EXPECT_EQ(CanonicalTerm("bins"), "trash can");
+  // Only objects and rooms: instruction words and colours stay as they are.
+  EXPECT_EQ(CanonicalTerm("go"), "go");
+  EXPECT_EQ(CanonicalTerm("红色"), "红色");
+}
+
+TEST(CanonicalTermTest, EveryObjectAndRoomFormNamesItsEntry) {
+  int forms = 0;
+  for (const LexiconEntry& entry : Lexicon::Embedded().entries()) {
+    if (entry.kind != TermKind::kObject && entry.kind != TermKind::kRoom) continue;
+    const std::string canonical = CanonicalTerm(entry.canonical);
+    for (const auto* list : {&entry.english, &entry.chinese}) {
+      for (const std::string& form : *list) {
+        EXPECT_EQ(CanonicalTerm(form), canonical) << form;
+        ++forms;
+      }
+    }
+  }
+  EXPECT_GT(forms, 300);
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
 #include "services/common/lexicon/lexicon.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/lexicon/embedded_lexicon.h"
 
 namespace semnav {
 namespace {
@@ -110,6 +113,19 @@ absl::StatusOr<Lexicon> Lexicon::Load(const std::string& path) {
 }
 
 std::string Lexicon::DefaultPath() { return SEMNAV_LEXICON_TSV; }
+
+const Lexicon& Lexicon::Embedded() {
+  static const Lexicon* const lexicon = [] {
+    absl::StatusOr<Lexicon> parsed = Parse(EmbeddedLexiconTsv());
+    // The text is the source tree's file, which lexicon_test parses: only a broken build gets here.
+    if (!parsed.ok()) {
+      std::cerr << "embedded lexicon.tsv: " << parsed.status() << "\n";
+      std::abort();
+    }
+    return new Lexicon(*std::move(parsed));
+  }();
+  return *lexicon;
+}
 
 std::vector<const LexiconEntry*> Lexicon::Lookup(std::string_view form) const {
   std::vector<const LexiconEntry*> found;

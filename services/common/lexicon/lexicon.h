@@ -30,6 +30,8 @@ class Lexicon {
   static absl::StatusOr<Lexicon> Load(const std::string& path);
   // The data file in the source tree (the gateway's default `lexicon_path`).
   static std::string DefaultPath();
+  // lexicon.tsv as compiled into the binary: needs no file at run time.
+  static const Lexicon& Embedded();
 
   // Entries having `form` (lower-cased English or Chinese) among their forms; empty if none.
   std::vector<const LexiconEntry*> Lookup(std::string_view form) const;

@@ -1,10 +1,12 @@
 #include "services/common/lexicon/lexicon.h"
 
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "absl/strings/match.h"
 #include "gtest/gtest.h"
+#include "services/common/lexicon/embedded_lexicon.h"
 
 namespace semnav {
 namespace {
@@ -61,6 +63,29 @@ TEST(LexiconTest, SynonymsAndChineseMapToTheCanonicalName) {
   EXPECT_EQ(lexicon.Find("左边", TermKind::kRelation)->canonical, "left_of");
   // "orange" is both a fruit and a colour; lookup returns both.
   EXPECT_EQ(lexicon.Lookup("orange").size(), 2u);
+}
+
+// The copy compiled into the binaries (CanonicalTerm's synonyms) is the data file, byte for byte.
+TEST(LexiconTest, EmbeddedTextIsTheDataFile) {
+  std::ifstream in(Lexicon::DefaultPath());
+  ASSERT_TRUE(in.good()) << Lexicon::DefaultPath();
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(std::string(EmbeddedLexiconTsv()), text.str());
+  EXPECT_EQ(Lexicon::Embedded().entries().size(), ShippedLexicon().entries().size());
+  EXPECT_EQ(Lexicon::Embedded().CanonicalObject("沙发"), "couch");
+}
+
+// Entries merged from the model proxy's former synonym list (issue 17): the gateway reads them too.
+TEST(LexiconTest, KnowsTheModelProxysFormerSynonyms) {
+  const Lexicon& lexicon = ShippedLexicon();
+  EXPECT_EQ(lexicon.CanonicalObject("settee"), "couch");
+  EXPECT_EQ(lexicon.CanonicalObject("stove"), "oven");
+  EXPECT_EQ(lexicon.CanonicalObject("wc"), "bathroom");
+  EXPECT_EQ(lexicon.CanonicalObject("cellar"), "basement");
+  EXPECT_EQ(lexicon.CanonicalObject("coffee table"), "coffee table");
+  ASSERT_NE(lexicon.Find("茶几", TermKind::kObject), nullptr);
+  EXPECT_EQ(lexicon.Find("茶几", TermKind::kObject)->canonical, "coffee table");
 }
 
 TEST(LexiconTest, RejectsMalformedLines) {
