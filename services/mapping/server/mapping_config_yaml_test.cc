@@ -53,6 +53,26 @@ TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.grid.p_threshold"));
 }
 
+TEST(MappingConfigYamlTest, SemanticPruningIsReadAndRangeChecked) {
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString("mapping:\n  semantic: {prune_growth: 3, prune_min_points: 100}\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->core.semantic.prune_growth, 3.0);
+  EXPECT_EQ(config->core.semantic.prune_min_points, 100);
+  for (const char* bad : {"prune_growth: 1.0", "prune_growth: .nan", "prune_min_points: 0"}) {
+    absl::StatusOr<ConfigReader> bad_root =
+        ConfigReader::FromString(std::string("mapping:\n  semantic: {") + bad + "}\n");
+    ASSERT_TRUE(bad_root.ok());
+    ConfigReader bad_section = bad_root->Child("mapping");
+    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.semantic.prune_")) << bad;
+  }
+}
+
 // Regression: a landmarks section without `relocalization` (or none at all, as in deploy/k8s)
 // must not demand a relocalization address; mapping then pushes nothing.
 TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
