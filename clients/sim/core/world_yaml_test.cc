@@ -73,7 +73,7 @@ TEST(SimWorldYamlTest, ErrorsNameTheField) {
   ExpectInvalid(Replace(kWorld, "colour: [240, 240, 240]", "colour: [240, 256, 240]"),
                 "objects[0].colour");
   ExpectInvalid(Replace(kWorld, "name: tiny", "title: tiny"), "title");
-  ExpectInvalid("name: [unclosed", "YAML syntax error");
+  ExpectInvalid("name: [unclosed", "world: yaml-cpp: error at line 1");
 }
 
 TEST(SimWorldYamlTest, RejectsLabelsTheLexiconDoesNotKnow) {
