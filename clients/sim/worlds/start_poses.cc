@@ -3,6 +3,7 @@
 #include <cmath>
 #include <deque>
 #include <numbers>
+#include <utility>
 
 #include "clients/sim/core/geometry2d.h"
 #include "clients/sim/core/robot_config.h"
@@ -47,10 +48,58 @@ std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid) {
   return mask;
 }
 
+StartClearanceSearch::StartClearanceSearch(const World& world, Modality modality, double altitude,
+                                           const StartClearance& clearance, PlaceFilter allowed)
+    : grid_(ModalityGrid(world, modality, altitude)),
+      region_(LargestFreeRegion(grid_)),
+      scene_(Scene::Build(world)),
+      allowed_(std::move(allowed)) {
+  const RobotConfig robot = RobotConfig::ForModality(modality);
+  const RasterOptions band = BodyRaster(robot, altitude);
+  radius_m_ = robot.radius + clearance.margin_m;
+  z0_ = band.z_min;
+  z1_ = band.z_max;
+}
+
+bool StartClearanceSearch::Clear(const Eigen::Vector2d& place) const {
+  return !scene_.SolidTouchingCylinder(place, radius_m_, z0_, z1_).has_value();
+}
+
+std::optional<Eigen::Vector2d> StartClearanceSearch::Nearest(const Eigen::Vector2d& drawn) const {
+  if (Clear(drawn)) return drawn;
+  const std::optional<Eigen::Vector2i> from = grid_.CellOf(drawn);
+  if (!from.has_value()) return std::nullopt;
+  const auto index = [&](int x, int y) { return static_cast<size_t>(y) * grid_.width + x; };
+  if (region_[index(from->x(), from->y())] == 0) return std::nullopt;
+  // Breadth-first through the region: the first cell dequeued with clearance is the nearest by
+  // steps; the neighbour order (+x, -x, +y, -y) breaks ties.
+  std::vector<uint8_t> seen(region_.size(), 0);
+  std::deque<Eigen::Vector2i> queue{*from};
+  seen[index(from->x(), from->y())] = 1;
+  while (!queue.empty()) {
+    const Eigen::Vector2i c = queue.front();
+    queue.pop_front();
+    const Eigen::Vector2d centre = grid_.CellCentre(c.x(), c.y());
+    if ((!allowed_ || allowed_(centre)) && Clear(centre)) return centre;
+    const int nx[4] = {c.x() + 1, c.x() - 1, c.x(), c.x()};
+    const int ny[4] = {c.y(), c.y(), c.y() + 1, c.y() - 1};
+    for (int k = 0; k < 4; ++k) {
+      if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid_.width || ny[k] >= grid_.height) continue;
+      const size_t n = index(nx[k], ny[k]);
+      if (region_[n] == 0 || seen[n] != 0) continue;
+      seen[n] = 1;
+      queue.emplace_back(nx[k], ny[k]);
+    }
+  }
+  return std::nullopt;
+}
+
 std::vector<StartPose> ChooseStarts(const World& world, Modality modality, double altitude,
-                                    int count, Rng& rng, const PlaceFilter& allowed) {
-  const GroundTruthGrid grid = ModalityGrid(world, modality, altitude);
-  const std::vector<uint8_t> region = LargestFreeRegion(grid);
+                                    int count, Rng& rng, const PlaceFilter& allowed,
+                                    const StartClearance& clearance) {
+  const StartClearanceSearch search(world, modality, altitude, clearance, allowed);
+  const GroundTruthGrid& grid = search.grid();
+  const std::vector<uint8_t>& region = search.region();
   // A start keeps one cell of margin inside the region: a cell centre is free of the dilated
   // solids, but the body there can still graze one (the raster is 0.1 m), and a robot that
   // starts in contact cannot move at all.
@@ -71,17 +120,20 @@ std::vector<StartPose> ChooseStarts(const World& world, Modality modality, doubl
   }
   std::vector<StartPose> starts;
   if (cells.empty()) return starts;
+  // The spread is checked between draws, not moved starts, so a move never changes a later draw.
+  std::vector<Eigen::Vector2d> drawn;
   for (int k = 0; k < count; ++k) {
     Eigen::Vector2d pick = cells[rng.UniformInt(0, static_cast<int>(cells.size()) - 1)];
     for (int attempt = 0; attempt < 50; ++attempt) {
       bool spread = true;
-      for (const StartPose& s : starts)
-        spread = spread && (s.position.head<2>() - pick).norm() >= 1.5;
+      for (const Eigen::Vector2d& d : drawn) spread = spread && (d - pick).norm() >= 1.5;
       if (spread) break;
       pick = cells[rng.UniformInt(0, static_cast<int>(cells.size()) - 1)];
     }
+    drawn.push_back(pick);
+    const Eigen::Vector2d place = search.Nearest(pick).value_or(pick);
     StartPose start;
-    start.position = Eigen::Vector3d(pick.x(), pick.y(), altitude);
+    start.position = Eigen::Vector3d(place.x(), place.y(), altitude);
     start.yaw = rng.Uniform(-std::numbers::pi, std::numbers::pi);
     start.modality = modality;
     starts.push_back(start);
