@@ -1,5 +1,6 @@
 #include "clients/sim/worlds/start_poses.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <numbers>
@@ -48,6 +49,47 @@ std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid) {
   return mask;
 }
 
+namespace {
+
+// 1 for the free cells of 4-connected free regions whose cells reach at least `min_radius_m` from
+// the region's centroid (habitat-sim's island radius, on cell centres).
+std::vector<uint8_t> CellsOnIslands(const GroundTruthGrid& grid, double min_radius_m) {
+  std::vector<uint8_t> on(grid.cells.size(), 0);
+  std::vector<uint8_t> seen(grid.cells.size(), 0);
+  for (size_t seed = 0; seed < grid.cells.size(); ++seed) {
+    if (grid.cells[seed] != 0 || seen[seed] != 0) continue;
+    std::vector<size_t> island{seed};
+    seen[seed] = 1;
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (size_t i = 0; i < island.size(); ++i) {
+      const int x = static_cast<int>(island[i] % grid.width);
+      const int y = static_cast<int>(island[i] / grid.width);
+      sum += grid.CellCentre(x, y);
+      const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
+      for (int k = 0; k < 4; ++k) {
+        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid.width || ny[k] >= grid.height) continue;
+        const size_t n = static_cast<size_t>(ny[k]) * grid.width + nx[k];
+        if (grid.cells[n] != 0 || seen[n] != 0) continue;
+        seen[n] = 1;
+        island.push_back(n);
+      }
+    }
+    const Eigen::Vector2d centroid = sum / static_cast<double>(island.size());
+    double radius = 0.0;
+    for (const size_t c : island) {
+      radius = std::max(radius, (grid.CellCentre(static_cast<int>(c % grid.width),
+                                                 static_cast<int>(c / grid.width)) -
+                                 centroid)
+                                    .norm());
+    }
+    if (radius < min_radius_m) continue;
+    for (const size_t c : island) on[c] = 1;
+  }
+  return on;
+}
+
+}  // namespace
+
 StartClearanceSearch::StartClearanceSearch(const World& world, Modality modality, double altitude,
                                            const StartClearance& clearance, PlaceFilter allowed)
     : grid_(ModalityGrid(world, modality, altitude)),
@@ -55,14 +97,21 @@ StartClearanceSearch::StartClearanceSearch(const World& world, Modality modality
       scene_(Scene::Build(world)),
       allowed_(std::move(allowed)) {
   const RobotConfig robot = RobotConfig::ForModality(modality);
-  const RasterOptions band = BodyRaster(robot, altitude);
+  RasterOptions band = BodyRaster(robot, altitude);
   radius_m_ = robot.radius + clearance.margin_m;
   z0_ = band.z_min;
   z1_ = band.z_max;
+  band.resolution = grid_.resolution;
+  band.robot_radius = radius_m_;
+  clear_grid_ = RasterizeOccupancy(world, band);
+  on_island_ = CellsOnIslands(clear_grid_, clearance.min_island_radius_m);
 }
 
 bool StartClearanceSearch::Clear(const Eigen::Vector2d& place) const {
-  return !scene_.SolidTouchingCylinder(place, radius_m_, z0_, z1_).has_value();
+  const std::optional<Eigen::Vector2i> cell = clear_grid_.CellOf(place);
+  return cell.has_value() &&
+         on_island_[static_cast<size_t>(cell->y()) * clear_grid_.width + cell->x()] != 0 &&
+         !scene_.SolidTouchingCylinder(place, radius_m_, z0_, z1_).has_value();
 }
 
 std::optional<Eigen::Vector2d> StartClearanceSearch::Nearest(const Eigen::Vector2d& drawn) const {

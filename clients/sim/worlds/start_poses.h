@@ -20,13 +20,17 @@ std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid);
 
 using PlaceFilter = std::function<bool(const Eigen::Vector2d&)>;
 
-// Clearance a start needs (docs/algorithms/simulation.md, "Start poses"): no solid of the body's
-// height band within the robot's radius plus `margin_m`. Habitat draws ObjectNav starts on a
-// navmesh eroded by the agent radius; the margin is one cell of the 0.1 m raster the starts are
-// drawn on, the error of its cell-centre coverage test (a drawn cell can hold a body that
-// grazes a solid), which the draw's one-cell rule only approximated.
+// Clearance a start needs (docs/algorithms/simulation.md, "Start poses"). Habitat draws ObjectNav
+// starts on a navmesh eroded by the agent radius, and habitat-lab's episode generator rejects a
+// start whose navmesh island is smaller than ISLAND_RADIUS_LIMIT = 1.5 m. Here the erosion is the
+// robot's radius plus `margin_m`: a start has clearance when no solid of the body's height band
+// comes within radius + margin of it, and its 4-connected free region of the raster dilated by
+// radius + margin (its island) reaches at least `min_island_radius_m` from the island's centroid,
+// so it is not in a pocket whose ways out are narrower than the clearance.
 struct StartClearance {
+  // One cell of the 0.1 m raster the starts are drawn on: the draw's one-cell rule, made exact.
   double margin_m = 0.1;
+  double min_island_radius_m = 1.5;  // habitat-lab ISLAND_RADIUS_LIMIT
 };
 
 // Where a drawn start moves when it lacks clearance: the nearest place with clearance by
@@ -37,7 +41,8 @@ class StartClearanceSearch {
  public:
   StartClearanceSearch(const World& world, Modality modality, double altitude,
                        const StartClearance& clearance, PlaceFilter allowed = nullptr);
-  // True when no solid of the body's height band comes within radius + margin of `place`.
+  // True when no solid of the body's height band comes within radius + margin of `place` and
+  // `place` lies on an island of at least the minimum radius.
   bool Clear(const Eigen::Vector2d& place) const;
   // `drawn` itself when it has clearance; else the nearest cell centre with clearance (and
   // allowed); nullopt when none is reachable from `drawn`'s cell.
@@ -46,8 +51,10 @@ class StartClearanceSearch {
   const std::vector<uint8_t>& region() const { return region_; }
 
  private:
-  GroundTruthGrid grid_;
-  std::vector<uint8_t> region_;
+  GroundTruthGrid grid_;            // dilated by the radius
+  std::vector<uint8_t> region_;     // its largest free region
+  GroundTruthGrid clear_grid_;      // dilated by radius + margin
+  std::vector<uint8_t> on_island_;  // its free cells on an island of the minimum radius
   Scene scene_;
   double radius_m_ = 0.0;
   double z0_ = 0.0, z1_ = 0.0;

@@ -86,6 +86,39 @@ TEST(SimStartPosesTest, StartInAPocketLeavesItByItsMouthNotThroughTheWall) {
   EXPECT_TRUE(north_only.Clear(*allowed));
 }
 
+TEST(SimStartPosesTest, StartInARoomWithANarrowDoorMovesOutThroughTheDoor) {
+  // A 2 x 2 m room (inside x, y 6.02-8.02) in the hall; its south wall's door is 0.66 m wide
+  // (x 6.72-7.38). On the 0.1 m raster the door leaves one column (x 7.05, 0.3 m from the cells
+  // the jambs cover) free for the 0.25 m radius but none for radius + margin (0.35 m): the room
+  // is joined to the hall for the robot, but at radius + margin it is an island of its own, about
+  // 1.3 x 1.3 m, under the 1.5 m island radius.
+  const World world = HallWith({testing::Box(5.92, 7.02, 0.2, 2.4, 1.0),     // west
+                                testing::Box(8.12, 7.02, 0.2, 2.4, 1.0),     // east
+                                testing::Box(7.02, 8.12, 2.4, 0.2, 1.0),     // north
+                                testing::Box(6.27, 5.92, 0.9, 0.2, 1.0),     // south, x 5.82-6.72
+                                testing::Box(7.80, 5.92, 0.84, 0.2, 1.0)});  // x 7.38-8.22
+  const StartClearanceSearch search(world, Modality::kGround, 0.0, StartClearance{});
+  // The room's centre is 0.95 m from every wall, but in the pocket.
+  const Eigen::Vector2d in_room(7.05, 7.05);
+  EXPECT_FALSE(search.Clear(in_room));
+  // Down the door column and out: (7.05, 5.75) is 0.337 m from the jamb corner (7.38, 5.82);
+  // (7.05, 5.65) is 0.371 m, 14 steps; the cells beside (6.95 / 7.15, 5.75) are 0.22 m from the
+  // cells the jambs cover.
+  const std::optional<Eigen::Vector2d> moved = search.Nearest(in_room);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_NEAR(moved->x(), 7.05, 1e-9);
+  EXPECT_NEAR(moved->y(), 5.65, 1e-9);
+  // With a 1.2 m door (x 6.42-7.62) the room is part of the hall for radius + margin too: the
+  // start stays put.
+  const World wide =
+      HallWith({testing::Box(5.92, 7.02, 0.2, 2.4, 1.0), testing::Box(8.12, 7.02, 0.2, 2.4, 1.0),
+                testing::Box(7.02, 8.12, 2.4, 0.2, 1.0),
+                testing::Box(6.12, 5.92, 0.6, 0.2, 1.0),    // x 5.82-6.42
+                testing::Box(7.92, 5.92, 0.6, 0.2, 1.0)});  // x 7.62-8.22
+  const StartClearanceSearch wide_search(wide, Modality::kGround, 0.0, StartClearance{});
+  EXPECT_EQ(*wide_search.Nearest(in_room), in_room);
+}
+
 TEST(SimStartPosesTest, HandDrawnWorldStartsHaveClearance) {
   // Their starts are drawn by hand and used as they are (no draw, no move): each must already
   // have the clearance a generated start gets.
