@@ -34,6 +34,7 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("log_odds_max", &c.grid.log_odds_max)
       .Read("foot_height_m", &c.heights.foot_m)
       .Read("ceiling_height_m", &c.heights.ceiling_m)
+      .Read("body_height_m", &c.heights.body_m)
       .Read("estimate_heights_after_frames", &c.estimate_heights_after_frames)
       .Read("obstacle_kernel", &c.layers.obstacle_kernel)
       .Read("robot_radius_m", &c.layers.robot_radius_m)
@@ -46,6 +47,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   grid.Check(c.grid.log_odds_min < 0.0 && c.grid.log_odds_max > 0.0, "log_odds_max",
              "need log_odds_min < 0 < log_odds_max");
   grid.Check(c.heights.ceiling_m > c.heights.foot_m, "ceiling_height_m", "must be > foot_height_m");
+  grid.Check(c.heights.body_m >= 0.0 && c.heights.body_m <= c.heights.ceiling_m - c.heights.foot_m,
+             "body_height_m", "must be in [0, ceiling_height_m - foot_height_m]");
   grid.Check(c.estimate_heights_after_frames >= 0, "estimate_heights_after_frames",
              "must be >= 0 (0 = off)");
   grid.Check(c.layers.obstacle_kernel >= 1 && c.layers.obstacle_kernel % 2 == 1, "obstacle_kernel",
