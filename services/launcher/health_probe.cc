@@ -13,6 +13,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "grpc/health/v1/health.grpc.pb.h"
+#include "services/common/net/host_port.h"
 
 namespace semnav::launcher {
 
@@ -42,14 +43,13 @@ absl::Status ProbeHttp(const std::string& url, absl::Duration timeout) {
   const size_t slash = rest.find('/');
   const std::string authority = rest.substr(0, slash);
   const std::string path = slash == std::string::npos ? "/" : rest.substr(slash);
-  const size_t colon = authority.rfind(':');
-  if (colon == std::string::npos) return absl::InvalidArgumentError("URL without a port");
-  std::string host = authority.substr(0, colon);
-  if (host.size() >= 2 && host.front() == '[') host = host.substr(1, host.size() - 2);
+  const std::optional<HostPort> address = SplitHostPort(authority);
+  if (!address) return absl::InvalidArgumentError("URL without a port");
+  const std::string host = address->BareHost();
   addrinfo hints{};
   hints.ai_socktype = SOCK_STREAM;
   addrinfo* found = nullptr;
-  if (::getaddrinfo(host.c_str(), authority.substr(colon + 1).c_str(), &hints, &found) != 0) {
+  if (::getaddrinfo(host.c_str(), address->port.c_str(), &hints, &found) != 0) {
     return absl::UnavailableError(absl::StrCat("cannot resolve ", host));
   }
   const int fd = ::socket(found->ai_family, found->ai_socktype, found->ai_protocol);

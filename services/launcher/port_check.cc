@@ -7,16 +7,15 @@
 #include <cerrno>
 
 #include "absl/strings/str_cat.h"
+#include "services/common/net/host_port.h"
 
 namespace semnav::launcher {
 
 absl::Status CheckListenAddressFree(const std::string& listen) {
-  const size_t colon = listen.rfind(':');
-  if (colon == std::string::npos) return absl::OkStatus();
-  std::string host = listen.substr(0, colon);
-  const std::string port = listen.substr(colon + 1);
-  if (host.size() >= 2 && host.front() == '[' && host.back() == ']')
-    host = host.substr(1, host.size() - 2);
+  const std::optional<HostPort> address = SplitHostPort(listen);
+  if (!address) return absl::OkStatus();
+  const std::string host = address->BareHost();
+  const std::string& port = address->port;
   addrinfo hints{};
   hints.ai_socktype = SOCK_STREAM;
   hints.ai_flags = AI_PASSIVE;

@@ -11,6 +11,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "services/common/net/host_port.h"
 #include "services/launcher/child_process.h"
 #include "services/launcher/health_probe.h"
 #include "services/launcher/port_check.h"
@@ -30,8 +31,9 @@ std::string CheckHealth(const std::string& address, absl::Duration timeout) {
 }
 
 std::string DashboardUrl(const std::string& listen) {
-  std::string host = listen.substr(0, listen.rfind(':'));
-  const std::string port = listen.substr(listen.rfind(':') + 1);
+  const HostPort address = SplitHostPort(listen).value_or(HostPort{listen, listen});
+  std::string host = address.host;
+  const std::string& port = address.port;
   if (host.empty() || host == "0.0.0.0") host = "127.0.0.1";
   if (host == "[::]") host = "[::1]";
   return absl::StrCat("http://", host, ":", port, "/");

@@ -6,13 +6,13 @@
 #include "services/common/logging/log.h"
 #include "services/common/server/service_binary.h"
 #include "services/reasoning/core/conceptnet_cooccurrence.h"
+#include "services/reasoning/core/robot_local_planner.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/mapping_watcher.h"
 #include "services/reasoning/server/model_proxy_client.h"
 #include "services/reasoning/server/operator_service.h"
 #include "services/reasoning/server/planning_client.h"
 #include "services/reasoning/server/relocalization_client.h"
-#include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/server/robot_session_service.h"
 
 namespace {

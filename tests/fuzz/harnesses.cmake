@@ -1,7 +1,7 @@
 # Every harness: fuzz_<name> is built from <name>_fuzzer.cc (fuzzers.cmake), seeded from
 # corpus/<name>/ and replays regressions/<name>/.
 set(SEMNAV_FUZZ_HARNESSES
-  world_yaml          # clients/sim world files (and yaml_fields)
+  world_yaml          # clients/sim world files (read through ConfigReader)
   service_config      # each service's config file: log_level, server, and its own section
   stack_config        # the launcher's stack YAML
   map_store_file      # mapping's .snmap file (header, size, CRC-32) and the payload inside

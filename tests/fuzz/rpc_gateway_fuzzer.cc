@@ -6,10 +6,10 @@
 #include <cstdlib>
 
 #include "services/common/config/config_reader.h"
+#include "services/reasoning/core/robot_local_planner.h"
 #include "services/reasoning/server/gateway_config.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/operator_service.h"
-#include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/server/robot_session_service.h"
 #include "tests/fuzz/rpc_harness.h"
 

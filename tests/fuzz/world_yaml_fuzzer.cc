@@ -1,4 +1,4 @@
-// World files of the simulator (clients/sim/core/world_yaml, with yaml_fields): any text either
+// World files of the simulator (clients/sim/core/world_yaml, through ConfigReader): any text either
 // parses into a world or is an error, and a parsed world writes back to YAML that parses again.
 #include <cstdint>
 #include <cstdlib>

@@ -1,8 +1,7 @@
 #include "clients/sim/core/world_yaml.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -13,13 +12,11 @@
 #include "clients/sim/core/label_lexicon.h"
 #include "clients/sim/core/robot_config.h"
 #include "clients/sim/core/shape_queries.h"
-#include "clients/sim/core/yaml_fields.h"
+#include "services/common/config/config_reader.h"
 #include "services/common/status/field_error.h"
 
 namespace semnav::sim {
 namespace {
-
-namespace yf = yaml_fields;
 
 #define SIM_ASSIGN_OR_RETURN(lhs, expr)         \
   auto lhs##_or = (expr);                       \
@@ -33,165 +30,150 @@ absl::Status Invalid(const std::string& field, absl::string_view what) {
   return InvalidField(field, what);
 }
 
+// "objects[2].id": a field of a list item, for the checks made after reading.
+std::string ItemField(absl::string_view list, size_t i, absl::string_view field) {
+  return absl::StrCat(list, "[", i, "].", field);
+}
+
 // Geometry may reach this far past the bounds (rounding of written coordinates).
 constexpr double kBoundsTolerance = 1e-3;
 
-absl::StatusOr<Rgb> ReadColour(const YAML::Node& map, const std::string& path) {
-  const YAML::Node node = map["colour"];
-  if (!node) return Rgb{};
-  SIM_ASSIGN_OR_RETURN(v, yf::ReadNumbers(node, yf::Join(path, "colour"), 3));
-  for (int i = 0; i < 3; ++i) {
-    if (v[i] < 0 || v[i] > 255) return Invalid(yf::Join(path, "colour"), "values must be 0-255");
-  }
-  return Rgb{static_cast<uint8_t>(v[0]), static_cast<uint8_t>(v[1]), static_cast<uint8_t>(v[2])};
+// A world file is data: a key written without a value is a slip, not "use the default".
+ConfigReaderOptions WorldDocument() { return {.name = "world", .null_is_absent = false}; }
+
+// ConfigReader reads any number yaml-cpp does, ".inf" and ".nan" too; world numbers are finite.
+void CheckFiniteNumber(ConfigReader& r, absl::string_view key, double value) {
+  r.Check(std::isfinite(value), key, "expected a finite number");
 }
 
-absl::StatusOr<std::vector<Eigen::Vector2d>> ReadPolygon(const YAML::Node& node,
-                                                         const std::string& path) {
-  if (!node || !node.IsSequence() || node.size() < 3) {
-    return Invalid(path, "expected a list of at least 3 [x, y] points");
+// An optional [r, g, b] (0-255) at `key`; *colour keeps its default when absent.
+void ReadColour(ConfigReader& r, absl::string_view key, Rgb* colour) {
+  Eigen::Vector3d v(colour->r, colour->g, colour->b);
+  r.Read(key, &v);
+  const bool in_range = (v.array() >= 0.0).all() && (v.array() <= 255.0).all();
+  r.Check(in_range, key, "values must be 0-255");
+  if (in_range) {
+    *colour =
+        Rgb{static_cast<uint8_t>(v[0]), static_cast<uint8_t>(v[1]), static_cast<uint8_t>(v[2])};
   }
+}
+
+// A required polygon of at least 3 [x, y] points at `key`.
+std::vector<Eigen::Vector2d> ReadPolygon(ConfigReader& r, absl::string_view key) {
   std::vector<Eigen::Vector2d> polygon;
-  for (size_t i = 0; i < node.size(); ++i) {
-    SIM_ASSIGN_OR_RETURN(p, yf::ReadNumbers(node[i], yf::Index(path, i), 2));
-    polygon.emplace_back(p[0], p[1]);
-  }
+  r.Require(key, &polygon);
+  r.Check(polygon.size() >= 3, key, "expected a list of at least 3 [x, y] points");
   return polygon;
 }
 
-absl::StatusOr<BoxShape> ReadBox(const YAML::Node& node, const std::string& path) {
-  SIM_RETURN_IF_ERROR(yf::ExpectMap(node, path));
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(node, path, {"center", "size", "yaw", "base_z"}));
+BoxShape ReadBox(ConfigReader r) {
   BoxShape box;
-  SIM_ASSIGN_OR_RETURN(center, yf::ReadNumbers(node["center"], yf::Join(path, "center"), 2));
-  SIM_ASSIGN_OR_RETURN(size, yf::ReadNumbers(node["size"], yf::Join(path, "size"), 3));
-  const double zero = 0.0;
-  SIM_ASSIGN_OR_RETURN(yaw, yf::ReadDouble(node, path, "yaw", &zero));
-  SIM_ASSIGN_OR_RETURN(base_z, yf::ReadDouble(node, path, "base_z", &zero));
-  if ((size.array() <= 0.0).any()) return Invalid(yf::Join(path, "size"), "must be positive");
-  box.center = center;
-  box.size = size;
-  box.yaw = yaw;
-  box.base_z = base_z;
+  r.Require("center", &box.center).Require("size", &box.size);
+  r.Read("yaw", &box.yaw).Read("base_z", &box.base_z);
+  CheckFiniteNumber(r, "yaw", box.yaw);
+  CheckFiniteNumber(r, "base_z", box.base_z);
+  r.Check((box.size.array() > 0.0).all(), "size", "must be positive");
   return box;
 }
 
-absl::StatusOr<PrismShape> ReadPrism(const YAML::Node& node, const std::string& path) {
-  SIM_RETURN_IF_ERROR(yf::ExpectMap(node, path));
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(node, path, {"polygon", "base_z", "height"}));
+PrismShape ReadPrism(ConfigReader r) {
   PrismShape prism;
-  SIM_ASSIGN_OR_RETURN(polygon, ReadPolygon(node["polygon"], yf::Join(path, "polygon")));
-  const double zero = 0.0;
-  SIM_ASSIGN_OR_RETURN(base_z, yf::ReadDouble(node, path, "base_z", &zero));
-  SIM_ASSIGN_OR_RETURN(height, yf::ReadDouble(node, path, "height"));
-  if (height <= 0.0) return Invalid(yf::Join(path, "height"), "must be positive");
-  prism.polygon = std::move(polygon);
-  prism.base_z = base_z;
-  prism.height = height;
+  prism.polygon = ReadPolygon(r, "polygon");
+  r.Read("base_z", &prism.base_z).Require("height", &prism.height);
+  CheckFiniteNumber(r, "base_z", prism.base_z);
+  CheckFiniteNumber(r, "height", prism.height);
+  r.Check(prism.height > 0.0, "height", "must be positive");
   return prism;
 }
 
-absl::StatusOr<Obstacle> ReadObstacle(const YAML::Node& node, const std::string& path) {
-  SIM_RETURN_IF_ERROR(yf::ExpectMap(node, path));
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(node, path, {"kind", "colour", "box", "prism"}));
+Obstacle ReadObstacle(ConfigReader& r) {
   Obstacle obstacle;
-  SIM_ASSIGN_OR_RETURN(kind, yf::ReadString(node, path, "kind"));
-  SIM_ASSIGN_OR_RETURN(colour, ReadColour(node, path));
-  obstacle.kind = kind;
-  obstacle.colour = colour;
-  if (node["box"] && node["prism"]) return Invalid(path, "give either box or prism, not both");
-  if (node["box"]) {
-    SIM_ASSIGN_OR_RETURN(box, ReadBox(node["box"], yf::Join(path, "box")));
-    obstacle.shape = box;
-  } else if (node["prism"]) {
-    SIM_ASSIGN_OR_RETURN(prism, ReadPrism(node["prism"], yf::Join(path, "prism")));
-    obstacle.shape = prism;
-  } else {
-    return Invalid(path, "needs a box or a prism");
+  r.Require("kind", &obstacle.kind);
+  ReadColour(r, "colour", &obstacle.colour);
+  const bool box = r.Has("box"), prism = r.Has("prism");
+  r.Check(box || prism, "box", "missing: an obstacle needs a box or a prism");
+  r.Check(!(box && prism), "prism", "give either box or prism, not both");
+  if (box) obstacle.shape = ReadBox(r.Child("box"));
+  // Read even next to a box, so its own errors are named too.
+  if (prism) {
+    PrismShape shape = ReadPrism(r.Child("prism"));
+    if (!box) obstacle.shape = std::move(shape);
   }
   return obstacle;
 }
 
-absl::StatusOr<ObjectInstance> ReadObject(const YAML::Node& node, const std::string& path) {
-  SIM_RETURN_IF_ERROR(yf::ExpectMap(node, path));
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(node, path, {"id", "label", "colour", "box", "room"}));
+ObjectInstance ReadObject(ConfigReader& r) {
   ObjectInstance object;
-  const std::string empty;
-  SIM_ASSIGN_OR_RETURN(id, yf::ReadString(node, path, "id"));
-  SIM_ASSIGN_OR_RETURN(label, yf::ReadString(node, path, "label"));
-  SIM_ASSIGN_OR_RETURN(room, yf::ReadString(node, path, "room", &empty));
-  SIM_ASSIGN_OR_RETURN(colour, ReadColour(node, path));
-  SIM_ASSIGN_OR_RETURN(box, ReadBox(node["box"], yf::Join(path, "box")));
-  if (id.empty()) return Invalid(yf::Join(path, "id"), "must not be empty");
-  if (label.empty()) return Invalid(yf::Join(path, "label"), "must not be empty");
-  object.id = id;
-  object.label = label;
-  object.room = room;
-  object.colour = colour;
-  object.box = box;
+  r.Require("id", &object.id).Require("label", &object.label).Read("room", &object.room);
+  ReadColour(r, "colour", &object.colour);
+  object.box = ReadBox(r.RequireChild("box"));
+  r.Check(!object.id.empty(), "id", "must not be empty");
+  r.Check(!object.label.empty(), "label", "must not be empty");
   return object;
 }
 
-absl::StatusOr<Room> ReadRoom(const YAML::Node& node, const std::string& path) {
-  SIM_RETURN_IF_ERROR(yf::ExpectMap(node, path));
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(node, path, {"name", "type", "polygon"}));
+Room ReadRoom(ConfigReader& r) {
   Room room;
-  SIM_ASSIGN_OR_RETURN(name, yf::ReadString(node, path, "name"));
-  SIM_ASSIGN_OR_RETURN(type, yf::ReadString(node, path, "type"));
-  SIM_ASSIGN_OR_RETURN(polygon, ReadPolygon(node["polygon"], yf::Join(path, "polygon")));
-  if (name.empty()) return Invalid(yf::Join(path, "name"), "must not be empty");
-  room.name = name;
-  room.type = type;
-  room.polygon = std::move(polygon);
+  r.Require("name", &room.name).Require("type", &room.type);
+  room.polygon = ReadPolygon(r, "polygon");
+  r.Check(!room.name.empty(), "name", "must not be empty");
   return room;
 }
 
-absl::StatusOr<StartPose> ReadStart(const YAML::Node& node, const std::string& path) {
-  SIM_RETURN_IF_ERROR(yf::ExpectMap(node, path));
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(node, path, {"position", "yaw", "modality"}));
+StartPose ReadStart(ConfigReader& r) {
   StartPose start;
-  SIM_ASSIGN_OR_RETURN(position, yf::ReadNumbers(node["position"], yf::Join(path, "position"), 3));
-  const double zero = 0.0;
-  SIM_ASSIGN_OR_RETURN(yaw, yf::ReadDouble(node, path, "yaw", &zero));
-  SIM_ASSIGN_OR_RETURN(modality_name, yf::ReadString(node, path, "modality"));
-  const std::optional<Modality> modality = ParseModality(modality_name);
-  if (!modality) {
-    return Invalid(yf::Join(path, "modality"), "expected ground, uav or fly_roll");
-  }
-  start.position = position;
-  start.yaw = yaw;
-  start.modality = *modality;
+  std::string modality;
+  r.Require("position", &start.position).Read("yaw", &start.yaw).Require("modality", &modality);
+  CheckFiniteNumber(r, "yaw", start.yaw);
+  const std::optional<Modality> parsed = ParseModality(modality);
+  r.Check(parsed.has_value(), "modality", "expected ground, uav or fly_roll");
+  if (parsed) start.modality = *parsed;
   return start;
 }
 
-// Reads the list at `key` element by element with `read`.
+// The items of the list at `key`, each read with `read`.
 template <typename T, typename ReadFn>
-absl::Status ReadList(const YAML::Node& root, const char* key, ReadFn read, std::vector<T>* out) {
-  const YAML::Node list = root[key];
-  if (!list) return absl::OkStatus();
-  SIM_RETURN_IF_ERROR(yf::ExpectSequence(list, key));
-  for (size_t i = 0; i < list.size(); ++i) {
-    SIM_ASSIGN_OR_RETURN(item, read(list[i], yf::Index(key, i)));
-    out->push_back(std::move(item));
-  }
-  return absl::OkStatus();
+std::vector<T> ReadList(ConfigReader& r, absl::string_view key, ReadFn read) {
+  std::vector<T> list;
+  for (ConfigReader& item : r.Items(key)) list.push_back(read(item));
+  return list;
+}
+
+// Every field of the file; format errors are left in `r` for its Finish().
+World ReadWorld(ConfigReader& r) {
+  World world;
+  r.Require("name", &world.name).Read("description", &world.description);
+  r.Read("ceiling_height", &world.ceiling_height);
+  r.Check(!world.name.empty(), "name", "must not be empty");
+  CheckFiniteNumber(r, "ceiling_height", world.ceiling_height);
+  r.Check(world.ceiling_height >= 0.0, "ceiling_height", "must be >= 0 (0 = open sky)");
+  ConfigReader bounds = r.RequireChild("bounds");
+  bounds.Require("min", &world.bounds_min).Require("max", &world.bounds_max);
+  bounds.Check((world.bounds_max.array() > world.bounds_min.array()).all(), "max",
+               "must exceed bounds.min");
+  ReadColour(r, "floor_colour", &world.floor_colour);
+  world.obstacles = ReadList<Obstacle>(r, "obstacles", ReadObstacle);
+  world.objects = ReadList<ObjectInstance>(r, "objects", ReadObject);
+  world.rooms = ReadList<Room>(r, "rooms", ReadRoom);
+  world.starts = ReadList<StartPose>(r, "starts", ReadStart);
+  return world;
 }
 
 absl::Status CheckReferences(const World& world) {
   std::set<std::string> rooms;
   for (size_t i = 0; i < world.rooms.size(); ++i) {
     if (!rooms.insert(world.rooms[i].name).second) {
-      return Invalid(yf::Index("rooms", i) + ".name", "duplicate room name");
+      return Invalid(ItemField("rooms", i, "name"), "duplicate room name");
     }
   }
   std::set<std::string> ids;
   for (size_t i = 0; i < world.objects.size(); ++i) {
     const ObjectInstance& object = world.objects[i];
     if (!ids.insert(object.id).second) {
-      return Invalid(yf::Index("objects", i) + ".id", "duplicate object id");
+      return Invalid(ItemField("objects", i, "id"), "duplicate object id");
     }
     if (!object.room.empty() && !rooms.contains(object.room)) {
-      return Invalid(yf::Index("objects", i) + ".room", "names no room in rooms");
+      return Invalid(ItemField("objects", i, "room"), "names no room in rooms");
     }
   }
   if (world.starts.empty()) return Invalid("starts", "at least one start pose is needed");
@@ -204,7 +186,7 @@ absl::Status CheckLabels(const World& world) {
   SIM_ASSIGN_OR_RETURN(lexicon, LabelLexicon());
   for (size_t i = 0; i < world.objects.size(); ++i) {
     if (lexicon->Find(world.objects[i].label, TermKind::kObject) == nullptr) {
-      return Invalid(yf::Index("objects", i) + ".label",
+      return Invalid(ItemField("objects", i, "label"),
                      absl::StrCat("\"", Preview(world.objects[i].label),
                                   "\" is not an object of the reasoning lexicon"));
     }
@@ -225,21 +207,21 @@ absl::Status CheckBounds(const World& world) {
     const auto [lo, hi] = FootprintBounds(world.obstacles[i].shape);
     if (!WithinBounds(world, lo, hi)) {
       const bool box = std::holds_alternative<BoxShape>(world.obstacles[i].shape);
-      return Invalid(yf::Index("obstacles", i) + (box ? ".box" : ".prism.polygon"), inside);
+      return Invalid(ItemField("obstacles", i, box ? "box" : "prism.polygon"), inside);
     }
   }
   for (size_t i = 0; i < world.objects.size(); ++i) {
     const auto [lo, hi] = FootprintBounds(Shape(world.objects[i].box));
-    if (!WithinBounds(world, lo, hi)) return Invalid(yf::Index("objects", i) + ".box", inside);
+    if (!WithinBounds(world, lo, hi)) return Invalid(ItemField("objects", i, "box"), inside);
   }
   for (size_t i = 0; i < world.rooms.size(); ++i) {
     for (const Eigen::Vector2d& p : world.rooms[i].polygon) {
-      if (!WithinBounds(world, p, p)) return Invalid(yf::Index("rooms", i) + ".polygon", inside);
+      if (!WithinBounds(world, p, p)) return Invalid(ItemField("rooms", i, "polygon"), inside);
     }
   }
   for (size_t i = 0; i < world.starts.size(); ++i) {
     const Eigen::Vector2d p = world.starts[i].position.head<2>();
-    if (!WithinBounds(world, p, p)) return Invalid(yf::Index("starts", i) + ".position", inside);
+    if (!WithinBounds(world, p, p)) return Invalid(ItemField("starts", i, "position"), inside);
   }
   return absl::OkStatus();
 }
@@ -258,14 +240,14 @@ absl::Status CheckStarts(const World& world) {
     };
     for (size_t k = 0; k < world.obstacles.size(); ++k) {
       if (touches(world.obstacles[k].shape)) {
-        return Invalid(yf::Index("starts", i) + ".position",
+        return Invalid(ItemField("starts", i, "position"),
                        absl::StrCat("the robot's body there touches obstacles[", k, "] (",
                                     world.obstacles[k].kind, ")"));
       }
     }
     for (size_t k = 0; k < world.objects.size(); ++k) {
       if (touches(Shape(world.objects[k].box))) {
-        return Invalid(yf::Index("starts", i) + ".position",
+        return Invalid(ItemField("starts", i, "position"),
                        absl::StrCat("the robot's body there touches objects[", k, "] (",
                                     world.objects[k].id, ")"));
       }
@@ -274,58 +256,17 @@ absl::Status CheckStarts(const World& world) {
   return absl::OkStatus();
 }
 
-absl::StatusOr<World> ParseRoot(const YAML::Node& root) {
-  SIM_RETURN_IF_ERROR(yf::ExpectMap(root, ""));
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(root, "",
-                                    {"name", "description", "bounds", "ceiling_height",
-                                     "floor_colour", "obstacles", "objects", "rooms", "starts"}));
-  World world;
-  const std::string empty;
-  const double zero = 0.0;
-  SIM_ASSIGN_OR_RETURN(name, yf::ReadString(root, "", "name"));
-  SIM_ASSIGN_OR_RETURN(description, yf::ReadString(root, "", "description", &empty));
-  SIM_ASSIGN_OR_RETURN(ceiling, yf::ReadDouble(root, "", "ceiling_height", &zero));
-  if (name.empty()) return Invalid("name", "must not be empty");
-  if (ceiling < 0.0) return Invalid("ceiling_height", "must be >= 0 (0 = open sky)");
-  world.name = name;
-  world.description = description;
-  world.ceiling_height = ceiling;
-  const YAML::Node bounds = root["bounds"];
-  if (!bounds || !bounds.IsMap()) return Invalid("bounds", "expected {min: [x, y], max: [x, y]}");
-  SIM_RETURN_IF_ERROR(yf::CheckKeys(bounds, "bounds", {"min", "max"}));
-  SIM_ASSIGN_OR_RETURN(lo, yf::ReadNumbers(bounds["min"], "bounds.min", 2));
-  SIM_ASSIGN_OR_RETURN(hi, yf::ReadNumbers(bounds["max"], "bounds.max", 2));
-  if ((hi.array() <= lo.array()).any()) return Invalid("bounds.max", "must exceed bounds.min");
-  world.bounds_min = lo;
-  world.bounds_max = hi;
-  if (root["floor_colour"]) {
-    YAML::Node holder;
-    holder["colour"] = root["floor_colour"];
-    auto colour = ReadColour(holder, "");
-    if (!colour.ok()) return Invalid("floor_colour", "expected [r, g, b] with values 0-255");
-    world.floor_colour = *colour;
-  }
-  SIM_RETURN_IF_ERROR(ReadList(root, "obstacles", ReadObstacle, &world.obstacles));
-  SIM_RETURN_IF_ERROR(ReadList(root, "objects", ReadObject, &world.objects));
-  SIM_RETURN_IF_ERROR(ReadList(root, "rooms", ReadRoom, &world.rooms));
-  SIM_RETURN_IF_ERROR(ReadList(root, "starts", ReadStart, &world.starts));
+}  // namespace
+
+absl::StatusOr<World> ParseWorldYaml(const std::string& text) {
+  SIM_ASSIGN_OR_RETURN(reader, ConfigReader::FromString(text, WorldDocument()));
+  const World world = ReadWorld(reader);
+  SIM_RETURN_IF_ERROR(reader.Finish());
   SIM_RETURN_IF_ERROR(CheckReferences(world));
   SIM_RETURN_IF_ERROR(CheckLabels(world));
   SIM_RETURN_IF_ERROR(CheckBounds(world));
   SIM_RETURN_IF_ERROR(CheckStarts(world));
   return world;
-}
-
-}  // namespace
-
-absl::StatusOr<World> ParseWorldYaml(const std::string& text) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    return absl::InvalidArgumentError(absl::StrCat("world: YAML syntax error: ", e.what()));
-  }
-  return ParseRoot(root);
 }
 
 absl::StatusOr<World> LoadWorldFile(const std::string& path) {

@@ -73,7 +73,36 @@ TEST(SimWorldYamlTest, ErrorsNameTheField) {
   ExpectInvalid(Replace(kWorld, "colour: [240, 240, 240]", "colour: [240, 256, 240]"),
                 "objects[0].colour");
   ExpectInvalid(Replace(kWorld, "name: tiny", "title: tiny"), "title");
-  ExpectInvalid("name: [unclosed", "YAML syntax error");
+  ExpectInvalid(Replace(kWorld, ", modality: ground", ""), "starts[0].modality: missing");
+  ExpectInvalid(Replace(kWorld, "max: [6, 4]", "max: [6, .inf]"),
+                "bounds.max[1]: expected a finite number");
+  ExpectInvalid(Replace(kWorld, "[[1, 2], [2, 2], [2, 3]]", "[[1, 2], [2, 2], [2]]"),
+                "obstacles[1].prism.polygon[2]: expected a list of 2 numbers");
+  ExpectInvalid(Replace(kWorld, "prism: {", "box: {center: [1, 1], size: [1, 1, 1]}, prism: {"),
+                "obstacles[1].prism: give either box or prism, not both");
+  ExpectInvalid("name: [unclosed", "world: yaml-cpp: error at line 1");
+}
+
+// A world file is data: a key written without a value is an error, not "use the default" as in
+// a service config (ConfigReaderOptions::null_is_absent).
+TEST(SimWorldYamlTest, KeysWithoutAValueAreErrors) {
+  ExpectInvalid(Replace(kWorld, "yaw: 0.5", "yaw: ~"), "starts[0].yaw: has no value");
+  ExpectInvalid(Replace(kWorld, "room: kitchen_1,", "room: ~,"), "objects[0].room: has no value");
+  ExpectInvalid(Replace(kWorld, "ceiling_height: 2.5", "ceiling_height:"),
+                "ceiling_height: has no value");
+  ExpectInvalid(Replace(kWorld, "box: {center: [5, 3], size: [0.7, 0.7, 1.8]}", "box: ~"),
+                "objects[0].box: has no value");
+  ExpectInvalid(Replace(kWorld, "  - {kind: furniture,", "  - ~\n  - {kind: furniture,"),
+                "obstacles[1]: must be a mapping");
+}
+
+// Every world drawn by hand for the benchmarks (docs/simulation.md) passes the loader.
+TEST(SimWorldYamlTest, HandDrawnWorldsLoad) {
+  const auto suite = LoadSuite(SEMNAV_SOURCE_DIR "/tests/worlds/hand_drawn");
+  ASSERT_TRUE(suite.ok()) << suite.status();
+  ASSERT_EQ(suite->size(), 6u);
+  EXPECT_EQ(suite->front().name, "clinic");
+  EXPECT_EQ(suite->back().name, "yard_parking");
 }
 
 TEST(SimWorldYamlTest, RejectsLabelsTheLexiconDoesNotKnow) {

@@ -375,7 +375,9 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     RecordSample(result.trace, robot.time_s(), result.trajectory.back(), spec.world, label, region);
     if (outcome.has_value()) {
       result.timeline.push_back(absl::StrCat(
-          Stamp(robot), "robot: ", api::FeedbackKind_Name(outcome->kind), " ", outcome->detail));
+          Stamp(robot), "robot: ", api::FeedbackKind_Name(outcome->kind), " ", outcome->detail,
+          absl::StrFormat(" at (%.2f, %.2f)", robot.pose().position.x(),
+                          robot.pose().position.y())));
       RecordFeedback(result.trace, robot.time_s(), outcome->kind, outcome->detail);
       if (absl::Status s = (*session)->Send(FeedbackMessage(*outcome)); !s.ok()) return s;
     }

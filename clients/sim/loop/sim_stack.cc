@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "absl/strings/str_cat.h"
+#include "clients/sim/core/robot_config.h"
 #include "services/launcher/free_port.h"
 
 namespace semnav::sim::loop {
@@ -64,6 +65,12 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
                 "    relocalization:\n      address: ",
                 relocalization_address, "\n")
           : "";
+  // A hanging obstacle lower than the ground robot's body top blocks it (mapping's
+  // grid.body_height_m, measured from the grid's 0.1 m foot height): the simulated body collides
+  // with everything from its 5 cm ground clearance to its 0.6 m top (RobotConfig).
+  constexpr double kMappingFootM = 0.1;  // mapping's default grid.foot_height_m
+  const double body_above_foot_m =
+      RobotConfig::ForModality(Modality::kGround).body_height - kMappingFootM;
   semnav::launcher::StackConfig config;
   // Mapping publishes a scene-graph delta after every frame (a step takes more than the 10 ms
   // floor) so the gateway sees detections without waiting out a rate limit.
@@ -71,7 +78,8 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
       {"mapping", "semnav-mapping", *mapping,
        WriteConfig(options.work_dir, "mapping",
                    absl::StrCat("mapping:\n  store_directory: ", options.work_dir,
-                                "/maps\n  watch_min_interval_ms: 10\n", mapping_landmarks))});
+                                "/maps\n  watch_min_interval_ms: 10\n  grid:\n    body_height_m: ",
+                                body_above_foot_m, "\n", mapping_landmarks))});
   config.services.push_back(
       {"planning", "semnav-planning", *planning,
        WriteConfig(options.work_dir, "planning",

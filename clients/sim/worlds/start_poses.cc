@@ -1,8 +1,10 @@
 #include "clients/sim/worlds/start_poses.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <numbers>
+#include <utility>
 
 #include "clients/sim/core/geometry2d.h"
 #include "clients/sim/core/robot_config.h"
@@ -47,10 +49,106 @@ std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid) {
   return mask;
 }
 
+namespace {
+
+// 1 for the free cells of 4-connected free regions whose cells reach at least `min_radius_m` from
+// the region's centroid (habitat-sim's island radius, on cell centres).
+std::vector<uint8_t> CellsOnIslands(const GroundTruthGrid& grid, double min_radius_m) {
+  std::vector<uint8_t> on(grid.cells.size(), 0);
+  std::vector<uint8_t> seen(grid.cells.size(), 0);
+  for (size_t seed = 0; seed < grid.cells.size(); ++seed) {
+    if (grid.cells[seed] != 0 || seen[seed] != 0) continue;
+    std::vector<size_t> island{seed};
+    seen[seed] = 1;
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (size_t i = 0; i < island.size(); ++i) {
+      const int x = static_cast<int>(island[i] % grid.width);
+      const int y = static_cast<int>(island[i] / grid.width);
+      sum += grid.CellCentre(x, y);
+      const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
+      for (int k = 0; k < 4; ++k) {
+        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid.width || ny[k] >= grid.height) continue;
+        const size_t n = static_cast<size_t>(ny[k]) * grid.width + nx[k];
+        if (grid.cells[n] != 0 || seen[n] != 0) continue;
+        seen[n] = 1;
+        island.push_back(n);
+      }
+    }
+    const Eigen::Vector2d centroid = sum / static_cast<double>(island.size());
+    double radius = 0.0;
+    for (const size_t c : island) {
+      radius = std::max(radius, (grid.CellCentre(static_cast<int>(c % grid.width),
+                                                 static_cast<int>(c / grid.width)) -
+                                 centroid)
+                                    .norm());
+    }
+    if (radius < min_radius_m) continue;
+    for (const size_t c : island) on[c] = 1;
+  }
+  return on;
+}
+
+}  // namespace
+
+StartClearanceSearch::StartClearanceSearch(const World& world, Modality modality, double altitude,
+                                           const StartClearance& clearance, PlaceFilter allowed)
+    : grid_(ModalityGrid(world, modality, altitude)),
+      region_(LargestFreeRegion(grid_)),
+      scene_(Scene::Build(world)),
+      allowed_(std::move(allowed)) {
+  const RobotConfig robot = RobotConfig::ForModality(modality);
+  RasterOptions band = BodyRaster(robot, altitude);
+  radius_m_ = robot.radius + clearance.margin_m;
+  z0_ = band.z_min;
+  z1_ = band.z_max;
+  band.resolution = grid_.resolution;
+  band.robot_radius = radius_m_;
+  clear_grid_ = RasterizeOccupancy(world, band);
+  on_island_ = CellsOnIslands(clear_grid_, clearance.min_island_radius_m);
+}
+
+bool StartClearanceSearch::Clear(const Eigen::Vector2d& place) const {
+  const std::optional<Eigen::Vector2i> cell = clear_grid_.CellOf(place);
+  return cell.has_value() &&
+         on_island_[static_cast<size_t>(cell->y()) * clear_grid_.width + cell->x()] != 0 &&
+         !scene_.SolidTouchingCylinder(place, radius_m_, z0_, z1_).has_value();
+}
+
+std::optional<Eigen::Vector2d> StartClearanceSearch::Nearest(const Eigen::Vector2d& drawn) const {
+  if (Clear(drawn)) return drawn;
+  const std::optional<Eigen::Vector2i> from = grid_.CellOf(drawn);
+  if (!from.has_value()) return std::nullopt;
+  const auto index = [&](int x, int y) { return static_cast<size_t>(y) * grid_.width + x; };
+  if (region_[index(from->x(), from->y())] == 0) return std::nullopt;
+  // Breadth-first through the region: the first cell dequeued with clearance is the nearest by
+  // steps; the neighbour order (+x, -x, +y, -y) breaks ties.
+  std::vector<uint8_t> seen(region_.size(), 0);
+  std::deque<Eigen::Vector2i> queue{*from};
+  seen[index(from->x(), from->y())] = 1;
+  while (!queue.empty()) {
+    const Eigen::Vector2i c = queue.front();
+    queue.pop_front();
+    const Eigen::Vector2d centre = grid_.CellCentre(c.x(), c.y());
+    if ((!allowed_ || allowed_(centre)) && Clear(centre)) return centre;
+    const int nx[4] = {c.x() + 1, c.x() - 1, c.x(), c.x()};
+    const int ny[4] = {c.y(), c.y(), c.y() + 1, c.y() - 1};
+    for (int k = 0; k < 4; ++k) {
+      if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid_.width || ny[k] >= grid_.height) continue;
+      const size_t n = index(nx[k], ny[k]);
+      if (region_[n] == 0 || seen[n] != 0) continue;
+      seen[n] = 1;
+      queue.emplace_back(nx[k], ny[k]);
+    }
+  }
+  return std::nullopt;
+}
+
 std::vector<StartPose> ChooseStarts(const World& world, Modality modality, double altitude,
-                                    int count, Rng& rng, const PlaceFilter& allowed) {
-  const GroundTruthGrid grid = ModalityGrid(world, modality, altitude);
-  const std::vector<uint8_t> region = LargestFreeRegion(grid);
+                                    int count, Rng& rng, const PlaceFilter& allowed,
+                                    const StartClearance& clearance) {
+  const StartClearanceSearch search(world, modality, altitude, clearance, allowed);
+  const GroundTruthGrid& grid = search.grid();
+  const std::vector<uint8_t>& region = search.region();
   // A start keeps one cell of margin inside the region: a cell centre is free of the dilated
   // solids, but the body there can still graze one (the raster is 0.1 m), and a robot that
   // starts in contact cannot move at all.
@@ -71,17 +169,20 @@ std::vector<StartPose> ChooseStarts(const World& world, Modality modality, doubl
   }
   std::vector<StartPose> starts;
   if (cells.empty()) return starts;
+  // The spread is checked between draws, not moved starts, so a move never changes a later draw.
+  std::vector<Eigen::Vector2d> drawn;
   for (int k = 0; k < count; ++k) {
     Eigen::Vector2d pick = cells[rng.UniformInt(0, static_cast<int>(cells.size()) - 1)];
     for (int attempt = 0; attempt < 50; ++attempt) {
       bool spread = true;
-      for (const StartPose& s : starts)
-        spread = spread && (s.position.head<2>() - pick).norm() >= 1.5;
+      for (const Eigen::Vector2d& d : drawn) spread = spread && (d - pick).norm() >= 1.5;
       if (spread) break;
       pick = cells[rng.UniformInt(0, static_cast<int>(cells.size()) - 1)];
     }
+    drawn.push_back(pick);
+    const Eigen::Vector2d place = search.Nearest(pick).value_or(pick);
     StartPose start;
-    start.position = Eigen::Vector3d(pick.x(), pick.y(), altitude);
+    start.position = Eigen::Vector3d(place.x(), place.y(), altitude);
     start.yaw = rng.Uniform(-std::numbers::pi, std::numbers::pi);
     start.modality = modality;
     starts.push_back(start);

@@ -10,6 +10,7 @@
 #include "absl/strings/str_cat.h"
 #include "services/common/cli/flags.h"
 #include "services/common/logging/log.h"
+#include "services/common/net/host_port.h"
 
 namespace semnav {
 namespace {
@@ -80,7 +81,8 @@ int RunServiceBinary(int argc, char** argv, const ServiceBinarySpec& spec) {
   if (!setup.ok()) return Fail(spec, setup, 2);
   if (absl::Status started = host.Start(); !started.ok()) return Fail(spec, started, 1);
 
-  const std::string host_part = options.listen.substr(0, options.listen.rfind(':'));
+  const std::optional<HostPort> listen = SplitHostPort(options.listen);
+  const std::string host_part = listen ? listen->host : options.listen;
   std::cout << spec.binary << " serving on " << host_part << ":" << host.port() << std::endl;
 
   int signal_number = 0;

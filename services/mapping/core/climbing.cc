@@ -19,6 +19,13 @@ ColumnResult ClimbColumn(const VoxelColumns& columns, VoxelColumns::ColumnId col
     if (state == VoxelState::kFree) break;
     if (state == VoxelState::kOccupied) top = z;
   }
+  // Above the voxel the climb stopped at, what hangs within the body still blocks it.
+  if (heights.body_m > 0.0) {
+    const int body_top = std::min(ceiling, columns.CoordToKey(heights.foot_m + heights.body_m));
+    for (int k = z + 1; k <= body_top; ++k) {
+      if (VoxelColumns::StateAt(*voxels, k) == VoxelState::kOccupied) top = k;
+    }
+  }
   if (top >= foot)
     return {z > ceiling ? ColumnClass::kStructure : ColumnClass::kObstacle,
             columns.KeyToCoord(top)};
@@ -51,7 +58,7 @@ std::optional<ClimbingHeights> EstimateHeights(const VoxelColumns& columns) {
   const int middle = lo + (hi - lo) / 2;
   const int floor = busiest(lo, middle);
   const int ceiling = busiest(middle + 1, hi);
-  return ClimbingHeights{columns.KeyToCoord(floor + 1), columns.KeyToCoord(ceiling - 1)};
+  return ClimbingHeights{columns.KeyToCoord(floor + 1), columns.KeyToCoord(ceiling - 1), 0.0};
 }
 
 }  // namespace semnav::mapping

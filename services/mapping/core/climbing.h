@@ -11,6 +11,11 @@ namespace semnav::mapping {
 struct ClimbingHeights {
   double foot_m = 0.1;
   double ceiling_m = 2.3;
+  // Deviation from the seed (0 = the seed's climbing): the robot's body height above the foot.
+  // An occupied voxel hanging in [h_f, h_f + body_m] blocks the column even when the climb from
+  // the foot does not reach it (a chair seat on legs the sensor missed, a desk's edge): a body
+  // that tall cannot pass under it. What hangs higher is still ignored (lamps, lintels).
+  double body_m = 0.0;
 };
 
 enum class ColumnClass { kUnknown, kFree, kObstacle, kStructure };
@@ -26,8 +31,9 @@ struct ColumnResult {
 // space proves the obstacle ended. A climb with an occupied voxel that reaches the ceiling voxel
 // (h_c) is building structure (100); a shorter one is an obstacle whose top is its highest
 // occupied voxel. Voxels not connected to the foot (lamps, lintels, pipes hanging from the
-// ceiling) do not affect motion and are ignored, as in the seed. A column without a climb but
-// with a known voxel in [h_f, h_c] is free, otherwise unknown.
+// ceiling) do not affect motion and are ignored, as in the seed, unless they hang within the
+// body (`body_m`): then the column is an obstacle whose top is the highest occupied voxel there. A
+// column without a climb but with a known voxel in [h_f, h_c] is free, otherwise unknown.
 ColumnResult ClimbColumn(const VoxelColumns& columns, VoxelColumns::ColumnId column,
                          const ClimbingHeights& heights);
 

@@ -50,6 +50,31 @@ TEST(ClimbingTest, ClimbCrossesUnobservedVoxelsButNotFreeOnes) {
   EXPECT_NEAR(result.top_m, 0.95, 1e-9);
 }
 
+TEST(ClimbingTest, VoxelHangingWithinTheBodyBlocksAndOneAboveItDoesNot) {
+  // kHeights' foot voxel is 0.1-0.2 m; a 0.5 m body reaches the voxel of 0.65 m (0.6-0.7 m).
+  ClimbingHeights body = kHeights;
+  body.body_m = 0.5;
+  VoxelColumns columns(kRes);
+  Fill(columns, 0.05, 2.45, VoxelState::kFree);
+  Fill(columns, 0.45, 0.45, VoxelState::kOccupied);  // a chair seat at 0.4-0.5 m, legs unseen
+  EXPECT_EQ(ClimbColumn(columns, kColumn, kHeights).kind, ColumnClass::kFree);  // the seed's
+  ColumnResult result = ClimbColumn(columns, kColumn, body);
+  EXPECT_EQ(result.kind, ColumnClass::kObstacle);
+  EXPECT_NEAR(result.top_m, 0.45, 1e-9);
+  // A low box from the foot and a seat above it: the top is the seat's.
+  Fill(columns, 0.15, 0.25, VoxelState::kOccupied);
+  result = ClimbColumn(columns, kColumn, body);
+  EXPECT_EQ(result.kind, ColumnClass::kObstacle);
+  EXPECT_NEAR(result.top_m, 0.45, 1e-9);
+  // A lamp at 0.75 m hangs above the 0.65 m voxel: ignored, as in the seed.
+  VoxelColumns lamp(kRes);
+  Fill(lamp, 0.05, 2.45, VoxelState::kFree);
+  Fill(lamp, 0.75, 0.75, VoxelState::kOccupied);
+  EXPECT_EQ(ClimbColumn(lamp, kColumn, body).kind, ColumnClass::kFree);
+  Fill(lamp, 0.65, 0.65, VoxelState::kOccupied);
+  EXPECT_EQ(ClimbColumn(lamp, kColumn, body).kind, ColumnClass::kObstacle);
+}
+
 TEST(ClimbingTest, RunHangingFromCeilingIsIgnored) {
   VoxelColumns columns(kRes);
   Fill(columns, 0.05, 2.45, VoxelState::kFree);

@@ -140,7 +140,8 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
 
   ++revision_;
   if (++s.accepted_frames == config_.estimate_heights_after_frames) {
-    if (const std::optional<ClimbingHeights> heights = EstimateHeights(s.columns)) {
+    if (std::optional<ClimbingHeights> heights = EstimateHeights(s.columns)) {
+      heights->body_m = config_.heights.body_m;  // the robot's, not the map's
       s.grid = HierarchicalGrid(config_.grid, *heights);
       absl::flat_hash_set<VoxelColumns::ColumnId> all;
       for (const auto& [id, column] : s.columns.columns()) all.insert(id);

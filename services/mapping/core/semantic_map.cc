@@ -1,5 +1,6 @@
 #include "services/mapping/core/semantic_map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
 
@@ -29,12 +30,40 @@ void SemanticMap::Add(const std::string& label, const std::vector<Eigen::Vector3
       ++in_voxel;
     }
   }
+  const double prune_at =
+      std::max(static_cast<double>(config_.prune_min_points),
+               config_.prune_growth * static_cast<double>(last_prune_[label].passing));
+  if (static_cast<double>(kept.size()) >= prune_at) Prune(label);
+}
+
+void SemanticMap::Prune(const std::string& label) {
+  std::vector<Eigen::Vector3f>& points = points_[label];
+  PruneState& last = last_prune_[label];
+  const std::vector<bool> passes = RadiusFilter(points, config_.radius_m, config_.min_neighbours);
+  std::vector<Eigen::Vector3f> kept;
+  kept.reserve(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (passes[i] || i >= last.kept) kept.push_back(points[i]);
+  }
+  auto& cubes = occupied_cubes_[label];
+  auto& per_voxel = points_per_voxel_[label];
+  cubes.clear();
+  per_voxel.clear();
+  const auto r = static_cast<float>(config_.point_resolution_m);
+  for (const Eigen::Vector3f& p : kept) {
+    cubes.insert(CubeOf(p, r));
+    ++per_voxel[CubeOf(p, static_cast<float>(config_.cap_voxel_m))];
+  }
+  points = std::move(kept);
+  last.kept = points.size();
+  last.passing = static_cast<size_t>(std::count(passes.begin(), passes.end(), true));
 }
 
 void SemanticMap::Clear() {
   points_.clear();
   occupied_cubes_.clear();
   points_per_voxel_.clear();
+  last_prune_.clear();
 }
 
 void SemanticMap::Render(GridLayers& layers) const {

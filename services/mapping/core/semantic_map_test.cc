@@ -102,5 +102,71 @@ TEST(SemanticMapTest, TheCapLeavesTheRenderedLayerAsItWas) {
   EXPECT_EQ(with_cap.semantic[10 * 40 + 30], 1);
 }
 
+// Hand-checked prune schedule (prune_min_points 10, growth 2). A 3 x 3 blob of points 2 cm apart
+// passes the radius filter (9 neighbours within 0.1 m > 5); points 1 m apart fail it. The 10th
+// point triggers a prune that spares everything (all of it arrived since the last prune, at 0
+// points): 9 passing, so the next prune is due at 18 points. It drops the stray that was there at
+// the first prune and keeps the blob and the 8 strays that arrived since.
+TEST(SemanticMapTest, StrayPointsOlderThanTheLastPruneAreDropped) {
+  SemanticMapConfig config;
+  config.prune_min_points = 10;
+  config.prune_growth = 2.0;
+  config.max_points_per_voxel = 100;  // the blob shares one 5 cm voxel
+  SemanticMap map(config);
+  std::vector<Eigen::Vector3f> blob;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) blob.emplace_back(0.01f + 0.02f * i, 0.01f + 0.02f * j, 0.01f);
+  }
+  auto stray = [](int i) { return Eigen::Vector3f(1.0f * i, 5.0f, 0.0f); };
+  map.Add("cup", blob);
+  map.Add("cup", {stray(5)});
+  EXPECT_EQ(map.points().at("cup").size(), 10u);
+  for (int i = 6; i < 13; ++i) map.Add("cup", {stray(i)});
+  EXPECT_EQ(map.points().at("cup").size(), 17u);  // the next prune is due at 2 x 9
+  map.Add("cup", {stray(13)});
+  const std::vector<Eigen::Vector3f>& left = map.points().at("cup");
+  ASSERT_EQ(left.size(), 17u);
+  EXPECT_FLOAT_EQ(left[8].x(), 0.05f);  // the blob's last point
+  EXPECT_FLOAT_EQ(left[9].x(), 6.0f);   // stray 5 is gone
+  EXPECT_FLOAT_EQ(left[16].x(), 13.0f);
+  // A dropped point's cube is free again: stray 5 comes back. It is the 18th point, so the next
+  // prune runs at once and drops strays 6-13, which were there at the last one.
+  map.Add("cup", {stray(5)});
+  ASSERT_EQ(map.points().at("cup").size(), 10u);
+  EXPECT_FLOAT_EQ(map.points().at("cup").back().x(), 5.0f);
+}
+
+// Regression (fleet bench, 50 robots: a label's points 100k -> 181k in 90 s after the map settled,
+// mostly strays the radius filter rejects): one table top seen again and again, with a stray
+// point somewhere in the room in every view. Pruning bounds the points; the rendered layer is the
+// one the unpruned map renders, because only strays go.
+TEST(SemanticMapTest, PruningBoundsStraysAndKeepsTheRenderedLayer) {
+  SemanticMapConfig config;
+  config.prune_min_points = 512;
+  SemanticMapConfig never_prune = config;
+  never_prune.prune_min_points = 1 << 30;
+  SemanticMap pruned(config);
+  SemanticMap unpruned(never_prune);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> room(0.0f, 2.0f);
+  for (int view = 0; view < 3000; ++view) {
+    std::vector<Eigen::Vector3f> points = Top(0.80f, 0.80f, 0.30f, 0.75f, 0.02f, 0.005f, rng);
+    points.emplace_back(room(rng), room(rng), room(rng));
+    pruned.Add("dining table", points);
+    unpruned.Add("dining table", points);
+  }
+  const size_t with_pruning = pruned.points().at("dining table").size();
+  const size_t without = unpruned.points().at("dining table").size();
+  // The top is 15 x 15 cubes in x-y and one or two in z; the strays are 3000 minus a few merged.
+  EXPECT_GT(without, 2900u);
+  EXPECT_LT(with_pruning, 2 * 512u);  // max(512, 2 x the top of 225-450 points) + 1
+  GridLayers with_layer = Window();
+  GridLayers without_layer = Window();
+  pruned.Render(with_layer);
+  unpruned.Render(without_layer);
+  EXPECT_EQ(with_layer.semantic, without_layer.semantic);
+  EXPECT_EQ(with_layer.semantic[19 * 40 + 19], 1);  // the table's centre (0.95, 0.95)
+}
+
 }  // namespace
 }  // namespace semnav::mapping

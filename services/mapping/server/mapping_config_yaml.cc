@@ -34,6 +34,7 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("log_odds_max", &c.grid.log_odds_max)
       .Read("foot_height_m", &c.heights.foot_m)
       .Read("ceiling_height_m", &c.heights.ceiling_m)
+      .Read("body_height_m", &c.heights.body_m)
       .Read("estimate_heights_after_frames", &c.estimate_heights_after_frames)
       .Read("obstacle_kernel", &c.layers.obstacle_kernel)
       .Read("robot_radius_m", &c.layers.robot_radius_m)
@@ -46,6 +47,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   grid.Check(c.grid.log_odds_min < 0.0 && c.grid.log_odds_max > 0.0, "log_odds_max",
              "need log_odds_min < 0 < log_odds_max");
   grid.Check(c.heights.ceiling_m > c.heights.foot_m, "ceiling_height_m", "must be > foot_height_m");
+  grid.Check(c.heights.body_m >= 0.0 && c.heights.body_m <= c.heights.ceiling_m - c.heights.foot_m,
+             "body_height_m", "must be in [0, ceiling_height_m - foot_height_m]");
   grid.Check(c.estimate_heights_after_frames >= 0, "estimate_heights_after_frames",
              "must be >= 0 (0 = off)");
   grid.Check(c.layers.obstacle_kernel >= 1 && c.layers.obstacle_kernel % 2 == 1, "obstacle_kernel",
@@ -65,7 +68,9 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("min_neighbours", &c.semantic.min_neighbours)
       .Read("opening_kernel", &c.semantic.opening_kernel)
       .Read("cap_voxel_m", &c.semantic.cap_voxel_m)
-      .Read("max_points_per_voxel", &c.semantic.max_points_per_voxel);
+      .Read("max_points_per_voxel", &c.semantic.max_points_per_voxel)
+      .Read("prune_growth", &c.semantic.prune_growth)
+      .Read("prune_min_points", &c.semantic.prune_min_points);
   semantic.Check(c.blur_min_laplacian_variance >= 0.0, "blur_min_laplacian_variance",
                  "must be >= 0");
   semantic.Check(c.lift.erosion_kernel >= 1 && c.lift.erosion_kernel % 2 == 1, "erosion_kernel",
@@ -78,6 +83,10 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   semantic.Check(c.semantic.opening_kernel >= 1, "opening_kernel", "must be >= 1");
   semantic.Check(c.semantic.cap_voxel_m > 0.0, "cap_voxel_m", "must be > 0");
   semantic.Check(c.semantic.max_points_per_voxel >= 1, "max_points_per_voxel", "must be >= 1");
+  // Below 1.1 a label would be pruned (a KD-tree pass over its points) almost every frame.
+  semantic.Check(c.semantic.prune_growth >= 1.1 && c.semantic.prune_growth <= 1000.0,
+                 "prune_growth", "must be in [1.1, 1000]");
+  semantic.Check(c.semantic.prune_min_points >= 1, "prune_min_points", "must be >= 1");
 
   ConfigReader scene = section.Child("scene_graph");
   SceneGraphConfig& s = c.scene;

@@ -22,6 +22,7 @@ TEST(MappingConfigYamlTest, DefaultsFollowTheSeeds) {
   EXPECT_EQ(config.core.scene.relations.region_radius_m, 3.0);  // seed 002
   EXPECT_EQ(config.core.range.min_m, 0.3);
   EXPECT_EQ(config.core.range.max_m, 8.0);
+  EXPECT_EQ(config.core.heights.body_m, 0.0);        // seed 003's climbing
   EXPECT_EQ(config.occupancy_chunk_bytes, 1 << 20);  // DataChunk's protocol maximum
 }
 
@@ -51,6 +52,46 @@ TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
   const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.grid.p_threshold"));
+}
+
+TEST(MappingConfigYamlTest, SemanticPruningIsReadAndRangeChecked) {
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString("mapping:\n  semantic: {prune_growth: 3, prune_min_points: 100}\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->core.semantic.prune_growth, 3.0);
+  EXPECT_EQ(config->core.semantic.prune_min_points, 100);
+  for (const char* bad : {"prune_growth: 1.0", "prune_growth: .nan", "prune_min_points: 0"}) {
+    absl::StatusOr<ConfigReader> bad_root =
+        ConfigReader::FromString(std::string("mapping:\n  semantic: {") + bad + "}\n");
+    ASSERT_TRUE(bad_root.ok());
+    ConfigReader bad_section = bad_root->Child("mapping");
+    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.semantic.prune_")) << bad;
+  }
+}
+
+TEST(MappingConfigYamlTest, BodyHeightIsReadAndMustFitBetweenFootAndCeiling) {
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString("mapping:\n  grid: {body_height_m: 0.5}\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->core.heights.body_m, 0.5);
+  // Defaults h_f 0.1, h_c 2.3: at most 2.2 m; negative is refused too.
+  for (const char* bad :
+       {"mapping:\n  grid: {body_height_m: 2.3}\n", "mapping:\n  grid: {body_height_m: -0.1}\n"}) {
+    absl::StatusOr<ConfigReader> bad_root = ConfigReader::FromString(bad);
+    ASSERT_TRUE(bad_root.ok());
+    ConfigReader bad_section = bad_root->Child("mapping");
+    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.grid.body_height_m"));
+  }
 }
 
 // Regression: a landmarks section without `relocalization` (or none at all, as in deploy/k8s)

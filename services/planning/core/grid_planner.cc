@@ -7,6 +7,7 @@
 #include "services/common/status/field_error.h"
 #include "services/planning/core/alternative_point.h"
 #include "services/planning/core/inflation.h"
+#include "services/planning/core/nearest_cell.h"
 #include "services/planning/core/octile.h"
 #include "services/planning/core/path_shortcut.h"
 #include "services/planning/core/plan_failure.h"
@@ -19,23 +20,9 @@ namespace {
 std::optional<Cell> NearestFreeWithin(const PassabilityGrid& grid,
                                       const std::vector<uint8_t>& reachable, Cell goal,
                                       double radius) {
-  const int r = static_cast<int>(std::floor(radius));
-  std::optional<Cell> best;
-  int best_d2 = 0;
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const int d2 = dx * dx + dy * dy;
-      const Cell c{goal.x + dx, goal.y + dy};
-      if (d2 > radius * radius || !IsFree(grid, c.x, c.y) || reachable[grid.Index(c)] == 0) {
-        continue;
-      }
-      if (!best || d2 < best_d2) {
-        best = c;
-        best_d2 = d2;
-      }
-    }
-  }
-  return best;
+  return NearestCellWithin(goal, radius, [&](Cell c) {
+    return IsFree(grid, c.x, c.y) && reachable[grid.Index(c)] != 0;
+  });
 }
 
 // Free cells restricted to obstacle probability <= max_percent (start and
@@ -56,24 +43,11 @@ PassabilityGrid WithProbabilityLimit(const PassabilityGrid& free,
 // then the first in row order).
 std::optional<Cell> NearestFreeCell(const PassabilityGrid& grid, Cell start, Cell goal,
                                     double radius) {
-  const int r = static_cast<int>(std::floor(radius));
-  std::optional<Cell> best;
-  long best_d2 = 0, best_goal_d2 = 0;
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const long d2 = long{dx} * dx + long{dy} * dy;
-      const Cell c{start.x + dx, start.y + dy};
-      if (d2 > radius * radius || !IsFree(grid, c.x, c.y)) continue;
-      const long goal_d2 =
-          long{c.x - goal.x} * (c.x - goal.x) + long{c.y - goal.y} * (c.y - goal.y);
-      if (!best || d2 < best_d2 || (d2 == best_d2 && goal_d2 < best_goal_d2)) {
-        best = c;
-        best_d2 = d2;
-        best_goal_d2 = goal_d2;
-      }
-    }
-  }
-  return best;
+  return NearestCellWithin(
+      start, radius, [&](Cell c) { return IsFree(grid, c.x, c.y); },
+      [&](Cell c) {
+        return long{c.x - goal.x} * (c.x - goal.x) + long{c.y - goal.y} * (c.y - goal.y);
+      });
 }
 
 // Cells the start lies beyond each edge of a width x height grid.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "services/planning/core/inflation.h"
+#include "services/planning/core/nearest_cell.h"
 
 namespace semnav::planning {
 namespace {
@@ -45,19 +46,7 @@ LayeredGrid InflateLayeredGrid(const LayeredGrid& grid, double radius_cells) {
 }
 
 std::optional<Cell> NearestPassableCell(const LayeredGrid& grid, Cell start, double radius_cells) {
-  const int r = static_cast<int>(std::floor(radius_cells));
-  std::optional<Cell> best;
-  int best_d2 = 0;
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const int d2 = dx * dx + dy * dy;
-      if (d2 > radius_cells * radius_cells || (best.has_value() && d2 >= best_d2)) continue;
-      if (!Passable(grid, start.x + dx, start.y + dy)) continue;
-      best = Cell{start.x + dx, start.y + dy};
-      best_d2 = d2;
-    }
-  }
-  return best;
+  return NearestCellWithin(start, radius_cells, [&](Cell c) { return Passable(grid, c.x, c.y); });
 }
 
 }  // namespace semnav::planning

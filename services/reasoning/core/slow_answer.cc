@@ -4,6 +4,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "nlohmann/json.hpp"
+#include "services/common/status/field_error.h"
 #include "services/reasoning/core/scene_graph_json.h"
 
 namespace semnav::reasoning {
@@ -64,17 +65,17 @@ absl::StatusOr<SlowDecision> ParseResolveAnswer(std::string_view answer, const S
                                                 const SlowPathConfig& config) {
   const nlohmann::json root = nlohmann::json::parse(answer, nullptr, /*allow_exceptions=*/false);
   if (root.is_discarded() || !root.is_object()) {
-    return absl::InvalidArgumentError("answer: not a JSON object");
+    return InvalidField("answer", "not a JSON object");
   }
   if (!root.contains("best_id") || !root["best_id"].is_string()) {
-    return absl::InvalidArgumentError("best_id: must be a string");
+    return InvalidField("best_id", "must be a string");
   }
   if (!root.contains("confidence") || !root["confidence"].is_number() ||
       root["confidence"].get<double>() < 0.0 || root["confidence"].get<double>() > 1.0) {
-    return absl::InvalidArgumentError("confidence: must be a number in [0, 1]");
+    return InvalidField("confidence", "must be a number in [0, 1]");
   }
   if (root.contains("offline") && !root["offline"].is_boolean()) {
-    return absl::InvalidArgumentError("offline: must be a boolean");
+    return InvalidField("offline", "must be a boolean");
   }
   SlowDecision decision;
   decision.confidence = root["confidence"].get<double>();
@@ -93,7 +94,7 @@ absl::StatusOr<SlowDecision> ParseResolveAnswer(std::string_view answer, const S
   if (best.empty()) return decision;  // not among the candidates: explore
   if (!absl::SimpleAtoi(best, &decision.object_id) ||
       subgraph.FindObject(decision.object_id) == nullptr) {
-    return absl::InvalidArgumentError(absl::StrCat("best_id: '", best, "' is not a candidate"));
+    return InvalidField("best_id", absl::StrCat("'", Preview(best), "' is not a candidate"));
   }
   if (decision.confidence >= config.confidence_threshold) {
     decision.action = SlowAction::kGoal;

@@ -216,10 +216,10 @@ void GatewayHub::Apply(Task& task, const std::vector<RobotCommand>& commands) {
   }
 }
 
-std::unique_ptr<TaskPlanner> GatewayHub::PlannerFor(const std::string& task_id,
-                                                    std::optional<ExplorationStrategy> strategy) {
+std::unique_ptr<PerTaskPathPlanner> GatewayHub::PlannerFor(
+    const std::string& task_id, std::optional<ExplorationStrategy> strategy) {
   // Both are called by the task's executor, under mu_.
-  return std::make_unique<TaskPlanner>(
+  return std::make_unique<PerTaskPathPlanner>(
       planner_, backends_.explorer, strategy,
       [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS { return ContextFor(task_id); },
       [this, task_id](absl::FunctionRef<void()> call)

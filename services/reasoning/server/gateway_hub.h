@@ -24,8 +24,10 @@
 #include "services/reasoning/core/event_log.h"
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/gateway_journal.h"
+#include "services/reasoning/core/language_model.h"
 #include "services/reasoning/core/lease_table.h"
 #include "services/reasoning/core/model_call_policy.h"
+#include "services/reasoning/core/per_task_path_planner.h"
 #include "services/reasoning/core/robot_record.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
@@ -33,10 +35,8 @@
 #include "services/reasoning/core/telemetry_subscriptions.h"
 #include "services/reasoning/core/topological_memory.h"
 #include "services/reasoning/server/gateway_config.h"
-#include "services/reasoning/server/language_model.h"
 #include "services/reasoning/server/relocalization_client.h"
 #include "services/reasoning/server/stream_sink.h"
-#include "services/reasoning/server/task_planner.h"
 
 namespace semnav::reasoning {
 
@@ -198,8 +198,8 @@ class GatewayHub {
   void StartIfPossible(Task& task) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The task's path planner with `strategy` (nullopt = the configured default) and its exploration
   // context.
-  std::unique_ptr<TaskPlanner> PlannerFor(const std::string& task_id,
-                                          std::optional<ExplorationStrategy> strategy);
+  std::unique_ptr<PerTaskPathPlanner> PlannerFor(const std::string& task_id,
+                                                 std::optional<ExplorationStrategy> strategy);
   // The task's RemoteCallRunner: called by its executor under mu_; runs `call` without mu_.
   void RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);

@@ -9,6 +9,25 @@ namespace semnav::reasoning {
 
 using namespace hub_internal;
 
+namespace {
+
+// The lease time a request asks for, in seconds: its `ttl`, else the configured default; it must
+// lie between 1 s and max_lease_ttl_s.
+template <typename LeaseRequest>
+absl::StatusOr<double> RequestedTtl(const LeaseRequest& request, const GatewayConfig& config) {
+  double ttl = config.default_lease_ttl_s;
+  if (request.has_ttl()) {
+    ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
+  }
+  if (ttl < 1.0 || ttl > config.max_lease_ttl_s) {
+    return FieldError(absl::StatusCode::kInvalidArgument, "ttl",
+                      "must be between 1 s and max_lease_ttl_s");
+  }
+  return ttl;
+}
+
+}  // namespace
+
 absl::StatusOr<api::Lease> GatewayHub::AcquireLease(const api::AcquireLeaseRequest& request) {
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
@@ -17,15 +36,10 @@ absl::StatusOr<api::Lease> GatewayHub::AcquireLease(const api::AcquireLeaseReque
   if (auto cached = Cached<api::Lease>(requests_, key)) return *cached;
   if (absl::Status s = Required(request.robot_id(), "robot_id"); !s.ok()) return s;
   if (absl::Status s = Required(request.holder(), "holder"); !s.ok()) return s;
-  double ttl = config_.default_lease_ttl_s;
-  if (request.has_ttl())
-    ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
-  if (ttl < 1.0 || ttl > config_.max_lease_ttl_s) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "ttl",
-                      "must be between 1 s and max_lease_ttl_s");
-  }
+  absl::StatusOr<double> ttl = RequestedTtl(request, config_);
+  if (!ttl.ok()) return ttl.status();
   absl::StatusOr<LeaseInfo> lease =
-      leases_.Acquire(request.robot_id(), request.holder(), absl::Seconds(ttl), absl::Now());
+      leases_.Acquire(request.robot_id(), request.holder(), absl::Seconds(*ttl), absl::Now());
   if (!lease.ok()) {
     return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", lease.status().message(),
                       "LEASE_HELD");
@@ -42,15 +56,10 @@ absl::StatusOr<api::Lease> GatewayHub::RenewLease(const api::RenewLeaseRequest& 
   absl::MutexLock lock(&mu_);
   if (absl::Status s = Validate(request); !s.ok()) return s;
   if (absl::Status s = Required(request.lease_id(), "lease_id"); !s.ok()) return s;
-  double ttl = config_.default_lease_ttl_s;
-  if (request.has_ttl())
-    ttl = static_cast<double>(TimeUtil::DurationToMilliseconds(request.ttl())) / 1000.0;
-  if (ttl < 1.0 || ttl > config_.max_lease_ttl_s) {
-    return FieldError(absl::StatusCode::kInvalidArgument, "ttl",
-                      "must be between 1 s and max_lease_ttl_s");
-  }
+  absl::StatusOr<double> ttl = RequestedTtl(request, config_);
+  if (!ttl.ok()) return ttl.status();
   absl::StatusOr<LeaseInfo> lease =
-      leases_.Renew(request.lease_id(), absl::Seconds(ttl), absl::Now());
+      leases_.Renew(request.lease_id(), absl::Seconds(*ttl), absl::Now());
   if (!lease.ok())
     return FieldError(absl::StatusCode::kNotFound, "lease_id", "unknown or expired lease",
                       "NOT_FOUND");

@@ -7,10 +7,10 @@
 #include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
 #include "services/common/status/field_error.h"
+#include "services/reasoning/core/robot_local_planner.h"
 #include "services/reasoning/server/camera_frame.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_test_support.h"
-#include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {

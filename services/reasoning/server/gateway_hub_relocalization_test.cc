@@ -9,9 +9,9 @@
 #include "absl/strings/match.h"
 #include "absl/synchronization/mutex.h"
 #include "gtest/gtest.h"
+#include "services/reasoning/core/robot_local_planner.h"
 #include "services/reasoning/server/gateway_hub.h"
 #include "services/reasoning/server/hub_test_support.h"
-#include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {

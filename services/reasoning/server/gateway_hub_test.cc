@@ -8,8 +8,8 @@
 #include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
 #include "services/common/status/field_error.h"
+#include "services/reasoning/core/robot_local_planner.h"
 #include "services/reasoning/server/hub_test_support.h"
-#include "services/reasoning/server/robot_local_planner.h"
 #include "services/reasoning/testing/test_lexicon.h"
 
 namespace semnav::reasoning {
@@ -283,6 +283,33 @@ TEST_F(GatewayHubValidationTest, BadFieldsAreNamedAndNothingIsStored) {
   api::SubmitInstructionRequest submit = SubmitRequest("req-1", huge, "find the cup");
   EXPECT_EQ(ErrorField(hub_.Submit(submit).status()), "robot_id");
   EXPECT_EQ(hub_.ListTasks({})->tasks_size(), 0);
+}
+
+// Both lease calls take a ttl between 1 s and max_lease_ttl_s (600 s); without one a lease runs
+// default_lease_ttl_s (30 s).
+TEST_F(GatewayHubValidationTest, LeaseTimesStayWithinTheConfiguredRange) {
+  api::AcquireLeaseRequest acquire;
+  acquire.set_request_id("lease-ttl-1");
+  acquire.set_robot_id("r1");
+  acquire.set_holder("alice");
+  acquire.mutable_ttl()->set_nanos(500'000'000);  // 0.5 s
+  EXPECT_EQ(ErrorField(hub_.AcquireLease(acquire).status()), "ttl");
+  acquire.set_request_id("lease-ttl-2");
+  acquire.mutable_ttl()->set_nanos(0);
+  acquire.mutable_ttl()->set_seconds(601);
+  EXPECT_EQ(ErrorField(hub_.AcquireLease(acquire).status()), "ttl");
+  acquire.set_request_id("lease-ttl-3");
+  acquire.clear_ttl();
+  absl::StatusOr<api::Lease> lease = hub_.AcquireLease(acquire);
+  ASSERT_TRUE(lease.ok()) << lease.status();
+
+  api::RenewLeaseRequest renew;
+  renew.set_lease_id(lease->lease_id());
+  renew.mutable_ttl()->set_nanos(500'000'000);
+  EXPECT_EQ(ErrorField(hub_.RenewLease(renew).status()), "ttl");
+  renew.mutable_ttl()->set_nanos(0);
+  renew.mutable_ttl()->set_seconds(600);
+  EXPECT_TRUE(hub_.RenewLease(renew).ok());
 }
 
 // A hello with a NaN capability opens no session; a camera frame with a NaN pose is refused

@@ -20,8 +20,8 @@
 #include "absl/synchronization/mutex.h"
 #include "absl/time/time.h"
 #include "semnav/modelproxy/v1/modelproxy.grpc.pb.h"
+#include "services/reasoning/core/language_model.h"
 #include "services/reasoning/server/gateway_config.h"
-#include "services/reasoning/server/language_model.h"
 
 namespace semnav::reasoning {
 

@@ -16,8 +16,8 @@
 
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/reasoning/core/navigation_interfaces.h"
+#include "services/reasoning/core/per_task_path_planner.h"
 #include "services/reasoning/server/gateway_config.h"
-#include "services/reasoning/server/task_planner.h"
 
 namespace semnav::reasoning {
 

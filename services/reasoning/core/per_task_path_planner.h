@@ -29,14 +29,14 @@ class ExplorationService {
 // around it and holds the task's other events back meanwhile. Null = run it as it is.
 using RemoteCallRunner = std::function<void(absl::FunctionRef<void()> call)>;
 
-class TaskPlanner final : public PathPlanner {
+class PerTaskPathPlanner final : public PathPlanner {
  public:
   // `explorer` may be null (no planning service: the shared planner's exploration fallback).
   // `context` is called for every exploration goal, on the caller's thread, before the call.
   // `strategy`: nullopt = the configured default.
-  TaskPlanner(PathPlanner* paths, ExplorationService* explorer,
-              std::optional<ExplorationStrategy> strategy,
-              std::function<ExplorationContext()> context, RemoteCallRunner remote = nullptr)
+  PerTaskPathPlanner(PathPlanner* paths, ExplorationService* explorer,
+                     std::optional<ExplorationStrategy> strategy,
+                     std::function<ExplorationContext()> context, RemoteCallRunner remote = nullptr)
       : paths_(paths),
         explorer_(explorer),
         strategy_(strategy),
