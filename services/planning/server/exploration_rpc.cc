@@ -309,6 +309,12 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   if (!pb::ExplorationStrategy_IsValid(request.strategy())) {
     return InvalidField("strategy", "unknown exploration strategy");
   }
+  if (absl::Status s = CheckRange(request.eroi_size_m(), "eroi_size_m", 0.0, 100.0); !s.ok()) {
+    return s;
+  }
+  if (request.eroi_size_m() > 0.0 && request.eroi_size_m() < 0.1) {
+    return InvalidField("eroi_size_m", "must be 0 (the configured edge) or in [0.1, 100] m");
+  }
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};
@@ -319,8 +325,13 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   const ExplorationStrategy strategy = FromProto(request.strategy());
   view->query.eroi_values.assign(request.eroi_semantic_values().begin(),
                                  request.eroi_semantic_values().end());
-  absl::StatusOr<ExplorationChoice> choice = SelectExplorationGoal(
-      view->grid, view->query, strategy, config.exploration.GoalConfig(view->frame.resolution));
+  ExplorationGoalConfig goal_config = config.exploration.GoalConfig(view->frame.resolution);
+  if (request.eroi_size_m() > 0.0) {  // the caller's EROI grid (its values are per these EROIs)
+    goal_config.eroi.eroi_size_cells =
+        std::max(1, static_cast<int>(std::lround(request.eroi_size_m() / view->frame.resolution)));
+  }
+  absl::StatusOr<ExplorationChoice> choice =
+      SelectExplorationGoal(view->grid, view->query, strategy, goal_config);
   if (!choice.ok()) return choice.status();
   response->set_strategy(ToProto(strategy));
   response->set_map_revision(grid.revision());

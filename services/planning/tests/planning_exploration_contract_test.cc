@@ -341,6 +341,23 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
       GetDetail<semnav::common::v1::ErrorInfo>(status);
   ASSERT_TRUE(info.has_value());
   EXPECT_EQ(info->field(), "eroi_semantic_values");
+
+  // The caller's EROI edge: 12 values fit 2 m EROIs, not 4 m ones (2 x 2 of them); an edge below
+  // 0.1 m is refused by field.
+  pb::SelectExplorationGoalRequest wide = GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY);
+  for (int i = 0; i < 4; ++i) wide.add_eroi_semantic_values(0.25);
+  wide.set_eroi_size_m(4.0);
+  grpc::ClientContext wide_context;
+  const grpc::Status wide_status = Stub()->SelectExplorationGoal(&wide_context, wide, &response);
+  EXPECT_NE(wide_status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+      << wide_status.error_message();
+  wide.set_eroi_size_m(0.05);
+  grpc::ClientContext tiny_context;
+  const grpc::Status tiny = Stub()->SelectExplorationGoal(&tiny_context, wide, &response);
+  EXPECT_EQ(tiny.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  info = GetDetail<semnav::common::v1::ErrorInfo>(tiny);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "eroi_size_m");
 }
 
 TEST_F(ExplorationContract, SmoothTrajectoryRespectsTheLimits) {

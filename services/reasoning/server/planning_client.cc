@@ -71,6 +71,7 @@ void AddEroiValues(const ExplorationContext& context, pb::SelectExplorationGoalR
   live->mutable_window_max()->set_x(context.eroi_window_max.x() - context.eroi_edge_m / 4.0);
   live->mutable_window_max()->set_y(context.eroi_window_max.y() - context.eroi_edge_m / 4.0);
   for (double value : context.eroi_values) request->add_eroi_semantic_values(value);
+  request->set_eroi_size_m(context.eroi_edge_m);  // the values are per the gateway's EROIs
 }
 
 std::vector<Eigen::Vector3d> RobotPath(const pb::PlanPathResponse& response,
@@ -217,8 +218,8 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
   pb::SelectExplorationGoalResponse response;
   grpc::Status status = Select(request, &response);
   if (eroi_values && status.error_code() == grpc::StatusCode::INVALID_ARGUMENT) {
-    // Our grid and planning's disagree (eroi.delta != planning's eroi_size_m): explore on
-    // planning's uniform values rather than not at all.
+    // Our grid and planning's disagree (a planning that ignores eroi_size_m, or a window it
+    // counts differently): explore on planning's uniform values rather than not at all.
     LogWarning("eroi_values_rejected",
                {{"message", status.error_message()}, {"fallback", "uniform values"}});
     request.mutable_source()->mutable_live_map()->Clear();

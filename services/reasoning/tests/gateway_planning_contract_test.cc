@@ -180,7 +180,7 @@ TEST_F(GatewayPlanningContractTest,
 TEST_F(GatewayPlanningContractTest, EroiValuesFitPlanningsEroiGridOverTheGatewaysWindow) {
   ASSERT_TRUE(testing::StreamLabelledFrames(mapping_->channel(), 1, 6, "clock", kClock).ok());
   auto planning = planning::v1::PlanningService::NewStub(planning_->channel());
-  const auto select = [&](double delta, int nx, int ny) {
+  const auto select = [&](double delta, int nx, int ny, int drop_values = 0) {
     EroiSearchConfig config;
     config.grid.delta = delta;
     config.grid.nx = nx;
@@ -189,6 +189,7 @@ TEST_F(GatewayPlanningContractTest, EroiValuesFitPlanningsEroiGridOverTheGateway
     EXPECT_TRUE(search.ok());
     ExplorationContext context;
     context.eroi_values = search->PlanarValues();
+    context.eroi_values.resize(context.eroi_values.size() - drop_values);
     context.eroi_window_min = search->WindowMin();
     context.eroi_window_max = search->WindowMax();
     context.eroi_edge_m = delta;
@@ -207,8 +208,16 @@ TEST_F(GatewayPlanningContractTest, EroiValuesFitPlanningsEroiGridOverTheGateway
     EXPECT_NE(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
         << nx << "x" << ny << ": " << status.error_message();
   }
-  // A 3 m gateway grid does not match planning's 2 m EROIs: refused by field.
-  const grpc::Status mismatch = select(3.0, 2, 1);
+  // Wider gateway EROIs fit too: the request carries their edge. A search area wider than 26 x
+  // 2 m gets them (GridOverArea: 2.5 m for seed 000's 65 m river scene), and planning used to
+  // refuse its values, so that search ran on uniform values.
+  for (const double delta : {2.5, 3.0}) {
+    const grpc::Status status = select(delta, 3, 2);
+    EXPECT_NE(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << delta << " m: " << status.error_message();
+  }
+  // Values that do not count the window's EROIs are refused by field.
+  const grpc::Status mismatch = select(2.5, 3, 2, /*drop_values=*/1);
   EXPECT_EQ(mismatch.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_NE(mismatch.error_message().find("eroi_semantic_values"), std::string::npos)
       << mismatch.error_message();
