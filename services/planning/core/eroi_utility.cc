@@ -70,7 +70,8 @@ int ViewpointGain(const ExplorationLayers& layers, Cell viewpoint, const EroiCon
 
 std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell robot,
                                          const std::vector<double>& semantic,
-                                         const EroiConfig& config) {
+                                         const EroiConfig& config,
+                                         const std::function<bool(Cell)>& excluded) {
   const int d = config.eroi_size_cells;
   const int columns = (layers.explored.width() + d - 1) / d;
   const int count = EroiCount(layers.explored.width(), layers.explored.height(), config);
@@ -88,8 +89,14 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
                    static_cast<int>(std::lround(y0 + d / 2.0 +
                                                 config.viewpoint_radius_cells * std::sin(angle)))};
       if (!IsFree(layers.free, c.x, c.y) || layers.explored.at(c) == 0) continue;
+      if (excluded && excluded(c)) continue;
       const int gain = ViewpointGain(layers, c, config);
-      if (gain > 0) nodes.push_back({c, e, static_cast<double>(gain)});
+      // Specks of unknown (depth noise, a corner behind a post) are not worth a flight: with a
+      // clue's value 100 times the prior, a clue EROI's last few unknown cells outweighed whole
+      // unexplored areas, and the UAV flew back and forth between clue EROIs.
+      if (gain > 0 && gain >= config.min_gain_cells) {
+        nodes.push_back({c, e, static_cast<double>(gain)});
+      }
     }
   }
   double s_max = 0.0;
@@ -97,6 +104,13 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
     if (n.eroi >= 0) s_max = std::max(s_max, s(n.eroi));
   }
   const double tau = config.k * s_max;
+  // The greedy branch of eq. 24 is for "high-confidence clues" (seed 000, 2.2.3): a value above
+  // the floor eq. 23 keeps every EROI at. Without a clue (uniform values, the start of every
+  // search) every s equals max s, so eq. 24 read literally dropped the path cost everywhere and
+  // the UAV zig-zagged between the best gains across the area; now it pays the path cost there.
+  const double s_floor =
+      semantic.empty() ? s(0) : *std::min_element(semantic.begin(), semantic.end());
+  const auto greedy = [&](int eroi) { return s(eroi) > tau && s(eroi) > s_floor; };
 
   // Dijkstra over the sparse roadmap (edges built on demand). The seed's roadmap is always
   // connected; straight edges up to the connect radius alone are not once the robot stands in
@@ -126,7 +140,7 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
     if (l > dist[i]) continue;
     if (nodes[i].eroi >= 0) {
       const double value = nodes[i].gain * s(nodes[i].eroi);  // U_b = I s
-      const double u = s(nodes[i].eroi) <= tau ? value * std::exp(-config.lambda * l) : value;
+      const double u = greedy(nodes[i].eroi) ? value : value * std::exp(-config.lambda * l);
       if (!best || u > best->utility) {
         best = EroiChoice{nodes[i].cell, nodes[i].eroi, nodes[i].gain, s(nodes[i].eroi), l, u, {}};
         for (int at = i; at >= 0; at = parent[at]) best->route.push_back(nodes[at].cell);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -19,6 +20,7 @@ struct EroiConfig {
   double connect_radius_cells = 60.0;  // roadmap edges up to this length
   double lambda = 0.05;                // eq. 24 path-cost coefficient, per cell
   double k = 0.8;                      // eq. 24 dynamic threshold tau = k max s
+  int min_gain_cells = 0;              // viewpoints revealing fewer unknown cells are dropped
 };
 
 // A map cell's state for the EROI search.
@@ -45,15 +47,21 @@ int EroiCount(int width, int height, const EroiConfig& config);
 int ViewpointGain(const ExplorationLayers& layers, Cell viewpoint, const EroiConfig& config);
 
 // Algorithm 3. Viewpoints are sampled round the centres of active EROIs
-// (some cell explored, some not) on free explored cells with gain > 0; the
+// (some cell explored, some not) on free explored cells with gain > 0 and at
+// least min_gain_cells; the
 // sparse roadmap joins the robot and viewpoints closer than the connect
 // radius by collision-free straight segments; Dijkstra from the robot
 // expands nodes in path order; each gets U_b = I s, and U = U_b e^(-lambda
-// L) when s <= tau = k max s (else U = U_b); the best U wins. `semantic`
+// L) unless s > tau = k max s and s is above the lowest value (a clue: eq. 23
+// keeps every EROI at or above the prior), when U = U_b; the best U wins. `semantic`
 // holds s per EROI (size EroiCount); empty = uniform 1/N (the seed's
 // initial value). nullopt when no viewpoint is reachable.
+// `excluded` (optional) drops viewpoints: the caller's spent goals (a viewpoint the robot
+// stands on keeps its gain when the camera cannot see what is left, and was chosen again and
+// again at path length 0).
 std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell robot,
                                          const std::vector<double>& semantic,
-                                         const EroiConfig& config);
+                                         const EroiConfig& config,
+                                         const std::function<bool(Cell)>& excluded = nullptr);
 
 }  // namespace semnav::planning

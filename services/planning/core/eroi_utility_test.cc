@@ -73,10 +73,28 @@ TEST(EroiUtility, PathCostFavoursTheNearerEroiBelowTheThreshold) {
   EXPECT_EQ(choice->eroi, 0);
   EXPECT_NEAR(choice->utility, choice->gain * 0.3 * std::exp(-config.lambda * choice->path_cells),
               1e-12);
-  // Without semantic values (uniform 1/3 > 0.8 / 3) the gain alone decides.
-  std::optional<EroiChoice> uniform = SelectEroiGoal(layers, {2, 15}, {}, SmallConfig());
-  ASSERT_TRUE(uniform.has_value());
-  EXPECT_DOUBLE_EQ(uniform->utility, uniform->gain / 3.0);
+}
+
+// Regression (issue 15): without a clue (uniform values, 1/3 each) every s equals max s > tau,
+// and eq. 24 read literally dropped the path cost for every node: the far strip's larger gain
+// won and the UAV zig-zagged across the area. A clue is a value above the floor; without one
+// every node pays the path cost, so the nearer EROI wins.
+TEST(EroiUtility, WithoutAClueEveryViewpointPaysThePathCost) {
+  const ExplorationLayers layers = TwoUnknownStrips();
+  for (const std::vector<double>& values :
+       {std::vector<double>{}, std::vector<double>{1.0 / 3, 1.0 / 3, 1.0 / 3}}) {
+    std::optional<EroiChoice> uniform = SelectEroiGoal(layers, {2, 15}, values, SmallConfig());
+    ASSERT_TRUE(uniform.has_value());
+    EXPECT_EQ(uniform->eroi, 0) << values.size();
+    EXPECT_NEAR(uniform->utility,
+                uniform->gain / 3.0 * std::exp(-SmallConfig().lambda * uniform->path_cells), 1e-12);
+  }
+  // A clue in the far EROI (above the floor and above tau): greedy again.
+  std::optional<EroiChoice> clue =
+      SelectEroiGoal(layers, {2, 15}, {1.0 / 3, 1.0 / 3, 0.5}, SmallConfig());
+  ASSERT_TRUE(clue.has_value());
+  EXPECT_EQ(clue->eroi, 2);
+  EXPECT_DOUBLE_EQ(clue->utility, clue->gain * 0.5);
 }
 
 // Regression (issue 15, the UAV's closed loop): a robot standing in explored space wider than
@@ -130,6 +148,45 @@ TEST(EroiUtility, ViewpointsStayInsideTheSearchArea) {
   ASSERT_TRUE(bounded.ok()) << bounded.status();
   EXPECT_LT(bounded->goal.x, 20);  // EROI 0, round the pocket
   EXPECT_LT(bounded->goal.y, 20);
+}
+
+// Regression (issue 15): a clue EROI's last few unknown cells (depth noise) outweighed whole
+// unexplored areas, its value being ~100x the prior, and the UAV flew back and forth between clue
+// EROIs. Viewpoints revealing fewer than min_gain_cells are dropped.
+TEST(EroiUtility, ViewpointsBelowTheMinimumGainAreDropped) {
+  ExplorationLayers layers = TwoUnknownStrips();
+  // The far strip shrinks to 3 unknown cells; the near block stays (50 cells).
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 55; x < 60; ++x) {
+      if (!(x == 57 && y >= 9 && y <= 11)) MarkFree(&layers, x, y);
+    }
+  }
+  EroiConfig config = SmallConfig();
+  const std::vector<double> clue_far = {0.01, 0.01, 0.9};
+  std::optional<EroiChoice> speck = SelectEroiGoal(layers, {2, 15}, clue_far, config);
+  ASSERT_TRUE(speck.has_value());
+  EXPECT_EQ(speck->eroi, 2);  // 3 cells x 0.9 beat 50 cells x 0.01
+  EXPECT_LE(speck->gain, 3.0);
+  config.min_gain_cells = 10;
+  std::optional<EroiChoice> block = SelectEroiGoal(layers, {2, 15}, clue_far, config);
+  ASSERT_TRUE(block.has_value());
+  EXPECT_EQ(block->eroi, 0);
+  EXPECT_GE(block->gain, 10.0);
+}
+
+// Regression (issue 15, outdoor_road_vehicles start 4): the viewpoint the UAV stood on kept its
+// gain (what is left unknown there is out of the camera's view) and, at path length 0, won again
+// and again: 30 exploration goals at one spot in 7 s. The caller's spent goals hold no viewpoint.
+TEST(EroiUtility, ExcludedViewpointsAreNotChosen) {
+  const ExplorationLayers layers = TwoUnknownStrips();
+  const EroiConfig config = SmallConfig();
+  std::optional<EroiChoice> first = SelectEroiGoal(layers, {2, 15}, {}, config);
+  ASSERT_TRUE(first.has_value());
+  const Cell spent = first->viewpoint;
+  const auto near_spent = [&](Cell c) { return std::hypot(c.x - spent.x, c.y - spent.y) <= 1.0; };
+  std::optional<EroiChoice> next = SelectEroiGoal(layers, {2, 15}, {}, config, near_spent);
+  ASSERT_TRUE(next.has_value());
+  EXPECT_GT(std::hypot(next->viewpoint.x - spent.x, next->viewpoint.y - spent.y), 1.0);
 }
 
 }  // namespace

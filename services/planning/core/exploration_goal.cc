@@ -128,8 +128,12 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
           }
         }
       }
+      // Spent goals (and the outside of the area) hold no viewpoint, as for the frontier
+      // strategies.
+      std::function<bool(Cell)> excluded;
+      if (query.excluded) excluded = [&](Cell c) { return query.excluded(grid.CentreOf(c)); };
       const std::optional<EroiChoice> choice =
-          SelectEroiGoal({explored, free}, query.robot, query.eroi_values, config.eroi);
+          SelectEroiGoal({explored, free}, query.robot, query.eroi_values, config.eroi, excluded);
       if (!choice) return NotFound("no reachable EROI viewpoint");
       return ExplorationChoice{choice->viewpoint, choice->utility, choice->route};
     }

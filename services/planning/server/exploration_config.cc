@@ -15,6 +15,7 @@ EroiConfig ExplorationConfig::EroiInCells(double resolution_m) const {
   c.connect_radius_cells = eroi_connect_radius_m / resolution_m;
   c.lambda = eroi_lambda_per_m * resolution_m;
   c.k = eroi_k;
+  c.min_gain_cells = static_cast<int>(std::ceil(eroi_min_gain_m2 / (resolution_m * resolution_m)));
   return c;
 }
 
@@ -70,11 +71,14 @@ void ExplorationConfig::Read(ConfigReader& section) {
       .Read("ray_range_m", &eroi_ray_range_m)
       .Read("connect_radius_m", &eroi_connect_radius_m)
       .Read("lambda_per_m", &eroi_lambda_per_m)
-      .Read("k", &eroi_k);
+      .Read("k", &eroi_k)
+      .Read("min_gain_m2", &eroi_min_gain_m2);
   eroi.Check(eroi_size_m > 0 && eroi_ray_range_m > 0 && eroi_connect_radius_m > 0, "size_m",
              "EROI lengths must be > 0");
   eroi.Check(eroi_viewpoints >= 1 && eroi_rays >= 1, "viewpoints", "counts must be >= 1");
   eroi.Check(eroi_k > 0 && eroi_k <= 1, "k", "must be in (0, 1]");
+  eroi.Check(std::isfinite(eroi_min_gain_m2) && eroi_min_gain_m2 >= 0 && eroi_min_gain_m2 <= 1e4,
+             "min_gain_m2", "must be in [0, 10000]");
 }
 
 void TrajectoryConfig::Read(ConfigReader& section) {

@@ -24,6 +24,10 @@ struct ExplorationConfig {
   double eroi_connect_radius_m = 3.0;
   double eroi_lambda_per_m = 1.0;  // eq. 24 lambda
   double eroi_k = 0.8;             // eq. 24 tau = k max s
+  // Viewpoints revealing less unknown area are dropped: about a bench's footprint (1.1 m^2), the
+  // smallest target of the seed-000 scenes; smaller pockets are depth noise (our choice, the seed
+  // gives no floor).
+  double eroi_min_gain_m2 = 1.0;
 
   EroiConfig EroiInCells(double resolution_m) const;
   ExplorationGoalConfig GoalConfig(double resolution_m) const;
