@@ -35,6 +35,16 @@ EroiObservation EroiSearch::Annotate(const Eigen::Vector3d& position,
   return observation;
 }
 
+int EroiSearch::NewCodes(const EroiObservation& observation) const {
+  return static_cast<int>(
+      std::count_if(observation.labels.begin(), observation.labels.end(),
+                    [&](const CodeLabel& label) { return !asked_codes_.contains(label.code); }));
+}
+
+void EroiSearch::OnAsked(const EroiObservation& observation) {
+  for (const CodeLabel& label : observation.labels) asked_codes_.insert(label.code);
+}
+
 EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
   EroiEvidence evidence;
   for (const CodeDescription& pair : ParseCodeDescriptions(answer)) {

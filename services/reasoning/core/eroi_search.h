@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,6 +48,10 @@ class EroiSearch {
   // (body frame x forward, z up; eq. 5-10) and draws them into `image`.
   EroiObservation Annotate(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                            const PinholeCamera& camera, cv::Mat& image) const;
+  // Call economy: how many of the observation's printed codes no frame sent to the VLM printed.
+  int NewCodes(const EroiObservation& observation) const;
+  // The observation goes to the VLM: its codes are no longer new.
+  void OnAsked(const EroiObservation& observation);
   // Applies the VLM's answer (eq. 13 pairs; codes off the grid are skipped).
   EroiEvidence OnVlmAnswer(std::string_view answer);
   // Algorithm 2 step 3a prompt for a due region unit.
@@ -75,6 +80,7 @@ class EroiSearch {
   InverseMappingConfig mapping_config_;
   RegionMap regions_;
   SemanticValues values_;
+  std::set<std::string> asked_codes_;  // printed into a frame the VLM was asked about
 };
 
 }  // namespace semnav::reasoning

@@ -97,5 +97,32 @@ TEST(GatewayEroiSearchTest, AnnotateDrawsDecodableCodesAndThePromptNamesTheTarge
   EXPECT_EQ(EroiSearch::Create("", Config()).status().code(), absl::StatusCode::kInvalidArgument);
 }
 
+// Call economy: codes printed into a frame the VLM was asked about are no longer new; turning
+// away shows new ones, turning back shows none.
+TEST(GatewayEroiSearchTest, CodesOfAskedFramesAreNoLongerNew) {
+  EroiSearchConfig config = Config();
+  config.grid.min = Eigen::Vector3d(-20, -20, 0);  // 21 x 21 EROIs round the camera
+  config.grid.nx = 20;
+  config.grid.ny = 20;
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", config);
+  ASSERT_TRUE(search.ok());
+  const PinholeCamera camera{320, 320, 320, 240, 640, 480};
+  const auto look = [&](double yaw) {
+    cv::Mat image(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
+    return search->Annotate(Eigen::Vector3d(0, 0, 1.5),
+                            Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ())),
+                            camera, image);
+  };
+  const EroiObservation east = look(0.0);
+  ASSERT_FALSE(east.labels.empty());
+  EXPECT_EQ(search->NewCodes(east), static_cast<int>(east.labels.size()));
+  search->OnAsked(east);
+  EXPECT_EQ(search->NewCodes(east), 0);
+  EXPECT_EQ(search->NewCodes(look(0.0)), 0);  // the same view again
+  const EroiObservation west = look(M_PI);    // the codes behind: all new
+  ASSERT_FALSE(west.labels.empty());
+  EXPECT_EQ(search->NewCodes(west), static_cast<int>(west.labels.size()));
+}
+
 }  // namespace
 }  // namespace semnav::reasoning

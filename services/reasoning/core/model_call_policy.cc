@@ -13,6 +13,10 @@ absl::Status ValidateModelCallPolicy(const ModelCallPolicyConfig& c) {
     return s;
   if (absl::Status s = CheckRange(c.new_view_turn_rad, "new_view_turn_rad", 0.0, M_PI); !s.ok())
     return s;
+  if (absl::Status s =
+          CheckRange(c.new_view_min_new_code_share, "new_view_min_new_code_share", 0.0, 1.0);
+      !s.ok())
+    return s;
   if (absl::Status s = CheckRange(c.backoff_initial_s, "backoff_initial_s", 0.0, 3600.0); !s.ok())
     return s;
   if (absl::Status s = CheckRange(c.backoff_multiplier, "backoff_multiplier", 1.0, 100.0); !s.ok())
@@ -52,6 +56,12 @@ CallVerdict ModelCallPolicy::MayAskVision(double now_s, const Eigen::Vector3d& p
   const bool moved = (position - *last_position_).norm() >= config_.new_view_move_m;
   const bool turned = last_orientation_.angularDistance(orientation) >= config_.new_view_turn_rad;
   return moved || turned ? CallVerdict::kAsk : CallVerdict::kSameView;
+}
+
+CallVerdict ModelCallPolicy::MayAskCodes(int new_codes, int printed_codes) const {
+  if (printed_codes <= 0) return CallVerdict::kSameView;  // no code the answer could name
+  return new_codes >= config_.new_view_min_new_code_share * printed_codes ? CallVerdict::kAsk
+                                                                          : CallVerdict::kSameView;
 }
 
 void ModelCallPolicy::OnAsked() { ++calls_; }

@@ -24,7 +24,12 @@ namespace semnav::reasoning {
 struct ModelCallPolicyConfig {
   double new_view_move_m = 2.0;    // camera travel that makes a new view (about an EROI edge / 1.5)
   double new_view_turn_rad = 0.5;  // or a turn of this much (~29 deg, half a 60 deg field of view)
-  double backoff_initial_s = 1.0;  // first wait after a failure
+  // And at least this share of the EROI codes printed into the frame must be new to the model
+  // (no earlier asked frame printed them): the answer names codes, so a frame of codes already
+  // asked about adds little. 0.5 = half the view new, as a turn of half the field of view or a
+  // move of half the code window's depth (3-12 m) gives; a frame with no code is never asked.
+  double new_view_min_new_code_share = 0.5;
+  double backoff_initial_s = 1.0;   // first wait after a failure
   double backoff_multiplier = 2.0;  // each further consecutive failure
   double backoff_max_s = 60.0;
   int max_calls = 60;           // per task (vision, region, slow path, decomposition)
@@ -51,6 +56,10 @@ class ModelCallPolicy {
   // A vision call for a frame taken at this camera pose (map frame)?
   CallVerdict MayAskVision(double now_s, const Eigen::Vector3d& position,
                            const Eigen::Quaterniond& orientation) const;
+
+  // A vision frame that passed MayAskVision, judged by its printed codes: kSameView when it prints
+  // none, or when fewer than new_view_min_new_code_share of them are new to the model.
+  CallVerdict MayAskCodes(int new_codes, int printed_codes) const;
 
   // A call was made (a vision call also records its view).
   void OnAsked();

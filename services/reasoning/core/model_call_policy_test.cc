@@ -23,6 +23,18 @@ TEST(ModelCallPolicyTest, VisionAsksOnlyOnANewView) {
   EXPECT_EQ(policy.MayAskVision(1, start, Yaw(-0.6)), CallVerdict::kAsk);
 }
 
+TEST(ModelCallPolicyTest, VisionAsksOnlyWhenHalfThePrintedCodesAreNew) {
+  ModelCallPolicy policy;                                       // share 0.5
+  EXPECT_EQ(policy.MayAskCodes(0, 0), CallVerdict::kSameView);  // no code the answer could name
+  EXPECT_EQ(policy.MayAskCodes(2, 4), CallVerdict::kAsk);
+  EXPECT_EQ(policy.MayAskCodes(1, 3), CallVerdict::kSameView);  // 0.33 < 0.5
+  EXPECT_EQ(policy.MayAskCodes(7, 7), CallVerdict::kAsk);
+  ModelCallPolicyConfig any;
+  any.new_view_min_new_code_share = 0.0;  // every frame that prints a code
+  EXPECT_EQ(ModelCallPolicy(any).MayAskCodes(0, 5), CallVerdict::kAsk);
+  EXPECT_EQ(ModelCallPolicy(any).MayAskCodes(0, 0), CallVerdict::kSameView);
+}
+
 TEST(ModelCallPolicyTest, FailuresBackOffExponentiallyAndAnAnswerResets) {
   ModelCallPolicy policy;  // 1 s, x2, cap 60 s
   policy.OnFailure(10.0);
@@ -100,6 +112,9 @@ TEST(ModelCallPolicyTest, ConfigIsValidated) {
   config = ModelCallPolicyConfig();
   config.new_view_move_m = std::nan("");
   EXPECT_EQ(ErrorField(ValidateModelCallPolicy(config)), "new_view_move_m");
+  config = ModelCallPolicyConfig();
+  config.new_view_min_new_code_share = 1.5;
+  EXPECT_EQ(ErrorField(ValidateModelCallPolicy(config)), "new_view_min_new_code_share");
 }
 
 }  // namespace

@@ -208,6 +208,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     ModelCallPolicyConfig& p = c.model_proxy.calls;
     calls.Read("new_view_move_m", &p.new_view_move_m)
         .Read("new_view_turn_rad", &p.new_view_turn_rad)
+        .Read("new_view_min_new_code_share", &p.new_view_min_new_code_share)
         .Read("backoff_initial_s", &p.backoff_initial_s)
         .Read("backoff_multiplier", &p.backoff_multiplier)
         .Read("backoff_max_s", &p.backoff_max_s)

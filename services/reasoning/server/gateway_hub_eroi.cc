@@ -46,9 +46,15 @@ absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& r
           *task, calls.MayAskVision(NowFor(robot_id), decoded->position, decoded->orientation))) {
     return absl::OkStatus();
   }
-  calls.OnAskedVision(decoded->position, decoded->orientation);
   const EroiObservation observation = task->eroi->Annotate(decoded->position, decoded->orientation,
                                                            decoded->camera, decoded->image);
+  // ... and only a frame whose printed codes are mostly new to the model (the answer names codes).
+  if (calls.MayAskCodes(task->eroi->NewCodes(observation),
+                        static_cast<int>(observation.labels.size())) != CallVerdict::kAsk) {
+    return absl::OkStatus();
+  }
+  calls.OnAskedVision(decoded->position, decoded->orientation);
+  task->eroi->OnAsked(observation);
   task->vision_busy = true;
   ++task->model_calls;
   ++model_calls_;

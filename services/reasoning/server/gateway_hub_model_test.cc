@@ -538,6 +538,51 @@ TEST(GatewayHubEroiTest, OnlyANewViewIsAskedAbout) {
   EXPECT_EQ(fixture.model.asks.size(), 2u);  // 2 m from the asked frame: a new view
 }
 
+// `frame` from (x, y) at 1.5 m, turned to `yaw` (level camera).
+api::CameraFrame Posed(api::CameraFrame frame, double x, double y, double yaw) {
+  common::v1::Pose* pose = frame.mutable_camera_pose();
+  pose->mutable_position()->set_x(x);
+  pose->mutable_position()->set_y(y);
+  pose->mutable_position()->set_z(1.5);
+  pose->mutable_orientation()->set_w(std::cos(yaw / 2));
+  pose->mutable_orientation()->set_z(std::sin(yaw / 2));
+  return frame;
+}
+
+// Regression (issue 15, 42.9 vision calls per outdoor episode): a turn or a move made a new view
+// even when the frame printed only codes the model had already been asked about (a UAV turning
+// back, or flying on over ground it had asked about), so the task's budget went on repeats. Now
+// at least half the printed codes must be new to the model.
+TEST(GatewayHubEroiTest, AFrameOfCodesAlreadyAskedAboutIsNotAsked) {
+  EroiHub fixture(GatewayConfig{});
+  api::SubmitInstructionRequest request = UavSearch("eroi-codes", "find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-20.0);
+  area->set_min_y(-20.0);
+  area->set_max_x(20.0);
+  area->set_max_y(20.0);
+  ASSERT_TRUE(fixture.hub.Submit(request).ok());
+  const auto show = [&](double yaw) {
+    ASSERT_TRUE(fixture.hub
+                    .OnCameraFrame(&fixture.session,
+                                   Posed(Frame(common::v1::IMAGE_ENCODING_PNG), 0.0, 0.0, yaw))
+                    .ok());
+    if (fixture.model.asks.back().done) {
+      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
+      fixture.model.asks.back().done = nullptr;
+    }
+  };
+  show(0.0);
+  EXPECT_EQ(fixture.model.asks.size(), 1u);
+  show(M_PI);  // turned round: new codes
+  EXPECT_EQ(fixture.model.asks.size(), 2u);
+  show(0.0);  // turned back (pi rad, a new view by the turn alone): every code asked about
+  EXPECT_EQ(fixture.model.asks.size(), 2u);
+  show(M_PI / 2);  // north: new codes
+  EXPECT_EQ(fixture.model.asks.size(), 3u);
+}
+
 // The budget: after max_calls the task goes on without the model and says so once.
 TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
   GatewayConfig config;
