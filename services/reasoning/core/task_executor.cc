@@ -374,9 +374,13 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
     explore_goal_ = *goal;
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
     if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
+    // A goal where the robot stands is no step either (an empty path there means "turn in
+    // place", not "plan locally": EROI_UTILITY sent the UAV's own spot 30 times in 7 s).
     const bool moves =
-        path.ok() && (path->empty() || (path->back() - pose_.position).head<2>().norm() >=
-                                           config_.min_explore_step_m);
+        path.ok() &&
+        (goal->head<2>() - pose_.position.head<2>()).norm() >= config_.min_explore_step_m &&
+        (path->empty() ||
+         (path->back() - pose_.position).head<2>().norm() >= config_.min_explore_step_m);
     if (moves)
       return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring,
                       "exploring for the target");
@@ -400,6 +404,7 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
     const Eigen::Vector3d target =
         pose_.position +
         config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
+    if (!StepKeepsToTheArea(target)) continue;
     const bool failed_before =
         std::any_of(failed_fallback_steps_.begin(), failed_fallback_steps_.end(),
                     [&](const Eigen::Vector3d& failed) {
@@ -426,6 +431,17 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
   last_fallback_backed_off_ = false;
   return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
                 Phase::kExploreScan, "no path to the exploration goal; looking around");
+}
+
+bool TaskExecutor::StepKeepsToTheArea(const Eigen::Vector3d& target) const {
+  if (!config_.search_area.has_value()) return true;
+  const SearchArea& area = *config_.search_area;
+  const auto outside_by = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector2d q = p.head<2>();
+    return (q - q.cwiseMax(area.min).cwiseMin(area.max)).norm();  // 0 inside
+  };
+  const double target_out = outside_by(target);
+  return target_out == 0.0 || target_out < outside_by(pose_.position);
 }
 
 void TaskExecutor::SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable) {

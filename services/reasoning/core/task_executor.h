@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/fast_resolver.h"
 #include "services/reasoning/core/navigation_interfaces.h"
 #include "services/reasoning/core/robot_types.h"
@@ -104,6 +105,10 @@ struct ExecutorConfig {
   // the view has too few detections to pass the threshold. VERIFY sets it aside when it is not
   // confirmed. Above 1 = off.
   double approach_label_match = 1.0;
+  // The task's search area (the operator's; unset = none). Fallback steps (no goal from
+  // planning) stay inside it, or, from outside, lead back toward it: planning never gives a goal
+  // outside the area, so a step out of it led to the next and the UAV flew off the world.
+  std::optional<SearchArea> search_area;
 };
 
 enum class TaskState { kRunning, kPaused, kSucceeded, kFailed, kCancelled };
@@ -263,6 +268,8 @@ class TaskExecutor {
   void WatchProgress(double now);
   // Spends an exploration goal; an unreachable one with the region around it.
   void SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable);
+  // A fallback step to `target` ends inside the search area, or nearer to it than the robot is.
+  bool StepKeepsToTheArea(const Eigen::Vector3d& target) const;
   // The fast path's best candidate (even below its threshold), skipping excluded and set-aside
   // objects.
   std::optional<ScoredObject> BestCandidate() const;

@@ -429,6 +429,51 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   EXPECT_GT((next[0].goal - failed_step).norm(), 2.0);
 }
 
+// Regression (issue 15, outdoor_road_vehicles start 3): planning had no goal at the start, the
+// fallback step went 3 m toward the least explored sector, out of the search area (the world's
+// edge 1.2 m away), and from there planning never had a goal inside: 30 steps east, off the world.
+TEST_F(GatewayTaskExecutorTest, FallbackStepsKeepToTheSearchArea) {
+  planner_.frontiers.clear();  // planning has no goal; no memory: the least explored yaw is 0
+  ExecutorConfig config;
+  config.search_area = SearchArea{Eigen::Vector2d(-10, -5), Eigen::Vector2d(1, 5)};
+  TaskExecutor inside = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = inside.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  // East (3, 0) and the two 45-degree steps end outside x <= 1: the first step inside is north.
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 3, 0), 1e-9)) << out[0].goal.transpose();
+
+  // From outside (x = 5) only steps that end nearer the area are taken: east, the 45-degree and
+  // the 90-degree steps are not; the 135-degree one is (to x = 2.88).
+  TaskExecutor outside = Make(FindTarget(), config);
+  out = outside.Start(0, At(5));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_NEAR(out[0].goal.x(), 5 - 3 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(std::abs(out[0].goal.y()), 3 / std::sqrt(2.0), 1e-9);
+
+  // Without an area the step goes east, as before.
+  TaskExecutor free = Make(FindTarget());
+  out = free.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(3, 0, 0), 1e-9)) << out[0].goal.transpose();
+}
+
+// Regression (issue 15, outdoor_road_vehicles start 4): planning gave the robot's own spot as the
+// exploration goal; the empty path to it counted as a move, and the task sent it 30 times in 7 s
+// until its exploration budget was gone. A goal where the robot stands is spent, not sent.
+TEST_F(GatewayTaskExecutorTest, ExplorationGoalWhereTheRobotStandsIsSpentNotSent) {
+  planner_.frontiers = {Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(6, 0, 0)};
+  TaskExecutor task = Make(FindTarget());
+  const std::vector<RobotCommand> out = task.Start(0, At(2));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(6, 0, 0)));
+  ASSERT_EQ(planner_.exploration_queries.size(), 2u);
+  ASSERT_EQ(planner_.exploration_queries[1].excluded_goals.size(), 1u);  // the spot, spent
+  EXPECT_TRUE(planner_.exploration_queries[1].excluded_goals[0].isApprox(Eigen::Vector3d(2, 0, 0)));
+}
+
 TEST_F(GatewayTaskExecutorTest, FailedExplorationGoalIsExcludedAndExplorationGoesOn) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0),
                         Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0),

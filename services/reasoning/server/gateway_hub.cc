@@ -240,6 +240,7 @@ void GatewayHub::StartIfPossible(Task& task) {
 void GatewayHub::InstallExecutor(Task& task, std::vector<Subgoal> subgoals) {
   ExecutorConfig executor = config_.executor;
   executor.model_available = backends_.model != nullptr;
+  executor.search_area = task.search_area;
   ++task.executor_generation;
   task.executor = std::make_unique<TaskExecutor>(task.instruction, std::move(subgoals), &resolver_,
                                                  task.planner.get(),
