@@ -374,13 +374,11 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
     explore_goal_ = *goal;
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
     if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
-    // A goal where the robot stands is no step either (an empty path there means "turn in
-    // place", not "plan locally": EROI_UTILITY sent the UAV's own spot 30 times in 7 s).
+    // An empty path lets the robot plan locally, unless the goal is where it stands (PlanPath's
+    // "turn in place"): EROI_UTILITY sent the UAV's own spot 30 times in 7 s.
+    const Eigen::Vector3d end = path.ok() && !path->empty() ? path->back() : *goal;
     const bool moves =
-        path.ok() &&
-        (goal->head<2>() - pose_.position.head<2>()).norm() >= config_.min_explore_step_m &&
-        (path->empty() ||
-         (path->back() - pose_.position).head<2>().norm() >= config_.min_explore_step_m);
+        path.ok() && (end - pose_.position).head<2>().norm() >= config_.min_explore_step_m;
     if (moves)
       return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring,
                       "exploring for the target");
@@ -404,7 +402,6 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
     const Eigen::Vector3d target =
         pose_.position +
         config_.fallback_explore_step_m * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0.0);
-    if (!StepKeepsToTheArea(target)) continue;
     const bool failed_before =
         std::any_of(failed_fallback_steps_.begin(), failed_fallback_steps_.end(),
                     [&](const Eigen::Vector3d& failed) {
@@ -412,6 +409,10 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
                     });
     if (failed_before) continue;
     ++asked;
+    if (!StepKeepsToTheArea(target)) {  // as a step with no path (what it was inside walls)
+      failed_fallback_steps_.push_back(target);
+      continue;
+    }
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(target);
     if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
     if (path.ok()) {

@@ -436,17 +436,25 @@ TEST_F(GatewayTaskExecutorTest, FallbackStepsKeepToTheSearchArea) {
   planner_.frontiers.clear();  // planning has no goal; no memory: the least explored yaw is 0
   ExecutorConfig config;
   config.search_area = SearchArea{Eigen::Vector2d(-10, -5), Eigen::Vector2d(1, 5)};
+  // A step out of the area counts as a step with no path (so a robot inside walls, where such a
+  // step had no path, behaves as before): east and the two 45-degree steps end outside x <= 1,
+  // the robot looks around, then the first step inside is north.
   TaskExecutor inside = Make(FindTarget(), config);
   std::vector<RobotCommand> out = inside.Start(0, At(0));
   ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  out = inside.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
   ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
-  // East (3, 0) and the two 45-degree steps end outside x <= 1: the first step inside is north.
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 3, 0), 1e-9)) << out[0].goal.transpose();
 
-  // From outside (x = 5) only steps that end nearer the area are taken: east, the 45-degree and
-  // the 90-degree steps are not; the 135-degree one is (to x = 2.88).
+  // From outside (x = 5) only steps that end nearer the area are taken: not east, the 45-degree
+  // or the 90-degree steps; the 135-degree one is (to x = 2.88).
   TaskExecutor outside = Make(FindTarget(), config);
   out = outside.Start(0, At(5));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  out = outside.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
   EXPECT_NEAR(out[0].goal.x(), 5 - 3 / std::sqrt(2.0), 1e-9);
