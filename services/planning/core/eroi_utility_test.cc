@@ -162,6 +162,7 @@ TEST(EroiUtility, ViewpointsBelowTheMinimumGainAreDropped) {
     }
   }
   EroiConfig config = SmallConfig();
+  config.ray_range_cells = 10;  // the far EROI's viewpoints see the speck only, not the block
   const std::vector<double> clue_far = {0.01, 0.01, 0.9};
   std::optional<EroiChoice> speck = SelectEroiGoal(layers, {2, 15}, clue_far, config);
   ASSERT_TRUE(speck.has_value());
