@@ -409,7 +409,7 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
                     });
     if (failed_before) continue;
     ++asked;
-    if (!StepKeepsToTheArea(target)) {  // as a step with no path (what it was inside walls)
+    if (!StepKeepsToTheArea(target)) {  // as a step with no path
       failed_fallback_steps_.push_back(target);
       continue;
     }
@@ -441,8 +441,8 @@ bool TaskExecutor::StepKeepsToTheArea(const Eigen::Vector3d& target) const {
     const Eigen::Vector2d q = p.head<2>();
     return (q - q.cwiseMax(area.min).cwiseMin(area.max)).norm();  // 0 inside
   };
-  const double target_out = outside_by(target);
-  return target_out == 0.0 || target_out < outside_by(pose_.position);
+  const double robot_out = outside_by(pose_.position);
+  return robot_out == 0.0 || outside_by(target) < robot_out;
 }
 
 void TaskExecutor::SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable) {

@@ -105,9 +105,9 @@ struct ExecutorConfig {
   // the view has too few detections to pass the threshold. VERIFY sets it aside when it is not
   // confirmed. Above 1 = off.
   double approach_label_match = 1.0;
-  // The task's search area (the operator's; unset = none). Fallback steps (no goal from
-  // planning) stay inside it, or, from outside, lead back toward it: planning never gives a goal
-  // outside the area, so a step out of it led to the next and the UAV flew off the world.
+  // The task's search area (the operator's; unset = none). From outside it, fallback steps (no
+  // goal from planning) lead back toward it: planning gives no goal to a robot outside the area,
+  // so one step out led to the next and the UAV flew off the world. Inside, steps are as before.
   std::optional<SearchArea> search_area;
 };
 
@@ -268,7 +268,7 @@ class TaskExecutor {
   void WatchProgress(double now);
   // Spends an exploration goal; an unreachable one with the region around it.
   void SpendExploreGoal(const Eigen::Vector3d& goal, bool unreachable);
-  // A fallback step to `target` ends inside the search area, or nearer to it than the robot is.
+  // The robot is inside the search area, or the fallback step to `target` ends nearer to it.
   bool StepKeepsToTheArea(const Eigen::Vector3d& target) const;
   // The fast path's best candidate (even below its threshold), skipping excluded and set-aside
   // objects.

@@ -431,25 +431,20 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
 
 // Regression (issue 15, outdoor_road_vehicles start 3): planning had no goal at the start, the
 // fallback step went 3 m toward the least explored sector, out of the search area (the world's
-// edge 1.2 m away), and from there planning never had a goal inside: 30 steps east, off the world.
+// edge 1.2 m away), and from outside planning never had a goal: 30 steps east, off the world.
 TEST_F(GatewayTaskExecutorTest, FallbackStepsKeepToTheSearchArea) {
   planner_.frontiers.clear();  // planning has no goal; no memory: the least explored yaw is 0
   ExecutorConfig config;
   config.search_area = SearchArea{Eigen::Vector2d(-10, -5), Eigen::Vector2d(1, 5)};
-  // A step out of the area counts as a step with no path (so a robot inside walls, where such a
-  // step had no path, behaves as before): east and the two 45-degree steps end outside x <= 1,
-  // the robot looks around, then the first step inside is north.
+  // Inside the area the steps are as before (east first, even across the edge).
   TaskExecutor inside = Make(FindTarget(), config);
   std::vector<RobotCommand> out = inside.Start(0, At(0));
   ASSERT_EQ(out.size(), 1u);
-  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
-  out = inside.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);
-  ASSERT_EQ(out.size(), 1u);
-  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
-  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 3, 0), 1e-9)) << out[0].goal.transpose();
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(3, 0, 0), 1e-9)) << out[0].goal.transpose();
 
-  // From outside (x = 5) only steps that end nearer the area are taken: not east, the 45-degree
-  // or the 90-degree steps; the 135-degree one is (to x = 2.88).
+  // From outside (x = 5) only steps that end nearer the area are taken; the others count as
+  // steps with no path. East and the 45-degree steps do not: the robot looks around; then the
+  // 90-degree steps (no nearer) do not either, and the 135-degree one does (to x = 2.88).
   TaskExecutor outside = Make(FindTarget(), config);
   out = outside.Start(0, At(5));
   ASSERT_EQ(out.size(), 1u);
@@ -460,11 +455,11 @@ TEST_F(GatewayTaskExecutorTest, FallbackStepsKeepToTheSearchArea) {
   EXPECT_NEAR(out[0].goal.x(), 5 - 3 / std::sqrt(2.0), 1e-9);
   EXPECT_NEAR(std::abs(out[0].goal.y()), 3 / std::sqrt(2.0), 1e-9);
 
-  // Without an area the step goes east, as before.
+  // Without an area the step from x = 5 goes east, as before.
   TaskExecutor free = Make(FindTarget());
-  out = free.Start(0, At(0));
+  out = free.Start(0, At(5));
   ASSERT_EQ(out.size(), 1u);
-  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(3, 0, 0), 1e-9)) << out[0].goal.transpose();
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(8, 0, 0), 1e-9)) << out[0].goal.transpose();
 }
 
 // Regression (issue 15, outdoor_road_vehicles start 4): planning gave the robot's own spot as the
