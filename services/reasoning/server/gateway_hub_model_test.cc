@@ -427,6 +427,9 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   eroi.grid.nx = 4;
   eroi.grid.ny = 3;
   config.eroi = eroi;
+  // This test follows the values; which frames are new to the model has its own test
+  // (AFrameOfCodesAlreadyAskedAboutIsNotAsked): here every moved frame that prints a code asks.
+  config.model_proxy.calls.new_view_min_new_code_share = 0.0;
   EroiHub fixture(config);
   GatewayHub& hub = fixture.hub;
   ScriptedModel& model = fixture.model;
