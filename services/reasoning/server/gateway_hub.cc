@@ -25,6 +25,7 @@ GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner
       resolver_(lexicon, config.fast_path),
       matcher_(lexicon, config.fast_path.unknown_colour_factor),
       start_(absl::Now()),
+      tasks_(static_cast<std::size_t>(config.keep_finished_tasks)),
       events_(static_cast<std::size_t>(config.retained_events)),
       requests_(static_cast<std::size_t>(std::max(1, config.idempotency_entries))) {
   absl::StatusOr<TextSegmenter> segmenter = TextSegmenter::Create();
@@ -91,7 +92,7 @@ absl::StatusOr<GatewayHub::Task*> GatewayHub::FindTask(const std::string& task_i
 }
 
 void GatewayHub::RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) {
-  Task& task = *tasks_.Find(task_id);  // tasks are never removed
+  Task& task = *tasks_.Find(task_id);  // a task inside a remote call is never forgotten
   task.in_remote_call = true;
   mu_.Unlock();
   call();
