@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <deque>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -355,14 +357,27 @@ uint64_t MappingEngine::AwaitChange(uint64_t revision, absl::Duration timeout) c
 }
 
 std::string MappingEngine::Serialize() const {
-  absl::MutexLock lock(&mu_);
-  const State& s = *state_;
+  // Copied under the lock and written outside it: writing the whole map (tens of MB of text in
+  // the fleet soak) under the lock held up every frame, grid fetch and query meanwhile, and the
+  // live snapshot does it every 5 s.
+  std::optional<octomap::OcTree> tree;
+  std::vector<SceneObject> objects;
+  uint64_t next_object_id = 0;
+  std::map<std::string, std::vector<Eigen::Vector3f>> points;
   SavedGrid grid;
   grid.resolution_m = config_.grid.resolution_m;
-  for (const HierarchicalGrid::CellState& c : s.grid.Cells()) {
-    grid.cells.push_back({c.index.x, c.index.y, c.log_odds, c.height, c.structure});
+  {
+    absl::MutexLock lock(&mu_);
+    const State& s = *state_;
+    tree.emplace(*s.tree);
+    objects = s.scene.objects();
+    next_object_id = s.scene.next_id();
+    points = s.semantic.points();
+    for (const HierarchicalGrid::CellState& c : s.grid.Cells()) {
+      grid.cells.push_back({c.index.x, c.index.y, c.log_odds, c.height, c.structure});
+    }
   }
-  return SerializeMap(*s.tree, s.scene.objects(), s.scene.next_id(), s.semantic.points(), &grid);
+  return SerializeMap(*tree, objects, next_object_id, points, &grid);
 }
 
 absl::Status MappingEngine::Restore(const std::string& payload) {
