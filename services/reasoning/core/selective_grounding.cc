@@ -72,6 +72,7 @@ GroundedGraph SelectiveGrounding(const TargetSpec& target, const SceneGraph& gra
                        return a->detection_count > b->detection_count;
                      });
     for (const SceneObject* object : classes) selection.Add(object->id);
+    out.open_vocabulary = !classes.empty();
   }
 
   // 2. One-hop relation expansion, nearest relation first.

@@ -18,6 +18,7 @@ struct GroundingConfig {
 struct GroundedGraph {
   SceneGraph graph;                   // selected objects, relations among them, their regions.
   std::vector<int64_t> keyword_hits;  // objects matched by the target or anchor name.
+  bool open_vocabulary = false;       // one object per class: no label can name the target.
 };
 
 // Keyword hits are objects whose name overlaps the target's or the anchor's (colour ignored, so

@@ -300,7 +300,9 @@ TEST_F(GatewayTaskExecutorTest, SlowAnswerNamingASetAsideObjectKeepsExploring) {
 
   // From the next exploration goal the object may be reachable: the model's answer counts again.
   out = task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);  // scan at the goal
-  task.OnSceneGraph(13, GraphWith({Extinguisher(3)}, 3));
+  SceneObject unsure = Extinguisher(3);
+  unsure.score = 0.5;  // still below the fast path: (0.35 + 0.15 * 0.5 * 0.3) / 0.5 = 0.745
+  task.OnSceneGraph(13, GraphWith({unsure}, 3));
   ASSERT_TRUE(task.TakeModelRequest().has_value());
   EXPECT_FALSE(task.OnSlowDecision(14, 3, decision).empty());
   EXPECT_TRUE(task.progress().target.has_value());
