@@ -266,7 +266,7 @@ absl::StatusOr<RelocalizationResult> Relocalize(const IndexedLandmarks& query,
     hypothesis_matches.insert(hypothesis_matches.end(), more.begin(), more.end());
     if (hypothesis_matches.size() < 3) continue;
     const absl::StatusOr<PoseEstimate> initial =
-        SolveFromMatches(query, map, hypothesis_matches, params.pose);
+        SolveFromMatches(query, map, hypothesis_matches, params);
     if (!initial.ok()) {
       last_error = initial.status();
       continue;  // inconsistent: retrieve m more (seed 3.2)

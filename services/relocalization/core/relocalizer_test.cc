@@ -142,11 +142,10 @@ RelocalizationParams SceneGraphProfile(double pos_sigma_per_scale) {
 }
 
 TEST(RelocRelocalizerTest, LargeObjectsCentresCountByTheirScale) {
-  // 6 small objects around a 6 x 5 m room, a 2.0 m bed and a 2.2 m couch.
+  // A room's handful: 4 small objects, a 2.0 m bed and a 2.2 m couch (5 inliers needed).
   const std::vector<std::pair<Eigen::Vector3d, double>> objects = {
       {{0.5, 0.5, 0.4}, 0.4},  {{5.5, 0.8, 0.9}, 0.3}, {{3.0, 4.5, 0.5}, 0.5},
-      {{0.7, 4.2, 1.2}, 0.35}, {{4.8, 4.6, 0.3}, 0.3}, {{2.6, 2.2, 0.8}, 0.45},
-      {{4.5, 2.5, 0.3}, 2.0},  {{1.2, 2.4, 0.4}, 2.2}};
+      {{0.7, 4.2, 1.2}, 0.35}, {{4.5, 2.5, 0.3}, 2.0}, {{1.2, 2.4, 0.4}, 2.2}};
   std::vector<Landmark> map;
   for (size_t i = 0; i < objects.size(); ++i) {
     Landmark l;
@@ -160,23 +159,23 @@ TEST(RelocRelocalizerTest, LargeObjectsCentresCountByTheirScale) {
   std::vector<Landmark> query = SeenFrom(map, truth, 1.0f, 0.8f);
   // Centre errors in the map frame, moved into the query frame: 3-6 cm on the small objects,
   // 0.9 m on the seen halves of the bed and the couch (both towards the room's middle).
-  const std::vector<Eigen::Vector3d> error = {
-      {0.04, -0.03, 0.0}, {-0.05, 0.02, 0.01}, {0.03, 0.05, 0.0}, {-0.04, -0.04, 0.0},
-      {0.06, 0.0, -0.01}, {0.0, -0.05, 0.02},  {-0.9, 0.0, 0.0},  {0.9, 0.1, 0.0}};
+  const std::vector<Eigen::Vector3d> error = {{0.04, -0.03, 0.0}, {-0.05, 0.02, 0.01},
+                                              {0.03, 0.05, 0.0},  {-0.04, -0.04, 0.0},
+                                              {-0.9, 0.0, 0.0},   {0.9, 0.1, 0.0}};
   for (size_t i = 0; i < query.size(); ++i) {
     query[i].position += truth.inverse().linear() * error[i];
   }
+  // Fixed sigma: the big two fail the residual gate, 4 inliers are left: not reliable.
   const auto fixed =
       Relocalize(IndexedLandmarks(query), IndexedLandmarks(map), SceneGraphProfile(0.0));
-  const bool fixed_on_target = fixed.ok() && fixed->reliable &&
-                               TranslationDifferenceM(fixed->map_from_query, truth) <= 0.2 &&
-                               RotationDifferenceDeg(fixed->map_from_query, truth) <= 3.0;
-  EXPECT_FALSE(fixed_on_target);
+  ASSERT_TRUE(fixed.ok()) << fixed.status();
+  EXPECT_FALSE(fixed->reliable);
+  // By scale: the big two stay as inliers with little weight; the pose follows the small ones.
   const auto scaled =
       Relocalize(IndexedLandmarks(query), IndexedLandmarks(map), SceneGraphProfile(0.5));
   ASSERT_TRUE(scaled.ok()) << scaled.status();
   EXPECT_TRUE(scaled->reliable);
-  EXPECT_GE(scaled->inliers.size(), 6u);
+  EXPECT_EQ(scaled->inliers.size(), 6u);
   EXPECT_LT(TranslationDifferenceM(scaled->map_from_query, truth), 0.2);
   EXPECT_LT(RotationDifferenceDeg(scaled->map_from_query, truth), 3.0);
 }
