@@ -20,6 +20,15 @@ RobotCommand Rotate(uint64_t id, double rate, double duration, const std::string
   return command;
 }
 
+RelocalizationAction Hold(uint64_t id, const std::string& reason) {
+  RelocalizationAction hold;
+  hold.kind = RelocalizationAction::Kind::kCommand;
+  hold.command.kind = CommandKind::kHold;
+  hold.command.id = id;
+  hold.command.reason = reason;
+  return hold;
+}
+
 }  // namespace
 
 Eigen::Vector3d PlanarTransform::Apply(const Eigen::Vector3d& point) const {
@@ -137,12 +146,7 @@ std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now,
                                            observed.size(), config_.min_observed_objects),
                            graph);
     }
-    RelocalizationAction hold;
-    hold.kind = RelocalizationAction::Kind::kCommand;
-    hold.command.kind = CommandKind::kHold;
-    hold.command.id = next_command_id_++;
-    hold.command.reason = "relocalizing: waiting for the answer";
-    actions.push_back(hold);
+    actions.push_back(Hold(next_command_id_++, "relocalizing: waiting for the answer"));
     RelocalizationAction call;
     call.kind = RelocalizationAction::Kind::kRelocalize;
     call.observed = std::move(observed);
@@ -277,12 +281,7 @@ std::vector<RelocalizationAction> RelocalizationLoop::Recovered(double now,
   last_ended_ = now;
   std::vector<RelocalizationAction> actions;
   if (stop_turning) {
-    RelocalizationAction hold;
-    hold.kind = RelocalizationAction::Kind::kCommand;
-    hold.command.kind = CommandKind::kHold;
-    hold.command.id = next_command_id_++;
-    hold.command.reason = "relocalized: the look-around ends";
-    actions.push_back(hold);
+    actions.push_back(Hold(next_command_id_++, "relocalized: the look-around ends"));
   }
   RelocalizationAction correct;
   correct.kind = RelocalizationAction::Kind::kCorrect;
