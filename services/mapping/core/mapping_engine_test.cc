@@ -186,7 +186,7 @@ TEST(MappingEngineTest, UntrustedFramesAndTheLookbackBeforeThemMarkTheirInstance
   for (int i = 0; i < 3; ++i) add(50 * kFrameNs + i * kFrameNs, "cabinet", cabinet, false);
   // t = 6 s: the robot reports its loss. The cabinet was last seen at 5.2 s (within 2.5 s), the
   // table at 0.3 s.
-  add(60 * kFrameNs, "", {}, true);
+  add(60 * kFrameNs, "", Eigen::Vector3d::Zero(), true);
   SceneSnapshot scene = engine.Scene();
   ASSERT_EQ(scene.objects.size(), 2u);
   for (const SceneObject& object : scene.objects) {
@@ -194,7 +194,7 @@ TEST(MappingEngineTest, UntrustedFramesAndTheLookbackBeforeThemMarkTheirInstance
   }
   // A new instance from an untrusted frame is marked; the marks stay once frames are trusted.
   add(61 * kFrameNs, "rug", Eigen::Vector3d(4.0, 2.0, 0.0), true);  // on the floor
-  add(62 * kFrameNs, "", {}, false);
+  add(62 * kFrameNs, "", Eigen::Vector3d::Zero(), false);
   add(100 * kFrameNs, "table", table, false);
   scene = engine.Scene();
   ASSERT_EQ(scene.objects.size(), 3u);
