@@ -333,6 +333,9 @@ int main(int argc, char** argv) {
             frame_logs[worker].emplace_back(std::make_unique<sim::vlm::FrameLog>()).get();
         sim::vlm::SimVlmConfig config;
         if (jobs[j].accuracy) config.errors = sim::vlm::ErrorsAtAccuracy(*jobs[j].accuracy);
+        // Its text encoder speaks the episode's detector's embedding space.
+        config.embedding_dim = spec.sensors.detector.embedding_dim;
+        config.embedding_seed = spec.sensors.detector.embedding_seed;
         auto model = sim::vlm::SimVlm::Create(spec.world, frames, config);
         if (model.ok()) endpoints[worker]->Replace(*std::move(model));
         spec.on_camera_frame = [frames](const sim::SensorFrame& frame) { frames->Record(frame); };

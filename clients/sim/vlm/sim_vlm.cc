@@ -4,15 +4,19 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "absl/strings/ascii.h"
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
+#include "clients/sim/core/class_embedding.h"
 #include "clients/sim/core/rng.h"
 #include "clients/sim/core/view_renderer.h"
 #include "clients/sim/vlm/code_reader.h"
 #include "nlohmann/json.hpp"
+#include "services/common/lexicon/canonical_term.h"
+#include "services/modelproxy/core/offline/open_vocabulary.h"
 
 namespace semnav::sim::vlm {
 namespace {
@@ -59,6 +63,14 @@ const PrintedCode* Nearest(const std::vector<PrintedCode>& codes, const cv::Poin
     }
   }
   return best;
+}
+
+// The class a VLM takes a phrase for when the lexicon does not know it: the detector class it is
+// a kind of (the offline backend's open-vocabulary table: "复印机" is a printer); "" when none.
+std::string KnownClassOf(absl::string_view said) {
+  const std::optional<modelproxy::offline::StandIn> stand_in =
+      modelproxy::offline::OpenVocabularyStandIn(std::string(said));
+  return stand_in.has_value() ? stand_in->known_class : "";
 }
 
 }  // namespace
@@ -132,6 +144,31 @@ absl::StatusOr<std::unique_ptr<SimVlm>> SimVlm::Create(const World& world, const
 SimVlm::SimVlm(const World& world, const FrameLog* frames, SimVlmConfig config)
     : world_(world), scene_(Scene::Build(world_)), frames_(frames), config_(std::move(config)) {}
 
+SimVlm::TextEmbedding SimVlm::EmbedText(absl::string_view text) const {
+  std::string said = CanonicalTerm(text);
+  if (const std::string known = KnownClassOf(said); !known.empty()) said = known;
+  // The classes the detector reports in this world: object labels and obstacle kinds (stuff).
+  std::vector<std::string> classes;
+  for (const ObjectInstance& object : world_.objects) classes.push_back(object.label);
+  for (const Obstacle& obstacle : world_.obstacles) classes.push_back(obstacle.kind);
+  TextEmbedding out;
+  out.concept_name = said;
+  bool exact = false;
+  for (const std::string& label : classes) {
+    const std::string canonical = CanonicalTerm(label);
+    if (exact || !LabelNamesTarget(canonical, said)) continue;
+    exact = canonical == said;
+    // The exact class, else the most specific one the text names ("red cup" names "cup").
+    if (exact || out.concept_name == said || label.size() > out.concept_name.size())
+      out.concept_name = label;
+  }
+  Rng rng(MixSeed(config_.seed ^ 0x7e47, HashString(std::string(text))));
+  out.vector = NoisyEmbedding(
+      ClassEmbedding(out.concept_name, config_.embedding_dim, config_.embedding_seed),
+      config_.text_embedding_noise, rng);
+  return out;
+}
+
 FrameSighting SimVlm::Sight(const RecordedFrame& frame) const {
   const RenderedView view =
       RenderView(scene_, frame.intrinsics, frame.world_from_camera, 0.1, config_.max_range_m);
@@ -204,6 +241,7 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
     return absl::InvalidArgumentError("match_target: needs target and candidates");
   }
   const std::string target = task["target"].get<std::string>();
+  const std::string known_class = KnownClassOf(target);  // "复印机": a printer
   Rng rng(MixSeed(config_.seed, HashString(std::string(task_json))));
   nlohmann::json ranking = nlohmann::json::array();
   std::string best;
@@ -211,7 +249,8 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
   for (const nlohmann::json& candidate : task["candidates"]) {
     const std::string id = candidate.value("id", "");
     const std::string label = candidate.value("label", "");
-    const bool match = LabelNamesTarget(label, target);
+    const bool match = LabelNamesTarget(label, target) ||
+                       (!known_class.empty() && LabelNamesTarget(label, known_class));
     if (match && best.empty()) best = id;
     if (!match) others.push_back(id);
     ranking.push_back({{"id", id},

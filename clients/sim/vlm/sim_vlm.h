@@ -5,7 +5,10 @@
 //     there is none, the passage (road, door) with the most pixels; "No clue or passage."
 //     otherwise;
 //   - seed 000's region score: an integer in [-5, 5] from the descriptions it was given;
-//   - the slow path's match_target task: the candidate whose label names the target.
+//   - the slow path's match_target task: the candidate whose label names the target (or the
+//     class an open-vocabulary phrase is a kind of: "复印机" is a printer);
+//   - text embeddings in the detector's embedding space (EmbedText), the text tower a real
+//     deployment pairs with its detector's image encoder.
 // Everything it knows about a frame comes from the pixels the camera saw (its re-rendered view);
 // an instance out of view gives no clue. Answers are a pure function of (config, prompt, frame).
 #pragma once
@@ -76,6 +79,17 @@ class SimVlm {
 
   // INVALID_ARGUMENT for a prompt it does not know (the proxy then falls back).
   absl::StatusOr<VlmReply> Answer(const VlmQuestion& question) const;
+
+  // The text encoder of the detector's joint embedding space (seed 002 3.1.2: CLIP text and image
+  // features compared by cosine). A text that names a class of this world (the lexicon's synonyms
+  // and Chinese names first: "sofa" and "沙发" name "couch") is that class's vector plus
+  // `text_embedding_noise`; any other text gets a vector of its own, near-orthogonal to every
+  // class. `concept_name` says which class (or the canonical text) was encoded.
+  struct TextEmbedding {
+    std::vector<float> vector;
+    std::string concept_name;
+  };
+  TextEmbedding EmbedText(absl::string_view text) const;
 
   FrameSighting Sight(const RecordedFrame& frame) const;
   const SimVlmConfig& config() const { return config_; }

@@ -38,6 +38,11 @@ absl::Status ValidateSimVlmConfig(const SimVlmConfig& config) {
   if (absl::Status s = CheckRange(config.max_code_distance_px, "max_code_distance_px", 0.0, 1e5);
       !s.ok())
     return s;
+  if (config.embedding_dim < 1 || config.embedding_dim > 4096)
+    return InvalidField("embedding_dim", "must be 1..4096");
+  if (absl::Status s = CheckRange(config.text_embedding_noise, "text_embedding_noise", 0.0, 10.0);
+      !s.ok())
+    return s;
   if (config.font_thickness < 1 || config.font_thickness > 5)
     return InvalidField("font_thickness", "must be 1..5");
   return absl::OkStatus();

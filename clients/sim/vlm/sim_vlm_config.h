@@ -45,6 +45,15 @@ struct SimVlmConfig {
   // Usage reported per call (seed 000 table 6: qwen3-vl-plus 1083 in / 18 out; qwen-plus 381 / 1).
   int vision_input_tokens = 1083;
   int text_input_tokens = 381;
+  // The text tower of the detector's embedding space (POST <base>/embeddings): the simulated
+  // detector's per-class appearance vectors (clients/sim/core DetectorConfig embedding_dim and
+  // embedding_seed; a deployment pairs its detector's image encoder with the same model's text
+  // encoder, seed 002 3.1.2's CLIP ViT-B/32). The bench copies these from its detector.
+  int embedding_dim = 64;
+  uint64_t embedding_seed = 1;
+  // A text vector is its class vector plus noise of this norm, like one detection's (the
+  // detector's embedding_noise 0.3: cosine about 0.96 to the class); drawn per (seed, text).
+  double text_embedding_noise = 0.3;
   std::string api_key;  // "" = no key required (a local server)
 };
 

@@ -91,5 +91,47 @@ TEST(SimVlmProxyTest, SearchPromptThroughTheProxyGetsTheCodeAndTheStatedLatency)
   ::unsetenv(kKeyEnv);
 }
 
+// The endpoint's text encoder on the OpenAI embeddings wire, through the proxy: the vector the
+// model gives directly, one per text, counted apart from the chat answers.
+TEST(SimVlmProxyTest, EmbeddingsThroughTheProxyAreTheTextEncodersVectors) {
+  const World world = testing::SearchWorld();
+  FrameLog log;
+  SimVlmConfig config;
+  config.api_key = "sim-key-2";
+  auto model = SimVlm::Create(world, &log, config);
+  auto twin = SimVlm::Create(world, &log, config);
+  ASSERT_TRUE(model.ok() && twin.ok());
+  absl::StatusOr<std::unique_ptr<SimVlmServer>> server = SimVlmServer::Start(*std::move(model));
+  ASSERT_TRUE(server.ok()) << server.status();
+  ::setenv(kKeyEnv, "sim-key-2", 1);
+  std::unique_ptr<ModelProxy> proxy = ProxyFor((*server)->base_url());
+  EmbeddingRequest request;
+  request.texts = {"backpack", "红色的背包"};
+  absl::StatusOr<EmbeddingResult> result =
+      proxy->Embed(request, {"robot", "task"}, absl::Now() + absl::Seconds(10));
+  ::unsetenv(kKeyEnv);
+  ASSERT_TRUE(result.ok()) << result.status();
+  ASSERT_EQ(result->reply.vectors.size(), 2u);
+  EXPECT_EQ(result->reply.vectors[0], (*twin)->EmbedText("backpack").vector);
+  EXPECT_EQ(result->reply.vectors[1], (*twin)->EmbedText("红色的背包").vector);
+  EXPECT_EQ(result->reply.usage.input_tokens, (1 + 8 / 4) + (1 + 15 / 4));  // 1 + bytes / 4 each
+  const SimVlmServer::Served served = (*server)->served();
+  EXPECT_EQ(served.embedding_answers, 1);
+  EXPECT_EQ(served.answers, 0);
+}
+
+TEST(SimVlmServerTest, EmbeddingsBodyIsValidatedByField) {
+  EXPECT_EQ(*ParseEmbeddingsBody(R"({"model": "m", "input": "cup"})"),
+            std::vector<std::string>{"cup"});
+  EXPECT_EQ(*ParseEmbeddingsBody(R"({"input": ["cup", "杯子"]})"),
+            (std::vector<std::string>{"cup", "杯子"}));
+  for (const char* bad : {R"({"input": []})", R"({"input": [3]})", R"({"input": ""})",
+                          R"({"model": "m"})", "not json"}) {
+    const absl::StatusOr<std::vector<std::string>> parsed = ParseEmbeddingsBody(bad);
+    EXPECT_EQ(parsed.status().code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_TRUE(absl::StrContains(parsed.status().message(), "input")) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace semnav::sim::vlm

@@ -17,6 +17,7 @@ namespace {
 
 constexpr size_t kMaxBodyBytes = 32u << 20;
 constexpr size_t kMaxImages = 8;
+constexpr size_t kMaxEmbeddingInputs = 256;
 
 absl::StatusOr<cv::Mat> DecodeDataUrl(const std::string& url) {
   const size_t comma = url.find(',');
@@ -81,6 +82,28 @@ absl::StatusOr<VlmQuestion> ParseChatBody(const std::string& body) {
   return question;
 }
 
+absl::StatusOr<std::vector<std::string>> ParseEmbeddingsBody(const std::string& body) {
+  if (body.size() > kMaxBodyBytes) return InvalidField("body", "is larger than 32 MiB");
+  const nlohmann::json json = nlohmann::json::parse(body, nullptr, false);
+  const nlohmann::json input =
+      json.is_object() ? json.value("input", nlohmann::json()) : nlohmann::json();
+  std::vector<std::string> texts;
+  if (input.is_string()) {
+    texts.push_back(input.get<std::string>());
+  } else if (input.is_array() && !input.empty() && input.size() <= kMaxEmbeddingInputs) {
+    for (const nlohmann::json& text : input) {
+      if (!text.is_string()) return InvalidField("input", "must hold strings");
+      texts.push_back(text.get<std::string>());
+    }
+  } else {
+    return InvalidField("input", "must be a string or 1..256 strings");
+  }
+  for (const std::string& text : texts) {
+    if (text.empty()) return InvalidField("input", "texts must not be empty");
+  }
+  return texts;
+}
+
 SimVlmServer::SimVlmServer(std::unique_ptr<SimVlm> model)
     : model_(std::move(model)), server_(std::make_unique<httplib::Server>()) {}
 
@@ -92,19 +115,55 @@ absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_pt
   SimVlmServer* self = server.get();
   self->server_->set_tcp_nodelay(true);
   self->server_->set_payload_max_length(kMaxBodyBytes);
-  self->server_->Post("/v1/chat/completions", [self](const httplib::Request& req,
-                                                     httplib::Response& res) {
+  // Counts the request and checks the key; false (with the 401 written) for a wrong key.
+  auto admit = [self](const httplib::Request& req, httplib::Response& res, const SimVlm& model) {
     {
       absl::MutexLock lock(&self->mu_);
       ++self->requests_;
     }
-    const std::shared_ptr<const SimVlm> model = self->model();
-    const std::string& key = model->config().api_key;
+    const std::string& key = model.config().api_key;
     if (!key.empty() && req.get_header_value("Authorization") != absl::StrCat("Bearer ", key)) {
       res.status = 401;
       res.set_content(ErrorBody(absl::UnauthenticatedError("invalid API key")), "application/json");
+      return false;
+    }
+    return true;
+  };
+  self->server_->Post("/v1/embeddings", [self, admit](const httplib::Request& req,
+                                                      httplib::Response& res) {
+    const std::shared_ptr<const SimVlm> model = self->model();
+    if (!admit(req, res, *model)) return;
+    absl::StatusOr<std::vector<std::string>> texts = ParseEmbeddingsBody(req.body);
+    if (!texts.ok()) {
+      res.status = 400;
+      res.set_content(ErrorBody(texts.status()), "application/json");
       return;
     }
+    nlohmann::json data = nlohmann::json::array();
+    int tokens = 0;
+    for (size_t i = 0; i < texts->size(); ++i) {
+      data.push_back({{"object", "embedding"},
+                      {"index", i},
+                      {"embedding", model->EmbedText((*texts)[i]).vector}});
+      tokens += 1 + static_cast<int>((*texts)[i].size() / 4);
+    }
+    {
+      absl::MutexLock lock(&self->mu_);
+      ++self->served_.embedding_answers;
+      self->served_.tokens += tokens;
+    }
+    const nlohmann::json request = nlohmann::json::parse(req.body, nullptr, false);
+    res.set_content(nlohmann::json{{"object", "list"},
+                                   {"data", data},
+                                   {"model", request.value("model", "sim-vlm")},
+                                   {"usage", {{"prompt_tokens", tokens}, {"total_tokens", tokens}}}}
+                        .dump(),
+                    "application/json");
+  });
+  self->server_->Post("/v1/chat/completions", [self, admit](const httplib::Request& req,
+                                                            httplib::Response& res) {
+    const std::shared_ptr<const SimVlm> model = self->model();
+    if (!admit(req, res, *model)) return;
     absl::StatusOr<VlmQuestion> question = ParseChatBody(req.body);
     absl::StatusOr<VlmReply> reply = question.ok() ? model->Answer(*question) : question.status();
     if (!reply.ok()) {

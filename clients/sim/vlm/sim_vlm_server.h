@@ -1,5 +1,6 @@
-// The simulated VLM behind the OpenAI-compatible chat-completions wire (POST
-// <base>/chat/completions, text and image_url data-URL parts), on 127.0.0.1: the model proxy
+// The simulated VLM behind the OpenAI-compatible wire (POST <base>/chat/completions, text and
+// image_url data-URL parts; POST <base>/embeddings, the text encoder of the detector's embedding
+// space, SimVlm::EmbedText), on 127.0.0.1: the model proxy
 // reaches it like any vendor (kind openai, base_url, model, key from a file). Each answer states
 // its simulated latency in the x-semnav-simulated-latency-s header, which the proxy reports as the
 // call's latency.
@@ -38,9 +39,10 @@ class SimVlmServer {
   // Totals over the answers served (for per-episode reports: take differences).
   struct Served {
     int answers = 0;
-    int vision_answers = 0;  // of which about an image (the seed-000 search prompt)
-    int64_t tokens = 0;      // input + output
-    double latency_s = 0.0;  // simulated model time
+    int vision_answers = 0;     // of which about an image (the seed-000 search prompt)
+    int embedding_answers = 0;  // /embeddings calls answered (not in `answers`)
+    int64_t tokens = 0;         // input + output
+    double latency_s = 0.0;     // simulated model time
   };
   Served served() const;
   // The answers served so far, oldest first (at most the last 1000), for episode timelines.
@@ -64,5 +66,9 @@ class SimVlmServer {
 // The OpenAI chat body as a question: text parts joined by newlines, image_url data URLs decoded
 // (PNG/JPEG). INVALID_ARGUMENT naming the field for a malformed body.
 absl::StatusOr<VlmQuestion> ParseChatBody(const std::string& body);
+
+// The OpenAI embeddings body's texts: `input` is one string or 1..256 strings, none empty.
+// INVALID_ARGUMENT naming the field otherwise.
+absl::StatusOr<std::vector<std::string>> ParseEmbeddingsBody(const std::string& body);
 
 }  // namespace semnav::sim::vlm

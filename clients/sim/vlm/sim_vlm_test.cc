@@ -7,6 +7,8 @@
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
+#include "clients/sim/core/class_embedding.h"
+#include "clients/sim/core/detector.h"
 #include "clients/sim/vlm/code_reader.h"
 #include "clients/sim/vlm/sim_vlm_test_world.h"
 #include "services/common/status/field_error.h"
@@ -70,6 +72,42 @@ TEST(SimVlmConfigTest, ErrorsAtAccuracyScaleTheDefaults) {
   EXPECT_NEAR(blind.miss_rate, 1.0, 1e-12);
   EXPECT_NEAR(blind.code_off_by_one_rate, 2.0 / 3, 1e-12);
   EXPECT_NEAR(ErrorsAtAccuracy(-3.0).miss_rate, 1.0, 1e-12);  // clamped into [0, 1]
+}
+
+// The text tower of the detector's embedding space: a text naming a class of the world (in any
+// wording the lexicon knows) lands near the vector the detector's detections of it carry, far from
+// every other class; a concept the world has no class for is near none of them.
+TEST(SimVlmTest, TextEmbeddingLiesNearTheDetectorsVectorOfTheClassItNames) {
+  const World world = SearchWorld();  // backpack, bench, road
+  FrameLog log;
+  auto model = SimVlm::Create(world, &log, SimVlmConfig());
+  ASSERT_TRUE(model.ok());
+  const DetectorConfig detector;  // the embedding space SimVlmConfig's defaults name
+  const std::vector<float> backpack =
+      ClassEmbedding("backpack", detector.embedding_dim, detector.embedding_seed);
+  const std::vector<float> bench =
+      ClassEmbedding("bench", detector.embedding_dim, detector.embedding_seed);
+  Rng rng(5);
+  const std::vector<float> detection =
+      NoisyEmbedding(backpack, detector.embedding_noise, rng);  // what one detection carries
+  for (const std::string text : {"backpack", "the red backpack", "rucksacks", "背包"}) {
+    const SimVlm::TextEmbedding embedded = (*model)->EmbedText(text);
+    EXPECT_EQ(embedded.concept_name, "backpack") << text;
+    ASSERT_EQ(embedded.vector.size(), 64u);
+    // Noise of norm 0.3 on each side: about 1 / sqrt(1.09) = 0.96 to the class, 0.92 to a
+    // detection.
+    EXPECT_GT(CosineSimilarity(embedded.vector, backpack), 0.9) << text;
+    EXPECT_GT(CosineSimilarity(embedded.vector, detection), 0.8) << text;
+    EXPECT_LT(std::abs(CosineSimilarity(embedded.vector, bench)), 0.45) << text;
+  }
+  EXPECT_EQ((*model)->EmbedText("road").concept_name, "road");  // stuff is a class too
+  const SimVlm::TextEmbedding coffee = (*model)->EmbedText("coffee machine");
+  EXPECT_EQ(coffee.concept_name, "coffee machine");
+  EXPECT_LT(std::abs(CosineSimilarity(coffee.vector, backpack)), 0.45);
+  EXPECT_LT(std::abs(CosineSimilarity(coffee.vector, bench)), 0.45);
+  // A pure function of (config, text).
+  EXPECT_EQ((*model)->EmbedText("backpack").vector, (*model)->EmbedText("backpack").vector);
+  EXPECT_NE((*model)->EmbedText("backpack").vector, (*model)->EmbedText("背包").vector);
 }
 
 TEST(SimVlmCodeReaderTest, ReadsEveryCodeTheGatewayPrinted) {
@@ -318,6 +356,12 @@ TEST(SimVlmTest, ConfigIsValidated) {
   config = SimVlmConfig();
   config.latency.vision_median_s = -1;
   EXPECT_EQ(ErrorField(SimVlm::Create(world, &log, config).status()), "latency.vision_median_s");
+  config = SimVlmConfig();
+  config.embedding_dim = 0;
+  EXPECT_EQ(ErrorField(SimVlm::Create(world, &log, config).status()), "embedding_dim");
+  config = SimVlmConfig();
+  config.text_embedding_noise = -0.1;
+  EXPECT_EQ(ErrorField(SimVlm::Create(world, &log, config).status()), "text_embedding_noise");
 }
 
 TEST(SimVlmTest, LabelNamesTargetByWholeWords) {

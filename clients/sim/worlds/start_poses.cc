@@ -16,72 +16,61 @@ GroundTruthGrid ModalityGrid(const World& world, Modality modality, double altit
   return RasterizeOccupancy(world, options);
 }
 
-std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid) {
-  std::vector<int> label(grid.cells.size(), -1);
-  std::vector<int> sizes;
-  for (size_t seed = 0; seed < grid.cells.size(); ++seed) {
-    if (grid.cells[seed] != 0 || label[seed] >= 0) continue;
-    const int id = static_cast<int>(sizes.size());
-    int size = 0;
-    std::deque<size_t> queue{seed};
-    label[seed] = id;
-    while (!queue.empty()) {
-      const size_t c = queue.front();
-      queue.pop_front();
-      ++size;
-      const int x = static_cast<int>(c % grid.width), y = static_cast<int>(c / grid.width);
-      const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
-      for (int k = 0; k < 4; ++k) {
-        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid.width || ny[k] >= grid.height) continue;
-        const size_t n = static_cast<size_t>(ny[k]) * grid.width + nx[k];
-        if (grid.cells[n] == 0 && label[n] < 0) {
-          label[n] = id;
-          queue.push_back(n);
-        }
-      }
-    }
-    sizes.push_back(size);
-  }
-  std::vector<uint8_t> mask(grid.cells.size(), 0);
-  if (sizes.empty()) return mask;
-  const int best = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
-  for (size_t c = 0; c < mask.size(); ++c) mask[c] = label[c] == best ? 1 : 0;
-  return mask;
-}
-
 namespace {
 
-// 1 for the free cells of 4-connected free regions whose cells reach at least `min_radius_m` from
-// the region's centroid (habitat-sim's island radius, on cell centres).
+// Calls visit(index) for each 4-neighbour of cell (x, y) inside the grid, in the order +x, -x,
+// +y, -y (the order breaks ties in the searches below).
+template <typename Visit>
+void ForEachNeighbour4(const GroundTruthGrid& grid, int x, int y, Visit visit) {
+  const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
+  for (int k = 0; k < 4; ++k) {
+    if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid.width || ny[k] >= grid.height) continue;
+    visit(static_cast<size_t>(ny[k]) * grid.width + nx[k]);
+  }
+}
+
+// The 4-connected components of the free cells (value 0), numbered in raster order of their
+// first cell; each component's cells in breadth-first order from that cell.
+struct FreeComponents {
+  std::vector<int> label;                  // per cell: its component, -1 when not free
+  std::vector<std::vector<size_t>> cells;  // per component
+};
+
+FreeComponents LabelFreeComponents(const GroundTruthGrid& grid) {
+  FreeComponents components;
+  components.label.assign(grid.cells.size(), -1);
+  for (size_t seed = 0; seed < grid.cells.size(); ++seed) {
+    if (grid.cells[seed] != 0 || components.label[seed] >= 0) continue;
+    const int id = static_cast<int>(components.cells.size());
+    std::vector<size_t> cells{seed};
+    components.label[seed] = id;
+    for (size_t i = 0; i < cells.size(); ++i) {
+      const int x = static_cast<int>(cells[i] % grid.width);
+      const int y = static_cast<int>(cells[i] / grid.width);
+      ForEachNeighbour4(grid, x, y, [&](size_t n) {
+        if (grid.cells[n] != 0 || components.label[n] >= 0) return;
+        components.label[n] = id;
+        cells.push_back(n);
+      });
+    }
+    components.cells.push_back(std::move(cells));
+  }
+  return components;
+}
+
+// 1 for the free cells of components whose cells reach at least `min_radius_m` from the
+// component's centroid (habitat-sim's island radius, on cell centres).
 std::vector<uint8_t> CellsOnIslands(const GroundTruthGrid& grid, double min_radius_m) {
   std::vector<uint8_t> on(grid.cells.size(), 0);
-  std::vector<uint8_t> seen(grid.cells.size(), 0);
-  for (size_t seed = 0; seed < grid.cells.size(); ++seed) {
-    if (grid.cells[seed] != 0 || seen[seed] != 0) continue;
-    std::vector<size_t> island{seed};
-    seen[seed] = 1;
+  const auto centre = [&](size_t c) {
+    return grid.CellCentre(static_cast<int>(c % grid.width), static_cast<int>(c / grid.width));
+  };
+  for (const std::vector<size_t>& island : LabelFreeComponents(grid).cells) {
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-    for (size_t i = 0; i < island.size(); ++i) {
-      const int x = static_cast<int>(island[i] % grid.width);
-      const int y = static_cast<int>(island[i] / grid.width);
-      sum += grid.CellCentre(x, y);
-      const int nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
-      for (int k = 0; k < 4; ++k) {
-        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid.width || ny[k] >= grid.height) continue;
-        const size_t n = static_cast<size_t>(ny[k]) * grid.width + nx[k];
-        if (grid.cells[n] != 0 || seen[n] != 0) continue;
-        seen[n] = 1;
-        island.push_back(n);
-      }
-    }
+    for (const size_t c : island) sum += centre(c);
     const Eigen::Vector2d centroid = sum / static_cast<double>(island.size());
     double radius = 0.0;
-    for (const size_t c : island) {
-      radius = std::max(radius, (grid.CellCentre(static_cast<int>(c % grid.width),
-                                                 static_cast<int>(c / grid.width)) -
-                                 centroid)
-                                    .norm());
-    }
+    for (const size_t c : island) radius = std::max(radius, (centre(c) - centroid).norm());
     if (radius < min_radius_m) continue;
     for (const size_t c : island) on[c] = 1;
   }
@@ -89,6 +78,19 @@ std::vector<uint8_t> CellsOnIslands(const GroundTruthGrid& grid, double min_radi
 }
 
 }  // namespace
+
+std::vector<uint8_t> LargestFreeRegion(const GroundTruthGrid& grid) {
+  const FreeComponents components = LabelFreeComponents(grid);
+  std::vector<uint8_t> mask(grid.cells.size(), 0);
+  if (components.cells.empty()) return mask;
+  const auto largest =
+      std::max_element(components.cells.begin(), components.cells.end(),
+                       [](const std::vector<size_t>& a, const std::vector<size_t>& b) {
+                         return a.size() < b.size();
+                       });
+  for (const size_t c : *largest) mask[c] = 1;
+  return mask;
+}
 
 StartClearanceSearch::StartClearanceSearch(const World& world, Modality modality, double altitude,
                                            const StartClearance& clearance, PlaceFilter allowed)
@@ -130,15 +132,11 @@ std::optional<Eigen::Vector2d> StartClearanceSearch::Nearest(const Eigen::Vector
     queue.pop_front();
     const Eigen::Vector2d centre = grid_.CellCentre(c.x(), c.y());
     if ((!allowed_ || allowed_(centre)) && Clear(centre)) return centre;
-    const int nx[4] = {c.x() + 1, c.x() - 1, c.x(), c.x()};
-    const int ny[4] = {c.y(), c.y(), c.y() + 1, c.y() - 1};
-    for (int k = 0; k < 4; ++k) {
-      if (nx[k] < 0 || ny[k] < 0 || nx[k] >= grid_.width || ny[k] >= grid_.height) continue;
-      const size_t n = index(nx[k], ny[k]);
-      if (region_[n] == 0 || seen[n] != 0) continue;
+    ForEachNeighbour4(grid_, c.x(), c.y(), [&](size_t n) {
+      if (region_[n] == 0 || seen[n] != 0) return;
       seen[n] = 1;
-      queue.emplace_back(nx[k], ny[k]);
-    }
+      queue.emplace_back(static_cast<int>(n % grid_.width), static_cast<int>(n / grid_.width));
+    });
   }
   return std::nullopt;
 }

@@ -4,7 +4,9 @@
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
 #include "services/common/status/field_error.h"
+#include "services/common/status/retry_after.h"
 
 namespace semnav {
 namespace {
@@ -26,23 +28,33 @@ grpc::Status ToGrpcStatus(const absl::Status& status) {
   rich.set_message(message);
   const std::string error_info_url =
       absl::StrCat(kTypeUrlPrefix, semnav::common::v1::ErrorInfo::descriptor()->full_name());
-  bool has_error_info = false;
+  std::optional<semnav::common::v1::ErrorInfo> attached;
   status.ForEachPayload([&](absl::string_view type_url, const absl::Cord& payload) {
     if (!absl::StartsWith(type_url, kTypeUrlPrefix)) return;
-    has_error_info |= type_url == error_info_url;
+    if (type_url == error_info_url) {
+      attached.emplace().ParseFromString(std::string(payload));
+      return;
+    }
     google::protobuf::Any* any = rich.add_details();
     any->set_type_url(std::string(type_url));
     any->set_value(std::string(payload));
   });
-  // Every error carries an ErrorInfo: the field and reason core named, or the code's name.
-  if (!has_error_info) {
-    semnav::common::v1::ErrorInfo info;
+  // Every error carries an ErrorInfo: the field and reason core named, or the code's name; a
+  // retry hint (a vendor's Retry-After) rides in its metadata.
+  semnav::common::v1::ErrorInfo info;
+  if (attached.has_value()) {
+    info = *std::move(attached);
+  } else {
     info.set_reason(ErrorReason(status).value_or(absl::StatusCodeToString(status.code())));
     info.set_field(ErrorField(status).value_or(""));
-    google::protobuf::Any* any = rich.add_details();
-    any->set_type_url(error_info_url);
-    any->set_value(info.SerializeAsString());
   }
+  if (const std::optional<absl::Duration> after = RetryAfter(status); after.has_value()) {
+    (*info.mutable_metadata())[kRetryAfterMetadataKey] =
+        absl::StrFormat("%.3f", absl::ToDoubleSeconds(*after));
+  }
+  google::protobuf::Any* any = rich.add_details();
+  any->set_type_url(error_info_url);
+  any->set_value(info.SerializeAsString());
   return grpc::Status(code, message, rich.SerializeAsString());
 }
 
@@ -53,6 +65,15 @@ absl::Status FromGrpcStatus(const grpc::Status& status) {
   if (!status.error_details().empty() && rich.ParseFromString(status.error_details())) {
     for (const google::protobuf::Any& any : rich.details()) {
       result.SetPayload(any.type_url(), absl::Cord(any.value()));
+    }
+    if (const std::optional<semnav::common::v1::ErrorInfo> info =
+            GetDetail<semnav::common::v1::ErrorInfo>(result);
+        info.has_value() && info->metadata().contains(kRetryAfterMetadataKey)) {
+      if (const std::optional<absl::Duration> after =
+              ParseRetryAfterSeconds(info->metadata().at(kRetryAfterMetadataKey));
+          after.has_value()) {
+        SetRetryAfter(result, *after);
+      }
     }
   }
   return result;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "services/common/status/field_error.h"
+#include "services/common/status/retry_after.h"
 
 namespace semnav {
 namespace {
@@ -96,6 +97,42 @@ TEST(GrpcStatusTest, HugeMessagesAreCutShort) {
   const grpc::Status wire = ToGrpcStatus(absl::InvalidArgumentError(std::string(1 << 20, 'x')));
   EXPECT_LE(wire.error_message().size(), 1100u);
   EXPECT_LT(wire.error_details().size(), 1200u);
+}
+
+// A vendor's Retry-After crosses the wire in ErrorInfo.metadata and comes back as the same hint,
+// next to the field and reason core named.
+TEST(GrpcStatusTest, RetryAfterTravelsInErrorInfoMetadata) {
+  absl::Status status = FieldStatus(absl::StatusCode::kUnavailable, "model_alias",
+                                    "no backend answered", "BACKEND_UNAVAILABLE");
+  SetRetryAfter(status, absl::Milliseconds(2500));
+  const grpc::Status wire = ToGrpcStatus(status);
+  const std::optional<ErrorInfo> info = GetDetail<ErrorInfo>(wire);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->reason(), "BACKEND_UNAVAILABLE");
+  EXPECT_EQ(info->field(), "model_alias");
+  EXPECT_EQ(info->metadata().at("retry_after_s"), "2.500");
+  const absl::Status back = FromGrpcStatus(wire);
+  EXPECT_EQ(RetryAfter(back), absl::Milliseconds(2500));
+  // An attached ErrorInfo keeps its own metadata and gains the hint.
+  absl::Status typed = FieldError(absl::StatusCode::kResourceExhausted, "", "rate limited", "RL");
+  SetRetryAfter(typed, absl::Seconds(7));
+  const std::optional<ErrorInfo> typed_info = GetDetail<ErrorInfo>(ToGrpcStatus(typed));
+  EXPECT_EQ(typed_info->reason(), "RL");
+  EXPECT_EQ(typed_info->metadata().at("retry_after_s"), "7.000");
+  // Without a hint nothing is added.
+  EXPECT_FALSE(RetryAfter(FromGrpcStatus(ToGrpcStatus(absl::UnavailableError("x")))).has_value());
+}
+
+TEST(RetryAfterTest, DeltaSecondsOnlyAndBounded) {
+  EXPECT_EQ(ParseRetryAfterSeconds("120"), absl::Seconds(120));
+  EXPECT_EQ(ParseRetryAfterSeconds(" 1.5 "), absl::Milliseconds(1500));
+  EXPECT_FALSE(ParseRetryAfterSeconds("Wed, 21 Oct 2015 07:28:00 GMT").has_value());
+  EXPECT_FALSE(ParseRetryAfterSeconds("-1").has_value());
+  EXPECT_FALSE(ParseRetryAfterSeconds("nan").has_value());
+  EXPECT_FALSE(ParseRetryAfterSeconds("86401").has_value());
+  absl::Status ok = absl::OkStatus();
+  SetRetryAfter(ok, absl::Seconds(1));
+  EXPECT_FALSE(RetryAfter(ok).has_value());  // an OK status carries nothing
 }
 
 }  // namespace

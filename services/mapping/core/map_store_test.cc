@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <filesystem>
 #include <fstream>
 
@@ -108,6 +109,31 @@ TEST(MapSerializationTest, PayloadWithoutGridStillLoadsWithoutOne) {
   // The new section is only appended: the first three are byte-identical to the old format.
   const SavedGrid grid = TwoCells();
   EXPECT_EQ(Payload(&grid).substr(0, old_payload.size()), old_payload);
+}
+
+TEST(MapSerializationTest, SemanticPointsRoundTripBitForBitAndReadAsJson) {
+  // Floats whose short text is tricky, and labels that JSON must escape.
+  const std::vector<Eigen::Vector3f> awkward = {{0.1f, -0.0f, 1e-7f},
+                                                {123456.789f, -3.4e38f, 1.17549435e-38f}};
+  const std::map<std::string, std::vector<Eigen::Vector3f>> points = {
+      {"chair", awkward}, {"say \"cup\"\\", {{1, 2, 3}}}, {"椅子", {}}};
+  const octomap::OcTree tree(0.05);
+  const std::string payload = SerializeMap(tree, {}, 1, points, nullptr);
+  const absl::StatusOr<MapContent> content = ParseMap(payload);
+  ASSERT_TRUE(content.ok()) << content.status();
+  ASSERT_EQ(content->semantic_points.size(), 3u);
+  const std::vector<Eigen::Vector3f>& chair = content->semantic_points.at("chair");
+  ASSERT_EQ(chair.size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_EQ(std::bit_cast<uint32_t>(chair[i][axis]), std::bit_cast<uint32_t>(awkward[i][axis]))
+          << i << " " << axis;
+    }
+  }
+  EXPECT_EQ(content->semantic_points.at("say \"cup\"\\").size(), 1u);
+  // The section is the JSON object the format documents.
+  const std::string section_start = "{\"chair\":[0.10000000149011612,-0.0,";
+  EXPECT_NE(payload.find(section_start), std::string::npos);
 }
 
 TEST(MapSerializationTest, DamagedGridSectionIsDataLoss) {

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <deque>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -87,18 +89,33 @@ GridWindow Union(const GridWindow& a, const GridWindow& b) {
 }  // namespace
 
 MappingEngine::MappingEngine(const MappingConfig& config)
-    : config_(config), integrator_(config.threads), state_(std::make_unique<State>(config)) {}
+    : config_(config),
+      integrator_(config.threads),
+      key_space_(config.octomap_resolution_m),
+      state_(std::make_unique<State>(config)) {}
 
 MappingEngine::~MappingEngine() = default;
 
-absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
-  absl::MutexLock lock(&mu_);
-  State& s = *state_;
+ValidationContext MappingEngine::ContextFor(const std::string& robot_id) const {
   ValidationContext context;
-  if (const auto it = s.last_stamp.find(frame.robot_id); it != s.last_stamp.end())
+  const State& s = *state_;
+  if (const auto it = s.last_stamp.find(robot_id); it != s.last_stamp.end())
     context.last_stamp_ns = it->second;
   context.embedding_dim = s.embedding_dim;
+  return context;
+}
+
+absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
+  ValidationContext context;
+  {
+    absl::MutexLock lock(&mu_);
+    context = ContextFor(frame.robot_id);
+  }
   if (absl::Status status = ValidateFrame(frame, context); !status.ok()) return status;
+
+  // The frame's own work runs outside the lock: decoding, projection, ray casting (most of a
+  // frame's cost) and lifting the detections. Frames of different robots then prepare in
+  // parallel, and grid fetches and queries wait only for the map update itself.
   FrameResult result;
   if (!frame.rgb_encoded.empty()) {
     const cv::Mat encoded(1, static_cast<int>(frame.rgb_encoded.size()), CV_8U,
@@ -107,7 +124,6 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
     if (gray.empty()) return InvalidField("rgb.data", "not a decodable PNG or JPEG image");
     result.blurred = LaplacianVariance(gray) < config_.blur_min_laplacian_variance;
   }
-
   const cv::Mat depth = DecodeDepth(frame.depth);
   std::vector<Eigen::Vector3f> points =
       ProjectDepth(depth, frame.intrinsics, frame.pose, config_.range, config_.pixel_stride);
@@ -118,23 +134,35 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
     if (range >= config_.range.min_m && range <= config_.range.max_m)
       points.push_back(rotation * p + origin);
   }
-  const std::vector<TouchedVoxel> touched = integrator_.Integrate(*s.tree, points, origin);
-  result.voxels_updated = static_cast<uint32_t>(touched.size());
-  const absl::flat_hash_set<VoxelColumns::ColumnId> columns = s.columns.Apply(touched);
-  s.grid.Update(s.columns, columns);
-
-  std::vector<ObjectObservation> observations;
+  std::vector<VoxelUpdate> updates = integrator_.CastScan(key_space_, points, origin);
+  std::vector<std::pair<const Detection*, LiftedDetection>> lifted_detections;
   if (!result.blurred) {
     for (const Detection& detection : frame.detections) {
       std::optional<LiftedDetection> lifted =
           LiftDetection(detection, depth, frame.intrinsics, frame.pose, config_.range, config_.lift,
                         frame.stamp_ns, frame.robot_id);
-      if (!lifted) continue;
-      s.semantic.Add(detection.label, lifted->points);
-      observations.push_back(std::move(lifted->observation));
-      if (!detection.embedding.empty())
-        s.embedding_dim = static_cast<int>(detection.embedding.size());
+      if (lifted) lifted_detections.emplace_back(&detection, *std::move(lifted));
     }
+  }
+
+  absl::MutexLock lock(&mu_);
+  State& s = *state_;
+  // Another frame may have moved this robot's stamp or fixed the embedding length meanwhile.
+  const ValidationContext now = ContextFor(frame.robot_id);
+  if (now.last_stamp_ns != context.last_stamp_ns || now.embedding_dim != context.embedding_dim) {
+    if (absl::Status status = ValidateFrame(frame, now); !status.ok()) return status;
+  }
+  const std::vector<TouchedVoxel> touched = ApplyVoxelUpdates(*s.tree, std::move(updates));
+  result.voxels_updated = static_cast<uint32_t>(touched.size());
+  const absl::flat_hash_set<VoxelColumns::ColumnId> columns = s.columns.Apply(touched);
+  s.grid.Update(s.columns, columns);
+
+  std::vector<ObjectObservation> observations;
+  for (auto& [detection, lifted] : lifted_detections) {
+    s.semantic.Add(detection->label, lifted.points);
+    observations.push_back(std::move(lifted.observation));
+    if (!detection->embedding.empty())
+      s.embedding_dim = static_cast<int>(detection->embedding.size());
   }
   result.detections_used = static_cast<uint32_t>(observations.size());
   bool& untrusted = s.pose_untrusted[frame.robot_id];
@@ -365,14 +393,27 @@ uint64_t MappingEngine::AwaitChange(uint64_t revision, absl::Duration timeout) c
 }
 
 std::string MappingEngine::Serialize() const {
-  absl::MutexLock lock(&mu_);
-  const State& s = *state_;
+  // Copied under the lock and written outside it: writing the whole map (tens of MB of text in
+  // the fleet soak) under the lock held up every frame, grid fetch and query meanwhile, and the
+  // live snapshot does it every 5 s.
+  std::optional<octomap::OcTree> tree;
+  std::vector<SceneObject> objects;
+  uint64_t next_object_id = 0;
+  std::map<std::string, std::vector<Eigen::Vector3f>> points;
   SavedGrid grid;
   grid.resolution_m = config_.grid.resolution_m;
-  for (const HierarchicalGrid::CellState& c : s.grid.Cells()) {
-    grid.cells.push_back({c.index.x, c.index.y, c.log_odds, c.height, c.structure});
+  {
+    absl::MutexLock lock(&mu_);
+    const State& s = *state_;
+    tree.emplace(*s.tree);
+    objects = s.scene.objects();
+    next_object_id = s.scene.next_id();
+    points = s.semantic.points();
+    for (const HierarchicalGrid::CellState& c : s.grid.Cells()) {
+      grid.cells.push_back({c.index.x, c.index.y, c.log_odds, c.height, c.structure});
+    }
   }
-  return SerializeMap(*s.tree, s.scene.objects(), s.scene.next_id(), s.semantic.points(), &grid);
+  return SerializeMap(*tree, objects, next_object_id, points, &grid);
 }
 
 absl::Status MappingEngine::Restore(const std::string& payload) {

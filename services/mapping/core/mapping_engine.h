@@ -13,6 +13,7 @@
 #include "absl/status/statusor.h"
 #include "absl/synchronization/mutex.h"
 #include "absl/time/time.h"
+#include "services/mapping/core/frame_validation.h"
 #include "services/mapping/core/mapping_config.h"
 #include "services/mapping/core/octomap_integrator.h"
 #include "services/mapping/core/sensor_frame.h"
@@ -91,9 +92,14 @@ class MappingEngine {
  private:
   struct State;
   void RecordGridChange(const GridWindow& changed) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  ValidationContext ContextFor(const std::string& robot_id) const
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
 
   MappingConfig config_;
   OctomapIntegrator integrator_;
+  // An empty tree of the map's resolution (a restored map must have the same): converts
+  // coordinates to keys for ray casting outside the lock.
+  const octomap::OcTree key_space_;
   mutable absl::Mutex mu_;
   std::unique_ptr<State> state_ ABSL_GUARDED_BY(mu_);
   uint64_t revision_ ABSL_GUARDED_BY(mu_) = 0;

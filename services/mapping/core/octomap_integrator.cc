@@ -114,6 +114,12 @@ void CarveRay(const Eigen::Vector3d& origin_units, const octomap::OcTreeKey& ori
 std::vector<TouchedVoxel> OctomapIntegrator::Integrate(octomap::OcTree& tree,
                                                        const std::vector<Eigen::Vector3f>& points,
                                                        const Eigen::Vector3f& origin) const {
+  return ApplyVoxelUpdates(tree, CastScan(tree, points, origin));
+}
+
+std::vector<VoxelUpdate> OctomapIntegrator::CastScan(const octomap::OcTree& tree,
+                                                     const std::vector<Eigen::Vector3f>& points,
+                                                     const Eigen::Vector3f& origin) const {
   octomap::OcTreeKey origin_key;
   if (points.empty() ||
       !tree.coordToKeyChecked(octomap::point3d(origin.x(), origin.y(), origin.z()), origin_key)) {
@@ -164,7 +170,7 @@ std::vector<TouchedVoxel> OctomapIntegrator::Integrate(octomap::OcTree& tree,
       updates.push_back({box.KeyAt(i), hit.Test(i)});
     }
   }
-  return ApplyVoxelUpdates(tree, std::move(updates));
+  return updates;
 }
 
 }  // namespace semnav::mapping

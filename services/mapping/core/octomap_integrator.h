@@ -5,13 +5,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace semnav::mapping {
+#include "services/mapping/core/octree_batch_update.h"
 
-// A voxel changed by one scan and its occupancy after the update.
-struct TouchedVoxel {
-  octomap::OcTreeKey key;
-  bool occupied = false;
-};
+namespace semnav::mapping {
 
 // Inserts scans into an OcTree, equivalent to OctoMap's discretized insertPointCloud
 // (free space by ray casting to each distinct endpoint voxel, endpoint voxels occupied, a voxel
@@ -26,6 +22,13 @@ class OctomapIntegrator {
   std::vector<TouchedVoxel> Integrate(octomap::OcTree& tree,
                                       const std::vector<Eigen::Vector3f>& points,
                                       const Eigen::Vector3f& origin) const;
+
+  // Integrate's ray casting alone: one update per voxel the scan hits or passes, to give to
+  // ApplyVoxelUpdates. `key_space` only converts coordinates to keys (any tree of the same
+  // resolution), so this needs no lock on the map being updated.
+  std::vector<VoxelUpdate> CastScan(const octomap::OcTree& key_space,
+                                    const std::vector<Eigen::Vector3f>& points,
+                                    const Eigen::Vector3f& origin) const;
 
  private:
   int threads_;

@@ -5,6 +5,7 @@
 #include "services/mapping/core/depth_projection.h"
 #include "services/mapping/core/frame_validation.h"
 #include "services/mapping/core/octree_agreement.h"
+#include "services/mapping/core/octree_batch_update.h"
 #include "services/mapping/testing/synthetic_room.h"
 
 namespace semnav::mapping {
@@ -30,6 +31,33 @@ TEST(OctomapIntegratorTest, SingleRayMarksEndpointOccupiedAndPathFree) {
   int occupied = 0;
   for (const TouchedVoxel& v : touched) occupied += v.occupied ? 1 : 0;
   EXPECT_EQ(occupied, 1);
+}
+
+TEST(OctomapIntegratorTest, CastingOnAnEmptyKeySpaceTreeThenApplyingEqualsIntegrate) {
+  // The mapping engine casts rays outside its lock with an empty tree of the same resolution.
+  const std::vector<Eigen::Vector3f> points = {
+      {1.05f, 0.05f, 0.05f}, {0.45f, 0.95f, -0.25f}, {-0.75f, -0.35f, 0.55f}};
+  const Eigen::Vector3f origin(0.05f, 0.05f, 0.05f);
+  const OctomapIntegrator integrator(2);
+  octomap::OcTree integrated(0.1);
+  octomap::OcTree applied(0.1);
+  for (int scan = 0; scan < 3; ++scan) {  // later scans update voxels already in the tree
+    const std::vector<TouchedVoxel> expected = integrator.Integrate(integrated, points, origin);
+    const octomap::OcTree key_space(0.1);
+    const std::vector<TouchedVoxel> touched =
+        ApplyVoxelUpdates(applied, integrator.CastScan(key_space, points, origin));
+    ASSERT_EQ(touched.size(), expected.size());
+    for (size_t i = 0; i < touched.size(); ++i) {
+      EXPECT_EQ(touched[i].key, expected[i].key);
+      EXPECT_EQ(touched[i].occupied, expected[i].occupied);
+    }
+  }
+  ASSERT_EQ(applied.size(), integrated.size());
+  for (auto it = integrated.begin_leafs(); it != integrated.end_leafs(); ++it) {
+    const octomap::OcTreeNode* node = applied.search(it.getKey(), it.getDepth());
+    ASSERT_NE(node, nullptr);
+    EXPECT_EQ(node->getLogOdds(), it->getLogOdds());
+  }
 }
 
 TEST(OctomapIntegratorTest, AgreesWithPlainInsertPointCloudOnRoomSequence) {

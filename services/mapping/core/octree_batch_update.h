@@ -4,9 +4,13 @@
 
 #include <vector>
 
-#include "services/mapping/core/octomap_integrator.h"
-
 namespace semnav::mapping {
+
+// A voxel changed by one scan and its occupancy after the update.
+struct TouchedVoxel {
+  octomap::OcTreeKey key;
+  bool occupied = false;
+};
 
 // One measurement for a voxel: hit (occupied) or passed by a ray (free).
 struct VoxelUpdate {

@@ -3,6 +3,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
+#include "services/common/status/retry_after.h"
 #include "services/modelproxy/core/anthropic_wire.h"
 #include "services/modelproxy/core/dashscope_wire.h"
 #include "services/modelproxy/core/http_status.h"
@@ -56,7 +57,14 @@ absl::StatusOr<HttpResponse> HttpBackend::PostForBody(const std::string& path,
   if (response->status != 200) {
     std::string detail = key_.Redact(wire_->ErrorMessage(response->body));
     if (detail.size() > kMaxVendorMessage) detail = detail.substr(0, kMaxVendorMessage) + "...";
-    return StatusFromHttp(response->status, detail);
+    absl::Status status = StatusFromHttp(response->status, detail);
+    // A vendor that says when to come back (429, 503) is believed: the proxy's retry waits at
+    // least that long, and the hint reaches the caller's back-off with the final error.
+    if (auto it = response->headers.find("retry-after"); it != response->headers.end()) {
+      if (std::optional<absl::Duration> after = ParseRetryAfterSeconds(it->second))
+        SetRetryAfter(status, *after);
+    }
+    return status;
   }
   return response;
 }

@@ -11,6 +11,7 @@
 #include "absl/strings/str_join.h"
 #include "absl/synchronization/mutex.h"
 #include "services/common/status/field_error.h"
+#include "services/common/status/retry_after.h"
 #include "services/modelproxy/core/json_answer.h"
 #include "services/modelproxy/core/request_key.h"
 #include "services/modelproxy/core/request_validation.h"
@@ -196,7 +197,10 @@ ModelProxy::ChainOutcome<Reply> ModelProxy::RunChain(
       const bool retry = IsRetryable(reply.status());
       fail(*m, reply.status(), latency);
       if (!retry) break;
-      const absl::Duration backoff = policy.retry.Backoff(attempt, UniformDraw());
+      // The vendor's Retry-After, when it sent one, is the least wait before asking it again.
+      const absl::Duration backoff =
+          std::max(policy.retry.Backoff(attempt, UniformDraw()),
+                   RetryAfter(reply.status()).value_or(absl::ZeroDuration()));
       if (attempt + 1 >= policy.retry.max_attempts ||
           absl::Now() + backoff + kMinAttemptTime >= deadline)
         break;
@@ -216,6 +220,17 @@ ModelProxy::ChainOutcome<Reply> ModelProxy::RunChain(
     out.reply = WithReason(
         absl::UnavailableError(absl::StrCat("no backend answered; ", Summary(alias, out.attempts))),
         "BACKEND_UNAVAILABLE");
+  }
+  // The longest Retry-After any backend asked for goes back to the caller with the error.
+  std::optional<absl::Duration> retry_after;
+  for (const Attempt& attempt : out.attempts) {
+    if (const std::optional<absl::Duration> after = RetryAfter(attempt.status))
+      retry_after = std::max(retry_after.value_or(absl::ZeroDuration()), *after);
+  }
+  if (retry_after.has_value()) {
+    absl::Status failed = out.reply.status();
+    SetRetryAfter(failed, *retry_after);
+    out.reply = std::move(failed);
   }
   return out;
 }

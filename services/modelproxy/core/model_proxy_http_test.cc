@@ -9,6 +9,7 @@
 #include "nlohmann/json.hpp"
 #include "services/common/place_prior/place_prior.h"
 #include "services/common/status/field_error.h"
+#include "services/common/status/retry_after.h"
 #include "services/modelproxy/core/http_backend.h"
 #include "services/modelproxy/core/model_proxy.h"
 #include "services/modelproxy/core/offline/offline_backend.h"
@@ -146,6 +147,26 @@ TEST_F(ModelProxyHttpTest, TooManyRequestsThenSuccessIsRetriedOnTheSameBackend) 
   ASSERT_EQ(result->attempts.size(), 2u);
   EXPECT_EQ(result->attempts[0].status.code(), absl::StatusCode::kResourceExhausted);
   EXPECT_EQ(server_.requests(Route::kOpenAiChat), 2);
+}
+
+// A vendor's Retry-After is believed: asked to come back in 30 s with 5 s of deadline left, the
+// proxy does not retry at once (the old proxy retried after 5 ms, three times) and the final
+// error carries the hint for the caller's back-off.
+TEST_F(ModelProxyHttpTest, RetryAfterDelaysTheRetryAndComesBackWithTheError) {
+  Build();
+  server_.SetDefault(Route::kOpenAiChat, Action::Status(429).WithHeader("Retry-After", "30"));
+  const auto result = Call(Ask("q", "clip"));
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.status().code(), absl::StatusCode::kUnavailable);
+  EXPECT_EQ(server_.requests(Route::kOpenAiChat), 1);
+  EXPECT_EQ(RetryAfter(result.status()), absl::Seconds(30));
+  // A 429 without the header: the proxy's own back-off, retries as before, no hint.
+  server_.SetDefault(Route::kOpenAiChat, Action::Status(429));
+  CompletionRequest again = Ask("q2", "clip");
+  const auto plain = Call(again);
+  ASSERT_FALSE(plain.ok());
+  EXPECT_EQ(server_.requests(Route::kOpenAiChat), 1 + 3);
+  EXPECT_FALSE(RetryAfter(plain.status()).has_value());
 }
 
 TEST_F(ModelProxyHttpTest, ServerErrorRetriesAreBoundedThenFallBack) {

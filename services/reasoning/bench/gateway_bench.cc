@@ -8,6 +8,8 @@
 //   instruction_to_command_ms_p99        loopback gRPC with real semnav-mapping and semnav-planning
 //                                        (instruction_to_command_planned: samples with a planned
 //                                        path)
+//   instruction_to_command_with_model_ms_p99  the same with semnav-model-proxy configured (issue
+//   15)
 // Usage: semnav-bench-gateway [--json FILE] [--benchmark_* flags]
 #include <algorithm>
 #include <chrono>
@@ -165,15 +167,19 @@ nlohmann::json Figures() {
         task.OnSceneGraph(0, *scene);
         benchmark::DoNotOptimize(task.Start(0, RobotPose{}));
       }).wall_us;
-  absl::StatusOr<LoopbackLatency> loopback = MeasureInstructionToCommand(200);
-  if (loopback.ok()) {
-    figures["instruction_to_command_ms_p50"] = loopback->p50_ms;
-    figures["instruction_to_command_ms_p99"] = loopback->p99_ms;
-    figures["instruction_to_command_samples"] = loopback->samples;
-    figures["instruction_to_command_planned"] = loopback->planned;
-  } else {
-    std::fprintf(stderr, "instruction_to_command not measured: %s\n",
-                 loopback.status().ToString().c_str());
+  for (const bool with_model : {false, true}) {
+    absl::StatusOr<LoopbackLatency> loopback = MeasureInstructionToCommand(200, with_model);
+    const std::string prefix =
+        with_model ? "instruction_to_command_with_model_" : "instruction_to_command_";
+    if (loopback.ok()) {
+      figures[prefix + "ms_p50"] = loopback->p50_ms;
+      figures[prefix + "ms_p99"] = loopback->p99_ms;
+      figures[prefix + "samples"] = loopback->samples;
+      figures[prefix + "planned"] = loopback->planned;
+    } else {
+      std::fprintf(stderr, "%s not measured: %s\n", prefix.c_str(),
+                   loopback.status().ToString().c_str());
+    }
   }
   return figures;
 }

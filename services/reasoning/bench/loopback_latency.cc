@@ -26,9 +26,11 @@ constexpr double kRobotY = 1.3;
 
 }  // namespace
 
-absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples) {
+absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples, bool with_model_proxy) {
   const std::string dir =
-      (std::filesystem::temp_directory_path() / "semnav-bench-gateway").string();
+      (std::filesystem::temp_directory_path() /
+       (with_model_proxy ? "semnav-bench-gateway-model" : "semnav-bench-gateway"))
+          .string();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/maps\n"
@@ -45,9 +47,20 @@ absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples) {
       semnav::testing::ServiceProcess::Start("semnav-planning",
                                              {"--config", dir + "/planning.yaml"});
   if (!planning.ok()) return planning.status();
+  // With the model configured: the real semnav-model-proxy with its default (offline) chain,
+  // as `semnav up` runs it; every task then also asks it for the target's text embedding.
+  std::unique_ptr<semnav::testing::ServiceProcess> proxy;
+  if (with_model_proxy) {
+    absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> started =
+        semnav::testing::ServiceProcess::Start("semnav-model-proxy", {});
+    if (!started.ok()) return started.status();
+    proxy = *std::move(started);
+  }
   std::ofstream(dir + "/gateway.yaml")
       << "gateway:\n  mapping:\n    address: " << (*mapping)->address()
-      << "\n  planning:\n    address: " << (*planning)->address() << "\n";
+      << "\n  planning:\n    address: " << (*planning)->address() << "\n"
+      << (proxy != nullptr ? absl::StrCat("  model_proxy:\n    address: ", proxy->address(), "\n")
+                           : "");
   absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> gateway =
       semnav::testing::ServiceProcess::Start("semnav-gateway", {"--config", dir + "/gateway.yaml"});
   if (!gateway.ok()) return gateway.status();

@@ -16,6 +16,8 @@ struct LoopbackLatency {
   int planned = 0;  // samples whose NAVIGATE carried a planned path
 };
 
-absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples);
+// `with_model_proxy`: the gateway also has the real semnav-model-proxy (offline default chain)
+// configured, so each task makes its model calls (the text embedding) while it starts.
+absl::StatusOr<LoopbackLatency> MeasureInstructionToCommand(int samples, bool with_model_proxy);
 
 }  // namespace semnav::reasoning

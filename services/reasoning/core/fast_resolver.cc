@@ -68,18 +68,30 @@ ScoredObject FastResolver::ScorePrepared(const TargetSpec& target, const Prepare
   scored.object_id = object.id;
   scored.label = matcher_.Match(prepared, matcher_.Normalise(object.label, object.attributes));
   if (scored.label <= 0.0) return scored;
-  // Without a text and an object embedding the seed approximates the CLIP term by the label match.
+  // A term that cannot speak for this target is left out and the other weights renormalised:
+  // without a text and an object embedding there is no CLIP term (the seed's stand-in, the label
+  // match counted twice, let one glimpse of a label pass on label alone), and a target that
+  // names no relation has no spatial hint to hit (with it fixed at 0, the seed's weights cap an
+  // exact match below 0.85 and the slow path was asked for nearly every target, issue 15).
   const bool have_embeddings =
       !text_embedding.empty() && object.embedding.size() == text_embedding.size();
+  const bool relation_asked = !target.relation.empty() && !target.anchor.empty();
   scored.embedding =
-      have_embeddings ? std::max(0.0, Cosine(text_embedding, object.embedding)) : scored.label;
+      have_embeddings ? std::max(0.0, Cosine(text_embedding, object.embedding)) : 0.0;
   const double count_factor = std::min(
       1.0, static_cast<double>(object.detection_count) / config_.detection_count_saturation);
   scored.detector = std::clamp(object.score, 0.0, 1.0) * count_factor;
   scored.spatial = SpatialHint(target, object, graph);
-  scored.fused = config_.label_weight * scored.label + config_.embedding_weight * scored.embedding +
-                 config_.detector_weight * scored.detector +
-                 config_.spatial_weight * scored.spatial;
+  const double embedding_weight = have_embeddings ? config_.embedding_weight : 0.0;
+  const double spatial_weight = relation_asked ? config_.spatial_weight : 0.0;
+  const double weights =
+      config_.label_weight + embedding_weight + config_.detector_weight + spatial_weight;
+  scored.fused =
+      weights <= 0.0
+          ? 0.0
+          : (config_.label_weight * scored.label + embedding_weight * scored.embedding +
+             config_.detector_weight * scored.detector + spatial_weight * scored.spatial) /
+                weights;
   return scored;
 }
 

@@ -1,6 +1,8 @@
 // Fast path of goal resolution (seed 002, 3.2.2, System 1): fuse four scores per scene-graph
 // object and accept the best one without any model call when it exceeds the threshold.
-//   fused = 0.35 label_match + 0.35 embedding_similarity + 0.15 detector + 0.15 spatial_hint
+//   fused = 0.35 label_match + 0.35 embedding_similarity + 0.15 detector + 0.15 spatial_hint,
+// over the terms that apply (no embeddings: no embedding term; no relation asked: no spatial
+// term), divided by the sum of their weights.
 #pragma once
 
 #include <cstdint>
@@ -27,9 +29,10 @@ struct FastResolverConfig {
 struct ScoredObject {
   int64_t object_id = 0;
   double label = 0.0;      // [0, 1]
-  double embedding = 0.0;  // [0, 1]: max(0, cosine) or, without embeddings, the label match.
+  double embedding = 0.0;  // [0, 1]: max(0, cosine); 0 without embeddings (left out of fused).
   double detector = 0.0;   // [0, 1]
-  double spatial = 0.0;    // 1 when the asked relation to the anchor is in the graph, else 0.
+  double spatial = 0.0;    // 1 when the asked relation to the anchor is in the graph, else 0
+                           // (no relation asked: left out of fused).
   double fused = 0.0;
 };
 

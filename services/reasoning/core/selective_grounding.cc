@@ -1,6 +1,7 @@
 #include "services/reasoning/core/selective_grounding.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <unordered_map>
 
@@ -52,6 +53,26 @@ GroundedGraph SelectiveGrounding(const TargetSpec& target, const SceneGraph& gra
                    [](const auto& a, const auto& b) { return a.first > b.first; });
   for (const auto& [match, object] : hits) {
     if (selection.Add(object->id)) out.keyword_hits.push_back(object->id);
+  }
+
+  // 1b. Open vocabulary (issue 15): a target the lexicon has no object for ("复印机", "coffee
+  // machine") matches no label by name, so the model judges the classes seen instead: one
+  // candidate per label (its most-detected instance), most-detected labels first.
+  if (out.keyword_hits.empty() && !target.is_room && !target.name.empty() &&
+      matcher.lexicon().Find(target.name, TermKind::kObject) == nullptr) {
+    std::map<std::string, const SceneObject*> per_label;
+    for (const SceneObject& object : graph.objects) {
+      const SceneObject*& best = per_label[matcher.Normalise(object.label, {}).name];
+      if (best == nullptr || object.detection_count > best->detection_count) best = &object;
+    }
+    std::vector<const SceneObject*> classes;
+    for (const auto& [label, object] : per_label) classes.push_back(object);
+    std::stable_sort(classes.begin(), classes.end(),
+                     [](const SceneObject* a, const SceneObject* b) {
+                       return a->detection_count > b->detection_count;
+                     });
+    for (const SceneObject* object : classes) selection.Add(object->id);
+    out.open_vocabulary = !classes.empty();
   }
 
   // 2. One-hop relation expansion, nearest relation first.

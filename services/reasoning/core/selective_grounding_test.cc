@@ -76,5 +76,37 @@ TEST(GatewayGroundingTest, NoKeywordHitLeavesOnlyTheRoomRegion) {
   EXPECT_EQ(grounded.graph.objects.size(), 6u);
 }
 
+SceneObject Seen(int64_t id, const char* label, int detections) {
+  SceneObject object;
+  object.id = id;
+  object.label = label;
+  object.score = 0.8;
+  object.detection_count = detections;
+  return object;
+}
+
+// Open vocabulary (issue 15): no label can name "复印机", which the lexicon does not know, so the
+// model is shown one object per class seen (the most-detected of each), most-detected first. A
+// target the lexicon knows but nobody has seen yet grounds nothing (no call until it is seen).
+TEST(GatewayGroundingTest, OpenVocabularyTargetGroundsOneObjectPerClass) {
+  SceneGraph scene;
+  scene.objects = {Seen(1, "chair", 3), Seen(2, "chair", 9), Seen(3, "printer", 2),
+                   Seen(4, "desk", 5), Seen(5, "chair", 1)};
+  LabelMatcher matcher(&ShippedLexicon(), 0.5);
+  TargetSpec copier;
+  copier.name = "复印机";
+  GroundingConfig config;
+  GroundedGraph grounded = SelectiveGrounding(copier, scene, matcher, config);
+  EXPECT_TRUE(grounded.keyword_hits.empty());
+  std::vector<int64_t> ids;
+  for (const SceneObject& object : grounded.graph.objects) ids.push_back(object.id);
+  EXPECT_EQ(ids, (std::vector<int64_t>{2, 3, 4}));  // chair 2 (9 detections), printer, desk
+  config.max_objects = 2;
+  EXPECT_EQ(SelectiveGrounding(copier, scene, matcher, config).graph.objects.size(), 2u);
+  TargetSpec known;
+  known.name = "backpack";
+  EXPECT_TRUE(SelectiveGrounding(known, scene, matcher, GroundingConfig{}).graph.objects.empty());
+}
+
 }  // namespace
 }  // namespace semnav::reasoning

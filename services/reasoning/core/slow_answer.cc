@@ -91,7 +91,10 @@ absl::StatusOr<SlowDecision> ParseResolveAnswer(std::string_view answer, const S
       }
     }
   }
-  if (best.empty()) return decision;  // not among the candidates: explore
+  if (best.empty()) {  // not among the candidates: explore
+    decision.none_matched = true;
+    return decision;
+  }
   if (!absl::SimpleAtoi(best, &decision.object_id) ||
       subgraph.FindObject(decision.object_id) == nullptr) {
     return InvalidField("best_id", absl::StrCat("'", Preview(best), "' is not a candidate"));

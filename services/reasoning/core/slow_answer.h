@@ -33,8 +33,9 @@ enum class SlowAction {
 struct SlowDecision {
   SlowAction action = SlowAction::kExplore;
   int64_t object_id = -1;
-  double confidence = 0.0;  // after the offline factor
-  std::string explanation;  // the best candidate's reason, if given
+  double confidence = 0.0;    // after the offline factor
+  std::string explanation;    // the best candidate's reason, if given
+  bool none_matched = false;  // a valid answer whose best_id is "": no candidate is the target
 };
 
 // The two text parts of the last user message: prose for real models (instruction, target and the

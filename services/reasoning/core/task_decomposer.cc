@@ -80,6 +80,27 @@ Decomposition TaskDecomposer::Decompose(std::string_view instruction) {
   return result;
 }
 
+std::vector<Subgoal> TaskDecomposer::CompleteFinds(std::vector<Subgoal> subgoals) const {
+  std::vector<Subgoal> out;
+  for (std::size_t i = 0; i < subgoals.size(); ++i) {
+    out.push_back(subgoals[i]);
+    const TargetSpec& found = subgoals[i].target;
+    if (subgoals[i].type != SubgoalType::kFind || found.is_room || found.name.empty()) continue;
+    const bool completed = std::any_of(
+        subgoals.begin() + static_cast<std::ptrdiff_t>(i) + 1, subgoals.end(),
+        [&](const Subgoal& later) {
+          return (later.type == SubgoalType::kApproach || later.type == SubgoalType::kVerify) &&
+                 later.target.name == found.name;
+        });
+    if (completed) continue;
+    Subgoal approach = Make(SubgoalType::kApproach, found, "close the last metres");
+    approach.distance_m = config_.approach_distance_m;
+    out.push_back(approach);
+    out.push_back(Make(SubgoalType::kVerify, found, "confirm the target up close"));
+  }
+  return out;
+}
+
 Decomposition TaskDecomposer::WithModelAnswer(Decomposition rules,
                                               std::string_view model_json) const {
   absl::StatusOr<std::vector<Subgoal>> model = ParseModelSubgoals(model_json);

@@ -36,6 +36,11 @@ class TaskDecomposer {
   // says why in `rejection`.
   Decomposition WithModelAnswer(Decomposition rules, std::string_view model_json) const;
 
+  // Each FIND of an object that no later APPROACH or VERIFY of the same target follows gets
+  // them, as the rules read "find X" (seed 002: FIND ... APPROACH VERIFY): the robot goes to what
+  // it found. For model plans of instructions the rules could not read at all.
+  std::vector<Subgoal> CompleteFinds(std::vector<Subgoal> subgoals) const;
+
   InstructionParser& parser() { return parser_; }
 
  private:

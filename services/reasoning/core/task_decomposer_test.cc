@@ -86,6 +86,21 @@ TEST(GatewayDecomposerTest, ValidModelAnswerReplacesRulesInvalidOneIsIgnored) {
   EXPECT_EQ(rejected.subgoals, rules.subgoals);
 }
 
+// A model plan's FIND of an object gets the APPROACH and VERIFY the rules give "find X"; a FIND
+// already followed by them, a room and other steps are kept as they are.
+TEST(GatewayDecomposerTest, CompleteFindsAddsApproachAndVerifyOnlyWhereMissing) {
+  TaskDecomposer decomposer = MakeDecomposer();
+  Decomposition plan = decomposer.WithModelAnswer(
+      decomposer.Decompose("x"),
+      R"({"subgoals": [{"type": "NAVIGATE", "target": "office"}, {"type": "FIND", "target": "复印机"},)"
+      R"( {"type": "FIND", "target": "cup"}, {"type": "VERIFY", "target": "cup"}]})");
+  ASSERT_EQ(plan.source, "model");
+  const std::vector<Subgoal> completed = decomposer.CompleteFinds(plan.subgoals);
+  EXPECT_EQ(DescribeSubgoals(completed),
+            "NAVIGATE(office) FIND(复印机) APPROACH(复印机) VERIFY(复印机) FIND(cup) VERIFY(cup)");
+  EXPECT_DOUBLE_EQ(completed[2].distance_m, 0.5);
+}
+
 // Hand-written model answers for a complex instruction: only the valid one replaces the rules;
 // every rejection names the field that failed.
 TEST(GatewayDecomposerTest, ModelAnswersAreValidatedBeforeTheyReplaceTheRules) {

@@ -334,6 +334,13 @@ class TaskExecutor {
   CommandKind active_kind_ = CommandKind::kHold;
   double phase_deadline_ = 0.0;
   uint64_t requested_revision_ = 0;
+  // Open vocabulary: the classes last shown to the model (and how many objects were skipped
+  // then); a newer graph with the same classes is not asked about again.
+  std::string open_vocabulary_asked_;
+  // Open vocabulary: the classes of the request in flight, and those the model said are not the
+  // target (not shown again, so a class seen later gets its turn within the grounding budget).
+  std::set<std::string> open_vocabulary_pending_;
+  std::set<std::string> open_vocabulary_rejected_;
   bool awaiting_model_ = false;
   std::optional<ModelRequest> pending_request_;
   struct DependencyWait {

@@ -264,6 +264,47 @@ TEST_F(GatewayTaskExecutorTest, SlowPathAnswerProvidesTheGoal) {
   EXPECT_EQ(task.progress().target->path, ResolutionPath::kSlow);
 }
 
+// Open vocabulary (issue 15): a target no label names ("复印机") is asked about by class. A newer
+// graph with the same classes is not asked again, classes the model said are not the target are
+// not shown again, and a new class is asked about alone. Before, every revision made a call: 61,
+// the task budget, in one office episode.
+TEST_F(GatewayTaskExecutorTest, OpenVocabularyTargetIsAskedAboutEachClassOnce) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0)};
+  ExecutorConfig config;
+  config.model_available = true;
+  std::vector<Subgoal> goals(1);
+  goals[0].type = SubgoalType::kFind;
+  goals[0].target.name = "复印机";
+  TaskExecutor task = Make(goals, config);
+  auto object = [](int64_t id, const char* label, double x) {
+    SceneObject o;
+    o.id = id;
+    o.label = label;
+    o.position = Eigen::Vector3d(x, 3, 0);
+    o.score = 0.8;
+    o.detection_count = 3;
+    return o;
+  };
+  task.OnSceneGraph(0, GraphWith({object(1, "chair", 2), object(2, "desk", 4)}, 1));
+  task.Start(0, At(0));
+  std::optional<ModelRequest> first = task.TakeModelRequest();
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->grounded.objects.size(), 2u);
+  SlowDecision none;
+  none.none_matched = true;
+  EXPECT_TRUE(task.OnSlowDecision(1, 1, none).empty());
+  // The same classes, moved: not asked again.
+  task.OnSceneGraph(2, GraphWith({object(1, "chair", 2.2), object(2, "desk", 4.1)}, 2));
+  EXPECT_FALSE(task.TakeModelRequest().has_value());
+  // A printer comes into view: asked about it alone.
+  task.OnSceneGraph(
+      3, GraphWith({object(1, "chair", 2.2), object(2, "desk", 4.1), object(3, "printer", 6)}, 3));
+  std::optional<ModelRequest> second = task.TakeModelRequest();
+  ASSERT_TRUE(second.has_value());
+  ASSERT_EQ(second->grounded.objects.size(), 1u);
+  EXPECT_EQ(second->grounded.objects[0].id, 3);
+}
+
 // Regression (dashboard, "find a bed"): the model named the object that had just been set aside
 // as unreachable; the executor took it again at once, failed again at once, and so spent all 30
 // exploration goals in 8 s without moving. A set-aside object waits for a new vantage point.
@@ -300,7 +341,9 @@ TEST_F(GatewayTaskExecutorTest, SlowAnswerNamingASetAsideObjectKeepsExploring) {
 
   // From the next exploration goal the object may be reachable: the model's answer counts again.
   out = task.OnFeedback(12, out[0].id, RobotFeedback::kGoalReached);  // scan at the goal
-  task.OnSceneGraph(13, GraphWith({Extinguisher(3)}, 3));
+  SceneObject unsure = Extinguisher(3);
+  unsure.score = 0.5;  // still below the fast path: (0.35 + 0.15 * 0.5 * 0.3) / 0.5 = 0.745
+  task.OnSceneGraph(13, GraphWith({unsure}, 3));
   ASSERT_TRUE(task.TakeModelRequest().has_value());
   EXPECT_FALSE(task.OnSlowDecision(14, 3, decision).empty());
   EXPECT_TRUE(task.progress().target.has_value());

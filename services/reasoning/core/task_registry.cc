@@ -66,6 +66,7 @@ TaskView ViewOf(const TaskRecord& task, std::optional<ExplorationStrategy> explo
 }
 
 TaskRecord& TaskRegistry::Create() {
+  ForgetOldFinished();
   const std::string task_id = absl::StrCat("task-", next_number_++);
   TaskRecord& task = tasks_[task_id];
   task.task_id = task_id;
@@ -103,6 +104,22 @@ std::vector<const TaskRecord*> TaskRegistry::Select(const std::string& robot_id,
            std::make_pair(b->task_id.size(), b->task_id);
   });
   return selected;
+}
+
+void TaskRegistry::ForgetOldFinished() {
+  std::vector<const TaskRecord*> finished;
+  for (const TaskRecord* task : Select("", false)) {
+    if (task->executor != nullptr && task->executor->finished() && !task->in_remote_call &&
+        !task->vision_busy) {
+      finished.push_back(task);
+    }
+  }
+  if (finished.size() <= keep_finished_) return;
+  const std::size_t forget = finished.size() - keep_finished_;
+  for (std::size_t i = 0; i < forget; ++i) {
+    const std::string task_id = finished[i]->task_id;  // a copy: the record goes with the erase
+    tasks_.erase(task_id);
+  }
 }
 
 }  // namespace semnav::reasoning

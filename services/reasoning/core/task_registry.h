@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -86,7 +87,16 @@ TaskView ViewOf(const TaskRecord& task, std::optional<ExplorationStrategy> explo
 
 class TaskRegistry {
  public:
+  // Finished tasks kept for GetTask/ListTasks (gateway key `keep_finished_tasks`): a ground
+  // station left running for days would otherwise keep every task it ever ran (issue 18).
+  static constexpr std::size_t kDefaultKeepFinished = 256;
+
+  explicit TaskRegistry(std::size_t keep_finished = kDefaultKeepFinished)
+      : keep_finished_(keep_finished) {}
+
   // A new task "task-<n>", n counting up over every task so far (restored ones included).
+  // Before it is made, the oldest finished tasks beyond `keep_finished` are forgotten, so no
+  // reference to another record may be held across this call.
   TaskRecord& Create();
   // A journaled task under its own id; new ids continue after `next_number`.
   TaskRecord& Restore(const std::string& task_id, uint64_t next_number);
@@ -97,11 +107,16 @@ class TaskRegistry {
   // The number the next new task gets (journaled, so a restarted gateway never reuses an id).
   uint64_t next_number() const { return next_number_; }
 
-  // Every task, by id; records never move or disappear while the registry lives.
+  // Every task, by id. Records never move; only Create() forgets finished ones.
   std::map<std::string, TaskRecord>& all() { return tasks_; }
   const std::map<std::string, TaskRecord>& all() const { return tasks_; }
 
  private:
+  // Forgets the oldest finished tasks (submission order) beyond `keep_finished_`; a task inside
+  // a remote call or waiting for a vision answer stays.
+  void ForgetOldFinished();
+
+  std::size_t keep_finished_;
   std::map<std::string, TaskRecord> tasks_;
   uint64_t next_number_ = 1;
 };

@@ -20,8 +20,9 @@ class NoPlanner : public PathPlanner {
 
 class TaskRegistryTest : public ::testing::Test {
  protected:
-  TaskRecord& Add(const std::string& robot_id) {
-    TaskRecord& task = registry_.Create();
+  TaskRecord& Add(const std::string& robot_id) { return AddTo(registry_, robot_id); }
+  TaskRecord& AddTo(TaskRegistry& registry, const std::string& robot_id) {
+    TaskRecord& task = registry.Create();
     task.robot_id = robot_id;
     Subgoal wait;
     wait.type = SubgoalType::kWait;
@@ -84,6 +85,35 @@ TEST_F(TaskRegistryTest, ViewsDifferInContentOnlyByWhatAnOperatorSees) {
   EXPECT_FALSE(cancelled.pending);
   EXPECT_FALSE(SameContent(first, cancelled));
   EXPECT_FALSE(SameContent(TaskView{}, first));  // nothing published yet
+}
+
+TEST_F(TaskRegistryTest, CreateForgetsTheOldestFinishedTasksBeyondTheKeptCount) {
+  TaskRegistry registry(2);
+  for (int i = 0; i < 5; ++i) AddTo(registry, "r1");  // task-1 .. task-5
+  for (const char* id : {"task-1", "task-2", "task-3", "task-4"}) {
+    registry.Find(id)->executor->Cancel("done");
+  }
+  registry.Find("task-1")->in_remote_call = true;  // its record is in use: kept
+  AddTo(registry, "r1");                           // task-6; 4 finished, 1 in use, keep 2
+  EXPECT_NE(registry.Find("task-1"), nullptr);
+  EXPECT_EQ(registry.Find("task-2"), nullptr);  // the oldest free finished one goes
+  EXPECT_NE(registry.Find("task-3"), nullptr);
+  EXPECT_NE(registry.Find("task-4"), nullptr);
+  EXPECT_NE(registry.Find("task-5"), nullptr);  // running tasks are never forgotten
+  registry.Find("task-1")->in_remote_call = false;
+  AddTo(registry, "r1");  // task-7: now task-1 goes too
+  std::vector<std::string> ids;
+  for (const TaskRecord* task : registry.Select("", false)) ids.push_back(task->task_id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"task-3", "task-4", "task-5", "task-6", "task-7"}));
+  EXPECT_EQ(AddTo(registry, "r1").task_id, "task-8");  // ids never go back
+}
+
+TEST_F(TaskRegistryTest, KeepingNoFinishedTaskForgetsEachOneAtTheNextSubmission) {
+  TaskRegistry registry(0);
+  AddTo(registry, "r1").executor->Cancel("done");
+  AddTo(registry, "r1");
+  EXPECT_EQ(registry.Find("task-1"), nullptr);
+  EXPECT_NE(registry.Find("task-2"), nullptr);
 }
 
 }  // namespace

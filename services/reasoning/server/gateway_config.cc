@@ -246,6 +246,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   section.Read("default_lease_ttl_s", &c.default_lease_ttl_s)
       .Read("max_lease_ttl_s", &c.max_lease_ttl_s)
       .Read("retained_events", &c.retained_events)
+      .Read("keep_finished_tasks", &c.keep_finished_tasks)
       .Read("idempotency_entries", &c.idempotency_entries)
       .Read("state_directory", &c.state_directory)
       .Read("journal_flush_interval_s", &c.journal_flush_interval_s)
@@ -255,6 +256,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   section.Check(c.default_lease_ttl_s >= 1.0 && c.default_lease_ttl_s <= c.max_lease_ttl_s,
                 "default_lease_ttl_s", "must be in [1, max_lease_ttl_s]");
   section.Check(c.retained_events > 0, "retained_events", "must be > 0");
+  section.Check(c.keep_finished_tasks >= 0 && c.keep_finished_tasks <= 100000,
+                "keep_finished_tasks", "must be in [0, 100000]");
   section.Check(c.journal_flush_interval_s >= 0.05 && c.journal_flush_interval_s <= 60.0,
                 "journal_flush_interval_s", "must be in [0.05, 60]");
   if (absl::Status s = section.Finish(); !s.ok()) return s;

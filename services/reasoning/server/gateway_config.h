@@ -15,6 +15,7 @@
 #include "services/reasoning/core/slow_answer.h"
 #include "services/reasoning/core/task_decomposer.h"
 #include "services/reasoning/core/task_executor.h"
+#include "services/reasoning/core/task_registry.h"
 #include "services/reasoning/core/topological_memory.h"
 
 namespace semnav::reasoning {
@@ -70,7 +71,10 @@ struct GatewayConfig {
   double default_lease_ttl_s = 30.0;  // AcquireLease without ttl
   double max_lease_ttl_s = 600.0;     // longest lease
   int retained_events = 10000;        // event log replay window
-  int idempotency_entries = 4096;     // remembered request_ids
+  // Finished tasks GetTask/ListTasks still answer for; older ones are forgotten (NOT_FOUND).
+  // 256 is about 5 minutes of a 50-robot fleet (the fleet soak), ~15 KiB each.
+  int keep_finished_tasks = static_cast<int>(TaskRegistry::kDefaultKeepFinished);
+  int idempotency_entries = 4096;  // remembered request_ids
   // Where tasks, leases and events survive a gateway crash (GatewayJournal); "" = kept in memory
   // only. A running task comes back PAUSED and resumes with its robot's next state.
   std::string state_directory;

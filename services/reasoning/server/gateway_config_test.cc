@@ -149,5 +149,21 @@ TEST(GatewayConfigTest, ReadsTheJournalKeysAndBoundsTheFlushInterval) {
   }
 }
 
+TEST(GatewayConfigTest, ReadsHowManyFinishedTasksToKeepAndBoundsIt) {
+  EXPECT_EQ(GatewayConfig{}.keep_finished_tasks, 256);
+  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString("keep_finished_tasks: 0\n");
+  ASSERT_TRUE(reader.ok());
+  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  EXPECT_EQ(loaded->keep_finished_tasks, 0);
+  for (const char* yaml : {"keep_finished_tasks: -1", "keep_finished_tasks: 100001"}) {
+    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
+    ASSERT_TRUE(bad.ok());
+    EXPECT_TRUE(
+        absl::StrContains(GatewayConfig::FromYaml(*bad).status().message(), "keep_finished_tasks"))
+        << yaml;
+  }
+}
+
 }  // namespace
 }  // namespace semnav::reasoning

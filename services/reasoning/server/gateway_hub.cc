@@ -25,6 +25,7 @@ GatewayHub::GatewayHub(GatewayConfig config, const Lexicon* lexicon, PathPlanner
       resolver_(lexicon, config.fast_path),
       matcher_(lexicon, config.fast_path.unknown_colour_factor),
       start_(absl::Now()),
+      tasks_(static_cast<std::size_t>(config.keep_finished_tasks)),
       events_(static_cast<std::size_t>(config.retained_events)),
       requests_(static_cast<std::size_t>(std::max(1, config.idempotency_entries))) {
   absl::StatusOr<TextSegmenter> segmenter = TextSegmenter::Create();
@@ -91,7 +92,7 @@ absl::StatusOr<GatewayHub::Task*> GatewayHub::FindTask(const std::string& task_i
 }
 
 void GatewayHub::RunRemoteCall(const std::string& task_id, absl::FunctionRef<void()> call) {
-  Task& task = *tasks_.Find(task_id);  // tasks are never removed
+  Task& task = *tasks_.Find(task_id);  // a task inside a remote call is never forgotten
   task.in_remote_call = true;
   mu_.Unlock();
   call();
@@ -295,12 +296,15 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(
   }
   if (decomposer_ == nullptr) return absl::InternalError("ICU word break iterator unavailable");
   Robot& robot = RobotRecord(request.robot_id());
-  Task* const settled = SettledActiveTask(robot);  // before the checks: waiting releases mu_
-  if (robot.emergency_stop) {
-    return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", "emergency stop active",
-                      "EMERGENCY_STOP");
-  }
-  if (absl::Status s = CheckControl(request.robot_id(), request.lease_id()); !s.ok()) return s;
+  Task* settled = SettledActiveTask(robot);  // before the checks: waiting releases mu_
+  auto may_command = [&]() ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_) -> absl::Status {
+    if (robot.emergency_stop) {
+      return FieldError(absl::StatusCode::kFailedPrecondition, "robot_id", "emergency stop active",
+                        "EMERGENCY_STOP");
+    }
+    return CheckControl(request.robot_id(), request.lease_id());
+  };
+  if (absl::Status s = may_command(); !s.ok()) return s;
 
   api::SubmitInstructionResponse response;
   if (request.allow_correction() && settled != nullptr && !settled->executor->finished()) {
@@ -322,6 +326,17 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(
     }
   }
   Decomposition decomposition = decomposer_->Decompose(request.instruction());
+  // Open vocabulary (issue 15): a step the rules cannot read ("找复印机") is asked of the model's
+  // decompose before the instruction is refused (the proxy's offline backend answers it too).
+  const bool model_read = decomposition.subgoals.empty() && backends_.model != nullptr;
+  if (model_read) {
+    decomposition = DecomposeBeforeRefusing(request.robot_id(), request.instruction(),
+                                            std::move(decomposition));
+    if (shut_down_) return absl::UnavailableError("the gateway is shutting down");
+    // The lock was released while the model thought: the robot is read again.
+    settled = SettledActiveTask(robot);
+    if (absl::Status s = may_command(); !s.ok()) return s;
+  }
   if (decomposition.subgoals.empty()) {
     return FieldError(absl::StatusCode::kInvalidArgument, "instruction",
                       "no actionable step understood");
@@ -344,8 +359,14 @@ absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(
   InstallExecutor(task, decomposition.subgoals);
   robot.active_task = task_id;
   Log(api::EVENT_KIND_TASK_CREATED, task.robot_id, task_id, request.instruction());
-  if (decomposition.complex && backends_.model != nullptr)
+  if (model_read) {  // the model's plan from the start: that call was this task's
+    task.calls.OnAsked();
+    ++task.model_calls;
+    Log(api::EVENT_KIND_DECOMPOSITION, task.robot_id, task_id,
+        absl::StrCat("model subgoals used: ", DescribeSubgoals(task.executor->subgoals())));
+  } else if (decomposition.complex && backends_.model != nullptr) {
     RequestDecomposition(task, std::move(decomposition));
+  }
   StartIfPossible(task);
   response.set_task_id(task_id);
   *response.mutable_task() = Snapshot(task);

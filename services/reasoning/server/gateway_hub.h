@@ -221,6 +221,12 @@ class GatewayHub {
   // embedding asked for); the task's robot is not commanded yet.
   void InstallExecutor(Task& task, std::vector<Subgoal> subgoals)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // An instruction the rules found no step in: asks the model's decompose and waits for it (with
+  // mu_ released, at most the call's deadline). The model's plan (a FIND completed with APPROACH
+  // and VERIFY, as the rules read "find X") or, when it gives nothing usable, `rules` with the
+  // reason. No task exists yet, so nothing moves while it waits.
+  Decomposition DecomposeBeforeRefusing(const std::string& robot_id, const std::string& instruction,
+                                        Decomposition rules) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Asks the model to decompose a complex instruction; the task runs the rule subgoals meanwhile.
   void RequestDecomposition(Task& task, Decomposition rules) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void OnDecomposition(const std::string& task_id, const Decomposition& rules,

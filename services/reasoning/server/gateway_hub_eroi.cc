@@ -71,8 +71,8 @@ void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::
   Task& t = *task;
   t.vision_busy = false;
   if (!answer.ok()) {
-    t.calls.OnFailure(NowFor(
-        t.robot_id));  // back off: the next frame does not ask again at once (the 636-call storm)
+    // Back off: the next frame does not ask again at once (the 636-call storm).
+    t.calls.OnFailure(NowFor(t.robot_id), RetryAfterSeconds(answer.status()));
     LogDebug("eroi_vision_failed", {{"task", task_id}, {"message", answer.status().message()}});
     return;
   }
@@ -103,7 +103,7 @@ void GatewayHub::OnRegionScore(const std::string& task_id, const RegionDue& regi
   if (answer.ok()) {
     task->calls.OnAnswer(EstimateTokens(task->eroi->RegionPrompt(region), *answer, false));
   } else {
-    task->calls.OnFailure(NowFor(task->robot_id));
+    task->calls.OnFailure(NowFor(task->robot_id), RetryAfterSeconds(answer.status()));
   }
   const absl::Status applied =
       answer.ok() ? task->eroi->OnRegionAnswer(region, *answer) : answer.status();

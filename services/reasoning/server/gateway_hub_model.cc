@@ -89,7 +89,7 @@ void GatewayHub::OnModelAnswer(const std::string& task_id, uint64_t generation,
         EstimateTokens(request.request.prose + request.request.task_json, *answer, false));
     task->calls.StoreSlowAnswer(request.request.task_json, *answer);
   } else {
-    task->calls.OnFailure(NowFor(task->robot_id));
+    task->calls.OnFailure(NowFor(task->robot_id), RetryAfterSeconds(answer.status()));
   }
   const SlowDecision decision = DecideSlow(answer, request, config_.slow_path);
   LogDebug("slow_path_answer",
@@ -120,6 +120,49 @@ void GatewayHub::RequestDecomposition(Task& task, Decomposition rules) {
         OnDecomposition(task_id, *shared, std::move(answer));
       });
   backends_.model->Decompose(caller, BuildDecomposeRequest(task.instruction), std::move(done));
+}
+
+Decomposition GatewayHub::DecomposeBeforeRefusing(const std::string& robot_id,
+                                                  const std::string& instruction,
+                                                  Decomposition rules) {
+  struct Pending {
+    absl::Mutex mu;
+    bool done = false;
+    absl::StatusOr<std::string> answer = absl::DeadlineExceededError("no answer in time");
+  };
+  auto pending = std::make_shared<Pending>();
+  ++model_calls_;
+  backends_.model->Decompose(ModelCaller{robot_id, ""}, BuildDecomposeRequest(instruction),
+                             [pending](absl::StatusOr<std::string> answer) {
+                               absl::MutexLock lock(&pending->mu);
+                               pending->answer = std::move(answer);
+                               pending->done = true;
+                             });
+  absl::StatusOr<std::string> answer = absl::DeadlineExceededError("no answer in time");
+  mu_.Unlock();
+  {
+    // The client ends every call by its deadline (CANCELLED when stopped); the margin only
+    // guards against a model that never calls back.
+    absl::MutexLock lock(&pending->mu);
+    pending->mu.AwaitWithTimeout(
+        absl::Condition(&pending->done),
+        absl::Milliseconds(config_.model_proxy.deadline_ms) + absl::Seconds(1));
+    answer = pending->answer;
+  }
+  mu_.Lock();
+  Decomposition chosen = rules;
+  if (answer.ok()) {
+    chosen = decomposer_->WithModelAnswer(rules, *answer);
+  } else {
+    chosen.rejection = absl::StrCat("model call failed: ", answer.status().message());
+  }
+  if (chosen.source == "model")
+    chosen.subgoals = decomposer_->CompleteFinds(std::move(chosen.subgoals));
+  LogInfo("open_vocabulary_decomposition", {{"robot", robot_id},
+                                            {"source", chosen.source},
+                                            {"subgoals", DescribeSubgoals(chosen.subgoals)},
+                                            {"rejection", chosen.rejection}});
+  return chosen;
 }
 
 void GatewayHub::OnDecomposition(const std::string& task_id, const Decomposition& rules,

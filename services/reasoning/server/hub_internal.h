@@ -12,6 +12,7 @@
 #include "semnav/reasoning/v1/operator.pb.h"
 #include "services/common/idempotency/first_answer_cache.h"
 #include "services/common/status/grpc_status.h"
+#include "services/common/status/retry_after.h"
 #include "services/reasoning/core/lease_table.h"
 
 namespace semnav::reasoning::hub_internal {
@@ -22,6 +23,14 @@ using google::protobuf::util::TimeUtil;
 inline absl::Status Required(const std::string& value, absl::string_view field) {
   if (!value.empty()) return absl::OkStatus();
   return FieldError(absl::StatusCode::kInvalidArgument, field, "is required");
+}
+
+// A failed model call's Retry-After (the vendor's, forwarded by the proxy), in seconds, for the
+// task's call policy.
+inline std::optional<double> RetryAfterSeconds(const absl::Status& status) {
+  const std::optional<absl::Duration> after = RetryAfter(status);
+  if (!after.has_value()) return std::nullopt;
+  return absl::ToDoubleSeconds(*after);
 }
 
 inline google::protobuf::Timestamp ToTimestamp(absl::Time time) {

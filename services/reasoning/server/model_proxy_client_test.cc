@@ -9,6 +9,8 @@
 #include "absl/synchronization/notification.h"
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
+#include "services/common/status/grpc_status.h"
+#include "services/common/status/retry_after.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -200,6 +202,20 @@ TEST_F(GatewayModelProxyClientTest, ErrorsComeBackAsStatusAndStopCancelsPendingC
   EXPECT_EQ(queued_code, absl::StatusCode::kCancelled);  // every caller gets an answer
   absl::MutexLock lock(&proxy_.mu);
   EXPECT_EQ(proxy_.completes, 2);  // the queued call never reached the proxy
+}
+
+// The proxy's gRPC error carries the vendor's Retry-After (ErrorInfo.metadata, written by the
+// proxy's ToGrpcStatus); the client hands it to the hub with the error, for its back-off.
+TEST_F(GatewayModelProxyClientTest, RetryAfterFromTheProxyComesBackWithTheError) {
+  absl::Status limited = absl::UnavailableError("no backend answered; openai: RESOURCE_EXHAUSTED");
+  SetRetryAfter(limited, absl::Seconds(12));
+  proxy_.answer_status = ToGrpcStatus(limited);
+  ModelProxyClient client(channel_, settings_);
+  const absl::StatusOr<std::string> answer = Match(client);
+  EXPECT_EQ(answer.status().code(), absl::StatusCode::kUnavailable);
+  EXPECT_EQ(RetryAfter(answer.status()), absl::Seconds(12));
+  proxy_.answer_status = grpc::Status(grpc::StatusCode::UNAVAILABLE, "down");
+  EXPECT_FALSE(RetryAfter(Match(client).status()).has_value());
 }
 
 TEST_F(GatewayModelProxyClientTest, MissingEmbeddingBackendIsNotAskedAgainWithinTheRetryWindow) {
