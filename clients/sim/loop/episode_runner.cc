@@ -259,6 +259,11 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   bool kidnapped = false;
   const bool frames_differ = spec.sensors.odometry.enabled || spec.kidnap_to.has_value();
   auto believed = [&]() { return Compose(map_from_odom, robot.odometry_pose()); };
+  // The robot distrusts its pose while its localizer reports LOST/UNCERTAIN or the gateway
+  // relocalizes it; its frames then say so (SensorFrame.pose_untrusted), so mapping keeps what they
+  // show out of the landmark maps.
+  api::LocalizationStatus reported = api::LOCALIZATION_STATUS_UNSPECIFIED;
+  bool gateway_relocalizing = false;
   api::SessionHello hello = Hello(spec.robot_id, start.modality, robot_config);
   hello.set_clock(api::CLOCK_KIND_SIMULATED);
   absl::StatusOr<std::unique_ptr<RobotSession>> session =
@@ -285,8 +290,11 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
       if (d.object_index >= 0) result.seen_objects.insert(d.object_index);
       RecordDetection(result.trace, robot.time_s(), spec.world, label, d.object_index);
     }
-    absl::StatusOr<semnav::mapping::v1::FrameAck> ack =
-        frames.Send(EncodeFrame(captured, spec.robot_id));
+    semnav::mapping::v1::SensorFrame encoded = EncodeFrame(captured, spec.robot_id);
+    encoded.set_pose_untrusted(reported == api::LOCALIZATION_STATUS_LOST ||
+                               reported == api::LOCALIZATION_STATUS_UNCERTAIN ||
+                               gateway_relocalizing);
+    absl::StatusOr<semnav::mapping::v1::FrameAck> ack = frames.Send(encoded);
     if (!ack.ok()) return ack.status();
     mapping_revision = ack->revision();
     if (!spec.camera_frames) return absl::OkStatus();
@@ -304,12 +312,14 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     const api::LocalizationStatus status =
         localizer.Update(robot.time_s(), believed(), robot.pose());
     state.mutable_state()->set_localization(status);
+    reported = status;
     recovery.OnReport(robot.time_s(), status);
     if (absl::Status s = (*session)->Send(state); !s.ok()) return s;
     absl::StatusOr<std::vector<api::RobotCommand>> commands =
         (*session)->TakeStepCommands(step_number, kStepDoneTimeout);
     if (!commands.ok()) return commands.status();
     if (std::optional<api::LocalizationUpdate> update = (*session)->TakeLocalization()) {
+      gateway_relocalizing = update->relocalizing();
       const Pose corrected = FromProto(update->map_from_odom());
       const bool changed = (corrected.position - map_from_odom.position).norm() > 1e-9 ||
                            std::abs(corrected.yaw - map_from_odom.yaw) > 1e-12;

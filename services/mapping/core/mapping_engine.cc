@@ -48,6 +48,7 @@ struct MappingEngine::State {
     for (const auto& [label, points] : content.semantic_points) semantic.Add(label, points);
     scene.Replace(std::move(content.objects), content.next_object_id);
     last_stamp.clear();
+    pose_untrusted.clear();
     embedding_dim = 0;
     for (const SceneObject& o : scene.objects()) {
       if (!o.embedding.empty()) embedding_dim = static_cast<int>(o.embedding.size());
@@ -60,6 +61,7 @@ struct MappingEngine::State {
   SemanticMap semantic;
   SceneGraph scene;
   absl::flat_hash_map<std::string, int64_t> last_stamp;
+  absl::flat_hash_map<std::string, bool> pose_untrusted;  // per robot: its last frame's flag
   int embedding_dim = 0;
   std::deque<std::pair<uint64_t, GridWindow>> grid_changes;
   uint64_t grid_forgotten_before = 0;
@@ -163,6 +165,14 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
       s.embedding_dim = static_cast<int>(detection->embedding.size());
   }
   result.detections_used = static_cast<uint32_t>(observations.size());
+  bool& untrusted = s.pose_untrusted[frame.robot_id];
+  if (frame.pose_untrusted && !untrusted) {  // the robot reports its loss: the frames just before
+    s.scene.MarkPoseUntrustedSince(          // it were already at the wrong pose
+        frame.stamp_ns - static_cast<int64_t>(config_.scene.untrusted_lookback_s * 1e9));
+  }
+  untrusted = frame.pose_untrusted;
+  for (ObjectObservation& observation : observations)
+    observation.pose_untrusted = frame.pose_untrusted;
   s.scene.Integrate(observations, frame.stamp_ns);
   s.last_stamp[frame.robot_id] = frame.stamp_ns;
 

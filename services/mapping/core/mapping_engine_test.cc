@@ -156,6 +156,53 @@ TEST(MappingEngineTest, DetectionBecomesObjectAndSemanticCells) {
             absl::StatusCode::kInvalidArgument);
 }
 
+// A kidnapped robot maps at the pose it wrongly believes; its localizer says so only later
+// (mission.md, "Losing the pose"). Frames flagged pose_untrusted mark the instances they touch,
+// and the first one also marks what was seen in the lookback window before it, so mapping's
+// landmark maps leave them out (before: the look-around's own objects reached the live landmark
+// map and relocalization answered the wrong pose back).
+TEST(MappingEngineTest, UntrustedFramesAndTheLookbackBeforeThemMarkTheirInstances) {
+  MappingConfig config;
+  config.scene.untrusted_lookback_s = 2.5;
+  MappingEngine engine{config};
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  auto add = [&](int64_t stamp_ns, const std::string& label, const Eigen::Vector3d& at,
+                 bool untrusted) {
+    SensorFrame frame = testing::RenderFrame(room, Viewpoint(), stamp_ns);
+    frame.pose_untrusted = untrusted;
+    if (!label.empty()) {
+      Detection detection;
+      detection.label = label;
+      detection.score = 0.9;
+      detection.box = BoxAround(at, Viewpoint(), 30);
+      frame.detections.push_back(detection);
+    }
+    const absl::StatusOr<FrameResult> result = engine.AddFrame(frame);
+    ASSERT_TRUE(result.ok()) << result.status();
+  };
+  const Eigen::Vector3d table(3.2, 1.3, 0.7);
+  const Eigen::Vector3d cabinet(5.25, 3.4, 1.2);
+  for (int i = 0; i < 3; ++i) add((i + 1) * kFrameNs, "table", table, false);  // t = 0.1-0.3 s
+  for (int i = 0; i < 3; ++i) add(50 * kFrameNs + i * kFrameNs, "cabinet", cabinet, false);
+  // t = 6 s: the robot reports its loss. The cabinet was last seen at 5.2 s (within 2.5 s), the
+  // table at 0.3 s.
+  add(60 * kFrameNs, "", Eigen::Vector3d::Zero(), true);
+  SceneSnapshot scene = engine.Scene();
+  ASSERT_EQ(scene.objects.size(), 2u);
+  for (const SceneObject& object : scene.objects) {
+    EXPECT_EQ(object.pose_untrusted, object.label == "cabinet") << object.label;
+  }
+  // A new instance from an untrusted frame is marked; the marks stay once frames are trusted.
+  add(61 * kFrameNs, "rug", Eigen::Vector3d(4.0, 2.0, 0.0), true);  // on the floor
+  add(62 * kFrameNs, "", Eigen::Vector3d::Zero(), false);
+  add(100 * kFrameNs, "table", table, false);
+  scene = engine.Scene();
+  ASSERT_EQ(scene.objects.size(), 3u);
+  for (const SceneObject& object : scene.objects) {
+    EXPECT_EQ(object.pose_untrusted, object.label != "table") << object.label;
+  }
+}
+
 TEST(MappingEngineTest, BlurredColourImageSkipsDetectionsButKeepsDepth) {
   MappingEngine engine{MappingConfig{}};
   SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);

@@ -88,8 +88,15 @@ void SceneGraph::Merge(SceneObject& object, const ObjectObservation& observation
   object.score =
       (object.score * object.detection_count + observation.score) / (object.detection_count + 1);
   ++object.detection_count;
+  object.pose_untrusted = object.pose_untrusted || observation.pose_untrusted;
   object.last_seen_ns = std::max(object.last_seen_ns, observation.stamp_ns);
   object.revision = revision_ + 1;
+}
+
+void SceneGraph::MarkPoseUntrustedSince(int64_t since_ns) {
+  for (SceneObject& object : objects_) {
+    if (object.last_seen_ns >= since_ns) object.pose_untrusted = true;
+  }
 }
 
 void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns) {
@@ -108,6 +115,7 @@ void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, i
       fresh.score = observation.score;
       fresh.detection_count = 1;
       fresh.first_seen_ns = fresh.last_seen_ns = observation.stamp_ns;
+      fresh.pose_untrusted = observation.pose_untrusted;
       fresh.revision = revision_ + 1;
       objects_.push_back(std::move(fresh));
     } else {

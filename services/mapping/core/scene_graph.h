@@ -15,7 +15,11 @@ struct SceneGraphConfig {
   double embedding_max_distance_m = 3.0;  // ... and the instance within this distance
   double label_max_distance_m = 1.0;      // fallback match: same label within this distance
   double prune_single_after_s = 10.0;     // drop instances seen once and not again for this long
-  size_t removal_log_size = 4096;         // removals remembered for resumable watches
+  // When a robot's frames turn untrusted, instances seen this long before its first untrusted
+  // frame are marked too: a localizer reports a lost pose late (the simulator's model after 2 s
+  // of disagreement, on the next 0.5 s step: 2.5 s; set it to the robot localizer's latency).
+  double untrusted_lookback_s = 2.5;
+  size_t removal_log_size = 4096;  // removals remembered for resumable watches
   RelationConfig relations;
 };
 
@@ -46,6 +50,10 @@ class SceneGraph {
   const SceneObject* Find(uint64_t id) const;
   // Changes after `since`; nullopt when removals that old were forgotten (send a snapshot).
   std::optional<SceneDelta> ChangesSince(uint64_t since) const;
+  // Marks every instance last seen at or after `since_ns` as pose_untrusted (the frames of a
+  // robot's loss before it reported it). Does not bump the revision: nothing a watcher sees
+  // changed.
+  void MarkPoseUntrustedSince(int64_t since_ns);
   // Replaces the whole graph (map load / reset); bumps the revision.
   void Replace(std::vector<SceneObject> objects, uint64_t next_id);
   uint64_t next_id() const { return next_id_; }

@@ -17,6 +17,7 @@ struct ObjectObservation {
   std::vector<float> embedding;                        // empty when the detector gave none
   int64_t stamp_ns = 0;
   std::string robot_id;
+  bool pose_untrusted = false;  // from a frame whose pose the robot did not trust
 };
 
 struct SceneObject {
@@ -34,6 +35,11 @@ struct SceneObject {
   int64_t last_seen_ns = 0;
   int region_id = -1;
   uint64_t revision = 0;  // graph revision of the object's last change
+  // An observation from a frame whose pose the robot did not trust was fused into it, or it was
+  // seen shortly before the robot reported the loss: its position may be in the wrong frame, so
+  // landmark maps leave it out for good (not saved with the map: a loaded map's landmarks come
+  // from its .lmap file, written without such instances).
+  bool pose_untrusted = false;
 };
 
 enum class RelationKind { kNear, kLeftOf, kRightOf, kInFrontOf, kBehind, kOn, kAbove };

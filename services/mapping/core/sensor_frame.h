@@ -62,6 +62,8 @@ struct SensorFrame {
   std::vector<Detection> detections;
   // Optional LiDAR points in the camera frame (metres).
   std::vector<Eigen::Vector3f> lidar_points;
+  // The robot does not trust `pose` (lost or relocalizing): see SceneObject::pose_untrusted.
+  bool pose_untrusted = false;
 };
 
 }  // namespace semnav::mapping

@@ -30,6 +30,9 @@ absl::Status ValidateLandmarkPublisherConfig(const LandmarkPublisherConfig& conf
   if (config.deadline_ms < 10 || config.deadline_ms > 600000) {
     return InvalidField("deadline_ms", "must be in [10, 600000]");
   }
+  if (!(config.settle_s >= 0.0 && config.settle_s <= 600.0)) {
+    return InvalidField("settle_s", "must be in [0, 600]");
+  }
   return absl::OkStatus();
 }
 
@@ -130,7 +133,8 @@ void LandmarkPublisher::NoteResult(const grpc::Status& status, absl::string_view
 void LandmarkPublisher::PushLive() {
   const SceneSnapshot scene = engine_.Scene();
   if (have_published_ && scene.revision == published_revision_) return;
-  const std::vector<SceneLandmark> found = LandmarksFromScene(scene.objects, landmarks_);
+  const std::vector<SceneLandmark> found =
+      LandmarksFromScene(SettledInstances(scene.objects, config_.settle_s), landmarks_);
   if (found.empty()) return;
   rv1::UpsertLandmarksRequest request;
   request.set_map_id(config_.live_map_id);

@@ -30,6 +30,11 @@ struct LandmarkPublisherConfig {
   std::string live_map_id = "live";  // landmark map of the live scene graph
   double interval_s = 2.0;           // debounce: at most one live push per interval
   int deadline_ms = 2000;            // per relocalization call
+  // An instance reaches the live landmark map once it has not been observed for this long (scene
+  // time): a robot's localizer reports a lost pose late (the simulator's model: 2.5 s), and the
+  // instances its frames made meanwhile must not be in the map when the loss marks them
+  // (SceneObject::pose_untrusted). 0 = at once.
+  double settle_s = 2.5;
 };
 
 // INVALID_ARGUMENT naming live_map_id / interval_s / deadline_ms.

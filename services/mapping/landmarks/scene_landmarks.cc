@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "absl/strings/str_cat.h"
@@ -91,6 +92,7 @@ std::vector<SceneLandmark> LandmarksFromScene(const std::vector<SceneObject>& ob
   std::vector<SceneLandmark> out;
   for (const SceneObject& object : objects) {
     if (object.detection_count < config.min_detections) continue;
+    if (object.pose_untrusted) continue;  // possibly in the wrong frame: never a landmark
     SceneLandmark item;
     item.object_id = object.id;
     relocalization::Landmark& l = item.landmark;
@@ -108,6 +110,18 @@ std::vector<SceneLandmark> LandmarksFromScene(const std::vector<SceneObject>& ob
     out.push_back(std::move(item));
   }
   return out;
+}
+
+std::vector<SceneObject> SettledInstances(const std::vector<SceneObject>& objects,
+                                          double settle_s) {
+  int64_t newest = std::numeric_limits<int64_t>::min();
+  for (const SceneObject& object : objects) newest = std::max(newest, object.last_seen_ns);
+  const int64_t settle_ns = static_cast<int64_t>(settle_s * 1e9);
+  std::vector<SceneObject> settled;
+  for (const SceneObject& object : objects) {
+    if (settle_ns == 0 || object.last_seen_ns <= newest - settle_ns) settled.push_back(object);
+  }
+  return settled;
 }
 
 }  // namespace semnav::mapping

@@ -43,12 +43,17 @@ struct SceneLandmark {
   relocalization::Landmark landmark;  // id 0: not yet stored in a landmark map
 };
 
-// The stable instances of `objects` (detection_count >= min_detections) as landmarks, in input
+// The stable instances of `objects` (detection_count >= min_detections, not pose_untrusted: seen
+// while the robot was lost, see SceneObject::pose_untrusted) as landmarks, in input
 // order: position = instance centre, scale = its box diagonal (metres), descriptor = [label
 // shares | embedding_weight x unit embedding], observations = detections. An instance is left
 // out when its descriptor would be all zero or the landmark fails ValidateLandmark (a
 // non-finite or out-of-range centre, an empty box). `config` must be valid.
 std::vector<SceneLandmark> LandmarksFromScene(const std::vector<SceneObject>& objects,
                                               const SceneLandmarkConfig& config);
+
+// The instances not observed during the last `settle_s` seconds before the newest observation of
+// `objects` (all of them when settle_s is 0), in input order.
+std::vector<SceneObject> SettledInstances(const std::vector<SceneObject>& objects, double settle_s);
 
 }  // namespace semnav::mapping

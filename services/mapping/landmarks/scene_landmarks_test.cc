@@ -82,6 +82,36 @@ TEST(SceneLandmarks, OnlyStableInstancesBecomeLandmarks) {
   EXPECT_EQ(out[0].object_id, 7u);
 }
 
+// Instances seen while the robot was lost may sit in the wrong frame: never landmarks (before,
+// relocalization matched a lost robot's look-around against itself in mapping's live map).
+TEST(SceneLandmarks, InstancesSeenWhileThePoseWasUntrustedAreLeftOut) {
+  SceneObject while_lost = Chair();
+  while_lost.id = 9;
+  while_lost.pose_untrusted = true;
+  const std::vector<SceneLandmark> out =
+      LandmarksFromScene({while_lost, Chair()}, TwoLabelsTwoDims());
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].object_id, 7u);
+}
+
+// The live push waits until an instance has not been seen for settle_s: a loss reported 2.5 s late
+// must be able to mark what the robot saw meanwhile before it reaches the landmark map.
+TEST(SceneLandmarks, OnlyInstancesUnseenForTheSettleTimeAreSettled) {
+  SceneObject old_one = Chair();
+  old_one.last_seen_ns = 1'000'000'000;  // 1 s
+  SceneObject edge = Chair();
+  edge.id = 8;
+  edge.last_seen_ns = 3'500'000'000;  // 2.5 s before the newest: settled
+  SceneObject recent = Chair();
+  recent.id = 9;
+  recent.last_seen_ns = 6'000'000'000;  // the newest observation
+  const std::vector<SceneObject> settled = SettledInstances({old_one, edge, recent}, 2.5);
+  ASSERT_EQ(settled.size(), 2u);
+  EXPECT_EQ(settled[0].id, 7u);
+  EXPECT_EQ(settled[1].id, 8u);
+  EXPECT_EQ(SettledInstances({old_one, edge, recent}, 0.0).size(), 3u);
+}
+
 TEST(SceneLandmarks, EmbeddingOfAnotherLengthLeavesZerosAndNothingDescribableIsSkipped) {
   SceneObject other_dim = Chair();
   other_dim.embedding = {1.0f, 0.0f, 0.0f};

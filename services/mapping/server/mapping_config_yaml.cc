@@ -95,6 +95,7 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("embedding_max_distance_m", &s.embedding_max_distance_m)
       .Read("label_max_distance_m", &s.label_max_distance_m)
       .Read("prune_single_after_s", &s.prune_single_after_s)
+      .Read("untrusted_lookback_s", &s.untrusted_lookback_s)
       .Read("near_m", &s.relations.near_m)
       .Read("direction_margin_m", &s.relations.direction_margin_m)
       .Read("on_tolerance_m", &s.relations.on_tolerance_m)
@@ -104,6 +105,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   scene.Check(s.embedding_min_cosine >= -1.0 && s.embedding_min_cosine <= 1.0,
               "embedding_min_cosine", "must be in [-1, 1]");
   scene.Check(s.prune_single_after_s > 0.0, "prune_single_after_s", "must be > 0");
+  scene.Check(s.untrusted_lookback_s >= 0.0 && s.untrusted_lookback_s <= 60.0,
+              "untrusted_lookback_s", "must be in [0, 60]");
   scene.Check(s.relations.near_m > 0.0 && s.relations.region_radius_m > 0.0, "region_radius_m",
               "radii must be > 0");
 
@@ -138,7 +141,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("embedding_weight", &l.embedding_weight)
       .Read("live_map_id", &p.live_map_id)
       .Read("interval_s", &p.interval_s)
-      .Read("deadline_ms", &p.deadline_ms);
+      .Read("deadline_ms", &p.deadline_ms)
+      .Read("settle_s", &p.settle_s);
   // Without the section no relocalization service is used (FromConfig wants an address).
   if (landmarks.Has("relocalization")) {
     ConfigReader relocalization = landmarks.Child("relocalization");

@@ -105,6 +105,7 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
     frame.detections.push_back(std::move(det));
   }
   for (const auto& p : proto.lidar_points()) frame.lidar_points.push_back(Vec(p).cast<float>());
+  frame.pose_untrusted = proto.pose_untrusted();
   return frame;
 }
 

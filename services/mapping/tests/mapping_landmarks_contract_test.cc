@@ -65,8 +65,9 @@ class MappingLandmarksContractTest : public ::testing::Test {
         << "mapping:\n  store_directory: " << store_
         << "\n  live_snapshot_interval_s: 0\n  landmarks:\n    labels: [chair, table]\n"
         << "    embedding_dim: 4\n    live_map_id: robot_x\n    interval_s: 0.1\n"
-        << "    deadline_ms: 500\n    relocalization: {address: \"" << relocalization_address
-        << "\"}\n";
+        // settle_s 0: the frames here are 0.1 s apart; the push itself is under test.
+        << "    deadline_ms: 500\n    settle_s: 0\n    relocalization: {address: \""
+        << relocalization_address << "\"}\n";
     absl::StatusOr<std::unique_ptr<semnav::testing::ServiceProcess>> mapping =
         semnav::testing::ServiceProcess::Start("semnav-mapping", {"--config", config});
     ASSERT_TRUE(mapping.ok()) << mapping.status();

@@ -20,6 +20,15 @@ RobotCommand Rotate(uint64_t id, double rate, double duration, const std::string
   return command;
 }
 
+RelocalizationAction Hold(uint64_t id, const std::string& reason) {
+  RelocalizationAction hold;
+  hold.kind = RelocalizationAction::Kind::kCommand;
+  hold.command.kind = CommandKind::kHold;
+  hold.command.id = id;
+  hold.command.reason = reason;
+  return hold;
+}
+
 }  // namespace
 
 Eigen::Vector3d PlanarTransform::Apply(const Eigen::Vector3d& point) const {
@@ -75,8 +84,10 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now,
   pose_ = odom_pose;
   switch (phase_) {
     case Phase::kLookingAround:
+      if (call_in_flight_ && now < call_deadline_) return {};  // the turn's query answers first
+      call_in_flight_ = false;
       if (now >= phase_deadline_) return LookAround(now, graph);
-      return {};
+      return QueryDuringTurn(now, graph);
     case Phase::kAwaitingAnswer:
       if (now >= phase_deadline_) {
         return AttemptFailed(now,
@@ -135,12 +146,7 @@ std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now,
                                            observed.size(), config_.min_observed_objects),
                            graph);
     }
-    RelocalizationAction hold;
-    hold.kind = RelocalizationAction::Kind::kCommand;
-    hold.command.kind = CommandKind::kHold;
-    hold.command.id = next_command_id_++;
-    hold.command.reason = "relocalizing: waiting for the answer";
-    actions.push_back(hold);
+    actions.push_back(Hold(next_command_id_++, "relocalizing: waiting for the answer"));
     RelocalizationAction call;
     call.kind = RelocalizationAction::Kind::kRelocalize;
     call.observed = std::move(observed);
@@ -153,15 +159,39 @@ std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now,
   ++attempt_;
   baseline_.clear();
   for (const SceneObject& object : graph.objects) baseline_[object.id] = object.detection_count;
+  // The same angle at the robot's own limit when that is lower.
+  turn_rate_ = std::min(config_.look_around_rate_rps, max_yaw_rate_rps_);
+  turn_duration_ = config_.look_around_duration_s * config_.look_around_rate_rps / turn_rate_;
   RelocalizationAction rotate;
   rotate.kind = RelocalizationAction::Kind::kCommand;
-  rotate.command =
-      Rotate(next_command_id_++, config_.look_around_rate_rps, config_.look_around_duration_s,
-             absl::StrFormat("relocalizing: looking around (attempt %d)", attempt_));
+  rotate.command = Rotate(next_command_id_++, turn_rate_, turn_duration_,
+                          absl::StrFormat("relocalizing: looking around (attempt %d)", attempt_));
   actions.push_back(rotate);
   phase_ = Phase::kLookingAround;
-  phase_deadline_ = now + config_.look_around_duration_s;
+  phase_deadline_ = now + turn_duration_;
+  call_in_flight_ = false;
+  next_query_ = now + config_.query_interval_s;
+  last_query_size_ = 0;
   return actions;
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::QueryDuringTurn(double now,
+                                                                      const SceneGraph& graph) {
+  if (config_.query_interval_s <= 0.0 || now < next_query_) return {};
+  std::vector<ObservedObject> observed = Observed(graph);
+  if (static_cast<int>(observed.size()) < config_.min_observed_objects ||
+      observed.size() <= last_query_size_) {
+    return {};  // not enough yet, or nothing the last query did not have
+  }
+  next_query_ = now + config_.query_interval_s;
+  last_query_size_ = observed.size();
+  call_in_flight_ = true;
+  call_deadline_ = now + config_.answer_timeout_s;
+  RelocalizationAction call;
+  call.kind = RelocalizationAction::Kind::kRelocalize;
+  call.message = absl::StrFormat("%d observed objects (turning)", observed.size());
+  call.observed = std::move(observed);
+  return {std::move(call)};
 }
 
 std::vector<ObservedObject> RelocalizationLoop::Observed(const SceneGraph& graph) const {
@@ -201,50 +231,66 @@ std::vector<ObservedObject> RelocalizationLoop::Observed(const SceneGraph& graph
   return out;
 }
 
-std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(
-    double now, const absl::StatusOr<RelocalizationAnswer>& answer) {
-  if (phase_ != Phase::kAwaitingAnswer) return {};  // late answer of an attempt that timed out
+std::string RelocalizationLoop::Rejection(
+    const absl::StatusOr<RelocalizationAnswer>& answer) const {
   if (!answer.ok()) {
-    return AttemptFailed(
-        now, absl::StrFormat("relocalization failed: %s", answer.status().message()), SceneGraph{});
+    return absl::StrFormat("relocalization failed: %s", answer.status().message());
   }
   if (!answer->reliable) {
-    return AttemptFailed(
-        now,
-        absl::StrFormat("relocalization answer not reliable (%d inliers, rms %.2f m)",
-                        answer->inliers, answer->rms_residual_m),
-        SceneGraph{});
+    return absl::StrFormat("relocalization answer not reliable (%d inliers, rms %.2f m)",
+                           answer->inliers, answer->rms_residual_m);
   }
-  const PlanarTransform previous = map_from_odom_;
   if (reported_ != LocalizationReport::kOk) {
-    const RobotPose before = previous.Apply(pose_);
+    const RobotPose before = map_from_odom_.Apply(pose_);
     const RobotPose after = answer->map_from_odom.Apply(pose_);
     const double moved = (after.position - before.position).head<2>().norm();
     const double turned = std::abs(Wrap(after.yaw - before.yaw));
     if (moved < config_.confirming_answer_m && turned < config_.confirming_answer_rad) {
-      return AttemptFailed(
-          now,
-          absl::StrFormat("the answer confirms the pose the robot reports %s (moves it %.2f m, "
-                          "%.1f deg; %d inliers, rms %.2f m): the look-around matched itself?",
-                          reported_ == LocalizationReport::kLost ? "LOST" : "UNCERTAIN", moved,
-                          turned * 180.0 / M_PI, answer->inliers, answer->rms_residual_m),
-          SceneGraph{});
+      return absl::StrFormat(
+          "the answer confirms the pose the robot reports %s (moves it %.2f m, %.1f deg; %d "
+          "inliers, rms %.2f m): the look-around matched itself?",
+          reported_ == LocalizationReport::kLost ? "LOST" : "UNCERTAIN", moved,
+          turned * 180.0 / M_PI, answer->inliers, answer->rms_residual_m);
     }
   }
-  map_from_odom_ = answer->map_from_odom;
+  return "";
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(
+    double now, const absl::StatusOr<RelocalizationAnswer>& answer) {
+  if (phase_ == Phase::kLookingAround) {  // the answer to a query during the turn
+    if (!call_in_flight_) return {};
+    call_in_flight_ = false;
+    if (!Rejection(answer).empty()) return {};  // the turn goes on; its end asks again
+    return Recovered(now, *answer, /*stop_turning=*/true);
+  }
+  if (phase_ != Phase::kAwaitingAnswer) return {};  // late answer of an attempt that timed out
+  const std::string why = Rejection(answer);
+  if (!why.empty()) return AttemptFailed(now, why, SceneGraph{});
+  return Recovered(now, *answer, /*stop_turning=*/false);
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::Recovered(double now,
+                                                                const RelocalizationAnswer& answer,
+                                                                bool stop_turning) {
+  const PlanarTransform previous = map_from_odom_;
+  map_from_odom_ = answer.map_from_odom;
   trusted_ = true;
   ++recoveries_;
   phase_ = Phase::kTracking;
   last_ended_ = now;
   std::vector<RelocalizationAction> actions;
+  if (stop_turning) {
+    actions.push_back(Hold(next_command_id_++, "relocalized: the look-around ends"));
+  }
   RelocalizationAction correct;
   correct.kind = RelocalizationAction::Kind::kCorrect;
   correct.map_from_odom = map_from_odom_;
   correct.message = absl::StrFormat(
       "relocalized (%s): map_from_odom moved by %.2f m, %.1f deg (%d inliers, rms %.2f m)",
       trigger_, (map_from_odom_.translation - previous.translation).head<2>().norm(),
-      Wrap(map_from_odom_.yaw - previous.yaw) * 180.0 / M_PI, answer->inliers,
-      answer->rms_residual_m);
+      Wrap(map_from_odom_.yaw - previous.yaw) * 180.0 / M_PI, answer.inliers,
+      answer.rms_residual_m);
   actions.push_back(correct);
   if (paused_task_) {
     RelocalizationAction resume;

@@ -26,9 +26,21 @@ struct RelocalizationLoopConfig {
   double jump_yaw_rad = 0.6;
   double default_speed_mps = 1.0;  // top speed when the robot's hello gave none
   double default_yaw_rate_rps = 1.5;
-  // Look-around: one full turn at the executor's LOOK_AROUND rate (seed 002's 12 s at 0.5 rad/s).
-  double look_around_rate_rps = 0.5;
-  double look_around_duration_s = 12.6;
+  // Look-around: one full turn (rate x duration = 2 pi). Seed 002's 0.5 rad/s turn took 12.6 s,
+  // which with the localizer's 2.5 s to report LOST left no answer within the kidnapped target's
+  // 15 s (mission.md, "Losing the pose"). 0.75 rad/s is below the simulated ground robot's yaw
+  // limit (1 rad/s, clients/sim/core/robot_config.h) and a TurtleBot3 Waffle's 1.82 rad/s, and
+  // keeps an object in a 63 deg camera's view for 1.46 s: three frames at the simulator's 2 Hz
+  // (two at 1 rad/s, too few for min_object_detections with a 10 % miss rate). A robot whose
+  // hello gives a lower max_angular_speed_rps turns at that rate for the same angle.
+  double look_around_rate_rps = 0.75;
+  double look_around_duration_s = 8.4;
+  // Queries during the turn: every this many seconds, once the turn has seen
+  // min_observed_objects (and more than at the last query), the observed objects go to
+  // relocalization while the robot keeps turning; a reliable answer ends the look-around at once,
+  // any other answer lets the turn go on (0 = only at the end of the turn). 1 s = two simulator
+  // steps (0.5 s) of new frames, 43 deg of new view at 0.75 rad/s.
+  double query_interval_s = 1.0;
   // Relocalization answer: a call without an answer this long after it was made fails the
   // attempt (simulated seconds for simulated-clock robots).
   double answer_timeout_s = 10.0;
@@ -145,6 +157,13 @@ class RelocalizationLoop {
   std::vector<RelocalizationAction> AttemptFailed(double now, const std::string& why,
                                                   const SceneGraph& graph);
   std::vector<ObservedObject> Observed(const SceneGraph& graph) const;
+  // A query while the turn goes on (see query_interval_s), or none.
+  std::vector<RelocalizationAction> QueryDuringTurn(double now, const SceneGraph& graph);
+  // A reliable answer that does not confirm a LOST pose: correct, resume.
+  std::vector<RelocalizationAction> Recovered(double now, const RelocalizationAnswer& answer,
+                                              bool stop_turning);
+  // Why an answer is no recovery (empty = it is one).
+  std::string Rejection(const absl::StatusOr<RelocalizationAnswer>& answer) const;
   bool Jumped(double now, const RobotPose& odom_pose) const;
 
   RelocalizationLoopConfig config_;
@@ -157,6 +176,14 @@ class RelocalizationLoop {
   bool paused_task_ = false;
   int attempt_ = 0;
   double phase_deadline_ = 0.0;
+  // A query during the turn waits for its answer (until call_deadline_); the next one needs more
+  // observed objects than the last.
+  bool call_in_flight_ = false;
+  double call_deadline_ = 0.0;
+  double next_query_ = 0.0;
+  size_t last_query_size_ = 0;
+  double turn_rate_ = 0.0;  // this look-around's rate and duration
+  double turn_duration_ = 0.0;
   double last_ended_ = -1e18;
   std::optional<double> last_state_time_;
   RobotPose last_pose_;

@@ -32,7 +32,9 @@ RobotPose Pose(double x, double y, double yaw = 0.0) {
 
 RelocalizationLoopConfig Config() {
   RelocalizationLoopConfig config;
+  config.look_around_rate_rps = 0.5;
   config.look_around_duration_s = 12.0;
+  config.query_interval_s = 0.0;  // the tests below query once, at the end of the turn
   config.answer_timeout_s = 5.0;
   config.min_observed_objects = 3;
   config.min_object_detections = 1;  // the tests below count on single detections
@@ -288,6 +290,63 @@ TEST(RelocalizationLoopTest, AnAnswerConfirmingTheLostPoseIsNoRecovery) {
   actions = loop.OnAnswer(43.5, self);
   ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
   EXPECT_TRUE(loop.trusted());
+}
+
+// The kidnapped target is an answer within 15 s of the kidnap, and the localizer reports LOST
+// 2.5 s after it (mission.md, "Losing the pose"): the turn runs at 0.75 rad/s by default (8.4 s
+// for a full turn), capped by the robot's own yaw rate, and the objects go to relocalization as
+// they come in; a reliable answer ends the turn there.
+TEST(RelocalizationLoopTest, QueriesDuringTheTurnAndAReliableAnswerEndsItEarly) {
+  RelocalizationLoopConfig config;  // the defaults
+  config.min_object_detections = 1;
+  RelocalizationLoop loop(config);
+  std::vector<RelocalizationAction> actions =
+      loop.OnState(0.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kPauseTask, Kind::kCommand}));
+  EXPECT_DOUBLE_EQ(actions[1].command.angular_speed, 0.75);
+  EXPECT_NEAR(actions[1].command.duration_s, 8.4, 1e-12);
+  // 0.5 s: too early for a query (interval 1 s); 1.0 s: only two objects are new, too few.
+  EXPECT_TRUE(loop.OnState(0.5, Pose(0, 0, 0.5), LocalizationReport::kLost, After(), true).empty());
+  const SceneGraph two{2, {Object(1, 1, 0, 4), Object(3, 2, 2, 1), Object(4, -1, 3, 2)}, {}, {}};
+  EXPECT_TRUE(loop.OnState(1.0, Pose(0, 0, 1.0), LocalizationReport::kLost, two, true).empty());
+  // 1.5 s: three new objects; asked while the turn goes on (no hold).
+  actions = loop.OnState(1.5, Pose(0, 0, 1.5), LocalizationReport::kLost, After(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kRelocalize}));
+  EXPECT_EQ(actions[0].observed.size(), 3u);
+  // Waiting for that answer: no second call.
+  EXPECT_TRUE(loop.OnState(2.0, Pose(0, 0, 2.0), LocalizationReport::kLost, After(), true).empty());
+  // Not reliable: the turn goes on, and the same three objects are not asked about again.
+  RelocalizationAnswer unreliable;
+  unreliable.inliers = 2;
+  EXPECT_TRUE(loop.OnAnswer(2.0, unreliable).empty());
+  EXPECT_TRUE(loop.relocalizing());
+  EXPECT_TRUE(loop.OnState(2.5, Pose(0, 0, 2.5), LocalizationReport::kLost, After(), true).empty());
+  // 3.0 s: a fourth object: the next query; its reliable answer stops the turn and resumes.
+  SceneGraph more = After();
+  more.objects.push_back(Object(6, 3, -3, 2));
+  actions = loop.OnState(3.0, Pose(0, 0, 3.0), LocalizationReport::kLost, more, true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kRelocalize}));
+  EXPECT_EQ(actions[0].observed.size(), 4u);
+  RelocalizationAnswer answer;
+  answer.map_from_odom = PlanarTransform{Eigen::Vector3d(1.5, -2.0, 0.0), 0.4};
+  answer.reliable = true;
+  answer.inliers = 4;
+  actions = loop.OnAnswer(3.5, answer);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kHold);
+  EXPECT_FALSE(loop.relocalizing());
+  EXPECT_EQ(loop.recoveries(), 1);
+  EXPECT_NEAR(loop.map_from_odom().yaw, 0.4, 1e-12);
+}
+
+// A robot whose hello says it turns at most 0.4 rad/s turns the same full circle more slowly.
+TEST(RelocalizationLoopTest, TheTurnKeepsItsAngleAtTheRobotsLowerYawRate) {
+  RelocalizationLoop loop(RelocalizationLoopConfig{});
+  loop.SetLimits(0.5, 0.4);
+  const std::vector<RelocalizationAction> actions = loop.OnRequest(0.0, "", Before());
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kPauseTask, Kind::kCommand}));
+  EXPECT_DOUBLE_EQ(actions[1].command.angular_speed, 0.4);
+  EXPECT_NEAR(actions[1].command.duration_s, 8.4 * 0.75 / 0.4, 1e-9);  // 15.75 s
 }
 
 }  // namespace

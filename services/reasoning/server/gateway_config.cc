@@ -155,6 +155,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("jump_yaw_rad", &loop.jump_yaw_rad)
         .Read("look_around_rate_rps", &loop.look_around_rate_rps)
         .Read("look_around_duration_s", &loop.look_around_duration_s)
+        .Read("query_interval_s", &loop.query_interval_s)
         .Read("answer_timeout_s", &loop.answer_timeout_s)
         .Read("min_observed_objects", &loop.min_observed_objects)
         .Read("max_observed_objects", &loop.max_observed_objects)
@@ -174,6 +175,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     reloc.Check(loop.look_around_rate_rps > 0.0 && loop.look_around_rate_rps <= 10.0,
                 "look_around_rate_rps", "must be in (0, 10]");
     reloc.Check(loop.look_around_duration_s > 0.0, "look_around_duration_s", "must be > 0");
+    reloc.Check(loop.query_interval_s >= 0.0 && loop.query_interval_s <= 60.0, "query_interval_s",
+                "must be in [0, 60]");
     reloc.Check(loop.answer_timeout_s > 0.0, "answer_timeout_s", "must be > 0");
     reloc.Check(loop.min_observed_objects >= 3, "min_observed_objects",
                 "must be >= 3 (a pose needs 3 objects)");

@@ -83,7 +83,9 @@ class HubRelocalizationTest : public ::testing::Test {
  protected:
   void SetUp() override {
     config_.relocalization.channel.address = "unused";  // the backend is the scripted one
+    config_.relocalization.loop.look_around_rate_rps = 0.5;
     config_.relocalization.loop.look_around_duration_s = 12.0;
+    config_.relocalization.loop.query_interval_s = 0.0;  // one query at the end of the turn
     config_.relocalization.simulated_latency_s = 0.5;
     GatewayBackends backends;
     backends.relocalizer = &relocalizer_;

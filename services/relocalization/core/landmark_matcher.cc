@@ -1,6 +1,7 @@
 #include "services/relocalization/core/landmark_matcher.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "services/relocalization/core/hungarian.h"
@@ -58,11 +59,19 @@ double NeighbourhoodMatcher::NeighbourhoodScore(size_t query, const std::vector<
   const Eigen::Vector3d& ma = map_.at(candidate.map).position;
   // Before the pose is known only distances to the anchor are comparable.
   Eigen::MatrixXd s(static_cast<Eigen::Index>(nq.size()), static_cast<Eigen::Index>(nm.size()));
+  // Both centres' uncertainties add up in the distance between them.
+  const double anchor_tolerance =
+      ScaleTolerance(sp, query_.at(query).scale, map_.at(candidate.map).scale);
   for (size_t i = 0; i < nq.size(); ++i) {
     const double dq = (query_.at(nq[i]).position - qa).norm();
     for (size_t j = 0; j < nm.size(); ++j) {
       SimilarityTerms terms = TermsWithoutPosition(query_, nq[i], map_, nm[j]);
-      terms.pos = PositionSimilarity(dq - (map_.at(nm[j]).position - ma).norm(), sp.pos_sigma_m);
+      const double tolerance = ScaleTolerance(sp, query_.at(nq[i]).scale, map_.at(nm[j]).scale);
+      const double sigma = sp.pos_sigma_per_scale > 0.0
+                               ? sp.pos_sigma_m * std::sqrt(anchor_tolerance * anchor_tolerance +
+                                                            tolerance * tolerance - 1.0)
+                               : sp.pos_sigma_m;
+      terms.pos = PositionSimilarity(dq - (map_.at(nm[j]).position - ma).norm(), sigma);
       s(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = CombinedSimilarity(terms, sp);
     }
   }
@@ -106,10 +115,15 @@ std::vector<Match> MatchUnderPose(const IndexedLandmarks& query, const IndexedLa
   std::vector<Edge> edges;
   for (size_t q = 0; q < query.size(); ++q) {
     const Eigen::Vector3d x = map_from_query * query.at(q).position;
-    for (size_t m : map.tree().WithinRadius(x, params.rematch_radius_m)) {
+    const SimilarityParams& sp = params.similarity;
+    const double search_radius =
+        params.rematch_radius_m * ScaleTolerance(sp, query.at(q).scale, query.at(q).scale);
+    for (size_t m : map.tree().WithinRadius(x, search_radius)) {
+      const double tolerance = ScaleTolerance(sp, query.at(q).scale, map.at(m).scale);
+      const double error = (map.at(m).position - x).norm();
+      if (error > params.rematch_radius_m * tolerance) continue;
       SimilarityTerms terms = TermsWithoutPosition(query, q, map, m);
-      terms.pos =
-          PositionSimilarity((map.at(m).position - x).norm(), params.similarity.pos_sigma_m);
+      terms.pos = PositionSimilarity(error, sp.pos_sigma_m * tolerance);
       const double s = CombinedSimilarity(terms, params.similarity);
       if (s > 0.0) edges.push_back({q, m, s});
     }

@@ -22,21 +22,28 @@ Eigen::Matrix3d ExpSo3(const Eigen::Vector3d& w) {
 }
 
 double Cost(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
-            const std::vector<size_t>& indices, const Eigen::Matrix3d& r,
-            const Eigen::Vector3d& t) {
+            const std::vector<size_t>& indices, const Eigen::Matrix3d& r, const Eigen::Vector3d& t,
+            const std::vector<double>& tolerance) {
   double cost = 0.0;
-  for (size_t i : indices) cost += (q[i] - (r * p[i] + t)).squaredNorm();
+  for (size_t i : indices) {
+    const double t_i = ToleranceOf(tolerance, i);
+    cost += (q[i] - (r * p[i] + t)).squaredNorm() / (t_i * t_i);
+  }
   return cost;
 }
 
 // Median over reference pairs j != i of the internal-distance discrepancy of pair i.
 double MedianDiscrepancy(const std::vector<Eigen::Vector3d>& p,
                          const std::vector<Eigen::Vector3d>& q, size_t i,
-                         const std::vector<size_t>& references, std::vector<double>& scratch) {
+                         const std::vector<size_t>& references,
+                         const std::vector<double>& tolerance, std::vector<double>& scratch) {
   scratch.clear();
+  const double t_i = ToleranceOf(tolerance, i);
   for (size_t j : references) {
     if (j == i) continue;
-    scratch.push_back(std::abs((p[i] - p[j]).norm() - (q[i] - q[j]).norm()));
+    const double t_j = ToleranceOf(tolerance, j);
+    scratch.push_back(std::abs((p[i] - p[j]).norm() - (q[i] - q[j]).norm()) /
+                      std::sqrt(0.5 * (t_i * t_i + t_j * t_j)));
   }
   if (scratch.empty()) return 0.0;
   const auto mid = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
@@ -48,7 +55,8 @@ double MedianDiscrepancy(const std::vector<Eigen::Vector3d>& p,
 
 std::vector<size_t> RejectOutliersByMedianDistance(const std::vector<Eigen::Vector3d>& p,
                                                    const std::vector<Eigen::Vector3d>& q,
-                                                   const PoseParams& params) {
+                                                   const PoseParams& params,
+                                                   const std::vector<double>& tolerance) {
   std::vector<size_t> active(p.size());
   for (size_t i = 0; i < active.size(); ++i) active[i] = i;
   std::vector<double> scratch;
@@ -64,7 +72,7 @@ std::vector<size_t> RejectOutliersByMedianDistance(const std::vector<Eigen::Vect
     size_t worst = 0;
     double worst_error = -1.0;
     for (size_t a = 0; a < active.size(); ++a) {
-      const double e = MedianDiscrepancy(p, q, active[a], references, scratch);
+      const double e = MedianDiscrepancy(p, q, active[a], references, tolerance, scratch);
       if (e > worst_error) {
         worst_error = e;
         worst = a;
@@ -80,17 +88,22 @@ Eigen::Isometry3d RefinePoseLevenbergMarquardt(const std::vector<Eigen::Vector3d
                                                const std::vector<Eigen::Vector3d>& q,
                                                const std::vector<size_t>& indices,
                                                const Eigen::Isometry3d& initial,
-                                               const PoseParams& params, int* iterations) {
-  // E(R, t) is solved about the centroids: with t = q_mean + u - R p_mean the cost is the
-  // same function, but rotation and translation steps decouple, so LM converges from far
-  // (R = I, u = 0 is exactly "translation = mean displacement").
+                                               const PoseParams& params, int* iterations,
+                                               const std::vector<double>& tolerance) {
+  // E(R, t) is solved about the (weighted) centroids: with t = q_mean + u - R p_mean the cost
+  // is the same function, but rotation and translation steps decouple, so LM converges from
+  // far (R = I, u = 0 is exactly "translation = mean displacement").
   Eigen::Vector3d p_mean = Eigen::Vector3d::Zero(), q_mean = Eigen::Vector3d::Zero();
+  double weights = 0.0;
   for (size_t i : indices) {
-    p_mean += p[i];
-    q_mean += q[i];
+    const double t_i = ToleranceOf(tolerance, i);
+    const double w = 1.0 / (t_i * t_i);
+    p_mean += w * p[i];
+    q_mean += w * q[i];
+    weights += w;
   }
-  p_mean /= static_cast<double>(indices.size());
-  q_mean /= static_cast<double>(indices.size());
+  p_mean /= weights;
+  q_mean /= weights;
   std::vector<Eigen::Vector3d> pc(p.size()), qc(q.size());
   for (size_t i : indices) {
     pc[i] = p[i] - p_mean;
@@ -98,7 +111,7 @@ Eigen::Isometry3d RefinePoseLevenbergMarquardt(const std::vector<Eigen::Vector3d
   }
   Eigen::Matrix3d r = initial.linear();
   Eigen::Vector3d u = initial.translation() - q_mean + r * p_mean;
-  double cost = Cost(pc, qc, indices, r, u);
+  double cost = Cost(pc, qc, indices, r, u, tolerance);
   double lambda = params.lm_initial_lambda;
   int it = 0;
   for (; it < params.lm_max_iterations; ++it) {
@@ -111,8 +124,10 @@ Eigen::Isometry3d RefinePoseLevenbergMarquardt(const std::vector<Eigen::Vector3d
       const Eigen::Vector3d e = qc[i] - (rp + u);
       Eigen::Matrix<double, 3, 6> j;
       j << Skew(rp), -Eigen::Matrix3d::Identity();
-      jtj += j.transpose() * j;
-      jte += j.transpose() * e;
+      const double t_i = ToleranceOf(tolerance, i);
+      const double w = 1.0 / (t_i * t_i);
+      jtj += w * (j.transpose() * j);
+      jte += w * (j.transpose() * e);
     }
     Eigen::Matrix<double, 6, 6> damped = jtj;
     damped.diagonal() += lambda * jtj.diagonal().cwiseMax(1e-9);
@@ -120,7 +135,7 @@ Eigen::Isometry3d RefinePoseLevenbergMarquardt(const std::vector<Eigen::Vector3d
     if (!step.allFinite() || step.norm() < params.lm_min_step) break;
     const Eigen::Matrix3d r_new = ExpSo3(step.head<3>()) * r;
     const Eigen::Vector3d u_new = u + step.tail<3>();
-    const double cost_new = Cost(pc, qc, indices, r_new, u_new);
+    const double cost_new = Cost(pc, qc, indices, r_new, u_new, tolerance);
     if (cost_new < cost) {
       r = r_new;
       u = u_new;
@@ -139,23 +154,29 @@ Eigen::Isometry3d RefinePoseLevenbergMarquardt(const std::vector<Eigen::Vector3d
 
 absl::StatusOr<PoseEstimate> SolvePose(const std::vector<Eigen::Vector3d>& p,
                                        const std::vector<Eigen::Vector3d>& q,
-                                       const PoseParams& params) {
+                                       const PoseParams& params,
+                                       const std::vector<double>& tolerance) {
   PoseEstimate est;
-  est.inliers = RejectOutliersByMedianDistance(p, q, params);
+  est.inliers = RejectOutliersByMedianDistance(p, q, params, tolerance);
   if (est.inliers.size() < std::max<size_t>(params.min_inliers, 3)) {
     return absl::NotFoundError(absl::StrCat("no consistent match: ", est.inliers.size(), " of ",
                                             p.size(), " matched pairs agree, need ",
                                             std::max<size_t>(params.min_inliers, 3)));
   }
   Eigen::Vector3d mean_displacement = Eigen::Vector3d::Zero();
-  for (size_t i : est.inliers) mean_displacement += q[i] - p[i];
+  double weights = 0.0;
+  for (size_t i : est.inliers) {
+    const double t_i = ToleranceOf(tolerance, i);
+    mean_displacement += (q[i] - p[i]) / (t_i * t_i);
+    weights += 1.0 / (t_i * t_i);
+  }
   Eigen::Isometry3d initial = Eigen::Isometry3d::Identity();
-  initial.translation() = mean_displacement / static_cast<double>(est.inliers.size());
+  initial.translation() = mean_displacement / weights;
   est.map_from_query =
-      RefinePoseLevenbergMarquardt(p, q, est.inliers, initial, params, &est.iterations);
-  est.rms_residual_m = std::sqrt(
-      Cost(p, q, est.inliers, est.map_from_query.linear(), est.map_from_query.translation()) /
-      static_cast<double>(est.inliers.size()));
+      RefinePoseLevenbergMarquardt(p, q, est.inliers, initial, params, &est.iterations, tolerance);
+  est.rms_residual_m = std::sqrt(Cost(p, q, est.inliers, est.map_from_query.linear(),
+                                      est.map_from_query.translation(), tolerance) /
+                                 static_cast<double>(est.inliers.size()));
   return est;
 }
 

@@ -30,23 +30,37 @@ struct PoseEstimate {
   int iterations = 0;           // Levenberg-Marquardt iterations taken
 };
 
+// `tolerance` (optional, one per pair, >= 1; empty = 1 for all): how much less exact pair i's
+// positions are than the base noise (ScaleTolerance: large objects' centres). Errors are divided
+// by it: the median discrepancy of pairs i, j by sqrt((t_i^2 + t_j^2) / 2), residuals by t_i
+// (least-squares weight 1 / t_i^2), so the RMS residual is in units of a small object's metres.
+
 // Iterative median-distance outlier rejection; returns the indices kept.
 std::vector<size_t> RejectOutliersByMedianDistance(const std::vector<Eigen::Vector3d>& p,
                                                    const std::vector<Eigen::Vector3d>& q,
-                                                   const PoseParams& params);
+                                                   const PoseParams& params,
+                                                   const std::vector<double>& tolerance = {});
 
-// Levenberg-Marquardt on E(R, t) = sum_i ‖q_i - (R p_i + t)‖^2 over `indices`, from `initial`.
+// Levenberg-Marquardt on E(R, t) = sum_i ‖q_i - (R p_i + t)‖^2 / t_i^2 over `indices`, from
+// `initial`.
 Eigen::Isometry3d RefinePoseLevenbergMarquardt(const std::vector<Eigen::Vector3d>& p,
                                                const std::vector<Eigen::Vector3d>& q,
                                                const std::vector<size_t>& indices,
                                                const Eigen::Isometry3d& initial,
-                                               const PoseParams& params, int* iterations);
+                                               const PoseParams& params, int* iterations,
+                                               const std::vector<double>& tolerance = {});
 
-// Outlier rejection, initial translation = mean displacement (R = I), then LM.
+// Outlier rejection, initial translation = (weighted) mean displacement (R = I), then LM.
 // NOT_FOUND when fewer than min_inliers pairs are consistent.
 absl::StatusOr<PoseEstimate> SolvePose(const std::vector<Eigen::Vector3d>& p,
                                        const std::vector<Eigen::Vector3d>& q,
-                                       const PoseParams& params);
+                                       const PoseParams& params,
+                                       const std::vector<double>& tolerance = {});
+
+// Pair i's tolerance (1 when `tolerance` is empty).
+inline double ToleranceOf(const std::vector<double>& tolerance, size_t i) {
+  return tolerance.empty() ? 1.0 : tolerance[i];
+}
 
 // Rotation angle between two poses in degrees, and translation distance in metres.
 double RotationDifferenceDeg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b);

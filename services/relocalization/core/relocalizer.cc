@@ -11,43 +11,72 @@
 namespace semnav::relocalization {
 namespace {
 
+// ScaleTolerance of each pair of `pairs` (empty when the tolerance does not grow with scale).
+std::vector<double> PairTolerances(const IndexedLandmarks& query, const IndexedLandmarks& map,
+                                   const std::vector<Match>& pairs,
+                                   const std::vector<size_t>& which,
+                                   const SimilarityParams& similarity) {
+  if (similarity.pos_sigma_per_scale <= 0.0) return {};
+  std::vector<double> tolerance;
+  for (size_t i : which) {
+    tolerance.push_back(
+        ScaleTolerance(similarity, query.at(pairs[i].query).scale, map.at(pairs[i].map).scale));
+  }
+  return tolerance;
+}
+
+std::vector<size_t> AllOf(size_t count) {
+  std::vector<size_t> all(count);
+  std::iota(all.begin(), all.end(), size_t{0});
+  return all;
+}
+
 absl::StatusOr<PoseEstimate> SolveFromMatches(const IndexedLandmarks& query,
                                               const IndexedLandmarks& map,
                                               const std::vector<Match>& matches,
-                                              const PoseParams& params) {
+                                              const RelocalizationParams& params) {
   std::vector<Eigen::Vector3d> p, q;
   for (const Match& m : matches) {
     p.push_back(query.at(m.query).position);
     q.push_back(map.at(m.map).position);
   }
-  return SolvePose(p, q, params);
+  return SolvePose(
+      p, q, params.pose,
+      PairTolerances(query, map, matches, AllOf(matches.size()), params.match.similarity));
 }
 
-// Drops inlier pairs whose residual under the solved pose exceeds `gate_m` and refines
-// the pose on the rest (from the solved pose); keeps the estimate when fewer than
-// min_inliers pairs would remain.
+// Drops inlier pairs whose residual under the solved pose exceeds `gate_m` (times the pair's
+// scale tolerance) and refines the pose on the rest (from the solved pose); keeps the estimate
+// when fewer than min_inliers pairs would remain.
 void GateResiduals(const IndexedLandmarks& query, const IndexedLandmarks& map,
-                   const std::vector<Match>& matches, double gate_m, const PoseParams& params,
+                   const std::vector<Match>& matches, const RelocalizationParams& params,
                    PoseEstimate& estimate) {
+  const double gate_m = params.final_residual_gate_m;
   if (gate_m <= 0.0) return;
   std::vector<Eigen::Vector3d> p(matches.size()), q(matches.size());
   for (size_t i = 0; i < matches.size(); ++i) {
     p[i] = query.at(matches[i].query).position;
     q[i] = map.at(matches[i].map).position;
   }
+  const std::vector<double> tolerance =
+      PairTolerances(query, map, matches, AllOf(matches.size()), params.match.similarity);
   std::vector<size_t> kept;
   for (size_t i : estimate.inliers) {
-    if ((q[i] - estimate.map_from_query * p[i]).norm() <= gate_m) kept.push_back(i);
+    if ((q[i] - estimate.map_from_query * p[i]).norm() / ToleranceOf(tolerance, i) <= gate_m)
+      kept.push_back(i);
   }
   if (kept.size() == estimate.inliers.size() ||
-      kept.size() < std::max<size_t>(params.min_inliers, 3)) {
+      kept.size() < std::max<size_t>(params.pose.min_inliers, 3)) {
     return;
   }
   int iterations = 0;
-  estimate.map_from_query =
-      RefinePoseLevenbergMarquardt(p, q, kept, estimate.map_from_query, params, &iterations);
+  estimate.map_from_query = RefinePoseLevenbergMarquardt(p, q, kept, estimate.map_from_query,
+                                                         params.pose, &iterations, tolerance);
   double squared = 0.0;
-  for (size_t i : kept) squared += (q[i] - estimate.map_from_query * p[i]).squaredNorm();
+  for (size_t i : kept) {
+    squared += (q[i] - estimate.map_from_query * p[i]).squaredNorm() /
+               (ToleranceOf(tolerance, i) * ToleranceOf(tolerance, i));
+  }
   estimate.rms_residual_m = std::sqrt(squared / static_cast<double>(kept.size()));
   estimate.inliers = std::move(kept);
 }
@@ -95,10 +124,8 @@ absl::StatusOr<RelocalizationResult> RematchAndSolve(const IndexedLandmarks& que
   result.map_from_query = start;
   for (int round = 0; round < std::max(1, params.rematch_rounds); ++round) {
     std::vector<Match> matches = MatchUnderPose(query, map, result.map_from_query, params.match);
-    absl::StatusOr<PoseEstimate> solved = SolveFromMatches(query, map, matches, params.pose);
-    if (solved.ok()) {
-      GateResiduals(query, map, matches, params.final_residual_gate_m, params.pose, *solved);
-    }
+    absl::StatusOr<PoseEstimate> solved = SolveFromMatches(query, map, matches, params);
+    if (solved.ok()) GateResiduals(query, map, matches, params, *solved);
     if (!solved.ok()) {
       if (round > 0) break;  // keep the previous round's answer
       return absl::NotFoundError(
@@ -130,17 +157,17 @@ std::optional<Eigen::Isometry3d> PoseFromDistinctiveInliers(const IndexedLandmar
                                                             const IndexedLandmarks& map,
                                                             const RelocalizationResult& result,
                                                             const std::vector<size_t>& distinctive,
-                                                            const PoseParams& params) {
+                                                            const RelocalizationParams& params) {
   if (distinctive.size() < 3 || distinctive.size() == result.inliers.size()) return std::nullopt;
   std::vector<Eigen::Vector3d> p, q;
   for (size_t i : distinctive) {
     p.push_back(query.at(result.matches[i].query).position);
     q.push_back(map.at(result.matches[i].map).position);
   }
-  std::vector<size_t> all(p.size());
-  std::iota(all.begin(), all.end(), size_t{0});
   int iterations = 0;
-  return RefinePoseLevenbergMarquardt(p, q, all, result.map_from_query, params, &iterations);
+  return RefinePoseLevenbergMarquardt(
+      p, q, AllOf(p.size()), result.map_from_query, params.pose, &iterations,
+      PairTolerances(query, map, result.matches, distinctive, params.match.similarity));
 }
 
 void CheckReliability(const IndexedLandmarks& query, const IndexedLandmarks& map,
@@ -154,11 +181,14 @@ void CheckReliability(const IndexedLandmarks& query, const IndexedLandmarks& map
   result.distinctive_rms_m = result.rms_residual_m;
   if (params.twin.radius_m > 0.0) {
     const std::vector<size_t> distinctive = DistinctiveInliers(map, result, params.twin);
+    const std::vector<double> tolerance =
+        PairTolerances(query, map, result.matches, distinctive, params.match.similarity);
     double squared = 0.0;
-    for (size_t i : distinctive) {
-      const Match& m = result.matches[i];
+    for (size_t k = 0; k < distinctive.size(); ++k) {
+      const Match& m = result.matches[distinctive[k]];
       squared += (map.at(m.map).position - result.map_from_query * query.at(m.query).position)
-                     .squaredNorm();
+                     .squaredNorm() /
+                 (ToleranceOf(tolerance, k) * ToleranceOf(tolerance, k));
     }
     result.distinctive_inliers = distinctive.size();
     result.distinctive_rms_m =
@@ -197,7 +227,7 @@ absl::StatusOr<RelocalizationResult> RefineHypothesis(const IndexedLandmarks& qu
   // supported of the two stage-2 answers.
   if (params.twin.radius_m > 0.0) {
     if (const std::optional<Eigen::Isometry3d> alternative = PoseFromDistinctiveInliers(
-            query, map, *result, DistinctiveInliers(map, *result, params.twin), params.pose);
+            query, map, *result, DistinctiveInliers(map, *result, params.twin), params);
         alternative && (TranslationDifferenceM(*alternative, result->map_from_query) >
                             params.twin.pose_tolerance_m ||
                         RotationDifferenceDeg(*alternative, result->map_from_query) >
@@ -236,7 +266,7 @@ absl::StatusOr<RelocalizationResult> Relocalize(const IndexedLandmarks& query,
     hypothesis_matches.insert(hypothesis_matches.end(), more.begin(), more.end());
     if (hypothesis_matches.size() < 3) continue;
     const absl::StatusOr<PoseEstimate> initial =
-        SolveFromMatches(query, map, hypothesis_matches, params.pose);
+        SolveFromMatches(query, map, hypothesis_matches, params);
     if (!initial.ok()) {
       last_error = initial.status();
       continue;  // inconsistent: retrieve m more (seed 3.2)

@@ -121,6 +121,65 @@ TEST(RelocRelocalizerTest, SmokeFlippedTopLabelStillRetrievesByTheRunnerUp) {
   EXPECT_LT(RotationDifferenceDeg(r->map_from_query, truth), 1e-6);
 }
 
+// A room as a robot's scene graph sees it (mission.md, "Losing the pose"): small objects' centres
+// a few centimetres off, but the centre of the seen part of a bed or a couch ~0.9 m from its box
+// centre. With a fixed sigma the two big objects pull the pose (or fail the checks); with the
+// tolerance growing with scale they count for little and the pose comes from the small ones.
+RelocalizationParams SceneGraphProfile(double pos_sigma_per_scale) {
+  RelocalizationParams params;  // clients/sim/loop/sim_stack.cc's profile
+  params.match.similarity.scale_threshold = 0.05;
+  params.match.similarity.pos_sigma_m = 0.3;
+  params.match.similarity.pos_sigma_per_scale = pos_sigma_per_scale;
+  params.match.min_neighbour_matches = 2;
+  params.match.rematch_radius_m = 0.6;
+  params.pose.outlier_distance_m = 0.6;
+  params.final_residual_gate_m = 0.5;
+  params.reliable_min_inliers = 5;
+  params.reliable_max_rms_m = 0.25;
+  params.reliable_translation_m = 2.0;
+  params.reliable_rotation_deg = 30.0;
+  return params;
+}
+
+TEST(RelocRelocalizerTest, LargeObjectsCentresCountByTheirScale) {
+  // A room's handful: 4 small objects, a 2.0 m bed and a 2.2 m couch (5 inliers needed).
+  const std::vector<std::pair<Eigen::Vector3d, double>> objects = {
+      {{0.5, 0.5, 0.4}, 0.4},  {{5.5, 0.8, 0.9}, 0.3}, {{3.0, 4.5, 0.5}, 0.5},
+      {{0.7, 4.2, 1.2}, 0.35}, {{4.5, 2.5, 0.3}, 2.0}, {{1.2, 2.4, 0.4}, 2.2}};
+  std::vector<Landmark> map;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    Landmark l;
+    l.id = i + 1;
+    l.position = objects[i].first;
+    l.scale = objects[i].second;
+    l.descriptor = TwoLabelDescriptor(i, 1.0f, 0.8f);
+    map.push_back(std::move(l));
+  }
+  const Eigen::Isometry3d truth = YawAndShift(2.1, {-3.0, 1.5, 0.0});
+  std::vector<Landmark> query = SeenFrom(map, truth, 1.0f, 0.8f);
+  // Centre errors in the map frame, moved into the query frame: 3-6 cm on the small objects,
+  // 0.9 m on the seen halves of the bed and the couch (both towards the room's middle).
+  const std::vector<Eigen::Vector3d> error = {{0.04, -0.03, 0.0}, {-0.05, 0.02, 0.01},
+                                              {0.03, 0.05, 0.0},  {-0.04, -0.04, 0.0},
+                                              {-0.9, 0.0, 0.0},   {0.9, 0.1, 0.0}};
+  for (size_t i = 0; i < query.size(); ++i) {
+    query[i].position += truth.inverse().linear() * error[i];
+  }
+  // Fixed sigma: the big two fail the residual gate, 4 inliers are left: not reliable.
+  const auto fixed =
+      Relocalize(IndexedLandmarks(query), IndexedLandmarks(map), SceneGraphProfile(0.0));
+  ASSERT_TRUE(fixed.ok()) << fixed.status();
+  EXPECT_FALSE(fixed->reliable);
+  // By scale: the big two stay as inliers with little weight; the pose follows the small ones.
+  const auto scaled =
+      Relocalize(IndexedLandmarks(query), IndexedLandmarks(map), SceneGraphProfile(0.5));
+  ASSERT_TRUE(scaled.ok()) << scaled.status();
+  EXPECT_TRUE(scaled->reliable);
+  EXPECT_EQ(scaled->inliers.size(), 6u);
+  EXPECT_LT(TranslationDifferenceM(scaled->map_from_query, truth), 0.2);
+  EXPECT_LT(RotationDifferenceDeg(scaled->map_from_query, truth), 3.0);
+}
+
 TEST(RelocRelocalizerTest, CollinearShelfRowIsNotReliable) {
   // One shelf row: 14 boxes on a line at 0.6 m pitch, each matched correctly, but any
   // rotation about the row's axis fits them equally well.

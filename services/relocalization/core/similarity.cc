@@ -14,6 +14,12 @@ double ScaleSimilarity(double scale_a, double scale_b) {
   return std::min(scale_a, scale_b) / std::max(scale_a, scale_b);
 }
 
+double ScaleTolerance(const SimilarityParams& params, double scale_a, double scale_b) {
+  if (params.pos_sigma_per_scale <= 0.0) return 1.0;
+  const double extra = params.pos_sigma_per_scale * std::max(scale_a, scale_b) / params.pos_sigma_m;
+  return std::sqrt(1.0 + extra * extra);
+}
+
 double CombinedSimilarity(const SimilarityTerms& terms, const SimilarityParams& params) {
   if (terms.pos <= params.pos_threshold || terms.scale <= params.scale_threshold ||
       terms.desc <= params.desc_threshold) {

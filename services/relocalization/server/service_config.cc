@@ -43,7 +43,8 @@ void ReadMatching(ConfigReader r, MatchParams& m) {
   r.Read("pos_threshold", &s.pos_threshold)
       .Read("scale_threshold", &s.scale_threshold)
       .Read("desc_threshold", &s.desc_threshold)
-      .Read("pos_sigma_m", &s.pos_sigma_m);
+      .Read("pos_sigma_m", &s.pos_sigma_m)
+      .Read("pos_sigma_per_scale", &s.pos_sigma_per_scale);
   r.Read("neighbourhood_size", &m.neighbourhood_size)
       .Read("max_candidates", &m.max_candidates)
       .Read("retrieval_labels", &m.retrieval_labels)
@@ -53,6 +54,8 @@ void ReadMatching(ConfigReader r, MatchParams& m) {
   r.Check(s.alpha >= 0 && s.beta >= 0 && s.gamma >= 0 && s.alpha + s.beta + s.gamma > 0, "alpha",
           "alpha, beta, gamma must be >= 0 and not all 0");
   r.Check(s.pos_sigma_m > 0, "pos_sigma_m", "must be > 0");
+  r.Check(s.pos_sigma_per_scale >= 0 && s.pos_sigma_per_scale <= 2, "pos_sigma_per_scale",
+          "must be in [0, 2]");
   r.Check(m.max_candidates > 0, "max_candidates", "must be > 0");
   r.Check(m.retrieval_labels > 0, "retrieval_labels", "must be > 0");
   r.Check(m.early_stop_matches >= 3, "early_stop_matches", "must be >= 3");
