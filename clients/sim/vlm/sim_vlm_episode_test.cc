@@ -17,6 +17,44 @@
 namespace semnav::sim::vlm {
 namespace {
 
+// The simulated VLM behind the real model proxy, configured as any OpenAI-compatible vendor, and
+// the stack whose gateway asks it; configs go to a fresh folder `name` under the test's temp dir.
+struct ModelStack {
+  std::unique_ptr<SimVlmServer> endpoint;
+  std::unique_ptr<loop::SimStack> stack;
+};
+
+absl::StatusOr<ModelStack> StartModelStack(absl::StatusOr<std::unique_ptr<SimVlm>> model,
+                                           const std::string& name) {
+  if (!model.ok()) return model.status();
+  ModelStack started;
+  absl::StatusOr<std::unique_ptr<SimVlmServer>> endpoint = SimVlmServer::Start(*std::move(model));
+  if (!endpoint.ok()) return endpoint.status();
+  started.endpoint = *std::move(endpoint);
+  const std::string dir = ::testing::TempDir() + "/" + name;
+  std::filesystem::create_directories(dir);
+  const std::string proxy_config = dir + "/modelproxy.yaml";
+  std::ofstream(proxy_config)
+      << "modelproxy:\n  backends:\n    sim:\n      kind: openai\n      base_url: \""
+      << started.endpoint->base_url()
+      << "\"\n      model: sim-vlm\n      retry: {max_attempts: 1}\n"
+         "  aliases:\n    default: [sim, offline]\n";
+  absl::StatusOr<std::unique_ptr<loop::SimStack>> stack =
+      loop::SimStack::Start({SEMNAV_BIN_DIR, dir, true, proxy_config});
+  if (!stack.ok()) return stack.status();
+  started.stack = *std::move(stack);
+  return started;
+}
+
+// What a failed episode is read from: its timeline and every answer the VLM gave.
+std::string Transcript(const loop::EpisodeResult& result, const SimVlmServer& endpoint) {
+  std::string text;
+  for (const std::string& line : result.timeline) absl::StrAppend(&text, line, "\n");
+  absl::StrAppend(&text, "VLM answers:\n");
+  for (const std::string& answer : endpoint.answers()) absl::StrAppend(&text, answer, "\n");
+  return text;
+}
+
 // It used to fail: planning's roadmap could not reach any viewpoint from the middle of explored
 // space and the gateway's blind fallback steps took the UAV east out of the world (planning's
 // EroiUtility regression tests, docs/performance/mission.md).
@@ -40,38 +78,19 @@ TEST(SimVlmEpisodeTest, EroiUtilityFindsTheCarThroughTheProxyAndTheSimulatedVlm)
 
   FrameLog frames;
   spec.on_camera_frame = [&frames](const SensorFrame& frame) { frames.Record(frame); };
-  absl::StatusOr<std::unique_ptr<SimVlm>> model =
-      SimVlm::Create(spec.world, &frames, SimVlmConfig());
-  ASSERT_TRUE(model.ok()) << model.status();
-  absl::StatusOr<std::unique_ptr<SimVlmServer>> endpoint = SimVlmServer::Start(*std::move(model));
-  ASSERT_TRUE(endpoint.ok()) << endpoint.status();
+  absl::StatusOr<ModelStack> started =
+      StartModelStack(SimVlm::Create(spec.world, &frames, SimVlmConfig()), "sim_vlm_episode");
+  ASSERT_TRUE(started.ok()) << started.status();
+  const SimVlmServer& endpoint = *started->endpoint;
 
-  const std::string dir = ::testing::TempDir() + "/sim_vlm_episode";
-  std::filesystem::create_directories(dir);
-  const std::string proxy_config = dir + "/modelproxy.yaml";
-  std::ofstream(proxy_config)
-      << "modelproxy:\n  backends:\n    sim:\n      kind: openai\n      base_url: \""
-      << (*endpoint)->base_url()
-      << "\"\n      model: sim-vlm\n      retry: {max_attempts: 1}\n"
-         "  aliases:\n    default: [sim, offline]\n";
-  absl::StatusOr<std::unique_ptr<loop::SimStack>> stack =
-      loop::SimStack::Start({SEMNAV_BIN_DIR, dir, true, proxy_config});
-  ASSERT_TRUE(stack.ok()) << stack.status();
-
-  absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, (*stack)->endpoints());
+  absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, started->stack->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();
-  std::string timeline;
-  for (const std::string& line : result->timeline) absl::StrAppend(&timeline, line, "\n");
-  std::string answers;
-  for (const std::string& answer : (*endpoint)->answers()) absl::StrAppend(&answers, answer, "\n");
   EXPECT_TRUE(result->record.success) << result->final_reason << "\n"
-                                      << timeline << "VLM answers:\n"
-                                      << answers;
-  EXPECT_GT((*endpoint)->requests(), 0);
+                                      << Transcript(*result, endpoint);
+  EXPECT_GT(endpoint.requests(), 0);
   EXPECT_LE(result->record.model_calls, 61) << "the per-task budget (60) plus the text embedding";
   std::cout << "steps " << result->steps << ", path " << result->record.path_m << " m, model calls "
-            << result->record.model_calls << ", endpoint requests " << (*endpoint)->requests()
-            << "\n";
+            << result->record.model_calls << ", endpoint requests " << endpoint.requests() << "\n";
 }
 
 // Open vocabulary closed (issue 15): "找复印机" names a thing the lexicon does not know, so the
@@ -111,35 +130,19 @@ TEST(SimVlmEpisodeTest, CopierTheRulesCannotReadIsDecomposedResolvedAndFound) {
   config.errors = ErrorsAtAccuracy(1.0);
   config.embedding_dim = spec.sensors.detector.embedding_dim;
   config.embedding_seed = spec.sensors.detector.embedding_seed;
-  absl::StatusOr<std::unique_ptr<SimVlm>> model = SimVlm::Create(spec.world, &frames, config);
-  ASSERT_TRUE(model.ok()) << model.status();
-  absl::StatusOr<std::unique_ptr<SimVlmServer>> endpoint = SimVlmServer::Start(*std::move(model));
-  ASSERT_TRUE(endpoint.ok()) << endpoint.status();
-  const std::string dir = ::testing::TempDir() + "/sim_vlm_copier";
-  std::filesystem::create_directories(dir);
-  const std::string proxy_config = dir + "/modelproxy.yaml";
-  std::ofstream(proxy_config)
-      << "modelproxy:\n  backends:\n    sim:\n      kind: openai\n      base_url: \""
-      << (*endpoint)->base_url()
-      << "\"\n      model: sim-vlm\n      retry: {max_attempts: 1}\n"
-         "  aliases:\n    default: [sim, offline]\n";
-  absl::StatusOr<std::unique_ptr<loop::SimStack>> stack =
-      loop::SimStack::Start({SEMNAV_BIN_DIR, dir, true, proxy_config});
-  ASSERT_TRUE(stack.ok()) << stack.status();
+  absl::StatusOr<ModelStack> started =
+      StartModelStack(SimVlm::Create(spec.world, &frames, config), "sim_vlm_copier");
+  ASSERT_TRUE(started.ok()) << started.status();
+  const SimVlmServer& endpoint = *started->endpoint;
 
-  absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, (*stack)->endpoints());
+  absl::StatusOr<loop::EpisodeResult> result = loop::RunEpisode(spec, started->stack->endpoints());
   ASSERT_TRUE(result.ok()) << result.status();
-  std::string timeline;
-  for (const std::string& line : result->timeline) absl::StrAppend(&timeline, line, "\n");
-  std::string answers;
-  for (const std::string& answer : (*endpoint)->answers()) absl::StrAppend(&answers, answer, "\n");
   EXPECT_FALSE(result->trace.instruction_refused) << result->final_reason;
   EXPECT_TRUE(result->record.success) << result->final_reason << "\n"
-                                      << timeline << "VLM answers:\n"
-                                      << answers;
+                                      << Transcript(*result, endpoint);
   std::cout << "world " << spec.world.name << ", steps " << result->steps << ", path "
             << result->record.path_m << " m, model calls " << result->record.model_calls
-            << ", endpoint requests " << (*endpoint)->requests() << "\n";
+            << ", endpoint requests " << endpoint.requests() << "\n";
 }
 
 }  // namespace
