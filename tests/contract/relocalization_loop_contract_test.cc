@@ -147,7 +147,7 @@ TEST_F(RelocalizationLoopContractTest, LostReportPausesTheTaskLooksAroundAndFail
   // The look-around: rotate in place at the LOOK_AROUND rate, and the gateway's relocalizing flag.
   std::optional<api::ConnectResponse> rotate = robot.ReadUntil(IsRotate);
   ASSERT_TRUE(rotate.has_value());
-  EXPECT_DOUBLE_EQ(rotate->command().rotate().angular_speed_rps(), 0.5);
+  EXPECT_DOUBLE_EQ(rotate->command().rotate().angular_speed_rps(), 0.75);  // the default rate
   EXPECT_DOUBLE_EQ(rotate->command().rotate().duration_s(), 0.3);
   std::optional<api::ConnectResponse> update =
       robot.ReadUntil([](const api::ConnectResponse& m) { return m.has_localization(); });
