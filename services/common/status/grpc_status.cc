@@ -4,7 +4,6 @@
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
-#include "absl/strings/str_format.h"
 #include "services/common/status/field_error.h"
 #include "services/common/status/retry_after.h"
 
@@ -49,8 +48,7 @@ grpc::Status ToGrpcStatus(const absl::Status& status) {
     info.set_field(ErrorField(status).value_or(""));
   }
   if (const std::optional<absl::Duration> after = RetryAfter(status); after.has_value()) {
-    (*info.mutable_metadata())[kRetryAfterMetadataKey] =
-        absl::StrFormat("%.3f", absl::ToDoubleSeconds(*after));
+    (*info.mutable_metadata())[kRetryAfterMetadataKey] = RetryAfterSecondsText(*after);
   }
   google::protobuf::Any* any = rich.add_details();
   any->set_type_url(error_info_url);

@@ -4,6 +4,7 @@
 // it in ErrorInfo.metadata["retry_after_s"], FromGrpcStatus reads it back) to the gateway's call
 // policy. absl only, so core code may use it.
 #include <optional>
+#include <string>
 
 #include "absl/status/status.h"
 #include "absl/strings/string_view.h"
@@ -22,5 +23,7 @@ std::optional<absl::Duration> RetryAfter(const absl::Status& status);
 // An HTTP Retry-After value in delta-seconds ("120", also "1.5"), at most a day; nullopt for an
 // HTTP date or anything else (those are not honoured: the caller's back-off applies).
 std::optional<absl::Duration> ParseRetryAfterSeconds(absl::string_view value);
+// The hint as the wire carries it (seconds, three decimals); ParseRetryAfterSeconds reads it back.
+std::string RetryAfterSecondsText(absl::Duration after);
 
 }  // namespace semnav
