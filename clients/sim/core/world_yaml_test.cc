@@ -105,6 +105,15 @@ TEST(SimWorldYamlTest, HandDrawnWorldsLoad) {
   EXPECT_EQ(suite->back().name, "yard_parking");
 }
 
+TEST(SimWorldYamlTest, HandDrawnHoldoutWorldsLoad) {
+  // Drawn by another hand and never tuned on: only a check that the strategy generalises.
+  const auto suite = LoadSuite(SEMNAV_SOURCE_DIR "/tests/worlds/hand_drawn_holdout");
+  ASSERT_TRUE(suite.ok()) << suite.status();
+  ASSERT_EQ(suite->size(), 4u);
+  EXPECT_EQ(suite->front().name, "clinic_ward");
+  EXPECT_EQ(suite->back().name, "warehouse_aisles");
+}
+
 TEST(SimWorldYamlTest, RejectsLabelsTheLexiconDoesNotKnow) {
   ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: flux capacitor"),
                      "objects[0].label");

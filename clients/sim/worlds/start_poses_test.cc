@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "absl/strings/str_cat.h"
 #include "clients/sim/core/test_worlds.h"
 #include "clients/sim/core/world_yaml.h"
@@ -119,14 +122,17 @@ TEST(SimStartPosesTest, StartInARoomWithANarrowDoorMovesOutThroughTheDoor) {
   EXPECT_EQ(*wide_search.Nearest(in_room), in_room);
 }
 
-TEST(SimStartPosesTest, HandDrawnWorldStartsHaveClearance) {
-  // Their starts are drawn by hand and used as they are (no draw, no move): each must already
-  // have the clearance a generated start gets.
-  for (const char* name : {"clinic", "flat_l_shaped", "office_kitchenette", "storage_room",
-                           "yard_parking", "flyroll_storage_ledge"}) {
-    const absl::StatusOr<World> world =
-        LoadWorldFile(absl::StrCat(SEMNAV_SOURCE_DIR, "/tests/worlds/hand_drawn/", name, ".yaml"));
+// Hand-drawn starts are used as they are (no draw, no move): each must already have the
+// clearance a generated start gets.
+void ExpectDrawnStartsClear(const std::string& folder, const std::vector<std::string>& names,
+                            size_t starts_per_world) {
+  for (const std::string& name : names) {
+    const absl::StatusOr<World> world = LoadWorldFile(
+        absl::StrCat(SEMNAV_SOURCE_DIR, "/tests/worlds/", folder, "/", name, ".yaml"));
     ASSERT_TRUE(world.ok()) << world.status();
+    if (starts_per_world > 0) {
+      EXPECT_EQ(world->starts.size(), starts_per_world) << name;
+    }
     for (const StartPose& start : world->starts) {
       const StartClearanceSearch search(*world, start.modality, start.position.z(),
                                         StartClearance{});
@@ -134,6 +140,18 @@ TEST(SimStartPosesTest, HandDrawnWorldStartsHaveClearance) {
           << name << " start (" << start.position.x() << ", " << start.position.y() << ")";
     }
   }
+}
+
+TEST(SimStartPosesTest, HandDrawnWorldStartsHaveClearance) {
+  ExpectDrawnStartsClear("hand_drawn",
+                         {"clinic", "flat_l_shaped", "office_kitchenette", "storage_room",
+                          "yard_parking", "flyroll_storage_ledge"},
+                         0);
+}
+
+TEST(SimStartPosesTest, HandDrawnHoldoutWorldStartsHaveClearance) {
+  ExpectDrawnStartsClear("hand_drawn_holdout",
+                         {"clinic_ward", "home_bungalow", "open_office", "warehouse_aisles"}, 3);
 }
 
 }  // namespace

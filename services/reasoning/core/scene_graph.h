@@ -20,6 +20,8 @@ struct SceneObject {
   std::vector<std::string> attributes;  // e.g. colours reported by the detector/captioner.
   std::vector<float> embedding;         // visual embedding (CLIP-like); empty: none.
   double scale_m = 0.0;                 // largest extent of mapping's box, metres; 0: unknown.
+  // Mapping's 10-90 % extent of the seen points along map x, y, z, metres; zero: unknown.
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
 };
 
 struct SceneRelation {

@@ -674,8 +674,19 @@ std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
   return {command};
 }
 
+double TaskExecutor::DistanceToTarget(const Eigen::Vector3d& point) const {
+  Eigen::Vector2d half = Eigen::Vector2d::Zero();
+  if (const SceneObject* object = graph_.FindObject(progress_.target->object_id)) {
+    if (object->size.allFinite()) {
+      half = (0.5 * object->size.head<2>()).cwiseMax(0.0).cwiseMin(config_.reach_extent_cap_m);
+    }
+  }
+  const Eigen::Vector2d offset = (point - progress_.target->position).head<2>().cwiseAbs();
+  return (offset - half).cwiseMax(0.0).norm();
+}
+
 std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
-  const double distance = (progress_.target->position - pose_.position).head<2>().norm();
+  const double distance = DistanceToTarget(pose_.position);
   if (distance <= config_.success_radius_m)
     return NextSubgoal(now, "target verified within the success radius");
   constexpr double kSameSpotM = 0.25;
@@ -723,7 +734,7 @@ std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now,
     close_target_ = progress_.target->object_id;
     close_detections_ = 0;
   }
-  const double distance = (progress_.target->position - pose_.position).head<2>().norm();
+  const double distance = DistanceToTarget(pose_.position);
   if (distance > config_.success_radius_m - config_.success_margin_m) {
     close_detections_ = 0;
     return std::nullopt;
@@ -737,7 +748,7 @@ std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now,
 std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
   const int64_t id = progress_.target->object_id;
   const SceneObject* object = graph_.FindObject(id);
-  const double distance = (progress_.target->position - pose_.position).head<2>().norm();
+  const double distance = DistanceToTarget(pose_.position);
   // Accepted only when seen from within reach at least once: a misplaced or phantom object
   // (office_03: a "tv" mapped on the wrong side of a cabinet) never is.
   if (object != nullptr && distance <= config_.success_radius_m && close_target_ == id &&
@@ -768,7 +779,7 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
       if (absl::IsUnavailable(path.status())) return PauseForDependency(now, path.status());
       if (!path.ok()) continue;
       const Eigen::Vector3d end = path->empty() ? view : path->back();
-      if ((end - target).head<2>().norm() > config_.success_radius_m) continue;
+      if (DistanceToTarget(end) > config_.success_radius_m) continue;
       const Eigen::Vector3d to_target = target - end;
       return Navigate(
           now, view, *std::move(path), std::atan2(to_target.y(), to_target.x()), 0.0,

@@ -37,12 +37,17 @@ struct ExecutorConfig {
   // 0.5 rad/s is 12.6 s); 0 = none. Off: it raised SPL but lowered SR over 80 episodes
   // (docs/performance/mission.md).
   double start_scan_duration_s = 0.0;
-  double navigate_standoff_m = 1.0;         // NAVIGATE to an object stops this far from it
-  double navigate_timeout_s = 120.0;        // per motion command before re-planning
-  double verify_timeout_s = 10.0;           // VERIFY gives up (object rejected) after this
-  int verify_detections = 2;                // new detections of the target that confirm it
-  double wait_duration_s = 5.0;             // WAIT default
-  double success_radius_m = 1.0;            // seed 004: success within 1 m of the target
+  double navigate_standoff_m = 1.0;   // NAVIGATE to an object stops this far from it
+  double navigate_timeout_s = 120.0;  // per motion command before re-planning
+  double verify_timeout_s = 10.0;     // VERIFY gives up (object rejected) after this
+  int verify_detections = 2;          // new detections of the target that confirm it
+  double wait_duration_s = 5.0;       // WAIT default
+  double success_radius_m = 1.0;      // seed 004: success within 1 m of the target
+  // Reach (success, verify, view points) is measured to the target's mapped extent, as Habitat
+  // scores ObjectNav to the object's nearest point, not to its centre: a fridge seen from 0.8 m
+  // has its centre 1.2 m away. Each half-extent counts up to this cap (a box grown by a wrong
+  // merge cannot bring a far robot within reach); 0 = measured to the centre.
+  double reach_extent_cap_m = 1.0;
   int max_replans = 3;                      // failures to reach one target before it is set aside
   double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
   int max_explore_goals =
@@ -250,6 +255,8 @@ class TaskExecutor {
                                    const std::string& reason);
   std::vector<RobotCommand> Hold(double now, double duration, const std::string& reason);
   std::vector<RobotCommand> CheckSuccessOrApproach(double now);
+  // Horizontal distance from `point` to the located target's mapped extent (reach_extent_cap_m).
+  double DistanceToTarget(const Eigen::Vector3d& point) const;
   // The located target is reached: the subgoals about it are done.
   std::vector<RobotCommand> TargetReached(double now, const std::string& reason);
   // Success in view: within reach of the located target and seeing it; nullopt = not yet.

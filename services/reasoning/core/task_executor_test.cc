@@ -1121,6 +1121,37 @@ TEST_F(GatewayTaskExecutorTest, WithinReachWithTheTargetInViewTheRobotStops) {
   EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
 }
 
+// Regression (hand-drawn clinic, "find refrigerator": verified twice from in front of it, then
+// set aside as out of reach, 61 m for a 12.5 m shortest path): reach is measured to the target's
+// mapped extent. A target 1.5 m wide along y, 0.6 m deep: from (4.0, 0.4) its centre is 1.08 m
+// away, its near face 0.7 m.
+TEST_F(GatewayTaskExecutorTest, ReachIsMeasuredToTheTargetsExtentNotItsCentre) {
+  const auto wide = [](int detections) {
+    SceneObject object = Extinguisher(detections);
+    object.size = Eigen::Vector3d(0.6, 1.5, 1.8);
+    return object;
+  };
+  for (const double cap : {1.0, 0.0}) {
+    ExecutorConfig config;
+    config.reach_extent_cap_m = cap;
+    TaskExecutor task = Make(GoToTarget(), config);
+    task.OnSceneGraph(0, GraphWith({wide(15)}, 1));
+    std::vector<RobotCommand> out = task.Start(0, At(0));
+    task.OnPose(5, At(4.0, 0.4));  // 0.4 m off the centre line: within the box's y extent
+    out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+    task.OnSceneGraph(5.5, GraphWith({wide(16)}, 2));
+    out = task.OnSceneGraph(6, GraphWith({wide(17)}, 3));
+    if (cap > 0.0) {  // 0.7 m from the face: within reach less the margin, in view: done
+      ASSERT_EQ(out.size(), 1u);
+      EXPECT_EQ(out[0].kind, CommandKind::kStop);
+      EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+    } else {  // to the centre, 1.08 m: not within reach
+      EXPECT_TRUE(out.empty());
+      EXPECT_EQ(task.progress().state, TaskState::kRunning);
+    }
+  }
+}
+
 // Regression (flyroll, fr079: "robot blocked" again and again): a block backs off and re-plans
 // to the same exploration goal with more clearance; blocked again where it was blocked before,
 // the goal is given up with the region around it, and the next one is asked for.

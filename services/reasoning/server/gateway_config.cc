@@ -53,6 +53,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("verify_detections", &c.executor.verify_detections)
       .Read("wait_duration_s", &c.executor.wait_duration_s)
       .Read("success_radius_m", &c.executor.success_radius_m)
+      .Read("reach_extent_cap_m", &c.executor.reach_extent_cap_m)
       .Read("max_replans", &c.executor.max_replans)
       .Read("max_explore_goals", &c.executor.max_explore_goals)
       .Read("explore_exclusion_radius_m", &c.executor.explore_exclusion_radius_m)
@@ -96,6 +97,9 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(c.executor.success_margin_m >= 0.0 &&
                      c.executor.success_margin_m < c.executor.success_radius_m,
                  "success_margin_m", "must be in [0, success_radius_m)");
+  executor.Check(std::isfinite(c.executor.reach_extent_cap_m) &&
+                     c.executor.reach_extent_cap_m >= 0.0 && c.executor.reach_extent_cap_m <= 5.0,
+                 "reach_extent_cap_m", "must be in [0, 5]");
   executor.Check(c.executor.verify_accept_detections >= 1, "verify_accept_detections",
                  "must be >= 1");
   executor.Check(
