@@ -54,9 +54,16 @@ FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery
   const std::vector<double> distance = OctileDistanceField(grid.free, query.robot);
   for (const Frontier& f : set.frontiers) {
     double nearest = kUnreachable;
-    for (const Cell& c : f.cells) nearest = std::min(nearest, distance[grid.free.Index(c)]);
+    Cell nearest_cell = f.anchor;
+    for (const Cell& c : f.cells) {
+      if (distance[grid.free.Index(c)] < nearest) {
+        nearest = distance[grid.free.Index(c)];
+        nearest_cell = c;
+      }
+    }
     set.candidates.push_back({grid.CentreOf(f.centroid_x, f.centroid_y),
                               nearest == kUnreachable ? -1.0 : nearest * grid.resolution_m});
+    set.nearest_cells.push_back(nearest_cell);
   }
   set.scores = ScoreFrontiers(set.candidates, grid.CentreOf(query.robot), query.visited,
                               query.objects, score);
@@ -91,6 +98,11 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
       const FrontierSet set = CollectFrontiers(grid, query, config.score);
       std::optional<int> best;
       double score = 0.0;
+      if (!config.value.enabled && config.discount.enabled) {
+        best = SelectDiscountedFrontier(set.candidates, set.scores, config.discount);
+        if (!best) return NotFound("no reachable frontier");
+        return ExplorationChoice{set.nearest_cells[*best], set.scores[*best].total, {}};
+      }
       if (config.value.enabled) {
         const std::vector<FrontierValue> values =
             ValueFrontiers(set.frontiers, set.candidates, grid.explored, grid.resolution_m,

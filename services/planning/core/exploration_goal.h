@@ -11,6 +11,7 @@
 #include "services/planning/core/frontier.h"
 #include "services/planning/core/frontier_scoring.h"
 #include "services/planning/core/frontier_value.h"
+#include "services/planning/core/semantic_discount.h"
 
 namespace semnav::planning {
 
@@ -48,7 +49,8 @@ struct ExplorationQuery {
 
 struct ExplorationGoalConfig {
   FrontierScoreConfig score;  // seed 002 terms (reported; SEMANTIC_FRONTIER with value map off)
-  FrontierValueConfig value;  // SEMANTIC_FRONTIER's value map
+  FrontierValueConfig value;  // SEMANTIC_FRONTIER's value map (opt-in, before the discount)
+  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's default: discounted nearest frontier
   CoverageGoalConfig coverage;
   EroiConfig eroi;  // cells
 };
@@ -57,6 +59,7 @@ struct ExplorationGoalConfig {
 struct FrontierSet {
   std::vector<Frontier> frontiers;
   std::vector<FrontierCandidate> candidates;  // metres, path distances (-1 unreachable)
+  std::vector<Cell> nearest_cells;            // each frontier's cell nearest by path
   std::vector<FrontierScore> scores;          // seed 002
 };
 
@@ -70,10 +73,11 @@ struct ExplorationChoice {
 };
 
 // The exploration goal by strategy. NEAREST_FRONTIER and COVERAGE_MAX are the seed 004
-// baselines; SEMANTIC_FRONTIER takes the value map (frontier_value.h) or, with it off, the best
-// seed 002 total; EROI_UTILITY is seed 000's utility. NOT_FOUND with reason
-// NO_EXPLORATION_GOAL when nothing is reachable; INVALID_ARGUMENT naming eroi_semantic_values
-// when their count does not match the grid.
+// baselines; SEMANTIC_FRONTIER takes the value map (frontier_value.h) when it is on, else the
+// semantically discounted nearest frontier (semantic_discount.h; goal: its nearest cell, as
+// NEAREST_FRONTIER's), else the best seed 002 total; EROI_UTILITY is seed 000's utility. NOT_FOUND
+// with reason NO_EXPLORATION_GOAL when nothing is reachable; INVALID_ARGUMENT naming
+// eroi_semantic_values when their count does not match the grid.
 absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,
                                                         const ExplorationQuery& query,
                                                         ExplorationStrategy strategy,

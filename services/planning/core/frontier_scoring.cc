@@ -49,6 +49,9 @@ std::vector<FrontierScore> ScoreFrontiers(const std::vector<FrontierCandidate>& 
       gradient = std::max(gradient, o.relevance * aligned);
       relation = std::max(relation, o.relation * aligned);
     }
+    s.gradient = gradient;
+    s.relation = relation;
+    s.cooccurrence = cooccurrence;
     s.grounding = config.gradient_weight * gradient + config.relation_weight * relation +
                   config.cooccurrence_weight * cooccurrence;
     s.total = config.distance_weight * s.distance + config.novelty_weight * s.novelty +

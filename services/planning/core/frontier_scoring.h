@@ -39,7 +39,10 @@ struct FrontierScore {
   double novelty = 0.0;    // 1 far from every visited place
   double language = 0.0;   // best relevance of objects near the frontier
   double grounding = 0.0;  // weighted gradient + relation + co-occurrence
-  double total = 0.0;      // 0.2 distance + 0.3 novelty + 0.2 language + 0.3 grounding
+  double gradient = 0.0;   // the three grounding signals, each in [0, 1]
+  double relation = 0.0;
+  double cooccurrence = 0.0;
+  double total = 0.0;  // 0.2 distance + 0.3 novelty + 0.2 language + 0.3 grounding
 };
 
 // SEMANTIC_FRONTIER: scores each frontier. Distance: 1 - d / d_max over the

@@ -21,8 +21,12 @@ TEST(ScoreFrontiers, HandCheckedTerms) {
   EXPECT_DOUBLE_EQ(s[0].language, 0.5);
   EXPECT_DOUBLE_EQ(s[1].language, 0.0);
   // A: gradient 0.5 * cos 0 = 0.5, relation 1 * cos 90 = 0, co-occurrence 0.8.
+  EXPECT_DOUBLE_EQ(s[0].gradient, 0.5);
+  EXPECT_NEAR(s[0].relation, 0.0, 1e-12);
+  EXPECT_DOUBLE_EQ(s[0].cooccurrence, 0.8);
   EXPECT_NEAR(s[0].grounding, (0.5 + 0.0 + 0.8) / 3, 1e-12);
   // B: gradient 0.5 * cos 90 = 0, relation 1 * cos 0 = 1, nothing near.
+  EXPECT_DOUBLE_EQ(s[1].relation, 1.0);
   EXPECT_NEAR(s[1].grounding, 1.0 / 3, 1e-12);
   EXPECT_NEAR(s[0].total, 0.2 * 0.5 + 0.3 * 0.5 + 0.2 * 0.5 + 0.3 * 1.3 / 3, 1e-12);
   EXPECT_NEAR(s[1].total, 0.3 * 1.0 + 0.3 * (1.0 / 3), 1e-12);

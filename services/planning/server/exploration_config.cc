@@ -20,7 +20,7 @@ EroiConfig ExplorationConfig::EroiInCells(double resolution_m) const {
 }
 
 ExplorationGoalConfig ExplorationConfig::GoalConfig(double resolution_m) const {
-  return {score, value, coverage, EroiInCells(resolution_m)};
+  return {score, value, discount, coverage, EroiInCells(resolution_m)};
 }
 
 void ExplorationConfig::Read(ConfigReader& section) {
@@ -37,6 +37,15 @@ void ExplorationConfig::Read(ConfigReader& section) {
       .Read("novelty_radius_m", &score.novelty_radius_m);
   score_section.Check(score.novelty_radius_m > 0 && score.language_radius_m > 0, "novelty_radius_m",
                       "radii must be > 0");
+  ConfigReader discount_section = section.Child("semantic_discount");
+  discount_section.Read("enabled", &discount.enabled)
+      .Read("gain", &discount.gain)
+      .Read("offset_m", &discount.offset_m);
+  discount_section.Check(std::isfinite(discount.gain) && discount.gain >= 0 && discount.gain <= 100,
+                         "gain", "must be in [0, 100]");
+  discount_section.Check(
+      std::isfinite(discount.offset_m) && discount.offset_m > 0 && discount.offset_m <= 100,
+      "offset_m", "must be in (0, 100]");
   ConfigReader value_section = section.Child("value_map");
   value_section.Read("enabled", &value.enabled)
       .Read("evidence_sigma_m", &value.evidence_sigma_m)

@@ -13,10 +13,11 @@ namespace semnav::planning {
 // EROI settings (lengths in metres here, cells in the core).
 struct ExplorationConfig {
   int min_frontier_cells = 5;
-  FrontierScoreConfig score;    // seed 002 weights 0.2/0.3/0.2/0.3
-  FrontierValueConfig value;    // SEMANTIC_FRONTIER's value map (docs/algorithms/planning.md)
-  CoverageGoalConfig coverage;  // L_MAX, turn step
-  double eroi_size_m = 2.0;     // Delta
+  FrontierScoreConfig score;        // seed 002 weights 0.2/0.3/0.2/0.3
+  FrontierValueConfig value;        // SEMANTIC_FRONTIER's value map (docs/algorithms/planning.md)
+  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's default choice
+  CoverageGoalConfig coverage;      // L_MAX, turn step
+  double eroi_size_m = 2.0;         // Delta
   int eroi_viewpoints = 8;
   double eroi_viewpoint_radius_m = 0.5;
   int eroi_rays = 72;

@@ -430,6 +430,35 @@ TEST_F(GatewayTaskExecutorTest, ApproachThatCannotGetCloserSetsTheTargetAside) {
   EXPECT_TRUE(absl::StrContains(task.progress().reason, "cannot get within the success radius"));
 }
 
+// An approach that cannot get within the margin (0.8 m) but stands within the radius (1 m)
+// settles there rather than setting the target aside (hold-out warehouse: a TV on a desk in a
+// corner, confirmed twice from 0.9 m, then given up).
+TEST_F(GatewayTaskExecutorTest, ApproachStuckWithinTheRadiusButNotTheMarginSucceeds) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  int detections = 15;
+  const auto verify_from_here = [&](double now) {
+    task.OnPose(now, At(4.1));  // 0.9 m short, whatever the approach asks
+    out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
+    if (task.progress().phase != "verifying")
+      out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
+    EXPECT_EQ(task.progress().phase, "verifying");
+    task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // facing the target
+    task.OnSceneGraph(
+        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+    out = task.OnSceneGraph(
+        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+  };
+  verify_from_here(1);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);  // beyond the margin: try closer once
+  verify_from_here(2);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
 TEST_F(GatewayTaskExecutorTest, FrontierThatCannotBeApproachedIsSpentWithoutMoving) {
   planner_.failures = {absl::FailedPreconditionError("goal occupied")};
   planner_.alternative_point = Eigen::Vector3d(0.1, 0, 0);  // behind furniture: no closer than here
