@@ -103,6 +103,22 @@ ExecutorConfig WithStartScan() {
   return config;
 }
 
+// One navigate/approach-and-VERIFY round with the robot stuck at (x, 0), whatever it was asked:
+// the motion "done", facing the target, two new detections of it.
+void VerifyStuckAt(TaskExecutor& task, std::vector<RobotCommand>& out, double x, double now,
+                   int& detections) {
+  task.OnPose(now, At(x));
+  out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
+  if (task.progress().phase != "verifying")
+    out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
+  EXPECT_EQ(task.progress().phase, "verifying");
+  task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // facing the target
+  task.OnSceneGraph(now,
+                    GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+  out = task.OnSceneGraph(
+      now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
+}
+
 class GatewayTaskExecutorTest : public ::testing::Test {
  protected:
   TaskExecutor Make(std::vector<Subgoal> goals, ExecutorConfig config = {}) {
@@ -405,23 +421,10 @@ TEST_F(GatewayTaskExecutorTest, ApproachThatCannotGetCloserSetsTheTargetAside) {
   std::vector<RobotCommand> out = task.Start(0, At(0));
   int detections = 15;
   // The robot gets stuck 3 m short of the target on every approach (say, behind a counter).
-  const auto verify_from_here = [&](double now) {
-    task.OnPose(now, At(2));
-    out =
-        task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // navigate / approach "done"
-    if (task.progress().phase != "verifying")
-      out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
-    EXPECT_EQ(task.progress().phase, "verifying");
-    task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // facing the target
-    task.OnSceneGraph(
-        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
-    out = task.OnSceneGraph(
-        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
-  };
-  verify_from_here(1);
+  VerifyStuckAt(task, out, 2.0, 1, detections);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(current_type(task), SubgoalType::kApproach);  // too far: approach once more
-  verify_from_here(2);
+  VerifyStuckAt(task, out, 2.0, 2, detections);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
   EXPECT_EQ(task.progress().phase, "exploring");
@@ -438,22 +441,10 @@ TEST_F(GatewayTaskExecutorTest, ApproachStuckWithinTheRadiusButNotTheMarginSucce
   task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
   std::vector<RobotCommand> out = task.Start(0, At(0));
   int detections = 15;
-  const auto verify_from_here = [&](double now) {
-    task.OnPose(now, At(4.1));  // 0.9 m short, whatever the approach asks
-    out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
-    if (task.progress().phase != "verifying")
-      out = task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);
-    EXPECT_EQ(task.progress().phase, "verifying");
-    task.OnFeedback(now, out[0].id, RobotFeedback::kGoalReached);  // facing the target
-    task.OnSceneGraph(
-        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
-    out = task.OnSceneGraph(
-        now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
-  };
-  verify_from_here(1);
+  VerifyStuckAt(task, out, 4.1, 1, detections);  // 0.9 m short, whatever the approach asks
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(current_type(task), SubgoalType::kApproach);  // beyond the margin: try closer once
-  verify_from_here(2);
+  VerifyStuckAt(task, out, 4.1, 2, detections);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kStop);
   EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
