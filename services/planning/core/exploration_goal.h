@@ -50,7 +50,7 @@ struct ExplorationQuery {
 struct ExplorationGoalConfig {
   FrontierScoreConfig score;  // seed 002 terms (reported; SEMANTIC_FRONTIER with value map off)
   FrontierValueConfig value;  // SEMANTIC_FRONTIER's value map (opt-in, before the discount)
-  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's default: discounted nearest frontier
+  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's discounted nearest frontier (opt-in)
   CoverageGoalConfig coverage;
   EroiConfig eroi;  // cells
 };

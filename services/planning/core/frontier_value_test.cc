@@ -121,6 +121,32 @@ TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesTheP
   EXPECT_EQ(semantic->goal, (Cell{1, 1}));
 }
 
+TEST(SelectExplorationGoal, SemanticDiscountWithoutEvidenceIsTheNearestFrontierSearch) {
+  // The same corridor: the west pocket (2 cells) is nearer than the east room (3 cells).
+  const ExplorationGrid grid = GridOf(
+      {
+          "#########????",
+          "?.......?????",
+          "#########????",
+      },
+      0.5);
+  ExplorationQuery query;
+  query.robot = {4, 1};
+  query.min_frontier_cells = 1;
+  ExplorationGoalConfig config;
+  config.discount.enabled = true;
+  absl::StatusOr<ExplorationChoice> semantic =
+      SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, config);
+  ASSERT_TRUE(semantic.ok()) << semantic.status();
+  EXPECT_EQ(semantic->goal, (Cell{1, 1}));  // NEAREST_FRONTIER's goal
+  // An object co-occurring with the target beside the east room (evidence 1): U_east =
+  // 3 / (1.5 + 1) = 1.2 beats U_west = 1 / (1 + 1) = 0.5; the goal is the room's nearest cell.
+  query.objects = {{grid.CentreOf(Cell{9, 1}), 0.0, 0.0, 1.0}};
+  semantic = SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, config);
+  ASSERT_TRUE(semantic.ok()) << semantic.status();
+  EXPECT_EQ(semantic->goal, (Cell{7, 1}));
+}
+
 TEST(SelectExplorationGoal, NothingReachableIsNotFoundWithItsReason) {
   const ExplorationGrid grid = GridOf({"...", "...", "..."}, 0.5);
   ExplorationQuery query;

@@ -15,7 +15,7 @@ struct ExplorationConfig {
   int min_frontier_cells = 5;
   FrontierScoreConfig score;        // seed 002 weights 0.2/0.3/0.2/0.3
   FrontierValueConfig value;        // SEMANTIC_FRONTIER's value map (docs/algorithms/planning.md)
-  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's default choice
+  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's discounted nearest frontier (opt-in)
   CoverageGoalConfig coverage;      // L_MAX, turn step
   double eroi_size_m = 2.0;         // Delta
   int eroi_viewpoints = 8;

@@ -292,10 +292,8 @@ TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
   pb::SelectExplorationGoalResponse response;
   grpc::ClientContext context;
   ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
-  // The sofa beside the right cluster (5 m away, evidence 1: U = 3 / 6) outweighs the left one
-  // (3 m, no evidence in its direction: U = 1 / 4); the goal is the right cluster's nearest cell.
-  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 0).x());
-  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 0).y());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 2).x());  // the right cluster's anchor
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 2).y());
 }
 
 TEST_F(ExplorationContract, CoverageMaxGoesToTheBoundaryAhead) {
