@@ -86,16 +86,22 @@ TEST(FrontierValue, RegionFirstThenTheBestFrontierInIt) {
   EXPECT_FALSE(SelectValuedFrontier(unreachable, values, config).has_value());
 }
 
-TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesThePocket) {
-  // The robot at (4, 1). West: a one-cell pocket 2 cells away. East: a 4 x 3 unknown room
-  // behind a frontier 3 cells away.
-  const ExplorationGrid grid = GridOf(
+// A corridor at 0.5 m cells: a one-cell unknown pocket at its west end, a 4 x 3 unknown room
+// beyond its east end.
+ExplorationGrid PocketAndRoomCorridor() {
+  return GridOf(
       {
           "#########????",
           "?.......?????",
           "#########????",
       },
       0.5);
+}
+
+TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesThePocket) {
+  // The robot at (4, 1). West: a one-cell pocket 2 cells away. East: a 4 x 3 unknown room
+  // behind a frontier 3 cells away.
+  const ExplorationGrid grid = PocketAndRoomCorridor();
   ExplorationQuery query;
   query.robot = {4, 1};
   query.min_frontier_cells = 1;
@@ -123,13 +129,7 @@ TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesTheP
 
 TEST(SelectExplorationGoal, SemanticDiscountWithoutEvidenceIsTheNearestFrontierSearch) {
   // The same corridor: the west pocket (2 cells) is nearer than the east room (3 cells).
-  const ExplorationGrid grid = GridOf(
-      {
-          "#########????",
-          "?.......?????",
-          "#########????",
-      },
-      0.5);
+  const ExplorationGrid grid = PocketAndRoomCorridor();
   ExplorationQuery query;
   query.robot = {4, 1};
   query.min_frontier_cells = 1;
