@@ -98,17 +98,16 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
       const FrontierSet set = CollectFrontiers(grid, query, config.score);
       std::optional<int> best;
       double score = 0.0;
-      if (!config.value.enabled && config.discount.enabled) {
-        best = SelectDiscountedFrontier(set.candidates, set.scores, config.discount);
-        if (!best) return NotFound("no reachable frontier");
-        return ExplorationChoice{set.nearest_cells[*best], set.scores[*best].total, {}};
-      }
       if (config.value.enabled) {
         const std::vector<FrontierValue> values =
             ValueFrontiers(set.frontiers, set.candidates, grid.explored, grid.resolution_m,
                            query.objects, config.value);
         best = SelectValuedFrontier(set.candidates, values, config.value);
         if (best) score = values[*best].utility;
+      } else if (config.discount.enabled) {
+        best = SelectDiscountedFrontier(set.candidates, set.scores, config.discount);
+        if (!best) return NotFound("no reachable frontier");
+        return ExplorationChoice{set.nearest_cells[*best], set.scores[*best].total, {}};
       } else {
         for (size_t i = 0; i < set.scores.size(); ++i) {
           if (set.candidates[i].path_distance_m < 0) continue;

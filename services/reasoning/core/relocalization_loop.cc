@@ -207,7 +207,7 @@ std::vector<ObservedObject> RelocalizationLoop::Observed(const SceneGraph& graph
     ObservedObject observed;
     observed.object_id = object.id;
     observed.position = odom_from_map.Apply(object.position);
-    observed.scale_m = object.scale_m > 0.0 ? object.scale_m : config_.default_object_scale_m;
+    observed.scale_m = object.scale_m() > 0.0 ? object.scale_m() : config_.default_object_scale_m;
     observed.embedding = object.embedding;
     observed.observations = fresh ? std::max(1, object.detection_count)
                                   : std::max(1, object.detection_count - before->second);

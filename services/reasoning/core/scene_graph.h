@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -19,9 +20,11 @@ struct SceneObject {
   int64_t region_id = -1;                              // -1: no region.
   std::vector<std::string> attributes;  // e.g. colours reported by the detector/captioner.
   std::vector<float> embedding;         // visual embedding (CLIP-like); empty: none.
-  double scale_m = 0.0;                 // largest extent of mapping's box, metres; 0: unknown.
   // Mapping's 10-90 % extent of the seen points along map x, y, z, metres; zero: unknown.
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
+
+  // Largest extent of mapping's box, metres; 0: unknown.
+  double scale_m() const { return std::max(size.maxCoeff(), 0.0); }
 };
 
 struct SceneRelation {

@@ -61,7 +61,7 @@ SceneObject Landmark(int64_t id, const std::string& label, double x, double y) {
   object.position = Eigen::Vector3d(x, y, 0.5);
   object.detection_count = 2;
   object.embedding = {1.0f, 0.0f, 0.0f};
-  object.scale_m = 0.8;
+  object.size = Eigen::Vector3d(0.8, 0.4, 0.5);  // scale 0.8
   return object;
 }
 

@@ -37,7 +37,6 @@ SceneObject FromProto(const mapping_api::SceneObject& in) {
   out.detection_count = static_cast<int>(in.observation_count());
   out.region_id = in.region_id();
   out.embedding.assign(in.embedding().begin(), in.embedding().end());
-  out.scale_m = std::max({in.size().x(), in.size().y(), in.size().z(), 0.0});
   out.size = Eigen::Vector3d(in.size().x(), in.size().y(), in.size().z()).cwiseMax(0.0);
   return out;
 }
