@@ -104,7 +104,7 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
                            query.objects, config.value);
         best = SelectValuedFrontier(set.candidates, values, config.value);
         if (best) score = values[*best].utility;
-      } else if (config.discount.enabled) {
+      } else if (DiscountApplies(config.discount, query.platform)) {
         best = SelectDiscountedFrontier(set.candidates, set.scores, config.discount);
         if (!best) return NotFound("no reachable frontier");
         return ExplorationChoice{set.nearest_cells[*best], set.scores[*best].total, {}};

@@ -45,12 +45,14 @@ struct ExplorationQuery {
   // Outside the operator's search area (EROI counts it as explored); unset = nowhere.
   std::function<bool(Point2)> outside_area;
   std::vector<double> eroi_values;  // EROI_UTILITY semantic values; empty = uniform
+  // SEMANTIC_FRONTIER's rule: the discount on the platforms its config names, else the seed total.
+  ExplorationPlatform platform = ExplorationPlatform::kUnspecified;
 };
 
 struct ExplorationGoalConfig {
   FrontierScoreConfig score;  // seed 002 terms (reported; SEMANTIC_FRONTIER with value map off)
   FrontierValueConfig value;  // SEMANTIC_FRONTIER's value map (opt-in, before the discount)
-  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's discounted nearest frontier (opt-in)
+  SemanticDiscountConfig discount;  // SEMANTIC_FRONTIER's discounted nearest frontier (by platform)
   CoverageGoalConfig coverage;
   EroiConfig eroi;  // cells
 };
@@ -73,9 +75,10 @@ struct ExplorationChoice {
 };
 
 // The exploration goal by strategy. NEAREST_FRONTIER and COVERAGE_MAX are the seed 004
-// baselines; SEMANTIC_FRONTIER takes the value map (frontier_value.h) when it is on, else the
-// semantically discounted nearest frontier (semantic_discount.h; goal: its nearest cell, as
-// NEAREST_FRONTIER's), else the best seed 002 total; EROI_UTILITY is seed 000's utility. NOT_FOUND
+// baselines; SEMANTIC_FRONTIER takes the value map (frontier_value.h) when it is on, else, on the
+// platforms the discount applies to, the semantically discounted nearest frontier
+// (semantic_discount.h; goal: its nearest cell, as NEAREST_FRONTIER's), else the best seed 002
+// total; EROI_UTILITY is seed 000's utility. NOT_FOUND
 // with reason NO_EXPLORATION_GOAL when nothing is reachable; INVALID_ARGUMENT naming
 // eroi_semantic_values when their count does not match the grid.
 absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,

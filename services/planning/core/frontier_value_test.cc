@@ -133,8 +133,9 @@ TEST(SelectExplorationGoal, SemanticDiscountWithoutEvidenceIsTheNearestFrontierS
   ExplorationQuery query;
   query.robot = {4, 1};
   query.min_frontier_cells = 1;
+  query.platform = ExplorationPlatform::kGround;
   ExplorationGoalConfig config;
-  config.discount.enabled = true;
+  config.discount.ground = true;  // opt-in
   absl::StatusOr<ExplorationChoice> semantic =
       SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, config);
   ASSERT_TRUE(semantic.ok()) << semantic.status();
@@ -145,6 +146,49 @@ TEST(SelectExplorationGoal, SemanticDiscountWithoutEvidenceIsTheNearestFrontierS
   semantic = SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, config);
   ASSERT_TRUE(semantic.ok()) << semantic.status();
   EXPECT_EQ(semantic->goal, (Cell{7, 1}));
+}
+
+TEST(SelectExplorationGoal, TheDiscountAppliesOnlyToTheConfiguredPlatforms) {
+  // 1 m cells, row 0 first. From (0, 0) the upper-left cluster is 3 m away and the right one
+  // (column 5 and row 3's east end) 5 m; an object co-occurring with the target at (7, 0).
+  const ExplorationGrid grid =
+      GridOf({"......??", "......??", "..##..??", "........", "???....."}, 1.0);
+  ExplorationQuery query;
+  query.robot = {0, 0};
+  query.min_frontier_cells = 1;
+  query.objects = {{grid.CentreOf(Cell{7, 0}), 0.0, 0.0, 1.0}};
+  const FrontierSet set = CollectFrontiers(grid, query, FrontierScoreConfig{});
+  int best_total = -1;
+  for (size_t i = 0; i < set.scores.size(); ++i) {
+    if (best_total < 0 || set.scores[i].total > set.scores[best_total].total) {
+      best_total = static_cast<int>(i);
+    }
+  }
+  ASSERT_GE(best_total, 0);
+  ASSERT_NE(set.frontiers[best_total].anchor, (Cell{5, 0}));
+  // By default no platform takes the discount: the seed total's anchor.
+  for (ExplorationPlatform platform : {ExplorationPlatform::kGround, ExplorationPlatform::kAerial,
+                                       ExplorationPlatform::kUnspecified}) {
+    query.platform = platform;
+    absl::StatusOr<ExplorationChoice> semantic =
+        SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, {});
+    ASSERT_TRUE(semantic.ok()) << semantic.status();
+    EXPECT_EQ(semantic->goal, set.frontiers[best_total].anchor);
+  }
+  // Ground robots opted in: U_right = (1 + 2 S) / (5 + 1) > U_left = 1 / (3 + 1) for S > 0.25;
+  // the goal is the right cluster's nearest cell (5, 0). Aerial requests keep the seed total.
+  ExplorationGoalConfig config;
+  config.discount.ground = true;
+  query.platform = ExplorationPlatform::kGround;
+  absl::StatusOr<ExplorationChoice> ground =
+      SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, config);
+  ASSERT_TRUE(ground.ok()) << ground.status();
+  EXPECT_EQ(ground->goal, (Cell{5, 0}));
+  query.platform = ExplorationPlatform::kAerial;
+  absl::StatusOr<ExplorationChoice> aerial =
+      SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, config);
+  ASSERT_TRUE(aerial.ok()) << aerial.status();
+  EXPECT_EQ(aerial->goal, set.frontiers[best_total].anchor);
 }
 
 TEST(SelectExplorationGoal, NothingReachableIsNotFoundWithItsReason) {

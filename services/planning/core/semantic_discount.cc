@@ -4,6 +4,18 @@
 
 namespace semnav::planning {
 
+bool DiscountApplies(const SemanticDiscountConfig& config, ExplorationPlatform platform) {
+  switch (platform) {
+    case ExplorationPlatform::kGround:
+      return config.ground;
+    case ExplorationPlatform::kAerial:
+      return config.aerial;
+    case ExplorationPlatform::kUnspecified:
+      return config.unspecified;
+  }
+  return false;
+}
+
 double SemanticEvidence(const FrontierScore& score) {
   return std::clamp(std::max({score.language, score.gradient, score.relation, score.cooccurrence}),
                     0.0, 1.0);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace semnav::planning {
 
@@ -23,6 +25,18 @@ ExplorationGoalConfig ExplorationConfig::GoalConfig(double resolution_m) const {
   return {score, value, discount, coverage, EroiInCells(resolution_m)};
 }
 
+namespace {
+
+std::vector<std::string> DiscountPlatformNames(const SemanticDiscountConfig& discount) {
+  std::vector<std::string> names;
+  if (discount.ground) names.push_back("ground");
+  if (discount.aerial) names.push_back("aerial");
+  if (discount.unspecified) names.push_back("unspecified");
+  return names;
+}
+
+}  // namespace
+
 void ExplorationConfig::Read(ConfigReader& section) {
   section.Read("min_frontier_cells", &min_frontier_cells)
       .Read("l_max_steps", &coverage.l_max_steps);
@@ -38,9 +52,22 @@ void ExplorationConfig::Read(ConfigReader& section) {
   score_section.Check(score.novelty_radius_m > 0 && score.language_radius_m > 0, "novelty_radius_m",
                       "radii must be > 0");
   ConfigReader discount_section = section.Child("semantic_discount");
-  discount_section.Read("enabled", &discount.enabled)
+  std::vector<std::string> platforms = DiscountPlatformNames(discount);
+  discount_section.Read("platforms", &platforms)
       .Read("gain", &discount.gain)
       .Read("offset_m", &discount.offset_m);
+  discount.ground = discount.aerial = discount.unspecified = false;
+  for (const std::string& name : platforms) {
+    if (name == "ground") {
+      discount.ground = true;
+    } else if (name == "aerial") {
+      discount.aerial = true;
+    } else if (name == "unspecified") {
+      discount.unspecified = true;
+    } else {
+      discount_section.Check(false, "platforms", "entries must be ground, aerial or unspecified");
+    }
+  }
   discount_section.Check(std::isfinite(discount.gain) && discount.gain >= 0 && discount.gain <= 100,
                          "gain", "must be in [0, 100]");
   discount_section.Check(

@@ -195,6 +195,17 @@ pb::ExplorationStrategy ToProto(ExplorationStrategy strategy) {
   return pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER;
 }
 
+ExplorationPlatform FromProto(pb::ExplorationPlatform platform) {
+  switch (platform) {
+    case pb::EXPLORATION_PLATFORM_GROUND:
+      return ExplorationPlatform::kGround;
+    case pb::EXPLORATION_PLATFORM_AERIAL:
+      return ExplorationPlatform::kAerial;
+    default:
+      return ExplorationPlatform::kUnspecified;
+  }
+}
+
 ExplorationStrategy FromProto(pb::ExplorationStrategy strategy) {
   switch (strategy) {
     case pb::EXPLORATION_STRATEGY_COVERAGE_MAX:
@@ -309,6 +320,9 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   if (!pb::ExplorationStrategy_IsValid(request.strategy())) {
     return InvalidField("strategy", "unknown exploration strategy");
   }
+  if (!pb::ExplorationPlatform_IsValid(request.platform())) {
+    return InvalidField("platform", "unknown exploration platform");
+  }
   if (absl::Status s = CheckRange(request.eroi_size_m(), "eroi_size_m", 0.0, 100.0); !s.ok()) {
     return s;
   }
@@ -323,6 +337,7 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
                 request.semantics(), config, filter);
   if (!view.ok()) return view.status();
   const ExplorationStrategy strategy = FromProto(request.strategy());
+  view->query.platform = FromProto(request.platform());
   view->query.eroi_values.assign(request.eroi_semantic_values().begin(),
                                  request.eroi_semantic_values().end());
   ExplorationGoalConfig goal_config = config.exploration.GoalConfig(view->frame.resolution);

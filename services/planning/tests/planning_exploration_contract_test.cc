@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -281,7 +282,8 @@ TEST_F(ExplorationContract, InvalidSearchAreaNamesTheField) {
   }
 }
 
-TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
+// SEMANTIC_FRONTIER with a sofa of relevance 1 beside the right cluster.
+pb::SelectExplorationGoalRequest SofaBesideTheRightCluster() {
   pb::SelectExplorationGoalRequest request =
       GoalRequest(pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
   pb::SemanticObject* sofa = request.mutable_semantics()->add_objects();
@@ -289,11 +291,75 @@ TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
   sofa->mutable_position()->set_x(6.0);
   sofa->mutable_position()->set_y(-1.5);
   sofa->set_relevance(1.0);
+  return request;
+}
+
+TEST_F(ExplorationContract, SemanticFrontierFollowsTheRelevantObject) {
+  pb::SelectExplorationGoalRequest request = SofaBesideTheRightCluster();
   pb::SelectExplorationGoalResponse response;
   grpc::ClientContext context;
   ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
   EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 2).x());  // the right cluster's anchor
   EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 2).y());
+}
+
+TEST_F(ExplorationContract, SemanticFrontierTakesTheDiscountOnlyOnConfiguredPlatforms) {
+  // The default config gives no platform the discount: a ground robot's request gets the seed
+  // total's choice, the right cluster's anchor (5, 2), like an unspecified one.
+  pb::SelectExplorationGoalRequest request = SofaBesideTheRightCluster();
+  request.set_platform(pb::EXPLORATION_PLATFORM_GROUND);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 2).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 2).y());
+
+  // A planning configured with `semantic_discount: {platforms: [ground]}`: without evidence the
+  // nearest frontier wins (the upper-left cluster, 3 m, as NEAREST_FRONTIER); the sofa's
+  // relevance pulls the robot to the right cluster's nearest cell (5, 0), not its anchor. An
+  // aerial robot keeps the seed total.
+  const std::string config = ::testing::TempDir() + "/planning_discount_ground.yaml";
+  std::ofstream(config) << "planning:\n  exploration:\n"
+                           "    semantic_discount: {platforms: [ground]}\n";
+  absl::StatusOr<std::unique_ptr<testing::ServiceProcess>> ground_planning =
+      testing::ServiceProcess::Start("semnav-planning", {"--config", config});
+  ASSERT_TRUE(ground_planning.ok()) << ground_planning.status();
+  std::unique_ptr<pb::PlanningService::Stub> stub =
+      pb::PlanningService::NewStub((*ground_planning)->channel());
+  pb::SelectExplorationGoalRequest plain = request;
+  plain.mutable_semantics()->clear_objects();
+  grpc::ClientContext plain_context;
+  ASSERT_TRUE(stub->SelectExplorationGoal(&plain_context, plain, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(0, 3).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(0, 3).y());
+  grpc::ClientContext ground_context;
+  ASSERT_TRUE(stub->SelectExplorationGoal(&ground_context, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 0).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 0).y());
+  request.set_platform(pb::EXPLORATION_PLATFORM_AERIAL);
+  grpc::ClientContext aerial_context;
+  ASSERT_TRUE(stub->SelectExplorationGoal(&aerial_context, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(5, 2).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(5, 2).y());
+
+  request.set_platform(static_cast<pb::ExplorationPlatform>(42));
+  grpc::ClientContext bad_context;
+  const grpc::Status bad = stub->SelectExplorationGoal(&bad_context, request, &response);
+  EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(bad);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "platform");
+
+  // An unknown platform name in the config is refused at start, naming the key.
+  const std::string wrong = ::testing::TempDir() + "/planning_discount_wrong.yaml";
+  std::ofstream(wrong) << "planning:\n  exploration:\n"
+                          "    semantic_discount: {platforms: [boat]}\n";
+  absl::StatusOr<testing::ProcessResult> refused =
+      testing::RunToCompletion("semnav-planning", {"--config", wrong});
+  ASSERT_TRUE(refused.ok()) << refused.status();
+  EXPECT_NE(refused->exit_code, 0);
+  EXPECT_NE(refused->output.find("semantic_discount.platforms"), std::string::npos)
+      << refused->output;
 }
 
 TEST_F(ExplorationContract, CoverageMaxGoesToTheBoundaryAhead) {

@@ -37,6 +37,7 @@ struct ExplorationQuery {
   RobotPose pose;
   std::vector<Eigen::Vector3d> excluded_goals;  // map frame, metres
   double excluded_radius_m = 0.0;
+  RobotPlatform platform = RobotPlatform::kUnspecified;  // planning picks its rule by it
 };
 
 // A dependency of the planner ("planning", or "mapping" behind it) is unreachable or timed out:

@@ -20,6 +20,7 @@ struct RobotRecord {
   RobotPose pose;
   bool fly_roll = false;            // the latest hello offered the fly-roll mode
   double footprint_radius_m = 0.0;  // the latest hello's footprint
+  RobotPlatform platform = RobotPlatform::kUnspecified;  // from the latest hello's modes
   bool emergency_stop = false;
   std::string active_task;  // "" = none
   std::unique_ptr<TopologicalMemory> memory;

@@ -13,6 +13,10 @@ struct RobotPose {
   double yaw = 0.0;                                    // rad, counter-clockwise from +x
 };
 
+// How the robot moves and sees, as planning's exploration reads it: a robot that can fly (UAV,
+// fly-roll) has a wide view; a ground robot a short, level one.
+enum class RobotPlatform { kUnspecified, kGround, kAerial };
+
 enum class RobotFeedback { kGoalReached, kFailed, kBlocked };
 
 enum class CommandKind { kNavigate, kRotate, kStop, kHold };

@@ -93,6 +93,7 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
                                                  std::vector<Eigen::Vector3d> path, double yaw,
                                                  double speed, Phase phase,
                                                  const std::string& reason) {
+  glancing_ = false;  // a new motion ends any glance (GoForCandidate starts one after this)
   RobotCommand command = NewCommand(CommandKind::kNavigate, reason);
   command.goal = goal;
   if (!path.empty())
@@ -384,7 +385,8 @@ std::optional<ModelRequest> TaskExecutor::TakeModelRequest() {
 std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   if (InEndgame(now) && current().type != SubgoalType::kExplore && TakeBestCandidate())
     return GoToBestCandidate(now);
-  if (current().type != SubgoalType::kExplore && TakeLabelledCandidate()) return EnterSubgoal(now);
+  if (current().type != SubgoalType::kExplore && TakeLabelledCandidate())
+    return GoForCandidate(now);
   if (progress_.explore_goals >= config_.max_explore_goals) {
     if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration budget used");
     return Fail(
@@ -396,7 +398,7 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   constexpr int kGoalsPerStep = 3;  // planning calls run under the gateway lock: keep them few
   for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
     const absl::StatusOr<Eigen::Vector3d> goal = planner_->ExplorationGoal(
-        {pose_, spent_explore_goals_, config_.explore_exclusion_radius_m});
+        {pose_, spent_explore_goals_, config_.explore_exclusion_radius_m, config_.platform});
     if (absl::IsUnavailable(goal.status())) return PauseExploring(now, goal.status());
     if (!goal.ok()) break;
     explore_goal_ = *goal;
@@ -532,6 +534,10 @@ std::set<int64_t> TaskExecutor::SkippedObjects() const {
   for (const auto& [id, where] : ruled_out_at_) {
     if (RuledOut(id)) skip.insert(id);
   }
+  for (const auto& [id, detections] : passed_by_) {
+    const SceneObject* object = graph_.FindObject(id);
+    if (object != nullptr && object->detection_count <= detections) skip.insert(id);
+  }
   return skip;
 }
 
@@ -547,6 +553,32 @@ bool TaskExecutor::TakeLabelledCandidate() {
   progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position,
                                    best->fused, ResolutionPath::kFast, 0};
   return true;
+}
+
+std::vector<RobotCommand> TaskExecutor::GoForCandidate(double now) {
+  const int64_t id = progress_.target->object_id;
+  const SceneObject* object = graph_.FindObject(id);
+  // Only a single detection is doubted: objects the map holds without detections (a loaded or
+  // operator-placed map) and those seen twice are driven to at once.
+  if (config_.glance_s <= 0.0 || object == nullptr || object->detection_count != 1)
+    return EnterSubgoal(now);
+  std::vector<RobotCommand> out =
+      MoveTo(now, pose_.position, YawTo(progress_.target->position), 0.0, Phase::kVerifying,
+             absl::StrCat("object ", id, " seen once: looking at it again before driving to it"));
+  if (phase_ == Phase::kVerifying) {
+    glancing_ = true;
+    glance_detections_ = object->detection_count;
+  }
+  return out;
+}
+
+std::vector<RobotCommand> TaskExecutor::PassBy(double now) {
+  glancing_ = false;
+  const int64_t id = progress_.target->object_id;
+  const SceneObject* object = graph_.FindObject(id);
+  passed_by_[id] = object != nullptr ? object->detection_count : glance_detections_;
+  return ReleaseTarget(
+      now, absl::StrCat("passed by: not detected again in a ", config_.glance_s, " s glance"));
 }
 
 std::vector<RobotCommand> TaskExecutor::GoToBestCandidate(double now) {
@@ -663,11 +695,13 @@ std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
   // sent ends on the robot's timer, which may run a step ahead of it: keep waiting then.
   if (now >= phase_deadline_) return VerifyTimedOut(now);
   if (active_kind_ == CommandKind::kHold) return {};
+  if (glancing_) phase_deadline_ = now + config_.glance_s;  // the glance counts from facing it
   // Facing the target: the robot is told at once to hold for the rest of the window, rather than
   // left without a command until detections (or the vision model) decide.
-  RobotCommand command =
-      NewCommand(CommandKind::kHold, absl::StrCat("verifying object ", progress_.target->object_id,
-                                                  ": holding while detections confirm it"));
+  RobotCommand command = NewCommand(
+      CommandKind::kHold,
+      absl::StrCat(glancing_ ? "glancing at object " : "verifying object ",
+                   progress_.target->object_id, ": holding while detections confirm it"));
   command.duration_s = phase_deadline_ - now;
   if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.reason = command.reason;
@@ -751,6 +785,7 @@ std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now,
 }
 
 std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
+  if (glancing_) return PassBy(now);
   const int64_t id = progress_.target->object_id;
   const SceneObject* object = graph_.FindObject(id);
   const double distance = DistanceToTarget(pose_.position);
@@ -1042,6 +1077,11 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
     const SceneObject* object = graph_.FindObject(progress_.target->object_id);
     if (object == nullptr) return {};
     progress_.target->position = object->position;
+    if (glancing_) {
+      if (object->detection_count <= glance_detections_) return {};
+      glancing_ = false;  // seen again: drive to it
+      return EnterSubgoal(now);
+    }
     if (object->detection_count - progress_.target->detections_at_verify >=
         config_.verify_detections) {
       return CheckSuccessOrApproach(now);
@@ -1051,7 +1091,8 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
   const bool searching = (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) &&
                          current().type != SubgoalType::kExplore;
   if (!searching) return {};
-  if (TryResolve() || TakeLabelledCandidate()) return EnterSubgoal(now);
+  if (TryResolve()) return EnterSubgoal(now);
+  if (TakeLabelledCandidate()) return GoForCandidate(now);
   MaybeRequestModel();
   return {};
 }

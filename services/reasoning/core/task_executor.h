@@ -57,7 +57,8 @@ struct ExecutorConfig {
   bool model_available = false;     // offer slow-path model requests
   int grounding_max_objects = 15;   // ESCA budget of a slow-path request
   bool multi_modal = false;         // the robot can fly-roll: plan multi-modal paths
-  double robot_radius_m = 0.0;      // the robot's footprint radius for path planning
+  RobotPlatform platform = RobotPlatform::kUnspecified;  // told to planning's exploration
+  double robot_radius_m = 0.0;  // the robot's footprint radius for path planning
   // Paths keep this much more than the footprint from mapped obstacles (Nav2 inflates beyond the
   // inscribed radius too): mapped walls are off by a cell or two, and paths hug inflated edges.
   double path_clearance_m = 0.1;
@@ -110,6 +111,13 @@ struct ExecutorConfig {
   // the view has too few detections to pass the threshold. VERIFY sets it aside when it is not
   // confirmed. Above 1 = off.
   double approach_label_match = 1.0;
+  // Such a candidate detected only once is looked at again before the robot drives to it: the
+  // robot turns to face it and holds for glance_s; one more detection and the approach starts,
+  // none and it is passed by until the detector reports it again. A single detection is as often
+  // a detector confusion or a false positive as the target (the simulator's 5 % of each), and
+  // driving to one and verifying it cost 25-35 s (docs/performance/mission.md, "Glance").
+  // 0 = off: drive to it at once.
+  double glance_s = 2.0;
   // The task's search area (the operator's; unset = none). From outside it, fallback steps (no
   // goal from planning) lead back toward it: planning gives no goal to a robot outside the area,
   // so one step out led to the next and the UAV flew off the world. Inside, steps are as before.
@@ -184,10 +192,11 @@ class TaskExecutor {
   // Replace the target of the remaining subgoals (multi-turn correction).
   std::vector<RobotCommand> Retarget(double now, const TargetSpec& target, bool exclude_current);
 
-  // The robot's modality and footprint for path planning (known once its session opened).
-  void SetMobility(bool multi_modal, double robot_radius_m) {
+  // The robot's modality and footprint for planning (known once its session opened).
+  void SetMobility(bool multi_modal, double robot_radius_m, RobotPlatform platform) {
     config_.multi_modal = multi_modal;
     config_.robot_radius_m = robot_radius_m;
+    config_.platform = platform;
   }
 
   // The target's text embedding from the model proxy (fast path's embedding term); empty = the
@@ -284,6 +293,11 @@ class TaskExecutor {
   bool TakeBestCandidate();
   // No model: a candidate matching the target's label (approach_label_match) becomes the target.
   bool TakeLabelledCandidate();
+  // Goes for the target just located: a glance first when it was detected only once
+  // (glance_s), else the subgoal's approach.
+  std::vector<RobotCommand> GoForCandidate(double now);
+  // The glance's window ended without a new detection: the candidate is passed by.
+  std::vector<RobotCommand> PassBy(double now);
   bool InEndgame(double now) const;
   std::vector<RobotCommand> GoToBestCandidate(double now);
   std::vector<RobotCommand> FallbackStep(double now);
@@ -330,6 +344,11 @@ class TaskExecutor {
   int close_detections_ = 0;
   // VERIFY: the target got its second look already.
   int64_t second_look_target_ = -1;
+  // Glance (glance_s): VERIFY's turn and hold, held to a single-detection candidate before any
+  // approach. Candidates passed by, with their detection count then: skipped until it grows.
+  bool glancing_ = false;
+  int glance_detections_ = 0;
+  std::map<int64_t, int> passed_by_;
   // Blocked recovery.
   Eigen::Vector3d active_goal_ = Eigen::Vector3d::Zero();  // goal of the last navigate command
   std::optional<Eigen::Vector3d> blocked_goal_;

@@ -1318,13 +1318,14 @@ TEST_F(GatewayTaskExecutorTest, EndgameGoesToTheBestCandidateSeen) {
 }
 
 // Without a model, a candidate whose label matches the target (seen once: below the fast path's
-// threshold) is driven to and verified at once instead of passed by (8-episode home bench: 2 of
-// 3 failures were "seen, never approached"). A partial match (a plain extinguisher for "red fire
-// extinguisher", colour unknown: 0.5) is not taken.
-TEST_F(GatewayTaskExecutorTest, WithoutAModelALabelledCandidateIsApproachedAndVerified) {
+// threshold) is looked at again and then driven to and verified, instead of passed by (8-episode
+// home bench: 2 of 3 failures were "seen, never approached"). A partial match (a plain
+// extinguisher for "red fire extinguisher", colour unknown: 0.5) is not taken.
+TEST_F(GatewayTaskExecutorTest, WithoutAModelALabelledCandidateIsGlancedAtThenApproached) {
   planner_.frontiers = {Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0)};
   ExecutorConfig config;
   config.verify_timeout_s = 10.0;
+  config.glance_s = 2.0;
   TaskExecutor task = Make(FindTarget(), config);
   std::vector<RobotCommand> out = task.Start(0, At(0));
   ASSERT_EQ(out.size(), 1u);
@@ -1333,10 +1334,22 @@ TEST_F(GatewayTaskExecutorTest, WithoutAModelALabelledCandidateIsApproachedAndVe
   uncoloured.attributes.clear();
   EXPECT_TRUE(task.OnSceneGraph(1, GraphWith({uncoloured}, 1)).empty());
   EXPECT_FALSE(task.progress().target.has_value());
+  // Seen once: the robot turns where it stands to face it (it was heading away, to -x).
   out = task.OnSceneGraph(2, GraphWith({Extinguisher(1)}, 2));
   ASSERT_EQ(out.size(), 1u);
   ASSERT_TRUE(task.progress().target.has_value());
   EXPECT_EQ(task.progress().target->object_id, 7);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 0, 0)));
+  EXPECT_NEAR(out[0].goal_yaw, 0.0, 1e-9);
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "seen once")) << task.progress().reason;
+  // Facing it, the robot holds for the glance; a second detection starts the approach.
+  out = task.OnFeedback(3, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  EXPECT_DOUBLE_EQ(out[0].duration_s, 2.0);
+  out = task.OnSceneGraph(4, GraphWith({Extinguisher(2)}, 3));
+  ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(current_type(task), SubgoalType::kApproach);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));
 
@@ -1346,6 +1359,50 @@ TEST_F(GatewayTaskExecutorTest, WithoutAModelALabelledCandidateIsApproachedAndVe
   asked.Start(0, At(0));
   EXPECT_TRUE(asked.OnSceneGraph(2, GraphWith({Extinguisher(1)}, 2)).empty());
   EXPECT_FALSE(asked.progress().target.has_value());
+
+  // glance_s 0: driven to at once.
+  config.model_available = false;
+  config.glance_s = 0.0;
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0)};
+  TaskExecutor direct = Make(FindTarget(), config);
+  direct.Start(0, At(0));
+  out = direct.OnSceneGraph(2, GraphWith({Extinguisher(1)}, 2));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(direct), SubgoalType::kApproach);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));
+}
+
+// A detection that does not repeat while the robot faces it (a false positive or a detector
+// confusion) costs the glance, not an approach and two VERIFY windows: the candidate is passed
+// by until the detector reports it again (generated suite: 15 of 40 episodes drove
+// to at least one such phantom, 25-35 s each).
+TEST_F(GatewayTaskExecutorTest, ACandidateNotSeenAgainInTheGlanceIsPassedByUntilDetectedAgain) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0),
+                        Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.glance_s = 2.0;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  out = task.OnSceneGraph(1, GraphWith({Extinguisher(1)}, 1));
+  ASSERT_EQ(out.size(), 1u);
+  out = task.OnFeedback(2, out[0].id, RobotFeedback::kGoalReached);  // facing it: hold
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  EXPECT_TRUE(task.OnPose(3, At(0)).empty());  // within the glance
+  out = task.OnPose(4, At(0));                 // 2 s facing it, nothing new
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_FALSE(task.progress().target.has_value());
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, -10, 0)));  // the next exploration goal
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "passed by")) << task.progress().reason;
+  // The same single detection in the next graphs is not taken again ...
+  EXPECT_TRUE(task.OnSceneGraph(5, GraphWith({Extinguisher(1)}, 2)).empty());
+  EXPECT_FALSE(task.progress().target.has_value());
+  // ... a new one is: two detections pass the fast path, so the approach starts at once.
+  out = task.OnSceneGraph(6, GraphWith({Extinguisher(2)}, 3));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_TRUE(task.progress().target.has_value());
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));
 }
 
 }  // namespace

@@ -76,7 +76,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("unreachable_region_m", &c.executor.unreachable_region_m)
       .Read("time_budget_s", &c.executor.time_budget_s)
       .Read("endgame_s", &c.executor.endgame_s)
-      .Read("approach_label_match", &c.executor.approach_label_match);
+      .Read("approach_label_match", &c.executor.approach_label_match)
+      .Read("glance_s", &c.executor.glance_s);
   executor.Check(
       c.executor.explore_scan_duration_s >= 0.0 && c.executor.explore_scan_duration_s <= 120.0,
       "explore_scan_duration_s", "must be in [0, 120] (0 = no turn)");
@@ -121,6 +122,9 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(
       std::isfinite(c.executor.approach_label_match) && c.executor.approach_label_match >= 0.0,
       "approach_label_match", "must be a finite value >= 0 (above 1 = off)");
+  executor.Check(std::isfinite(c.executor.glance_s) && c.executor.glance_s >= 0.0 &&
+                     c.executor.glance_s <= 30.0,
+                 "glance_s", "must be in [0, 30] (0 = no glance)");
 
   ConfigReader memory = section.Child("memory");
   memory.Read("node_spacing_m", &c.memory.node_spacing_m)

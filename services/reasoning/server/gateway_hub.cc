@@ -272,7 +272,7 @@ std::vector<RobotCommand> GatewayHub::GiveSceneGraph(Task& task, double now) {
 }
 
 void GatewayHub::SetMobility(Task& task, const Robot& robot) {
-  task.executor->SetMobility(robot.fly_roll, robot.footprint_radius_m);
+  task.executor->SetMobility(robot.fly_roll, robot.footprint_radius_m, robot.platform);
 }
 
 absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(

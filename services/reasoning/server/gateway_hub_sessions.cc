@@ -31,6 +31,17 @@ absl::StatusOr<double> SimulatedSeconds(const api::RobotState& state) {
   return static_cast<double>(stamp.seconds()) + stamp.nanos() * 1e-9;
 }
 
+// A robot that can fly (AIR or FLY_ROLL) sees wide; the rest, and an empty list ("GROUND
+// only"), are ground robots.
+RobotPlatform PlatformOf(const google::protobuf::RepeatedField<int>& modes) {
+  for (int mode : modes) {
+    if (mode == api::LOCOMOTION_MODE_AIR || mode == api::LOCOMOTION_MODE_FLY_ROLL) {
+      return RobotPlatform::kAerial;
+    }
+  }
+  return RobotPlatform::kGround;
+}
+
 }  // namespace
 
 void GatewayHub::SetSceneGraphSync(std::function<absl::Status(absl::Duration timeout)> sync) {
@@ -63,6 +74,7 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(
   robot.fly_roll =
       std::find(modes.begin(), modes.end(), api::LOCOMOTION_MODE_FLY_ROLL) != modes.end();
   robot.footprint_radius_m = hello.capabilities().footprint_radius_m();
+  robot.platform = PlatformOf(modes);
   robot.simulated_clock = hello.clock() == api::CLOCK_KIND_SIMULATED;
   // A new simulated session is a new simulation: its clock and frames start over.
   robot.sim_now_s = 0.0;

@@ -88,6 +88,45 @@ TEST(GatewayHubTest, TaskThatStartsWhilePlanningIsGoneHoldsAndLogsIt) {
   hub.Shutdown();
 }
 
+// Planning's exploration picks its rule by the platform: the hello's modes decide it.
+TEST(GatewayHubTest, ExplorationTellsPlanningWhetherTheRobotFlies) {
+  class RecordingPlanner : public PathPlanner {
+   public:
+    absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
+      return std::vector<Eigen::Vector3d>{query.goal};
+    }
+    absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
+      platforms.push_back(query.platform);
+      return query.pose.position + Eigen::Vector3d(3.0, 0.0, 0.0);
+    }
+    std::vector<RobotPlatform> platforms;
+  };
+  struct Case {
+    std::vector<api::LocomotionMode> modes;
+    RobotPlatform expected;
+  };
+  const std::vector<Case> cases = {
+      {{}, RobotPlatform::kGround},  // an empty list means GROUND only
+      {{api::LOCOMOTION_MODE_GROUND}, RobotPlatform::kGround},
+      {{api::LOCOMOTION_MODE_AIR}, RobotPlatform::kAerial},
+      {{api::LOCOMOTION_MODE_GROUND, api::LOCOMOTION_MODE_FLY_ROLL}, RobotPlatform::kAerial},
+  };
+  for (const Case& c : cases) {
+    RecordingPlanner planner;
+    GatewayHub hub(GatewayConfig{}, &ShippedLexicon(), &planner);
+    RecordingSink session;
+    api::SessionHello hello;
+    hello.set_robot_id("r1");
+    for (api::LocomotionMode mode : c.modes) hello.mutable_capabilities()->add_modes(mode);
+    ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
+    ASSERT_TRUE(hub.OnRobotState(&session, At(0, 0)).ok());
+    ASSERT_TRUE(hub.Submit(SubmitRequest("find-1", "r1", "find the red cup")).ok());
+    ASSERT_FALSE(planner.platforms.empty()) << hello.ShortDebugString();
+    EXPECT_EQ(planner.platforms.back(), c.expected) << hello.ShortDebugString();
+    hub.Shutdown();
+  }
+}
+
 // operator.proto: control of a finished task is FAILED_PRECONDITION naming task_id, but a retry
 // of the call that finished it (same request_id) gets that call's answer again.
 TEST(GatewayHubTest, ControlOfAFinishedTaskIsRefusedButARetryGetsTheFirstAnswer) {

@@ -45,6 +45,18 @@ absl::Status Unavailable(const char* call, const grpc::Status& status) {
 }
 
 // The one place a core strategy becomes planning's proto enum.
+pb::ExplorationPlatform ToProto(RobotPlatform platform) {
+  switch (platform) {
+    case RobotPlatform::kGround:
+      return pb::EXPLORATION_PLATFORM_GROUND;
+    case RobotPlatform::kAerial:
+      return pb::EXPLORATION_PLATFORM_AERIAL;
+    case RobotPlatform::kUnspecified:
+      return pb::EXPLORATION_PLATFORM_UNSPECIFIED;
+  }
+  return pb::EXPLORATION_PLATFORM_UNSPECIFIED;
+}
+
 pb::ExplorationStrategy ToProto(ExplorationStrategy strategy) {
   switch (strategy) {
     case ExplorationStrategy::kNearestFrontier:
@@ -192,6 +204,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
   request.mutable_robot()->set_yaw(pose.yaw);
   const pb::ExplorationStrategy chosen = ToProto(strategy.value_or(settings_.exploration_strategy));
   request.set_strategy(chosen);
+  request.set_platform(ToProto(query.platform));
   for (const ExplorationHint& hint : context.objects) {
     pb::SemanticObject* object = request.mutable_semantics()->add_objects();
     object->set_label(hint.label);

@@ -82,7 +82,7 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   context.visited.push_back(Eigen::Vector3d(0.0, 0.0, 0.0));
   RobotPose pose;
   pose.position = Eigen::Vector3d(1.0, 2.0, 0.3);
-  const ExplorationQuery query{pose, {Eigen::Vector3d(5.0, 6.0, 0.3)}, 1.5};
+  const ExplorationQuery query{pose, {Eigen::Vector3d(5.0, 6.0, 0.3)}, 1.5, RobotPlatform::kGround};
   absl::StatusOr<Eigen::Vector3d> goal =
       client_->SelectGoal(query, ExplorationStrategy::kCoverageMax, context);
   ASSERT_TRUE(goal.ok()) << goal.status();
@@ -92,6 +92,7 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   ASSERT_EQ(planning_.requests.size(), 1u);
   const pb::SelectExplorationGoalRequest& request = planning_.requests[0];
   EXPECT_EQ(request.strategy(), pb::EXPLORATION_STRATEGY_COVERAGE_MAX);
+  EXPECT_EQ(request.platform(), pb::EXPLORATION_PLATFORM_GROUND);
   ASSERT_EQ(request.excluded_goals_size(),
             1);  // spent goals reach planning with the task's context
   EXPECT_EQ(request.excluded_goals(0).x(), 5.0);
