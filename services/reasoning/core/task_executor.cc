@@ -9,6 +9,12 @@
 #include "services/reasoning/core/input_limits.h"
 
 namespace semnav::reasoning {
+namespace {
+
+// The detection count the glance doubts: a candidate seen exactly once.
+constexpr int kSeenOnce = 1;
+
+}  // namespace
 
 std::string_view TaskStateName(TaskState state) {
   switch (state) {
@@ -560,15 +566,12 @@ std::vector<RobotCommand> TaskExecutor::GoForCandidate(double now) {
   const SceneObject* object = graph_.FindObject(id);
   // Only a single detection is doubted: objects the map holds without detections (a loaded or
   // operator-placed map) and those seen twice are driven to at once.
-  if (config_.glance_s <= 0.0 || object == nullptr || object->detection_count != 1)
+  if (config_.glance_s <= 0.0 || object == nullptr || object->detection_count != kSeenOnce)
     return EnterSubgoal(now);
   std::vector<RobotCommand> out =
       MoveTo(now, pose_.position, YawTo(progress_.target->position), 0.0, Phase::kVerifying,
              absl::StrCat("object ", id, " seen once: looking at it again before driving to it"));
-  if (phase_ == Phase::kVerifying) {
-    glancing_ = true;
-    glance_detections_ = object->detection_count;
-  }
+  if (phase_ == Phase::kVerifying) glancing_ = true;
   return out;
 }
 
@@ -576,7 +579,7 @@ std::vector<RobotCommand> TaskExecutor::PassBy(double now) {
   glancing_ = false;
   const int64_t id = progress_.target->object_id;
   const SceneObject* object = graph_.FindObject(id);
-  passed_by_[id] = object != nullptr ? object->detection_count : glance_detections_;
+  passed_by_[id] = object != nullptr ? object->detection_count : kSeenOnce;
   return ReleaseTarget(
       now, absl::StrCat("passed by: not detected again in a ", config_.glance_s, " s glance"));
 }
@@ -1078,7 +1081,7 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
     if (object == nullptr) return {};
     progress_.target->position = object->position;
     if (glancing_) {
-      if (object->detection_count <= glance_detections_) return {};
+      if (object->detection_count <= kSeenOnce) return {};
       glancing_ = false;  // seen again: drive to it
       return EnterSubgoal(now);
     }

@@ -347,7 +347,6 @@ class TaskExecutor {
   // Glance (glance_s): VERIFY's turn and hold, held to a single-detection candidate before any
   // approach. Candidates passed by, with their detection count then: skipped until it grows.
   bool glancing_ = false;
-  int glance_detections_ = 0;
   std::map<int64_t, int> passed_by_;
   // Blocked recovery.
   Eigen::Vector3d active_goal_ = Eigen::Vector3d::Zero();  // goal of the last navigate command
