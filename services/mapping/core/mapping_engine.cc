@@ -108,7 +108,7 @@ ValidationContext MappingEngine::ContextFor(const std::string& robot_id) const {
 absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   ValidationContext context;
   {
-    absl::MutexLock lock(&mu_);
+    absl::ReaderMutexLock lock(&mu_);
     context = ContextFor(frame.robot_id);
   }
   if (absl::Status status = ValidateFrame(frame, context); !status.ok()) return status;
@@ -215,13 +215,13 @@ void MappingEngine::RecordGridChange(const GridWindow& changed) {
 }
 
 uint64_t MappingEngine::revision() const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   return revision_;
 }
 
 GridLayers MappingEngine::Grid(const std::optional<GridWindow>& window, uint64_t* revision,
                                bool with_semantic) const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   GridLayers layers =
       RenderLayers(state_->grid, window.value_or(FullWindow(state_->grid)), config_.layers);
   if (with_semantic) state_->semantic.Render(layers);
@@ -230,7 +230,7 @@ GridLayers MappingEngine::Grid(const std::optional<GridWindow>& window, uint64_t
 }
 
 std::optional<GridWindow> MappingEngine::GridChangesSince(uint64_t since) const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   if (since < state_->grid_forgotten_before) return std::nullopt;
   GridWindow changed;
   for (const auto& [revision, window] : state_->grid_changes) {
@@ -240,7 +240,7 @@ std::optional<GridWindow> MappingEngine::GridChangesSince(uint64_t since) const 
 }
 
 GridWindow MappingEngine::WindowOf(double min_x, double min_y, double max_x, double max_y) const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   const CellIndex lo = state_->grid.CellOf(min_x, min_y);
   const CellIndex hi = state_->grid.CellOf(max_x, max_y);
   return {lo, hi.x - lo.x + 1, hi.y - lo.y + 1};
@@ -248,7 +248,7 @@ GridWindow MappingEngine::WindowOf(double min_x, double min_y, double max_x, dou
 
 std::string MappingEngine::OccupancyBinary(const Eigen::Vector3d& min,
                                            const Eigen::Vector3d& max) const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   const octomap::OcTree& tree = *state_->tree;
   octomap::OcTree box(tree.getResolution());
   octomap::OcTreeKey lo;
@@ -283,13 +283,13 @@ std::string MappingEngine::OccupancyBinary(const Eigen::Vector3d& min,
 }
 
 SceneSnapshot MappingEngine::Scene() const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   const SceneGraph& g = state_->scene;
   return {g.revision(), g.objects(), g.relations(), g.regions(), g.Summary()};
 }
 
 std::optional<SceneDelta> MappingEngine::SceneChangesSince(uint64_t since) const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   return state_->scene.ChangesSince(since);
 }
 
@@ -354,7 +354,7 @@ absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQ
       for (const std::string& n : names) wanted.insert(Lower(n));
     }
   }
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);
   if (!query.embedding.empty() && state_->embedding_dim != 0 &&
       static_cast<int>(query.embedding.size()) != state_->embedding_dim) {
     return InvalidField("embedding",
@@ -403,7 +403,7 @@ std::string MappingEngine::Serialize() const {
   SavedGrid grid;
   grid.resolution_m = config_.grid.resolution_m;
   {
-    absl::MutexLock lock(&mu_);
+    absl::ReaderMutexLock lock(&mu_);
     const State& s = *state_;
     tree.emplace(*s.tree);
     objects = s.scene.objects();

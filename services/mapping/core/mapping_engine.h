@@ -92,14 +92,17 @@ class MappingEngine {
  private:
   struct State;
   void RecordGridChange(const GridWindow& changed) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  ValidationContext ContextFor(const std::string& robot_id) const
-      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  ValidationContext ContextFor(const std::string& robot_id) const ABSL_SHARED_LOCKS_REQUIRED(mu_);
 
   MappingConfig config_;
   OctomapIntegrator integrator_;
   // An empty tree of the map's resolution (a restored map must have the same): converts
   // coordinates to keys for ray casting outside the lock.
   const octomap::OcTree key_space_;
+  // Frames, Restore and Reset change the map and hold mu_ alone; every reader (grid fetches,
+  // scene reads, queries, the live snapshot's copy) holds it shared. One lock for all made each
+  // planning request's grid fetch queue behind the snapshot's 40-90 ms copy and behind other
+  // fetches (50-robot fleet: fetch p50 30 ms, max 129 ms).
   mutable absl::Mutex mu_;
   std::unique_ptr<State> state_ ABSL_GUARDED_BY(mu_);
   uint64_t revision_ ABSL_GUARDED_BY(mu_) = 0;

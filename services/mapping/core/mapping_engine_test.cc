@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <opencv2/imgcodecs.hpp>
+#include <thread>
 
 #include "services/mapping/testing/synthetic_room.h"
 
@@ -288,6 +290,55 @@ TEST(MappingEngineTest, EstimatesFootAndCeilingFromTheMapAtStartUp) {
   EXPECT_EQ(CellValue(engine, 6.02, 2.0),
             HierarchicalGrid::kStructure);               // behind the far wall's face
   EXPECT_FALSE(engine.GridChangesSince(1).has_value());  // watchers must resync
+}
+
+// Readers share the engine's lock (grid fetches, scene reads, snapshots) while frames change the
+// map: every reader sees revisions in order, and reading changes nothing: the map afterwards is
+// the map of the same frames fed with no reader at all.
+TEST(MappingEngineTest, ReadersRunBesideFramesAndChangeNothing) {
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  auto frame = [&](int i) {
+    const CameraPose pose = testing::LookAt({0.5, 1.5 + 0.1 * (i % 10), 1.2}, {4.0, 2.0, 0.0});
+    SensorFrame f = testing::RenderFrame(room, pose, (i + 1) * kFrameNs);
+    Detection table;
+    table.label = "table";
+    table.score = 0.9;
+    table.box = BoxAround({3.2, 1.3, 0.7}, pose, 40);
+    f.detections.push_back(table);
+    return f;
+  };
+  constexpr int kFrames = 12;
+  MappingEngine alone{MappingConfig{}};
+  for (int i = 0; i < kFrames; ++i) ASSERT_TRUE(alone.AddFrame(frame(i)).ok());
+
+  MappingEngine shared{MappingConfig{}};
+  std::atomic<bool> writing{true};
+  std::vector<std::thread> readers;
+  std::atomic<int> out_of_order{0};
+  for (int r = 0; r < 3; ++r) {
+    readers.emplace_back([&, r] {
+      uint64_t last = 0;
+      while (writing) {
+        uint64_t revision = 0;
+        (void)shared.Grid(std::nullopt, &revision, /*with_semantic=*/r == 0);
+        if (revision < last) ++out_of_order;
+        last = revision;
+        if (r == 1) (void)shared.Serialize();
+        if (r == 2) (void)shared.Scene();
+      }
+    });
+  }
+  for (int i = 0; i < kFrames; ++i) ASSERT_TRUE(shared.AddFrame(frame(i)).ok());
+  writing = false;
+  for (std::thread& reader : readers) reader.join();
+
+  EXPECT_EQ(out_of_order, 0);
+  EXPECT_EQ(shared.revision(), alone.revision());
+  EXPECT_EQ(shared.Serialize(), alone.Serialize());
+  const GridLayers a = alone.Grid(std::nullopt, nullptr, true);
+  const GridLayers b = shared.Grid(std::nullopt, nullptr, true);
+  EXPECT_EQ(a.hierarchical, b.hierarchical);
+  EXPECT_EQ(a.semantic, b.semantic);
 }
 
 TEST(MappingEngineTest, RestoreRoundTripsAndRejectsGarbageUntouched) {

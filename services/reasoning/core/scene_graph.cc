@@ -9,4 +9,10 @@ const SceneObject* SceneGraph::FindObject(int64_t id) const {
   return nullptr;
 }
 
+std::shared_ptr<const SceneGraph> EmptySceneGraph() {
+  static const auto* const empty =
+      new std::shared_ptr<const SceneGraph>(std::make_shared<const SceneGraph>());
+  return *empty;
+}
+
 }  // namespace semnav::reasoning

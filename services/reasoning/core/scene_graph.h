@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,5 +49,8 @@ struct SceneGraph {
 
   const SceneObject* FindObject(int64_t id) const;
 };
+
+// One empty graph shared by everyone who has none yet.
+std::shared_ptr<const SceneGraph> EmptySceneGraph();
 
 }  // namespace semnav::reasoning

@@ -185,7 +185,7 @@ void TaskExecutor::ReleaseSearchState() {
   // The gateway keeps every task it ran for GetTask; an ended one needs only its progress. Its
   // copy of the scene graph (embeddings included) and search lists grew the gateway's memory by
   // each finished task (fleet bench, 50 robots: +11 MiB in 150 s).
-  graph_ = SceneGraph{};
+  graph_ = EmptySceneGraph();
   text_embedding_ = {};
   spent_explore_goals_ = {};
   trail_ = {};
@@ -326,29 +326,29 @@ bool TaskExecutor::TryResolve() {
   progress_.target.reset();
   const std::set<int64_t> skip = SkippedObjects();
   const FastResolution resolution =
-      resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
+      resolver_->Resolve(ActiveTarget(), *graph_, text_embedding_, skip);
   if (!resolution.accepted) return false;
-  const SceneObject* object = graph_.FindObject(resolution.best->object_id);
+  const SceneObject* object = graph_->FindObject(resolution.best->object_id);
   progress_.target =
       LocatedTarget{object->id, object->position, resolution.best->fused, ResolutionPath::kFast, 0};
   return true;
 }
 
 void TaskExecutor::MaybeRequestModel() {
-  if (!config_.model_available || awaiting_model_ || graph_.objects.empty() ||
-      (progress_.model_requests > 0 && graph_.revision == requested_revision_)) {
+  if (!config_.model_available || awaiting_model_ || graph_->objects.empty() ||
+      (progress_.model_requests > 0 && graph_->revision == requested_revision_)) {
     return;
   }
   GroundingConfig grounding;
   grounding.max_objects = config_.grounding_max_objects;
   GroundedGraph grounded =
-      SelectiveGrounding(ActiveTarget(), graph_, resolver_->matcher(), grounding);
+      SelectiveGrounding(ActiveTarget(), *graph_, resolver_->matcher(), grounding);
   // No candidate could be named: the proxy refuses an empty list, and asking again on every new
   // revision made a call (and a warning) every 200 ms while the robot explored.
   if (grounded.open_vocabulary) {
     // Classes, not instances: another instance of a class stands in for one set aside.
     // Classes the model already said are not the target are not shown again.
-    SceneGraph offered = graph_;
+    SceneGraph offered = *graph_;
     const std::set<int64_t> skip = SkippedObjects();
     std::erase_if(offered.objects, [&](const SceneObject& object) {
       return skip.count(object.id) > 0 ||
@@ -374,7 +374,7 @@ void TaskExecutor::MaybeRequestModel() {
     open_vocabulary_pending_.clear();
   }
   ModelRequest request;
-  request.graph_revision = requested_revision_ = graph_.revision;
+  request.graph_revision = requested_revision_ = graph_->revision;
   request.request = BuildResolveRequest(instruction_, ActiveTarget(), grounded.graph);
   request.grounded = std::move(grounded.graph);
   pending_request_ = std::move(request);
@@ -509,8 +509,8 @@ bool TaskExecutor::InEndgame(double now) const {
 std::optional<ScoredObject> TaskExecutor::BestCandidate() const {
   const std::set<int64_t> skip = SkippedObjects();
   const FastResolution resolution =
-      resolver_->Resolve(ActiveTarget(), graph_, text_embedding_, skip);
-  if (!resolution.best.has_value() || graph_.FindObject(resolution.best->object_id) == nullptr)
+      resolver_->Resolve(ActiveTarget(), *graph_, text_embedding_, skip);
+  if (!resolution.best.has_value() || graph_->FindObject(resolution.best->object_id) == nullptr)
     return std::nullopt;
   return resolution.best;
 }
@@ -521,7 +521,7 @@ bool TaskExecutor::TakeBestCandidate() {
   if (!best.has_value()) return false;
   endgame_taken_ = true;
   // The fast path found it (below its threshold): reported as a fast-path resolution.
-  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position,
+  progress_.target = LocatedTarget{best->object_id, graph_->FindObject(best->object_id)->position,
                                    best->fused, ResolutionPath::kFast, 0};
   return true;
 }
@@ -529,7 +529,7 @@ bool TaskExecutor::TakeBestCandidate() {
 bool TaskExecutor::RuledOut(int64_t id) const {
   const auto it = ruled_out_at_.find(id);
   if (it == ruled_out_at_.end()) return false;
-  const SceneObject* object = graph_.FindObject(id);
+  const SceneObject* object = graph_->FindObject(id);
   return object != nullptr &&
          (object->position - it->second).head<2>().norm() <= config_.success_radius_m;
 }
@@ -541,7 +541,7 @@ std::set<int64_t> TaskExecutor::SkippedObjects() const {
     if (RuledOut(id)) skip.insert(id);
   }
   for (const auto& [id, detections] : passed_by_) {
-    const SceneObject* object = graph_.FindObject(id);
+    const SceneObject* object = graph_->FindObject(id);
     if (object != nullptr && object->detection_count <= detections) skip.insert(id);
   }
   return skip;
@@ -556,14 +556,14 @@ bool TaskExecutor::TakeLabelledCandidate() {
   if (config_.model_available || progress_.target.has_value()) return false;
   const std::optional<ScoredObject> best = BestCandidate();
   if (!best.has_value() || best->label < config_.approach_label_match) return false;
-  progress_.target = LocatedTarget{best->object_id, graph_.FindObject(best->object_id)->position,
+  progress_.target = LocatedTarget{best->object_id, graph_->FindObject(best->object_id)->position,
                                    best->fused, ResolutionPath::kFast, 0};
   return true;
 }
 
 std::vector<RobotCommand> TaskExecutor::GoForCandidate(double now) {
   const int64_t id = progress_.target->object_id;
-  const SceneObject* object = graph_.FindObject(id);
+  const SceneObject* object = graph_->FindObject(id);
   // Only a single detection is doubted: objects the map holds without detections (a loaded or
   // operator-placed map) and those seen twice are driven to at once.
   if (config_.glance_s <= 0.0 || object == nullptr || object->detection_count != kSeenOnce)
@@ -578,7 +578,7 @@ std::vector<RobotCommand> TaskExecutor::GoForCandidate(double now) {
 std::vector<RobotCommand> TaskExecutor::PassBy(double now) {
   glancing_ = false;
   const int64_t id = progress_.target->object_id;
-  const SceneObject* object = graph_.FindObject(id);
+  const SceneObject* object = graph_->FindObject(id);
   passed_by_[id] = object != nullptr ? object->detection_count : kSeenOnce;
   return ReleaseTarget(
       now, absl::StrCat("passed by: not detected again in a ", config_.glance_s, " s glance"));
@@ -623,14 +623,14 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
   switch (goal.type) {
     case SubgoalType::kNavigate: {
       if (goal.target.is_room) {
-        for (const SceneRegion& region : graph_.regions) {
+        for (const SceneRegion& region : graph_->regions) {
           if (!resolver_->matcher().SameName(region.name, goal.target.name) ||
               region.object_ids.empty())
             continue;
           Eigen::Vector3d centre = Eigen::Vector3d::Zero();
           int count = 0;
           for (int64_t id : region.object_ids) {
-            if (const SceneObject* object = graph_.FindObject(id)) {
+            if (const SceneObject* object = graph_->FindObject(id)) {
               centre += object->position;
               ++count;
             }
@@ -673,7 +673,7 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
     }
     case SubgoalType::kVerify: {
       if (!TryResolve()) return Search(now);
-      const SceneObject* object = graph_.FindObject(progress_.target->object_id);
+      const SceneObject* object = graph_->FindObject(progress_.target->object_id);
       progress_.target->detections_at_verify = object != nullptr ? object->detection_count : 0;
       return MoveTo(now, pose_.position, YawTo(progress_.target->position), 0.0, Phase::kVerifying,
                     "turning to face the target to verify it");
@@ -713,7 +713,7 @@ std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
 
 double TaskExecutor::DistanceToTarget(const Eigen::Vector3d& point) const {
   Eigen::Vector2d half = Eigen::Vector2d::Zero();
-  if (const SceneObject* object = graph_.FindObject(progress_.target->object_id)) {
+  if (const SceneObject* object = graph_->FindObject(progress_.target->object_id)) {
     if (object->size.allFinite()) {
       half = (0.5 * object->size.head<2>()).cwiseMax(0.0).cwiseMin(config_.reach_extent_cap_m);
     }
@@ -790,7 +790,7 @@ std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now,
 std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
   if (glancing_) return PassBy(now);
   const int64_t id = progress_.target->object_id;
-  const SceneObject* object = graph_.FindObject(id);
+  const SceneObject* object = graph_->FindObject(id);
   const double distance = DistanceToTarget(pose_.position);
   // Accepted only when seen from within reach at least once: a misplaced or phantom object
   // (office_03: a "tv" mapped on the wrong side of a cabinet) never is.
@@ -1050,19 +1050,24 @@ std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose
 }
 
 std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGraph& graph) {
+  return OnSceneGraph(now, std::make_shared<const SceneGraph>(graph));
+}
+
+std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now,
+                                                     std::shared_ptr<const SceneGraph> graph) {
   // New detections of the located target: counted while the robot stands within reach of it.
   int fresh = 0;
   if (progress_.target.has_value()) {
-    const SceneObject* before = graph_.FindObject(progress_.target->object_id);
-    const SceneObject* after = graph.FindObject(progress_.target->object_id);
+    const SceneObject* before = graph_->FindObject(progress_.target->object_id);
+    const SceneObject* after = graph->FindObject(progress_.target->object_id);
     if (before != nullptr && after != nullptr)
       fresh = std::max(0, after->detection_count - before->detection_count);
   }
   if (Ended(progress_.state)) return {};  // nothing to decide: no copy kept
-  graph_ = graph;
+  graph_ = std::move(graph);
   if (progress_.state != TaskState::kRunning) return {};
   if (progress_.target.has_value()) {
-    if (const SceneObject* object = graph_.FindObject(progress_.target->object_id)) {
+    if (const SceneObject* object = graph_->FindObject(progress_.target->object_id)) {
       progress_.target->position = object->position;  // the map refines its estimate
       // Mapping's label is a vote over the object's detections: a first detection under another
       // object's label (a detector confusion) is outvoted by the next ones. The new detections
@@ -1077,7 +1082,7 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now, const SceneGrap
   if (std::optional<std::vector<RobotCommand>> reached = SuccessInView(now, fresh))
     return *std::move(reached);
   if (phase_ == Phase::kVerifying && progress_.target.has_value()) {
-    const SceneObject* object = graph_.FindObject(progress_.target->object_id);
+    const SceneObject* object = graph_->FindObject(progress_.target->object_id);
     if (object == nullptr) return {};
     progress_.target->position = object->position;
     if (glancing_) {
@@ -1120,7 +1125,7 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
                                     ", set aside until the next vantage point");
     return {};
   }
-  const SceneObject* object = graph_.FindObject(decision.object_id);
+  const SceneObject* object = graph_->FindObject(decision.object_id);
   if (object == nullptr) {
     progress_.reason =
         absl::StrCat("model answer for revision ", graph_revision, " names a vanished object");

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -174,6 +175,8 @@ class TaskExecutor {
   std::vector<RobotCommand> OnPose(double now, const RobotPose& pose);
   std::vector<RobotCommand> OnFeedback(double now, uint64_t command_id, RobotFeedback feedback);
   std::vector<RobotCommand> OnSceneGraph(double now, const SceneGraph& graph);
+  // The same graph shared, not copied: the gateway hands one graph to every robot's task.
+  std::vector<RobotCommand> OnSceneGraph(double now, std::shared_ptr<const SceneGraph> graph);
   std::vector<RobotCommand> OnSlowDecision(double now, uint64_t graph_revision,
                                            const SlowDecision& decision);
   std::vector<RobotCommand> OnVisionVerdict(double now, bool confirmed);
@@ -207,7 +210,7 @@ class TaskExecutor {
   std::optional<ModelRequest> TakeModelRequest();
   const TaskProgress& progress() const { return progress_; }
   // The scene graph the executor decides on; empty once the task ended (not kept for GetTask).
-  const SceneGraph& scene_graph() const { return graph_; }
+  const SceneGraph& scene_graph() const { return *graph_; }
   const std::vector<Subgoal>& subgoals() const { return subgoals_; }
   bool finished() const;
   // PAUSED because the planner's dependency is gone (not by the operator or the session).
@@ -319,7 +322,7 @@ class TaskExecutor {
   TaskProgress progress_;
   Phase phase_ = Phase::kIdle;
   RobotPose pose_;
-  SceneGraph graph_;
+  std::shared_ptr<const SceneGraph> graph_ = EmptySceneGraph();
   std::set<int64_t> excluded_;
   std::vector<float> text_embedding_;
   // Targets the robot failed to reach; retried once it reached another exploration goal.

@@ -308,7 +308,7 @@ class GatewayHub {
       ABSL_GUARDED_BY(mu_);
   TelemetrySubscriptions<StreamSink<api::StreamSlowTelemetryResponse>*> slow_watchers_
       ABSL_GUARDED_BY(mu_);
-  SceneGraph scene_graph_ ABSL_GUARDED_BY(mu_);
+  std::shared_ptr<const SceneGraph> scene_graph_ ABSL_GUARDED_BY(mu_) = EmptySceneGraph();
   uint64_t fast_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t slow_resolutions_ ABSL_GUARDED_BY(mu_) = 0;
   uint64_t model_calls_ ABSL_GUARDED_BY(mu_) = 0;

@@ -250,7 +250,7 @@ void GatewayHub::ResolveSlow(const api::ResolveTargetRequest& request,
   GroundingConfig grounding;
   grounding.max_objects = config_.executor.grounding_max_objects;
   auto grounded = std::make_shared<const SceneGraph>(
-      SelectiveGrounding(target, scene_graph_, matcher_, grounding).graph);
+      SelectiveGrounding(target, *scene_graph_, matcher_, grounding).graph);
   fast.set_grounded_objects(static_cast<int>(grounded->objects.size()));
   if (grounded->objects.empty()) {
     fast.set_explanation("slow path not run: the scene graph has nothing to ground the target on");
@@ -296,7 +296,7 @@ ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {
   const TargetSpec* target = PrimaryTarget(task->executor->subgoals());
   const Robot& robot = RobotRecord(task->robot_id);
   ExplorationContext context =
-      BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, scene_graph_, matcher_,
+      BuildExplorationContext(target != nullptr ? *target : TargetSpec{}, *scene_graph_, matcher_,
                               backends_.prior, robot.memory.get());
   if (const EroiSearch* search = task->eroi.get(); search != nullptr) {
     context.eroi_values = search->PlanarValues();

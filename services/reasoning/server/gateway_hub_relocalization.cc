@@ -106,7 +106,7 @@ bool GatewayHub::TrackLocalization(const std::string& robot_id, Robot& robot,
       task != nullptr && task->started && task->executor->progress().state == TaskState::kRunning;
   const bool was_relocalizing = robot.localization->relocalizing();
   std::vector<RelocalizationAction> actions = robot.localization->OnState(
-      NowFor(robot_id), odom_pose, ReportOf(state.localization()), scene_graph_, task_running);
+      NowFor(robot_id), odom_pose, ReportOf(state.localization()), *scene_graph_, task_running);
   robot.pose = robot.localization->map_from_odom().Apply(odom_pose);
   RunLocalizationActions(robot_id, robot, std::move(actions));
   robot.pose =
@@ -166,7 +166,7 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
         }
         std::string observed;  // for the log: what the turn saw, in the robot's odometry frame
         for (const ObservedObject& o : action.observed) {
-          const SceneObject* seen = scene_graph_.FindObject(o.object_id);
+          const SceneObject* seen = scene_graph_->FindObject(o.object_id);
           absl::StrAppend(&observed, o.object_id, seen != nullptr ? ":" + seen->label : "", "@(",
                           absl::StrFormat("%.2f,%.2f", o.position.x(), o.position.y()), ") s",
                           absl::StrFormat("%.2f", o.scale_m), " n", o.observations, "; ");
@@ -244,7 +244,7 @@ absl::StatusOr<api::RelocalizeRobotResponse> GatewayHub::RelocalizeRobot(
   const bool was_relocalizing = robot.localization->relocalizing();
   RunLocalizationActions(
       request.robot_id(), robot,
-      robot.localization->OnRequest(NowFor(request.robot_id()), request.reason(), scene_graph_));
+      robot.localization->OnRequest(NowFor(request.robot_id()), request.reason(), *scene_graph_));
   if (was_relocalizing != robot.localization->relocalizing()) SendLocalizationUpdate(robot);
   api::RelocalizeRobotResponse response;
   *response.mutable_localization() = LocalizationOf(robot);

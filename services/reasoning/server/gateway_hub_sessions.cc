@@ -170,7 +170,7 @@ absl::Status GatewayHub::OnSimulatedStep(StreamSink<api::ConnectResponse>* sink,
   if (robot == nullptr) return absl::OkStatus();
   // The graph a task knows changes only here, so every step sees the graph of its own frame.
   Task* task = SettledActiveTask(*robot);
-  if (task != nullptr && task->graph_revision != scene_graph_.revision) {
+  if (task != nullptr && task->graph_revision != scene_graph_->revision) {
     std::vector<RobotCommand> commands = GiveSceneGraph(*task, *now);
     if (task->started) Apply(*task, commands);
   }
@@ -228,7 +228,7 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
   const bool pose_trusted =
       TrackLocalization(robot_id, robot, state, pose);  // sets robot.pose (map frame)
   std::vector<std::string> nearby;
-  for (const SceneObject& object : scene_graph_.objects) {
+  for (const SceneObject& object : scene_graph_->objects) {
     if ((object.position - robot.pose.position).head<2>().norm() <= config_.memory_label_radius_m) {
       nearby.push_back(object.label);
     }
@@ -253,7 +253,7 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
     Apply(*task, task->executor->Resume(NowFor(robot_id)));
   } else if (task != nullptr && task->started) {
     // A graph that came while the task was inside a planning call (OnSceneGraph skipped it).
-    if (!robot.simulated_clock && task->graph_revision != scene_graph_.revision) {
+    if (!robot.simulated_clock && task->graph_revision != scene_graph_->revision) {
       Apply(*task, GiveSceneGraph(*task, NowFor(robot_id)));
     }
     Apply(*task, task->executor->OnPose(NowFor(robot_id), robot.pose));

@@ -102,7 +102,7 @@ api::StreamSlowTelemetryResponse GatewayHub::SlowSample(const std::string& robot
   out.set_fast_path_resolutions(fast_resolutions_);
   out.set_slow_path_resolutions(slow_resolutions_);
   out.set_model_calls(model_calls_);
-  out.set_scene_graph_revision(scene_graph_.revision);
+  out.set_scene_graph_revision(scene_graph_->revision);
   out.set_topological_nodes(robot.memory ? static_cast<uint32_t>(robot.memory->nodes().size()) : 0);
   *out.mutable_stamp() = ToTimestamp(absl::Now());
   if (found != robots_.end()) *out.mutable_localization() = LocalizationOf(robot);

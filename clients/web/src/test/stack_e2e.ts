@@ -172,6 +172,9 @@ async function run(args: Args): Promise<void> {
   const exited = new Promise<number | null>((resolve) => up.child.on("exit", (code) => resolve(code)));
   up.child.kill("SIGTERM");
   const code = await exited;
+  // The launcher names the service that did not stop cleanly; without its words a red run
+  // cannot be read (seen once beside the fuzz tests).
+  if (code !== 0) console.error(`semnav up said after SIGTERM:\n${output.join("").slice(-6000)}`);
   check(code === 0, `SIGTERM stops the stack cleanly (exit ${code})`);
   fs.rmSync(work, { recursive: true, force: true });
   console.log(`passed in ${((Date.now() - started) / 1000).toFixed(1)} s`);
