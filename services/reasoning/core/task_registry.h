@@ -95,7 +95,8 @@ class TaskRegistry {
       : keep_finished_(keep_finished) {}
 
   // A new task "task-<n>", n counting up over every task so far (restored ones included).
-  // Before it is made, the oldest finished tasks beyond `keep_finished` are forgotten, so no
+  // Before it is made, the finished tasks that ended longest ago beyond `keep_finished` are
+  // forgotten, so no
   // reference to another record may be held across this call.
   TaskRecord& Create();
   // A journaled task under its own id; new ids continue after `next_number`.
@@ -112,8 +113,9 @@ class TaskRegistry {
   const std::map<std::string, TaskRecord>& all() const { return tasks_; }
 
  private:
-  // Forgets the oldest finished tasks (submission order) beyond `keep_finished_`; a task inside
-  // a remote call or waiting for a vision answer stays.
+  // Forgets the finished tasks that ended longest ago (last update; submission order among
+  // equals) beyond `keep_finished_`; a task inside a remote call or waiting for a vision answer
+  // stays.
   void ForgetOldFinished();
 
   std::size_t keep_finished_;

@@ -108,6 +108,27 @@ TEST_F(TaskRegistryTest, CreateForgetsTheOldestFinishedTasksBeyondTheKeptCount) 
   EXPECT_EQ(AddTo(registry, "r1").task_id, "task-8");  // ids never go back
 }
 
+// Regression (50-robot fleet, 300 s): task-213 ran while 300 later tasks came and went; by
+// submission order it was forgotten as it ended, and its operator's GetTask found nothing.
+TEST_F(TaskRegistryTest, ALongTaskThatEndsLastIsKeptAndTheLongestEndedGoes) {
+  TaskRegistry registry(2);
+  const absl::Time t0 = absl::FromUnixSeconds(1000);
+  AddTo(registry, "long");       // task-1: still running
+  for (int i = 0; i < 3; ++i) {  // task-2 .. task-4 end at t0 + 1, 2, 3 s
+    TaskRecord& task = AddTo(registry, "r1");
+    task.executor->Cancel("done");
+    task.updated = t0 + absl::Seconds(1 + i);
+  }
+  TaskRecord& long_task = *registry.Find("task-1");
+  long_task.executor->Cancel("done");
+  long_task.updated = t0 + absl::Seconds(10);  // the last to end
+  AddTo(registry, "r1");                       // task-5: keep 2 of the 4 finished
+  EXPECT_NE(registry.Find("task-1"), nullptr);
+  EXPECT_EQ(registry.Find("task-2"), nullptr);
+  EXPECT_EQ(registry.Find("task-3"), nullptr);
+  EXPECT_NE(registry.Find("task-4"), nullptr);
+}
+
 TEST_F(TaskRegistryTest, KeepingNoFinishedTaskForgetsEachOneAtTheNextSubmission) {
   TaskRegistry registry(0);
   AddTo(registry, "r1").executor->Cancel("done");
