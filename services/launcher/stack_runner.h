@@ -61,6 +61,9 @@ class StackRunner {
 
   absl::Status Launch(Child& child);
   absl::Status WaitHealthy(Child& child, absl::Time deadline);
+  // SIGTERM to the gRPC services (`services`) or to the other children, then waits for them
+  // until `deadline` (SIGKILL after it); an error names the first that did not stop cleanly.
+  absl::Status StopChildren(bool services, absl::Time deadline);
   void ReapExited();
   void RestartDue();
   void PublishState();

@@ -94,7 +94,8 @@ struct RunningStack {
   std::string printed;
 };
 
-RunningStack StartUp(const std::string& stack, const char* path_env = nullptr) {
+RunningStack StartUp(const std::string& stack, const char* path_env = nullptr,
+                     bool sim_robot = false) {
   RunningStack running;
   int out[2];
   if (::pipe(out) != 0) return running;
@@ -103,6 +104,9 @@ RunningStack StartUp(const std::string& stack, const char* path_env = nullptr) {
     ::dup2(out[1], STDOUT_FILENO);
     const std::string path = BinaryPath("semnav");
     if (path_env != nullptr) ::setenv("PATH", path_env, 1);
+    if (sim_robot) {
+      ::execl(path.c_str(), path.c_str(), "up", "--sim-robot", "--config", stack.c_str(), nullptr);
+    }
     ::execl(path.c_str(), path.c_str(), "up", "--config", stack.c_str(), nullptr);
     ::_exit(127);
   }
@@ -173,6 +177,31 @@ TEST(LauncherTest, KilledServiceIsRestartedAndTheOthersKeepRunning) {
   }
   const int code = StopUp(running);
   EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
+}
+
+// Regression (web_stack_e2e, once in a few runs): SIGTERM reached the robot and the gateway
+// together; the robot saw its session closed first, exited 1, and `semnav up` reported an
+// unclean stop. Clients now stop before the services: while the robot is frozen (SIGSTOP), the
+// gateway is not signalled; once it runs again, everything stops cleanly.
+TEST(LauncherTest, TheSimRobotStopsBeforeTheServicesItTalksTo) {
+  const std::string stack = WriteStack();
+  RunningStack running = StartUp(stack, nullptr, /*sim_robot=*/true);
+  ASSERT_THAT(running.printed, HasSubstr("semnav stack is up"));
+  const StackState state = LiveState(stack);
+  ASSERT_TRUE(state.children.contains("sim-robot"));
+  const pid_t robot = state.children.at("sim-robot").pid;
+  const pid_t gateway = state.children.at("gateway").pid;
+  ASSERT_TRUE(Alive(robot));
+  ::kill(robot, SIGSTOP);
+  ::kill(running.pid, SIGTERM);
+  absl::SleepFor(absl::Seconds(1.5));
+  EXPECT_TRUE(Alive(gateway)) << "the gateway was stopped while its robot still ran";
+  ::kill(robot, SIGCONT);
+  int code = 0;
+  ::waitpid(running.pid, &code, 0);
+  ::close(running.output_fd);
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0) << code;
+  EXPECT_FALSE(Alive(gateway));
 }
 
 TEST(LauncherTest, SecondStackOnTheSamePortsRefusesToStart) {
