@@ -51,7 +51,8 @@ FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery
     set.frontiers = WithoutExcludedCells(std::move(set.frontiers), grid, query.excluded,
                                          query.min_frontier_cells);
   }
-  const std::vector<double> distance = OctileDistanceField(grid.free, query.robot);
+  set.path_cells = OctileDistanceField(grid.free, query.robot);
+  const std::vector<double>& distance = set.path_cells;
   for (const Frontier& f : set.frontiers) {
     double nearest = kUnreachable;
     Cell nearest_cell = f.anchor;
@@ -153,7 +154,7 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
   }
   const FrontierSet set = CollectFrontiers(grid, query, config.score);
   const std::optional<NearestFrontier> nearest =
-      SelectNearestFrontier(set.frontiers, grid.free, query.robot);
+      SelectNearestFrontier(set.frontiers, grid.free, set.path_cells);
   if (!nearest) return NotFound("no reachable frontier");
   return ExplorationChoice{nearest->cell, nearest->distance_cells * grid.resolution_m, {}};
 }

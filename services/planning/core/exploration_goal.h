@@ -62,7 +62,8 @@ struct FrontierSet {
   std::vector<Frontier> frontiers;
   std::vector<FrontierCandidate> candidates;  // metres, path distances (-1 unreachable)
   std::vector<Cell> nearest_cells;            // each frontier's cell nearest by path
-  std::vector<FrontierScore> scores;          // seed 002
+  std::vector<double> path_cells;     // octile path distance from the robot to every cell (cells)
+  std::vector<FrontierScore> scores;  // seed 002
 };
 
 FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery& query,

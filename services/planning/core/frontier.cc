@@ -67,8 +67,8 @@ std::vector<Frontier> ExtractFrontiers(const CellGrid<uint8_t>& explored,
 }
 
 std::optional<NearestFrontier> SelectNearestFrontier(const std::vector<Frontier>& frontiers,
-                                                     const PassabilityGrid& free, Cell robot) {
-  const std::vector<double> distance = OctileDistanceField(free, robot);
+                                                     const PassabilityGrid& free,
+                                                     const std::vector<double>& distance) {
   std::optional<NearestFrontier> best;
   for (size_t f = 0; f < frontiers.size(); ++f) {
     for (const Cell& c : frontiers[f].cells) {

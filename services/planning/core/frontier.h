@@ -24,14 +24,16 @@ std::vector<Frontier> ExtractFrontiers(const CellGrid<uint8_t>& explored,
                                        const PassabilityGrid& free, int min_cells);
 
 // NEAREST_FRONTIER (FrontierExp, seed 004 baseline): the frontier cell with
-// the shortest octile path from `robot` over free cells; nullopt when no
-// frontier cell is reachable.
+// the shortest octile path from the robot over free cells; nullopt when no
+// frontier cell is reachable. `path_cells` is OctileDistanceField(free, robot),
+// which the caller has already built to score the frontiers.
 struct NearestFrontier {
   int frontier = 0;  // index into the frontier list
   Cell cell;
   double distance_cells = 0.0;
 };
 std::optional<NearestFrontier> SelectNearestFrontier(const std::vector<Frontier>& frontiers,
-                                                     const PassabilityGrid& free, Cell robot);
+                                                     const PassabilityGrid& free,
+                                                     const std::vector<double>& path_cells);
 
 }  // namespace semnav::planning

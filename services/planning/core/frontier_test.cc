@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "services/planning/core/coverage_goal.h"
+#include "services/planning/core/distance_field.h"
 #include "services/planning/core/test_grids.h"
 
 namespace semnav::planning {
@@ -63,7 +64,8 @@ TEST(Frontier, NearestIsByPathNotStraightLine) {
       "??......",
   });
   const std::vector<Frontier> frontiers = ExtractFrontiers(d.explored, d.free, 1);
-  std::optional<NearestFrontier> nearest = SelectNearestFrontier(frontiers, d.free, {3, 0});
+  std::optional<NearestFrontier> nearest =
+      SelectNearestFrontier(frontiers, d.free, OctileDistanceField(d.free, {3, 0}));
   ASSERT_TRUE(nearest.has_value());
   // (3,0) -> (1,3): dx 2, dy 3 -> 1 + 2 sqrt2 = 3.83; the nearest cell of
   // the other frontier, (6,2), is 5 + sqrt2 away round the wall's end.
