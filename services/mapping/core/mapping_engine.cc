@@ -385,7 +385,7 @@ absl::StatusOr<std::vector<ObjectHit>> MappingEngine::QueryObjects(const ObjectQ
 }
 
 uint64_t MappingEngine::AwaitChange(uint64_t revision, absl::Duration timeout) const {
-  absl::MutexLock lock(&mu_);
+  absl::ReaderMutexLock lock(&mu_);  // a reader too: each watch's wake-up excludes no other
   auto changed = [this, revision]()
                      ABSL_SHARED_LOCKS_REQUIRED(mu_) { return revision_ > revision; };
   mu_.AwaitWithTimeout(absl::Condition(&changed), timeout);

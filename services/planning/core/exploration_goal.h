@@ -79,9 +79,9 @@ struct ExplorationChoice {
 // baselines; SEMANTIC_FRONTIER takes the value map (frontier_value.h) when it is on, else, on the
 // platforms the discount applies to, the semantically discounted nearest frontier
 // (semantic_discount.h; goal: its nearest cell, as NEAREST_FRONTIER's), else the best seed 002
-// total; EROI_UTILITY is seed 000's utility. NOT_FOUND
-// with reason NO_EXPLORATION_GOAL when nothing is reachable; INVALID_ARGUMENT naming
-// eroi_semantic_values when their count does not match the grid.
+// total; EROI_UTILITY is seed 000's utility. NOT_FOUND with reason NO_EXPLORATION_GOAL when
+// nothing is reachable; INVALID_ARGUMENT naming eroi_semantic_values when their count does not
+// match the grid.
 absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,
                                                         const ExplorationQuery& query,
                                                         ExplorationStrategy strategy,

@@ -96,8 +96,7 @@ class TaskRegistry {
 
   // A new task "task-<n>", n counting up over every task so far (restored ones included).
   // Before it is made, the finished tasks that ended longest ago beyond `keep_finished` are
-  // forgotten, so no
-  // reference to another record may be held across this call.
+  // forgotten, so no reference to another record may be held across this call.
   TaskRecord& Create();
   // A journaled task under its own id; new ids continue after `next_number`.
   TaskRecord& Restore(const std::string& task_id, uint64_t next_number);
