@@ -129,14 +129,21 @@ int StopUp(RunningStack& running, int signal_number = SIGTERM) {
   return code;
 }
 
-// Running or sleeping; a zombie (exited, not yet reaped by whoever adopted it) counts as gone.
-bool Alive(pid_t pid) {
-  if (pid <= 0 || ::kill(pid, 0) != 0) return false;
+// The state letter of /proc/<pid>/stat ('R', 'S', 'T' stopped, 'Z' zombie), or 0 if it is gone.
+char ProcessState(pid_t pid) {
+  if (pid <= 0 || ::kill(pid, 0) != 0) return 0;
   std::ifstream stat(absl::StrCat("/proc/", pid, "/stat"));
   std::string line;
   std::getline(stat, line);
   const size_t paren = line.rfind(')');
-  return paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] != 'Z';
+  return paren != std::string::npos && paren + 2 < line.size() ? line[paren + 2] : 0;
+}
+
+// Running, sleeping or stopped; a zombie (exited, not yet reaped by whoever adopted it) counts
+// as gone.
+bool Alive(pid_t pid) {
+  const char state = ProcessState(pid);
+  return state != 0 && state != 'Z';
 }
 
 StackState LiveState(const std::string& stack) {
@@ -193,14 +200,28 @@ TEST(LauncherTest, TheSimRobotStopsBeforeTheServicesItTalksTo) {
   const pid_t gateway = state.children.at("gateway").pid;
   ASSERT_TRUE(Alive(robot));
   ::kill(robot, SIGSTOP);
+  // SIGSTOP takes effect when the robot next enters the kernel. A SIGTERM that arrives before
+  // then is taken first (lower number), and the robot stops itself before it freezes.
+  const absl::Time frozen_by = absl::Now() + absl::Seconds(10);
+  while (ProcessState(robot) != 'T' && absl::Now() < frozen_by) {
+    absl::SleepFor(absl::Milliseconds(10));
+  }
+  ASSERT_EQ(ProcessState(robot), 'T');
   ::kill(running.pid, SIGTERM);
   absl::SleepFor(absl::Seconds(1.5));
-  EXPECT_TRUE(Alive(gateway)) << "the gateway was stopped while its robot still ran";
+  const bool gateway_alive_while_robot_frozen = Alive(gateway);
   ::kill(robot, SIGCONT);
   int code = 0;
   ::waitpid(running.pid, &code, 0);
+  char buffer[1024];
+  for (ssize_t n; (n = ::read(running.output_fd, buffer, sizeof(buffer))) > 0;) {
+    running.printed.append(buffer, static_cast<std::size_t>(n));
+  }
   ::close(running.output_fd);
-  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0) << code;
+  EXPECT_TRUE(gateway_alive_while_robot_frozen)
+      << "the gateway was stopped while its robot still ran; the launcher said:\n"
+      << running.printed;
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0) << code << "\n" << running.printed;
   EXPECT_FALSE(Alive(gateway));
 }
 
