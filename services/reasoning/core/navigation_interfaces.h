@@ -27,6 +27,9 @@ struct PathQuery {
   // Seed 004 alternative point: when the goal is in or behind an obstacle, plan to the free point
   // nearest it on the line from here to the goal. Unset = the goal must be reachable as given.
   std::optional<Eigen::Vector3d> alternative_from;
+  // > 0: a goal in or walled in by obstacles moves to the reachable free point nearest it within
+  // this distance (an object's surroundings); 0 = the gateway's configured tolerance.
+  double goal_tolerance_m = 0.0;
 };
 
 // One exploration request: where the robot is and which goals are spent (it failed to reach

@@ -73,9 +73,9 @@ std::vector<RobotCommand> TaskExecutor::Start(double now, const RobotPose& pose)
 }
 
 std::vector<RobotCommand> TaskExecutor::MoveTo(double now, const Eigen::Vector3d& goal, double yaw,
-                                               double speed, Phase phase,
-                                               const std::string& reason) {
-  absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal);
+                                               double speed, Phase phase, const std::string& reason,
+                                               const std::optional<Eigen::Vector3d>& reach_target) {
+  absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(goal, reach_target);
   if (absl::IsUnavailable(path.status())) return PauseForDependency(now, path.status());
   if (!path.ok() && phase == Phase::kExploring) {
     // Without a frontier goal this was the fallback step: ExplorationFailed looks around rather
@@ -121,7 +121,8 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
   return {command};
 }
 
-absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen::Vector3d& goal) {
+absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(
+    const Eigen::Vector3d& goal, const std::optional<Eigen::Vector3d>& reach_target) {
   if ((goal - pose_.position).head<2>().norm() < 1e-6)
     return std::vector<Eigen::Vector3d>{};  // turn in place
   // After a block the path keeps more clearance (re-plan with inflated costs).
@@ -130,6 +131,18 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(const Eigen:
   PathQuery query{pose_.position,         goal,      config_.multi_modal,
                   config_.robot_radius_m, clearance, std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
+  if (reach_target.has_value() &&
+      (absl::IsFailedPrecondition(path.status()) || absl::IsNotFound(path.status()))) {
+    // The stand-off point lies in furniture or is walled in (a laptop on a desk with its chair in
+    // front, a cup on a counter seen from its end): stand at the free point nearest the target
+    // that is still within reach, whichever side it is on. The line of sight from here, tried
+    // next, can stop short of reach (hand-drawn flat, generated house).
+    PathQuery near = query;
+    near.goal = *reach_target;
+    near.goal_tolerance_m = ReachRadius();
+    absl::StatusOr<std::vector<Eigen::Vector3d>> reach = planner_->Plan(near);
+    if (reach.ok() || absl::IsUnavailable(reach.status())) return reach;
+  }
   if (absl::IsFailedPrecondition(path.status())) {
     // Seed 004: the goal lies in an obstacle; go to the free point nearest it seen from here.
     // Frontier goals too: they sit on the edge of the unknown, often in inflated cells.
@@ -669,7 +682,7 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
       if (distance <= stand_off + 1e-6) return NextSubgoal(now, "already close");
       const Eigen::Vector3d stop = progress_.target->position - to_target * (stand_off / distance);
       return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps,
-                    Phase::kMoving, "approaching the target");
+                    Phase::kMoving, "approaching the target", progress_.target->position);
     }
     case SubgoalType::kVerify: {
       if (!TryResolve()) return Search(now);
@@ -711,6 +724,17 @@ std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
   return {command};
 }
 
+double TaskExecutor::ReachRadius() const {
+  double half_extent = 0.0;
+  if (const SceneObject* object = graph_->FindObject(progress_.target->object_id)) {
+    if (object->size.allFinite()) {
+      half_extent =
+          (0.5 * object->size.head<2>()).cwiseMax(0.0).cwiseMin(config_.reach_extent_cap_m).norm();
+    }
+  }
+  return std::max(0.0, config_.success_radius_m - config_.success_margin_m) + half_extent;
+}
+
 double TaskExecutor::DistanceToTarget(const Eigen::Vector3d& point) const {
   Eigen::Vector2d half = Eigen::Vector2d::Zero();
   if (const SceneObject* object = graph_->FindObject(progress_.target->object_id)) {
@@ -747,7 +771,7 @@ std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {
   const Eigen::Vector3d stop =
       progress_.target->position - to_target * (0.5 / to_target.head<2>().norm());
   return MoveTo(now, stop, YawTo(progress_.target->position), config_.approach_speed_mps,
-                Phase::kMoving, "verified but too far: approaching");
+                Phase::kMoving, "verified but too far: approaching", progress_.target->position);
 }
 
 std::vector<RobotCommand> TaskExecutor::TargetReached(double now, const std::string& reason) {

@@ -256,10 +256,18 @@ class TaskExecutor {
   // The object's current label still matches the active target.
   bool ReadsAsTarget(const SceneObject& object) const;
   std::vector<RobotCommand> Search(double now);
-  absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(const Eigen::Vector3d& goal);
+  // With `reach_target`, a goal held or walled in by obstacles is replaced first by the reachable
+  // free point nearest the target within reach (ReachRadius), then by seed 004's point on the
+  // line of sight; without it, by the line-of-sight point only.
+  absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(
+      const Eigen::Vector3d& goal, const std::optional<Eigen::Vector3d>& reach_target = {});
+  // How far from the located target's centre a standing point may lie and still be within
+  // success_radius_m - success_margin_m of its mapped extent (capped like DistanceToTarget).
+  double ReachRadius() const;
   std::vector<RobotCommand> Explore(double now);
   std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw,
-                                   double speed, Phase phase, const std::string& reason);
+                                   double speed, Phase phase, const std::string& reason,
+                                   const std::optional<Eigen::Vector3d>& reach_target = {});
   std::vector<RobotCommand> Navigate(double now, const Eigen::Vector3d& goal,
                                      std::vector<Eigen::Vector3d> path, double yaw, double speed,
                                      Phase phase, const std::string& reason);

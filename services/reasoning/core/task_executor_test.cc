@@ -22,6 +22,7 @@ class ScriptedPlanner : public PathPlanner {
       return failure;
     }
     if (unreachable) return absl::NotFoundError("goal unreachable");
+    if (query.goal_tolerance_m > 0.0) return std::vector<Eigen::Vector3d>{query.start, reach_point};
     if (query.alternative_from.has_value())
       return std::vector<Eigen::Vector3d>{query.start, alternative_point};
     return std::vector<Eigen::Vector3d>{query.start, query.goal};
@@ -29,6 +30,7 @@ class ScriptedPlanner : public PathPlanner {
   std::vector<PathQuery> queries;
   std::deque<absl::Status> failures;
   Eigen::Vector3d alternative_point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d reach_point = Eigen::Vector3d::Zero();  // answer to a query with a tolerance
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
     exploration_queries.push_back(query);
     if (!down.ok()) return down;
@@ -161,6 +163,53 @@ TEST_F(GatewayTaskExecutorTest, NavigateApproachVerifySucceedsWithinOneMetre) {
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kStop);
   EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+}
+
+// Regression (hand-drawn flat: a laptop on a desk with its chair in front; generated house: a cup
+// on a counter seen from its end): the approach's stand-off point lay in furniture, and seed
+// 004's point on the line from the robot stopped 1.1-1.2 m from the object, outside reach. The
+// robot now asks for the free point nearest the object within reach first.
+TEST_F(GatewayTaskExecutorTest, ApproachWhoseStandOffIsInFurnitureStandsNextToTheTarget) {
+  SceneObject laptop = Extinguisher(15);
+  laptop.size = Eigen::Vector3d(0.6, 0.8, 0.3);  // half extents 0.3 x 0.4: 0.5 m to a corner
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({laptop}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  task.OnPose(5, At(4));
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};
+  planner_.reach_point = Eigen::Vector3d(5.2, 0.9, 0);
+  planner_.queries.clear();
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(task.progress().subgoal_index, 1);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(5.2, 0.9, 0))) << out[0].goal.transpose();
+  ASSERT_EQ(planner_.queries.size(), 2u);
+  EXPECT_TRUE(planner_.queries[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));  // the stand-off
+  EXPECT_DOUBLE_EQ(planner_.queries[0].goal_tolerance_m, 0.0);
+  EXPECT_TRUE(planner_.queries[1].goal.isApprox(Eigen::Vector3d(5, 0, 0)));  // the object itself
+  EXPECT_NEAR(planner_.queries[1].goal_tolerance_m, 0.8 + 0.5, 1e-9);  // reach: 1 - 0.2 + corner
+  EXPECT_FALSE(planner_.queries[1].alternative_from.has_value());
+}
+
+// Nothing free within reach: seed 004's point on the line of sight, as before.
+TEST_F(GatewayTaskExecutorTest, ApproachWithNothingFreeWithinReachTakesTheLineOfSightPoint) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  task.OnPose(5, At(4));
+  planner_.failures = {absl::FailedPreconditionError("goal occupied"),
+                       absl::NotFoundError("nothing free within reach")};
+  planner_.alternative_point = Eigen::Vector3d(4.2, 0, 0);
+  planner_.queries.clear();
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));
+  ASSERT_EQ(planner_.queries.size(), 3u);
+  EXPECT_NEAR(planner_.queries[1].goal_tolerance_m, 0.8, 1e-9);  // no extent mapped
+  EXPECT_TRUE(planner_.queries[2].alternative_from.has_value());
+  EXPECT_DOUBLE_EQ(planner_.queries[2].goal_tolerance_m, 0.0);
 }
 
 TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppears) {

@@ -140,7 +140,8 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   SetPose(query.start, request.mutable_start());
   SetPose(query.goal, request.mutable_goal());
   request.set_planner(query.multi_modal ? pb::PLANNER_KIND_JUMP_ASTAR : pb::PLANNER_KIND_JPS);
-  request.set_goal_tolerance_m(settings_.goal_tolerance_m);
+  request.set_goal_tolerance_m(query.goal_tolerance_m > 0.0 ? query.goal_tolerance_m
+                                                            : settings_.goal_tolerance_m);
   request.set_keep_clearance(
       true);  // the robot's path keeps away from obstacles (planning.clearance)
   if (query.alternative_from.has_value()) {

@@ -21,6 +21,7 @@ class RecordingPlanning final : public pb::PlanningService::Service {
                         pb::PlanPathResponse* response) override {
     absl::MutexLock lock(&mu);
     radii.push_back(request->robot_radius_m());
+    tolerances.push_back(request->goal_tolerance_m());
     if (request->robot_radius_m() > no_path_above_m) {
       absl::Status no_path = absl::NotFoundError("goal is not reachable from start");
       pb::PlanFailureDetail detail;
@@ -48,8 +49,9 @@ class RecordingPlanning final : public pb::PlanningService::Service {
   absl::Mutex mu;
   bool refuse_values = false;
   grpc::Status failure;  // every answer's (PlanPath answers OK with the goal as its path otherwise)
-  double no_path_above_m = 1e9;  // PlanPath: NO_PATH for a robot_radius_m above this
-  std::vector<double> radii;     // PlanPath's robot_radius_m, in call order
+  double no_path_above_m = 1e9;    // PlanPath: NO_PATH for a robot_radius_m above this
+  std::vector<double> radii;       // PlanPath's robot_radius_m, in call order
+  std::vector<double> tolerances;  // PlanPath's goal_tolerance_m, in call order
   std::vector<pb::SelectExplorationGoalRequest> requests;
 };
 
@@ -215,6 +217,18 @@ TEST_F(GatewayPlanningClientTest, NoPathWithTheClearanceIsRetriedWithTheBareFoot
   EXPECT_TRUE(absl::IsNotFound(client_->Plan(query).status()));
   absl::MutexLock lock(&planning_.mu);
   EXPECT_EQ(planning_.radii.size(), 2u);
+}
+
+// The executor's approach asks for the free point nearest an object within reach: the query's
+// tolerance goes to planning in place of the configured one (0 here), and only for that query.
+TEST_F(GatewayPlanningClientTest, AQuerysGoalToleranceReachesPlanning) {
+  PathQuery query{
+      Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.25, 0.0, std::nullopt};
+  ASSERT_TRUE(client_->Plan(query).ok());
+  query.goal_tolerance_m = 1.1;
+  ASSERT_TRUE(client_->Plan(query).ok());
+  absl::MutexLock lock(&planning_.mu);
+  EXPECT_EQ(planning_.tolerances, (std::vector<double>{0.0, 1.1}));
 }
 
 pb::PlanPathResponse FlyOverCrate() {
