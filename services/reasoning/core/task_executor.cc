@@ -1096,8 +1096,11 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now,
       // Mapping's label is a vote over the object's detections: a first detection under another
       // object's label (a detector confusion) is outvoted by the next ones. The new detections
       // then confirm that other object, not the target (home_01: a chair first seen as a
-      // "potted plant" was approached and verified).
-      if (progress_.target->path == ResolutionPath::kFast && !ReadsAsTarget(*object)) {
+      // "potted plant" was approached and verified, by the fast path and, with the model, by
+      // the slow path's answer for that label).
+      const bool taken_by_label =
+          progress_.target->path == ResolutionPath::kFast || progress_.target->named_by_its_label;
+      if (taken_by_label && !ReadsAsTarget(*object)) {
         return ReleaseTarget(
             now, absl::StrCat("dropped: mapping now labels it \"", object->label, "\""));
       }
@@ -1157,7 +1160,8 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
   }
   // A vision-verify answer is only a candidate: the VERIFY subgoal confirms or rejects it.
   progress_.target =
-      LocatedTarget{object->id, object->position, decision.confidence, ResolutionPath::kSlow, 0};
+      LocatedTarget{object->id, object->position,      decision.confidence, ResolutionPath::kSlow,
+                    0,          ReadsAsTarget(*object)};
   const bool searching = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
   return searching ? EnterSubgoal(now) : std::vector<RobotCommand>{};
 }

@@ -142,6 +142,9 @@ struct LocatedTarget {
   double confidence = 0.0;
   ResolutionPath path = ResolutionPath::kFast;
   int detections_at_verify = 0;
+  // The model took it while mapping's label read as the target (not an open-vocabulary match):
+  // like a fast-path target, it is dropped when later detections outvote that label.
+  bool named_by_its_label = false;
 };
 
 struct TaskProgress {
