@@ -531,7 +531,7 @@ std::optional<ScoredObject> TaskExecutor::BestCandidate() const {
 bool TaskExecutor::TakeBestCandidate() {
   if (endgame_taken_ || progress_.target.has_value()) return false;
   const std::optional<ScoredObject> best = BestCandidate();
-  if (!best.has_value()) return false;
+  if (!best.has_value() || best->label < config_.endgame_min_label_match) return false;
   endgame_taken_ = true;
   // The fast path found it (below its threshold): reported as a fast-path resolution.
   progress_.target = LocatedTarget{best->object_id, graph_->FindObject(best->object_id)->position,

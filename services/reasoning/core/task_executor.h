@@ -106,6 +106,11 @@ struct ExecutorConfig {
   // seen (the fast path's best label match, even below its threshold) instead of a new frontier.
   double time_budget_s = 0.0;
   double endgame_s = 40.0;
+  // The endgame's candidate must name the target at least this well: 1 the same object, 0.5 one
+  // name within the other ("table" / "coffee table", "cup" / "coffee cup", or the right object
+  // with its asked colour unreported), 1/3 a sibling sharing a word ("coffee table" / "dining
+  // table"), which the robot would otherwise verify and report as found (hold-out open office).
+  double endgame_min_label_match = 0.5;
   // Without a model to ask (seed 002's slow path judges candidates below the fast path's
   // threshold), a candidate whose label matches at least this well (1 = the target's name or a
   // synonym) is driven to and verified instead of passed by: a target seen once at the edge of

@@ -1425,6 +1425,43 @@ TEST_F(GatewayTaskExecutorTest, EndgameGoesToTheBestCandidateSeen) {
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.5, 0, 0)));
 }
 
+// Regression (hold-out open office, "find coffee table"): with 40 s left the endgame took a dining
+// table (label match 1/3, the word "table"), verified it and reported the task SUCCEEDED 22 m from
+// the coffee table. A sibling label is no candidate: the robot keeps exploring.
+TEST_F(GatewayTaskExecutorTest, EndgameDoesNotTakeAnObjectThatOnlySharesAWordWithTheTarget) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0),
+                        Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.time_budget_s = 100.0;
+  config.endgame_s = 40.0;
+  std::vector<Subgoal> goals = FindTarget();
+  for (Subgoal& goal : goals) {
+    goal.target.name = "coffee table";
+    goal.target.colours.clear();
+  }
+  TaskExecutor task = Make(goals, config);
+  SceneObject dining_table = Extinguisher(6);
+  dining_table.label = "dining table";
+  dining_table.attributes.clear();
+  task.OnSceneGraph(0, GraphWith({dining_table}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  for (double now = 1; now <= 60; now += 1) task.OnPose(now, At(-now / 10));
+  EXPECT_FALSE(task.progress().target.has_value()) << task.progress().reason;
+  EXPECT_EQ(task.progress().phase, "exploring");
+
+  // The right object with its asked colour unreported (0.5) is still the endgame's candidate.
+  TaskExecutor red = Make(FindTarget(), config);
+  SceneObject plain = Extinguisher(6);
+  plain.attributes.clear();
+  red.OnSceneGraph(0, GraphWith({plain}, 1));
+  red.Start(0, At(0));
+  for (double now = 1; now <= 60; now += 1) red.OnPose(now, At(-now / 10));
+  ASSERT_TRUE(red.progress().target.has_value());
+  EXPECT_EQ(red.progress().target->object_id, 7);
+  EXPECT_TRUE(absl::StrContains(red.progress().reason, "endgame")) << red.progress().reason;
+}
+
 // Without a model, a candidate whose label matches the target (seen once: below the fast path's
 // threshold) is looked at again and then driven to and verified, instead of passed by (8-episode
 // home bench: 2 of 3 failures were "seen, never approached"). A partial match (a plain
