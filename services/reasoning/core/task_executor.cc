@@ -14,6 +14,17 @@ namespace {
 // The detection count the glance doubts: a candidate seen exactly once.
 constexpr int kSeenOnce = 1;
 
+// Horizontal length of the way from `from` along `path`.
+double HorizontalLength(const Eigen::Vector3d& from, const std::vector<Eigen::Vector3d>& path) {
+  double length = 0.0;
+  Eigen::Vector3d at = from;
+  for (const Eigen::Vector3d& point : path) {
+    length += (point - at).head<2>().norm();
+    at = point;
+  }
+  return length;
+}
+
 }  // namespace
 
 std::string_view TaskStateName(TaskState state) {
@@ -141,7 +152,17 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(
     near.goal = *reach_target;
     near.goal_tolerance_m = ReachRadius();
     absl::StatusOr<std::vector<Eigen::Vector3d>> reach = planner_->Plan(near);
-    if (reach.ok() || absl::IsUnavailable(reach.status())) return reach;
+    if (absl::IsUnavailable(reach.status())) return reach;
+    // A point reached only by a long detour lies beyond a wall from here (the object's near
+    // side fully blocked, the next room reachable through a door): the camera would not see the
+    // object from there, so the line-of-sight point below is the better stand.
+    if (reach.ok() && !reach->empty()) {
+      const double straight = (reach->back() - pose_.position).head<2>().norm();
+      const double way = HorizontalLength(pose_.position, *reach);
+      if (way <= config_.reach_max_detour_factor * straight + config_.reach_detour_slack_m) {
+        return reach;
+      }
+    }
   }
   if (absl::IsFailedPrecondition(path.status())) {
     // Seed 004: the goal lies in an obstacle; go to the free point nearest it seen from here.

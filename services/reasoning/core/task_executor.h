@@ -49,6 +49,12 @@ struct ExecutorConfig {
   // has its centre 1.2 m away. Each half-extent counts up to this cap (a box grown by a wrong
   // merge cannot bring a far robot within reach); 0 = measured to the centre.
   double reach_extent_cap_m = 1.0;
+  // An approach whose stand-off point is blocked stands at the free point nearest the object
+  // within reach, unless the way there is longer than factor x its straight distance + slack:
+  // then that point lies beyond a wall from the robot (a detour through a door) and seed 004's
+  // line-of-sight point is taken instead.
+  double reach_max_detour_factor = 2.0;
+  double reach_detour_slack_m = 3.0;
   int max_replans = 3;                      // failures to reach one target before it is set aside
   double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
   int max_explore_goals =

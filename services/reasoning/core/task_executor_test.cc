@@ -22,7 +22,10 @@ class ScriptedPlanner : public PathPlanner {
       return failure;
     }
     if (unreachable) return absl::NotFoundError("goal unreachable");
-    if (query.goal_tolerance_m > 0.0) return std::vector<Eigen::Vector3d>{query.start, reach_point};
+    if (query.goal_tolerance_m > 0.0) {
+      if (!reach_path.empty()) return reach_path;
+      return std::vector<Eigen::Vector3d>{query.start, reach_point};
+    }
     if (query.alternative_from.has_value())
       return std::vector<Eigen::Vector3d>{query.start, alternative_point};
     return std::vector<Eigen::Vector3d>{query.start, query.goal};
@@ -31,6 +34,7 @@ class ScriptedPlanner : public PathPlanner {
   std::deque<absl::Status> failures;
   Eigen::Vector3d alternative_point = Eigen::Vector3d::Zero();
   Eigen::Vector3d reach_point = Eigen::Vector3d::Zero();  // answer to a query with a tolerance
+  std::vector<Eigen::Vector3d> reach_path;  // set: the whole answer to such a query instead
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
     exploration_queries.push_back(query);
     if (!down.ok()) return down;
@@ -211,6 +215,27 @@ TEST_F(GatewayTaskExecutorTest, ApproachWhoseStandOffIsInFurnitureStandsNextToTh
   EXPECT_TRUE(planner_.queries[1].goal.isApprox(Eigen::Vector3d(5, 0, 0)));  // the object itself
   EXPECT_NEAR(planner_.queries[1].goal_tolerance_m, 0.8 + 0.5, 1e-9);  // reach: 1 - 0.2 + corner
   EXPECT_FALSE(planner_.queries[1].alternative_from.has_value());
+}
+
+// The free point nearest the object lies in the next room, 1.3 m away through the wall but 13.9 m
+// round by the door: the camera would not see the object from there. The line-of-sight point is
+// taken.
+TEST_F(GatewayTaskExecutorTest, ApproachDoesNotStandBeyondAWallFromTheTarget) {
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  task.OnPose(5, At(4));
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};
+  planner_.reach_path = {Eigen::Vector3d(4, -6, 0), Eigen::Vector3d(5, -6, 0),
+                         Eigen::Vector3d(5, 0.9, 0)};  // round by a door
+  planner_.alternative_point = Eigen::Vector3d(4.2, 0, 0);
+  planner_.queries.clear();
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0))) << out[0].goal.transpose();
+  ASSERT_EQ(planner_.queries.size(), 3u);
+  EXPECT_TRUE(planner_.queries[2].alternative_from.has_value());
 }
 
 // Nothing free within reach: seed 004's point on the line of sight, as before.
