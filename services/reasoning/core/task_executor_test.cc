@@ -125,6 +125,22 @@ void VerifyStuckAt(TaskExecutor& task, std::vector<RobotCommand>& out, double x,
       now, GraphWith({Extinguisher(detections += 1)}, static_cast<uint64_t>(detections)));
 }
 
+// `goals` about a target named `name` instead, no colour asked.
+std::vector<Subgoal> AboutTarget(std::vector<Subgoal> goals, const std::string& name) {
+  for (Subgoal& goal : goals) {
+    goal.target.name = name;
+    goal.target.colours.clear();
+  }
+  return goals;
+}
+
+// `object` as mapping labels it `label`, no colour reported.
+SceneObject LabelledAs(SceneObject object, const std::string& label) {
+  object.label = label;
+  object.attributes.clear();
+  return object;
+}
+
 // The model's answer: object `id` is the goal.
 SlowDecision ModelNamesObject(int64_t id) {
   SlowDecision decision;
@@ -149,6 +165,18 @@ class GatewayTaskExecutorTest : public ::testing::Test {
     task.OnSceneGraph(0, GraphWith({Extinguisher(1)}, 1));
     task.Start(0, At(0));
     EXPECT_TRUE(task.TakeModelRequest().has_value());
+    return task;
+  }
+  // "Go to" with `target` in view: the robot stands at the 1 m stand-off (4, 0), and the next
+  // GOAL_REACHED of its navigate command (`*command`) starts the approach. No query recorded yet.
+  TaskExecutor AtTheStandOff(const SceneObject& target, uint64_t* command) {
+    TaskExecutor task = Make(GoToTarget());
+    task.OnSceneGraph(0, GraphWith({target}, 1));
+    const std::vector<RobotCommand> out = task.Start(0, At(0));
+    EXPECT_EQ(out.size(), 1u);
+    *command = out.empty() ? 0 : out[0].id;
+    task.OnPose(5, At(4));
+    planner_.queries.clear();
     return task;
   }
   FastResolver resolver_{&ShippedLexicon(), FastResolverConfig{}};
@@ -197,15 +225,11 @@ TEST_F(GatewayTaskExecutorTest, NavigateApproachVerifySucceedsWithinOneMetre) {
 TEST_F(GatewayTaskExecutorTest, ApproachWhoseStandOffIsInFurnitureStandsNextToTheTarget) {
   SceneObject laptop = Extinguisher(15);
   laptop.size = Eigen::Vector3d(0.6, 0.8, 0.3);  // half extents 0.3 x 0.4: 0.5 m to a corner
-  TaskExecutor task = Make(GoToTarget());
-  task.OnSceneGraph(0, GraphWith({laptop}, 1));
-  std::vector<RobotCommand> out = task.Start(0, At(0));
-  ASSERT_EQ(out.size(), 1u);
-  task.OnPose(5, At(4));
+  uint64_t navigate = 0;
+  TaskExecutor task = AtTheStandOff(laptop, &navigate);
   planner_.failures = {absl::FailedPreconditionError("goal occupied")};
   planner_.reach_point = Eigen::Vector3d(5.2, 0.9, 0);
-  planner_.queries.clear();
-  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  std::vector<RobotCommand> out = task.OnFeedback(5, navigate, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(task.progress().subgoal_index, 1);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(5.2, 0.9, 0))) << out[0].goal.transpose();
@@ -221,17 +245,13 @@ TEST_F(GatewayTaskExecutorTest, ApproachWhoseStandOffIsInFurnitureStandsNextToTh
 // round by the door: the camera would not see the object from there. The line-of-sight point is
 // taken.
 TEST_F(GatewayTaskExecutorTest, ApproachDoesNotStandBeyondAWallFromTheTarget) {
-  TaskExecutor task = Make(GoToTarget());
-  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
-  std::vector<RobotCommand> out = task.Start(0, At(0));
-  ASSERT_EQ(out.size(), 1u);
-  task.OnPose(5, At(4));
+  uint64_t navigate = 0;
+  TaskExecutor task = AtTheStandOff(Extinguisher(15), &navigate);
   planner_.failures = {absl::FailedPreconditionError("goal occupied")};
   planner_.reach_path = {Eigen::Vector3d(4, -6, 0), Eigen::Vector3d(5, -6, 0),
                          Eigen::Vector3d(5, 0.9, 0)};  // round by a door
   planner_.alternative_point = Eigen::Vector3d(4.2, 0, 0);
-  planner_.queries.clear();
-  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  std::vector<RobotCommand> out = task.OnFeedback(5, navigate, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0))) << out[0].goal.transpose();
   ASSERT_EQ(planner_.queries.size(), 3u);
@@ -240,16 +260,12 @@ TEST_F(GatewayTaskExecutorTest, ApproachDoesNotStandBeyondAWallFromTheTarget) {
 
 // Nothing free within reach: seed 004's point on the line of sight, as before.
 TEST_F(GatewayTaskExecutorTest, ApproachWithNothingFreeWithinReachTakesTheLineOfSightPoint) {
-  TaskExecutor task = Make(GoToTarget());
-  task.OnSceneGraph(0, GraphWith({Extinguisher(15)}, 1));
-  std::vector<RobotCommand> out = task.Start(0, At(0));
-  ASSERT_EQ(out.size(), 1u);
-  task.OnPose(5, At(4));
+  uint64_t navigate = 0;
+  TaskExecutor task = AtTheStandOff(Extinguisher(15), &navigate);
   planner_.failures = {absl::FailedPreconditionError("goal occupied"),
                        absl::NotFoundError("nothing free within reach")};
   planner_.alternative_point = Eigen::Vector3d(4.2, 0, 0);
-  planner_.queries.clear();
-  out = task.OnFeedback(5, out[0].id, RobotFeedback::kGoalReached);
+  std::vector<RobotCommand> out = task.OnFeedback(5, navigate, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));
   ASSERT_EQ(planner_.queries.size(), 3u);
@@ -382,10 +398,8 @@ TEST_F(GatewayTaskExecutorTest, SlowTargetTakenForItsLabelIsDroppedWhenTheLabelI
   ASSERT_EQ(task.OnSlowDecision(1, 1, ModelNamesObject(7)).size(), 1u);
   ASSERT_TRUE(task.progress().target.has_value());
   EXPECT_TRUE(task.progress().target->named_by_its_label);
-  SceneObject chair = Extinguisher(4);
-  chair.label = "chair";
-  chair.attributes.clear();
-  const std::vector<RobotCommand> out = task.OnSceneGraph(2, GraphWith({chair}, 2));
+  const std::vector<RobotCommand> out =
+      task.OnSceneGraph(2, GraphWith({LabelledAs(Extinguisher(4), "chair")}, 2));
   EXPECT_FALSE(task.progress().target.has_value());
   EXPECT_TRUE(absl::StrContains(task.progress().reason, "mapping now labels it \"chair\""))
       << task.progress().reason;
@@ -399,25 +413,17 @@ TEST_F(GatewayTaskExecutorTest, SlowTargetNamedAcrossLabelsIsKeptWhenItsLabelCha
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0)};
   ExecutorConfig config;
   config.model_available = true;
-  std::vector<Subgoal> goals = GoToTarget();
-  for (Subgoal& goal : goals) {
-    goal.target.name = "复印机";
-    goal.target.colours.clear();
-  }
-  TaskExecutor task = Make(goals, config);
-  SceneObject printer = Extinguisher(3);
-  printer.label = "printer";
-  printer.attributes.clear();
+  TaskExecutor task = Make(AboutTarget(GoToTarget(), "复印机"), config);
+  const SceneObject printer = LabelledAs(Extinguisher(3), "printer");
   task.OnSceneGraph(0, GraphWith({printer}, 1));
   task.Start(0, At(0));
   ASSERT_TRUE(task.TakeModelRequest().has_value());
   const SlowDecision decision = ModelNamesObject(7);
   ASSERT_EQ(task.OnSlowDecision(1, 1, decision).size(), 1u);
   EXPECT_FALSE(task.progress().target->named_by_its_label);
-  SceneObject copier = printer;
-  copier.label = "tv";
-  copier.detection_count = 5;
-  task.OnSceneGraph(2, GraphWith({copier}, 2));
+  SceneObject relabelled = LabelledAs(printer, "tv");  // later detections outvote "printer"
+  relabelled.detection_count = 5;
+  task.OnSceneGraph(2, GraphWith({relabelled}, 2));
   ASSERT_TRUE(task.progress().target.has_value());
   EXPECT_EQ(task.progress().target->object_id, 7);
 }
@@ -1459,16 +1465,8 @@ TEST_F(GatewayTaskExecutorTest, EndgameDoesNotTakeAnObjectThatOnlySharesAWordWit
   ExecutorConfig config;
   config.time_budget_s = 100.0;
   config.endgame_s = 40.0;
-  std::vector<Subgoal> goals = FindTarget();
-  for (Subgoal& goal : goals) {
-    goal.target.name = "coffee table";
-    goal.target.colours.clear();
-  }
-  TaskExecutor task = Make(goals, config);
-  SceneObject dining_table = Extinguisher(6);
-  dining_table.label = "dining table";
-  dining_table.attributes.clear();
-  task.OnSceneGraph(0, GraphWith({dining_table}, 1));
+  TaskExecutor task = Make(AboutTarget(FindTarget(), "coffee table"), config);
+  task.OnSceneGraph(0, GraphWith({LabelledAs(Extinguisher(6), "dining table")}, 1));
   std::vector<RobotCommand> out = task.Start(0, At(0));
   ASSERT_EQ(out.size(), 1u);
   for (double now = 1; now <= 60; now += 1) task.OnPose(now, At(-now / 10));
@@ -1477,9 +1475,7 @@ TEST_F(GatewayTaskExecutorTest, EndgameDoesNotTakeAnObjectThatOnlySharesAWordWit
 
   // The right object with its asked colour unreported (0.5) is still the endgame's candidate.
   TaskExecutor red = Make(FindTarget(), config);
-  SceneObject plain = Extinguisher(6);
-  plain.attributes.clear();
-  red.OnSceneGraph(0, GraphWith({plain}, 1));
+  red.OnSceneGraph(0, GraphWith({LabelledAs(Extinguisher(6), "fire extinguisher")}, 1));
   red.Start(0, At(0));
   for (double now = 1; now <= 60; now += 1) red.OnPose(now, At(-now / 10));
   ASSERT_TRUE(red.progress().target.has_value());
