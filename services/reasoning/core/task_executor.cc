@@ -745,26 +745,20 @@ std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
   return {command};
 }
 
+Eigen::Vector2d TaskExecutor::TargetHalfExtent() const {
+  const SceneObject* object = graph_->FindObject(progress_.target->object_id);
+  if (object == nullptr || !object->size.allFinite()) return Eigen::Vector2d::Zero();
+  return (0.5 * object->size.head<2>()).cwiseMax(0.0).cwiseMin(config_.reach_extent_cap_m);
+}
+
 double TaskExecutor::ReachRadius() const {
-  double half_extent = 0.0;
-  if (const SceneObject* object = graph_->FindObject(progress_.target->object_id)) {
-    if (object->size.allFinite()) {
-      half_extent =
-          (0.5 * object->size.head<2>()).cwiseMax(0.0).cwiseMin(config_.reach_extent_cap_m).norm();
-    }
-  }
-  return std::max(0.0, config_.success_radius_m - config_.success_margin_m) + half_extent;
+  return std::max(0.0, config_.success_radius_m - config_.success_margin_m) +
+         TargetHalfExtent().norm();
 }
 
 double TaskExecutor::DistanceToTarget(const Eigen::Vector3d& point) const {
-  Eigen::Vector2d half = Eigen::Vector2d::Zero();
-  if (const SceneObject* object = graph_->FindObject(progress_.target->object_id)) {
-    if (object->size.allFinite()) {
-      half = (0.5 * object->size.head<2>()).cwiseMax(0.0).cwiseMin(config_.reach_extent_cap_m);
-    }
-  }
   const Eigen::Vector2d offset = (point - progress_.target->position).head<2>().cwiseAbs();
-  return (offset - half).cwiseMax(0.0).norm();
+  return (offset - TargetHalfExtent()).cwiseMax(0.0).norm();
 }
 
 std::vector<RobotCommand> TaskExecutor::CheckSuccessOrApproach(double now) {

@@ -275,8 +275,11 @@ class TaskExecutor {
   // line of sight; without it, by the line-of-sight point only.
   absl::StatusOr<std::vector<Eigen::Vector3d>> PlanPath(
       const Eigen::Vector3d& goal, const std::optional<Eigen::Vector3d>& reach_target = {});
+  // Half of the located target's mapped footprint, each half capped at reach_extent_cap_m (zero
+  // when the map gives no size).
+  Eigen::Vector2d TargetHalfExtent() const;
   // How far from the located target's centre a standing point may lie and still be within
-  // success_radius_m - success_margin_m of its mapped extent (capped like DistanceToTarget).
+  // success_radius_m - success_margin_m of its capped extent.
   double ReachRadius() const;
   std::vector<RobotCommand> Explore(double now);
   std::vector<RobotCommand> MoveTo(double now, const Eigen::Vector3d& goal, double yaw,
