@@ -8,6 +8,7 @@
 #include "services/reasoning/core/conceptnet_cooccurrence.h"
 #include "services/reasoning/core/robot_local_planner.h"
 #include "services/reasoning/server/gateway_hub.h"
+#include "services/reasoning/server/lost_scan_client.h"
 #include "services/reasoning/server/mapping_watcher.h"
 #include "services/reasoning/server/model_proxy_client.h"
 #include "services/reasoning/server/operator_service.h"
@@ -29,6 +30,7 @@ struct GatewayStack {
   std::unique_ptr<ModelProxyClient> model;            // null: offline default
   std::unique_ptr<ConceptNetCooccurrence> prior;      // null: explore without co-occurrence
   std::unique_ptr<RelocalizationClient> relocalizer;  // null: no relocalization loop
+  std::unique_ptr<MappingLostScanClient> lost_scan;   // null: relocalization answers unrefined
   std::unique_ptr<GatewayHub> hub;
 };
 
@@ -64,6 +66,14 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
     stack->relocalizer =
         std::make_unique<RelocalizationClient>(*channel, config->relocalization.deadline_ms);
     backends.relocalizer = stack->relocalizer.get();
+    if (!config->mapping.address.empty()) {
+      absl::StatusOr<std::shared_ptr<grpc::Channel>> mapping_channel =
+          semnav::MakeChannel(config->mapping);
+      if (!mapping_channel.ok()) return mapping_channel.status();
+      stack->lost_scan = std::make_unique<MappingLostScanClient>(
+          *mapping_channel, config->relocalization.deadline_ms);
+      backends.lost_scan = stack->lost_scan.get();
+    }
   }
   if (!config->prior_path.empty()) {
     absl::StatusOr<ConceptNetCooccurrence> prior = ConceptNetCooccurrence::Load(config->prior_path);

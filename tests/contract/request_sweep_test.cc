@@ -169,6 +169,8 @@ const std::map<std::string, std::string>& SensibleBases() {
       {"semnav.mapping.v1.MappingService/DeleteMap",
        R"pb(request_id: "@UNIQUE@" map_id: "sweep")pb"},
       {"semnav.mapping.v1.MappingService/ResetMap", R"pb(request_id: "@UNIQUE@")pb"},
+      {"semnav.mapping.v1.MappingService/MatchLostScan", R"pb(robot_id: "sweep"
+                                                              coarse { x: 1 y: 1 yaw: 0.5 })pb"},
       {"semnav.planning.v1.PlanningService/PlanPath", absl::StrCat("source {", kGrid, R"pb(}
                                                                                            start { x: 0.6 y: 0.6 }
                     goal { x: 3.2 y: 3.2 }

@@ -8,6 +8,7 @@
 #include "services/mapping/core/detection_lifter.h"
 #include "services/mapping/core/grid_layers.h"
 #include "services/mapping/core/hierarchical_grid.h"
+#include "services/mapping/core/scan_matcher.h"
 #include "services/mapping/core/scene_graph.h"
 #include "services/mapping/core/semantic_map.h"
 
@@ -31,6 +32,10 @@ struct MappingConfig {
   SemanticMapConfig semantic;
   SceneGraphConfig scene;
   size_t grid_change_log_size = 256;  // grid changes remembered for resumable watches
+  // A lost robot's look-around against the grid (MatchLostScan).
+  ScanMatchConfig scan_match;
+  // Obstacle cells kept per lost robot (5 cm cells: 20,000 = 1 km of wall, 160 KiB).
+  size_t lost_scan_max_cells = 20000;
   std::map<std::string, std::vector<std::string>> synonyms;  // query label -> other names
 };
 

@@ -49,6 +49,7 @@ struct MappingEngine::State {
     scene.Replace(std::move(content.objects), content.next_object_id);
     last_stamp.clear();
     pose_untrusted.clear();
+    lost_scans.clear();
     embedding_dim = 0;
     for (const SceneObject& o : scene.objects()) {
       if (!o.embedding.empty()) embedding_dim = static_cast<int>(o.embedding.size());
@@ -62,6 +63,9 @@ struct MappingEngine::State {
   SceneGraph scene;
   absl::flat_hash_map<std::string, int64_t> last_stamp;
   absl::flat_hash_map<std::string, bool> pose_untrusted;  // per robot: its last frame's flag
+  // Per robot while its frames are untrusted: the obstacle cells (reported frame) they showed,
+  // kept for MatchLostScan instead of entering the map.
+  absl::flat_hash_map<std::string, absl::flat_hash_set<CellIndex>> lost_scans;
   int embedding_dim = 0;
   std::deque<std::pair<uint64_t, GridWindow>> grid_changes;
   uint64_t grid_forgotten_before = 0;
@@ -134,7 +138,11 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
     if (range >= config_.range.min_m && range <= config_.range.max_m)
       points.push_back(rotation * p + origin);
   }
-  std::vector<VoxelUpdate> updates = integrator_.CastScan(key_space_, points, origin);
+  // A frame whose pose the robot does not trust stays out of the occupancy map: at a wrong pose
+  // it would draw walls where there are none, and a lost robot's look-around would then match
+  // its own frames (as landmarks did: docs/performance/mission.md, "Losing the pose").
+  std::vector<VoxelUpdate> updates;
+  if (!frame.pose_untrusted) updates = integrator_.CastScan(key_space_, points, origin);
   std::vector<std::pair<const Detection*, LiftedDetection>> lifted_detections;
   if (!result.blurred) {
     for (const Detection& detection : frame.detections) {
@@ -156,6 +164,20 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   result.voxels_updated = static_cast<uint32_t>(touched.size());
   const absl::flat_hash_set<VoxelColumns::ColumnId> columns = s.columns.Apply(touched);
   s.grid.Update(s.columns, columns);
+  if (frame.pose_untrusted) {
+    absl::flat_hash_set<CellIndex>& scan = s.lost_scans[frame.robot_id];
+    if (!s.pose_untrusted[frame.robot_id]) scan.clear();  // a new loss
+    const ClimbingHeights& heights = s.grid.heights();
+    for (const Eigen::Vector3f& p : points) {
+      if (scan.size() >= config_.lost_scan_max_cells) break;
+      // Obstacles only: the floor (and what lies on it within 10 cm) and the ceiling match
+      // everywhere.
+      if (p.z() < heights.foot_m + 0.1 || p.z() > heights.ceiling_m) continue;
+      scan.insert(s.grid.CellOf(p.x(), p.y()));
+    }
+  } else {
+    s.lost_scans.erase(frame.robot_id);
+  }
 
   std::vector<ObjectObservation> observations;
   for (auto& [detection, lifted] : lifted_detections) {
@@ -432,6 +454,62 @@ absl::Status MappingEngine::Restore(const std::string& payload) {
   state_->grid_changes.clear();
   state_->grid_forgotten_before = revision_;  // watchers resync with a snapshot
   return absl::OkStatus();
+}
+
+absl::StatusOr<ScanMatchResult> MappingEngine::MatchLostScan(const std::string& robot_id,
+                                                             const PlanarCorrection& coarse) const {
+  if (robot_id.empty()) return InvalidField("robot_id", "must not be empty");
+  if (absl::Status s = CheckLength(robot_id, "robot_id", kMaxIdBytes); !s.ok()) return s;
+  if (absl::Status s = CheckMagnitude(coarse.x, "coarse.x", kMaxCoordinateM); !s.ok()) return s;
+  if (absl::Status s = CheckMagnitude(coarse.y, "coarse.y", kMaxCoordinateM); !s.ok()) return s;
+  if (absl::Status s = CheckMagnitude(coarse.yaw, "coarse.yaw", 4.0 * M_PI); !s.ok()) return s;
+  std::vector<Eigen::Vector2d> scan;
+  OccupiedRaster raster;
+  {
+    absl::ReaderMutexLock lock(&mu_);
+    const State& s = *state_;
+    const auto found = s.lost_scans.find(robot_id);
+    if (found == s.lost_scans.end() || found->second.empty()) {
+      return FieldStatus(absl::StatusCode::kNotFound, "robot_id",
+                         "the robot sent no untrusted frame with obstacles since it got lost",
+                         "NO_LOST_SCAN");
+    }
+    const double res = s.grid.config().resolution_m;
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e18);
+    Eigen::Vector2d hi = Eigen::Vector2d::Constant(-1e18);
+    scan.reserve(found->second.size());
+    for (const CellIndex& cell : found->second) {
+      const Eigen::Vector2d p((cell.x + 0.5) * res, (cell.y + 0.5) * res);
+      scan.push_back(p);
+      const Eigen::Vector2d q = coarse.Apply(p);
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+    // The hash set's order is no order: sort so the answer depends on the cells only.
+    std::sort(scan.begin(), scan.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+      return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y();
+    });
+    // The scan's box after `coarse`, grown by what the search can move a cell: the window plus
+    // the rotation of the farthest cell about the centroid.
+    const double margin = config_.scan_match.linear_window_m +
+                          (hi - lo).norm() * std::sin(config_.scan_match.angular_window_rad) + res;
+    const CellIndex min = s.grid.CellOf(lo.x() - margin, lo.y() - margin);
+    const CellIndex max = s.grid.CellOf(hi.x() + margin, hi.y() + margin);
+    raster.resolution = res;
+    raster.origin_x = min.x * res;
+    raster.origin_y = min.y * res;
+    raster.width = max.x - min.x + 1;
+    raster.height = max.y - min.y + 1;
+    raster.occupied.assign(static_cast<size_t>(raster.width) * raster.height, 0);
+    for (int row = 0; row < raster.height; ++row) {
+      for (int col = 0; col < raster.width; ++col) {
+        const uint8_t value = s.grid.Value({min.x + col, min.y + row});
+        raster.occupied[static_cast<size_t>(row) * raster.width + col] =
+            value != HierarchicalGrid::kFree && value != HierarchicalGrid::kUnknown;
+      }
+    }
+  }
+  return MatchScan(raster, scan, coarse, config_.scan_match);
 }
 
 void MappingEngine::Reset() {

@@ -16,6 +16,7 @@
 #include "services/mapping/core/frame_validation.h"
 #include "services/mapping/core/mapping_config.h"
 #include "services/mapping/core/octomap_integrator.h"
+#include "services/mapping/core/scan_matcher.h"
 #include "services/mapping/core/sensor_frame.h"
 #include "services/mapping/core/voxel_columns.h"
 
@@ -79,6 +80,13 @@ class MappingEngine {
   SceneSnapshot Scene() const;
   std::optional<SceneDelta> SceneChangesSince(uint64_t since) const;
   absl::StatusOr<std::vector<ObjectHit>> QueryObjects(const ObjectQuery& query) const;
+
+  // Refines `coarse` (the correction from the robot's reported frame to the map that
+  // relocalization found) by matching the obstacle cells of the robot's untrusted frames since it
+  // got lost against the grid (scan_matcher.h). NotFound: the robot sent no untrusted frame since
+  // its last trusted one.
+  absl::StatusOr<ScanMatchResult> MatchLostScan(const std::string& robot_id,
+                                                const PlanarCorrection& coarse) const;
 
   // Blocks until the revision exceeds `revision` or `timeout` passes; returns the revision.
   uint64_t AwaitChange(uint64_t revision, absl::Duration timeout) const;

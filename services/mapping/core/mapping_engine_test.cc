@@ -205,6 +205,67 @@ TEST(MappingEngineTest, UntrustedFramesAndTheLookbackBeforeThemMarkTheirInstance
   }
 }
 
+// Camera poses turning in place at `at` (1.2 m high), `count` headings over a full turn.
+std::vector<CameraPose> LookAround(const Eigen::Vector2d& at, int count) {
+  std::vector<CameraPose> poses;
+  for (int i = 0; i < count; ++i) {
+    const double heading = 2.0 * M_PI * i / count;
+    poses.push_back(
+        testing::LookAt({at.x(), at.y(), 1.2},
+                        {at.x() + 3.0 * std::cos(heading), at.y() + 3.0 * std::sin(heading), 0.8}));
+  }
+  return poses;
+}
+
+// A robot carried off maps nothing while it distrusts its pose: its frames keep their obstacle
+// cells for MatchLostScan, which takes relocalization's coarse answer to the walls.
+TEST(MappingEngineTest, ALostRobotsFramesStayOutOfTheMapAndRefineItsCorrection) {
+  MappingEngine engine{MappingConfig{}};
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  int64_t stamp = 0;
+  for (const CameraPose& pose : LookAround({3.0, 2.0}, 12)) {
+    ASSERT_TRUE(engine.AddFrame(testing::RenderFrame(room, pose, stamp += kFrameNs)).ok());
+  }
+  const GridLayers before = engine.Grid(std::nullopt, nullptr, false);
+  EXPECT_EQ(engine.MatchLostScan("robot-1", {}).status().code(), absl::StatusCode::kNotFound);
+
+  // The robot believes it stands 1 m / -0.5 m and 25 deg from where it is: reported = wrong *
+  // true, so the correction that takes its frames to the map is wrong^-1.
+  const PlanarCorrection wrong{1.0, -0.5, 25.0 * M_PI / 180.0};
+  const Eigen::AngleAxisd turn(wrong.yaw, Eigen::Vector3d::UnitZ());
+  for (const CameraPose& pose : LookAround({1.5, 2.5}, 8)) {
+    SensorFrame frame = testing::RenderFrame(room, pose, stamp += kFrameNs);
+    const Eigen::Vector2d reported = wrong.Apply(pose.position.head<2>());
+    frame.pose.position = Eigen::Vector3d(reported.x(), reported.y(), pose.position.z());
+    frame.pose.orientation = Eigen::Quaterniond(turn) * pose.orientation;
+    frame.pose_untrusted = true;
+    ASSERT_TRUE(engine.AddFrame(frame).ok());
+  }
+  const GridLayers after = engine.Grid(std::nullopt, nullptr, false);
+  EXPECT_EQ(after.hierarchical, before.hierarchical);  // nothing drawn at the wrong pose
+  EXPECT_EQ(after.origin_x, before.origin_x);
+
+  const double c = std::cos(-wrong.yaw);
+  const double s = std::sin(-wrong.yaw);
+  const PlanarCorrection truth{-(c * wrong.x - s * wrong.y), -(s * wrong.x + c * wrong.y),
+                               -wrong.yaw};
+  // Relocalization's answer from a few objects: 0.15 m, -0.1 m and 5 deg off.
+  const PlanarCorrection coarse{truth.x + 0.15, truth.y - 0.1, truth.yaw + 5.0 * M_PI / 180.0};
+  absl::StatusOr<ScanMatchResult> match = engine.MatchLostScan("robot-1", coarse);
+  ASSERT_TRUE(match.ok()) << match.status();
+  EXPECT_TRUE(match->refined);
+  const Eigen::Vector2d robot_reported = wrong.Apply({1.5, 2.5});
+  EXPECT_LT((match->correction.Apply(robot_reported) - Eigen::Vector2d(1.5, 2.5)).norm(), 0.08)
+      << match->correction.x << " " << match->correction.y;
+  EXPECT_LT(std::abs(match->correction.yaw - truth.yaw), 1.0 * M_PI / 180.0);
+
+  // A trusted frame ends the loss: its scan is gone.
+  ASSERT_TRUE(
+      engine.AddFrame(testing::RenderFrame(room, LookAround({3.0, 2.0}, 1)[0], stamp += kFrameNs))
+          .ok());
+  EXPECT_EQ(engine.MatchLostScan("robot-1", coarse).status().code(), absl::StatusCode::kNotFound);
+}
+
 TEST(MappingEngineTest, BlurredColourImageSkipsDetectionsButKeepsDepth) {
   MappingEngine engine{MappingConfig{}};
   SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);

@@ -1,6 +1,7 @@
 #include "services/mapping/server/mapping_config_yaml.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "absl/strings/strip.h"
@@ -56,6 +57,38 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   grid.Check(c.layers.robot_radius_m >= 0.0, "robot_radius_m", "must be >= 0");
   grid.Check(change_log >= 1, "change_log_size", "must be >= 1");
   c.grid_change_log_size = static_cast<size_t>(std::max(change_log, 1));
+
+  ConfigReader scan = section.Child("scan_match");
+  ScanMatchConfig& m = c.scan_match;
+  int max_cells = static_cast<int>(c.lost_scan_max_cells);
+  scan.Read("linear_window_m", &m.linear_window_m)
+      .Read("angular_window_rad", &m.angular_window_rad)
+      .Read("angular_step_rad", &m.angular_step_rad)
+      .Read("sigma_m", &m.sigma_m)
+      .Read("min_score", &m.min_score)
+      .Read("min_gain", &m.min_gain)
+      .Read("min_scan_cells", &m.min_scan_cells)
+      .Read("max_cells", &max_cells);
+  // The search visits (2 w / r + 1)^2 (2 a / s + 1) poses: the bounds keep it under ~10^6.
+  scan.Check(m.linear_window_m >= 0.0 && m.linear_window_m <= 2.0, "linear_window_m",
+             "must be in [0, 2]");
+  scan.Check(m.angular_window_rad >= 0.0 && m.angular_window_rad <= 0.8, "angular_window_rad",
+             "must be in [0, 0.8]");
+  scan.Check(m.angular_step_rad >= 0.002 && m.angular_step_rad <= 0.2, "angular_step_rad",
+             "must be in [0.002, 0.2]");
+  scan.Check(m.sigma_m > 0.0 && m.sigma_m <= 1.0, "sigma_m", "must be in (0, 1]");
+  scan.Check(m.min_score >= 0.0 && m.min_score <= 1.0, "min_score", "must be in [0, 1]");
+  scan.Check(m.min_gain >= 0.0 && m.min_gain <= 1.0, "min_gain", "must be in [0, 1]");
+  if (c.grid.resolution_m > 0.0 && m.angular_step_rad > 0.0) {
+    const double side = 2.0 * std::round(m.linear_window_m / c.grid.resolution_m) + 1.0;
+    const double turns = 2.0 * std::floor(m.angular_window_rad / m.angular_step_rad) + 1.0;
+    scan.Check(side * side * turns <= 250000.0, "linear_window_m",
+               "the window over the grid resolution and the angular step visits more than "
+               "250,000 poses");
+  }
+  scan.Check(m.min_scan_cells >= 1, "min_scan_cells", "must be >= 1");
+  scan.Check(max_cells >= 1 && max_cells <= 200000, "max_cells", "must be in [1, 200000]");
+  c.lost_scan_max_cells = static_cast<size_t>(std::clamp(max_cells, 1, 200000));
 
   ConfigReader semantic = section.Child("semantic");
   semantic.Read("blur_min_laplacian_variance", &c.blur_min_laplacian_variance)

@@ -407,4 +407,21 @@ grpc::ServerUnaryReactor* MappingServiceImpl::ResetMap(grpc::CallbackServerConte
                }));
 }
 
+grpc::ServerUnaryReactor* MappingServiceImpl::MatchLostScan(grpc::CallbackServerContext* context,
+                                                            const v1::MatchLostScanRequest* request,
+                                                            v1::MatchLostScanResponse* response) {
+  const PlanarCorrection coarse{request->coarse().x(), request->coarse().y(),
+                                request->coarse().yaw()};
+  const absl::StatusOr<ScanMatchResult> match = engine_.MatchLostScan(request->robot_id(), coarse);
+  if (!match.ok()) return Reply(context, FromCore(match.status()));
+  response->mutable_correction()->set_x(match->correction.x);
+  response->mutable_correction()->set_y(match->correction.y);
+  response->mutable_correction()->set_yaw(match->correction.yaw);
+  response->set_refined(match->refined);
+  response->set_score(match->score);
+  response->set_coarse_score(match->coarse_score);
+  response->set_scan_cells(static_cast<uint32_t>(match->scan_cells));
+  return Reply(context, grpc::Status::OK);
+}
+
 }  // namespace semnav::mapping

@@ -61,6 +61,9 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
   grpc::ServerUnaryReactor* ResetMap(grpc::CallbackServerContext* context,
                                      const v1::ResetMapRequest* request,
                                      v1::ResetMapResponse* response) override;
+  grpc::ServerUnaryReactor* MatchLostScan(grpc::CallbackServerContext* context,
+                                          const v1::MatchLostScanRequest* request,
+                                          v1::MatchLostScanResponse* response) override;
 
  private:
   // Runs `call` once per (method, request_id) and replays its answer for repeats.

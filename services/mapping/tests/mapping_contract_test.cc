@@ -480,3 +480,107 @@ TEST_F(MappingContractTest, GridWatchSendsSnapshotThenChangedWindowAndResumes) {
 
 }  // namespace
 }  // namespace semnav::mapping
+
+namespace semnav::mapping {
+namespace {
+
+// A camera turning in place at `at`, 1.2 m high, heading `heading` (radians).
+CameraPose LookFrom(const Eigen::Vector2d& at, double heading) {
+  return testing::LookAt({at.x(), at.y(), 1.2},
+                         {at.x() + 3.0 * std::cos(heading), at.y() + 3.0 * std::sin(heading), 0.8});
+}
+
+// A robot that reports a wrong pose streams its look-around with pose_untrusted: nothing of it
+// enters the grid, and MatchLostScan takes a coarse correction to the walls it saw.
+TEST_F(MappingContractTest, ALostRobotsLookAroundRefinesItsCorrectionAndLeavesTheGridAlone) {
+  const testing::SyntheticRoom room = testing::StandardRoom();
+  std::vector<v1::SensorFrame> mapped;
+  int64_t stamp = 0;
+  for (int i = 0; i < 12; ++i) {
+    mapped.push_back(testing::FrameToProto(
+        testing::RenderFrame(room, LookFrom({3.0, 2.0}, 2.0 * M_PI * i / 12), stamp += kFrameNs)));
+  }
+  Stream(mapped);
+  const std::string grid_before = Grid().grid().SerializeAsString();
+
+  // The robot believes it is 1 m / -0.5 m and 25 deg off: reported = wrong * true.
+  const double yaw = 25.0 * M_PI / 180.0;
+  const Eigen::Rotation2Dd turn(yaw);
+  const Eigen::Vector2d shift(1.0, -0.5);
+  std::vector<v1::SensorFrame> lost;
+  for (int i = 0; i < 8; ++i) {
+    const CameraPose truth = LookFrom({1.5, 2.5}, 2.0 * M_PI * i / 8);
+    SensorFrame frame = testing::RenderFrame(room, truth, stamp += kFrameNs);
+    const Eigen::Vector2d reported = turn * truth.position.head<2>() + shift;
+    frame.pose.position = Eigen::Vector3d(reported.x(), reported.y(), truth.position.z());
+    frame.pose.orientation =
+        Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ())) * truth.orientation;
+    v1::SensorFrame proto = testing::FrameToProto(frame);
+    proto.set_pose_untrusted(true);
+    lost.push_back(proto);
+  }
+  for (const v1::FrameAck& ack : Stream(lost)) EXPECT_TRUE(ack.accepted()) << ack.error().field();
+  v1::GetGridMapResponse after = Grid();
+  after.mutable_grid()->set_revision(0);  // frames bump the revision, not the cells
+  v1::GetGridMapResponse before;
+  ASSERT_TRUE(before.mutable_grid()->ParseFromString(grid_before));
+  before.mutable_grid()->set_revision(0);
+  EXPECT_EQ(after.grid().SerializeAsString(), before.grid().SerializeAsString());
+
+  // The true correction is wrong^-1; relocalization's coarse answer is 0.15 m and 5 deg off it.
+  const Eigen::Rotation2Dd back(-yaw);
+  const Eigen::Vector2d truth_shift = -(back * shift);
+  v1::MatchLostScanRequest request;
+  request.set_robot_id("robot-1");
+  request.mutable_coarse()->set_x(truth_shift.x() + 0.15);
+  request.mutable_coarse()->set_y(truth_shift.y());
+  request.mutable_coarse()->set_yaw(-yaw + 5.0 * M_PI / 180.0);
+  v1::MatchLostScanResponse response;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(stub_->MatchLostScan(&context, request, &response).ok());
+  }
+  EXPECT_TRUE(response.refined());
+  EXPECT_GT(response.score(), response.coarse_score());
+  EXPECT_GE(response.scan_cells(), 30u);
+  EXPECT_NEAR(response.correction().yaw(), -yaw, 1.0 * M_PI / 180.0);
+  const Eigen::Vector2d robot =
+      Eigen::Rotation2Dd(response.correction().yaw()) * (turn * Eigen::Vector2d(1.5, 2.5) + shift) +
+      Eigen::Vector2d(response.correction().x(), response.correction().y());
+  EXPECT_LT((robot - Eigen::Vector2d(1.5, 2.5)).norm(), 0.08);
+
+  // Bad requests name their field; an unknown robot has no lost scan.
+  auto call = [&](const v1::MatchLostScanRequest& r) {
+    grpc::ClientContext context;
+    v1::MatchLostScanResponse ignored;
+    return stub_->MatchLostScan(&context, r, &ignored);
+  };
+  v1::MatchLostScanRequest bad = request;
+  bad.mutable_coarse()->set_yaw(std::numeric_limits<double>::quiet_NaN());
+  grpc::Status status = call(bad);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "coarse.yaw");
+  bad = request;
+  bad.mutable_coarse()->set_x(1e300);
+  status = call(bad);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "coarse.x");
+  EXPECT_LT(status.error_message().size(), 200u);
+  bad = request;
+  bad.set_robot_id(std::string(100000, 'r'));
+  status = call(bad);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(GetDetail<ErrorInfo>(status)->field(), "robot_id");
+  EXPECT_LT(status.error_message().size(), 300u);
+  bad = request;
+  bad.set_robot_id("robot-2");
+  status = call(bad);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(GetDetail<ErrorInfo>(status)->reason(), "NO_LOST_SCAN");
+  // A trusted frame ends the loss.
+  Stream({RoomFrame(stamp += kFrameNs)});
+  EXPECT_EQ(call(request).error_code(), grpc::StatusCode::NOT_FOUND);
+}
+
+}  // namespace
+}  // namespace semnav::mapping

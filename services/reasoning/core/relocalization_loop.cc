@@ -38,6 +38,15 @@ Eigen::Vector3d PlanarTransform::Apply(const Eigen::Vector3d& point) const {
          translation;
 }
 
+namespace {
+
+// a after b: p -> a(b(p)).
+PlanarTransform Compose(const PlanarTransform& a, const PlanarTransform& b) {
+  return PlanarTransform{a.Apply(b.translation), Wrap(a.yaw + b.yaw)};
+}
+
+}  // namespace
+
 RobotPose PlanarTransform::Apply(const RobotPose& pose) const {
   return RobotPose{Apply(pose.position), Wrap(pose.yaw + yaw)};
 }
@@ -94,6 +103,13 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now,
                              absl::StrFormat("relocalization did not answer within %.1f s",
                                              config_.answer_timeout_s),
                              graph);
+      }
+      return {};
+    case Phase::kAwaitingRefinement:
+      if (now >= phase_deadline_) {
+        return Apply(now, pending_,
+                     absl::StrFormat("scan refinement did not answer within %.1f s",
+                                     config_.answer_timeout_s));
       }
       return {};
     case Phase::kTracking:
@@ -273,6 +289,53 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(
 std::vector<RelocalizationAction> RelocalizationLoop::Recovered(double now,
                                                                 const RelocalizationAnswer& answer,
                                                                 bool stop_turning) {
+  std::vector<RelocalizationAction> actions;
+  if (stop_turning) {
+    actions.push_back(Hold(next_command_id_++, "relocalized: the look-around ends"));
+  }
+  if (!config_.refine_with_scan) {
+    std::vector<RelocalizationAction> applied = Apply(now, answer, "");
+    actions.insert(actions.end(), applied.begin(), applied.end());
+    return actions;
+  }
+  pending_ = answer;
+  phase_ = Phase::kAwaitingRefinement;
+  phase_deadline_ = now + config_.answer_timeout_s;
+  RelocalizationAction refine;
+  refine.kind = RelocalizationAction::Kind::kRefine;
+  // The robot's frames carry the pose it reports: the current correction applied to odometry.
+  refine.map_from_odom = Compose(answer.map_from_odom, map_from_odom_.Inverse());
+  refine.message =
+      absl::StrFormat("refining the answer (%d inliers) against the walls", answer.inliers);
+  actions.push_back(std::move(refine));
+  return actions;
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::OnRefinement(
+    double now, const absl::StatusOr<ScanRefinement>& refinement) {
+  if (phase_ != Phase::kAwaitingRefinement) return {};  // late: the coarse answer was applied
+  if (!refinement.ok()) {
+    return Apply(now, pending_,
+                 absl::StrFormat("scan refinement failed: %s", refinement.status().message()));
+  }
+  if (!refinement->refined) {
+    return Apply(now, pending_,
+                 absl::StrFormat("scan refinement kept the answer (score %.2f, at the answer "
+                                 "%.2f)",
+                                 refinement->score, refinement->coarse_score));
+  }
+  RelocalizationAnswer refined = pending_;
+  refined.map_from_odom = Compose(refinement->map_from_reported, map_from_odom_);
+  const PlanarTransform change = Compose(refined.map_from_odom, pending_.map_from_odom.Inverse());
+  return Apply(now, refined,
+               absl::StrFormat("scan-refined by %.2f m, %.1f deg (score %.2f -> %.2f)",
+                               change.translation.head<2>().norm(), change.yaw * 180.0 / M_PI,
+                               refinement->coarse_score, refinement->score));
+}
+
+std::vector<RelocalizationAction> RelocalizationLoop::Apply(double now,
+                                                            const RelocalizationAnswer& answer,
+                                                            const std::string& how) {
   const PlanarTransform previous = map_from_odom_;
   map_from_odom_ = answer.map_from_odom;
   trusted_ = true;
@@ -280,17 +343,14 @@ std::vector<RelocalizationAction> RelocalizationLoop::Recovered(double now,
   phase_ = Phase::kTracking;
   last_ended_ = now;
   std::vector<RelocalizationAction> actions;
-  if (stop_turning) {
-    actions.push_back(Hold(next_command_id_++, "relocalized: the look-around ends"));
-  }
   RelocalizationAction correct;
   correct.kind = RelocalizationAction::Kind::kCorrect;
   correct.map_from_odom = map_from_odom_;
   correct.message = absl::StrFormat(
-      "relocalized (%s): map_from_odom moved by %.2f m, %.1f deg (%d inliers, rms %.2f m)",
+      "relocalized (%s): map_from_odom moved by %.2f m, %.1f deg (%d inliers, rms %.2f m)%s",
       trigger_, (map_from_odom_.translation - previous.translation).head<2>().norm(),
-      Wrap(map_from_odom_.yaw - previous.yaw) * 180.0 / M_PI, answer.inliers,
-      answer.rms_residual_m);
+      Wrap(map_from_odom_.yaw - previous.yaw) * 180.0 / M_PI, answer.inliers, answer.rms_residual_m,
+      how.empty() ? "" : "; " + how);
   actions.push_back(correct);
   if (paused_task_) {
     RelocalizationAction resume;

@@ -69,6 +69,12 @@ struct RelocalizationLoopConfig {
   double retrigger_after_s = 15.0;
   // Size of an observed object whose scene-graph entry has no size: landmark scale (metres).
   double default_object_scale_m = 0.5;
+  // A reliable answer goes to mapping's scan matcher before it is applied: 3-5 objects 1-4 m
+  // apart leave 2-10 deg of heading error, the walls of the look-around pin it to half a degree
+  // (docs/algorithms/relocalization.md, "Scan refinement"). The hub turns it off when no mapping
+  // service is configured. Without a refinement answer within answer_timeout_s the coarse answer
+  // is applied.
+  bool refine_with_scan = true;
 };
 
 enum class LocalizationReport { kOk, kUncertain, kLost };
@@ -100,12 +106,22 @@ struct RelocalizationAnswer {
   double rms_residual_m = 0.0;
 };
 
+// Mapping's scan matcher's answer: the refined correction from the robot's reported frame (the
+// frame its sensor frames carry: the loop's map_from_odom applied to its odometry) to the map.
+struct ScanRefinement {
+  PlanarTransform map_from_reported;
+  bool refined = false;
+  double score = 0.0;
+  double coarse_score = 0.0;
+};
+
 // What the hub does for the loop, in order.
 struct RelocalizationAction {
   enum class Kind {
     kPauseTask,   // pause the robot's task (reason in message); logs EVENT_KIND_RELOCALIZING
     kCommand,     // send `command` (rotate in place or hold)
     kRelocalize,  // call relocalization with `observed`
+    kRefine,      // call mapping's scan matcher with `map_from_odom` (reported frame -> map)
     kCorrect,     // `map_from_odom` is the robot's new correction; logs EVENT_KIND_RELOCALIZED
     kResumeTask,  // resume the task the loop paused
     kFailTask,    // the task fails with `message`; logs EVENT_KIND_RELOCALIZATION_FAILED
@@ -134,6 +150,9 @@ class RelocalizationLoop {
   // Relocalization answered (or failed: NOT_FOUND, UNAVAILABLE, ...).
   std::vector<RelocalizationAction> OnAnswer(double now,
                                              const absl::StatusOr<RelocalizationAnswer>& answer);
+  // Mapping's scan matcher answered (or failed): the coarse answer stands on any failure.
+  std::vector<RelocalizationAction> OnRefinement(double now,
+                                                 const absl::StatusOr<ScanRefinement>& refinement);
   // A new session: the robot's odometry starts over, so the last pose is no reference for jumps.
   void OnSessionOpened();
 
@@ -149,7 +168,7 @@ class RelocalizationLoop {
   static constexpr uint64_t kFirstCommandId = uint64_t{1} << 62;
 
  private:
-  enum class Phase { kTracking, kLookingAround, kAwaitingAnswer };
+  enum class Phase { kTracking, kLookingAround, kAwaitingAnswer, kAwaitingRefinement };
 
   std::vector<RelocalizationAction> Start(double now, const std::string& trigger,
                                           const SceneGraph& graph);
@@ -159,9 +178,13 @@ class RelocalizationLoop {
   std::vector<ObservedObject> Observed(const SceneGraph& graph) const;
   // A query while the turn goes on (see query_interval_s), or none.
   std::vector<RelocalizationAction> QueryDuringTurn(double now, const SceneGraph& graph);
-  // A reliable answer that does not confirm a LOST pose: correct, resume.
+  // A reliable answer that does not confirm a LOST pose: refine it (refine_with_scan), or
+  // correct and resume.
   std::vector<RelocalizationAction> Recovered(double now, const RelocalizationAnswer& answer,
                                               bool stop_turning);
+  // Correct by `answer` (`how`: what refined it, for the event), resume.
+  std::vector<RelocalizationAction> Apply(double now, const RelocalizationAnswer& answer,
+                                          const std::string& how);
   // Why an answer is no recovery (empty = it is one).
   std::string Rejection(const absl::StatusOr<RelocalizationAnswer>& answer) const;
   bool Jumped(double now, const RobotPose& odom_pose) const;
@@ -182,7 +205,8 @@ class RelocalizationLoop {
   double call_deadline_ = 0.0;
   double next_query_ = 0.0;
   size_t last_query_size_ = 0;
-  double turn_rate_ = 0.0;  // this look-around's rate and duration
+  RelocalizationAnswer pending_;  // the coarse answer while its refinement is awaited
+  double turn_rate_ = 0.0;        // this look-around's rate and duration
   double turn_duration_ = 0.0;
   double last_ended_ = -1e18;
   std::optional<double> last_state_time_;

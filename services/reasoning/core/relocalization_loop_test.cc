@@ -39,6 +39,7 @@ RelocalizationLoopConfig Config() {
   config.min_observed_objects = 3;
   config.min_object_detections = 1;  // the tests below count on single detections
   config.max_attempts = 2;
+  config.refine_with_scan = false;  // the refinement's own tests below turn it on
   return config;
 }
 
@@ -332,8 +333,12 @@ TEST(RelocalizationLoopTest, QueriesDuringTheTurnAndAReliableAnswerEndsItEarly) 
   answer.reliable = true;
   answer.inliers = 4;
   actions = loop.OnAnswer(3.5, answer);
-  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kCorrect, Kind::kResumeTask}));
+  // The turn stops; by default the answer goes to the scan matcher first (its tests below).
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kRefine}));
   EXPECT_EQ(actions[0].command.kind, CommandKind::kHold);
+  EXPECT_TRUE(loop.relocalizing());
+  actions = loop.OnRefinement(4.0, absl::UnavailableError("mapping is down"));
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
   EXPECT_FALSE(loop.relocalizing());
   EXPECT_EQ(loop.recoveries(), 1);
   EXPECT_NEAR(loop.map_from_odom().yaw, 0.4, 1e-12);
@@ -347,6 +352,103 @@ TEST(RelocalizationLoopTest, TheTurnKeepsItsAngleAtTheRobotsLowerYawRate) {
   ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kPauseTask, Kind::kCommand}));
   EXPECT_DOUBLE_EQ(actions[1].command.angular_speed, 0.4);
   EXPECT_NEAR(actions[1].command.duration_s, 8.4 * 0.75 / 0.4, 1e-9);  // 15.75 s
+}
+
+}  // namespace
+}  // namespace semnav::reasoning
+
+namespace semnav::reasoning {
+namespace {
+
+RelocalizationAnswer Reliable(double x, double y, double yaw) {
+  RelocalizationAnswer answer;
+  answer.map_from_odom = PlanarTransform{Eigen::Vector3d(x, y, 0.0), yaw};
+  answer.reliable = true;
+  answer.inliers = 4;
+  return answer;
+}
+
+// Operator request, a full turn, the answer: returns the actions that follow the answer.
+std::vector<RelocalizationAction> RelocalizeOnce(RelocalizationLoop& loop, double start,
+                                                 const RelocalizationAnswer& answer) {
+  loop.OnRequest(start, "", Before());
+  loop.OnState(start + 12.0, Pose(0, 0), LocalizationReport::kOk, After(), false);
+  return loop.OnAnswer(start + 12.1, answer);
+}
+
+RelocalizationLoopConfig RefiningConfig() {
+  RelocalizationLoopConfig config = Config();
+  config.refine_with_scan = true;
+  return config;
+}
+
+// The coarse answer goes to the scan matcher in the frame the robot's sensor frames carry (the
+// current correction applied to odometry), and the refined correction comes back to odometry.
+TEST(RelocalizationLoopScanRefinementTest, TheAnswerIsRefinedInTheRobotsReportedFrame) {
+  RelocalizationLoop loop(RefiningConfig());
+  // First recovery: the refinement keeps the answer, so the correction is (10, 0, 0 deg).
+  std::vector<RelocalizationAction> actions = RelocalizeOnce(loop, 0.0, Reliable(10, 0, 0));
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kRefine}));
+  EXPECT_TRUE(loop.relocalizing());  // no motion until the refinement answers
+  ScanRefinement kept;
+  kept.map_from_reported = actions[0].map_from_odom;
+  kept.refined = false;
+  kept.score = 0.2;
+  actions = loop.OnRefinement(12.5, kept);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "kept the answer (score 0.20"))
+      << actions[0].message;
+  EXPECT_NEAR(loop.map_from_odom().translation.x(), 10.0, 1e-12);
+  EXPECT_FALSE(loop.relocalizing());
+
+  // Second: the answer puts odometry at (0, 10) turned 90 deg. Reported = (10, 0, 0) * odometry,
+  // so the matcher gets answer * (10, 0, 0)^-1: p -> R90 (p - (10, 0)) + (0, 10), which takes
+  // (10, 0) to (0, 10) and turns by 90 deg: translation (0, 10) - R90 (10, 0) = (0, 0).
+  actions = RelocalizeOnce(loop, 20.0, Reliable(0, 10, M_PI / 2));
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kRefine}));
+  EXPECT_NEAR(actions[0].map_from_odom.translation.x(), 0.0, 1e-12);
+  EXPECT_NEAR(actions[0].map_from_odom.translation.y(), 0.0, 1e-12);
+  EXPECT_NEAR(actions[0].map_from_odom.yaw, M_PI / 2, 1e-12);
+  // The walls move it 0.1 m along x and 2 deg: map_from_odom = refined * (10, 0, 0).
+  ScanRefinement refined;
+  refined.map_from_reported = PlanarTransform{Eigen::Vector3d(0.1, 0.0, 0.0), M_PI / 2 + 0.035};
+  refined.refined = true;
+  refined.score = 0.8;
+  refined.coarse_score = 0.5;
+  actions = loop.OnRefinement(32.5, refined);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "scan-refined")) << actions[0].message;
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "score 0.50 -> 0.80")) << actions[0].message;
+  // (10, 0) in reported terms -> R(92 deg) (10, 0) + (0.1, 0).
+  const double yaw = M_PI / 2 + 0.035;
+  EXPECT_NEAR(loop.map_from_odom().translation.x(), 10.0 * std::cos(yaw) + 0.1, 1e-9);
+  EXPECT_NEAR(loop.map_from_odom().translation.y(), 10.0 * std::sin(yaw), 1e-9);
+  EXPECT_NEAR(loop.map_from_odom().yaw, yaw, 1e-12);
+  EXPECT_EQ(loop.recoveries(), 2);
+  // A late second refinement answer changes nothing.
+  EXPECT_TRUE(loop.OnRefinement(33.0, refined).empty());
+}
+
+TEST(RelocalizationLoopScanRefinementTest, AFailedOrSilentMatcherLeavesTheCoarseAnswer) {
+  RelocalizationLoop failed(RefiningConfig());
+  ASSERT_EQ(Kinds(RelocalizeOnce(failed, 0.0, Reliable(3, 1, 0.2))),
+            (std::vector<Kind>{Kind::kRefine}));
+  std::vector<RelocalizationAction> actions =
+      failed.OnRefinement(12.3, absl::NotFoundError("no untrusted frame"));
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "scan refinement failed: no untrusted frame"));
+  EXPECT_NEAR(failed.map_from_odom().translation.x(), 3.0, 1e-12);
+  EXPECT_NEAR(failed.map_from_odom().yaw, 0.2, 1e-12);
+
+  // No answer within answer_timeout_s (5 s) of the robot's clock: the coarse answer applies.
+  RelocalizationLoop silent(RefiningConfig());
+  RelocalizeOnce(silent, 0.0, Reliable(3, 1, 0.2));
+  EXPECT_TRUE(silent.OnState(17.0, Pose(0, 0), LocalizationReport::kOk, After(), false).empty());
+  actions = silent.OnState(17.2, Pose(0, 0), LocalizationReport::kOk, After(), false);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "did not answer within 5.0 s"));
+  EXPECT_FALSE(silent.relocalizing());
+  EXPECT_NEAR(silent.map_from_odom().translation.y(), 1.0, 1e-12);
 }
 
 }  // namespace

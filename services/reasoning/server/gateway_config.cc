@@ -172,7 +172,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("confirming_answer_rad", &loop.confirming_answer_rad)
         .Read("max_attempts", &loop.max_attempts)
         .Read("retrigger_after_s", &loop.retrigger_after_s)
-        .Read("default_object_scale_m", &loop.default_object_scale_m);
+        .Read("default_object_scale_m", &loop.default_object_scale_m)
+        .Read("refine_with_scan", &loop.refine_with_scan);
     reloc.Check(c.relocalization.map_id.size() <= 128, "map_id", "must be at most 128 characters");
     reloc.Check(c.relocalization.deadline_ms > 0, "deadline_ms", "must be > 0");
     reloc.Check(c.relocalization.simulated_latency_s >= 0.0 &&

@@ -35,6 +35,7 @@
 #include "services/reasoning/core/telemetry_subscriptions.h"
 #include "services/reasoning/core/topological_memory.h"
 #include "services/reasoning/server/gateway_config.h"
+#include "services/reasoning/server/lost_scan_client.h"
 #include "services/reasoning/server/relocalization_client.h"
 #include "services/reasoning/server/stream_sink.h"
 
@@ -48,6 +49,7 @@ struct GatewayBackends {
   LanguageModel* model = nullptr;            // model proxy: slow path and text embeddings
   const CooccurrencePrior* prior = nullptr;  // commonsense co-occurrence for exploration
   Relocalizer* relocalizer = nullptr;        // relocalization: the lost-robot loop (null = no loop)
+  LostScanMatcher* lost_scan = nullptr;      // mapping's scan matcher (null = answers unrefined)
 };
 
 class GatewayHub {
@@ -264,6 +266,7 @@ class GatewayHub {
                               std::vector<RelocalizationAction> actions)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void SendLocalizationUpdate(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void OnScanRefinement(const std::string& robot_id, absl::StatusOr<ScanRefinement> refinement);
   void OnRelocalizationAnswer(const std::string& robot_id,
                               absl::StatusOr<RelocalizationAnswer> answer) ABSL_LOCKS_EXCLUDED(mu_);
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at

@@ -58,7 +58,9 @@ void GatewayHub::OnLocalizationSession(Robot& robot) {
   // A simulated session is a new simulation: its odometry and map start over, and so does the
   // correction. A real robot that reconnects keeps its odometry frame and its correction.
   if (robot.localization == nullptr || robot.simulated_clock) {
-    robot.localization = std::make_unique<RelocalizationLoop>(config_.relocalization.loop);
+    RelocalizationLoopConfig loop = config_.relocalization.loop;
+    loop.refine_with_scan = loop.refine_with_scan && backends_.lost_scan != nullptr;
+    robot.localization = std::make_unique<RelocalizationLoop>(loop);
     robot.localization_paused_task.clear();
   }
   robot.localization->OnSessionOpened();
@@ -176,6 +178,34 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
         backends_.relocalizer->Relocalize(map_id, action.observed, std::move(handler));
         break;
       }
+      case Kind::kRefine: {
+        std::function<void(absl::StatusOr<ScanRefinement>)> handler =
+            [this, robot_id](absl::StatusOr<ScanRefinement> refinement) {
+              OnScanRefinement(robot_id, std::move(refinement));
+            };
+        if (robot.simulated_clock) {  // held like a relocalization answer (above)
+          ++robot.model_calls_in_flight;
+          handler = [this, robot_id,
+                     due = robot.sim_now_s + config_.relocalization.simulated_latency_s,
+                     order = next_model_call_++](absl::StatusOr<ScanRefinement> refinement) {
+            absl::MutexLock lock(&mu_);
+            Robot& arrived = RobotRecord(robot_id);
+            --arrived.model_calls_in_flight;
+            arrived.held_answers.push_back(
+                {due, order, [this, robot_id, refinement = std::move(refinement)]() mutable {
+                   OnScanRefinement(robot_id, std::move(refinement));
+                 }});
+          };
+        }
+        LogWarning("scan_refinement_request",
+                   {{"robot", robot_id},
+                    {"coarse",
+                     absl::StrFormat("(%.3f, %.3f, %.2f deg)", action.map_from_odom.translation.x(),
+                                     action.map_from_odom.translation.y(),
+                                     action.map_from_odom.yaw * 180.0 / M_PI)}});
+        backends_.lost_scan->MatchLostScan(robot_id, action.map_from_odom, std::move(handler));
+        break;
+      }
       case Kind::kCorrect:
         Log(api::EVENT_KIND_RELOCALIZED, robot_id, task_id, action.message);
         break;
@@ -212,6 +242,23 @@ void GatewayHub::OnRelocalizationAnswer(const std::string& robot_id,
   const RobotPose odom_pose = FromProto(robot.last_state);
   robot.pose =
       robot.localization->map_from_odom().Apply(odom_pose);  // before the task resumes on it
+  RunLocalizationActions(robot_id, robot, std::move(actions));
+  if (was_relocalizing != robot.localization->relocalizing() || acted)
+    SendLocalizationUpdate(robot);
+}
+
+void GatewayHub::OnScanRefinement(const std::string& robot_id,
+                                  absl::StatusOr<ScanRefinement> refinement) {
+  absl::MutexLock lock(&mu_);
+  if (shut_down_) return;
+  auto found = robots_.find(robot_id);
+  if (found == robots_.end() || found->second.localization == nullptr) return;
+  Robot& robot = found->second;
+  const bool was_relocalizing = robot.localization->relocalizing();
+  std::vector<RelocalizationAction> actions =
+      robot.localization->OnRefinement(NowFor(robot_id), refinement);
+  const bool acted = !actions.empty();
+  robot.pose = robot.localization->map_from_odom().Apply(FromProto(robot.last_state));
   RunLocalizationActions(robot_id, robot, std::move(actions));
   if (was_relocalizing != robot.localization->relocalizing() || acted)
     SendLocalizationUpdate(robot);
