@@ -71,7 +71,7 @@ absl::Status Setup(semnav::ConfigReader& section, semnav::ServiceHost& host) {
           semnav::MakeChannel(config->mapping);
       if (!mapping_channel.ok()) return mapping_channel.status();
       stack->lost_scan = std::make_unique<MappingLostScanClient>(
-          *mapping_channel, config->relocalization.deadline_ms);
+          *mapping_channel, config->relocalization.scan_match_deadline_ms);
       backends.lost_scan = stack->lost_scan.get();
     }
   }

@@ -32,8 +32,11 @@ struct MappingConfig {
   SemanticMapConfig semantic;
   SceneGraphConfig scene;
   size_t grid_change_log_size = 256;  // grid changes remembered for resumable watches
-  // A lost robot's look-around against the grid (MatchLostScan).
+  // A lost robot's look-around against the grid (MatchLostScan), near a coarse pose and global.
   ScanMatchConfig scan_match;
+  GlobalMatchConfig global_scan_match;
+  // The global match's raster at most (1,000,000 cells = 50 x 50 m at 5 cm: ~1 s on one core).
+  size_t global_scan_match_max_cells = 1'000'000;
   // Obstacle cells kept per lost robot (5 cm cells: 20,000 = 1 km of wall, 160 KiB).
   size_t lost_scan_max_cells = 20000;
   std::map<std::string, std::vector<std::string>> synonyms;  // query label -> other names

@@ -65,7 +65,11 @@ struct MappingEngine::State {
   absl::flat_hash_map<std::string, bool> pose_untrusted;  // per robot: its last frame's flag
   // Per robot while its frames are untrusted: the obstacle cells (reported frame) they showed,
   // kept for MatchLostScan instead of entering the map.
-  absl::flat_hash_map<std::string, absl::flat_hash_set<CellIndex>> lost_scans;
+  struct LostScan {
+    absl::flat_hash_set<CellIndex> cells;
+    Eigen::Vector2d robot = Eigen::Vector2d::Zero();  // the latest frame's camera, reported
+  };
+  absl::flat_hash_map<std::string, LostScan> lost_scans;
   int embedding_dim = 0;
   std::deque<std::pair<uint64_t, GridWindow>> grid_changes;
   uint64_t grid_forgotten_before = 0;
@@ -165,8 +169,10 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   const absl::flat_hash_set<VoxelColumns::ColumnId> columns = s.columns.Apply(touched);
   s.grid.Update(s.columns, columns);
   if (frame.pose_untrusted) {
-    absl::flat_hash_set<CellIndex>& scan = s.lost_scans[frame.robot_id];
-    if (!s.pose_untrusted[frame.robot_id]) scan.clear();  // a new loss
+    State::LostScan& lost = s.lost_scans[frame.robot_id];
+    if (!s.pose_untrusted[frame.robot_id]) lost.cells.clear();  // a new loss
+    lost.robot = frame.pose.position.head<2>();
+    absl::flat_hash_set<CellIndex>& scan = lost.cells;
     const ClimbingHeights& heights = s.grid.heights();
     for (const Eigen::Vector3f& p : points) {
       if (scan.size() >= config_.lost_scan_max_cells) break;
@@ -456,60 +462,91 @@ absl::Status MappingEngine::Restore(const std::string& payload) {
   return absl::OkStatus();
 }
 
-absl::StatusOr<ScanMatchResult> MappingEngine::MatchLostScan(const std::string& robot_id,
-                                                             const PlanarCorrection& coarse) const {
+absl::StatusOr<ScanMatchResult> MappingEngine::MatchLostScan(
+    const std::string& robot_id, const std::optional<PlanarCorrection>& coarse) const {
   if (robot_id.empty()) return InvalidField("robot_id", "must not be empty");
   if (absl::Status s = CheckLength(robot_id, "robot_id", kMaxIdBytes); !s.ok()) return s;
-  if (absl::Status s = CheckMagnitude(coarse.x, "coarse.x", kMaxCoordinateM); !s.ok()) return s;
-  if (absl::Status s = CheckMagnitude(coarse.y, "coarse.y", kMaxCoordinateM); !s.ok()) return s;
-  if (absl::Status s = CheckMagnitude(coarse.yaw, "coarse.yaw", 4.0 * M_PI); !s.ok()) return s;
+  if (coarse.has_value()) {
+    if (absl::Status s = CheckMagnitude(coarse->x, "coarse.x", kMaxCoordinateM); !s.ok()) return s;
+    if (absl::Status s = CheckMagnitude(coarse->y, "coarse.y", kMaxCoordinateM); !s.ok()) return s;
+    if (absl::Status s = CheckMagnitude(coarse->yaw, "coarse.yaw", 4.0 * M_PI); !s.ok()) return s;
+  }
   std::vector<Eigen::Vector2d> scan;
+  Eigen::Vector2d robot;
   OccupiedRaster raster;
   {
     absl::ReaderMutexLock lock(&mu_);
     const State& s = *state_;
     const auto found = s.lost_scans.find(robot_id);
-    if (found == s.lost_scans.end() || found->second.empty()) {
+    if (found == s.lost_scans.end() || found->second.cells.empty()) {
       return FieldStatus(absl::StatusCode::kNotFound, "robot_id",
                          "the robot sent no untrusted frame with obstacles since it got lost",
                          "NO_LOST_SCAN");
     }
+    robot = found->second.robot;
     const double res = s.grid.config().resolution_m;
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e18);
     Eigen::Vector2d hi = Eigen::Vector2d::Constant(-1e18);
-    scan.reserve(found->second.size());
-    for (const CellIndex& cell : found->second) {
+    scan.reserve(found->second.cells.size());
+    for (const CellIndex& cell : found->second.cells) {
       const Eigen::Vector2d p((cell.x + 0.5) * res, (cell.y + 0.5) * res);
       scan.push_back(p);
-      const Eigen::Vector2d q = coarse.Apply(p);
-      lo = lo.cwiseMin(q);
-      hi = hi.cwiseMax(q);
+      if (coarse.has_value()) {
+        const Eigen::Vector2d q = coarse->Apply(p);
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+      }
     }
     // The hash set's order is no order: sort so the answer depends on the cells only.
     std::sort(scan.begin(), scan.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
       return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y();
     });
-    // The scan's box after `coarse`, grown by what the search can move a cell: the window plus
-    // the rotation of the farthest cell about the centroid.
-    const double margin = config_.scan_match.linear_window_m +
-                          (hi - lo).norm() * std::sin(config_.scan_match.angular_window_rad) + res;
-    const CellIndex min = s.grid.CellOf(lo.x() - margin, lo.y() - margin);
-    const CellIndex max = s.grid.CellOf(hi.x() + margin, hi.y() + margin);
+    CellIndex min;
+    CellIndex max;
+    if (coarse.has_value()) {
+      // The scan's box after `coarse`, grown by what the search can move a cell: the window plus
+      // the rotation of the farthest cell about the centroid.
+      const double margin = config_.scan_match.linear_window_m +
+                            (hi - lo).norm() * std::sin(config_.scan_match.angular_window_rad) +
+                            res;
+      min = s.grid.CellOf(lo.x() - margin, lo.y() - margin);
+      max = s.grid.CellOf(hi.x() + margin, hi.y() + margin);
+    } else if (!s.grid.Bounds(&min, &max)) {
+      return FieldStatus(absl::StatusCode::kFailedPrecondition, "robot_id",
+                         "the map is empty: nothing to match against", "MAP_EMPTY");
+    }
     raster.resolution = res;
     raster.origin_x = min.x * res;
     raster.origin_y = min.y * res;
     raster.width = max.x - min.x + 1;
     raster.height = max.y - min.y + 1;
-    raster.occupied.assign(static_cast<size_t>(raster.width) * raster.height, 0);
+    const size_t cells = static_cast<size_t>(raster.width) * raster.height;
+    if (!coarse.has_value() && cells > config_.global_scan_match_max_cells) {
+      return FieldStatus(absl::StatusCode::kFailedPrecondition, "robot_id",
+                         absl::StrCat("the map's ", cells, " cells exceed the global match's ",
+                                      config_.global_scan_match_max_cells),
+                         "MAP_TOO_LARGE");
+    }
+    raster.occupied.assign(cells, 0);
+    if (!coarse.has_value()) {
+      raster.observed_free.assign(cells, 0);
+      raster.opaque.assign(cells, 0);
+    }
     for (int row = 0; row < raster.height; ++row) {
       for (int col = 0; col < raster.width; ++col) {
         const uint8_t value = s.grid.Value({min.x + col, min.y + row});
-        raster.occupied[static_cast<size_t>(row) * raster.width + col] =
+        const size_t i = static_cast<size_t>(row) * raster.width + col;
+        raster.occupied[i] =
             value != HierarchicalGrid::kFree && value != HierarchicalGrid::kUnknown;
+        if (!coarse.has_value()) {
+          raster.observed_free[i] = value == HierarchicalGrid::kFree;
+          raster.opaque[i] = value == HierarchicalGrid::kStructure;
+        }
       }
     }
   }
-  return MatchScan(raster, scan, coarse, config_.scan_match);
+  if (coarse.has_value()) return MatchScan(raster, scan, *coarse, config_.scan_match);
+  return MatchScanGlobally(raster, scan, robot, config_.scan_match, config_.global_scan_match);
 }
 
 void MappingEngine::Reset() {

@@ -81,12 +81,13 @@ class MappingEngine {
   std::optional<SceneDelta> SceneChangesSince(uint64_t since) const;
   absl::StatusOr<std::vector<ObjectHit>> QueryObjects(const ObjectQuery& query) const;
 
-  // Refines `coarse` (the correction from the robot's reported frame to the map that
-  // relocalization found) by matching the obstacle cells of the robot's untrusted frames since it
-  // got lost against the grid (scan_matcher.h). NotFound: the robot sent no untrusted frame since
-  // its last trusted one.
-  absl::StatusOr<ScanMatchResult> MatchLostScan(const std::string& robot_id,
-                                                const PlanarCorrection& coarse) const;
+  // Matches the obstacle cells of the robot's untrusted frames since it got lost against the
+  // grid (scan_matcher.h): around `coarse` (the correction from the robot's reported frame to the
+  // map that relocalization found), or, without one, globally over every cell the map saw free.
+  // NotFound: the robot sent no untrusted frame since its last trusted one; FailedPrecondition:
+  // too few scan cells, an empty map, or a map beyond global_scan_match_max_cells.
+  absl::StatusOr<ScanMatchResult> MatchLostScan(
+      const std::string& robot_id, const std::optional<PlanarCorrection>& coarse) const;
 
   // Blocks until the revision exceeds `revision` or `timeout` passes; returns the revision.
   uint64_t AwaitChange(uint64_t revision, absl::Duration timeout) const;

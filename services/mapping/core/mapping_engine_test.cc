@@ -259,6 +259,14 @@ TEST(MappingEngineTest, ALostRobotsFramesStayOutOfTheMapAndRefineItsCorrection) 
       << match->correction.x << " " << match->correction.y;
   EXPECT_LT(std::abs(match->correction.yaw - truth.yaw), 1.0 * M_PI / 180.0);
 
+  // Without a coarse pose the global search finds the same place: the room's table and cabinet
+  // tell its half-turn look-alike apart.
+  absl::StatusOr<ScanMatchResult> global = engine.MatchLostScan("robot-1", std::nullopt);
+  ASSERT_TRUE(global.ok()) << global.status();
+  EXPECT_TRUE(global->refined) << global->score << " vs " << global->runner_up_score;
+  EXPECT_LT((global->correction.Apply(robot_reported) - Eigen::Vector2d(1.5, 2.5)).norm(), 0.1);
+  EXPECT_LT(std::abs(global->correction.yaw - truth.yaw), 1.0 * M_PI / 180.0);
+
   // A trusted frame ends the loss: its scan is gone.
   ASSERT_TRUE(
       engine.AddFrame(testing::RenderFrame(room, LookAround({3.0, 2.0}, 1)[0], stamp += kFrameNs))

@@ -44,37 +44,55 @@ cv::Mat LikelihoodField(const OccupiedRaster& map, double sigma_m) {
   return field;
 }
 
-}  // namespace
-
-absl::StatusOr<ScanMatchResult> MatchScan(const OccupiedRaster& map,
-                                          const std::vector<Eigen::Vector2d>& scan,
-                                          const PlanarCorrection& coarse,
-                                          const ScanMatchConfig& config) {
-  if (map.width <= 0 || map.height <= 0 || map.resolution <= 0.0 ||
-      map.occupied.size() != static_cast<size_t>(map.width) * map.height) {
+absl::Status CheckRaster(const OccupiedRaster& map) {
+  const size_t cells = static_cast<size_t>(std::max(map.width, 0)) * std::max(map.height, 0);
+  if (map.width <= 0 || map.height <= 0 || map.resolution <= 0.0 || map.occupied.size() != cells ||
+      (!map.observed_free.empty() && map.observed_free.size() != cells) ||
+      (!map.opaque.empty() && map.opaque.size() != cells)) {
     return absl::InvalidArgumentError("the occupied raster's size does not match its cells");
   }
-  const double res = map.resolution;
-  // One point per cell of the reported frame: a wall seen in many frames counts once.
+  return absl::OkStatus();
+}
+
+// One point per cell of the reported frame (its centre): a wall seen in many frames counts once.
+std::vector<Eigen::Vector2d> DistinctCells(const std::vector<Eigen::Vector2d>& scan, double res) {
   absl::flat_hash_set<std::pair<int64_t, int64_t>> seen;
   std::vector<Eigen::Vector2d> cells;
   for (const Eigen::Vector2d& p : scan) {
     if (!p.allFinite()) continue;
     const std::pair<int64_t, int64_t> key{static_cast<int64_t>(std::floor(p.x() / res)),
                                           static_cast<int64_t>(std::floor(p.y() / res))};
-    if (seen.insert(key).second) {
-      cells.push_back(coarse.Apply({(key.first + 0.5) * res, (key.second + 0.5) * res}));
-    }
+    if (seen.insert(key).second)
+      cells.emplace_back((key.first + 0.5) * res, (key.second + 0.5) * res);
   }
+  return cells;
+}
+
+absl::Status TooFewCells(size_t cells, int needed) {
+  return absl::FailedPreconditionError(
+      absl::StrCat("the scan has ", cells, " obstacle cells, need ", needed));
+}
+
+bool HasOccupied(const OccupiedRaster& map) {
+  return std::any_of(map.occupied.begin(), map.occupied.end(), [](uint8_t v) { return v != 0; });
+}
+
+}  // namespace
+
+absl::StatusOr<ScanMatchResult> MatchScan(const OccupiedRaster& map,
+                                          const std::vector<Eigen::Vector2d>& scan,
+                                          const PlanarCorrection& coarse,
+                                          const ScanMatchConfig& config) {
+  if (absl::Status s = CheckRaster(map); !s.ok()) return s;
+  const double res = map.resolution;
+  std::vector<Eigen::Vector2d> cells = DistinctCells(scan, res);
+  for (Eigen::Vector2d& c : cells) c = coarse.Apply(c);
   ScanMatchResult result;
   result.correction = coarse;
   result.scan_cells = static_cast<int>(cells.size());
-  if (result.scan_cells < config.min_scan_cells) {
-    return absl::FailedPreconditionError(absl::StrCat(
-        "the scan has ", result.scan_cells, " obstacle cells, need ", config.min_scan_cells));
-  }
-  if (std::none_of(map.occupied.begin(), map.occupied.end(), [](uint8_t v) { return v != 0; }))
-    return result;  // nothing mapped to match against: the coarse pose stands
+  if (result.scan_cells < config.min_scan_cells)
+    return TooFewCells(cells.size(), config.min_scan_cells);
+  if (!HasOccupied(map)) return result;  // nothing mapped to match against: the coarse pose stands
 
   const cv::Mat field = LikelihoodField(map, config.sigma_m);
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
@@ -136,6 +154,229 @@ absl::StatusOr<ScanMatchResult> MatchScan(const OccupiedRaster& map,
     result.correction = best_local.After(coarse);
     result.refined = true;
   }
+  return result;
+}
+
+namespace {
+
+// A robot pose of the global search: the robot's cell in the raster and its heading.
+struct GlobalPose {
+  double score = 0.0;
+  int col = 0;
+  int row = 0;
+  double yaw = 0.0;
+};
+
+// max of `field` over [row, row + k) x [col, col + k) (clamped at the far edges).
+cv::Mat PooledField(const cv::Mat& field, int k) {
+  cv::Mat along_rows(field.rows, field.cols, CV_32F);
+  for (int row = 0; row < field.rows; ++row) {
+    for (int col = 0; col < field.cols; ++col) {
+      float best = 0.0f;
+      for (int j = 0; j < k && col + j < field.cols; ++j)
+        best = std::max(best, field.at<float>(row, col + j));
+      along_rows.at<float>(row, col) = best;
+    }
+  }
+  cv::Mat pooled(field.rows, field.cols, CV_32F);
+  for (int row = 0; row < field.rows; ++row) {
+    for (int col = 0; col < field.cols; ++col) {
+      float best = 0.0f;
+      for (int i = 0; i < k && row + i < field.rows; ++i)
+        best = std::max(best, along_rows.at<float>(row + i, col));
+      pooled.at<float>(row, col) = best;
+    }
+  }
+  return pooled;
+}
+
+// Whole-cell offsets of the scan's cells from the robot's cell at heading `yaw`.
+void Offsets(const std::vector<Eigen::Vector2d>& relative, double yaw, double res,
+             std::vector<int>* cols, std::vector<int>* rows) {
+  const double c = std::cos(yaw);
+  const double s = std::sin(yaw);
+  cols->resize(relative.size());
+  rows->resize(relative.size());
+  for (size_t i = 0; i < relative.size(); ++i) {
+    const Eigen::Vector2d& d = relative[i];
+    (*cols)[i] = static_cast<int>(std::floor((c * d.x() - s * d.y()) / res + 0.5));
+    (*rows)[i] = static_cast<int>(std::floor((s * d.x() + c * d.y()) / res + 0.5));
+  }
+}
+
+double MeanAt(const cv::Mat& field, const std::vector<int>& cols, const std::vector<int>& rows,
+              int col, int row) {
+  double sum = 0.0;
+  const float* data = field.ptr<float>(0);
+  const size_t stride = field.step1();
+  for (size_t i = 0; i < cols.size(); ++i) {
+    const int c = col + cols[i];
+    const int r = row + rows[i];
+    if (c < 0 || r < 0 || c >= field.cols || r >= field.rows) continue;
+    sum += data[static_cast<size_t>(r) * stride + c];
+  }
+  return cols.empty() ? 0.0 : sum / static_cast<double>(cols.size());
+}
+
+// Share of the rays from the robot's cell to its scan cells (offsets at the pose) that meet an
+// opaque map cell before their last `slack` cells (a grid line walk, Bresenham).
+double RayConflicts(const OccupiedRaster& map, const std::vector<int>& cols,
+                    const std::vector<int>& rows, int col, int row, int slack) {
+  if (cols.empty()) return 0.0;
+  int conflicts = 0;
+  for (size_t i = 0; i < cols.size(); ++i) {
+    const int dx = cols[i];
+    const int dy = rows[i];
+    const int steps = std::max(std::abs(dx), std::abs(dy));
+    for (int t = 1; t < steps - slack; ++t) {
+      const int c = col + static_cast<int>(std::lround(static_cast<double>(dx) * t / steps));
+      const int r = row + static_cast<int>(std::lround(static_cast<double>(dy) * t / steps));
+      if (c < 0 || r < 0 || c >= map.width || r >= map.height) break;
+      const std::vector<uint8_t>& opaque = map.opaque.empty() ? map.occupied : map.opaque;
+      if (opaque[static_cast<size_t>(r) * map.width + c] != 0) {
+        ++conflicts;
+        break;
+      }
+    }
+  }
+  return static_cast<double>(conflicts) / static_cast<double>(cols.size());
+}
+
+}  // namespace
+
+absl::StatusOr<ScanMatchResult> MatchScanGlobally(const OccupiedRaster& map,
+                                                  const std::vector<Eigen::Vector2d>& scan,
+                                                  const Eigen::Vector2d& robot,
+                                                  const ScanMatchConfig& local,
+                                                  const GlobalMatchConfig& config) {
+  if (absl::Status s = CheckRaster(map); !s.ok()) return s;
+  const double res = map.resolution;
+  const std::vector<Eigen::Vector2d> cells = DistinctCells(scan, res);
+  ScanMatchResult result;
+  result.scan_cells = static_cast<int>(cells.size());
+  if (result.scan_cells < local.min_scan_cells)
+    return TooFewCells(cells.size(), local.min_scan_cells);
+  if (!HasOccupied(map)) return result;
+
+  std::vector<Eigen::Vector2d> relative;
+  relative.reserve(cells.size());
+  for (const Eigen::Vector2d& c : cells) relative.push_back(c - robot);
+  std::vector<Eigen::Vector2d> subset;
+  const size_t wanted = static_cast<size_t>(std::max(1, config.max_coarse_scan_cells));
+  const size_t stride = std::max<size_t>(1, (relative.size() + wanted - 1) / wanted);
+  for (size_t i = 0; i < relative.size(); i += stride) subset.push_back(relative[i]);
+
+  const cv::Mat field = LikelihoodField(map, local.sigma_m);
+  const int k = std::max(1, config.coarse_cells);
+  const cv::Mat pooled = PooledField(field, k);
+  auto cell_centre = [&](int col, int row) {
+    return Eigen::Vector2d(map.origin_x + (col + 0.5) * res, map.origin_y + (row + 0.5) * res);
+  };
+  auto self_match = [&](const Eigen::Vector2d& at, double yaw) {
+    return (at - robot).norm() < config.self_match_m &&
+           std::abs(std::remainder(yaw, 2.0 * M_PI)) < config.self_match_rad;
+  };
+  // Lattice cells whose block holds an observed-free cell.
+  std::vector<std::pair<int, int>> lattice;
+  for (int row = 0; row < map.height; row += k) {
+    for (int col = 0; col < map.width; col += k) {
+      bool free = map.observed_free.empty();
+      for (int i = 0; i < k && !free && row + i < map.height; ++i) {
+        for (int j = 0; j < k && !free && col + j < map.width; ++j)
+          free = map.observed_free[static_cast<size_t>(row + i) * map.width + col + j] != 0;
+      }
+      if (free) lattice.emplace_back(col, row);
+    }
+  }
+  // Coarse pass: the best few hundred (lattice cell, heading) by the pooled upper bound.
+  constexpr size_t kKept = 512;
+  auto better = [](const GlobalPose& a, const GlobalPose& b) { return a.score > b.score; };
+  std::vector<GlobalPose> kept;  // a min-heap on score (front = the worst kept)
+  const int headings =
+      std::max(1, static_cast<int>(std::lround(2.0 * M_PI / config.angular_step_rad)));
+  std::vector<int> cols;
+  std::vector<int> rows;
+  for (int h = 0; h < headings; ++h) {
+    const double yaw = std::remainder(-M_PI + 2.0 * M_PI * h / headings, 2.0 * M_PI);
+    Offsets(subset, yaw, res, &cols, &rows);
+    for (const auto& [col, row] : lattice) {
+      const double score = MeanAt(pooled, cols, rows, col, row);
+      if (kept.size() == kKept && score <= kept.front().score) continue;
+      if (self_match(cell_centre(col + k / 2, row + k / 2), yaw)) continue;
+      kept.push_back({score, col, row, yaw});
+      std::push_heap(kept.begin(), kept.end(), better);
+      if (kept.size() > kKept) {
+        std::pop_heap(kept.begin(), kept.end(), better);
+        kept.pop_back();
+      }
+    }
+  }
+  std::sort(kept.begin(), kept.end(), better);  // best first
+  // Refine the best mutually distinct candidates (half the distinctness of the answer check, so
+  // a candidate near a higher bound still gets its own refinement).
+  std::vector<GlobalPose> refined;
+  std::vector<GlobalPose> chosen;
+  const int turns =
+      std::max(0, static_cast<int>(std::ceil(config.angular_step_rad / local.angular_step_rad)));
+  for (const GlobalPose& candidate : kept) {
+    if (static_cast<int>(chosen.size()) >= config.refine_candidates) break;
+    const Eigen::Vector2d at = cell_centre(candidate.col, candidate.row);
+    bool near_chosen = false;
+    for (const GlobalPose& c : chosen) {
+      near_chosen |=
+          (at - cell_centre(c.col, c.row)).norm() < config.distinct_m / 2 &&
+          std::abs(std::remainder(candidate.yaw - c.yaw, 2.0 * M_PI)) < config.distinct_rad / 2;
+    }
+    if (near_chosen) continue;
+    chosen.push_back(candidate);
+    GlobalPose best{-1.0, candidate.col, candidate.row, candidate.yaw};
+    for (int t = -turns; t <= turns; ++t) {
+      const double yaw = candidate.yaw + t * local.angular_step_rad;
+      Offsets(relative, yaw, res, &cols, &rows);
+      for (int row = candidate.row - 1; row <= candidate.row + k; ++row) {
+        for (int col = candidate.col - 1; col <= candidate.col + k; ++col) {
+          if (self_match(cell_centre(col, row), yaw)) continue;
+          const double score = MeanAt(field, cols, rows, col, row);
+          if (score > best.score + 1e-12) best = {score, col, row, yaw};
+        }
+      }
+    }
+    refined.push_back(best);
+  }
+  if (refined.empty()) return result;
+  const GlobalPose top =
+      *std::max_element(refined.begin(), refined.end(),
+                        [](const GlobalPose& a, const GlobalPose& b) { return a.score < b.score; });
+  const Eigen::Vector2d at = cell_centre(top.col, top.row);
+  for (const GlobalPose& other : refined) {
+    const bool distinct =
+        (cell_centre(other.col, other.row) - at).norm() > config.distinct_m ||
+        std::abs(std::remainder(other.yaw - top.yaw, 2.0 * M_PI)) > config.distinct_rad;
+    if (distinct) result.runner_up_score = std::max(result.runner_up_score, other.score);
+  }
+  // The reported pose competes too (self_match): its best score within the window.
+  for (int t = -turns; t <= turns; ++t) {
+    const double yaw = t * local.angular_step_rad;
+    Offsets(relative, yaw, res, &cols, &rows);
+    const int col = static_cast<int>(std::floor((robot.x() - map.origin_x) / res));
+    const int row = static_cast<int>(std::floor((robot.y() - map.origin_y) / res));
+    for (int r = row - 2; r <= row + 2; ++r) {
+      for (int c = col - 2; c <= col + 2; ++c) {
+        result.runner_up_score = std::max(result.runner_up_score, MeanAt(field, cols, rows, c, r));
+      }
+    }
+  }
+  // The robot stands at `at`, turned by top.yaw from its reported heading: p -> R (p - robot) + at.
+  const PlanarCorrection turn{0.0, 0.0, top.yaw};
+  const Eigen::Vector2d shift = at - turn.Apply(robot);
+  result.correction = {shift.x(), shift.y(), std::remainder(top.yaw, 2.0 * M_PI)};
+  result.score = top.score;
+  Offsets(relative, top.yaw, res, &cols, &rows);
+  result.ray_conflicts =
+      RayConflicts(map, cols, rows, top.col, top.row, config.ray_end_slack_cells);
+  result.refined = top.score >= config.min_score &&
+                   1.0 - result.runner_up_score >= config.min_misfit_ratio * (1.0 - top.score) &&
+                   result.ray_conflicts <= config.max_ray_conflicts;
   return result;
 }
 

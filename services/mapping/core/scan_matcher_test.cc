@@ -9,9 +9,9 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-// A 6 x 4 m room (walls one cell thick) with a 1 x 1 m cabinet in one corner, at 5 cm cells,
-// origin (0, 0).
-OccupiedRaster Room() {
+// A 6 x 4 m room (walls one cell thick), with or without a 1 x 1 m cabinet in one corner, at
+// 5 cm cells, origin (0, 0).
+OccupiedRaster Room(bool cabinet = true) {
   OccupiedRaster map;
   map.resolution = 0.05;
   map.width = 140;  // 7 m: a half-metre margin around the room
@@ -30,7 +30,7 @@ OccupiedRaster Room() {
     set(0.5, y);
     set(6.5, y);
   }
-  for (double t = 5.5; t <= 6.5; t += 0.025) {
+  for (double t = 5.5; cabinet && t <= 6.5; t += 0.025) {
     set(t, 3.5);  // the cabinet's front and side
     set(5.5, t - 2.0);
   }
@@ -143,6 +143,107 @@ TEST(ScanMatcherTest, ARasterWhoseCellsDoNotMatchItsSizeIsRefused) {
   bad.occupied.pop_back();
   EXPECT_EQ(MatchScan(bad, RoomPointsInMap(), {}, ScanMatchConfig{}).status().code(),
             absl::StatusCode::kInvalidArgument);
+}
+
+// The room's inside as observed free (the cabinet's footprint is not free).
+OccupiedRaster WithFreeInside(OccupiedRaster map, bool cabinet) {
+  map.observed_free.assign(map.occupied.size(), 0);
+  for (int row = 0; row < map.height; ++row) {
+    for (int col = 0; col < map.width; ++col) {
+      const double x = (col + 0.5) * map.resolution;
+      const double y = (row + 0.5) * map.resolution;
+      const bool inside = x > 0.6 && x < 6.4 && y > 0.6 && y < 4.4;
+      const bool under_cabinet = cabinet && x > 5.45 && y > 3.45;
+      map.observed_free[static_cast<size_t>(row) * map.width + col] = inside && !under_cabinet;
+    }
+  }
+  return map;
+}
+
+std::vector<Eigen::Vector2d> BareRoomPointsInMap() {
+  std::vector<Eigen::Vector2d> points;
+  for (double x = 0.52; x <= 6.48; x += 0.02) {
+    points.emplace_back(x, 4.52);
+    points.emplace_back(x, 0.52);
+  }
+  for (double y = 0.52; y <= 4.48; y += 0.02) {
+    points.emplace_back(0.52, y);
+    points.emplace_back(6.48, y);
+  }
+  return points;
+}
+
+TEST(GlobalScanMatcherTest, ALostRobotIsFoundAnywhereAtAnyHeading) {
+  // Carried 5 m and 120 deg from where it believes it is; no coarse pose at all.
+  const PlanarCorrection truth{5.0, -3.0, 120 * kDeg};
+  const Eigen::Vector2d robot_in_map(2.0, 2.5);
+  const Eigen::Vector2d robot_reported = Inverse(truth).Apply(robot_in_map);
+  absl::StatusOr<ScanMatchResult> result =
+      MatchScanGlobally(WithFreeInside(Room(), true), ScanInReportedFrame(truth), robot_reported,
+                        ScanMatchConfig{}, GlobalMatchConfig{});
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->refined) << result->score << " vs " << result->runner_up_score;
+  EXPECT_GT(result->score, 0.9);
+  // The half turn fits all but the cabinet: twice the best pose's unexplained cells.
+  EXPECT_GT(1.0 - result->runner_up_score, 1.5 * (1.0 - result->score));
+  EXPECT_LT((result->correction.Apply(robot_reported) - robot_in_map).norm(), 0.08);
+  EXPECT_LT(std::abs(std::remainder(result->correction.yaw - truth.yaw, 2 * M_PI)), 1.0 * kDeg);
+}
+
+TEST(GlobalScanMatcherTest, ARoomThatLooksTheSameAfterAHalfTurnIsNoAnswer) {
+  // The room without its cabinet, a bare rectangle: the robot at (2, 2.5) facing one way sees
+  // what a robot at (5, 2.5) facing the other way sees. Both poses score alike, so neither is
+  // taken.
+  const PlanarCorrection truth{5.0, -3.0, 120 * kDeg};
+  const PlanarCorrection reported_from_map = Inverse(truth);
+  std::vector<Eigen::Vector2d> scan;
+  for (const Eigen::Vector2d& p : BareRoomPointsInMap()) scan.push_back(reported_from_map.Apply(p));
+  const Eigen::Vector2d robot_reported = reported_from_map.Apply({2.0, 2.5});
+  absl::StatusOr<ScanMatchResult> result =
+      MatchScanGlobally(WithFreeInside(Room(/*cabinet=*/false), false), scan, robot_reported,
+                        ScanMatchConfig{}, GlobalMatchConfig{});
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_GT(result->score, 0.9);
+  EXPECT_GT(result->runner_up_score, result->score - 0.02);
+  EXPECT_FALSE(result->refined);
+}
+
+TEST(GlobalScanMatcherTest, ThePoseTheRobotReportsIsNeverTheAnswer) {
+  // Its own frames from before it reported the loss may have drawn what it sees where it
+  // believes it is: that pose (the identity correction) is no answer, but it competes, so the
+  // half-turn look-alike elsewhere is not taken either.
+  const Eigen::Vector2d robot(2.0, 2.5);
+  absl::StatusOr<ScanMatchResult> result =
+      MatchScanGlobally(WithFreeInside(Room(), true), ScanInReportedFrame({0.0, 0.0, 0.0}), robot,
+                        ScanMatchConfig{}, GlobalMatchConfig{});
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_FALSE(result->refined);
+  EXPECT_GT(
+      std::hypot(result->correction.x, result->correction.y) + std::abs(result->correction.yaw),
+      0.09);
+}
+
+TEST(GlobalScanMatcherTest, AnAnswerWhoseRaysCrossTheMapsWallsIsNoAnswer) {
+  // The map has a wall across the room at x = 4 that the scan sees through: the walls beyond it
+  // fit, but no robot at (2, 2.5) could have seen them. Over a third of the rays cross it.
+  OccupiedRaster divided = WithFreeInside(Room(), true);
+  for (double y = 0.5; y <= 4.5; y += 0.025) {
+    divided.occupied[static_cast<size_t>(std::floor(y / divided.resolution)) * divided.width +
+                     static_cast<size_t>(std::floor(4.0 / divided.resolution))] = 1;
+  }
+  const PlanarCorrection truth{5.0, -3.0, 120 * kDeg};
+  const Eigen::Vector2d robot_reported = Inverse(truth).Apply({2.0, 2.5});
+  absl::StatusOr<ScanMatchResult> result = MatchScanGlobally(
+      divided, ScanInReportedFrame(truth), robot_reported, ScanMatchConfig{}, GlobalMatchConfig{});
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_GT(result->ray_conflicts, 0.3);
+  EXPECT_FALSE(result->refined);
+  // Without the divider the same answer crosses nothing (the first test's case).
+  result = MatchScanGlobally(WithFreeInside(Room(), true), ScanInReportedFrame(truth),
+                             robot_reported, ScanMatchConfig{}, GlobalMatchConfig{});
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_LT(result->ray_conflicts, 0.01);
+  EXPECT_TRUE(result->refined);
 }
 
 }  // namespace

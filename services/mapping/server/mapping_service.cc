@@ -410,8 +410,11 @@ grpc::ServerUnaryReactor* MappingServiceImpl::ResetMap(grpc::CallbackServerConte
 grpc::ServerUnaryReactor* MappingServiceImpl::MatchLostScan(grpc::CallbackServerContext* context,
                                                             const v1::MatchLostScanRequest* request,
                                                             v1::MatchLostScanResponse* response) {
-  const PlanarCorrection coarse{request->coarse().x(), request->coarse().y(),
-                                request->coarse().yaw()};
+  std::optional<PlanarCorrection> coarse;
+  if (!request->global()) {
+    coarse =
+        PlanarCorrection{request->coarse().x(), request->coarse().y(), request->coarse().yaw()};
+  }
   const absl::StatusOr<ScanMatchResult> match = engine_.MatchLostScan(request->robot_id(), coarse);
   if (!match.ok()) return Reply(context, FromCore(match.status()));
   response->mutable_correction()->set_x(match->correction.x);
@@ -421,6 +424,8 @@ grpc::ServerUnaryReactor* MappingServiceImpl::MatchLostScan(grpc::CallbackServer
   response->set_score(match->score);
   response->set_coarse_score(match->coarse_score);
   response->set_scan_cells(static_cast<uint32_t>(match->scan_cells));
+  response->set_runner_up_score(match->runner_up_score);
+  response->set_ray_conflicts(match->ray_conflicts);
   return Reply(context, grpc::Status::OK);
 }
 

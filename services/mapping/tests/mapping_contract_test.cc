@@ -549,6 +549,20 @@ TEST_F(MappingContractTest, ALostRobotsLookAroundRefinesItsCorrectionAndLeavesTh
       Eigen::Vector2d(response.correction().x(), response.correction().y());
   EXPECT_LT((robot - Eigen::Vector2d(1.5, 2.5)).norm(), 0.08);
 
+  // Without a coarse pose: the global search over the map finds the same place.
+  v1::MatchLostScanRequest global;
+  global.set_robot_id("robot-1");
+  global.set_global(true);
+  v1::MatchLostScanResponse found;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(stub_->MatchLostScan(&context, global, &found).ok());
+  }
+  EXPECT_TRUE(found.refined()) << found.score() << " vs " << found.runner_up_score() << ", rays "
+                               << found.ray_conflicts();
+  EXPECT_NEAR(found.correction().yaw(), -yaw, 1.0 * M_PI / 180.0);
+  EXPECT_LT(found.ray_conflicts(), 0.1);
+
   // Bad requests name their field; an unknown robot has no lost scan.
   auto call = [&](const v1::MatchLostScanRequest& r) {
     grpc::ClientContext context;

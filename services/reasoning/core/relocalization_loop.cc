@@ -106,6 +106,14 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnState(double now,
       }
       return {};
     case Phase::kAwaitingRefinement:
+      if (now >= phase_deadline_ && global_pending_) {
+        global_pending_ = false;
+        return AttemptFailed(
+            now,
+            absl::StrFormat("%s; the global scan match did not answer within %.1f s", failed_why_,
+                            config_.answer_timeout_s),
+            graph);
+      }
       if (now >= phase_deadline_) {
         return Apply(now, pending_,
                      absl::StrFormat("scan refinement did not answer within %.1f s",
@@ -157,10 +165,10 @@ std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now,
   if (phase_ == Phase::kLookingAround) {
     std::vector<ObservedObject> observed = Observed(graph);
     if (static_cast<int>(observed.size()) < config_.min_observed_objects) {
-      return AttemptFailed(now,
-                           absl::StrFormat("the look-around saw %d objects, %d needed",
-                                           observed.size(), config_.min_observed_objects),
-                           graph);
+      return FailedOrGlobal(now,
+                            absl::StrFormat("the look-around saw %d objects, %d needed",
+                                            observed.size(), config_.min_observed_objects),
+                            graph);
     }
     actions.push_back(Hold(next_command_id_++, "relocalizing: waiting for the answer"));
     RelocalizationAction call;
@@ -282,7 +290,7 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnAnswer(
   }
   if (phase_ != Phase::kAwaitingAnswer) return {};  // late answer of an attempt that timed out
   const std::string why = Rejection(answer);
-  if (!why.empty()) return AttemptFailed(now, why, SceneGraph{});
+  if (!why.empty()) return FailedOrGlobal(now, why, SceneGraph{});
   return Recovered(now, *answer, /*stop_turning=*/false);
 }
 
@@ -311,9 +319,54 @@ std::vector<RelocalizationAction> RelocalizationLoop::Recovered(double now,
   return actions;
 }
 
+std::vector<RelocalizationAction> RelocalizationLoop::FailedOrGlobal(double now,
+                                                                     const std::string& why,
+                                                                     const SceneGraph& graph) {
+  if (!config_.refine_with_scan || !config_.global_scan_match) {
+    return AttemptFailed(now, why, graph);
+  }
+  failed_why_ = why;
+  global_pending_ = true;
+  phase_ = Phase::kAwaitingRefinement;
+  phase_deadline_ = now + config_.answer_timeout_s;
+  RelocalizationAction match;
+  match.kind = RelocalizationAction::Kind::kRefine;
+  match.global = true;
+  match.message = absl::StrFormat(
+      "no answer from objects (%s): matching the look-around against "
+      "the whole map",
+      why);
+  return {std::move(match)};
+}
+
 std::vector<RelocalizationAction> RelocalizationLoop::OnRefinement(
     double now, const absl::StatusOr<ScanRefinement>& refinement) {
   if (phase_ != Phase::kAwaitingRefinement) return {};  // late: the coarse answer was applied
+  if (global_pending_) {
+    global_pending_ = false;
+    if (!refinement.ok()) {
+      return AttemptFailed(now,
+                           absl::StrFormat("%s; the global scan match failed: %s", failed_why_,
+                                           refinement.status().message()),
+                           SceneGraph{});
+    }
+    if (!refinement->refined) {
+      return AttemptFailed(
+          now,
+          absl::StrFormat("%s; no unique global scan match (score %.2f, the best "
+                          "other pose %.2f, rays through walls %.0f %%)",
+                          failed_why_, refinement->score, refinement->runner_up_score,
+                          100.0 * refinement->ray_conflicts),
+          SceneGraph{});
+    }
+    RelocalizationAnswer found;
+    found.map_from_odom = Compose(refinement->map_from_reported, map_from_odom_);
+    found.reliable = true;
+    return Apply(now, found,
+                 absl::StrFormat("global scan match (score %.2f, the best other pose %.2f) after: "
+                                 "%s",
+                                 refinement->score, refinement->runner_up_score, failed_why_));
+  }
   if (!refinement.ok()) {
     return Apply(now, pending_,
                  absl::StrFormat("scan refinement failed: %s", refinement.status().message()));

@@ -451,5 +451,67 @@ TEST(RelocalizationLoopScanRefinementTest, AFailedOrSilentMatcherLeavesTheCoarse
   EXPECT_NEAR(silent.map_from_odom().translation.y(), 1.0, 1e-12);
 }
 
+// A turn that sees too few objects asks for the whole-map scan match before the attempt fails:
+// a unique match recovers the robot, none lets the next attempt start with the reason kept.
+TEST(RelocalizationLoopScanRefinementTest, TooFewObjectsAskForAGlobalScanMatchFirst) {
+  RelocalizationLoop loop(RefiningConfig());
+  loop.OnRequest(0.0, "", Before());
+  // The turn ends having seen nothing new.
+  std::vector<RelocalizationAction> actions =
+      loop.OnState(12.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kRefine}));
+  EXPECT_TRUE(actions[0].global);
+  EXPECT_TRUE(absl::StrContains(actions[0].message, "saw 0 objects")) << actions[0].message;
+  EXPECT_TRUE(loop.relocalizing());
+  // Not unique: the second look-around starts, and its failure would name both reasons.
+  ScanRefinement ambiguous;
+  ambiguous.refined = false;
+  ambiguous.score = 0.8;
+  ambiguous.runner_up_score = 0.79;
+  actions = loop.OnRefinement(12.5, ambiguous);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kRotate);
+  EXPECT_EQ(loop.recoveries(), 0);
+  // The second turn sees nothing either; this time the match is unique: (4, -1) turned 30 deg
+  // from the reported frame, which is odometry (no correction yet).
+  actions = loop.OnState(25.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kRefine}));
+  ScanRefinement unique;
+  unique.map_from_reported = PlanarTransform{Eigen::Vector3d(4.0, -1.0, 0.0), M_PI / 6};
+  unique.refined = true;
+  unique.score = 0.85;
+  unique.runner_up_score = 0.5;
+  actions = loop.OnRefinement(25.5, unique);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_TRUE(absl::StrContains(actions[0].message,
+                                "global scan match (score 0.85, the best "
+                                "other pose 0.50)"))
+      << actions[0].message;
+  EXPECT_NEAR(loop.map_from_odom().translation.x(), 4.0, 1e-12);
+  EXPECT_NEAR(loop.map_from_odom().yaw, M_PI / 6, 1e-12);
+  EXPECT_TRUE(loop.trusted());
+  EXPECT_EQ(loop.recoveries(), 1);
+}
+
+TEST(RelocalizationLoopScanRefinementTest, ANonUniqueGlobalMatchOnTheLastAttemptFailsTheTask) {
+  RelocalizationLoopConfig config = RefiningConfig();
+  config.max_attempts = 1;
+  RelocalizationLoop loop(config);
+  loop.OnRequest(0.0, "", Before());
+  loop.OnState(12.0, Pose(0, 0), LocalizationReport::kLost, Before(), true);
+  ScanRefinement ambiguous;
+  ambiguous.score = 0.7;
+  ambiguous.runner_up_score = 0.69;
+  const std::vector<RelocalizationAction> actions = loop.OnRefinement(12.5, ambiguous);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kFailTask}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kStop);
+  EXPECT_TRUE(absl::StrContains(actions[1].message,
+                                "saw 0 objects, 3 needed; no unique global "
+                                "scan match (score 0.70, the best other "
+                                "pose 0.69, rays through walls 0 %)"))
+      << actions[1].message;
+  EXPECT_FALSE(loop.trusted());
+}
+
 }  // namespace
 }  // namespace semnav::reasoning

@@ -158,6 +158,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     RelocalizationLoopConfig& loop = c.relocalization.loop;
     reloc.Read("map_id", &c.relocalization.map_id)
         .Read("deadline_ms", &c.relocalization.deadline_ms)
+        .Read("scan_match_deadline_ms", &c.relocalization.scan_match_deadline_ms)
         .Read("simulated_latency_s", &c.relocalization.simulated_latency_s)
         .Read("jump_distance_m", &loop.jump_distance_m)
         .Read("jump_yaw_rad", &loop.jump_yaw_rad)
@@ -173,9 +174,12 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("max_attempts", &loop.max_attempts)
         .Read("retrigger_after_s", &loop.retrigger_after_s)
         .Read("default_object_scale_m", &loop.default_object_scale_m)
-        .Read("refine_with_scan", &loop.refine_with_scan);
+        .Read("refine_with_scan", &loop.refine_with_scan)
+        .Read("global_scan_match", &loop.global_scan_match);
     reloc.Check(c.relocalization.map_id.size() <= 128, "map_id", "must be at most 128 characters");
     reloc.Check(c.relocalization.deadline_ms > 0, "deadline_ms", "must be > 0");
+    reloc.Check(c.relocalization.scan_match_deadline_ms > 0, "scan_match_deadline_ms",
+                "must be > 0");
     reloc.Check(c.relocalization.simulated_latency_s >= 0.0 &&
                     c.relocalization.simulated_latency_s < loop.answer_timeout_s,
                 "simulated_latency_s", "must be in [0, answer_timeout_s)");

@@ -52,6 +52,9 @@ struct RelocalizationSettings {
   ClientOptions channel;   // address empty = no relocalization service
   std::string map_id;      // landmark map robots relocalize in; "" = the robot's id
   int deadline_ms = 2000;  // per Relocalize call (wall clock)
+  // Per MatchLostScan call to mapping (wall clock): a global match over a 50 x 50 m map takes
+  // ~1 s of one core, more on a loaded machine.
+  int scan_match_deadline_ms = 10000;
   // Simulated-clock robots get the answer this many simulated seconds after the call (the
   // service's median is ~5 ms; the rest is the robot's link), so episodes replay exactly.
   double simulated_latency_s = 0.5;

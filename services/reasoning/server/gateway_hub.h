@@ -266,9 +266,18 @@ class GatewayHub {
                               std::vector<RelocalizationAction> actions)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void SendLocalizationUpdate(Robot& robot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void OnScanRefinement(const std::string& robot_id, absl::StatusOr<ScanRefinement> refinement);
-  void OnRelocalizationAnswer(const std::string& robot_id,
-                              absl::StatusOr<RelocalizationAnswer> answer) ABSL_LOCKS_EXCLUDED(mu_);
+  // A service's answer to the robot's relocalization loop (`event` hands it to the loop).
+  void OnLocalizationAnswer(
+      const std::string& robot_id,
+      const std::function<std::vector<RelocalizationAction>(RelocalizationLoop&, double now)>&
+          event) ABSL_LOCKS_EXCLUDED(mu_);
+  // The callback for a service call of the loop: delivers to OnLocalizationAnswer, for a
+  // simulated-clock robot held until its simulated latency has passed (like a model answer).
+  template <typename Answer>
+  std::function<void(absl::StatusOr<Answer>)> LoopCallback(
+      Robot& robot, const std::string& robot_id,
+      std::vector<RelocalizationAction> (RelocalizationLoop::*deliver)(
+          double, const absl::StatusOr<Answer>&)) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The journal (gateway_hub_journal.cc): restore at construction, flush every interval and at
   // shutdown, outside mu_ for the file writes.
   void RestoreFromJournal() ABSL_LOCKS_EXCLUDED(mu_);

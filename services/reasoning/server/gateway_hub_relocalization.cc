@@ -147,25 +147,7 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
         const std::string map_id =
             config_.relocalization.map_id.empty() ? robot_id : config_.relocalization.map_id;
         std::function<void(absl::StatusOr<RelocalizationAnswer>)> handler =
-            [this, robot_id](absl::StatusOr<RelocalizationAnswer> answer) {
-              OnRelocalizationAnswer(robot_id, std::move(answer));
-            };
-        if (robot.simulated_clock) {
-          // Held like a model answer (AtSimulatedArrival): the step waits for the call and applies
-          // the answer at issue time + the configured latency, so episodes replay exactly.
-          ++robot.model_calls_in_flight;
-          handler = [this, robot_id,
-                     due = robot.sim_now_s + config_.relocalization.simulated_latency_s,
-                     order = next_model_call_++](absl::StatusOr<RelocalizationAnswer> answer) {
-            absl::MutexLock lock(&mu_);
-            Robot& arrived = RobotRecord(robot_id);
-            --arrived.model_calls_in_flight;
-            arrived.held_answers.push_back(
-                {due, order, [this, robot_id, answer = std::move(answer)]() mutable {
-                   OnRelocalizationAnswer(robot_id, std::move(answer));
-                 }});
-          };
-        }
+            LoopCallback(robot, robot_id, &RelocalizationLoop::OnAnswer);
         std::string observed;  // for the log: what the turn saw, in the robot's odometry frame
         for (const ObservedObject& o : action.observed) {
           const SceneObject* seen = scene_graph_->FindObject(o.object_id);
@@ -180,30 +162,17 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
       }
       case Kind::kRefine: {
         std::function<void(absl::StatusOr<ScanRefinement>)> handler =
-            [this, robot_id](absl::StatusOr<ScanRefinement> refinement) {
-              OnScanRefinement(robot_id, std::move(refinement));
-            };
-        if (robot.simulated_clock) {  // held like a relocalization answer (above)
-          ++robot.model_calls_in_flight;
-          handler = [this, robot_id,
-                     due = robot.sim_now_s + config_.relocalization.simulated_latency_s,
-                     order = next_model_call_++](absl::StatusOr<ScanRefinement> refinement) {
-            absl::MutexLock lock(&mu_);
-            Robot& arrived = RobotRecord(robot_id);
-            --arrived.model_calls_in_flight;
-            arrived.held_answers.push_back(
-                {due, order, [this, robot_id, refinement = std::move(refinement)]() mutable {
-                   OnScanRefinement(robot_id, std::move(refinement));
-                 }});
-          };
-        }
-        LogWarning("scan_refinement_request",
-                   {{"robot", robot_id},
-                    {"coarse",
-                     absl::StrFormat("(%.3f, %.3f, %.2f deg)", action.map_from_odom.translation.x(),
-                                     action.map_from_odom.translation.y(),
-                                     action.map_from_odom.yaw * 180.0 / M_PI)}});
-        backends_.lost_scan->MatchLostScan(robot_id, action.map_from_odom, std::move(handler));
+            LoopCallback(robot, robot_id, &RelocalizationLoop::OnRefinement);
+        std::optional<PlanarTransform> coarse;
+        if (!action.global) coarse = action.map_from_odom;
+        LogWarning(
+            "scan_refinement_request",
+            {{"robot", robot_id},
+             {"coarse", coarse.has_value()
+                            ? absl::StrFormat("(%.3f, %.3f, %.2f deg)", coarse->translation.x(),
+                                              coarse->translation.y(), coarse->yaw * 180.0 / M_PI)
+                            : std::string("none: global")}});
+        backends_.lost_scan->MatchLostScan(robot_id, coarse, std::move(handler));
         break;
       }
       case Kind::kCorrect:
@@ -228,37 +197,47 @@ void GatewayHub::RunLocalizationActions(const std::string& robot_id, Robot& robo
   }
 }
 
-void GatewayHub::OnRelocalizationAnswer(const std::string& robot_id,
-                                        absl::StatusOr<RelocalizationAnswer> answer) {
+template <typename Answer>
+std::function<void(absl::StatusOr<Answer>)> GatewayHub::LoopCallback(
+    Robot& robot, const std::string& robot_id,
+    std::vector<RelocalizationAction> (RelocalizationLoop::*deliver)(
+        double, const absl::StatusOr<Answer>&)) {
+  auto to_loop = [this, robot_id, deliver](absl::StatusOr<Answer> answer) {
+    OnLocalizationAnswer(robot_id, [&answer, deliver](RelocalizationLoop& loop, double now) {
+      return (loop.*deliver)(now, answer);
+    });
+  };
+  if (!robot.simulated_clock) return to_loop;
+  // Held like a model answer (AtSimulatedArrival): the step waits for the call and applies the
+  // answer at issue time + the configured latency, so episodes replay exactly.
+  ++robot.model_calls_in_flight;
+  return [this, robot_id, to_loop,
+          due = robot.sim_now_s + config_.relocalization.simulated_latency_s,
+          order = next_model_call_++](absl::StatusOr<Answer> answer) {
+    absl::MutexLock lock(&mu_);
+    Robot& arrived = RobotRecord(robot_id);
+    --arrived.model_calls_in_flight;
+    arrived.held_answers.push_back({due, order, [to_loop, answer = std::move(answer)]() mutable {
+                                      to_loop(std::move(answer));
+                                    }});
+  };
+}
+
+void GatewayHub::OnLocalizationAnswer(
+    const std::string& robot_id,
+    const std::function<std::vector<RelocalizationAction>(RelocalizationLoop&, double now)>&
+        event) {
   absl::MutexLock lock(&mu_);
   if (shut_down_) return;
   auto found = robots_.find(robot_id);
   if (found == robots_.end() || found->second.localization == nullptr) return;
   Robot& robot = found->second;
   const bool was_relocalizing = robot.localization->relocalizing();
-  std::vector<RelocalizationAction> actions =
-      robot.localization->OnAnswer(NowFor(robot_id), answer);
+  std::vector<RelocalizationAction> actions = event(*robot.localization, NowFor(robot_id));
   const bool acted = !actions.empty();
   const RobotPose odom_pose = FromProto(robot.last_state);
   robot.pose =
       robot.localization->map_from_odom().Apply(odom_pose);  // before the task resumes on it
-  RunLocalizationActions(robot_id, robot, std::move(actions));
-  if (was_relocalizing != robot.localization->relocalizing() || acted)
-    SendLocalizationUpdate(robot);
-}
-
-void GatewayHub::OnScanRefinement(const std::string& robot_id,
-                                  absl::StatusOr<ScanRefinement> refinement) {
-  absl::MutexLock lock(&mu_);
-  if (shut_down_) return;
-  auto found = robots_.find(robot_id);
-  if (found == robots_.end() || found->second.localization == nullptr) return;
-  Robot& robot = found->second;
-  const bool was_relocalizing = robot.localization->relocalizing();
-  std::vector<RelocalizationAction> actions =
-      robot.localization->OnRefinement(NowFor(robot_id), refinement);
-  const bool acted = !actions.empty();
-  robot.pose = robot.localization->map_from_odom().Apply(FromProto(robot.last_state));
   RunLocalizationActions(robot_id, robot, std::move(actions));
   if (was_relocalizing != robot.localization->relocalizing() || acted)
     SendLocalizationUpdate(robot);

@@ -15,7 +15,7 @@ MappingLostScanClient::MappingLostScanClient(std::shared_ptr<grpc::Channel> chan
     : stub_(mapping_api::MappingService::NewStub(channel)), deadline_ms_(deadline_ms) {}
 
 void MappingLostScanClient::MatchLostScan(
-    const std::string& robot_id, const PlanarTransform& coarse,
+    const std::string& robot_id, const std::optional<PlanarTransform>& coarse,
     std::function<void(absl::StatusOr<ScanRefinement>)> done) {
   struct Call {
     grpc::ClientContext context;
@@ -24,9 +24,13 @@ void MappingLostScanClient::MatchLostScan(
   };
   auto call = std::make_shared<Call>();
   call->request.set_robot_id(robot_id);
-  call->request.mutable_coarse()->set_x(coarse.translation.x());
-  call->request.mutable_coarse()->set_y(coarse.translation.y());
-  call->request.mutable_coarse()->set_yaw(coarse.yaw);
+  if (coarse.has_value()) {
+    call->request.mutable_coarse()->set_x(coarse->translation.x());
+    call->request.mutable_coarse()->set_y(coarse->translation.y());
+    call->request.mutable_coarse()->set_yaw(coarse->yaw);
+  } else {
+    call->request.set_global(true);
+  }
   call->context.set_deadline(std::chrono::system_clock::now() +
                              std::chrono::milliseconds(deadline_ms_));
   stub_->async()->MatchLostScan(&call->context, &call->request, &call->response,
@@ -43,6 +47,8 @@ void MappingLostScanClient::MatchLostScan(
                                   refinement.refined = r.refined();
                                   refinement.score = r.score();
                                   refinement.coarse_score = r.coarse_score();
+                                  refinement.runner_up_score = r.runner_up_score();
+                                  refinement.ray_conflicts = r.ray_conflicts();
                                   done(refinement);
                                 });
 }

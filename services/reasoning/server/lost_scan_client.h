@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "absl/status/statusor.h"
@@ -18,14 +19,16 @@ namespace semnav::reasoning {
 class LostScanMatcher {
  public:
   virtual ~LostScanMatcher() = default;
-  virtual void MatchLostScan(const std::string& robot_id, const PlanarTransform& coarse,
+  // Around `coarse` (reported frame -> map), or over the whole map without one.
+  virtual void MatchLostScan(const std::string& robot_id,
+                             const std::optional<PlanarTransform>& coarse,
                              std::function<void(absl::StatusOr<ScanRefinement>)> done) = 0;
 };
 
 class MappingLostScanClient : public LostScanMatcher {
  public:
   MappingLostScanClient(std::shared_ptr<grpc::Channel> channel, int deadline_ms);
-  void MatchLostScan(const std::string& robot_id, const PlanarTransform& coarse,
+  void MatchLostScan(const std::string& robot_id, const std::optional<PlanarTransform>& coarse,
                      std::function<void(absl::StatusOr<ScanRefinement>)> done) override;
 
  private:
