@@ -198,7 +198,7 @@ std::vector<Eigen::Vector2d> TurnScan(const OccupiedRaster& map, const Eigen::Ve
   return hits;
 }
 
-// The lost-robot scan match on FR-079 (43 x 18 m of a real building): from free cells spread
+// The lost-robot scan match on FR-079 (one floor of a real building): from free cells spread
 // over the map, the scan a turn sees, in a frame 3 m and 100 deg off. Local: a coarse pose 0.2 m
 // and 5 deg off the truth. Global: no coarse pose. Counts the answers within 0.1 m / 1 deg.
 void BM_LostScanMatchFr079(benchmark::State& state) {
