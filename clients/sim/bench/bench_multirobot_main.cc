@@ -29,6 +29,7 @@ const std::vector<semnav::FlagSpec> kFlags = {
     {"seed", "N", "seed of B's starts, offsets and targets (default 1)"},
     {"look-arounds", "N", "look-arounds B may take before a reliable alignment (default 5)"},
     {"move-m", "M", "B's move between two look-arounds, metres by path (default 3)"},
+    {"no-scan-match", "", "align B by objects alone (no MatchLostScan against A's grid)"},
     {"json", "FILE", "also write the figures as JSON"},
     {"help", "", "this text"},
 };
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
                                           !(defaults.move_m >= 0.5 && defaults.move_m <= 20))) {
     return Fail(absl::InvalidArgumentError("--move-m: a number in [0.5, 20]"));
   }
+  defaults.scan_match = !flags.Has("no-scan-match");
   const std::string work_dir = (std::filesystem::temp_directory_path() /
                                 absl::StrCat("semnav-bench-multirobot-", ::getpid()))
                                    .string();
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
   report["worlds"] = nlohmann::json::array();
   std::vector<double> error_m, error_deg, ratios, route_ratios, align_ms;
   int total = 0, aligned = 0, reliable = 0, succeeded = 0, within_ratio = 0;
+  int scan_refined = 0, global_scan = 0;
   std::printf("%-20s %5s %-14s %4s %5s %7s %8s %8s %7s %7s %6s  %s\n", "world", "trial", "target",
               "look", "inl", "err_m", "err_deg", "path_m", "short_m", "ratio", "ok", "failure");
   for (int w = 1; w <= worlds; ++w) {
@@ -112,6 +115,8 @@ int main(int argc, char** argv) {
       aligned += t.aligned ? 1 : 0;
       reliable += t.reliable ? 1 : 0;
       succeeded += t.success ? 1 : 0;
+      scan_refined += t.alignment == "objects, scan-refined" ? 1 : 0;
+      global_scan += t.alignment == "global scan match" ? 1 : 0;
       if (t.aligned) {
         error_m.push_back(t.alignment_error_m);
         error_deg.push_back(t.alignment_error_deg);
@@ -136,6 +141,7 @@ int main(int argc, char** argv) {
                                  {"look_arounds", t.look_arounds},
                                  {"aligned", t.aligned},
                                  {"reliable", t.reliable},
+                                 {"alignment", t.alignment},
                                  {"inliers", t.inliers},
                                  {"rms_residual_m", t.rms_residual_m},
                                  {"align_ms", t.align_ms},
@@ -160,6 +166,9 @@ int main(int argc, char** argv) {
                        {"move_m", defaults.move_m},
                        {"aligned", aligned},
                        {"reliable", reliable},
+                       {"scan_match", defaults.scan_match},
+                       {"scan_refined", scan_refined},
+                       {"global_scan_matches", global_scan},
                        {"success_rate", success_rate},
                        {"success_within_1_3x_rate", within_ratio_rate},
                        {"median_alignment_error_m", Median(error_m)},
@@ -172,13 +181,14 @@ int main(int argc, char** argv) {
                        {"max_route_ratio", Max(route_ratios)},
                        {"median_align_ms", Median(align_ms)}};
   std::printf(
-      "\ntrials %d  aligned %d  reliable %d  success %.3f  success with path <= 1.3x %.3f\n"
+      "\ntrials %d  aligned %d  reliable %d (scan-refined %d, global scan match %d)  success %.3f  "
+      "success with path <= 1.3x %.3f\n"
       "alignment error median %.3f m / %.2f deg, max %.3f m / %.2f deg; path ratio median %.3f, "
       "max %.3f; "
       "route ratio after alignment median %.3f, max %.3f; AlignMaps median %.2f ms\n",
-      total, aligned, reliable, success_rate, within_ratio_rate, Median(error_m), Median(error_deg),
-      Max(error_m), Max(error_deg), Median(ratios), Max(ratios), Median(route_ratios),
-      Max(route_ratios), Median(align_ms));
+      total, aligned, reliable, scan_refined, global_scan, success_rate, within_ratio_rate,
+      Median(error_m), Median(error_deg), Max(error_m), Max(error_deg), Median(ratios), Max(ratios),
+      Median(route_ratios), Max(route_ratios), Median(align_ms));
   if (auto path = flags.Get("json")) {
     std::ofstream(*path) << report.dump(2) << "\n";
   }

@@ -141,7 +141,8 @@ absl::StatusOr<int> AwaitLandmarkMap(const std::shared_ptr<grpc::Channel>& reloc
 absl::StatusOr<int> LookAround(const World& world, const Scene& scene, const Eigen::Vector2d& at,
                                double start_yaw, uint64_t seed, double step_deg,
                                const Eigen::Isometry3d& odom_from_world,
-                               const std::string& robot_id, FrameStream& frames, double& clock_s) {
+                               const std::string& robot_id, FrameStream& frames, double& clock_s,
+                               FrameStream* lost_in_a = nullptr, const std::string& lost_id = "") {
   const RobotConfig robot_config = RobotConfig::ForModality(Modality::kGround);
   StartPose start;
   start.position = Eigen::Vector3d(at.x(), at.y(), 0.0);
@@ -160,8 +161,18 @@ absl::StatusOr<int> LookAround(const World& world, const Scene& scene, const Eig
     frame.time_s = clock_s;
     clock_s += kSecondsPerFrame;
     frame.odom_from_camera = odom_from_world * frame.odom_from_camera;
-    absl::StatusOr<mv1::FrameAck> ack = frames.Send(EncodeFrame(frame, robot_id));
+    mv1::SensorFrame encoded = EncodeFrame(frame, robot_id);
+    absl::StatusOr<mv1::FrameAck> ack = frames.Send(encoded);
     if (!ack.ok()) return ack.status();
+    if (lost_in_a != nullptr) {
+      // The same depth to A's mapping as a robot lost in A's map: it stays out of A's grid and
+      // becomes the scan MatchLostScan matches. Its detections stay home (they are in B's frame).
+      encoded.clear_detections();
+      encoded.set_pose_untrusted(true);
+      encoded.mutable_header()->set_robot_id(lost_id);
+      absl::StatusOr<mv1::FrameAck> lost_ack = lost_in_a->Send(encoded);
+      if (!lost_ack.ok()) return lost_ack.status();
+    }
   }
   return steps;
 }
@@ -219,6 +230,34 @@ std::vector<Target> MatchTargets(const World& world,
     if (best != nullptr) out.push_back({instance, best});
   }
   return out;
+}
+
+// B's scan of its look-arounds against A's grid (MatchLostScan): around `coarse` (a_from_b), or
+// globally without one. The refined a_from_b, or nullopt when mapping has no good answer.
+absl::StatusOr<std::optional<Eigen::Isometry3d>> MatchInA(
+    mv1::MappingService::Stub& mapping_a, const std::string& robot_id,
+    const std::optional<Eigen::Isometry3d>& coarse) {
+  mv1::MatchLostScanRequest request;
+  request.set_robot_id(robot_id);
+  if (coarse.has_value()) {
+    request.mutable_coarse()->set_x(coarse->translation().x());
+    request.mutable_coarse()->set_y(coarse->translation().y());
+    request.mutable_coarse()->set_yaw(YawOf(*coarse));
+  } else {
+    request.set_global(true);
+  }
+  mv1::MatchLostScanResponse response;
+  const grpc::Status status =
+      Call([&](grpc::ClientContext* c) { return mapping_a.MatchLostScan(c, request, &response); });
+  if (status.error_code() == grpc::StatusCode::NOT_FOUND ||
+      status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
+    return std::optional<Eigen::Isometry3d>();
+  }
+  if (!status.ok()) return FromGrpc(status, "MatchLostScan");
+  if (!response.refined()) return std::optional<Eigen::Isometry3d>();
+  return std::optional<Eigen::Isometry3d>(
+      PlanarTransform(response.correction().yaw(),
+                      Eigen::Vector2d(response.correction().x(), response.correction().y())));
 }
 
 }  // namespace
@@ -285,6 +324,7 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
   if (free_cells.empty())
     return absl::FailedPreconditionError(absl::StrCat(result.world, " has no free cell"));
   auto relocalization = rv1::RelocalizationService::NewStub(endpoints.relocalization);
+  auto mapping_a = mv1::MappingService::NewStub(endpoints.mapping_a);
   for (int t = 0; t < options.trials; ++t) {
     TwoRobotTrial trial;
     trial.index = t;
@@ -344,16 +384,45 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       }
       looked.push_back(at);
       trial.look_arounds = look + 1;
+      const std::string lost_id = absl::StrCat("robot_b_", options.world_seed, "_", t);
       {
         FrameStream frames(endpoints.mapping_b);
+        std::optional<FrameStream> lost_in_a;
+        if (options.scan_match) lost_in_a.emplace(endpoints.mapping_a);
         absl::StatusOr<int> sent =
             LookAround(world, scene, at, yaw, rng.Next(), options.look_step_deg, odom_b_from_world,
-                       "robot_b", frames, clock_s);
+                       "robot_b", frames, clock_s, lost_in_a ? &*lost_in_a : nullptr, lost_id);
         if (!sent.ok()) return sent.status();
       }
+      // B's frame to A's, as the true transform, for the error figures.
+      auto record_error = [&](const Eigen::Isometry3d& estimate) {
+        const Eigen::Vector3d start_in_b =
+            odom_b_from_world * Eigen::Vector3d(start.x(), start.y(), 0.0);
+        trial.alignment_error_m = (estimate * start_in_b - world_from_odom_b * start_in_b).norm();
+        trial.alignment_error_deg =
+            std::abs(Eigen::AngleAxisd(estimate.linear() * world_from_odom_b.linear().transpose())
+                         .angle()) *
+            180.0 / M_PI;
+      };
+      // Without a reliable object alignment, the walls B saw against A's grid.
+      auto global_scan = [&]() -> absl::StatusOr<bool> {
+        if (!options.scan_match) return false;
+        absl::StatusOr<std::optional<Eigen::Isometry3d>> found =
+            MatchInA(*mapping_a, lost_id, std::nullopt);
+        if (!found.ok()) return found.status();
+        if (!found->has_value()) return false;
+        a_from_b = **found;
+        record_error(a_from_b);
+        trial.aligned = trial.reliable = true;
+        trial.alignment = "global scan match";
+        return true;
+      };
       absl::StatusOr<std::vector<mv1::SceneObject>> b_objects = StableObjects(endpoints.mapping_b);
       if (!b_objects.ok()) return b_objects.status();
       if (b_objects->empty()) {
+        absl::StatusOr<bool> matched = global_scan();
+        if (!matched.ok()) return matched.status();
+        if (*matched) break;
         trial.failure = "B saw no stable object";
         continue;
       }
@@ -374,6 +443,9 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       if (!status.ok()) {
         if (status.error_code() != grpc::StatusCode::NOT_FOUND)
           return FromGrpc(status, "AlignMaps");
+        absl::StatusOr<bool> matched = global_scan();
+        if (!matched.ok()) return matched.status();
+        if (*matched) break;
         trial.failure = absl::StrCat("alignment failed: ", status.error_message());
         continue;
       }
@@ -383,14 +455,24 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       trial.rms_residual_m = aligned.solution().rms_residual_m();
       a_from_b = FromProto(aligned.solution().map_from_query());
       // A's frame is the world frame, so the true a_from_b is world_from_odom_b.
-      const Eigen::Vector3d start_in_b =
-          odom_b_from_world * Eigen::Vector3d(start.x(), start.y(), 0.0);
-      trial.alignment_error_m = (a_from_b * start_in_b - world_from_odom_b * start_in_b).norm();
-      trial.alignment_error_deg =
-          std::abs(Eigen::AngleAxisd(a_from_b.linear() * world_from_odom_b.linear().transpose())
-                       .angle()) *
-          180.0 / M_PI;
-      if (trial.reliable) break;
+      record_error(a_from_b);
+      if (trial.reliable) {
+        trial.alignment = "objects";
+        if (options.scan_match) {  // the walls refine the objects' answer
+          absl::StatusOr<std::optional<Eigen::Isometry3d>> refined =
+              MatchInA(*mapping_a, lost_id, a_from_b);
+          if (!refined.ok()) return refined.status();
+          if (refined->has_value()) {
+            a_from_b = **refined;
+            record_error(a_from_b);
+            trial.alignment = "objects, scan-refined";
+          }
+        }
+        break;
+      }
+      absl::StatusOr<bool> matched = global_scan();
+      if (!matched.ok()) return matched.status();
+      if (*matched) break;
       trial.failure = "alignment not reliable: B does not move on it";
     }
     if (!trial.reliable) {

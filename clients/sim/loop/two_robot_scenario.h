@@ -31,6 +31,10 @@ struct TwoRobotOptions {
   // the nearest place (by path) at least move_m from every place it looked from.
   int max_look_arounds = 5;
   double move_m = 3.0;
+  // B's look-around depth also goes to A's mapping as a lost robot's (pose_untrusted), and
+  // MatchLostScan refines a reliable object alignment against A's grid, or, without one, matches
+  // it globally (docs/algorithms/relocalization.md, section 8). Off: objects alone, as before.
+  bool scan_match = true;
 };
 
 struct TwoRobotTrial {
@@ -41,6 +45,8 @@ struct TwoRobotTrial {
   int look_arounds = 0;   // look-arounds B took (the first where it starts)
   bool aligned = false;   // AlignMaps answered
   bool reliable = false;  // ... with a reliable pose (B moves only then)
+  // What gave the pose B moved on: "objects", "objects, scan-refined", "global scan match".
+  std::string alignment;
   int inliers = 0;
   double rms_residual_m = 0.0;       // of the inliers, metres
   double align_ms = 0.0;             // AlignMaps round trip
