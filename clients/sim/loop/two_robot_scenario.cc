@@ -369,6 +369,17 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
     std::vector<Eigen::Vector2d> looked;
     double moved_m = 0.0;
     Eigen::Isometry3d a_from_b = Eigen::Isometry3d::Identity();
+    const std::string lost_id = absl::StrCat("robot_b_", options.world_seed, "_", t);
+    // B's frame to A's, as the true transform, for the error figures.
+    auto record_error = [&](const Eigen::Isometry3d& estimate) {
+      const Eigen::Vector3d start_in_b =
+          odom_b_from_world * Eigen::Vector3d(start.x(), start.y(), 0.0);
+      trial.alignment_error_m = (estimate * start_in_b - world_from_odom_b * start_in_b).norm();
+      trial.alignment_error_deg =
+          std::abs(Eigen::AngleAxisd(estimate.linear() * world_from_odom_b.linear().transpose())
+                       .angle()) *
+          180.0 / M_PI;
+    };
     for (int look = 0; look < options.max_look_arounds; ++look) {
       if (look > 0) {
         const std::optional<NearestGoal> next =
@@ -384,7 +395,6 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       }
       looked.push_back(at);
       trial.look_arounds = look + 1;
-      const std::string lost_id = absl::StrCat("robot_b_", options.world_seed, "_", t);
       {
         FrameStream frames(endpoints.mapping_b);
         std::optional<FrameStream> lost_in_a;
@@ -394,69 +404,43 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
                        "robot_b", frames, clock_s, lost_in_a ? &*lost_in_a : nullptr, lost_id);
         if (!sent.ok()) return sent.status();
       }
-      // B's frame to A's, as the true transform, for the error figures.
-      auto record_error = [&](const Eigen::Isometry3d& estimate) {
-        const Eigen::Vector3d start_in_b =
-            odom_b_from_world * Eigen::Vector3d(start.x(), start.y(), 0.0);
-        trial.alignment_error_m = (estimate * start_in_b - world_from_odom_b * start_in_b).norm();
-        trial.alignment_error_deg =
-            std::abs(Eigen::AngleAxisd(estimate.linear() * world_from_odom_b.linear().transpose())
-                         .angle()) *
-            180.0 / M_PI;
-      };
-      // Without a reliable object alignment, the walls B saw against A's grid.
-      auto global_scan = [&]() -> absl::StatusOr<bool> {
-        if (!options.scan_match) return false;
-        absl::StatusOr<std::optional<Eigen::Isometry3d>> found =
-            MatchInA(*mapping_a, lost_id, std::nullopt);
-        if (!found.ok()) return found.status();
-        if (!found->has_value()) return false;
-        a_from_b = **found;
+      // AlignMaps of B's map so far to A's: why it gave B no pose to move on ("" = it did).
+      auto align_by_objects = [&]() -> absl::StatusOr<std::string> {
+        absl::StatusOr<std::vector<mv1::SceneObject>> b_objects =
+            StableObjects(endpoints.mapping_b);
+        if (!b_objects.ok()) return b_objects.status();
+        if (b_objects->empty()) return std::string("B saw no stable object");
+        const std::string map_b =
+            absl::StrCat("two_robots_b_", options.world_seed, "_", t, "_", look);
+        if (absl::Status s = SaveMap(endpoints.mapping_b, map_b); !s.ok()) return s;
+        absl::StatusOr<int> b_landmarks = AwaitLandmarkMap(endpoints.relocalization, map_b);
+        if (!b_landmarks.ok()) return b_landmarks.status();
+        trial.b_landmarks = *b_landmarks;
+        rv1::AlignMapsRequest align;
+        align.set_reference_map_id(map_a);
+        align.set_moving_map_id(map_b);
+        rv1::AlignMapsResponse aligned;
+        const absl::Time sent_at = absl::Now();
+        const grpc::Status status = Call(
+            [&](grpc::ClientContext* c) { return relocalization->AlignMaps(c, align, &aligned); });
+        trial.align_ms = absl::ToDoubleMilliseconds(absl::Now() - sent_at);
+        if (!status.ok()) {
+          if (status.error_code() != grpc::StatusCode::NOT_FOUND)
+            return FromGrpc(status, "AlignMaps");
+          return absl::StrCat("alignment failed: ", status.error_message());
+        }
+        trial.aligned = true;
+        trial.reliable = aligned.solution().reliable();
+        trial.inliers = static_cast<int>(aligned.solution().inlier_count());
+        trial.rms_residual_m = aligned.solution().rms_residual_m();
+        a_from_b = FromProto(aligned.solution().map_from_query());
+        // A's frame is the world frame, so the true a_from_b is world_from_odom_b.
         record_error(a_from_b);
-        trial.aligned = trial.reliable = true;
-        trial.alignment = "global scan match";
-        return true;
+        return std::string(trial.reliable ? "" : "alignment not reliable: B does not move on it");
       };
-      absl::StatusOr<std::vector<mv1::SceneObject>> b_objects = StableObjects(endpoints.mapping_b);
-      if (!b_objects.ok()) return b_objects.status();
-      if (b_objects->empty()) {
-        absl::StatusOr<bool> matched = global_scan();
-        if (!matched.ok()) return matched.status();
-        if (*matched) break;
-        trial.failure = "B saw no stable object";
-        continue;
-      }
-      const std::string map_b =
-          absl::StrCat("two_robots_b_", options.world_seed, "_", t, "_", look);
-      if (absl::Status s = SaveMap(endpoints.mapping_b, map_b); !s.ok()) return s;
-      absl::StatusOr<int> b_landmarks = AwaitLandmarkMap(endpoints.relocalization, map_b);
-      if (!b_landmarks.ok()) return b_landmarks.status();
-      trial.b_landmarks = *b_landmarks;
-      rv1::AlignMapsRequest align;
-      align.set_reference_map_id(map_a);
-      align.set_moving_map_id(map_b);
-      rv1::AlignMapsResponse aligned;
-      const absl::Time sent_at = absl::Now();
-      const grpc::Status status = Call(
-          [&](grpc::ClientContext* c) { return relocalization->AlignMaps(c, align, &aligned); });
-      trial.align_ms = absl::ToDoubleMilliseconds(absl::Now() - sent_at);
-      if (!status.ok()) {
-        if (status.error_code() != grpc::StatusCode::NOT_FOUND)
-          return FromGrpc(status, "AlignMaps");
-        absl::StatusOr<bool> matched = global_scan();
-        if (!matched.ok()) return matched.status();
-        if (*matched) break;
-        trial.failure = absl::StrCat("alignment failed: ", status.error_message());
-        continue;
-      }
-      trial.aligned = true;
-      trial.reliable = aligned.solution().reliable();
-      trial.inliers = static_cast<int>(aligned.solution().inlier_count());
-      trial.rms_residual_m = aligned.solution().rms_residual_m();
-      a_from_b = FromProto(aligned.solution().map_from_query());
-      // A's frame is the world frame, so the true a_from_b is world_from_odom_b.
-      record_error(a_from_b);
-      if (trial.reliable) {
+      absl::StatusOr<std::string> why_not = align_by_objects();
+      if (!why_not.ok()) return why_not.status();
+      if (why_not->empty()) {
         trial.alignment = "objects";
         if (options.scan_match) {  // the walls refine the objects' answer
           absl::StatusOr<std::optional<Eigen::Isometry3d>> refined =
@@ -470,10 +454,19 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
         }
         break;
       }
-      absl::StatusOr<bool> matched = global_scan();
-      if (!matched.ok()) return matched.status();
-      if (*matched) break;
-      trial.failure = "alignment not reliable: B does not move on it";
+      if (options.scan_match) {  // without a reliable object alignment, the walls against A's grid
+        absl::StatusOr<std::optional<Eigen::Isometry3d>> found =
+            MatchInA(*mapping_a, lost_id, std::nullopt);
+        if (!found.ok()) return found.status();
+        if (found->has_value()) {
+          a_from_b = **found;
+          record_error(a_from_b);
+          trial.aligned = trial.reliable = true;
+          trial.alignment = "global scan match";
+          break;
+        }
+      }
+      trial.failure = *why_not;
     }
     if (!trial.reliable) {
       result.trials.push_back(trial);

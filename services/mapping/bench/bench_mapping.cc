@@ -214,9 +214,7 @@ void BM_LostScanMatchFr079(benchmark::State& state) {
     }
   }
   const PlanarCorrection truth{3.0, -1.0, 100.0 * M_PI / 180.0};
-  const PlanarCorrection reported_from_map{
-      -(std::cos(-truth.yaw) * truth.x - std::sin(-truth.yaw) * truth.y),
-      -(std::sin(-truth.yaw) * truth.x + std::cos(-truth.yaw) * truth.y), -truth.yaw};
+  const PlanarCorrection reported_from_map = truth.Inverse();
   size_t i = 0;
   int right = 0;
   int runs = 0;

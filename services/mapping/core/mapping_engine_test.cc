@@ -208,12 +208,7 @@ TEST(MappingEngineTest, UntrustedFramesAndTheLookbackBeforeThemMarkTheirInstance
 // Camera poses turning in place at `at` (1.2 m high), `count` headings over a full turn.
 std::vector<CameraPose> LookAround(const Eigen::Vector2d& at, int count) {
   std::vector<CameraPose> poses;
-  for (int i = 0; i < count; ++i) {
-    const double heading = 2.0 * M_PI * i / count;
-    poses.push_back(
-        testing::LookAt({at.x(), at.y(), 1.2},
-                        {at.x() + 3.0 * std::cos(heading), at.y() + 3.0 * std::sin(heading), 0.8}));
-  }
+  for (int i = 0; i < count; ++i) poses.push_back(testing::TurnedAt(at, 2.0 * M_PI * i / count));
   return poses;
 }
 
@@ -245,10 +240,7 @@ TEST(MappingEngineTest, ALostRobotsFramesStayOutOfTheMapAndRefineItsCorrection) 
   EXPECT_EQ(after.hierarchical, before.hierarchical);  // nothing drawn at the wrong pose
   EXPECT_EQ(after.origin_x, before.origin_x);
 
-  const double c = std::cos(-wrong.yaw);
-  const double s = std::sin(-wrong.yaw);
-  const PlanarCorrection truth{-(c * wrong.x - s * wrong.y), -(s * wrong.x + c * wrong.y),
-                               -wrong.yaw};
+  const PlanarCorrection truth = wrong.Inverse();
   // Relocalization's answer from a few objects: 0.15 m, -0.1 m and 5 deg off.
   const PlanarCorrection coarse{truth.x + 0.15, truth.y - 0.1, truth.yaw + 5.0 * M_PI / 180.0};
   absl::StatusOr<ScanMatchResult> match = engine.MatchLostScan("robot-1", coarse);

@@ -20,6 +20,11 @@ PlanarCorrection PlanarCorrection::After(const PlanarCorrection& other) const {
   return {t.x(), t.y(), std::remainder(yaw + other.yaw, 2.0 * M_PI)};
 }
 
+PlanarCorrection PlanarCorrection::Inverse() const {
+  const Eigen::Vector2d t = PlanarCorrection{0.0, 0.0, -yaw}.Apply({x, y});  // R^T (x, y)
+  return {-t.x(), -t.y(), -yaw};
+}
+
 namespace {
 
 // exp(-d^2 / 2 sigma^2) per raster cell, d the distance to the nearest occupied cell.
@@ -77,6 +82,21 @@ bool HasOccupied(const OccupiedRaster& map) {
   return std::any_of(map.occupied.begin(), map.occupied.end(), [](uint8_t v) { return v != 0; });
 }
 
+// Mean of `field` at the cells (cols[i] + col, rows[i] + row); cells outside count 0.
+double MeanAt(const cv::Mat& field, const std::vector<int>& cols, const std::vector<int>& rows,
+              int col, int row) {
+  double sum = 0.0;
+  const float* data = field.ptr<float>(0);
+  const size_t stride = field.step1();
+  for (size_t i = 0; i < cols.size(); ++i) {
+    const int c = col + cols[i];
+    const int r = row + rows[i];
+    if (c < 0 || r < 0 || c >= field.cols || r >= field.rows) continue;
+    sum += data[static_cast<size_t>(r) * stride + c];
+  }
+  return cols.empty() ? 0.0 : sum / static_cast<double>(cols.size());
+}
+
 }  // namespace
 
 absl::StatusOr<ScanMatchResult> MatchScan(const OccupiedRaster& map,
@@ -104,7 +124,6 @@ absl::StatusOr<ScanMatchResult> MatchScan(const OccupiedRaster& map,
       config.angular_step_rad > 0.0
           ? static_cast<int>(std::floor(config.angular_window_rad / config.angular_step_rad))
           : 0;
-  const double n = static_cast<double>(cells.size());
   std::vector<int> cols(cells.size());
   std::vector<int> rows(cells.size());
   double best_score = -1.0;
@@ -125,14 +144,7 @@ absl::StatusOr<ScanMatchResult> MatchScan(const OccupiedRaster& map,
     }
     for (int oy = -reach; oy <= reach; ++oy) {
       for (int ox = -reach; ox <= reach; ++ox) {
-        double sum = 0.0;
-        for (size_t i = 0; i < cells.size(); ++i) {
-          const int col = cols[i] + ox;
-          const int row = rows[i] + oy;
-          if (col < 0 || row < 0 || col >= map.width || row >= map.height) continue;
-          sum += field.at<float>(row, col);
-        }
-        const double score = sum / n;
+        const double score = MeanAt(field, cols, rows, ox, oy);
         const double cost = std::hypot(ox * res, oy * res) + std::abs(dyaw);
         if (k == 0 && ox == 0 && oy == 0) result.coarse_score = score;
         if (score > best_score + 1e-12 ||
@@ -204,25 +216,12 @@ void Offsets(const std::vector<Eigen::Vector2d>& relative, double yaw, double re
   }
 }
 
-double MeanAt(const cv::Mat& field, const std::vector<int>& cols, const std::vector<int>& rows,
-              int col, int row) {
-  double sum = 0.0;
-  const float* data = field.ptr<float>(0);
-  const size_t stride = field.step1();
-  for (size_t i = 0; i < cols.size(); ++i) {
-    const int c = col + cols[i];
-    const int r = row + rows[i];
-    if (c < 0 || r < 0 || c >= field.cols || r >= field.rows) continue;
-    sum += data[static_cast<size_t>(r) * stride + c];
-  }
-  return cols.empty() ? 0.0 : sum / static_cast<double>(cols.size());
-}
-
 // Share of the rays from the robot's cell to its scan cells (offsets at the pose) that meet an
 // opaque map cell before their last `slack` cells (a grid line walk, Bresenham).
 double RayConflicts(const OccupiedRaster& map, const std::vector<int>& cols,
                     const std::vector<int>& rows, int col, int row, int slack) {
   if (cols.empty()) return 0.0;
+  const std::vector<uint8_t>& opaque = map.opaque.empty() ? map.occupied : map.opaque;
   int conflicts = 0;
   for (size_t i = 0; i < cols.size(); ++i) {
     const int dx = cols[i];
@@ -232,7 +231,6 @@ double RayConflicts(const OccupiedRaster& map, const std::vector<int>& cols,
       const int c = col + static_cast<int>(std::lround(static_cast<double>(dx) * t / steps));
       const int r = row + static_cast<int>(std::lround(static_cast<double>(dy) * t / steps));
       if (c < 0 || r < 0 || c >= map.width || r >= map.height) break;
-      const std::vector<uint8_t>& opaque = map.opaque.empty() ? map.occupied : map.opaque;
       if (opaque[static_cast<size_t>(r) * map.width + c] != 0) {
         ++conflicts;
         break;

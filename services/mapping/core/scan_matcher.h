@@ -25,6 +25,7 @@ struct PlanarCorrection {
   Eigen::Vector2d Apply(const Eigen::Vector2d& p) const;
   // (this after other): p -> this(other(p)).
   PlanarCorrection After(const PlanarCorrection& other) const;
+  PlanarCorrection Inverse() const;
 };
 
 // Occupied cells of a rectangle of the grid, row-major, nonzero = occupied.

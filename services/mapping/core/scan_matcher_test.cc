@@ -48,18 +48,23 @@ std::vector<Eigen::Vector2d> RoomPointsInMap() {
   return points;
 }
 
-PlanarCorrection Inverse(const PlanarCorrection& t) {
-  const double c = std::cos(-t.yaw);
-  const double s = std::sin(-t.yaw);
-  return {-(c * t.x - s * t.y), -(s * t.x + c * t.y), -t.yaw};
-}
-
 // The robot's reported frame: `truth` takes it to the map.
 std::vector<Eigen::Vector2d> ScanInReportedFrame(const PlanarCorrection& truth) {
-  const PlanarCorrection reported_from_map = Inverse(truth);
+  const PlanarCorrection reported_from_map = truth.Inverse();
   std::vector<Eigen::Vector2d> scan;
   for (const Eigen::Vector2d& p : RoomPointsInMap()) scan.push_back(reported_from_map.Apply(p));
   return scan;
+}
+
+TEST(PlanarCorrectionTest, InverseUndoesIt) {
+  // p -> R(90 deg) p + (1, 0); back: p -> R(-90 deg) (p - (1, 0)) = R(-90 deg) p + (0, 1).
+  const PlanarCorrection back = PlanarCorrection{1.0, 0.0, 90 * kDeg}.Inverse();
+  EXPECT_NEAR(back.x, 0.0, 1e-12);
+  EXPECT_NEAR(back.y, 1.0, 1e-12);
+  EXPECT_NEAR(back.yaw, -90 * kDeg, 1e-12);
+  const Eigen::Vector2d p = back.Apply(PlanarCorrection{1.0, 0.0, 90 * kDeg}.Apply({2.0, -3.0}));
+  EXPECT_NEAR(p.x(), 2.0, 1e-12);
+  EXPECT_NEAR(p.y(), -3.0, 1e-12);
 }
 
 TEST(PlanarCorrectionTest, AfterAppliesTheOtherFirst) {
@@ -88,7 +93,7 @@ TEST(ScanMatcherTest, ACoarsePoseOffByDecimetresAndDegreesSnapsToTheWalls) {
   EXPECT_GT(result->score, 0.9);
   EXPECT_LT(result->coarse_score, 0.5);  // some walls still lie within a sigma or two
   // Compare where the correction takes the room's centre in the reported frame.
-  const Eigen::Vector2d centre = Inverse(truth).Apply({3.5, 2.5});
+  const Eigen::Vector2d centre = truth.Inverse().Apply({3.5, 2.5});
   EXPECT_LT((result->correction.Apply(centre) - Eigen::Vector2d(3.5, 2.5)).norm(), 0.05);
   EXPECT_LT(std::abs(result->correction.yaw - truth.yaw), 0.75 * kDeg);
 }
@@ -177,7 +182,7 @@ TEST(GlobalScanMatcherTest, ALostRobotIsFoundAnywhereAtAnyHeading) {
   // Carried 5 m and 120 deg from where it believes it is; no coarse pose at all.
   const PlanarCorrection truth{5.0, -3.0, 120 * kDeg};
   const Eigen::Vector2d robot_in_map(2.0, 2.5);
-  const Eigen::Vector2d robot_reported = Inverse(truth).Apply(robot_in_map);
+  const Eigen::Vector2d robot_reported = truth.Inverse().Apply(robot_in_map);
   absl::StatusOr<ScanMatchResult> result =
       MatchScanGlobally(WithFreeInside(Room(), true), ScanInReportedFrame(truth), robot_reported,
                         ScanMatchConfig{}, GlobalMatchConfig{});
@@ -195,7 +200,7 @@ TEST(GlobalScanMatcherTest, ARoomThatLooksTheSameAfterAHalfTurnIsNoAnswer) {
   // what a robot at (5, 2.5) facing the other way sees. Both poses score alike, so neither is
   // taken.
   const PlanarCorrection truth{5.0, -3.0, 120 * kDeg};
-  const PlanarCorrection reported_from_map = Inverse(truth);
+  const PlanarCorrection reported_from_map = truth.Inverse();
   std::vector<Eigen::Vector2d> scan;
   for (const Eigen::Vector2d& p : BareRoomPointsInMap()) scan.push_back(reported_from_map.Apply(p));
   const Eigen::Vector2d robot_reported = reported_from_map.Apply({2.0, 2.5});
@@ -232,7 +237,7 @@ TEST(GlobalScanMatcherTest, AnAnswerWhoseRaysCrossTheMapsWallsIsNoAnswer) {
                      static_cast<size_t>(std::floor(4.0 / divided.resolution))] = 1;
   }
   const PlanarCorrection truth{5.0, -3.0, 120 * kDeg};
-  const Eigen::Vector2d robot_reported = Inverse(truth).Apply({2.0, 2.5});
+  const Eigen::Vector2d robot_reported = truth.Inverse().Apply({2.0, 2.5});
   absl::StatusOr<ScanMatchResult> result = MatchScanGlobally(
       divided, ScanInReportedFrame(truth), robot_reported, ScanMatchConfig{}, GlobalMatchConfig{});
   ASSERT_TRUE(result.ok()) << result.status();

@@ -60,7 +60,9 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
 
   ConfigReader scan = section.Child("scan_match");
   ScanMatchConfig& m = c.scan_match;
+  GlobalMatchConfig& g = c.global_scan_match;
   int max_cells = static_cast<int>(c.lost_scan_max_cells);
+  int global_max_cells = static_cast<int>(c.global_scan_match_max_cells);
   scan.Read("linear_window_m", &m.linear_window_m)
       .Read("angular_window_rad", &m.angular_window_rad)
       .Read("angular_step_rad", &m.angular_step_rad)
@@ -69,26 +71,11 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("min_gain", &m.min_gain)
       .Read("min_scan_cells", &m.min_scan_cells)
       .Read("max_cells", &max_cells)
-      .Read("global_angular_step_rad", &c.global_scan_match.angular_step_rad)
-      .Read("global_min_score", &c.global_scan_match.min_score)
-      .Read("global_min_misfit_ratio", &c.global_scan_match.min_misfit_ratio)
-      .Read("global_max_ray_conflicts", &c.global_scan_match.max_ray_conflicts);
-  scan.Check(
-      c.global_scan_match.max_ray_conflicts >= 0.0 && c.global_scan_match.max_ray_conflicts <= 1.0,
-      "global_max_ray_conflicts", "must be in [0, 1]");
-  int global_max_cells = static_cast<int>(c.global_scan_match_max_cells);
-  scan.Read("global_max_cells", &global_max_cells);
-  scan.Check(
-      c.global_scan_match.angular_step_rad >= 0.01 && c.global_scan_match.angular_step_rad <= 0.2,
-      "global_angular_step_rad", "must be in [0.01, 0.2]");
-  scan.Check(c.global_scan_match.min_score >= 0.0 && c.global_scan_match.min_score <= 1.0,
-             "global_min_score", "must be in [0, 1]");
-  scan.Check(
-      c.global_scan_match.min_misfit_ratio >= 1.0 && c.global_scan_match.min_misfit_ratio <= 100.0,
-      "global_min_misfit_ratio", "must be in [1, 100]");
-  scan.Check(global_max_cells >= 1 && global_max_cells <= 16'000'000, "global_max_cells",
-             "must be in [1, 16000000]");
-  c.global_scan_match_max_cells = static_cast<size_t>(std::clamp(global_max_cells, 1, 16'000'000));
+      .Read("global_angular_step_rad", &g.angular_step_rad)
+      .Read("global_min_score", &g.min_score)
+      .Read("global_min_misfit_ratio", &g.min_misfit_ratio)
+      .Read("global_max_ray_conflicts", &g.max_ray_conflicts)
+      .Read("global_max_cells", &global_max_cells);
   // The search visits (2 w / r + 1)^2 (2 a / s + 1) poses: the bounds keep it under ~10^6.
   scan.Check(m.linear_window_m >= 0.0 && m.linear_window_m <= 2.0, "linear_window_m",
              "must be in [0, 2]");
@@ -109,6 +96,16 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   scan.Check(m.min_scan_cells >= 1, "min_scan_cells", "must be >= 1");
   scan.Check(max_cells >= 1 && max_cells <= 200000, "max_cells", "must be in [1, 200000]");
   c.lost_scan_max_cells = static_cast<size_t>(std::clamp(max_cells, 1, 200000));
+  scan.Check(g.angular_step_rad >= 0.01 && g.angular_step_rad <= 0.2, "global_angular_step_rad",
+             "must be in [0.01, 0.2]");
+  scan.Check(g.min_score >= 0.0 && g.min_score <= 1.0, "global_min_score", "must be in [0, 1]");
+  scan.Check(g.min_misfit_ratio >= 1.0 && g.min_misfit_ratio <= 100.0, "global_min_misfit_ratio",
+             "must be in [1, 100]");
+  scan.Check(g.max_ray_conflicts >= 0.0 && g.max_ray_conflicts <= 1.0, "global_max_ray_conflicts",
+             "must be in [0, 1]");
+  scan.Check(global_max_cells >= 1 && global_max_cells <= 16'000'000, "global_max_cells",
+             "must be in [1, 16000000]");
+  c.global_scan_match_max_cells = static_cast<size_t>(std::clamp(global_max_cells, 1, 16'000'000));
 
   ConfigReader semantic = section.Child("semantic");
   semantic.Read("blur_min_laplacian_variance", &c.blur_min_laplacian_variance)

@@ -76,6 +76,11 @@ SyntheticRoom StandardRoom() {
   return room;
 }
 
+CameraPose TurnedAt(const Eigen::Vector2d& at, double heading) {
+  return LookAt({at.x(), at.y(), 1.2},
+                {at.x() + 3.0 * std::cos(heading), at.y() + 3.0 * std::sin(heading), 0.8});
+}
+
 std::vector<CameraPose> RoomTour(const SyntheticRoom& room, int count) {
   std::vector<CameraPose> poses;
   for (int i = 0; i < count; ++i) {

@@ -32,6 +32,10 @@ CameraPose LookAt(const Eigen::Vector3d& position, const Eigen::Vector3d& target
 // The standard test room: 6 x 4 x 2.5 m with a table-height box and a tall cabinet.
 SyntheticRoom StandardRoom();
 
+// A camera turning in place: 1.2 m high at `at`, looking along `heading` (radians) at a point 3 m
+// out and 0.8 m high.
+CameraPose TurnedAt(const Eigen::Vector2d& at, double heading);
+
 // `count` poses at 1.2 m height along the room's long axis, each looking at a different wall point.
 std::vector<CameraPose> RoomTour(const SyntheticRoom& room, int count);
 

@@ -484,12 +484,6 @@ TEST_F(MappingContractTest, GridWatchSendsSnapshotThenChangedWindowAndResumes) {
 namespace semnav::mapping {
 namespace {
 
-// A camera turning in place at `at`, 1.2 m high, heading `heading` (radians).
-CameraPose LookFrom(const Eigen::Vector2d& at, double heading) {
-  return testing::LookAt({at.x(), at.y(), 1.2},
-                         {at.x() + 3.0 * std::cos(heading), at.y() + 3.0 * std::sin(heading), 0.8});
-}
-
 // A robot that reports a wrong pose streams its look-around with pose_untrusted: nothing of it
 // enters the grid, and MatchLostScan takes a coarse correction to the walls it saw.
 TEST_F(MappingContractTest, ALostRobotsLookAroundRefinesItsCorrectionAndLeavesTheGridAlone) {
@@ -497,8 +491,8 @@ TEST_F(MappingContractTest, ALostRobotsLookAroundRefinesItsCorrectionAndLeavesTh
   std::vector<v1::SensorFrame> mapped;
   int64_t stamp = 0;
   for (int i = 0; i < 12; ++i) {
-    mapped.push_back(testing::FrameToProto(
-        testing::RenderFrame(room, LookFrom({3.0, 2.0}, 2.0 * M_PI * i / 12), stamp += kFrameNs)));
+    mapped.push_back(testing::FrameToProto(testing::RenderFrame(
+        room, testing::TurnedAt({3.0, 2.0}, 2.0 * M_PI * i / 12), stamp += kFrameNs)));
   }
   Stream(mapped);
   const std::string grid_before = Grid().grid().SerializeAsString();
@@ -509,7 +503,7 @@ TEST_F(MappingContractTest, ALostRobotsLookAroundRefinesItsCorrectionAndLeavesTh
   const Eigen::Vector2d shift(1.0, -0.5);
   std::vector<v1::SensorFrame> lost;
   for (int i = 0; i < 8; ++i) {
-    const CameraPose truth = LookFrom({1.5, 2.5}, 2.0 * M_PI * i / 8);
+    const CameraPose truth = testing::TurnedAt({1.5, 2.5}, 2.0 * M_PI * i / 8);
     SensorFrame frame = testing::RenderFrame(room, truth, stamp += kFrameNs);
     const Eigen::Vector2d reported = turn * truth.position.head<2>() + shift;
     frame.pose.position = Eigen::Vector3d(reported.x(), reported.y(), truth.position.z());
