@@ -468,6 +468,7 @@ struct MapSize {
   long objects = 0;
   long relations = 0;
   long explored_cells = 0;
+  std::map<std::string, long> objects_by_label;  // to compare with the home's own objects
 };
 
 std::optional<MapSize> SampleMap(const std::shared_ptr<grpc::Channel>& mapping) {
@@ -480,6 +481,7 @@ std::optional<MapSize> SampleMap(const std::shared_ptr<grpc::Channel>& mapping) 
     if (!stub->GetSceneGraph(&context, {}, &response).ok()) return std::nullopt;
     size.objects = response.graph().objects_size();
     size.relations = response.graph().relations_size();
+    for (const auto& object : response.graph().objects()) ++size.objects_by_label[object.label()];
   }
   grpc::ClientContext context;
   context.set_deadline(absl::ToChronoTime(absl::Now() + kRpcDeadline));
@@ -696,6 +698,7 @@ nlohmann::json RunJson(const RunResult& r) {
                                 {"relations", size.relations},
                                 {"explored_cells", size.explored_cells}});
   }
+  if (!r.map_sizes.empty()) out["map_objects_by_label_end"] = r.map_sizes.back().objects_by_label;
   out["meets_targets"] = r.MeetsTargets();
   out["load_average_1m"] = r.load_average_1m;
   return out;
@@ -814,6 +817,9 @@ int main(int argc, char** argv) {
     // The largest run's figures at the top level; a sweep lists every run under "runs".
     nlohmann::json out = RunJson(runs.back());
     out["max_robots_meeting_targets"] = max_meeting;
+    std::map<std::string, long> world_objects;
+    for (const sim::ObjectInstance& object : shared.world.objects) ++world_objects[object.label];
+    out["world_objects_by_label"] = world_objects;
     if (runs.size() > 1) {
       for (const RunResult& r : runs) out["runs"].push_back(RunJson(r));
     }

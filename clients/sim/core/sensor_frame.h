@@ -24,6 +24,7 @@ struct SensorFrame {
   std::vector<float> depth;    // row-major z-depth, metres; 0 = no return
   std::optional<cv::Mat> rgb;  // CV_8UC3 BGR when enabled
   DetectionFrame detections;   // empty when disabled
+  bool detector_ran = false;   // detections were enabled for this frame
 };
 
 }  // namespace semnav::sim

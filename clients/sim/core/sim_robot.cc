@@ -180,6 +180,7 @@ SensorFrame SimRobot::Capture() {
   if (sensors_.detections) {
     frame.detections = DetectObjects(view, scene_, world_, sensors_.detector,
                                      StreamSeed(seed_, Stream::kDetections, frame.index));
+    frame.detector_ran = true;
   }
   return frame;
 }

@@ -52,6 +52,7 @@ mapping::SensorFrame EncodeFrame(const SensorFrame& frame, const std::string& ro
   *out.mutable_camera_pose() = ToProtoPose(frame.odom_from_camera);
   for (const Detection& d : frame.detections.detections)
     EncodeDetection(d, k, out.add_detections());
+  out.set_detector_ran(frame.detector_ran);
   return out;
 }
 

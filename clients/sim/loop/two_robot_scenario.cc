@@ -168,6 +168,7 @@ absl::StatusOr<int> LookAround(const World& world, const Scene& scene, const Eig
       // The same depth to A's mapping as a robot lost in A's map: it stays out of A's grid and
       // becomes the scan MatchLostScan matches. Its detections stay home (they are in B's frame).
       encoded.clear_detections();
+      encoded.set_detector_ran(false);
       encoded.set_pose_untrusted(true);
       encoded.mutable_header()->set_robot_id(lost_id);
       absl::StatusOr<mv1::FrameAck> lost_ack = lost_in_a->Send(encoded);

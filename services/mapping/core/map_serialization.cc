@@ -174,12 +174,23 @@ Eigen::Vector3d Vec(const json& j) {
 
 }  // namespace
 
+std::string OctreeSection(const octomap::OcTree& tree) {
+  std::ostringstream octree;
+  tree.write(octree);
+  return std::move(octree).str();
+}
+
 std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObject>& objects,
                          uint64_t next_object_id,
                          const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points,
                          const SavedGrid* grid) {
-  std::ostringstream octree;
-  tree.write(octree);
+  return SerializeMap(OctreeSection(tree), objects, next_object_id, semantic_points, grid);
+}
+
+std::string SerializeMap(std::string octree_section, const std::vector<SceneObject>& objects,
+                         uint64_t next_object_id,
+                         const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points,
+                         const SavedGrid* grid) {
   json scene = {{"next_id", next_object_id}, {"objects", json::array()}};
   for (const SceneObject& o : objects) {
     scene["objects"].push_back({{"id", o.id},
@@ -193,7 +204,8 @@ std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObj
                                 {"last_seen_ns", o.last_seen_ns}});
   }
   std::string out;
-  PutSection(out, octree.str());
+  PutSection(out, octree_section);
+  octree_section = std::string();  // freed before the larger sections are made
   PutSection(out, scene.dump());
   PutSection(out, SemanticSection(semantic_points));
   if (grid != nullptr) PutSection(out, GridSection(*grid));

@@ -54,6 +54,15 @@ std::string SerializeMap(const octomap::OcTree& tree, const std::vector<SceneObj
                          const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points,
                          const SavedGrid* grid = nullptr);
 
+// The same payload from the OcTree already written (OctreeSection). The live snapshot writes the
+// tree under the engine's reader lock rather than copying it: a copy of a fleet's map is
+// millions of small nodes, freed again every 5 s, and the heap kept their peak.
+std::string OctreeSection(const octomap::OcTree& tree);
+std::string SerializeMap(std::string octree_section, const std::vector<SceneObject>& objects,
+                         uint64_t next_object_id,
+                         const std::map<std::string, std::vector<Eigen::Vector3f>>& semantic_points,
+                         const SavedGrid* grid = nullptr);
+
 // DATA_LOSS naming what is malformed.
 absl::StatusOr<MapContent> ParseMap(const std::string& payload);
 

@@ -14,6 +14,7 @@
 #include "services/common/status/value_checks.h"
 #include "services/mapping/core/frame_validation.h"
 #include "services/mapping/core/map_serialization.h"
+#include "services/mapping/core/object_visibility.h"
 #include "services/mapping/core/semantic_filters.h"
 
 namespace semnav::mapping {
@@ -201,7 +202,12 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   untrusted = frame.pose_untrusted;
   for (ObjectObservation& observation : observations)
     observation.pose_untrusted = frame.pose_untrusted;
-  s.scene.Integrate(observations, frame.stamp_ns);
+  // Negative evidence only from what the robot trusts and its detector really looked at.
+  const bool evidence = frame.detector_ran && !frame.pose_untrusted && !result.blurred;
+  s.scene.Integrate(observations, frame.stamp_ns, [&](const SceneObject& object) {
+    return evidence &&
+           ExpectedInView(object, depth, frame.intrinsics, frame.pose, config_.scene.existence);
+  });
   s.last_stamp[frame.robot_id] = frame.stamp_ns;
 
   ++revision_;
@@ -421,10 +427,12 @@ uint64_t MappingEngine::AwaitChange(uint64_t revision, absl::Duration timeout) c
 }
 
 std::string MappingEngine::Serialize() const {
-  // Copied under the lock and written outside it: writing the whole map (tens of MB of text in
+  // The tree is written under the lock (readers share it, frames wait ~0.1 s for a fleet's map)
+  // and the rest is copied and written outside it: writing the whole map (tens of MB of text in
   // the fleet soak) under the lock held up every frame, grid fetch and query meanwhile, and the
-  // live snapshot does it every 5 s.
-  std::optional<octomap::OcTree> tree;
+  // live snapshot does it every 5 s. Copying the tree instead allocated and freed its millions
+  // of nodes each time, and mapping's RSS followed that peak as the map grew.
+  std::string octree;
   std::vector<SceneObject> objects;
   uint64_t next_object_id = 0;
   std::map<std::string, std::vector<Eigen::Vector3f>> points;
@@ -433,7 +441,7 @@ std::string MappingEngine::Serialize() const {
   {
     absl::ReaderMutexLock lock(&mu_);
     const State& s = *state_;
-    tree.emplace(*s.tree);
+    octree = OctreeSection(*s.tree);
     objects = s.scene.objects();
     next_object_id = s.scene.next_id();
     points = s.semantic.points();
@@ -441,7 +449,7 @@ std::string MappingEngine::Serialize() const {
       grid.cells.push_back({c.index.x, c.index.y, c.log_odds, c.height, c.structure});
     }
   }
-  return SerializeMap(*tree, objects, next_object_id, points, &grid);
+  return SerializeMap(std::move(octree), objects, next_object_id, points, &grid);
 }
 
 absl::Status MappingEngine::Restore(const std::string& payload) {

@@ -266,6 +266,45 @@ TEST(MappingEngineTest, ALostRobotsFramesStayOutOfTheMapAndRefineItsCorrection) 
   EXPECT_EQ(engine.MatchLostScan("robot-1", coarse).status().code(), absl::StatusCode::kNotFound);
 }
 
+// A table detected twice, then looked at with the detector running and nothing reported: a
+// false detection that recurred. With detector_ran it goes at the 8th miss (8 > 3 x 2); a robot
+// without a detector (detector_ran false) says nothing about it, nor does an untrusted pose.
+TEST(MappingEngineTest, AnInstanceTheDetectorKeepsNotSeeingGoes) {
+  for (const bool detector_ran : {true, false}) {
+    for (const bool untrusted : {false, true}) {
+      if (!detector_ran && untrusted) continue;
+      MappingEngine engine{MappingConfig{}};
+      const testing::SyntheticRoom room = testing::StandardRoom();
+      int64_t stamp = 0;
+      for (int i = 0; i < 2; ++i) {
+        SensorFrame frame = testing::RenderFrame(room, Viewpoint(), stamp += kFrameNs);
+        frame.detector_ran = true;
+        Detection table;
+        table.label = "table";
+        table.score = 0.9;
+        table.box = BoxAround({3.2, 1.3, 0.7}, Viewpoint(), 40);
+        frame.detections.push_back(table);
+        ASSERT_TRUE(engine.AddFrame(frame).ok());
+      }
+      ASSERT_EQ(engine.Scene().objects.size(), 1u);
+      for (int miss = 1; miss <= 8; ++miss) {
+        SensorFrame frame = testing::RenderFrame(room, Viewpoint(), stamp += kFrameNs);
+        frame.detector_ran = detector_ran;
+        frame.pose_untrusted = untrusted;
+        ASSERT_TRUE(engine.AddFrame(frame).ok());
+        const SceneSnapshot scene = engine.Scene();
+        const bool counted = detector_ran && !untrusted;
+        if (counted && miss == 8) {
+          EXPECT_TRUE(scene.objects.empty());
+        } else {
+          ASSERT_EQ(scene.objects.size(), 1u) << "miss " << miss;
+          EXPECT_EQ(scene.objects[0].misses, counted ? miss : 0);
+        }
+      }
+    }
+  }
+}
+
 TEST(MappingEngineTest, BlurredColourImageSkipsDetectionsButKeepsDepth) {
   MappingEngine engine{MappingConfig{}};
   SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);

@@ -100,9 +100,16 @@ void SceneGraph::MarkPoseUntrustedSince(int64_t since_ns) {
 }
 
 void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns) {
+  Integrate(observations, now_ns, [](const SceneObject&) { return false; });
+}
+
+void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns,
+                           absl::FunctionRef<bool(const SceneObject&)> expected_in_view) {
   bool changed = false;
+  std::vector<uint64_t> matched;
   for (const ObjectObservation& observation : observations) {
     SceneObject* object = Match(observation);
+    matched.push_back(object != nullptr ? object->id : next_id_);
     if (object == nullptr) {
       SceneObject fresh;
       fresh.id = next_id_++;
@@ -123,8 +130,19 @@ void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, i
     }
     changed = true;
   }
+  const ExistenceConfig& existence = config_.existence;
+  if (existence.enabled) {
+    for (SceneObject& o : objects_) {
+      if (std::find(matched.begin(), matched.end(), o.id) != matched.end()) continue;
+      if (expected_in_view(o)) ++o.misses;
+    }
+  }
   const auto prune_ns = static_cast<int64_t>(config_.prune_single_after_s * 1e9);
   const auto stale = [&](const SceneObject& o) {
+    if (existence.enabled && o.misses >= existence.min_misses &&
+        o.misses > existence.max_misses_per_detection * o.detection_count) {
+      return true;
+    }
     return o.detection_count == 1 && now_ns - o.last_seen_ns > prune_ns;
   };
   for (const SceneObject& o : objects_) {

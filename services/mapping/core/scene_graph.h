@@ -5,9 +5,29 @@
 #include <string>
 #include <vector>
 
+#include "absl/functional/function_ref.h"
 #include "services/mapping/core/scene_types.h"
 
 namespace semnav::mapping {
+
+// Negative evidence, existence tracking as in Fusion++ (McCormac et al. 2018) and Khronos: a frame
+// in which the camera should have detected an instance (ExpectedInView) but did not counts a miss
+// against it. Instances missed far more often than detected are dropped. Without it, every false
+// detection that recurred once stayed for good: a 50-robot fleet's home of 18 objects grew to 80
+// instances in 3 minutes (docs/performance.md, "Fleet").
+struct ExistenceConfig {
+  bool enabled = true;
+  // When an instance counts as expected in view. Conservative on purpose: an instance the
+  // detector could not have seen must never lose existence, so the range is below a typical
+  // detector's and the apparent size well above the smallest it reports.
+  double max_range_m = 4.0;            // centre depth along the optical axis
+  double min_view_fraction = 0.002;    // projected extent / image area (600 px of 640 x 480)
+  double image_margin = 0.1;           // of width and height: the centre well inside the image
+  double occlusion_tolerance_m = 0.3;  // depth at the centre may be this much nearer than the front
+  // Dropped once misses >= min_misses and misses > max_misses_per_detection x detections.
+  int min_misses = 8;
+  double max_misses_per_detection = 3.0;
+};
 
 struct SceneGraphConfig {
   double ema_new_weight = 0.3;            // seed 002: new = 0.3 * detection + 0.7 * existing
@@ -20,6 +40,7 @@ struct SceneGraphConfig {
   // of disagreement, on the next 0.5 s step: 2.5 s; set it to the robot localizer's latency).
   double untrusted_lookback_s = 2.5;
   size_t removal_log_size = 4096;  // removals remembered for resumable watches
+  ExistenceConfig existence;
   RelationConfig relations;
 };
 
@@ -41,6 +62,11 @@ class SceneGraph {
   // instances otherwise. Then prunes stale single detections (relative to `now_ns`) and rebuilds
   // relations and regions. Bumps the revision when anything changed.
   void Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns);
+  // The same for one camera frame: every instance that matched none of its observations but
+  // `expected_in_view` says the frame should have shown counts a miss, and instances missed
+  // beyond ExistenceConfig's bound are removed.
+  void Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns,
+                 absl::FunctionRef<bool(const SceneObject&)> expected_in_view);
 
   uint64_t revision() const { return revision_; }
   const std::vector<SceneObject>& objects() const { return objects_; }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "services/mapping/core/scene_relations.h"
 
@@ -110,6 +111,43 @@ SceneObject Object(uint64_t id, const std::string& label, Eigen::Vector3d positi
   o.position = position;
   o.size = size;
   return o;
+}
+
+TEST(SceneGraphTest, AnInstanceMissedThreeTimesPerDetectionGoes) {
+  SceneGraph graph{SceneGraphConfig{}};  // min_misses 8, max_misses_per_detection 3
+  graph.Integrate({Obs("bottle", {0, 0, 0}), Obs("bottle", {0.2, 0, 0})}, 0);  // merges: 2
+  graph.Integrate({Obs("chair", {5, 0, 0})}, 0);
+  graph.Integrate({Obs("chair", {5, 0, 0})}, 0);
+  ASSERT_EQ(graph.objects().size(), 2u);
+  const uint64_t bottle = graph.objects()[0].id;
+  ASSERT_EQ(graph.objects()[0].detection_count, 2);
+  const auto only_bottle = [&](const SceneObject& o) { return o.id == bottle; };
+  // 2 detections: gone once misses > 6 and >= 8, at the 8th miss. A frame that detects it
+  // counts no miss even though it is in view.
+  graph.Integrate({Obs("bottle", {0, 0, 0})}, kSecond, only_bottle);  // 3 detections now
+  for (int miss = 1; miss <= 9; ++miss) {
+    const uint64_t revision = graph.revision();
+    graph.Integrate({}, kSecond + miss, only_bottle);
+    EXPECT_EQ(graph.objects()[0].misses, miss);
+    EXPECT_EQ(graph.revision(), revision) << "a miss alone changes nothing a watcher sees";
+  }
+  graph.Integrate({}, 2 * kSecond, only_bottle);  // 10 misses > 3 x 3 and >= 8
+  ASSERT_EQ(graph.objects().size(), 1u);
+  EXPECT_EQ(graph.objects()[0].label, "chair");
+  EXPECT_EQ(graph.objects()[0].misses, 0) << "the chair was never expected in view";
+  const std::optional<SceneDelta> delta = graph.ChangesSince(graph.revision() - 1);
+  ASSERT_TRUE(delta.has_value());
+  EXPECT_EQ(delta->removed_ids, std::vector<uint64_t>{bottle});
+}
+
+TEST(SceneGraphTest, ExistenceOffKeepsMissedInstances) {
+  SceneGraphConfig config;
+  config.existence.enabled = false;
+  SceneGraph graph{config};
+  graph.Integrate({Obs("bottle", {0, 0, 0}), Obs("bottle", {0.2, 0, 0})}, 0);
+  for (int i = 0; i < 50; ++i) graph.Integrate({}, i, [](const SceneObject&) { return true; });
+  ASSERT_EQ(graph.objects().size(), 1u);
+  EXPECT_EQ(graph.objects()[0].misses, 0);
 }
 
 TEST(SceneRelationsTest, OnLeftRightAndNear) {

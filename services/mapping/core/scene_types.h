@@ -27,6 +27,8 @@ struct SceneObject {
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
   double score = 0.0;  // mean detector score over all detections
   int detection_count = 0;
+  // Frames that should have shown it but detected nothing matching (ExistenceConfig); not saved.
+  int misses = 0;
   std::vector<float> embedding;  // EMA of the detections' unit embeddings, renormalised
   // Summed detector score per label the instance was detected as; `label` is the best of them,
   // so one confused first detection does not name the instance for good (ConceptGraphs).

@@ -64,6 +64,8 @@ struct SensorFrame {
   std::vector<Eigen::Vector3f> lidar_points;
   // The robot does not trust `pose` (lost or relocalizing): see SceneObject::pose_untrusted.
   bool pose_untrusted = false;
+  // The detector processed this frame: what it did not report counts as negative evidence.
+  bool detector_ran = false;
 };
 
 }  // namespace semnav::mapping

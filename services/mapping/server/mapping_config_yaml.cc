@@ -159,6 +159,26 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
               "untrusted_lookback_s", "must be in [0, 60]");
   scene.Check(s.relations.near_m > 0.0 && s.relations.region_radius_m > 0.0, "region_radius_m",
               "radii must be > 0");
+  ConfigReader existence = scene.Child("existence");
+  ExistenceConfig& e = s.existence;
+  existence.Read("enabled", &e.enabled)
+      .Read("max_range_m", &e.max_range_m)
+      .Read("min_view_fraction", &e.min_view_fraction)
+      .Read("image_margin", &e.image_margin)
+      .Read("occlusion_tolerance_m", &e.occlusion_tolerance_m)
+      .Read("min_misses", &e.min_misses)
+      .Read("max_misses_per_detection", &e.max_misses_per_detection);
+  existence.Check(e.max_range_m > 0.0 && e.max_range_m <= 100.0, "max_range_m",
+                  "must be in (0, 100]");
+  existence.Check(e.min_view_fraction >= 0.0 && e.min_view_fraction <= 1.0, "min_view_fraction",
+                  "must be in [0, 1]");
+  existence.Check(e.image_margin >= 0.0 && e.image_margin < 0.5, "image_margin",
+                  "must be in [0, 0.5)");
+  existence.Check(e.occlusion_tolerance_m >= 0.0 && e.occlusion_tolerance_m <= 10.0,
+                  "occlusion_tolerance_m", "must be in [0, 10]");
+  existence.Check(e.min_misses >= 1, "min_misses", "must be >= 1");
+  existence.Check(e.max_misses_per_detection > 0.0 && e.max_misses_per_detection <= 1000.0,
+                  "max_misses_per_detection", "must be in (0, 1000]");
 
   for (const std::string& label : section.Child("synonyms").Keys()) {
     std::vector<std::string> names;

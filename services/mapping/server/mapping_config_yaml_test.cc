@@ -74,6 +74,30 @@ TEST(MappingConfigYamlTest, SemanticPruningIsReadAndRangeChecked) {
   }
 }
 
+TEST(MappingConfigYamlTest, ExistenceIsReadAndRangeChecked) {
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
+      "mapping:\n  scene_graph: {existence: {max_range_m: 3, min_misses: 5, enabled: false}}\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(config.ok()) << config.status();
+  const ExistenceConfig& existence = config->core.scene.existence;
+  EXPECT_EQ(existence.max_range_m, 3.0);
+  EXPECT_EQ(existence.min_misses, 5);
+  EXPECT_FALSE(existence.enabled);
+  EXPECT_EQ(existence.max_misses_per_detection, 3.0);  // default kept
+  for (const char* bad : {"max_range_m: .inf", "image_margin: 0.5", "min_misses: 0",
+                          "max_misses_per_detection: .nan", "min_view_fraction: -1"}) {
+    absl::StatusOr<ConfigReader> bad_root = ConfigReader::FromString(
+        std::string("mapping:\n  scene_graph: {existence: {") + bad + "}}\n");
+    ASSERT_TRUE(bad_root.ok());
+    ConfigReader bad_section = bad_root->Child("mapping");
+    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.scene_graph.existence.")) << bad;
+  }
+}
+
 TEST(MappingConfigYamlTest, BodyHeightIsReadAndMustFitBetweenFootAndCeiling) {
   absl::StatusOr<ConfigReader> root =
       ConfigReader::FromString("mapping:\n  grid: {body_height_m: 0.5}\n");

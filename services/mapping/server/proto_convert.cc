@@ -106,6 +106,7 @@ absl::StatusOr<SensorFrame> FrameFromProto(const v1::SensorFrame& proto) {
   }
   for (const auto& p : proto.lidar_points()) frame.lidar_points.push_back(Vec(p).cast<float>());
   frame.pose_untrusted = proto.pose_untrusted();
+  frame.detector_ran = proto.detector_ran();
   return frame;
 }
 

@@ -443,6 +443,42 @@ TEST_F(MappingContractTest, SceneWatchSendsSnapshotThenDelta) {
   context.TryCancel();
 }
 
+// detector_ran over the wire: frames that show the table without detecting it remove it after 8
+// misses (2 detections), and a watcher hears of the removal; without the flag they change nothing.
+TEST_F(MappingContractTest, AnObjectTheDetectorKeepsMissingIsRemoved) {
+  std::vector<v1::SensorFrame> frames = {RoomFrame(kFrameNs), RoomFrame(2 * kFrameNs)};
+  for (int i = 0; i < 8; ++i) {  // no detector: no evidence
+    v1::SensorFrame blind = RoomFrame((3 + i) * kFrameNs);
+    blind.clear_detections();
+    frames.push_back(blind);
+  }
+  for (const v1::FrameAck& ack : Stream(frames)) EXPECT_TRUE(ack.accepted());
+  ASSERT_EQ(Scene().objects_size(), 1);
+
+  grpc::ClientContext context;
+  v1::WatchSceneGraphRequest request;
+  auto reader = stub_->WatchSceneGraph(&context, request);
+  v1::WatchSceneGraphResponse snapshot;
+  ASSERT_TRUE(reader->Read(&snapshot));
+  ASSERT_EQ(snapshot.snapshot().objects_size(), 1);
+  const uint64_t table = snapshot.snapshot().objects(0).id();
+  frames.clear();
+  for (int i = 0; i < 8; ++i) {
+    v1::SensorFrame looked = RoomFrame((11 + i) * kFrameNs);
+    looked.clear_detections();
+    looked.set_detector_ran(true);
+    frames.push_back(looked);
+  }
+  for (const v1::FrameAck& ack : Stream(frames)) EXPECT_TRUE(ack.accepted());
+  EXPECT_EQ(Scene().objects_size(), 0);
+  v1::WatchSceneGraphResponse removal;
+  ASSERT_TRUE(reader->Read(&removal));
+  ASSERT_TRUE(removal.has_delta());
+  ASSERT_EQ(removal.delta().removed_object_ids_size(), 1);
+  EXPECT_EQ(removal.delta().removed_object_ids(0), table);
+  context.TryCancel();
+}
+
 TEST_F(MappingContractTest, GridWatchSendsSnapshotThenChangedWindowAndResumes) {
   Stream({RoomFrame(kFrameNs)});
   uint64_t resume_from = 0;
