@@ -8,6 +8,14 @@ namespace {
 
 using ::testing::HasSubstr;
 
+// The config `yaml` gives, or the error it is rejected with.
+absl::StatusOr<MappingServiceConfig> Load(const std::string& yaml) {
+  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(yaml);
+  if (!root.ok()) return root.status();
+  ConfigReader section = root->Child("mapping");
+  return MappingServiceConfig::FromYaml(section);
+}
+
 TEST(MappingConfigYamlTest, DefaultsFollowTheSeeds) {
   ConfigReader root = ConfigReader::Empty();
   ConfigReader section = root.Child("mapping");
@@ -55,31 +63,21 @@ TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
 }
 
 TEST(MappingConfigYamlTest, SemanticPruningIsReadAndRangeChecked) {
-  absl::StatusOr<ConfigReader> root =
-      ConfigReader::FromString("mapping:\n  semantic: {prune_growth: 3, prune_min_points: 100}\n");
-  ASSERT_TRUE(root.ok());
-  ConfigReader section = root->Child("mapping");
-  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  const absl::StatusOr<MappingServiceConfig> config =
+      Load("mapping:\n  semantic: {prune_growth: 3, prune_min_points: 100}\n");
   ASSERT_TRUE(config.ok()) << config.status();
   EXPECT_EQ(config->core.semantic.prune_growth, 3.0);
   EXPECT_EQ(config->core.semantic.prune_min_points, 100);
   for (const char* bad : {"prune_growth: 1.0", "prune_growth: .nan", "prune_min_points: 0"}) {
-    absl::StatusOr<ConfigReader> bad_root =
-        ConfigReader::FromString(std::string("mapping:\n  semantic: {") + bad + "}\n");
-    ASSERT_TRUE(bad_root.ok());
-    ConfigReader bad_section = bad_root->Child("mapping");
-    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    const absl::Status status = Load(std::string("mapping:\n  semantic: {") + bad + "}\n").status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
     EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.semantic.prune_")) << bad;
   }
 }
 
 TEST(MappingConfigYamlTest, ExistenceIsReadAndRangeChecked) {
-  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
+  const absl::StatusOr<MappingServiceConfig> config = Load(
       "mapping:\n  scene_graph: {existence: {max_range_m: 3, min_misses: 5, enabled: false}}\n");
-  ASSERT_TRUE(root.ok());
-  ConfigReader section = root->Child("mapping");
-  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
   ASSERT_TRUE(config.ok()) << config.status();
   const ExistenceConfig& existence = config->core.scene.existence;
   EXPECT_EQ(existence.max_range_m, 3.0);
@@ -88,11 +86,8 @@ TEST(MappingConfigYamlTest, ExistenceIsReadAndRangeChecked) {
   EXPECT_EQ(existence.max_misses_per_detection, 3.0);  // default kept
   for (const char* bad : {"max_range_m: .inf", "image_margin: 0.5", "min_misses: 0",
                           "max_misses_per_detection: .nan", "min_view_fraction: -1"}) {
-    absl::StatusOr<ConfigReader> bad_root = ConfigReader::FromString(
-        std::string("mapping:\n  scene_graph: {existence: {") + bad + "}}\n");
-    ASSERT_TRUE(bad_root.ok());
-    ConfigReader bad_section = bad_root->Child("mapping");
-    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    const absl::Status status =
+        Load(std::string("mapping:\n  scene_graph: {existence: {") + bad + "}}\n").status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
     EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.scene_graph.existence.")) << bad;
   }
