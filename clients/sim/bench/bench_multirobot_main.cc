@@ -115,8 +115,8 @@ int main(int argc, char** argv) {
       aligned += t.aligned ? 1 : 0;
       reliable += t.reliable ? 1 : 0;
       succeeded += t.success ? 1 : 0;
-      scan_refined += t.alignment == "objects, scan-refined" ? 1 : 0;
-      global_scan += t.alignment == "global scan match" ? 1 : 0;
+      scan_refined += t.alignment == loop::kAlignedByObjectsScanRefined ? 1 : 0;
+      global_scan += t.alignment == loop::kAlignedByGlobalScanMatch ? 1 : 0;
       if (t.aligned) {
         error_m.push_back(t.alignment_error_m);
         error_deg.push_back(t.alignment_error_deg);

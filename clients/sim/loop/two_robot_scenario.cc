@@ -442,7 +442,7 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       absl::StatusOr<std::string> why_not = align_by_objects();
       if (!why_not.ok()) return why_not.status();
       if (why_not->empty()) {
-        trial.alignment = "objects";
+        trial.alignment = kAlignedByObjects;
         if (options.scan_match) {  // the walls refine the objects' answer
           absl::StatusOr<std::optional<Eigen::Isometry3d>> refined =
               MatchInA(*mapping_a, lost_id, a_from_b);
@@ -450,7 +450,7 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
           if (refined->has_value()) {
             a_from_b = **refined;
             record_error(a_from_b);
-            trial.alignment = "objects, scan-refined";
+            trial.alignment = kAlignedByObjectsScanRefined;
           }
         }
         break;
@@ -463,7 +463,7 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
           a_from_b = **found;
           record_error(a_from_b);
           trial.aligned = trial.reliable = true;
-          trial.alignment = "global scan match";
+          trial.alignment = kAlignedByGlobalScanMatch;
           break;
         }
       }

@@ -37,6 +37,11 @@ struct TwoRobotOptions {
   bool scan_match = true;
 };
 
+// TwoRobotTrial::alignment.
+inline constexpr char kAlignedByObjects[] = "objects";
+inline constexpr char kAlignedByObjectsScanRefined[] = "objects, scan-refined";
+inline constexpr char kAlignedByGlobalScanMatch[] = "global scan match";
+
 struct TwoRobotTrial {
   int index = 0;
   std::string target_id;  // world object id of the target (ground truth)
@@ -45,7 +50,7 @@ struct TwoRobotTrial {
   int look_arounds = 0;   // look-arounds B took (the first where it starts)
   bool aligned = false;   // AlignMaps answered
   bool reliable = false;  // ... with a reliable pose (B moves only then)
-  // What gave the pose B moved on: "objects", "objects, scan-refined", "global scan match".
+  // What gave the pose B moved on: one of the kAlignedBy... names below, "" when none did.
   std::string alignment;
   int inliers = 0;
   double rms_residual_m = 0.0;       // of the inliers, metres

@@ -162,19 +162,7 @@ const OccupiedRaster& Fr079Raster() {
     absl::flat_hash_set<VoxelColumns::ColumnId> all;
     for (const auto& [id, column] : columns.columns()) all.insert(id);
     grid.Update(columns, all);
-    const GridLayers layers = RenderLayers(grid, FullWindow(grid), GridLayersConfig{});
-    OccupiedRaster out;
-    out.resolution = layers.resolution;
-    out.origin_x = layers.origin_x;
-    out.origin_y = layers.origin_y;
-    out.width = layers.width;
-    out.height = layers.height;
-    for (const uint8_t v : layers.hierarchical) {
-      out.occupied.push_back(v != HierarchicalGrid::kFree && v != HierarchicalGrid::kUnknown);
-      out.observed_free.push_back(v == HierarchicalGrid::kFree);
-      out.opaque.push_back(v == HierarchicalGrid::kStructure);
-    }
-    return out;
+    return GridRaster(grid, FullWindow(grid), /*free_and_opaque=*/true);
   }();
   return raster;
 }

@@ -523,35 +523,15 @@ absl::StatusOr<ScanMatchResult> MappingEngine::MatchLostScan(
       return FieldStatus(absl::StatusCode::kFailedPrecondition, "robot_id",
                          "the map is empty: nothing to match against", "MAP_EMPTY");
     }
-    raster.resolution = res;
-    raster.origin_x = min.x * res;
-    raster.origin_y = min.y * res;
-    raster.width = max.x - min.x + 1;
-    raster.height = max.y - min.y + 1;
-    const size_t cells = static_cast<size_t>(raster.width) * raster.height;
+    const GridWindow window{min, max.x - min.x + 1, max.y - min.y + 1};
+    const size_t cells = static_cast<size_t>(window.width) * window.height;
     if (!coarse.has_value() && cells > config_.global_scan_match_max_cells) {
       return FieldStatus(absl::StatusCode::kFailedPrecondition, "robot_id",
                          absl::StrCat("the map's ", cells, " cells exceed the global match's ",
                                       config_.global_scan_match_max_cells),
                          "MAP_TOO_LARGE");
     }
-    raster.occupied.assign(cells, 0);
-    if (!coarse.has_value()) {
-      raster.observed_free.assign(cells, 0);
-      raster.opaque.assign(cells, 0);
-    }
-    for (int row = 0; row < raster.height; ++row) {
-      for (int col = 0; col < raster.width; ++col) {
-        const uint8_t value = s.grid.Value({min.x + col, min.y + row});
-        const size_t i = static_cast<size_t>(row) * raster.width + col;
-        raster.occupied[i] =
-            value != HierarchicalGrid::kFree && value != HierarchicalGrid::kUnknown;
-        if (!coarse.has_value()) {
-          raster.observed_free[i] = value == HierarchicalGrid::kFree;
-          raster.opaque[i] = value == HierarchicalGrid::kStructure;
-        }
-      }
-    }
+    raster = GridRaster(s.grid, window, /*free_and_opaque=*/!coarse.has_value());
   }
   if (coarse.has_value()) return MatchScan(raster, scan, *coarse, config_.scan_match);
   return MatchScanGlobally(raster, scan, robot, config_.scan_match, config_.global_scan_match);

@@ -25,6 +25,34 @@ PlanarCorrection PlanarCorrection::Inverse() const {
   return {-t.x(), -t.y(), -yaw};
 }
 
+OccupiedRaster GridRaster(const HierarchicalGrid& grid, const GridWindow& window,
+                          bool free_and_opaque) {
+  OccupiedRaster raster;
+  raster.resolution = grid.config().resolution_m;
+  raster.origin_x = window.min.x * raster.resolution;
+  raster.origin_y = window.min.y * raster.resolution;
+  raster.width = window.width;
+  raster.height = window.height;
+  const size_t cells = static_cast<size_t>(raster.width) * raster.height;
+  raster.occupied.assign(cells, 0);
+  if (free_and_opaque) {
+    raster.observed_free.assign(cells, 0);
+    raster.opaque.assign(cells, 0);
+  }
+  for (int row = 0; row < raster.height; ++row) {
+    for (int col = 0; col < raster.width; ++col) {
+      const uint8_t value = grid.Value({window.min.x + col, window.min.y + row});
+      const size_t i = static_cast<size_t>(row) * raster.width + col;
+      raster.occupied[i] = value != HierarchicalGrid::kFree && value != HierarchicalGrid::kUnknown;
+      if (free_and_opaque) {
+        raster.observed_free[i] = value == HierarchicalGrid::kFree;
+        raster.opaque[i] = value == HierarchicalGrid::kStructure;
+      }
+    }
+  }
+  return raster;
+}
+
 namespace {
 
 // exp(-d^2 / 2 sigma^2) per raster cell, d the distance to the nearest occupied cell.
@@ -353,11 +381,11 @@ absl::StatusOr<ScanMatchResult> MatchScanGlobally(const OccupiedRaster& map,
     if (distinct) result.runner_up_score = std::max(result.runner_up_score, other.score);
   }
   // The reported pose competes too (self_match): its best score within the window.
+  const int col = static_cast<int>(std::floor((robot.x() - map.origin_x) / res));
+  const int row = static_cast<int>(std::floor((robot.y() - map.origin_y) / res));
   for (int t = -turns; t <= turns; ++t) {
     const double yaw = t * local.angular_step_rad;
     Offsets(relative, yaw, res, &cols, &rows);
-    const int col = static_cast<int>(std::floor((robot.x() - map.origin_x) / res));
-    const int row = static_cast<int>(std::floor((robot.y() - map.origin_y) / res));
     for (int r = row - 2; r <= row + 2; ++r) {
       for (int c = col - 2; c <= col + 2; ++c) {
         result.runner_up_score = std::max(result.runner_up_score, MeanAt(field, cols, rows, c, r));

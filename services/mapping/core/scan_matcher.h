@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "services/mapping/core/grid_layers.h"
+#include "services/mapping/core/hierarchical_grid.h"
 
 namespace semnav::mapping {
 
@@ -42,6 +44,11 @@ struct OccupiedRaster {
   // for the global answer's ray check. Empty = every occupied cell.
   std::vector<uint8_t> opaque;
 };
+
+// The grid's `window` as a raster: occupied = obstacle or structure; with `free_and_opaque` also
+// observed_free (kFree) and opaque (kStructure), which only the global search reads.
+OccupiedRaster GridRaster(const HierarchicalGrid& grid, const GridWindow& window,
+                          bool free_and_opaque);
 
 struct ScanMatchConfig {
   // Search window around the coarse pose: the landmark answers of the kidnapped bench were off
