@@ -204,10 +204,12 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
     observation.pose_untrusted = frame.pose_untrusted;
   // Negative evidence only from what the robot trusts and its detector really looked at.
   const bool evidence = frame.detector_ran && !frame.pose_untrusted && !result.blurred;
-  s.scene.Integrate(observations, frame.stamp_ns, [&](const SceneObject& object) {
-    return evidence &&
-           ExpectedInView(object, depth, frame.intrinsics, frame.pose, config_.scene.existence);
-  });
+  const std::vector<SceneObject> removed =
+      s.scene.Integrate(observations, frame.stamp_ns, [&](const SceneObject& object) {
+        return evidence &&
+               ExpectedInView(object, depth, frame.intrinsics, frame.pose, config_.scene.existence);
+      });
+  DropUnsupportedPoints(removed);
   s.last_stamp[frame.robot_id] = frame.stamp_ns;
 
   ++revision_;
@@ -237,6 +239,33 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   RecordGridChange(changed);
   result.revision = revision_;
   return result;
+}
+
+void MappingEngine::DropUnsupportedPoints(const std::vector<SceneObject>& removed) {
+  const double margin = config_.semantic.instance_support_margin_m;
+  if (removed.empty() || margin < 0.0) return;
+  State& s = *state_;
+  std::set<std::string> labels;
+  for (const SceneObject& object : removed) {
+    for (const auto& [label, score] : object.label_scores) labels.insert(label);
+  }
+  // Per label, the boxes of the instances that carry it (a few: the scene graph is small).
+  std::map<std::string, std::vector<std::pair<Eigen::Vector3f, Eigen::Vector3f>>> boxes;
+  for (const SceneObject& object : s.scene.objects()) {
+    const Eigen::Vector3f low = (object.observed_box.min().array() - margin).matrix().cast<float>();
+    const Eigen::Vector3f high =
+        (object.observed_box.max().array() + margin).matrix().cast<float>();
+    for (const auto& [label, score] : object.label_scores) {
+      if (labels.contains(label)) boxes[label].emplace_back(low, high);
+    }
+  }
+  s.semantic.KeepSupported(labels, [&](const std::string& label, const Eigen::Vector3f& p) {
+    const auto it = boxes.find(label);
+    if (it == boxes.end()) return false;
+    return std::any_of(it->second.begin(), it->second.end(), [&](const auto& box) {
+      return (p.array() >= box.first.array()).all() && (p.array() <= box.second.array()).all();
+    });
+  });
 }
 
 void MappingEngine::RecordGridChange(const GridWindow& changed) {

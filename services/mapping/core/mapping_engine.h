@@ -101,6 +101,10 @@ class MappingEngine {
  private:
   struct State;
   void RecordGridChange(const GridWindow& changed) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The semantic points of the labels the removed instances carried that no remaining instance
+  // holds go (SemanticMapConfig::instance_support_margin_m).
+  void DropUnsupportedPoints(const std::vector<SceneObject>& removed)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   ValidationContext ContextFor(const std::string& robot_id) const ABSL_SHARED_LOCKS_REQUIRED(mu_);
 
   MappingConfig config_;

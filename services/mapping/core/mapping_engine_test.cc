@@ -305,6 +305,41 @@ TEST(MappingEngineTest, AnInstanceTheDetectorKeepsNotSeeingGoes) {
   }
 }
 
+// The semantic points of an instance the scene graph removed go with it (fleet bench: every
+// false detection's patch stayed, and mapping's RSS kept growing after the scene graph settled);
+// with instance_support_margin_m < 0 they stay.
+TEST(MappingEngineTest, ARemovedInstanceTakesItsSemanticPointsAlong) {
+  for (const double margin : {0.25, -1.0}) {
+    MappingConfig config;
+    config.semantic.instance_support_margin_m = margin;
+    MappingEngine engine{config};
+    const testing::SyntheticRoom room = testing::StandardRoom();
+    int64_t stamp = 0;
+    auto frame_with = [&](std::vector<Detection> detections) {
+      SensorFrame frame = testing::RenderFrame(room, Viewpoint(), stamp += kFrameNs);
+      frame.detector_ran = true;
+      frame.detections = std::move(detections);
+      return frame;
+    };
+    Detection table;
+    table.label = "table";
+    table.score = 0.9;
+    table.box = BoxAround({3.2, 1.3, 0.7}, Viewpoint(), 40);
+    for (int i = 0; i < 2; ++i) ASSERT_TRUE(engine.AddFrame(frame_with({table})).ok());
+    const GridWindow window = engine.WindowOf(2.8, 0.9, 3.7, 1.7);
+    ASSERT_EQ(engine.Grid(window, nullptr).semantic_labels, std::vector<std::string>{"table"});
+    for (int miss = 1; miss <= 8; ++miss) ASSERT_TRUE(engine.AddFrame(frame_with({})).ok());
+    ASSERT_TRUE(engine.Scene().objects.empty());
+    const GridLayers layers = engine.Grid(window, nullptr);
+    if (margin >= 0.0) {
+      EXPECT_TRUE(layers.semantic_labels.empty());
+      EXPECT_EQ(std::count(layers.semantic.begin(), layers.semantic.end(), uint8_t{1}), 0);
+    } else {
+      EXPECT_EQ(layers.semantic_labels, std::vector<std::string>{"table"});
+    }
+  }
+}
+
 TEST(MappingEngineTest, BlurredColourImageSkipsDetectionsButKeepsDepth) {
   MappingEngine engine{MappingConfig{}};
   SensorFrame frame = testing::RenderFrame(testing::StandardRoom(), Viewpoint(), kFrameNs);

@@ -16,6 +16,10 @@ void Normalize(std::vector<float>& v) {
   for (float& x : v) x = static_cast<float>(x / norm);
 }
 
+Eigen::AlignedBox3d BoxOf(const Eigen::Vector3d& centre, const Eigen::Vector3d& size) {
+  return {centre - 0.5 * size, centre + 0.5 * size};
+}
+
 }  // namespace
 
 double Cosine(const std::vector<float>& a, const std::vector<float>& b) {
@@ -61,6 +65,7 @@ SceneObject* SceneGraph::Match(const ObjectObservation& observation) {
 }
 
 void SceneGraph::Merge(SceneObject& object, const ObjectObservation& observation) {
+  object.observed_box.extend(BoxOf(observation.position, observation.size));
   const double w = config_.ema_new_weight;
   object.position = w * observation.position + (1.0 - w) * object.position;
   object.size = w * observation.size + (1.0 - w) * object.size;
@@ -99,12 +104,14 @@ void SceneGraph::MarkPoseUntrustedSince(int64_t since_ns) {
   }
 }
 
-void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns) {
-  Integrate(observations, now_ns, [](const SceneObject&) { return false; });
+std::vector<SceneObject> SceneGraph::Integrate(const std::vector<ObjectObservation>& observations,
+                                               int64_t now_ns) {
+  return Integrate(observations, now_ns, [](const SceneObject&) { return false; });
 }
 
-void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns,
-                           absl::FunctionRef<bool(const SceneObject&)> expected_in_view) {
+std::vector<SceneObject> SceneGraph::Integrate(
+    const std::vector<ObjectObservation>& observations, int64_t now_ns,
+    absl::FunctionRef<bool(const SceneObject&)> expected_in_view) {
   bool changed = false;
   std::vector<uint64_t> matched;
   for (const ObjectObservation& observation : observations) {
@@ -117,6 +124,7 @@ void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, i
       fresh.label_scores[observation.label] = observation.score;
       fresh.position = observation.position;
       fresh.size = observation.size;
+      fresh.observed_box = BoxOf(observation.position, observation.size);
       fresh.embedding = observation.embedding;
       Normalize(fresh.embedding);
       fresh.score = observation.score;
@@ -145,20 +153,23 @@ void SceneGraph::Integrate(const std::vector<ObjectObservation>& observations, i
     }
     return o.detection_count == 1 && now_ns - o.last_seen_ns > prune_ns;
   };
+  std::vector<SceneObject> removed;
   for (const SceneObject& o : objects_) {
-    if (stale(o)) removals_.push_back({revision_ + 1, o.id});
+    if (!stale(o)) continue;
+    removals_.push_back({revision_ + 1, o.id});
+    removed.push_back(o);
   }
-  const size_t before = objects_.size();
   objects_.erase(std::remove_if(objects_.begin(), objects_.end(), stale), objects_.end());
-  changed = changed || objects_.size() != before;
+  changed = changed || !removed.empty();
   if (removals_.size() > config_.removal_log_size) {
     const size_t drop = removals_.size() - config_.removal_log_size;
     forgotten_before_ = removals_[drop - 1].first;
     removals_.erase(removals_.begin(), removals_.begin() + static_cast<std::ptrdiff_t>(drop));
   }
-  if (!changed) return;
+  if (!changed) return removed;
   ++revision_;
   Rebuild();
+  return removed;
 }
 
 void SceneGraph::Rebuild() {
@@ -191,7 +202,10 @@ void SceneGraph::Replace(std::vector<SceneObject> objects, uint64_t next_id) {
   for (const SceneObject& o : objects_) removals_.push_back({revision_ + 1, o.id});
   ++revision_;
   objects_ = std::move(objects);
-  for (SceneObject& o : objects_) o.revision = revision_;
+  for (SceneObject& o : objects_) {
+    o.revision = revision_;
+    if (o.observed_box.isEmpty()) o.observed_box = BoxOf(o.position, o.size);
+  }
   next_id_ = next_id;
   Rebuild();
 }

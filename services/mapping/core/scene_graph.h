@@ -61,12 +61,15 @@ class SceneGraph {
   // merges with EMA (position, size, embedding), counts detections and averages scores; new
   // instances otherwise. Then prunes stale single detections (relative to `now_ns`) and rebuilds
   // relations and regions. Bumps the revision when anything changed.
-  void Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns);
+  // Both overloads return the instances they removed.
+  std::vector<SceneObject> Integrate(const std::vector<ObjectObservation>& observations,
+                                     int64_t now_ns);
   // The same for one camera frame: every instance that matched none of its observations but
   // `expected_in_view` says the frame should have shown counts a miss, and instances missed
   // beyond ExistenceConfig's bound are removed.
-  void Integrate(const std::vector<ObjectObservation>& observations, int64_t now_ns,
-                 absl::FunctionRef<bool(const SceneObject&)> expected_in_view);
+  std::vector<SceneObject> Integrate(const std::vector<ObjectObservation>& observations,
+                                     int64_t now_ns,
+                                     absl::FunctionRef<bool(const SceneObject&)> expected_in_view);
 
   uint64_t revision() const { return revision_; }
   const std::vector<SceneObject>& objects() const { return objects_; }

@@ -92,15 +92,38 @@ TEST(SceneGraphTest, PrunesInstancesSeenOnceAndReportsRemoval) {
   graph.Integrate({Obs("ghost", {5, 5, 0}, 0.4, {}, 0), Obs("sofa", {0, 0, 0}, 0.9, {}, 0)}, 0);
   graph.Integrate({Obs("sofa", {0, 0, 0}, 0.9, {}, 1 * kSecond)}, 1 * kSecond);
   const uint64_t before = graph.revision();
-  graph.Integrate({}, 9 * kSecond);  // 9 s <= 10 s: nothing changes
+  EXPECT_TRUE(graph.Integrate({}, 9 * kSecond).empty());  // 9 s <= 10 s: nothing changes
   EXPECT_EQ(graph.revision(), before);
-  graph.Integrate({}, 11 * kSecond);
+  const std::vector<SceneObject> removed = graph.Integrate({}, 11 * kSecond);
+  ASSERT_EQ(removed.size(), 1u);
+  EXPECT_EQ(removed[0].label, "ghost");
   ASSERT_EQ(graph.objects().size(), 1u);
   EXPECT_EQ(graph.objects()[0].label, "sofa");
   const std::optional<SceneDelta> delta = graph.ChangesSince(before);
   ASSERT_TRUE(delta.has_value());
   EXPECT_EQ(delta->removed_ids, std::vector<uint64_t>{1});
   EXPECT_TRUE(delta->upserted_ids.empty());
+}
+
+// The observed box is the union of the merged observations' boxes, not the averaged one: the
+// points of every detection lie in it (hand-checked: 0.5 m cubes at x = 0 and x = 1).
+TEST(SceneGraphTest, TheObservedBoxIsTheUnionOfTheObservations) {
+  SceneGraph graph{SceneGraphConfig{}};
+  graph.Integrate({Obs("chair", {0, 0, 0})}, 0);
+  graph.Integrate({Obs("chair", {1, 0, 0})}, 0);
+  ASSERT_EQ(graph.objects().size(), 1u);
+  const Eigen::AlignedBox3d& box = graph.objects()[0].observed_box;
+  EXPECT_TRUE(box.min().isApprox(Eigen::Vector3d(-0.25, -0.25, -0.25)));
+  EXPECT_TRUE(box.max().isApprox(Eigen::Vector3d(1.25, 0.25, 0.25)));
+  // A loaded instance (no observations yet) starts from its own box.
+  SceneObject loaded;
+  loaded.id = 7;
+  loaded.label = "sofa";
+  loaded.position = {2, 2, 0};
+  loaded.size = {2, 1, 1};
+  graph.Replace({loaded}, 8);
+  EXPECT_TRUE(graph.objects()[0].observed_box.min().isApprox(Eigen::Vector3d(1, 1.5, -0.5)));
+  EXPECT_TRUE(graph.objects()[0].observed_box.max().isApprox(Eigen::Vector3d(3, 2.5, 0.5)));
 }
 
 SceneObject Object(uint64_t id, const std::string& label, Eigen::Vector3d position,

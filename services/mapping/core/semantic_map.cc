@@ -45,18 +45,61 @@ void SemanticMap::Prune(const std::string& label) {
   for (size_t i = 0; i < points.size(); ++i) {
     if (passes[i] || i >= last.kept) kept.push_back(points[i]);
   }
+  points = std::move(kept);
+  Reindex(label);
+  last.kept = points.size();
+  last.passing = static_cast<size_t>(std::count(passes.begin(), passes.end(), true));
+}
+
+void SemanticMap::Reindex(const std::string& label) {
   auto& cubes = occupied_cubes_[label];
   auto& per_voxel = points_per_voxel_[label];
   cubes.clear();
   per_voxel.clear();
   const auto r = static_cast<float>(config_.point_resolution_m);
-  for (const Eigen::Vector3f& p : kept) {
+  for (const Eigen::Vector3f& p : points_[label]) {
     cubes.insert(CubeOf(p, r));
     ++per_voxel[CubeOf(p, static_cast<float>(config_.cap_voxel_m))];
   }
-  points = std::move(kept);
-  last.kept = points.size();
-  last.passing = static_cast<size_t>(std::count(passes.begin(), passes.end(), true));
+}
+
+size_t SemanticMap::KeepSupported(
+    const std::set<std::string>& labels,
+    absl::FunctionRef<bool(const std::string& label, const Eigen::Vector3f& point)> supported) {
+  size_t dropped_total = 0;
+  for (const std::string& label : labels) {
+    const auto it = points_.find(label);
+    if (it == points_.end()) continue;
+    std::vector<Eigen::Vector3f>& points = it->second;
+    PruneState& last = last_prune_[label];
+    std::vector<Eigen::Vector3f> kept;
+    kept.reserve(points.size());
+    size_t dropped_before_last_prune = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (supported(label, points[i])) {
+        kept.push_back(points[i]);
+      } else if (i < last.kept) {
+        ++dropped_before_last_prune;
+      }
+    }
+    const size_t dropped = points.size() - kept.size();
+    if (dropped == 0) continue;
+    dropped_total += dropped;
+    if (kept.empty()) {
+      points_.erase(it);
+      occupied_cubes_.erase(label);
+      points_per_voxel_.erase(label);
+      last_prune_.erase(label);
+      continue;
+    }
+    points = std::move(kept);
+    Reindex(label);
+    // The older points stay at the front; those that passed at the last prune are now at most
+    // the ones left of them.
+    last.kept -= dropped_before_last_prune;
+    last.passing = std::min(last.passing, last.kept);
+  }
+  return dropped_total;
 }
 
 void SemanticMap::Clear() {

@@ -2,11 +2,13 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "absl/container/flat_hash_map.h"
 #include "absl/container/flat_hash_set.h"
+#include "absl/functional/function_ref.h"
 #include "services/mapping/core/grid_layers.h"
 
 namespace semnav::mapping {
@@ -31,6 +33,12 @@ struct SemanticMapConfig {
   // label's points stay below max(prune_min_points, prune_growth x passing) plus one frame.
   double prune_growth = 2.0;
   int prune_min_points = 4096;
+  // A labelled point lives as long as a scene-graph instance carrying its label (in its label
+  // scores) holds it within its box grown by this margin: the points of an instance the scene
+  // graph removed (a false detection, one the detector keeps missing) go with it. Without this
+  // every false detection's patch stayed for good, and the fleet bench's mapping RSS kept
+  // growing after its scene graph had settled (docs/performance.md). Negative = keep all points.
+  double instance_support_margin_m = 0.25;
 };
 
 // Labelled 3D points (from eroded detection masks) and the 2D semantic layer made from them
@@ -47,6 +55,11 @@ class SemanticMap {
 
   const std::map<std::string, std::vector<Eigen::Vector3f>>& points() const { return points_; }
   void Clear();
+  // Drops the points of `labels` that `supported(label, point)` rejects; a label left without
+  // points is forgotten. Returns how many points went.
+  size_t KeepSupported(
+      const std::set<std::string>& labels,
+      absl::FunctionRef<bool(const std::string& label, const Eigen::Vector3f& point)> supported);
 
  private:
   SemanticMapConfig config_;
@@ -63,6 +76,8 @@ class SemanticMap {
 
   // Drops the label's points that fail the radius filter and are older than its last prune.
   void Prune(const std::string& label);
+  // Rebuilds the label's cube and cap-voxel counts from its points.
+  void Reindex(const std::string& label);
 };
 
 }  // namespace semnav::mapping

@@ -168,5 +168,46 @@ TEST(SemanticMapTest, PruningBoundsStraysAndKeepsTheRenderedLayer) {
   EXPECT_EQ(with_layer.semantic[19 * 40 + 19], 1);  // the table's centre (0.95, 0.95)
 }
 
+// KeepSupported drops only the asked labels' rejected points, forgets a label left empty, and
+// frees the dropped points' cubes; the prune schedule counts only the older points that stay
+// (hand-checked: prune_min_points 10, the 10th cup point pruned with 9 passing, so the next prune
+// is due at 18; one old point dropped leaves 8 of the 9 as "kept at the last prune").
+TEST(SemanticMapTest, UnsupportedPointsGoAndTheirCubesAreFree) {
+  SemanticMapConfig config;
+  config.prune_min_points = 10;
+  config.max_points_per_voxel = 100;
+  SemanticMap map(config);
+  std::vector<Eigen::Vector3f> blob;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) blob.emplace_back(0.01f + 0.02f * i, 0.01f + 0.02f * j, 0.01f);
+  }
+  map.Add("cup", blob);
+  map.Add("cup", {{3.0f, 3.0f, 0.0f}});  // the 10th point: a prune that keeps all 10
+  map.Add("bottle", {{3.0f, 3.0f, 0.0f}});
+  map.Add("chair", {{5.0f, 5.0f, 0.0f}});
+  const auto near_origin = [](const std::string&, const Eigen::Vector3f& p) {
+    return p.norm() < 1.0f;
+  };
+  // Only cup and chair are asked about: the bottle far from the origin stays.
+  EXPECT_EQ(map.KeepSupported({"cup", "chair", "lamp"}, near_origin), 2u);
+  EXPECT_EQ(map.points().at("cup").size(), 9u);
+  EXPECT_EQ(map.points().count("chair"), 0u);
+  EXPECT_EQ(map.points().at("bottle").size(), 1u);
+  EXPECT_EQ(map.KeepSupported({"cup"}, near_origin), 0u);
+  // The dropped point's cube is free again.
+  map.Add("cup", {{3.0f, 3.0f, 0.0f}});
+  EXPECT_EQ(map.points().at("cup").size(), 10u);
+  GridLayers layers = Window();
+  map.Render(layers);
+  EXPECT_EQ(layers.semantic_labels, (std::vector<std::string>{"bottle", "cup"}));
+  // The 18th point prunes. The last prune's kept points are now the blob's 9, so the cup at 3, 3
+  // (index 9, added after the drop) is spared like every later stray; counting it as older (10)
+  // would drop it.
+  for (int i = 0; i < 7; ++i) map.Add("cup", {{6.0f + i, 0.0f, 0.0f}});
+  EXPECT_EQ(map.points().at("cup").size(), 17u);
+  map.Add("cup", {{20.0f, 0.0f, 0.0f}});
+  EXPECT_EQ(map.points().at("cup").size(), 18u);  // nothing older than the prune failed
+}
+
 }  // namespace
 }  // namespace semnav::mapping

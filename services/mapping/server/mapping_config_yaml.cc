@@ -120,7 +120,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("cap_voxel_m", &c.semantic.cap_voxel_m)
       .Read("max_points_per_voxel", &c.semantic.max_points_per_voxel)
       .Read("prune_growth", &c.semantic.prune_growth)
-      .Read("prune_min_points", &c.semantic.prune_min_points);
+      .Read("prune_min_points", &c.semantic.prune_min_points)
+      .Read("instance_support_margin_m", &c.semantic.instance_support_margin_m);
   semantic.Check(c.blur_min_laplacian_variance >= 0.0, "blur_min_laplacian_variance",
                  "must be >= 0");
   semantic.Check(c.lift.erosion_kernel >= 1 && c.lift.erosion_kernel % 2 == 1, "erosion_kernel",
@@ -137,6 +138,9 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   semantic.Check(c.semantic.prune_growth >= 1.1 && c.semantic.prune_growth <= 1000.0,
                  "prune_growth", "must be in [1.1, 1000]");
   semantic.Check(c.semantic.prune_min_points >= 1, "prune_min_points", "must be >= 1");
+  semantic.Check(std::isfinite(c.semantic.instance_support_margin_m) &&
+                     c.semantic.instance_support_margin_m <= 10.0,
+                 "instance_support_margin_m", "must be finite and <= 10 (negative = off)");
 
   ConfigReader scene = section.Child("scene_graph");
   SceneGraphConfig& s = c.scene;

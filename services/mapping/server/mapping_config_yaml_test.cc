@@ -63,15 +63,21 @@ TEST(MappingConfigYamlTest, ReadsValuesAndNamesBadKeys) {
 }
 
 TEST(MappingConfigYamlTest, SemanticPruningIsReadAndRangeChecked) {
-  const absl::StatusOr<MappingServiceConfig> config =
-      Load("mapping:\n  semantic: {prune_growth: 3, prune_min_points: 100}\n");
+  const absl::StatusOr<MappingServiceConfig> config = Load(
+      "mapping:\n  semantic: {prune_growth: 3, prune_min_points: 100, "
+      "instance_support_margin_m: -1}\n");
   ASSERT_TRUE(config.ok()) << config.status();
   EXPECT_EQ(config->core.semantic.prune_growth, 3.0);
   EXPECT_EQ(config->core.semantic.prune_min_points, 100);
-  for (const char* bad : {"prune_growth: 1.0", "prune_growth: .nan", "prune_min_points: 0"}) {
+  EXPECT_EQ(config->core.semantic.instance_support_margin_m, -1.0);
+  for (const char* bad : {"prune_growth: 1.0", "prune_growth: .nan", "prune_min_points: 0",
+                          "instance_support_margin_m: .inf", "instance_support_margin_m: 11"}) {
     const absl::Status status = Load(std::string("mapping:\n  semantic: {") + bad + "}\n").status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
-    EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.semantic.prune_")) << bad;
+    EXPECT_THAT(std::string(status.message()),
+                HasSubstr(std::string("mapping.semantic.") +
+                          std::string(bad).substr(0, std::string(bad).find(':'))))
+        << bad;
   }
 }
 
