@@ -188,7 +188,6 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
 
   std::vector<ObjectObservation> observations;
   for (auto& [detection, lifted] : lifted_detections) {
-    s.semantic.Add(detection->label, lifted.points);
     observations.push_back(std::move(lifted.observation));
     if (!detection->embedding.empty())
       s.embedding_dim = static_cast<int>(detection->embedding.size());
@@ -209,7 +208,12 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
         return evidence &&
                ExpectedInView(object, depth, frame.intrinsics, frame.pose, config_.scene.existence);
       });
-  DropUnsupportedPoints(removed);
+  // The points after the instances: a prune they make due keeps what the graph now holds.
+  const InstanceSupport support(s.scene.objects(), config_.semantic.instance_support_margin_m,
+                                config_.semantic.instance_support_min_share);
+  for (const auto& [detection, lifted] : lifted_detections)
+    s.semantic.Add(detection->label, lifted.points, support);
+  DropUnsupportedPoints(removed, support);
   s.last_stamp[frame.robot_id] = frame.stamp_ns;
 
   ++revision_;
@@ -241,31 +245,15 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   return result;
 }
 
-void MappingEngine::DropUnsupportedPoints(const std::vector<SceneObject>& removed) {
-  const double margin = config_.semantic.instance_support_margin_m;
-  if (removed.empty() || margin < 0.0) return;
-  State& s = *state_;
+void MappingEngine::DropUnsupportedPoints(const std::vector<SceneObject>& removed,
+                                          const InstanceSupport& support) {
+  if (removed.empty() || support.supports_all()) return;
   std::set<std::string> labels;
   for (const SceneObject& object : removed) {
+    labels.insert(object.label);
     for (const auto& [label, score] : object.label_scores) labels.insert(label);
   }
-  // Per label, the boxes of the instances that carry it (a few: the scene graph is small).
-  std::map<std::string, std::vector<std::pair<Eigen::Vector3f, Eigen::Vector3f>>> boxes;
-  for (const SceneObject& object : s.scene.objects()) {
-    const Eigen::Vector3f low = (object.observed_box.min().array() - margin).matrix().cast<float>();
-    const Eigen::Vector3f high =
-        (object.observed_box.max().array() + margin).matrix().cast<float>();
-    for (const auto& [label, score] : object.label_scores) {
-      if (labels.contains(label)) boxes[label].emplace_back(low, high);
-    }
-  }
-  s.semantic.KeepSupported(labels, [&](const std::string& label, const Eigen::Vector3f& p) {
-    const auto it = boxes.find(label);
-    if (it == boxes.end()) return false;
-    return std::any_of(it->second.begin(), it->second.end(), [&](const auto& box) {
-      return (p.array() >= box.first.array()).all() && (p.array() <= box.second.array()).all();
-    });
-  });
+  state_->semantic.KeepSupported(labels, support);
 }
 
 void MappingEngine::RecordGridChange(const GridWindow& changed) {

@@ -14,6 +14,7 @@
 #include "absl/synchronization/mutex.h"
 #include "absl/time/time.h"
 #include "services/mapping/core/frame_validation.h"
+#include "services/mapping/core/instance_support.h"
 #include "services/mapping/core/mapping_config.h"
 #include "services/mapping/core/octomap_integrator.h"
 #include "services/mapping/core/scan_matcher.h"
@@ -103,8 +104,8 @@ class MappingEngine {
   void RecordGridChange(const GridWindow& changed) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // The semantic points of the labels the removed instances carried that no remaining instance
   // holds go (SemanticMapConfig::instance_support_margin_m).
-  void DropUnsupportedPoints(const std::vector<SceneObject>& removed)
-      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void DropUnsupportedPoints(const std::vector<SceneObject>& removed,
+                             const InstanceSupport& support) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   ValidationContext ContextFor(const std::string& robot_id) const ABSL_SHARED_LOCKS_REQUIRED(mu_);
 
   MappingConfig config_;

@@ -18,6 +18,11 @@ std::array<int, 3> CubeOf(const Eigen::Vector3f& p, float edge) {
 }  // namespace
 
 void SemanticMap::Add(const std::string& label, const std::vector<Eigen::Vector3f>& points) {
+  Add(label, points, [](const std::string&, const Eigen::Vector3f&) { return true; });
+}
+
+void SemanticMap::Add(const std::string& label, const std::vector<Eigen::Vector3f>& points,
+                      SupportFn supported) {
   auto& cubes = occupied_cubes_[label];
   auto& per_voxel = points_per_voxel_[label];
   auto& kept = points_[label];
@@ -33,22 +38,37 @@ void SemanticMap::Add(const std::string& label, const std::vector<Eigen::Vector3
   const double prune_at =
       std::max(static_cast<double>(config_.prune_min_points),
                config_.prune_growth * static_cast<double>(last_prune_[label].passing));
-  if (static_cast<double>(kept.size()) >= prune_at) Prune(label);
+  if (static_cast<double>(kept.size()) >= prune_at) Prune(label, supported);
 }
 
-void SemanticMap::Prune(const std::string& label) {
+void SemanticMap::Prune(const std::string& label, SupportFn supported) {
   std::vector<Eigen::Vector3f>& points = points_[label];
   PruneState& last = last_prune_[label];
   const std::vector<bool> passes = RadiusFilter(points, config_.radius_m, config_.min_neighbours);
   std::vector<Eigen::Vector3f> kept;
   kept.reserve(points.size());
+  size_t passing = 0;
   for (size_t i = 0; i < points.size(); ++i) {
-    if (passes[i] || i >= last.kept) kept.push_back(points[i]);
+    if ((passes[i] || i >= last.kept) && supported(label, points[i])) {
+      kept.push_back(points[i]);
+      if (passes[i]) ++passing;
+    }
+  }
+  if (kept.empty()) {
+    Forget(label);
+    return;
   }
   points = std::move(kept);
   Reindex(label);
   last.kept = points.size();
-  last.passing = static_cast<size_t>(std::count(passes.begin(), passes.end(), true));
+  last.passing = passing;
+}
+
+void SemanticMap::Forget(const std::string& label) {
+  points_.erase(label);
+  occupied_cubes_.erase(label);
+  points_per_voxel_.erase(label);
+  last_prune_.erase(label);
 }
 
 void SemanticMap::Reindex(const std::string& label) {
@@ -63,9 +83,7 @@ void SemanticMap::Reindex(const std::string& label) {
   }
 }
 
-size_t SemanticMap::KeepSupported(
-    const std::set<std::string>& labels,
-    absl::FunctionRef<bool(const std::string& label, const Eigen::Vector3f& point)> supported) {
+size_t SemanticMap::KeepSupported(const std::set<std::string>& labels, SupportFn supported) {
   size_t dropped_total = 0;
   for (const std::string& label : labels) {
     const auto it = points_.find(label);
@@ -86,10 +104,7 @@ size_t SemanticMap::KeepSupported(
     if (dropped == 0) continue;
     dropped_total += dropped;
     if (kept.empty()) {
-      points_.erase(it);
-      occupied_cubes_.erase(label);
-      points_per_voxel_.erase(label);
-      last_prune_.erase(label);
+      Forget(label);
       continue;
     }
     points = std::move(kept);

@@ -39,6 +39,8 @@ struct SemanticMapConfig {
   // every false detection's patch stayed for good, and the fleet bench's mapping RSS kept
   // growing after its scene graph had settled (docs/performance.md). Negative = keep all points.
   double instance_support_margin_m = 0.25;
+  // ... and whose label is the point's, or gives it at least this share of its summed votes.
+  double instance_support_min_share = 0.25;
 };
 
 // Labelled 3D points (from eroded detection masks) and the 2D semantic layer made from them
@@ -47,6 +49,12 @@ class SemanticMap {
  public:
   explicit SemanticMap(const SemanticMapConfig& config) : config_(config) {}
 
+  using SupportFn = absl::FunctionRef<bool(const std::string& label, const Eigen::Vector3f& point)>;
+
+  // Adds a detection's points. When the label's points are due for a prune, the prune also drops
+  // the points `supported` rejects (instance support); without it every point is supported.
+  void Add(const std::string& label, const std::vector<Eigen::Vector3f>& points,
+           SupportFn supported);
   void Add(const std::string& label, const std::vector<Eigen::Vector3f>& points);
   // Fills layers.semantic / semantic_labels for the layers' window: per label, points that pass
   // the radius filter mark their cell, the label's cell map is opened, then written with index
@@ -57,9 +65,7 @@ class SemanticMap {
   void Clear();
   // Drops the points of `labels` that `supported(label, point)` rejects; a label left without
   // points is forgotten. Returns how many points went.
-  size_t KeepSupported(
-      const std::set<std::string>& labels,
-      absl::FunctionRef<bool(const std::string& label, const Eigen::Vector3f& point)> supported);
+  size_t KeepSupported(const std::set<std::string>& labels, SupportFn supported);
 
  private:
   SemanticMapConfig config_;
@@ -74,8 +80,11 @@ class SemanticMap {
   };
   std::map<std::string, PruneState> last_prune_;
 
-  // Drops the label's points that fail the radius filter and are older than its last prune.
-  void Prune(const std::string& label);
+  // Drops the label's points that fail the radius filter and are older than its last prune, and
+  // those `supported` rejects.
+  void Prune(const std::string& label, SupportFn supported);
+  // Drops everything of the label.
+  void Forget(const std::string& label);
   // Rebuilds the label's cube and cap-voxel counts from its points.
   void Reindex(const std::string& label);
 };

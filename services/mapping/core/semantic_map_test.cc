@@ -209,5 +209,30 @@ TEST(SemanticMapTest, UnsupportedPointsGoAndTheirCubesAreFree) {
   EXPECT_EQ(map.points().at("cup").size(), 18u);  // nothing older than the prune failed
 }
 
+// A due prune also drops what no instance supports, dense or not (hand-checked: prune_min_points
+// 10; the 10th point makes the prune due; the blob near the origin passes the radius filter but
+// only the points with x < 0.04 (x = 0.01, 0.03) are supported, 6 of its 9; the stray at 3, 3 fails
+// both).
+TEST(SemanticMapTest, ADuePruneKeepsOnlySupportedPoints) {
+  SemanticMapConfig config;
+  config.prune_min_points = 10;
+  config.max_points_per_voxel = 100;
+  SemanticMap map(config);
+  std::vector<Eigen::Vector3f> blob;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) blob.emplace_back(0.01f + 0.02f * i, 0.01f + 0.02f * j, 0.01f);
+  }
+  const auto left_part = [](const std::string&, const Eigen::Vector3f& p) { return p.x() < 0.04f; };
+  map.Add("cup", blob, left_part);  // 9 points: no prune due, nothing dropped
+  EXPECT_EQ(map.points().at("cup").size(), 9u);
+  map.Add("cup", {{3.0f, 3.0f, 0.0f}}, left_part);
+  EXPECT_EQ(map.points().at("cup").size(), 6u);
+  // Nothing supported at a prune: the label goes.
+  map.Add("lamp", std::vector<Eigen::Vector3f>(blob.begin(), blob.end()));
+  map.Add("lamp", {{3.0f, 3.0f, 0.0f}},
+          [](const std::string&, const Eigen::Vector3f&) { return false; });
+  EXPECT_EQ(map.points().count("lamp"), 0u);
+}
+
 }  // namespace
 }  // namespace semnav::mapping

@@ -121,7 +121,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("max_points_per_voxel", &c.semantic.max_points_per_voxel)
       .Read("prune_growth", &c.semantic.prune_growth)
       .Read("prune_min_points", &c.semantic.prune_min_points)
-      .Read("instance_support_margin_m", &c.semantic.instance_support_margin_m);
+      .Read("instance_support_margin_m", &c.semantic.instance_support_margin_m)
+      .Read("instance_support_min_share", &c.semantic.instance_support_min_share);
   semantic.Check(c.blur_min_laplacian_variance >= 0.0, "blur_min_laplacian_variance",
                  "must be >= 0");
   semantic.Check(c.lift.erosion_kernel >= 1 && c.lift.erosion_kernel % 2 == 1, "erosion_kernel",
@@ -141,6 +142,9 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
   semantic.Check(std::isfinite(c.semantic.instance_support_margin_m) &&
                      c.semantic.instance_support_margin_m <= 10.0,
                  "instance_support_margin_m", "must be finite and <= 10 (negative = off)");
+  semantic.Check(
+      c.semantic.instance_support_min_share >= 0.0 && c.semantic.instance_support_min_share <= 1.0,
+      "instance_support_min_share", "must be in [0, 1]");
 
   ConfigReader scene = section.Child("scene_graph");
   SceneGraphConfig& s = c.scene;

@@ -40,7 +40,8 @@ struct MappingServiceConfig {
 //              mask_pixel_stride [2], depth_band_m [0.3], point_resolution_m [0.02],
 //              radius_m [0.1], min_neighbours [5], opening_kernel [3], cap_voxel_m [0.05],
 //              max_points_per_voxel [4], prune_growth [2], prune_min_points [4096],
-//              instance_support_margin_m [0.25, negative = off]}
+//              instance_support_margin_m [0.25, negative = off],
+//              instance_support_min_share [0.25]}
 //   scene_graph: {ema_new_weight [0.3], embedding_min_cosine [0.8], embedding_max_distance_m [3],
 //                 label_max_distance_m [1], prune_single_after_s [10], near_m [1.5],
 //                 direction_margin_m [0.2], on_tolerance_m [0.15], region_radius_m [3]}

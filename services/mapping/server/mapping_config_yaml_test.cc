@@ -71,7 +71,8 @@ TEST(MappingConfigYamlTest, SemanticPruningIsReadAndRangeChecked) {
   EXPECT_EQ(config->core.semantic.prune_min_points, 100);
   EXPECT_EQ(config->core.semantic.instance_support_margin_m, -1.0);
   for (const char* bad : {"prune_growth: 1.0", "prune_growth: .nan", "prune_min_points: 0",
-                          "instance_support_margin_m: .inf", "instance_support_margin_m: 11"}) {
+                          "instance_support_margin_m: .inf", "instance_support_margin_m: 11",
+                          "instance_support_min_share: 1.5", "instance_support_min_share: .nan"}) {
     const absl::Status status = Load(std::string("mapping:\n  semantic: {") + bad + "}\n").status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
     EXPECT_THAT(std::string(status.message()),
