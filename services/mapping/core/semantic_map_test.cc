@@ -102,21 +102,34 @@ TEST(SemanticMapTest, TheCapLeavesTheRenderedLayerAsItWas) {
   EXPECT_EQ(with_cap.semantic[10 * 40 + 30], 1);
 }
 
+// A 3 x 3 blob of points 2 cm apart at z = 0.01: each has 8 neighbours within 0.1 m, so it
+// passes the radius filter (> 5).
+std::vector<Eigen::Vector3f> Blob() {
+  std::vector<Eigen::Vector3f> blob;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) blob.emplace_back(0.01f + 0.02f * i, 0.01f + 0.02f * j, 0.01f);
+  }
+  return blob;
+}
+
+// A prune at the 10th point of a label; the blob shares one 5 cm voxel, so no cap.
+SemanticMapConfig PruneAtTen() {
+  SemanticMapConfig config;
+  config.prune_min_points = 10;
+  config.max_points_per_voxel = 100;
+  return config;
+}
+
 // Hand-checked prune schedule (prune_min_points 10, growth 2). A 3 x 3 blob of points 2 cm apart
 // passes the radius filter (9 neighbours within 0.1 m > 5); points 1 m apart fail it. The 10th
 // point triggers a prune that spares everything (all of it arrived since the last prune, at 0
 // points): 9 passing, so the next prune is due at 18 points. It drops the stray that was there at
 // the first prune and keeps the blob and the 8 strays that arrived since.
 TEST(SemanticMapTest, StrayPointsOlderThanTheLastPruneAreDropped) {
-  SemanticMapConfig config;
-  config.prune_min_points = 10;
+  SemanticMapConfig config = PruneAtTen();
   config.prune_growth = 2.0;
-  config.max_points_per_voxel = 100;  // the blob shares one 5 cm voxel
   SemanticMap map(config);
-  std::vector<Eigen::Vector3f> blob;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) blob.emplace_back(0.01f + 0.02f * i, 0.01f + 0.02f * j, 0.01f);
-  }
+  const std::vector<Eigen::Vector3f> blob = Blob();
   auto stray = [](int i) { return Eigen::Vector3f(1.0f * i, 5.0f, 0.0f); };
   map.Add("cup", blob);
   map.Add("cup", {stray(5)});
@@ -171,16 +184,11 @@ TEST(SemanticMapTest, PruningBoundsStraysAndKeepsTheRenderedLayer) {
 // KeepSupported drops only the asked labels' rejected points, forgets a label left empty, and
 // frees the dropped points' cubes; the prune schedule counts only the older points that stay
 // (hand-checked: prune_min_points 10, the 10th cup point pruned with 9 passing, so the next prune
-// is due at 18; one old point dropped leaves 8 of the 9 as "kept at the last prune").
+// is due at 18; dropping one of the 10 points kept then leaves 9 counted as older).
 TEST(SemanticMapTest, UnsupportedPointsGoAndTheirCubesAreFree) {
-  SemanticMapConfig config;
-  config.prune_min_points = 10;
-  config.max_points_per_voxel = 100;
+  const SemanticMapConfig config = PruneAtTen();
   SemanticMap map(config);
-  std::vector<Eigen::Vector3f> blob;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) blob.emplace_back(0.01f + 0.02f * i, 0.01f + 0.02f * j, 0.01f);
-  }
+  const std::vector<Eigen::Vector3f> blob = Blob();
   map.Add("cup", blob);
   map.Add("cup", {{3.0f, 3.0f, 0.0f}});  // the 10th point: a prune that keeps all 10
   map.Add("bottle", {{3.0f, 3.0f, 0.0f}});
@@ -214,14 +222,9 @@ TEST(SemanticMapTest, UnsupportedPointsGoAndTheirCubesAreFree) {
 // only the points with x < 0.04 (x = 0.01, 0.03) are supported, 6 of its 9; the stray at 3, 3 fails
 // both).
 TEST(SemanticMapTest, ADuePruneKeepsOnlySupportedPoints) {
-  SemanticMapConfig config;
-  config.prune_min_points = 10;
-  config.max_points_per_voxel = 100;
+  const SemanticMapConfig config = PruneAtTen();
   SemanticMap map(config);
-  std::vector<Eigen::Vector3f> blob;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) blob.emplace_back(0.01f + 0.02f * i, 0.01f + 0.02f * j, 0.01f);
-  }
+  const std::vector<Eigen::Vector3f> blob = Blob();
   const auto left_part = [](const std::string&, const Eigen::Vector3f& p) { return p.x() < 0.04f; };
   map.Add("cup", blob, left_part);  // 9 points: no prune due, nothing dropped
   EXPECT_EQ(map.points().at("cup").size(), 9u);
