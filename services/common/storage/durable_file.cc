@@ -19,13 +19,16 @@ absl::Status ErrnoStatus(absl::string_view what, const std::string& path) {
   return absl::InternalError(absl::StrCat(what, " ", path, ": ", std::strerror(errno)));
 }
 
-absl::Status WriteAndSync(int fd, const std::string& path, absl::string_view bytes) {
-  size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return ErrnoStatus("write", path);
-    written += static_cast<size_t>(n);
+absl::Status WriteAndSync(int fd, const std::string& path,
+                          std::initializer_list<absl::string_view> pieces) {
+  for (const absl::string_view bytes : pieces) {
+    size_t written = 0;
+    while (written < bytes.size()) {
+      const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) return ErrnoStatus("write", path);
+      written += static_cast<size_t>(n);
+    }
   }
   if (::fsync(fd) != 0) return ErrnoStatus("fsync", path);
   return absl::OkStatus();
@@ -64,11 +67,16 @@ uint64_t GetLittleEndian(absl::string_view in, size_t offset, int bytes) {
 }  // namespace
 
 absl::Status WriteFileAtomically(const std::string& path, absl::string_view bytes) {
+  return WriteFileAtomically(path, {bytes});
+}
+
+absl::Status WriteFileAtomically(const std::string& path,
+                                 std::initializer_list<absl::string_view> pieces) {
   // The pid keeps two processes writing the same file from sharing one temporary.
   const std::string temporary = absl::StrCat(path, ".", ::getpid(), ".tmp");
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return ErrnoStatus("open", temporary);
-  absl::Status status = WriteAndSync(fd, temporary, bytes);
+  absl::Status status = WriteAndSync(fd, temporary, pieces);
   if (::close(fd) != 0 && status.ok()) status = ErrnoStatus("close", temporary);
   if (status.ok() && ::rename(temporary.c_str(), path.c_str()) != 0)
     status = ErrnoStatus("rename", temporary);
@@ -104,12 +112,23 @@ uint32_t Crc32(absl::string_view data) {
   return c ^ 0xFFFFFFFFu;
 }
 
+std::string FrameHeader(absl::string_view magic, absl::string_view payload) {
+  std::string header(magic.data(), magic.size());
+  PutLittleEndian(header, payload.size(), 8);
+  PutLittleEndian(header, Crc32(payload), 4);
+  return header;
+}
+
 std::string FrameWithChecksum(absl::string_view magic, absl::string_view payload) {
-  std::string file(magic.data(), magic.size());
-  PutLittleEndian(file, payload.size(), 8);
-  PutLittleEndian(file, Crc32(payload), 4);
+  std::string file = FrameHeader(magic, payload);
   file.append(payload.data(), payload.size());
   return file;
+}
+
+absl::Status WriteFramedFileAtomically(const std::string& path, absl::string_view magic,
+                                       absl::string_view payload) {
+  const std::string header = FrameHeader(magic, payload);
+  return WriteFileAtomically(path, {header, payload});
 }
 
 absl::StatusOr<std::string> PayloadOfFrame(absl::string_view magic, absl::string_view file,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 
 #include "absl/status/statusor.h"
@@ -15,6 +16,10 @@ namespace semnav::storage {
 // fsynced and renamed over `path`, then the directory is fsynced. A crash at any point leaves
 // either the old file or the new one. The temporary file is removed on failure.
 absl::Status WriteFileAtomically(const std::string& path, absl::string_view bytes);
+// The same for a file made of `pieces` in order, written one after the other without joining
+// them (a large map is not copied once more to be written).
+absl::Status WriteFileAtomically(const std::string& path,
+                                 std::initializer_list<absl::string_view> pieces);
 
 // Removes `path` and fsyncs its directory, so the removal survives a crash; NOT_FOUND when absent.
 absl::Status RemoveFileDurably(const std::string& path);
@@ -28,6 +33,11 @@ uint32_t Crc32(absl::string_view data);
 // The checksummed frame: `magic`, the payload size (8 bytes, little-endian), its CRC-32
 // (4 bytes, little-endian), then the payload.
 std::string FrameWithChecksum(absl::string_view magic, absl::string_view payload);
+// The frame's header alone (magic, size, CRC-32): the frame is this followed by the payload.
+std::string FrameHeader(absl::string_view magic, absl::string_view payload);
+// WriteFileAtomically of FrameWithChecksum(magic, payload), without building the frame in memory.
+absl::Status WriteFramedFileAtomically(const std::string& path, absl::string_view magic,
+                                       absl::string_view payload);
 // The payload of a frame; DATA_LOSS naming `what` when the magic, size or checksum is wrong.
 absl::StatusOr<std::string> PayloadOfFrame(absl::string_view magic, absl::string_view file,
                                            absl::string_view what);

@@ -52,6 +52,20 @@ TEST(ChecksumFrameTest, RoundTripsBinaryPayloads) {
   EXPECT_EQ(*PayloadOfFrame("MAGIC\n", file, "test file"), payload);
 }
 
+// The framed write gives the same bytes as writing FrameWithChecksum whole.
+TEST(ChecksumFrameTest, AFramedWriteIsTheFrameByteForByte) {
+  const std::string dir = FreshDirectory("durable_framed");
+  const std::string payload("map\0bytes\xfe", 10);
+  ASSERT_TRUE(WriteFramedFileAtomically(dir + "/framed", "MAGIC\n", payload).ok());
+  EXPECT_EQ(*ReadWholeFile(dir + "/framed"), FrameWithChecksum("MAGIC\n", payload));
+  EXPECT_EQ(*PayloadOfFrame("MAGIC\n", *ReadWholeFile(dir + "/framed"), "f"), payload);
+  ASSERT_TRUE(WriteFileAtomically(dir + "/pieces", {"ab", "", "cd"}).ok());
+  EXPECT_EQ(*ReadWholeFile(dir + "/pieces"), "abcd");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            2);
+}
+
 TEST(ChecksumFrameTest, NamesEachKindOfDamage) {
   const std::string file = FrameWithChecksum("MAGIC\n", "payload");
   const auto message = [](const absl::StatusOr<std::string>& r) {

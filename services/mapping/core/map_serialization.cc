@@ -203,12 +203,18 @@ std::string SerializeMap(std::string octree_section, const std::vector<SceneObje
                                 {"first_seen_ns", o.first_seen_ns},
                                 {"last_seen_ns", o.last_seen_ns}});
   }
+  // Every section first, then one payload of exactly their size: appending to a growing string
+  // held up to twice the payload at once, every live snapshot (docs/performance.md, "Fleet").
+  const std::string scene_section = scene.dump();
+  const std::string semantic_section = SemanticSection(semantic_points);
+  const std::string grid_section = grid != nullptr ? GridSection(*grid) : std::string();
   std::string out;
+  out.reserve(4 * 8 + octree_section.size() + scene_section.size() + semantic_section.size() +
+              grid_section.size());
   PutSection(out, octree_section);
-  octree_section = std::string();  // freed before the larger sections are made
-  PutSection(out, scene.dump());
-  PutSection(out, SemanticSection(semantic_points));
-  if (grid != nullptr) PutSection(out, GridSection(*grid));
+  PutSection(out, scene_section);
+  PutSection(out, semantic_section);
+  if (grid != nullptr) PutSection(out, grid_section);
   return out;
 }
 

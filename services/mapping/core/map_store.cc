@@ -48,8 +48,7 @@ std::string MapStore::PathOf(const std::string& map_id) const {
 absl::StatusOr<StoredMap> MapStore::Save(const std::string& map_id,
                                          const std::string& payload) const {
   if (absl::Status s = ValidateMapId(map_id); !s.ok()) return s;
-  if (absl::Status s =
-          storage::WriteFileAtomically(PathOf(map_id), storage::FrameWithChecksum(kMagic, payload));
+  if (absl::Status s = storage::WriteFramedFileAtomically(PathOf(map_id), kMagic, payload);
       !s.ok()) {
     return s;
   }
