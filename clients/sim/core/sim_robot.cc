@@ -88,13 +88,18 @@ double SimRobot::Advance(double budget, StepReport& report) {
   const Waypoint& target = path_.front();
   const Eigen::Vector3d delta = target.position - pose_.position;
   const Eigen::Vector2d horizontal = delta.head<2>();
+  std::optional<double> steer_to;  // a heading reached while moving
   if (horizontal.norm() > kEpsilon) {
     const Eigen::Vector2d facing = target.reverse ? Eigen::Vector2d(-horizontal) : horizontal;
     const double heading = std::atan2(facing.y(), facing.x());
-    if (std::abs(WrapAngle(heading - pose_.yaw)) > robot_.heading_tolerance) {
+    const double error = std::abs(WrapAngle(heading - pose_.yaw));
+    const double in_place = error - std::max(robot_.turn_while_moving_max_rad, 0.0);
+    if (error > robot_.heading_tolerance && in_place > kEpsilon) {
+      // In place until the rest of the turn can be made on the move.
       report.activity = RobotActivity::kTurning;
-      return std::max(Turn(heading, budget), kEpsilon);
+      return std::max(Turn(heading, std::min(budget, in_place / robot_.yaw_rate)), kEpsilon);
     }
+    if (error > robot_.heading_tolerance) steer_to = heading;
   }
   report.activity = RobotActivity::kMoving;
   // Take-off and landing are flown even when the segment ends on the ground.
@@ -125,6 +130,7 @@ double SimRobot::Advance(double budget, StepReport& report) {
     odometry_.Update(before, pose_);
     moved = along;
   }
+  if (steer_to) Turn(*steer_to, moved / speed);
   if (moved >= distance - kEpsilon) {
     path_.pop_front();
     if (path_.empty()) report.arrived = true;

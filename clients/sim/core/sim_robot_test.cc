@@ -38,7 +38,7 @@ class SimRobotTest : public ::testing::Test {
 };
 
 TEST_F(SimRobotTest, FollowsPathAtRollSpeed) {
-  SimRobot robot = MakeRobot(Modality::kGround);
+  SimRobot robot = MakeRobot(Modality::kGround);  // every bend turned in place
   ASSERT_TRUE(robot.Apply(FollowPath{{At(1.0, 0.0), At(1.0, -1.0)}}).ok());
   StepReport report = robot.Step(1.0);  // 0.5 m/s: half-way to the first waypoint
   EXPECT_EQ(report.activity, RobotActivity::kMoving);
@@ -55,6 +55,37 @@ TEST_F(SimRobotTest, FollowsPathAtRollSpeed) {
   EXPECT_NEAR(robot.path_length_m(), 2.0, 1e-9);
   EXPECT_NEAR(robot.energy_j(), 800.0, 1e-6);  // 2 m rolling at 400 J/m
   EXPECT_NEAR(robot.time_s(), 4.0 + std::numbers::pi / 2, 1e-9);
+}
+
+TEST_F(SimRobotTest, TurnsOnTheMoveOnceTheRestOfTheTurnIsSmall) {
+  RobotConfig config = RobotConfig::ForModality(Modality::kGround);  // 0.5 m/s, 1 rad/s
+  config.turn_while_moving_max_rad = 0.785;
+  SimRobot robot(world_, scene_, StartPose{}, config, SensorConfig{}, 1);
+  ASSERT_TRUE(robot.Apply(FollowPath{{At(1.0, 0.0), At(1.0, -1.0)}}).ok());
+  robot.Step(2.0);
+  ASSERT_NEAR(robot.pose().position.x(), 1.0, 1e-9);
+  // -pi/2 to turn: pi/2 - 0.785 rad in place, then moving while the last 0.785 rad turn.
+  StepReport report = robot.Step(std::numbers::pi / 2 - 0.785);
+  EXPECT_EQ(report.activity, RobotActivity::kTurning);
+  EXPECT_NEAR(robot.pose().yaw, -(std::numbers::pi / 2 - 0.785), 1e-6);
+  EXPECT_NEAR(robot.pose().position.y(), 0.0, 1e-9);
+  report = robot.Step(0.5);
+  EXPECT_EQ(report.activity, RobotActivity::kMoving);
+  EXPECT_NEAR(robot.pose().position.y(), -0.25, 1e-6);  // on the segment, at full speed
+  EXPECT_NEAR(robot.pose().yaw, -(std::numbers::pi / 2 - 0.785) - 0.5, 1e-6);
+  report = robot.Step(1.5);
+  EXPECT_TRUE(report.arrived);
+  EXPECT_NEAR(robot.pose().yaw, -std::numbers::pi / 2, 1e-6);  // aligned on the way
+  EXPECT_NEAR(robot.path_length_m(), 2.0, 1e-9);
+  EXPECT_NEAR(robot.time_s(), 4.0 + std::numbers::pi / 2 - 0.785, 1e-9);
+
+  // A 30-degree bend is taken without stopping: 2 m in 4 s.
+  SimRobot bend(world_, scene_, StartPose{}, config, SensorConfig{}, 1);
+  const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  ASSERT_TRUE(bend.Apply(FollowPath{{At(1.0, 0.0), At(1.0 + c, s)}}).ok());
+  report = bend.Step(4.0);
+  EXPECT_TRUE(report.arrived);
+  EXPECT_NEAR(bend.pose().yaw, std::numbers::pi / 6, 1e-6);
 }
 
 TEST_F(SimRobotTest, CollisionIsReportedAndNotPassedThrough) {

@@ -37,6 +37,28 @@ std::vector<Frontier> WithoutExcludedCells(std::vector<Frontier> frontiers,
   return kept;
 }
 
+// The reachable frontier cell nearest the caller's current goal, when one lies within
+// keep_radius_m of it, and that frontier's index: the goal's frontier is still open.
+std::optional<std::pair<Cell, int>> KeptFrontierCell(const FrontierSet& set,
+                                                     const ExplorationGrid& grid,
+                                                     const ExplorationQuery& query) {
+  if (!query.keep_goal.has_value()) return std::nullopt;
+  std::optional<std::pair<Cell, int>> kept;
+  double nearest = query.keep_radius_m;
+  for (size_t i = 0; i < set.frontiers.size(); ++i) {
+    if (set.candidates[i].path_distance_m < 0) continue;
+    for (const Cell& c : set.frontiers[i].cells) {
+      const Point2 p = grid.CentreOf(c);
+      const double d = std::hypot(p.x - query.keep_goal->x, p.y - query.keep_goal->y);
+      if (d <= nearest) {
+        nearest = d;
+        kept = std::pair{c, static_cast<int>(i)};
+      }
+    }
+  }
+  return kept;
+}
+
 absl::Status NotFound(absl::string_view message) {
   return FieldStatus(absl::StatusCode::kNotFound, "", message, "NO_EXPLORATION_GOAL");
 }
@@ -97,6 +119,8 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
     }
     case ExplorationStrategy::kSemanticFrontier: {
       const FrontierSet set = CollectFrontiers(grid, query, config.score);
+      if (const auto kept = KeptFrontierCell(set, grid, query))
+        return ExplorationChoice{kept->first, set.scores[kept->second].total, {}};
       std::optional<int> best;
       double score = 0.0;
       if (config.value.enabled) {
@@ -153,6 +177,8 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
       break;
   }
   const FrontierSet set = CollectFrontiers(grid, query, config.score);
+  if (const auto kept = KeptFrontierCell(set, grid, query))
+    return ExplorationChoice{kept->first, set.candidates[kept->second].path_distance_m, {}};
   const std::optional<NearestFrontier> nearest =
       SelectNearestFrontier(set.frontiers, grid.free, set.path_cells);
   if (!nearest) return NotFound("no reachable frontier");

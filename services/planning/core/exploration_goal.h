@@ -47,6 +47,11 @@ struct ExplorationQuery {
   std::vector<double> eroi_values;  // EROI_UTILITY semantic values; empty = uniform
   // SEMANTIC_FRONTIER's rule: the discount on the platforms its config names, else the seed total.
   ExplorationPlatform platform = ExplorationPlatform::kUnspecified;
+  // The caller's current goal: the frontier strategies answer the reachable frontier cell
+  // nearest it while one lies within keep_radius_m (the frontier is not cleared yet); unset =
+  // the strategy's best.
+  std::optional<Point2> keep_goal;
+  double keep_radius_m = 1.0;
 };
 
 struct ExplorationGoalConfig {
@@ -80,7 +85,8 @@ struct ExplorationChoice {
 // platforms the discount applies to, the semantically discounted nearest frontier
 // (semantic_discount.h; goal: its nearest cell, as NEAREST_FRONTIER's), else the best seed 002
 // total; EROI_UTILITY is seed 000's utility. NOT_FOUND with reason NO_EXPLORATION_GOAL when
-// nothing is reachable; INVALID_ARGUMENT naming eroi_semantic_values when their count does not
+// nothing is reachable. NEAREST_FRONTIER and SEMANTIC_FRONTIER keep query.keep_goal's frontier
+// while it is open. INVALID_ARGUMENT naming eroi_semantic_values when their count does not
 // match the grid.
 absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,
                                                         const ExplorationQuery& query,

@@ -127,6 +127,40 @@ TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesTheP
   EXPECT_EQ(semantic->goal, (Cell{1, 1}));
 }
 
+TEST(SelectExplorationGoal, AGoalToKeepIsAnsweredWhileItsFrontierIsOpen) {
+  // The robot at (4, 1): the west pocket (1, 1) is the nearest frontier; the east room's frontier
+  // cell is (7, 1), centre (3.75, 0.75).
+  const ExplorationGrid grid = PocketAndRoomCorridor();
+  ExplorationQuery query;
+  query.robot = {4, 1};
+  query.min_frontier_cells = 1;
+  query.platform = ExplorationPlatform::kGround;
+  ExplorationGoalConfig config;
+  config.discount.ground = true;
+  for (const ExplorationStrategy strategy :
+       {ExplorationStrategy::kNearestFrontier, ExplorationStrategy::kSemanticFrontier}) {
+    // Kept: 0.3 m from the east frontier cell, within the 1 m radius.
+    query.keep_goal = Point2{4.05, 0.75};
+    absl::StatusOr<ExplorationChoice> choice = SelectExplorationGoal(grid, query, strategy, config);
+    ASSERT_TRUE(choice.ok()) << choice.status();
+    EXPECT_EQ(choice->goal, (Cell{7, 1}));
+    // 0.6 m from it with a 0.5 m radius: that frontier is gone from there; the best answers.
+    query.keep_goal = Point2{4.35, 0.75};
+    query.keep_radius_m = 0.5;
+    choice = SelectExplorationGoal(grid, query, strategy, config);
+    ASSERT_TRUE(choice.ok()) << choice.status();
+    EXPECT_EQ(choice->goal, (Cell{1, 1}));
+    // An excluded frontier is not kept either.
+    query.keep_goal = Point2{3.75, 0.75};
+    query.keep_radius_m = 1.0;
+    query.excluded = [](Point2 p) { return p.x > 3.0; };
+    choice = SelectExplorationGoal(grid, query, strategy, config);
+    ASSERT_TRUE(choice.ok()) << choice.status();
+    EXPECT_EQ(choice->goal, (Cell{1, 1}));
+    query.excluded = nullptr;
+  }
+}
+
 TEST(SelectExplorationGoal, SemanticDiscountWithoutEvidenceIsTheNearestFrontierSearch) {
   // The same corridor: the west pocket (2 cells) is nearer than the east room (3 cells).
   const ExplorationGrid grid = PocketAndRoomCorridor();

@@ -329,6 +329,12 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   if (request.eroi_size_m() > 0.0 && request.eroi_size_m() < 0.1) {
     return InvalidField("eroi_size_m", "must be 0 (the configured edge) or in [0.1, 100] m");
   }
+  if (request.has_keep_goal()) {
+    if (absl::Status s = CheckPose2D(request.keep_goal(), "keep_goal"); !s.ok()) return s;
+  }
+  if (absl::Status s = CheckRange(request.keep_radius_m(), "keep_radius_m", 0.0, 50.0); !s.ok()) {
+    return s;
+  }
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};
@@ -338,6 +344,8 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   if (!view.ok()) return view.status();
   const ExplorationStrategy strategy = FromProto(request.strategy());
   view->query.platform = FromProto(request.platform());
+  if (request.has_keep_goal()) view->query.keep_goal = ToPoint(request.keep_goal());
+  if (request.keep_radius_m() > 0.0) view->query.keep_radius_m = request.keep_radius_m();
   view->query.eroi_values.assign(request.eroi_semantic_values().begin(),
                                  request.eroi_semantic_values().end());
   ExplorationGoalConfig goal_config = config.exploration.GoalConfig(view->frame.resolution);

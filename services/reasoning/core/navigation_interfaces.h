@@ -41,6 +41,10 @@ struct ExplorationQuery {
   std::vector<Eigen::Vector3d> excluded_goals;  // map frame, metres
   double excluded_radius_m = 0.0;
   RobotPlatform platform = RobotPlatform::kUnspecified;  // planning picks its rule by it
+  // The goal the robot is driving to: planning answers it again (its nearest frontier cell)
+  // while its frontier within keep_radius_m is open; unset = the strategy's best.
+  std::optional<Eigen::Vector3d> keep_goal;
+  double keep_radius_m = 0.0;  // 0 = planning's 1 m
 };
 
 // A dependency of the planner ("planning", or "mapping" behind it) is unreachable or timed out:

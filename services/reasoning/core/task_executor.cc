@@ -127,6 +127,7 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
                                                   : "navigating";
   progress_.reason = reason;
   phase_ = phase;
+  if (phase == Phase::kExploring) explore_chosen_at_ = now;
   phase_deadline_ =
       now + (phase == Phase::kVerifying ? config_.verify_timeout_s : config_.navigate_timeout_s);
   return {command};
@@ -437,8 +438,13 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   // robot stands (the alternative point is here): spend them and ask planning for the next.
   constexpr int kGoalsPerStep = 3;  // planning calls run under the gateway lock: keep them few
   for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
-    const absl::StatusOr<Eigen::Vector3d> goal = planner_->ExplorationGoal(
-        {pose_, spent_explore_goals_, config_.explore_exclusion_radius_m, config_.platform});
+    const absl::StatusOr<Eigen::Vector3d> goal =
+        planner_->ExplorationGoal({pose_,
+                                   spent_explore_goals_,
+                                   config_.explore_exclusion_radius_m,
+                                   config_.platform,
+                                   {},
+                                   0.0});
     if (absl::IsUnavailable(goal.status())) return PauseExploring(now, goal.status());
     if (!goal.ok()) break;
     explore_goal_ = *goal;
@@ -456,6 +462,31 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
     SpendExploreGoal(*goal, absl::IsNotFound(path.status()));
   }
   return FallbackStep(now);
+}
+
+std::vector<RobotCommand> TaskExecutor::ReselectExploreGoal(double now) {
+  explore_chosen_at_ = now;
+  const absl::StatusOr<Eigen::Vector3d> goal =
+      planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m,
+                                 config_.platform, explore_goal_, config_.explore_keep_radius_m});
+  if (absl::IsUnavailable(goal.status())) return PauseExploring(now, goal.status());
+  // No frontier left, the same one, or one turned away from before: the robot drives on (its
+  // goal is spent on arrival).
+  const auto near_goal = [&](const Eigen::Vector3d& other) {
+    return (*goal - other).head<2>().norm() <= config_.explore_keep_radius_m;
+  };
+  if (!goal.ok() || near_goal(*explore_goal_) ||
+      std::any_of(explore_turned_from_.begin(), explore_turned_from_.end(), near_goal))
+    return {};
+  absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
+  if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
+  const Eigen::Vector3d end = path.ok() && !path->empty() ? path->back() : *goal;
+  if (!path.ok() || (end - pose_.position).head<2>().norm() < config_.min_explore_step_m)
+    return {};  // asked again at the next period; arrival spends the old goal as before
+  explore_turned_from_.push_back(*explore_goal_);
+  explore_goal_ = *goal;  // the old goal is not spent: its frontier, if any is left, stays open
+  return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring,
+                  "exploring for the target (a better exploration goal)");
 }
 
 // No usable frontier from planning: step toward the least-explored sector of the topological
@@ -1025,6 +1056,7 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
       return ResumeAfterBackoff(now);
     case Phase::kExploring:
       set_aside_.clear();  // a new vantage point: targets set aside may be reachable from here
+      explore_turned_from_.clear();
       if (current().type == SubgoalType::kExplore)
         return NextSubgoal(now, "exploration goal reached");
       if (config_.explore_scan_duration_s > 0.0) {
@@ -1073,6 +1105,9 @@ std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose
     progress_since_ = now;
     return NoProgress(now);
   }
+  if (phase_ == Phase::kExploring && explore_goal_.has_value() &&
+      config_.explore_reselect_s > 0.0 && now - explore_chosen_at_ >= config_.explore_reselect_s)
+    return ReselectExploreGoal(now);
   if (now < phase_deadline_) return {};
   switch (phase_) {
     case Phase::kRotating:

@@ -59,6 +59,14 @@ struct ExecutorConfig {
   double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
   int max_explore_goals =
       30;  // exploration goals per search before giving up (failed ones do not count)
+  // While driving to an exploration goal, planning is asked again this often (simulated or
+  // robot seconds): a frontier seen from afar is cleared before the robot gets there, and a new
+  // detection can make another one worth more (VLFM and ApexNav choose again every step). The
+  // robot turns to the new goal when it lies more than explore_keep_radius_m from the old one
+  // and from every goal it turned away from since it last reached one (no ping-pong between two
+  // frontiers of similar worth). 0 = off: each goal is driven to its end.
+  double explore_reselect_s = 2.0;
+  double explore_keep_radius_m = 1.0;
   double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
   double min_explore_step_m = 0.5;  // an exploration goal whose path ends closer is spent unvisited
   bool model_available = false;     // offer slow-path model requests
@@ -329,6 +337,9 @@ class TaskExecutor {
   bool InEndgame(double now) const;
   std::vector<RobotCommand> GoToBestCandidate(double now);
   std::vector<RobotCommand> FallbackStep(double now);
+  // On the way to an exploration goal: planning's best goal now, and a turn to it when it moved
+  // (explore_reselect_s).
+  std::vector<RobotCommand> ReselectExploreGoal(double now);
   bool TryResolve();
   void MaybeRequestModel();
   const Subgoal& current() const {
@@ -355,6 +366,9 @@ class TaskExecutor {
   // Targets VERIFY ruled out from within reach, with where the map had them then.
   std::map<int64_t, Eigen::Vector3d> ruled_out_at_;
   std::optional<Eigen::Vector3d> explore_goal_;  // the active exploration goal from planning
+  double explore_chosen_at_ = 0.0;               // when it was last chosen or confirmed
+  // Goals turned away from since the last one reached: not turned back to (hysteresis).
+  std::vector<Eigen::Vector3d> explore_turned_from_;
   // Where the robot stood when a verified target was last found too far away: a second verdict
   // from the same spot means the approach cannot get closer.
   std::optional<Eigen::Vector3d> too_far_at_;

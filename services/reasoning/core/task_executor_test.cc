@@ -1,5 +1,6 @@
 #include "services/reasoning/core/task_executor.h"
 
+#include <algorithm>
 #include <deque>
 
 #include "absl/strings/match.h"
@@ -38,12 +39,18 @@ class ScriptedPlanner : public PathPlanner {
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
     exploration_queries.push_back(query);
     if (!down.ok()) return down;
+    // Planning keeps the robot's current goal while its frontier is open (not `cleared`).
+    if (query.keep_goal.has_value() &&
+        std::none_of(cleared.begin(), cleared.end(),
+                     [&](const Eigen::Vector3d& c) { return c.isApprox(*query.keep_goal); }))
+      return *query.keep_goal;
     if (frontiers.empty()) return absl::NotFoundError("no frontier");
     Eigen::Vector3d goal = frontiers.front();
     frontiers.pop_front();
     return goal;
   }
   std::deque<Eigen::Vector3d> frontiers;
+  std::vector<Eigen::Vector3d> cleared;  // goals whose frontier the robot has seen cleared
   std::vector<ExplorationQuery> exploration_queries;
   bool unreachable = false;
   absl::Status down;  // not OK: every call answers this (a dependency gone)
@@ -335,6 +342,63 @@ TEST_F(GatewayTaskExecutorTest, WithoutAScanTheNextExplorationGoalFollowsAtOnce)
   ASSERT_EQ(planner_.exploration_queries.back().excluded_goals.size(), 1u);
   EXPECT_TRUE(
       planner_.exploration_queries.back().excluded_goals[0].isApprox(Eigen::Vector3d(10, 0, 0)));
+}
+
+// VLFM and ApexNav choose again every step; explore_lite keeps a goal until its frontier is
+// gone. The executor asks every explore_reselect_s with its goal to keep, turns when planning
+// answers elsewhere, and never turns back to a goal it turned away from before the next arrival.
+TEST_F(GatewayTaskExecutorTest, AnExplorationGoalWhoseFrontierIsClearedIsLeftOnTheWay) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0),
+                        Eigen::Vector3d(10, 0.5, 0), Eigen::Vector3d(-10, 0, 0)};
+  TaskExecutor task = Make(FindTarget());  // explore_reselect_s 2, explore_keep_radius_m 1
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
+  const uint64_t first = out[0].id;
+  EXPECT_TRUE(task.OnPose(1.5, At(0.75)).empty());  // within the period: planning not asked
+  ASSERT_EQ(planner_.exploration_queries.size(), 1u);
+  EXPECT_FALSE(planner_.exploration_queries[0].keep_goal.has_value());
+
+  // Asked at 2 s with the goal to keep; its frontier is open: the robot drives on.
+  EXPECT_TRUE(task.OnPose(2.0, At(1.0)).empty());
+  ASSERT_EQ(planner_.exploration_queries.size(), 2u);
+  ASSERT_TRUE(planner_.exploration_queries[1].keep_goal.has_value());
+  EXPECT_TRUE(planner_.exploration_queries[1].keep_goal->isApprox(Eigen::Vector3d(10, 0, 0)));
+  EXPECT_DOUBLE_EQ(planner_.exploration_queries[1].keep_radius_m, 1.0);
+
+  // Seen cleared from afar: the next answer is another frontier, and the robot turns to it. The
+  // goal it leaves is not spent (a frontier left there stays open).
+  planner_.cleared = {Eigen::Vector3d(10, 0, 0)};
+  out = task.OnPose(4.0, At(2.0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_TRUE(absl::StrContains(task.progress().reason, "a better exploration goal"));
+  EXPECT_TRUE(planner_.exploration_queries.back().excluded_goals.empty());
+  EXPECT_EQ(task.progress().explore_goals, 1);  // the same search step
+
+  // That one cleared too, and planning's best now lies 0.5 m from the goal turned away from:
+  // no turn back before the robot reaches a goal.
+  planner_.cleared.push_back(Eigen::Vector3d(0, 10, 0));
+  EXPECT_TRUE(task.OnPose(6.0, At(2.0, 1.0)).empty());
+  EXPECT_TRUE(task.OnFeedback(6.0, first, RobotFeedback::kGoalReached).empty());  // superseded
+
+  // Arrival spends the goal and asks for the next one (the script's last).
+  out = task.OnFeedback(7.0, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));
+}
+
+TEST_F(GatewayTaskExecutorTest, WithoutReselectionEachExplorationGoalIsDrivenToItsEnd) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  planner_.cleared = {Eigen::Vector3d(10, 0, 0)};
+  ExecutorConfig config;
+  config.explore_reselect_s = 0.0;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  for (double t = 1.0; t <= 10.0; t += 1.0) EXPECT_TRUE(task.OnPose(t, At(t)).empty());
+  EXPECT_EQ(planner_.exploration_queries.size(), 1u);
 }
 
 TEST_F(GatewayTaskExecutorTest, SearchFirstLooksAroundThenExplores) {

@@ -60,6 +60,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("path_clearance_m", &c.executor.path_clearance_m)
       .Read("min_explore_step_m", &c.executor.min_explore_step_m)
       .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
+      .Read("explore_reselect_s", &c.executor.explore_reselect_s)
+      .Read("explore_keep_radius_m", &c.executor.explore_keep_radius_m)
       .Read("grounding_max_objects", &c.executor.grounding_max_objects)
       .Read("dependency_retry_s", &c.executor.dependency_retry_s)
       .Read("dependency_timeout_s", &c.executor.dependency_timeout_s)
@@ -88,6 +90,13 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
   executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m",
                  "must be >= 0");
+  executor.Check(std::isfinite(c.executor.explore_reselect_s) &&
+                     c.executor.explore_reselect_s >= 0.0 && c.executor.explore_reselect_s <= 600.0,
+                 "explore_reselect_s", "must be in [0, 600] (0 = off)");
+  executor.Check(std::isfinite(c.executor.explore_keep_radius_m) &&
+                     c.executor.explore_keep_radius_m >= 0.0 &&
+                     c.executor.explore_keep_radius_m <= 50.0,
+                 "explore_keep_radius_m", "must be in [0, 50]");
   executor.Check(c.executor.path_clearance_m >= 0.0, "path_clearance_m", "must be >= 0");
   executor.Check(c.executor.dependency_retry_s > 0.0, "dependency_retry_s", "must be > 0");
   executor.Check(c.executor.dependency_timeout_s >= c.executor.dependency_retry_s,

@@ -204,6 +204,12 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
   SetPose(pose.position, request.mutable_robot());
   request.mutable_robot()->set_yaw(pose.yaw);
   const pb::ExplorationStrategy chosen = ToProto(strategy.value_or(settings_.exploration_strategy));
+  // COVERAGE_MAX (a point ahead of the robot) and EROI_UTILITY (a viewpoint route) have no
+  // frontier to see cleared: their goals are driven to the end, so the goal to keep is the answer.
+  if (query.keep_goal.has_value() && (chosen == pb::EXPLORATION_STRATEGY_COVERAGE_MAX ||
+                                      chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY)) {
+    return *query.keep_goal;
+  }
   request.set_strategy(chosen);
   request.set_platform(ToProto(query.platform));
   for (const ExplorationHint& hint : context.objects) {
@@ -222,6 +228,10 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
   for (const Eigen::Vector3d& goal : query.excluded_goals)
     SetPose(goal, request.add_excluded_goals());
   request.set_excluded_radius_m(query.excluded_radius_m);
+  if (query.keep_goal.has_value()) {
+    SetPose(*query.keep_goal, request.mutable_keep_goal());
+    request.set_keep_radius_m(query.keep_radius_m);
+  }
   if (context.search_area.has_value()) {
     pb::SearchArea* area = request.mutable_search_area();
     area->set_min_x(context.search_area->min.x());

@@ -84,7 +84,8 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   context.visited.push_back(Eigen::Vector3d(0.0, 0.0, 0.0));
   RobotPose pose;
   pose.position = Eigen::Vector3d(1.0, 2.0, 0.3);
-  const ExplorationQuery query{pose, {Eigen::Vector3d(5.0, 6.0, 0.3)}, 1.5, RobotPlatform::kGround};
+  const ExplorationQuery query{
+      pose, {Eigen::Vector3d(5.0, 6.0, 0.3)}, 1.5, RobotPlatform::kGround, {}, 0.0};
   absl::StatusOr<Eigen::Vector3d> goal =
       client_->SelectGoal(query, ExplorationStrategy::kCoverageMax, context);
   ASSERT_TRUE(goal.ok()) << goal.status();
@@ -100,6 +101,7 @@ TEST_F(GatewayPlanningClientTest, SemanticContextAndTaskStrategyReachPlanning) {
   EXPECT_EQ(request.excluded_goals(0).x(), 5.0);
   EXPECT_EQ(request.excluded_goals(0).y(), 6.0);
   EXPECT_EQ(request.excluded_radius_m(), 1.5);
+  EXPECT_FALSE(request.has_keep_goal());
   ASSERT_EQ(request.semantics().objects_size(), 2);
   EXPECT_EQ(request.semantics().objects(0).label(), "sink");
   EXPECT_DOUBLE_EQ(request.semantics().objects(0).position().y(), 3.0);
@@ -149,12 +151,38 @@ TEST_F(GatewayPlanningClientTest, EroiValuesComeWithTheirWindowAndARefusedGridIs
   EXPECT_FALSE(planning_.requests[2].source().live_map().has_window_min());
 }
 
+// On the way to a goal the executor asks again with the goal to keep: the frontier strategies
+// get it; COVERAGE_MAX and EROI_UTILITY, which have no frontier to see cleared, keep it without
+// a call.
+TEST_F(GatewayPlanningClientTest, TheGoalToKeepReachesTheFrontierStrategiesOnly) {
+  RobotPose pose;
+  pose.position = Eigen::Vector3d(1.0, 2.0, 0.3);
+  const ExplorationQuery query{
+      pose, {}, 1.0, RobotPlatform::kGround, Eigen::Vector3d(7.0, -2.0, 0.3), 0.75};
+  absl::StatusOr<Eigen::Vector3d> goal =
+      client_->SelectGoal(query, ExplorationStrategy::kSemanticFrontier, ExplorationContext{});
+  ASSERT_TRUE(goal.ok()) << goal.status();
+  EXPECT_TRUE(goal->isApprox(Eigen::Vector3d(4.0, -1.0, 0.3)));  // planning's answer
+  for (const ExplorationStrategy kept :
+       {ExplorationStrategy::kCoverageMax, ExplorationStrategy::kEroiUtility}) {
+    goal = client_->SelectGoal(query, kept, ExplorationContext{});
+    ASSERT_TRUE(goal.ok()) << goal.status();
+    EXPECT_TRUE(goal->isApprox(Eigen::Vector3d(7.0, -2.0, 0.3)));
+  }
+  absl::MutexLock lock(&planning_.mu);
+  ASSERT_EQ(planning_.requests.size(), 1u);
+  EXPECT_EQ(planning_.requests[0].strategy(), pb::EXPLORATION_STRATEGY_SEMANTIC_FRONTIER);
+  EXPECT_EQ(planning_.requests[0].keep_goal().x(), 7.0);
+  EXPECT_EQ(planning_.requests[0].keep_goal().y(), -2.0);
+  EXPECT_EQ(planning_.requests[0].keep_radius_m(), 0.75);
+}
+
 // Issue "Fleet and faults": planning or mapping gone is UNAVAILABLE naming it, so the task
 // pauses; it used to be an empty path (robot-local planning) and NOT_FOUND (a blind step).
 TEST_F(GatewayPlanningClientTest, PlanningOrMappingGoneIsUnavailableNamingIt) {
   const PathQuery path{
       Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.0, 0.0, std::nullopt};
-  const ExplorationQuery explore{RobotPose{}, {}, 1.0};
+  const ExplorationQuery explore{RobotPose{}, {}, 1.0, RobotPlatform::kUnspecified, {}, 0.0};
   const auto answer = [&](grpc::Status failure) {
     absl::MutexLock lock(&planning_.mu);
     planning_.failure = std::move(failure);
