@@ -127,16 +127,27 @@ TEST(SelectExplorationGoal, SemanticFrontierOpensTheRoomNearestFrontierTakesTheP
   EXPECT_EQ(semantic->goal, (Cell{1, 1}));
 }
 
-TEST(SelectExplorationGoal, AGoalToKeepIsAnsweredWhileItsFrontierIsOpen) {
-  // The robot at (4, 1): the west pocket (1, 1) is the nearest frontier; the east room's frontier
-  // cell is (7, 1), centre (3.75, 0.75).
-  const ExplorationGrid grid = PocketAndRoomCorridor();
+// A ground robot at (4, 1) in PocketAndRoomCorridor, every frontier cell counted.
+ExplorationQuery GroundRobotInTheCorridor() {
   ExplorationQuery query;
   query.robot = {4, 1};
   query.min_frontier_cells = 1;
   query.platform = ExplorationPlatform::kGround;
+  return query;
+}
+
+ExplorationGoalConfig DiscountOnTheGround() {
   ExplorationGoalConfig config;
-  config.discount.ground = true;
+  config.discount.ground = true;  // opt-in
+  return config;
+}
+
+TEST(SelectExplorationGoal, AGoalToKeepIsAnsweredWhileItsFrontierIsOpen) {
+  // The robot at (4, 1): the west pocket (1, 1) is the nearest frontier; the east room's frontier
+  // cell is (7, 1), centre (3.75, 0.75).
+  const ExplorationGrid grid = PocketAndRoomCorridor();
+  ExplorationQuery query = GroundRobotInTheCorridor();
+  const ExplorationGoalConfig config = DiscountOnTheGround();
   for (const ExplorationStrategy strategy :
        {ExplorationStrategy::kNearestFrontier, ExplorationStrategy::kSemanticFrontier}) {
     // Kept: 0.3 m from the east frontier cell, within the 1 m radius.
@@ -164,12 +175,8 @@ TEST(SelectExplorationGoal, AGoalToKeepIsAnsweredWhileItsFrontierIsOpen) {
 TEST(SelectExplorationGoal, SemanticDiscountWithoutEvidenceIsTheNearestFrontierSearch) {
   // The same corridor: the west pocket (2 cells) is nearer than the east room (3 cells).
   const ExplorationGrid grid = PocketAndRoomCorridor();
-  ExplorationQuery query;
-  query.robot = {4, 1};
-  query.min_frontier_cells = 1;
-  query.platform = ExplorationPlatform::kGround;
-  ExplorationGoalConfig config;
-  config.discount.ground = true;  // opt-in
+  ExplorationQuery query = GroundRobotInTheCorridor();
+  const ExplorationGoalConfig config = DiscountOnTheGround();
   absl::StatusOr<ExplorationChoice> semantic =
       SelectExplorationGoal(grid, query, ExplorationStrategy::kSemanticFrontier, config);
   ASSERT_TRUE(semantic.ok()) << semantic.status();
