@@ -436,26 +436,16 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   ++progress_.explore_goals;
   // Frontiers behind furniture or in unseen corners can be approached no closer than where the
   // robot stands (the alternative point is here): spend them and ask planning for the next.
-  constexpr int kGoalsPerStep = 3;  // planning calls run under the gateway lock: keep them few
+  constexpr int kGoalsPerStep = 3;  // each is a planning call the task waits for: keep them few
   for (int attempt = 0; attempt < kGoalsPerStep; ++attempt) {
     const absl::StatusOr<Eigen::Vector3d> goal =
-        planner_->ExplorationGoal({pose_,
-                                   spent_explore_goals_,
-                                   config_.explore_exclusion_radius_m,
-                                   config_.platform,
-                                   {},
-                                   0.0});
+        planner_->ExplorationGoal(ExplorationRequest(std::nullopt));
     if (absl::IsUnavailable(goal.status())) return PauseExploring(now, goal.status());
     if (!goal.ok()) break;
     explore_goal_ = *goal;
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
     if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
-    // An empty path lets the robot plan locally, unless the goal is where it stands (PlanPath's
-    // "turn in place"): EROI_UTILITY sent the UAV's own spot 30 times in 7 s.
-    const Eigen::Vector3d end = path.ok() && !path->empty() ? path->back() : *goal;
-    const bool moves =
-        path.ok() && (end - pose_.position).head<2>().norm() >= config_.min_explore_step_m;
-    if (moves)
+    if (LeadsAway(path, *goal))
       return Navigate(now, *goal, *std::move(path), YawTo(*goal), 0.0, Phase::kExploring,
                       "exploring for the target");
     // No path: the frontiers around it lie in the same unreachable pocket.
@@ -464,11 +454,29 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
   return FallbackStep(now);
 }
 
+ExplorationQuery TaskExecutor::ExplorationRequest(
+    const std::optional<Eigen::Vector3d>& keep_goal) const {
+  return {pose_,
+          spent_explore_goals_,
+          config_.explore_exclusion_radius_m,
+          config_.platform,
+          keep_goal,
+          keep_goal.has_value() ? config_.explore_keep_radius_m : 0.0};
+}
+
+bool TaskExecutor::LeadsAway(const absl::StatusOr<std::vector<Eigen::Vector3d>>& path,
+                             const Eigen::Vector3d& goal) const {
+  // An empty path lets the robot plan locally, unless the goal is where it stands (PlanPath's
+  // "turn in place"): EROI_UTILITY sent the UAV's own spot 30 times in 7 s.
+  if (!path.ok()) return false;
+  const Eigen::Vector3d end = path->empty() ? goal : path->back();
+  return (end - pose_.position).head<2>().norm() >= config_.min_explore_step_m;
+}
+
 std::vector<RobotCommand> TaskExecutor::ReselectExploreGoal(double now) {
   explore_chosen_at_ = now;
   const absl::StatusOr<Eigen::Vector3d> goal =
-      planner_->ExplorationGoal({pose_, spent_explore_goals_, config_.explore_exclusion_radius_m,
-                                 config_.platform, explore_goal_, config_.explore_keep_radius_m});
+      planner_->ExplorationGoal(ExplorationRequest(explore_goal_));
   if (absl::IsUnavailable(goal.status())) return PauseExploring(now, goal.status());
   // No frontier left, the same one, or one turned away from before: the robot drives on (its
   // goal is spent on arrival).
@@ -480,8 +488,7 @@ std::vector<RobotCommand> TaskExecutor::ReselectExploreGoal(double now) {
     return {};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(*goal);
   if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
-  const Eigen::Vector3d end = path.ok() && !path->empty() ? path->back() : *goal;
-  if (!path.ok() || (end - pose_.position).head<2>().norm() < config_.min_explore_step_m)
+  if (!LeadsAway(path, *goal))
     return {};  // asked again at the next period; arrival spends the old goal as before
   explore_turned_from_.push_back(*explore_goal_);
   explore_goal_ = *goal;  // the old goal is not spent: its frontier, if any is left, stays open
@@ -493,7 +500,7 @@ std::vector<RobotCommand> TaskExecutor::ReselectExploreGoal(double now) {
 // memory, then its neighbours; directions that had no path are not asked again.
 std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
   constexpr int kDirections = 8;
-  constexpr int kStepsPerCall = 3;  // planning calls run under the gateway lock
+  constexpr int kStepsPerCall = 3;  // each is a planning call the task waits for
   explore_goal_.reset();
   const double least = memory_ != nullptr ? memory_->LeastExploredYaw(pose_.position) : pose_.yaw;
   int asked = 0;
@@ -876,7 +883,7 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
     // approach may have ended at an alternative point behind furniture). A view point counts
     // only when its planned path ends within reach of the target.
     constexpr int kSides = 8;
-    constexpr int kViewPlans = 3;  // planning calls run under the gateway lock
+    constexpr int kViewPlans = 3;  // each is a planning call the task waits for
     const Eigen::Vector3d target = progress_.target->position;
     Eigen::Vector3d away = pose_.position - target;
     away.z() = 0.0;

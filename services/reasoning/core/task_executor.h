@@ -340,6 +340,13 @@ class TaskExecutor {
   // On the way to an exploration goal: planning's best goal now, and a turn to it when it moved
   // (explore_reselect_s).
   std::vector<RobotCommand> ReselectExploreGoal(double now);
+  // The exploration request from here, with the spent goals and the goal to keep (none: the
+  // strategy's best).
+  ExplorationQuery ExplorationRequest(const std::optional<Eigen::Vector3d>& keep_goal) const;
+  // The path to an exploration goal takes the robot at least min_explore_step_m away (an empty
+  // path: the robot plans locally to the goal).
+  bool LeadsAway(const absl::StatusOr<std::vector<Eigen::Vector3d>>& path,
+                 const Eigen::Vector3d& goal) const;
   bool TryResolve();
   void MaybeRequestModel();
   const Subgoal& current() const {
