@@ -17,6 +17,9 @@ constexpr uint8_t kUnknown = 255;
 constexpr int64_t kMaxCells = int64_t{1} << 26;  // 8192 x 8192
 // Cells larger than this are no grid a planner can use (and 1e300 would put every pose at 1e300).
 constexpr double kMaxResolutionM = 100.0;
+// Finer cells than 1 mm are no map: every metre-sized setting divided by them overflows int (the
+// RPC fuzzer's 2026-11-29 input converted an infinite EROI edge in cells).
+constexpr double kMinResolutionM = 1e-3;
 
 absl::Status Invalid(const std::string& field, absl::string_view message) {
   return FieldError(absl::StatusCode::kInvalidArgument, field, message);
@@ -58,9 +61,10 @@ semnav::common::v1::Pose2D GridFrame::ToPose(Cell cell) const {
 }
 
 absl::StatusOr<GridFrame> ReadGridFrame(const GridMap& grid, const std::string& field) {
-  if (!(grid.resolution() > 0.0) || !(grid.resolution() <= kMaxResolutionM)) {
+  if (!(grid.resolution() >= kMinResolutionM) || !(grid.resolution() <= kMaxResolutionM)) {
     return Invalid(field + ".resolution",
-                   absl::StrCat("resolution must be a finite value in (0, ", kMaxResolutionM, "]"));
+                   absl::StrCat("resolution must be a finite value in [", kMinResolutionM, ", ",
+                                kMaxResolutionM, "]"));
   }
   if (absl::Status s = CheckPose2D(grid.origin(), field + ".origin"); !s.ok()) return s;
   if (absl::Status s = CheckMagnitude(grid.foot_height(), field + ".foot_height", kMaxCoordinateM);

@@ -318,6 +318,10 @@ TEST_F(PlanningContract, BadInputNamesTheFieldAndChangesNothing) {
   pb::PlanPathRequest zero_resolution = DoorRequest(pb::PLANNER_KIND_JPS);
   zero_resolution.mutable_source()->mutable_grid()->set_resolution(0.0);
   ExpectFieldError(Plan(zero_resolution, &response), "source.grid.resolution");
+  // Finite but below 1 mm: metre-sized settings in cells would overflow (fuzzer input).
+  pb::PlanPathRequest tiny_resolution = DoorRequest(pb::PLANNER_KIND_JPS);
+  tiny_resolution.mutable_source()->mutable_grid()->set_resolution(1e-300);
+  ExpectFieldError(Plan(tiny_resolution, &response), "source.grid.resolution");
 
   // The service still answers, and the same request gives the same plan.
   pb::PlanPathResponse after;
