@@ -54,6 +54,12 @@ class BatchUpdater {
       out_.push_back({begin->update->key, tree_.isNodeOccupied(node)});
       return;
     }
+    if (!node_is_new && !tree_.nodeHasChildren(node) && Unchanged(*node, begin, end)) {
+      // OctoMap's early abort: updates that cannot change a pruned leaf leave it pruned.
+      const bool occupied = tree_.isNodeOccupied(node);
+      for (const CodedUpdate* u = begin; u != end; ++u) out_.push_back({u->update->key, occupied});
+      return;
+    }
     const unsigned shift = 3 * (depth_ - 1 - depth);
     for (const CodedUpdate* first = begin; first != end;) {
       const auto child = static_cast<unsigned>((first->code >> shift) & 7);
@@ -71,10 +77,24 @@ class BatchUpdater {
       Descend(tree_.getNodeChild(node, child), depth + 1, child_is_new, first, last);
       first = last;
     }
-    node->updateOccupancyChildren();
+    // As updateNode: eight equal leaf children collapse into their parent (saturated free space
+    // mostly), else the parent takes the max child occupancy.
+    if (!tree_.pruneNode(node)) node->updateOccupancyChildren();
   }
 
  private:
+  // Every update of [begin, end) pushes `node` further into the clamp it is already at.
+  bool Unchanged(const octomap::OcTreeNode& node, const CodedUpdate* begin,
+                 const CodedUpdate* end) const {
+    const float log_odds = node.getLogOdds();
+    const bool at_max = log_odds >= tree_.getClampingThresMaxLog();
+    const bool at_min = log_odds <= tree_.getClampingThresMinLog();
+    for (const CodedUpdate* u = begin; u != end; ++u) {
+      if (u->update->hit ? !at_max : !at_min) return false;
+    }
+    return true;
+  }
+
   octomap::OcTree& tree_;
   std::vector<TouchedVoxel>& out_;
   unsigned depth_;

@@ -54,5 +54,55 @@ TEST(OctreeBatchUpdateTest, MatchesUpdateNodePerKey) {
   EXPECT_FLOAT_EQ(actual.getRoot()->getLogOdds(), expected.getRoot()->getLogOdds());
 }
 
+octomap::OcTreeKey BlockKey(int i) {  // the i-th voxel of the 2 x 2 x 2 block at 32768
+  return octomap::OcTreeKey(static_cast<octomap::key_type>(32768 + (i & 1)),
+                            static_cast<octomap::key_type>(32768 + ((i >> 1) & 1)),
+                            static_cast<octomap::key_type>(32768 + ((i >> 2) & 1)));
+}
+
+// Free space saturates at the lower clamp, and eight equal free voxels collapse into one leaf, as
+// updateNode does; before, the batch pass kept every voxel of the map as its own leaf forever.
+TEST(OctreeBatchUpdateTest, EightEqualChildrenArePrunedLikeUpdateNode) {
+  octomap::OcTree expected(0.1);
+  octomap::OcTree actual(0.1);
+  std::vector<VoxelUpdate> misses;
+  for (int i = 0; i < 8; ++i) misses.push_back({BlockKey(i), false});
+  // Miss log-odds -0.4 per update from 0 reach the -2.0 clamp after 5 updates.
+  for (int scan = 0; scan < 6; ++scan) {
+    for (const VoxelUpdate& u : misses) expected.updateNode(u.key, u.hit);
+    ApplyVoxelUpdates(actual, misses);
+  }
+  EXPECT_EQ(expected.getNumLeafNodes(), 1u);  // OctoMap's own pass pruned the block
+  EXPECT_EQ(actual.getNumLeafNodes(), 1u);
+  EXPECT_EQ(actual.size(), expected.size());
+  const octomap::OcTreeNode* block = actual.search(BlockKey(5));
+  ASSERT_NE(block, nullptr);
+  EXPECT_FLOAT_EQ(block->getLogOdds(), actual.getClampingThresMinLog());
+}
+
+// A pruned saturated block that more misses cannot change stays one leaf (no expansion), and its
+// voxels are still reported; a hit inside it expands it, as updateNode does.
+TEST(OctreeBatchUpdateTest, ASaturatedPrunedLeafStaysPrunedUnlessAnUpdateChangesIt) {
+  octomap::OcTree tree(0.1);
+  std::vector<VoxelUpdate> misses;
+  for (int i = 0; i < 8; ++i) misses.push_back({BlockKey(i), false});
+  for (int scan = 0; scan < 6; ++scan) ApplyVoxelUpdates(tree, misses);
+  const size_t pruned_size = tree.size();
+  const std::vector<TouchedVoxel> touched =
+      ApplyVoxelUpdates(tree, {{BlockKey(2), false}, {BlockKey(6), false}});
+  ASSERT_EQ(touched.size(), 2u);
+  EXPECT_FALSE(touched[0].occupied);
+  EXPECT_FALSE(touched[1].occupied);
+  EXPECT_EQ(tree.size(), pruned_size);
+  EXPECT_EQ(tree.getNumLeafNodes(), 1u);
+
+  const std::vector<TouchedVoxel> hit = ApplyVoxelUpdates(tree, {{BlockKey(3), true}});
+  ASSERT_EQ(hit.size(), 1u);
+  EXPECT_EQ(tree.getNumLeafNodes(), 8u);
+  EXPECT_FLOAT_EQ(tree.search(BlockKey(3))->getLogOdds(),
+                  tree.getClampingThresMinLog() + tree.getProbHitLog());
+  EXPECT_FLOAT_EQ(tree.search(BlockKey(4))->getLogOdds(), tree.getClampingThresMinLog());
+}
+
 }  // namespace
 }  // namespace semnav::mapping

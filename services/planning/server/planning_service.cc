@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -141,9 +142,8 @@ grpc::ServerUnaryReactor* PlanningServiceImpl::ServeOnGrid(
     grpc::CallbackServerContext* context, const pb::GridSource& source,
     std::function<absl::Status(const GridMap&, const std::string&)> fn) {
   return Serve(context, [=, this]() -> absl::Status {
-    GridMap fetched;
     std::string field;
-    absl::StatusOr<const GridMap*> grid = ResolveGrid(context, source, &fetched, &field);
+    absl::StatusOr<std::shared_ptr<const GridMap>> grid = ResolveGrid(context, source, &field);
     if (!grid.ok()) return grid.status();
     return fn(**grid, field);
   });
@@ -183,19 +183,33 @@ grpc::ServerUnaryReactor* PlanningServiceImpl::SmoothTrajectory(
                      });
 }
 
-absl::StatusOr<const GridMap*> PlanningServiceImpl::ResolveGrid(
-    grpc::CallbackServerContext* context, const pb::GridSource& source, GridMap* fetched,
-    std::string* field) {
+absl::StatusOr<std::shared_ptr<const GridMap>> PlanningServiceImpl::ResolveGrid(
+    grpc::CallbackServerContext* context, const pb::GridSource& source, std::string* field) {
   switch (source.source_case()) {
     case pb::GridSource::kGrid:
       *field = "source.grid";
-      return &source.grid();
-    case pb::GridSource::kLiveMap:
+      // Not owned: the request outlives the call.
+      return std::shared_ptr<const GridMap>(std::shared_ptr<const GridMap>(), &source.grid());
+    case pb::GridSource::kLiveMap: {
       *field = "source.live_map";
-      if (absl::Status s = FetchLiveGrid(*mapping_, context, source.live_map(), fetched); !s.ok()) {
+      const pb::LiveMapGrid& live = source.live_map();
+      if (live.max_age_ms() > kMaxLiveGridAgeMs) {
+        return Invalid("source.live_map.max_age_ms",
+                       absl::StrCat("max_age_ms must be at most ", kMaxLiveGridAgeMs));
+      }
+      const absl::Time now = absl::Now();
+      if (std::shared_ptr<const GridMap> kept =
+              live_grids_.Find(live, now, absl::Milliseconds(live.max_age_ms()))) {
+        return kept;
+      }
+      auto fetched = std::make_shared<GridMap>();
+      if (absl::Status s = FetchLiveGrid(*mapping_, context, live, fetched.get()); !s.ok()) {
         return s;
       }
-      return fetched;
+      // Kept for later calls that accept its age, whatever this one asked.
+      live_grids_.Put(live, fetched, now);
+      return std::shared_ptr<const GridMap>(std::move(fetched));
+    }
     default:
       return Invalid("source", "set source.grid (inline) or source.live_map");
   }
@@ -206,10 +220,9 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
                                        pb::PlanPathResponse* response) {
   if (absl::Status s = CheckRequest(request); !s.ok()) return s;
   const absl::Time started = absl::Now();
-  GridMap fetched;
   std::string grid_field;
-  absl::StatusOr<const GridMap*> resolved =
-      ResolveGrid(context, request.source(), &fetched, &grid_field);
+  absl::StatusOr<std::shared_ptr<const GridMap>> resolved =
+      ResolveGrid(context, request.source(), &grid_field);
   if (!resolved.ok()) return resolved.status();
   const GridMap& map = **resolved;
   absl::StatusOr<GridFrame> frame = ReadGridFrame(map, grid_field);

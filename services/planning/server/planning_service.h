@@ -11,6 +11,7 @@
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/common/server/worker_pool.h"
 #include "services/planning/core/jump_astar_cache.h"
+#include "services/planning/server/live_grid_cache.h"
 #include "services/planning/server/planning_config.h"
 
 namespace semnav::planning {
@@ -62,14 +63,15 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
   grpc::ServerUnaryReactor* ServeOnGrid(
       grpc::CallbackServerContext* context, const semnav::planning::v1::GridSource& source,
       std::function<absl::Status(const semnav::common::v1::GridMap&, const std::string&)> fn);
-  // The request's grid: the inline one, or the live map fetched into
-  // *fetched; *field names it for errors ("source.grid" / "source.live_map").
-  absl::StatusOr<const semnav::common::v1::GridMap*> ResolveGrid(
+  // The request's grid: the inline one, or the live map (a grid fetched within the request's
+  // max_age_ms, or fetched now); *field names it for errors ("source.grid" / "source.live_map").
+  absl::StatusOr<std::shared_ptr<const semnav::common::v1::GridMap>> ResolveGrid(
       grpc::CallbackServerContext* context, const semnav::planning::v1::GridSource& source,
-      semnav::common::v1::GridMap* fetched, std::string* field);
+      std::string* field);
 
   const PlanningConfig config_;
   std::unique_ptr<semnav::mapping::v1::MappingService::Stub> mapping_;
+  LiveGridCache live_grids_;
   // Per-map Jump A* state; its landmark builds run on workers_, which is
   // declared after it so it drains them before the cache goes.
   JumpAStarCache jump_astar_;

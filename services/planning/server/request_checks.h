@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "absl/status/status.h"
@@ -21,6 +22,8 @@ inline constexpr double kMaxScore = 1e6;
 inline constexpr double kMaxPathM = 100 * 2e5;
 // Per-request lists (frontiers, visited poses, objects, excluded goals, path points).
 inline constexpr size_t kMaxListItems = 65536;
+// LiveMapGrid.max_age_ms: a grid older than this is no live map.
+inline constexpr uint32_t kMaxLiveGridAgeMs = 10000;
 
 // x and y within kMaxCoordinateM, yaw within kMaxAngleRad ("<field>.x", ...).
 absl::Status CheckPose2D(const semnav::common::v1::Pose2D& pose, absl::string_view field);

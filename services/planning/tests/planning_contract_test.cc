@@ -322,6 +322,10 @@ TEST_F(PlanningContract, BadInputNamesTheFieldAndChangesNothing) {
   pb::PlanPathRequest tiny_resolution = DoorRequest(pb::PLANNER_KIND_JPS);
   tiny_resolution.mutable_source()->mutable_grid()->set_resolution(1e-300);
   ExpectFieldError(Plan(tiny_resolution, &response), "source.grid.resolution");
+  // Checked before any fetch: this planning has no mapping service to ask.
+  pb::PlanPathRequest stale = DoorRequest(pb::PLANNER_KIND_JPS);
+  stale.mutable_source()->mutable_live_map()->set_max_age_ms(10001);
+  ExpectFieldError(Plan(stale, &response), "source.live_map.max_age_ms");
 
   // The service still answers, and the same request gives the same plan.
   pb::PlanPathResponse after;

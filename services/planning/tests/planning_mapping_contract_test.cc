@@ -46,48 +46,62 @@ std::optional<semnav::common::v1::Pose2D> FreeCellNear(const GridMap& grid, doub
   return best;
 }
 
-TEST(PlanningWithMapping, LiveMapPlanEqualsInlinePlanOnTheSameGrid) {
-  const std::string dir = ::testing::TempDir() + "/planning_mapping_contract";
+// Streams `frames` frames of the standard synthetic room's tour to mapping, from `*stamp` on.
+void StreamRoomTour(mpb::MappingService::Stub& mapping, int frames, int64_t* stamp) {
+  grpc::ClientContext context;
+  auto stream = mapping.StreamFrames(&context);
+  const mapping::testing::SyntheticRoom room = mapping::testing::StandardRoom();
+  for (const mapping::CameraPose& pose : mapping::testing::RoomTour(room, frames)) {
+    mpb::StreamFramesRequest request;
+    *request.mutable_frame() =
+        mapping::testing::FrameToProto(mapping::testing::RenderFrame(room, pose, *stamp));
+    request.mutable_frame()->mutable_header()->set_robot_id("robot-1");
+    *stamp += 100'000'000;
+    ASSERT_TRUE(stream->Write(request));
+    mpb::StreamFramesResponse response;
+    ASSERT_TRUE(stream->Read(&response));
+  }
+  stream->WritesDone();
+  ASSERT_TRUE(stream->Finish().ok());
+}
+
+// Mapping and, against it, planning, each from a config in a fresh folder named `name`.
+struct TwoServices {
+  std::unique_ptr<testing::ServiceProcess> mapping;
+  std::unique_ptr<testing::ServiceProcess> planning;
+};
+TwoServices StartBoth(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/" + name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/mapping.yaml") << "mapping:\n  store_directory: " << dir << "/store\n";
   absl::StatusOr<std::unique_ptr<testing::ServiceProcess>> mapping =
       testing::ServiceProcess::Start("semnav-mapping", {"--config", dir + "/mapping.yaml"});
-  ASSERT_TRUE(mapping.ok()) << mapping.status();
+  EXPECT_TRUE(mapping.ok()) << mapping.status();
+  if (!mapping.ok()) return {};
+  std::ofstream(dir + "/planning.yaml")
+      << "planning:\n  mapping:\n    address: " << (*mapping)->address() << "\n";
+  absl::StatusOr<std::unique_ptr<testing::ServiceProcess>> planning =
+      testing::ServiceProcess::Start("semnav-planning", {"--config", dir + "/planning.yaml"});
+  EXPECT_TRUE(planning.ok()) << planning.status();
+  if (!planning.ok()) return {};
+  return {*std::move(mapping), *std::move(planning)};
+}
 
+TEST(PlanningWithMapping, LiveMapPlanEqualsInlinePlanOnTheSameGrid) {
+  TwoServices services = StartBoth("planning_mapping_contract");
+  ASSERT_TRUE(services.mapping && services.planning);
   // Map the standard synthetic room from a short tour.
-  auto mapping_stub = mpb::MappingService::NewStub((*mapping)->channel());
-  {
-    grpc::ClientContext context;
-    auto stream = mapping_stub->StreamFrames(&context);
-    const mapping::testing::SyntheticRoom room = mapping::testing::StandardRoom();
-    int64_t stamp = 1'000'000'000;
-    for (const mapping::CameraPose& pose : mapping::testing::RoomTour(room, 6)) {
-      mpb::StreamFramesRequest request;
-      *request.mutable_frame() =
-          mapping::testing::FrameToProto(mapping::testing::RenderFrame(room, pose, stamp));
-      request.mutable_frame()->mutable_header()->set_robot_id("robot-1");
-      stamp += 100'000'000;
-      ASSERT_TRUE(stream->Write(request));
-      mpb::StreamFramesResponse response;
-      ASSERT_TRUE(stream->Read(&response));
-    }
-    stream->WritesDone();
-    ASSERT_TRUE(stream->Finish().ok());
-  }
+  auto mapping_stub = mpb::MappingService::NewStub(services.mapping->channel());
+  int64_t stamp = 1'000'000'000;
+  StreamRoomTour(*mapping_stub, 6, &stamp);
   mpb::GetGridMapResponse grid;
   {
     grpc::ClientContext context;
     ASSERT_TRUE(mapping_stub->GetGridMap(&context, {}, &grid).ok());
   }
   ASSERT_GT(grid.grid().revision(), 0u);
-
-  std::ofstream(dir + "/planning.yaml")
-      << "planning:\n  mapping:\n    address: " << (*mapping)->address() << "\n";
-  absl::StatusOr<std::unique_ptr<testing::ServiceProcess>> planning =
-      testing::ServiceProcess::Start("semnav-planning", {"--config", dir + "/planning.yaml"});
-  ASSERT_TRUE(planning.ok()) << planning.status();
-  auto stub = pb::PlanningService::NewStub((*planning)->channel());
+  auto stub = pb::PlanningService::NewStub(services.planning->channel());
 
   // Across the room, past the table-height box at x 3.0-3.6, y 1.0-1.6.
   std::optional<semnav::common::v1::Pose2D> start = FreeCellNear(grid.grid(), 1.5, 1.3);
@@ -113,6 +127,43 @@ TEST(PlanningWithMapping, LiveMapPlanEqualsInlinePlanOnTheSameGrid) {
   // The table box lies on the straight line, so the path detours round it.
   const double straight = std::hypot(goal->x() - start->x(), goal->y() - start->y());
   EXPECT_GT(from_live.length_m(), straight + 0.1) << "straight " << straight;
+}
+
+// LiveMapGrid.max_age_ms: a call that accepts an age is answered from the grid an earlier call
+// fetched, though mapping has moved on; a call that accepts none gets mapping's grid of now.
+TEST(PlanningWithMapping, AGridOfAnAcceptedAgeIsTheOneFetchedBefore) {
+  TwoServices services = StartBoth("planning_mapping_kept_grid");
+  ASSERT_TRUE(services.mapping && services.planning);
+  auto mapping_stub = mpb::MappingService::NewStub(services.mapping->channel());
+  int64_t stamp = 1'000'000'000;
+  StreamRoomTour(*mapping_stub, 6, &stamp);
+  mpb::GetGridMapResponse grid;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(mapping_stub->GetGridMap(&context, {}, &grid).ok());
+  }
+  std::optional<semnav::common::v1::Pose2D> start = FreeCellNear(grid.grid(), 1.5, 1.3);
+  std::optional<semnav::common::v1::Pose2D> goal = FreeCellNear(grid.grid(), 4.3, 1.3);
+  ASSERT_TRUE(start && goal);
+  auto stub = pb::PlanningService::NewStub(services.planning->channel());
+  auto plan_revision = [&](uint32_t max_age_ms) -> uint64_t {
+    pb::PlanPathRequest request;
+    request.mutable_source()->mutable_live_map()->set_max_age_ms(max_age_ms);
+    *request.mutable_start() = *start;
+    *request.mutable_goal() = *goal;
+    pb::PlanPathResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = stub->PlanPath(&context, request, &response);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+    return response.map_revision();
+  };
+  const uint64_t first = grid.grid().revision();
+  EXPECT_EQ(plan_revision(0), first);  // fetched now, and kept
+  StreamRoomTour(*mapping_stub, 2, &stamp);
+  EXPECT_EQ(plan_revision(10000), first);  // the kept grid is young enough
+  const uint64_t now = plan_revision(0);   // fetched again
+  EXPECT_GT(now, first);
+  EXPECT_EQ(plan_revision(10000), now);  // and the newer one is kept
 }
 
 }  // namespace

@@ -30,6 +30,9 @@ struct PathQuery {
   // > 0: a goal in or walled in by obstacles moves to the reachable free point nearest it within
   // this distance (an object's surroundings); 0 = the gateway's configured tolerance.
   double goal_tolerance_m = 0.0;
+  // Planning may answer from a live grid it fetched this long ago (wall time); 0 = a grid fetched
+  // for this call. The gateway sets it per robot session (PerTaskPathPlanner).
+  int live_map_max_age_ms = 0;
 };
 
 // One exploration request: where the robot is and which goals are spent (it failed to reach
@@ -44,7 +47,8 @@ struct ExplorationQuery {
   // The goal the robot is driving to: planning answers it again (its nearest frontier cell)
   // while its frontier within keep_radius_m is open; unset = the strategy's best.
   std::optional<Eigen::Vector3d> keep_goal;
-  double keep_radius_m = 0.0;  // 0 = planning's 1 m
+  double keep_radius_m = 0.0;   // 0 = planning's 1 m
+  int live_map_max_age_ms = 0;  // as PathQuery's
 };
 
 // A dependency of the planner ("planning", or "mapping" behind it) is unreachable or timed out:

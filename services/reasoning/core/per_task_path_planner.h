@@ -33,29 +33,36 @@ class PerTaskPathPlanner final : public PathPlanner {
  public:
   // `explorer` may be null (no planning service: the shared planner's exploration fallback).
   // `context` is called for every exploration goal, on the caller's thread, before the call.
-  // `strategy`: nullopt = the configured default.
+  // `strategy`: nullopt = the configured default. `live_map_max_age_ms` (called before every
+  // call, on the caller's thread) sets the queries' live_map_max_age_ms; null = leave it.
   PerTaskPathPlanner(PathPlanner* paths, ExplorationService* explorer,
                      std::optional<ExplorationStrategy> strategy,
-                     std::function<ExplorationContext()> context, RemoteCallRunner remote = nullptr)
+                     std::function<ExplorationContext()> context, RemoteCallRunner remote = nullptr,
+                     std::function<int()> live_map_max_age_ms = nullptr)
       : paths_(paths),
         explorer_(explorer),
         strategy_(strategy),
         context_(std::move(context)),
-        remote_(std::move(remote)) {}
+        remote_(std::move(remote)),
+        live_map_max_age_ms_(std::move(live_map_max_age_ms)) {}
 
   absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
+    PathQuery asked = query;
+    if (live_map_max_age_ms_) asked.live_map_max_age_ms = live_map_max_age_ms_();
     absl::StatusOr<std::vector<Eigen::Vector3d>> path;
-    Remote([&] { path = paths_->Plan(query); });
+    Remote([&] { path = paths_->Plan(asked); });
     return path;
   }
   absl::StatusOr<Eigen::Vector3d> ExplorationGoal(const ExplorationQuery& query) override {
+    ExplorationQuery asked = query;
+    if (live_map_max_age_ms_) asked.live_map_max_age_ms = live_map_max_age_ms_();
     absl::StatusOr<Eigen::Vector3d> goal;
     if (explorer_ == nullptr) {
-      Remote([&] { goal = paths_->ExplorationGoal(query); });
+      Remote([&] { goal = paths_->ExplorationGoal(asked); });
       return goal;
     }
     const ExplorationContext context = context_();
-    Remote([&] { goal = explorer_->SelectGoal(query, strategy_, context); });
+    Remote([&] { goal = explorer_->SelectGoal(asked, strategy_, context); });
     return goal;
   }
   std::optional<ExplorationStrategy> strategy() const { return strategy_; }
@@ -74,6 +81,7 @@ class PerTaskPathPlanner final : public PathPlanner {
   std::optional<ExplorationStrategy> strategy_;
   std::function<ExplorationContext()> context_;
   RemoteCallRunner remote_;
+  std::function<int()> live_map_max_age_ms_;
 };
 
 }  // namespace semnav::reasoning

@@ -152,13 +152,16 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     std::string strategy(ExplorationStrategyName(c.planning.exploration_strategy));
     planning.Read("exploration_strategy", &strategy)
         .Read("deadline_ms", &c.planning.deadline_ms)
-        .Read("goal_tolerance_m", &c.planning.goal_tolerance_m);
+        .Read("goal_tolerance_m", &c.planning.goal_tolerance_m)
+        .Read("live_map_max_age_ms", &c.planning.live_map_max_age_ms);
     const std::optional<ExplorationStrategy> parsed = ParseExplorationStrategy(strategy);
     planning.Check(parsed.has_value(), "exploration_strategy",
                    "must be NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY");
     if (parsed.has_value()) c.planning.exploration_strategy = *parsed;
     planning.Check(c.planning.deadline_ms > 0, "deadline_ms", "must be > 0");
     planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
+    planning.Check(c.planning.live_map_max_age_ms >= 0 && c.planning.live_map_max_age_ms <= 10000,
+                   "live_map_max_age_ms", "must be in [0, 10000]");
   }
 
   if (section.Has("relocalization")) {  // absent: no relocalization loop

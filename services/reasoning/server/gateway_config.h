@@ -28,6 +28,10 @@ struct PlanningSettings {
   int deadline_ms = 2000;  // per PlanPath / SelectExplorationGoal
   double goal_tolerance_m =
       0.0;  // an occupied goal may move this far; 0 = use the alternative point
+  // Wall-clock sessions accept a live grid planning fetched this long ago (LiveMapGrid.max_age_ms),
+  // as Nav2's planners read a global costmap updated at 1 Hz: one fetch then serves the calls
+  // of many robots. Simulated-clock sessions always ask for a fresh grid. 0 = always fresh.
+  int live_map_max_age_ms = 500;
 };
 
 // The model proxy (section "model_proxy"). No address = offline default: fast path, the commonsense

@@ -68,7 +68,7 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
 TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
       "planning: {address: 127.0.0.1:50052, exploration_strategy: EROI_UTILITY, deadline_ms: "
-      "500}\n");
+      "500, live_map_max_age_ms: 250}\n");
   ASSERT_TRUE(reader.ok());
   const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
@@ -76,6 +76,8 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   EXPECT_EQ(config.planning.channel.address, "127.0.0.1:50052");
   EXPECT_EQ(config.planning.exploration_strategy, ExplorationStrategy::kEroiUtility);
   EXPECT_EQ(config.planning.deadline_ms, 500);
+  EXPECT_EQ(config.planning.live_map_max_age_ms, 250);
+  EXPECT_EQ(PlanningSettings{}.live_map_max_age_ms, 500);
 
   absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(
       "planning: {address: 127.0.0.1:50052, exploration_strategy: RANDOM}\n");
@@ -83,6 +85,12 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   const absl::Status status = GatewayConfig::FromYaml(*bad).status();
   EXPECT_FALSE(status.ok());
   EXPECT_TRUE(absl::StrContains(status.message(), "planning.exploration_strategy")) << status;
+
+  absl::StatusOr<ConfigReader> stale = ConfigReader::FromString(
+      "planning: {address: 127.0.0.1:50052, live_map_max_age_ms: 10001}\n");
+  ASSERT_TRUE(stale.ok());
+  const absl::Status too_old = GatewayConfig::FromYaml(*stale).status();
+  EXPECT_TRUE(absl::StrContains(too_old.message(), "planning.live_map_max_age_ms")) << too_old;
 }
 
 TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {

@@ -224,7 +224,16 @@ std::unique_ptr<PerTaskPathPlanner> GatewayHub::PlannerFor(
       planner_, backends_.explorer, strategy,
       [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS { return ContextFor(task_id); },
       [this, task_id](absl::FunctionRef<void()> call)
-          ABSL_NO_THREAD_SAFETY_ANALYSIS { RunRemoteCall(task_id, call); });
+          ABSL_NO_THREAD_SAFETY_ANALYSIS { RunRemoteCall(task_id, call); },
+      [this, task_id]() ABSL_NO_THREAD_SAFETY_ANALYSIS { return LiveMapMaxAgeMs(task_id); });
+}
+
+int GatewayHub::LiveMapMaxAgeMs(const std::string& task_id) {
+  // Simulated time is the episode's truth: a grid fetched at some wall time is not a function of
+  // the episode, so simulated-clock sessions always get a fresh one.
+  const Task* task = tasks_.Find(task_id);
+  if (task == nullptr || RobotRecord(task->robot_id).simulated_clock) return 0;
+  return config_.planning.live_map_max_age_ms;
 }
 
 void GatewayHub::StartIfPossible(Task& task) {

@@ -244,6 +244,8 @@ class GatewayHub {
   void OnTextEmbedding(const std::string& task_id, absl::StatusOr<std::vector<float>> embedding)
       ABSL_LOCKS_EXCLUDED(mu_);
   ExplorationContext ContextFor(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The live-map age the task's planning calls accept (PlanningSettings::live_map_max_age_ms).
+  int LiveMapMaxAgeMs(const std::string& task_id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   void OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::string> answer,
                       int64_t prompt_tokens) ABSL_LOCKS_EXCLUDED(mu_);
   void OnRegionScore(const std::string& task_id, const RegionDue& region,

@@ -129,6 +129,50 @@ TEST_F(SimulatedClockTest, ANewSimulatedSessionStartsItsOwnClock) {
   hub_->Shutdown();  // closes `next` while it exists
 }
 
+// Records the live-map age each path query accepts; plans nothing (the robot plans locally).
+class AgeRecordingPlanner : public RobotLocalPlanner {
+ public:
+  absl::StatusOr<std::vector<Eigen::Vector3d>> Plan(const PathQuery& query) override {
+    absl::MutexLock lock(&mu_);
+    ages_ms_.push_back(query.live_map_max_age_ms);
+    return std::vector<Eigen::Vector3d>{};
+  }
+  std::vector<int> ages_ms() {
+    absl::MutexLock lock(&mu_);
+    return ages_ms_;
+  }
+
+ private:
+  absl::Mutex mu_;
+  std::vector<int> ages_ms_;
+};
+
+// Planning may answer a wall-clock robot from a grid it fetched up to planning.live_map_max_age_ms
+// ago; a simulated-clock robot always gets a grid fetched for the call, because a grid of some
+// wall time is not a function of its episode.
+TEST(SimulatedClockPlanningTest, OnlyWallClockSessionsAcceptAnOlderLiveMap) {
+  for (const bool simulated : {true, false}) {
+    GatewayConfig config;
+    config.planning.live_map_max_age_ms = 400;
+    AgeRecordingPlanner planner;
+    GatewayHub hub(config, &ShippedLexicon(), &planner);
+    hub.OnSceneGraph(SofaScene());
+    RecordingSink session;
+    api::SessionHello hello = SimulatedHello("r1");
+    if (!simulated) hello.clear_clock();
+    ASSERT_TRUE(hub.OpenSession(hello, &session).ok());
+    // Past the sofa and on, 12 m: going back to it is a planned navigate.
+    ASSERT_TRUE(hub.OnRobotState(&session, StepState(0, 0, 1.0, 1)).ok());
+    ASSERT_TRUE(hub.OnRobotState(&session, StepState(6, 0, 2.0, 2)).ok());
+    ASSERT_TRUE(hub.OnRobotState(&session, StepState(12, 0, 3.0, 3)).ok());
+    ASSERT_TRUE(hub.Submit(SubmitRequest("回到沙发那里")).ok());
+    const std::vector<int> ages = planner.ages_ms();
+    ASSERT_FALSE(ages.empty()) << (simulated ? "simulated" : "wall clock");
+    for (int age : ages) EXPECT_EQ(age, simulated ? 0 : 400);
+    hub.Shutdown();
+  }
+}
+
 // Answers the slow path's match_target calls when told, reporting a latency; embeddings fail at
 // once (no backend), with no latency.
 class LatencyModel : public LanguageModel {

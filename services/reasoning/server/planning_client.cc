@@ -136,7 +136,7 @@ absl::Status PlanningClient::Ready(const char* call) {
 absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuery& query) {
   if (absl::Status ready = Ready("PlanPath"); !ready.ok()) return ready;
   pb::PlanPathRequest request;
-  request.mutable_source()->mutable_live_map();
+  request.mutable_source()->mutable_live_map()->set_max_age_ms(query.live_map_max_age_ms);
   SetPose(query.start, request.mutable_start());
   SetPose(query.goal, request.mutable_goal());
   request.set_planner(query.multi_modal ? pb::PLANNER_KIND_JUMP_ASTAR : pb::PLANNER_KIND_JPS);
@@ -200,7 +200,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
   if (absl::Status ready = Ready("SelectExplorationGoal"); !ready.ok()) return ready;
   const RobotPose& pose = query.pose;
   pb::SelectExplorationGoalRequest request;
-  request.mutable_source()->mutable_live_map();
+  request.mutable_source()->mutable_live_map()->set_max_age_ms(query.live_map_max_age_ms);
   SetPose(pose.position, request.mutable_robot());
   request.mutable_robot()->set_yaw(pose.yaw);
   const pb::ExplorationStrategy chosen = ToProto(strategy.value_or(settings_.exploration_strategy));
@@ -247,6 +247,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
     LogWarning("eroi_values_rejected",
                {{"message", status.error_message()}, {"fallback", "uniform values"}});
     request.mutable_source()->mutable_live_map()->Clear();
+    request.mutable_source()->mutable_live_map()->set_max_age_ms(query.live_map_max_age_ms);
     request.clear_eroi_semantic_values();
     status = Select(request, &response);
   }

@@ -22,6 +22,7 @@ class RecordingPlanning final : public pb::PlanningService::Service {
     absl::MutexLock lock(&mu);
     radii.push_back(request->robot_radius_m());
     tolerances.push_back(request->goal_tolerance_m());
+    path_max_ages_ms.push_back(request->source().live_map().max_age_ms());
     if (request->robot_radius_m() > no_path_above_m) {
       absl::Status no_path = absl::NotFoundError("goal is not reachable from start");
       pb::PlanFailureDetail detail;
@@ -49,9 +50,10 @@ class RecordingPlanning final : public pb::PlanningService::Service {
   absl::Mutex mu;
   bool refuse_values = false;
   grpc::Status failure;  // every answer's (PlanPath answers OK with the goal as its path otherwise)
-  double no_path_above_m = 1e9;    // PlanPath: NO_PATH for a robot_radius_m above this
-  std::vector<double> radii;       // PlanPath's robot_radius_m, in call order
-  std::vector<double> tolerances;  // PlanPath's goal_tolerance_m, in call order
+  double no_path_above_m = 1e9;            // PlanPath: NO_PATH for a robot_radius_m above this
+  std::vector<double> radii;               // PlanPath's robot_radius_m, in call order
+  std::vector<double> tolerances;          // PlanPath's goal_tolerance_m, in call order
+  std::vector<uint32_t> path_max_ages_ms;  // PlanPath's source.live_map.max_age_ms, in call order
   std::vector<pb::SelectExplorationGoalRequest> requests;
 };
 
@@ -257,6 +259,23 @@ TEST_F(GatewayPlanningClientTest, AQuerysGoalToleranceReachesPlanning) {
   ASSERT_TRUE(client_->Plan(query).ok());
   absl::MutexLock lock(&planning_.mu);
   EXPECT_EQ(planning_.tolerances, (std::vector<double>{0.0, 1.1}));
+}
+
+TEST_F(GatewayPlanningClientTest, TheAcceptedLiveMapAgeReachesPlanning) {
+  PathQuery path{Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.0, 0.0, std::nullopt};
+  ExplorationQuery explore{RobotPose{}, {}, 1.0, RobotPlatform::kGround, std::nullopt, 0.0};
+  ASSERT_TRUE(client_->Plan(path).ok());
+  ASSERT_TRUE(client_->ExplorationGoal(explore).ok());
+  path.live_map_max_age_ms = 500;
+  explore.live_map_max_age_ms = 250;
+  ASSERT_TRUE(client_->Plan(path).ok());
+  ASSERT_TRUE(client_->ExplorationGoal(explore).ok());
+  absl::MutexLock lock(&planning_.mu);
+  EXPECT_EQ(planning_.path_max_ages_ms, (std::vector<uint32_t>{0, 500}));
+  ASSERT_EQ(planning_.requests.size(), 2u);
+  EXPECT_TRUE(planning_.requests[0].source().has_live_map());
+  EXPECT_EQ(planning_.requests[0].source().live_map().max_age_ms(), 0u);
+  EXPECT_EQ(planning_.requests[1].source().live_map().max_age_ms(), 250u);
 }
 
 pb::PlanPathResponse FlyOverCrate() {

@@ -1,0 +1,48 @@
+#include "services/planning/server/live_grid_cache.h"
+
+#include <algorithm>
+
+namespace semnav::planning {
+
+LiveGridCache::Window LiveGridCache::WindowOf(const semnav::planning::v1::LiveMapGrid& live) {
+  // FetchLiveGrid asks for a window when either corner is set.
+  if (!live.has_window_min() && !live.has_window_max()) return Window{};
+  return Window{false, live.window_min().x(), live.window_min().y(), live.window_max().x(),
+                live.window_max().y()};
+}
+
+std::shared_ptr<const semnav::common::v1::GridMap> LiveGridCache::Find(
+    const semnav::planning::v1::LiveMapGrid& live, absl::Time now, absl::Duration max_age) {
+  if (max_age <= absl::ZeroDuration()) return nullptr;
+  const Window window = WindowOf(live);
+  absl::MutexLock lock(&mu_);
+  for (const Entry& entry : entries_) {
+    // A fetch stamped after `now` (another worker's, just finished) is fresher still.
+    if (entry.window == window && now - entry.fetched_at <= max_age) return entry.grid;
+  }
+  return nullptr;
+}
+
+void LiveGridCache::Put(const semnav::planning::v1::LiveMapGrid& live,
+                        std::shared_ptr<const semnav::common::v1::GridMap> grid,
+                        absl::Time fetched_at) {
+  if (max_windows_ == 0) return;
+  const Window window = WindowOf(live);
+  absl::MutexLock lock(&mu_);
+  auto same = std::find_if(entries_.begin(), entries_.end(),
+                           [&](const Entry& e) { return e.window == window; });
+  if (same != entries_.end()) {
+    if (same->fetched_at > fetched_at) return;
+    same->fetched_at = fetched_at;
+    same->grid = std::move(grid);
+    return;
+  }
+  if (entries_.size() >= max_windows_) {
+    entries_.erase(std::min_element(
+        entries_.begin(), entries_.end(),
+        [](const Entry& a, const Entry& b) { return a.fetched_at < b.fetched_at; }));
+  }
+  entries_.push_back(Entry{window, fetched_at, std::move(grid)});
+}
+
+}  // namespace semnav::planning
