@@ -46,20 +46,22 @@ class BatchUpdater {
   BatchUpdater(octomap::OcTree& tree, std::vector<TouchedVoxel>& out)
       : tree_(tree), out_(out), depth_(tree.getTreeDepth()) {}
 
-  void Descend(octomap::OcTreeNode* node, unsigned depth, bool node_is_new,
+  // Returns whether `node` is a leaf after the updates.
+  bool Descend(octomap::OcTreeNode* node, unsigned depth, bool node_is_new,
                const CodedUpdate* begin, const CodedUpdate* end) {
     if (depth == depth_) {
       const bool hit = begin->update->hit;
       tree_.updateNodeLogOdds(node, hit ? tree_.getProbHitLog() : tree_.getProbMissLog());
       out_.push_back({begin->update->key, tree_.isNodeOccupied(node)});
-      return;
+      return true;
     }
     if (!node_is_new && !tree_.nodeHasChildren(node) && Unchanged(*node, begin, end)) {
       // OctoMap's early abort: updates that cannot change a pruned leaf leave it pruned.
       const bool occupied = tree_.isNodeOccupied(node);
       for (const CodedUpdate* u = begin; u != end; ++u) out_.push_back({u->update->key, occupied});
-      return;
+      return true;
     }
+    bool children_are_leaves = true;
     const unsigned shift = 3 * (depth_ - 1 - depth);
     for (const CodedUpdate* first = begin; first != end;) {
       const auto child = static_cast<unsigned>((first->code >> shift) & 7);
@@ -74,12 +76,16 @@ class BatchUpdater {
           child_is_new = true;
         }
       }
-      Descend(tree_.getNodeChild(node, child), depth + 1, child_is_new, first, last);
+      children_are_leaves &=
+          Descend(tree_.getNodeChild(node, child), depth + 1, child_is_new, first, last);
       first = last;
     }
     // As updateNode: eight equal leaf children collapse into their parent (saturated free space
-    // mostly), else the parent takes the max child occupancy.
-    if (!tree_.pruneNode(node)) node->updateOccupancyChildren();
+    // mostly), else the parent takes the max child occupancy. A touched child with children of
+    // its own rules the collapse out without looking at the other seven.
+    if (children_are_leaves && tree_.pruneNode(node)) return true;
+    node->updateOccupancyChildren();
+    return false;
   }
 
  private:
