@@ -88,78 +88,78 @@ TwoServices StartBoth(const std::string& name) {
   return {*std::move(mapping), *std::move(planning)};
 }
 
-TEST(PlanningWithMapping, LiveMapPlanEqualsInlinePlanOnTheSameGrid) {
-  TwoServices services = StartBoth("planning_mapping_contract");
-  ASSERT_TRUE(services.mapping && services.planning);
-  // Map the standard synthetic room from a short tour.
-  auto mapping_stub = mpb::MappingService::NewStub(services.mapping->channel());
-  int64_t stamp = 1'000'000'000;
-  StreamRoomTour(*mapping_stub, 6, &stamp);
-  mpb::GetGridMapResponse grid;
-  {
+// The standard synthetic room mapped from a short tour by a real mapping service, a real planning
+// service on it, and two free cells across the room, past the table-height box at x 3.0-3.6,
+// y 1.0-1.6.
+class PlanningWithMapping : public ::testing::Test {
+ protected:
+  void MapTheRoom(const std::string& name) {
+    services_ = StartBoth(name);
+    ASSERT_TRUE(services_.mapping && services_.planning);
+    mapping_ = mpb::MappingService::NewStub(services_.mapping->channel());
+    StreamRoomTour(*mapping_, 6, &stamp_);
     grpc::ClientContext context;
-    ASSERT_TRUE(mapping_stub->GetGridMap(&context, {}, &grid).ok());
+    ASSERT_TRUE(mapping_->GetGridMap(&context, {}, &grid_).ok());
+    ASSERT_GT(grid_.grid().revision(), 0u);
+    start_ = FreeCellNear(grid_.grid(), 1.5, 1.3);
+    goal_ = FreeCellNear(grid_.grid(), 4.3, 1.3);
+    ASSERT_TRUE(start_ && goal_);
+    planning_ = pb::PlanningService::NewStub(services_.planning->channel());
   }
-  ASSERT_GT(grid.grid().revision(), 0u);
-  auto stub = pb::PlanningService::NewStub(services.planning->channel());
 
-  // Across the room, past the table-height box at x 3.0-3.6, y 1.0-1.6.
-  std::optional<semnav::common::v1::Pose2D> start = FreeCellNear(grid.grid(), 1.5, 1.3);
-  std::optional<semnav::common::v1::Pose2D> goal = FreeCellNear(grid.grid(), 4.3, 1.3);
-  ASSERT_TRUE(start && goal);
+  TwoServices services_;
+  std::unique_ptr<mpb::MappingService::Stub> mapping_;
+  std::unique_ptr<pb::PlanningService::Stub> planning_;
+  int64_t stamp_ = 1'000'000'000;
+  mpb::GetGridMapResponse grid_;
+  std::optional<semnav::common::v1::Pose2D> start_;
+  std::optional<semnav::common::v1::Pose2D> goal_;
+};
+
+TEST_F(PlanningWithMapping, LiveMapPlanEqualsInlinePlanOnTheSameGrid) {
+  MapTheRoom("planning_mapping_contract");
+  if (HasFatalFailure()) return;
   pb::PlanPathRequest live;
   live.mutable_source()->mutable_live_map();
-  *live.mutable_start() = *start;
-  *live.mutable_goal() = *goal;
+  *live.mutable_start() = *start_;
+  *live.mutable_goal() = *goal_;
   pb::PlanPathRequest inline_grid = live;
-  *inline_grid.mutable_source()->mutable_grid() = grid.grid();
+  *inline_grid.mutable_source()->mutable_grid() = grid_.grid();
 
   pb::PlanPathResponse from_live;
   pb::PlanPathResponse from_inline;
   grpc::ClientContext c1;
-  const grpc::Status live_status = stub->PlanPath(&c1, live, &from_live);
+  const grpc::Status live_status = planning_->PlanPath(&c1, live, &from_live);
   ASSERT_TRUE(live_status.ok()) << live_status.error_message();
   grpc::ClientContext c2;
-  ASSERT_TRUE(stub->PlanPath(&c2, inline_grid, &from_inline).ok());
-  EXPECT_EQ(from_live.map_revision(), grid.grid().revision());
+  ASSERT_TRUE(planning_->PlanPath(&c2, inline_grid, &from_inline).ok());
+  EXPECT_EQ(from_live.map_revision(), grid_.grid().revision());
   EXPECT_DOUBLE_EQ(from_live.length_m(), from_inline.length_m());
   EXPECT_EQ(from_live.path_size(), from_inline.path_size());
   // The table box lies on the straight line, so the path detours round it.
-  const double straight = std::hypot(goal->x() - start->x(), goal->y() - start->y());
+  const double straight = std::hypot(goal_->x() - start_->x(), goal_->y() - start_->y());
   EXPECT_GT(from_live.length_m(), straight + 0.1) << "straight " << straight;
 }
 
 // LiveMapGrid.max_age_ms: a call that accepts an age is answered from the grid an earlier call
 // fetched, though mapping has moved on; a call that accepts none gets mapping's grid of now.
-TEST(PlanningWithMapping, AGridOfAnAcceptedAgeIsTheOneFetchedBefore) {
-  TwoServices services = StartBoth("planning_mapping_kept_grid");
-  ASSERT_TRUE(services.mapping && services.planning);
-  auto mapping_stub = mpb::MappingService::NewStub(services.mapping->channel());
-  int64_t stamp = 1'000'000'000;
-  StreamRoomTour(*mapping_stub, 6, &stamp);
-  mpb::GetGridMapResponse grid;
-  {
-    grpc::ClientContext context;
-    ASSERT_TRUE(mapping_stub->GetGridMap(&context, {}, &grid).ok());
-  }
-  std::optional<semnav::common::v1::Pose2D> start = FreeCellNear(grid.grid(), 1.5, 1.3);
-  std::optional<semnav::common::v1::Pose2D> goal = FreeCellNear(grid.grid(), 4.3, 1.3);
-  ASSERT_TRUE(start && goal);
-  auto stub = pb::PlanningService::NewStub(services.planning->channel());
+TEST_F(PlanningWithMapping, AGridOfAnAcceptedAgeIsTheOneFetchedBefore) {
+  MapTheRoom("planning_mapping_kept_grid");
+  if (HasFatalFailure()) return;
   auto plan_revision = [&](uint32_t max_age_ms) -> uint64_t {
     pb::PlanPathRequest request;
     request.mutable_source()->mutable_live_map()->set_max_age_ms(max_age_ms);
-    *request.mutable_start() = *start;
-    *request.mutable_goal() = *goal;
+    *request.mutable_start() = *start_;
+    *request.mutable_goal() = *goal_;
     pb::PlanPathResponse response;
     grpc::ClientContext context;
-    const grpc::Status status = stub->PlanPath(&context, request, &response);
+    const grpc::Status status = planning_->PlanPath(&context, request, &response);
     EXPECT_TRUE(status.ok()) << status.error_message();
     return response.map_revision();
   };
-  const uint64_t first = grid.grid().revision();
+  const uint64_t first = grid_.grid().revision();
   EXPECT_EQ(plan_revision(0), first);  // fetched now, and kept
-  StreamRoomTour(*mapping_stub, 2, &stamp);
+  StreamRoomTour(*mapping_, 2, &stamp_);
   EXPECT_EQ(plan_revision(10000), first);  // the kept grid is young enough
   const uint64_t now = plan_revision(0);   // fetched again
   EXPECT_GT(now, first);
