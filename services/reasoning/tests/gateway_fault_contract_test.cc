@@ -16,6 +16,7 @@
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
+#include "absl/time/clock.h"
 #include "gtest/gtest.h"
 #include "semnav/reasoning/v1/operator.grpc.pb.h"
 #include "semnav/reasoning/v1/robot_session.grpc.pb.h"
@@ -266,13 +267,15 @@ TEST_F(GatewayFaultContractTest, PlanningKilledForLongerThanTheTimeoutFailsTheTa
 }
 
 // Mapping gone behind a live planning service: planning answers that its live map's GetGridMap
-// failed, and the pause names mapping.
+// failed, and the pause names mapping. A robot on wall time accepts a grid planning fetched up to
+// planning.live_map_max_age_ms (500 ms) before, so the re-plan is asked once that grid is older.
 TEST_F(GatewayFaultContractTest, MappingKilledPausesTheTaskNamingMapping) {
   ASSERT_NO_FATAL_FAILURE(StartStack("dependency_retry_s: 0.5, dependency_timeout_s: 60"));
   const std::optional<api::RobotCommand> navigate = NextPlannedNavigate(std::chrono::seconds(15));
   ASSERT_TRUE(navigate.has_value());
   ASSERT_EQ(::kill(mapping_->pid(), SIGKILL), 0);
   EXPECT_FALSE(mapping_->Terminate(absl::Seconds(5)).ok());
+  absl::SleepFor(absl::Milliseconds(600));
   ASSERT_TRUE(Blocked(navigate->command_id()));
 
   const std::optional<api::RobotCommand> hold = reader_->Next(std::chrono::milliseconds(5000));
