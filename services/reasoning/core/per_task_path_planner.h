@@ -1,6 +1,7 @@
-// The PathPlanner each task's executor gets: paths come from the shared planner unchanged;
-// exploration goals are asked with the task's strategy and its semantic context (target, scene
-// graph, visited places, commonsense co-occurrence), which the executor itself does not know.
+// The PathPlanner each task's executor gets: paths come from the shared planner; exploration goals
+// are asked with the task's strategy and its semantic context (target, scene graph, visited
+// places, commonsense co-occurrence), which the executor itself does not know. Both carry the
+// live-map age the robot's session accepts.
 // Every call to planning goes through the task's RemoteCallRunner, which lets the gateway run it
 // without its lock (docs/algorithms/gateway.md, "Remote calls").
 #pragma once
