@@ -246,8 +246,8 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
     // counts differently): explore on planning's uniform values rather than not at all.
     LogWarning("eroi_values_rejected",
                {{"message", status.error_message()}, {"fallback", "uniform values"}});
-    request.mutable_source()->mutable_live_map()->Clear();
-    request.mutable_source()->mutable_live_map()->set_max_age_ms(query.live_map_max_age_ms);
+    request.mutable_source()->mutable_live_map()->clear_window_min();  // the whole live map
+    request.mutable_source()->mutable_live_map()->clear_window_max();
     request.clear_eroi_semantic_values();
     status = Select(request, &response);
   }
