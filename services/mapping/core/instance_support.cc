@@ -13,9 +13,9 @@ bool InstanceSupport::operator()(const std::string& label, const Eigen::Vector3f
   if (!built_) {
     for (const SceneObject& object : objects_) {
       const Eigen::Vector3f low =
-          (object.observed_box.min().array() - margin_m_).matrix().cast<float>();
+          (object.position.array() - object.size.array() / 2.0 - margin_m_).matrix().cast<float>();
       const Eigen::Vector3f high =
-          (object.observed_box.max().array() + margin_m_).matrix().cast<float>();
+          (object.position.array() + object.size.array() / 2.0 + margin_m_).matrix().cast<float>();
       // Its own label always (a loaded instance has no votes yet); others with enough of the
       // votes: the detector's rare confusions would otherwise paint every instance, over time,
       // with every label it was once mistaken for.

@@ -12,8 +12,8 @@ namespace semnav::mapping {
 
 // Which labelled points the scene graph still holds (SemanticMapConfig::instance_support_*): a
 // point is supported when an instance named by its label, or whose votes give that label at least
-// min_share of their summed score, holds it within its observed box grown by the margin. A
-// negative margin supports every point.
+// min_share of their summed score, holds it within its fused box (position +- size / 2, what the
+// scene graph publishes) grown by the margin. A negative margin supports every point.
 class InstanceSupport {
  public:
   InstanceSupport(const std::vector<SceneObject>& objects, double margin_m, double min_share);

@@ -10,8 +10,8 @@ SceneObject Chair() {
   chair.label = "chair";
   // 3.0 of votes: couch 0.3 (one confusion, 10 %), bench 0.9 (30 %).
   chair.label_scores = {{"chair", 1.8}, {"couch", 0.3}, {"bench", 0.9}};
-  chair.observed_box =
-      Eigen::AlignedBox3d(Eigen::Vector3d(-0.5, -0.5, 0.0), Eigen::Vector3d(0.5, 0.5, 1.0));
+  chair.position = {0.0, 0.0, 0.5};  // the fused box: [-0.5, 0.5] x [-0.5, 0.5] x [0, 1]
+  chair.size = {1.0, 1.0, 1.0};
   return chair;
 }
 

@@ -16,10 +16,6 @@ void Normalize(std::vector<float>& v) {
   for (float& x : v) x = static_cast<float>(x / norm);
 }
 
-Eigen::AlignedBox3d BoxOf(const Eigen::Vector3d& centre, const Eigen::Vector3d& size) {
-  return {centre - 0.5 * size, centre + 0.5 * size};
-}
-
 }  // namespace
 
 double Cosine(const std::vector<float>& a, const std::vector<float>& b) {
@@ -65,7 +61,6 @@ SceneObject* SceneGraph::Match(const ObjectObservation& observation) {
 }
 
 void SceneGraph::Merge(SceneObject& object, const ObjectObservation& observation) {
-  object.observed_box.extend(BoxOf(observation.position, observation.size));
   const double w = config_.ema_new_weight;
   object.position = w * observation.position + (1.0 - w) * object.position;
   object.size = w * observation.size + (1.0 - w) * object.size;
@@ -124,7 +119,6 @@ std::vector<SceneObject> SceneGraph::Integrate(
       fresh.label_scores[observation.label] = observation.score;
       fresh.position = observation.position;
       fresh.size = observation.size;
-      fresh.observed_box = BoxOf(observation.position, observation.size);
       fresh.embedding = observation.embedding;
       Normalize(fresh.embedding);
       fresh.score = observation.score;
@@ -202,10 +196,7 @@ void SceneGraph::Replace(std::vector<SceneObject> objects, uint64_t next_id) {
   for (const SceneObject& o : objects_) removals_.push_back({revision_ + 1, o.id});
   ++revision_;
   objects_ = std::move(objects);
-  for (SceneObject& o : objects_) {
-    o.revision = revision_;
-    if (o.observed_box.isEmpty()) o.observed_box = BoxOf(o.position, o.size);
-  }
+  for (SceneObject& o : objects_) o.revision = revision_;
   next_id_ = next_id;
   Rebuild();
 }

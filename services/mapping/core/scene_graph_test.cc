@@ -105,27 +105,6 @@ TEST(SceneGraphTest, PrunesInstancesSeenOnceAndReportsRemoval) {
   EXPECT_TRUE(delta->upserted_ids.empty());
 }
 
-// The observed box is the union of the merged observations' boxes, not the averaged one: the
-// points of every detection lie in it (hand-checked: 0.5 m cubes at x = 0 and x = 1).
-TEST(SceneGraphTest, TheObservedBoxIsTheUnionOfTheObservations) {
-  SceneGraph graph{SceneGraphConfig{}};
-  graph.Integrate({Obs("chair", {0, 0, 0})}, 0);
-  graph.Integrate({Obs("chair", {1, 0, 0})}, 0);
-  ASSERT_EQ(graph.objects().size(), 1u);
-  const Eigen::AlignedBox3d& box = graph.objects()[0].observed_box;
-  EXPECT_TRUE(box.min().isApprox(Eigen::Vector3d(-0.25, -0.25, -0.25)));
-  EXPECT_TRUE(box.max().isApprox(Eigen::Vector3d(1.25, 0.25, 0.25)));
-  // A loaded instance (no observations yet) starts from its own box.
-  SceneObject loaded;
-  loaded.id = 7;
-  loaded.label = "sofa";
-  loaded.position = {2, 2, 0};
-  loaded.size = {2, 1, 1};
-  graph.Replace({loaded}, 8);
-  EXPECT_TRUE(graph.objects()[0].observed_box.min().isApprox(Eigen::Vector3d(1, 1.5, -0.5)));
-  EXPECT_TRUE(graph.objects()[0].observed_box.max().isApprox(Eigen::Vector3d(3, 2.5, 0.5)));
-}
-
 SceneObject Object(uint64_t id, const std::string& label, Eigen::Vector3d position,
                    Eigen::Vector3d size = Eigen::Vector3d::Zero()) {
   SceneObject o;

@@ -43,10 +43,6 @@ struct SceneObject {
   // landmark maps leave it out for good (not saved with the map: a loaded map's landmarks come
   // from its .lmap file, written without such instances).
   bool pose_untrusted = false;
-  // The union of its observations' boxes (position +- size / 2): where the labelled points of
-  // its detections lie (SemanticMapConfig::instance_support_margin_m). Not saved: a loaded
-  // instance starts from its own box.
-  Eigen::AlignedBox3d observed_box;
 };
 
 enum class RelationKind { kNear, kLeftOf, kRightOf, kInFrontOf, kBehind, kOn, kAbove };

@@ -34,7 +34,7 @@ struct SemanticMapConfig {
   double prune_growth = 2.0;
   int prune_min_points = 4096;
   // A labelled point lives as long as a scene-graph instance carrying its label (in its label
-  // scores) holds it within its box grown by this margin: the points of an instance the scene
+  // scores) holds it within its fused box grown by this margin: the points of an instance the scene
   // graph removed (a false detection, one the detector keeps missing) go with it. Without this
   // every false detection's patch stayed for good, and the fleet bench's mapping RSS kept
   // growing after its scene graph had settled (docs/performance.md). Negative = keep all points.
