@@ -5,6 +5,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include "absl/strings/str_cat.h"
 #include "services/common/config/config_reader.h"
@@ -13,12 +14,23 @@
 namespace semnav::launcher {
 namespace {
 
-// Writes a service's inline settings where its binary can read them as a config file.
-absl::StatusOr<std::string> WriteSettings(const std::string& name, const std::string& yaml) {
-  // A fresh folder each time, so two stacks read by one process never share files.
+// A fresh folder for one parse's inline settings, so two stacks read by one process never
+// share files; removed with the last copy of the config that holds it.
+std::shared_ptr<const std::filesystem::path> NewSettingsFolder() {
   static std::atomic<int> parses{0};
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    absl::StrCat("semnav-stack-", ::getpid(), "-", parses++);
+  return std::shared_ptr<const std::filesystem::path>(
+      new std::filesystem::path(std::filesystem::temp_directory_path() /
+                                absl::StrCat("semnav-stack-", ::getpid(), "-", parses++)),
+      [](const std::filesystem::path* dir) {
+        std::error_code ignored;
+        std::filesystem::remove_all(*dir, ignored);
+        delete dir;
+      });
+}
+
+// Writes a service's inline settings where its binary can read them as a config file.
+absl::StatusOr<std::string> WriteSettings(const std::filesystem::path& dir, const std::string& name,
+                                          const std::string& yaml) {
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   const std::filesystem::path path = dir / (name + ".yaml");
@@ -78,7 +90,8 @@ absl::StatusOr<StackConfig> ParseStack(ConfigReader& root, const std::filesystem
       service.config = (base / service.config).lexically_normal().string();
     }
     if (!settings.empty() && service.config.empty()) {
-      absl::StatusOr<std::string> path = WriteSettings(name, settings);
+      if (stack.settings_folder == nullptr) stack.settings_folder = NewSettingsFolder();
+      absl::StatusOr<std::string> path = WriteSettings(*stack.settings_folder, name, settings);
       if (!path.ok()) return path.status();
       service.config = *path;
     }

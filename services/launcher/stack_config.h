@@ -1,5 +1,7 @@
 #pragma once
 
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +48,9 @@ struct StackConfig {
   RestartPolicy restart;
   DashboardConfig dashboard;
   SimRobotConfig sim_robot;
+  // Where the services' inline settings were written (see LoadStackConfig); the folder is
+  // removed with the last copy of this config. nullptr when no service has inline settings.
+  std::shared_ptr<const std::filesystem::path> settings_folder;
 
   // The listen address of the service named `name`, or "" when the stack has none.
   std::string AddressOf(const std::string& name) const;
@@ -60,7 +65,8 @@ struct StackConfig {
 
 // The stack from a YAML file (see deploy/local.yaml); relative config paths resolve against
 // the file's folder. A service's inline `settings:` (its config file's content) is written
-// to <TMPDIR>/semnav-stack-<pid>-<n>/<name>.yaml and handed over as its config.
+// to <TMPDIR>/semnav-stack-<pid>-<n>/<name>.yaml and handed over as its config; the folder
+// lives as long as the returned config (or a copy of it).
 absl::StatusOr<StackConfig> LoadStackConfig(const std::string& path);
 // The embedded default: deploy/local.yaml's content, compiled in at build time.
 StackConfig DefaultStackConfig();

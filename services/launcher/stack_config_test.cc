@@ -2,11 +2,13 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "absl/strings/str_cat.h"
 #include "services/common/config/config_reader.h"
 
 namespace semnav::launcher {
@@ -60,6 +62,31 @@ TEST(StackConfigTest, InlineSettingsBecomeTheServiceConfigFile) {
   std::string address;
   written->Child("gateway").Child("mapping").Read("address", &address);
   EXPECT_EQ(address, "h:2");
+}
+
+TEST(StackConfigTest, TheSettingsFolderLivesAsLongAsTheConfig) {
+  // Every parse used to leave a folder behind: the config fuzzer's ctest run left 1,668.
+  const auto path = std::filesystem::temp_directory_path() / "semnav_stack_folder.yaml";
+  std::ofstream(path) << "services:\n  gateway:\n    binary: semnav-gateway\n    listen: "
+                         "'127.0.0.1:1'\n    settings: {gateway: {}}\n";
+  std::filesystem::path folder;
+  {
+    absl::StatusOr<StackConfig> stack = LoadStackConfig(path.string());
+    ASSERT_TRUE(stack.ok()) << stack.status();
+    const StackConfig copy = *stack;
+    stack = absl::UnknownError("the first config is gone");
+    folder = std::filesystem::path(copy.services[0].config).parent_path();
+    EXPECT_TRUE(std::filesystem::exists(copy.services[0].config));  // the copy holds it
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder));
+  // A refused stack leaves nothing either: no folder of this process is left.
+  std::ofstream(path) << "services:\n  gateway:\n    binary: semnav-gateway\n    listen: "
+                         "'127.0.0.1:1'\n    settings: {gateway: {}}\n    bogus: 1\n";
+  EXPECT_FALSE(LoadStackConfig(path.string()).ok());
+  const std::string ours = absl::StrCat("semnav-stack-", ::getpid(), "-");
+  for (const auto& entry : std::filesystem::directory_iterator(folder.parent_path())) {
+    EXPECT_FALSE(entry.path().filename().string().starts_with(ours)) << entry.path();
+  }
 }
 
 TEST(StackConfigTest, ConfigFileAndInlineSettingsTogetherAreRefused) {
