@@ -7,11 +7,18 @@
 namespace semnav::planning {
 
 std::vector<double> OctileDistanceField(const PassabilityGrid& grid, Cell from) {
+  return OctileDistanceField(grid, std::vector<DistanceSource>{{from, 0.0}});
+}
+
+std::vector<double> OctileDistanceField(const PassabilityGrid& grid,
+                                        const std::vector<DistanceSource>& sources) {
   std::vector<double> distance(grid.size(), kUnreachable);
-  if (!IsFree(grid, from.x, from.y)) return distance;
   SearchWorkspace workspace;
   workspace.Reset(grid.size());
-  workspace.Relax(grid.Index(from), 0.0, 0.0, -1);
+  for (const DistanceSource& source : sources) {
+    if (!IsFree(grid, source.cell.x, source.cell.y)) continue;
+    workspace.Relax(grid.Index(source.cell), source.distance, source.distance, -1);
+  }
   int current = 0;
   while (workspace.PopBest(&current)) {
     distance[current] = workspace.g(current);

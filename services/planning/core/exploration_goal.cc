@@ -59,6 +59,16 @@ std::optional<std::pair<Cell, int>> KeptFrontierCell(const FrontierSet& set,
   return kept;
 }
 
+// A frontier strategy's goal cell as the cell the robot stands on to reach it (a footprint is
+// given), else that of its frontier's cell nearest by path; the cell itself for a point robot.
+ExplorationChoice Standing(const FrontierSet& set, ExplorationChoice choice, int frontier) {
+  if (!set.reach.has_value()) return choice;
+  std::optional<Cell> stand = set.reach->StandFor(choice.goal);
+  if (!stand) stand = set.reach->StandFor(set.nearest_cells[frontier]);
+  if (stand) choice.goal = *stand;
+  return choice;
+}
+
 absl::Status NotFound(absl::string_view message) {
   return FieldStatus(absl::StatusCode::kNotFound, "", message, "NO_EXPLORATION_GOAL");
 }
@@ -73,7 +83,15 @@ FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery
     set.frontiers = WithoutExcludedCells(std::move(set.frontiers), grid, query.excluded,
                                          query.min_frontier_cells);
   }
-  set.path_cells = OctileDistanceField(grid.free, query.robot);
+  if (grid.footprint.has_value()) {
+    set.reach.emplace(grid.free, query.robot, *grid.footprint);
+    set.path_cells = set.reach->field();
+    for (const Frontier& f : set.frontiers) {
+      for (const Cell& c : f.cells) set.path_cells[grid.free.Index(c)] = set.reach->Distance(c);
+    }
+  } else {
+    set.path_cells = OctileDistanceField(grid.free, query.robot);
+  }
   const std::vector<double>& distance = set.path_cells;
   for (const Frontier& f : set.frontiers) {
     double nearest = kUnreachable;
@@ -119,8 +137,9 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
     }
     case ExplorationStrategy::kSemanticFrontier: {
       const FrontierSet set = CollectFrontiers(grid, query, config.score);
-      if (const auto kept = KeptFrontierCell(set, grid, query))
-        return ExplorationChoice{kept->first, set.scores[kept->second].total, {}};
+      if (const auto kept = KeptFrontierCell(set, grid, query)) {
+        return Standing(set, {kept->first, set.scores[kept->second].total, {}}, kept->second);
+      }
       std::optional<int> best;
       double score = 0.0;
       if (config.value.enabled) {
@@ -132,7 +151,7 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
       } else if (DiscountApplies(config.discount, query.platform)) {
         best = SelectDiscountedFrontier(set.candidates, set.scores, config.discount);
         if (!best) return NotFound("no reachable frontier");
-        return ExplorationChoice{set.nearest_cells[*best], set.scores[*best].total, {}};
+        return Standing(set, {set.nearest_cells[*best], set.scores[*best].total, {}}, *best);
       } else {
         for (size_t i = 0; i < set.scores.size(); ++i) {
           if (set.candidates[i].path_distance_m < 0) continue;
@@ -141,7 +160,7 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
         if (best) score = set.scores[*best].total;
       }
       if (!best) return NotFound("no reachable frontier");
-      return ExplorationChoice{set.frontiers[*best].anchor, score, {}};
+      return Standing(set, {set.frontiers[*best].anchor, score, {}}, *best);
     }
     case ExplorationStrategy::kEroiUtility: {
       const int count = EroiCount(grid.explored.width(), grid.explored.height(), config.eroi);
@@ -177,12 +196,15 @@ absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& g
       break;
   }
   const FrontierSet set = CollectFrontiers(grid, query, config.score);
-  if (const auto kept = KeptFrontierCell(set, grid, query))
-    return ExplorationChoice{kept->first, set.candidates[kept->second].path_distance_m, {}};
+  if (const auto kept = KeptFrontierCell(set, grid, query)) {
+    return Standing(set, {kept->first, set.candidates[kept->second].path_distance_m, {}},
+                    kept->second);
+  }
   const std::optional<NearestFrontier> nearest =
       SelectNearestFrontier(set.frontiers, grid.free, set.path_cells);
   if (!nearest) return NotFound("no reachable frontier");
-  return ExplorationChoice{nearest->cell, nearest->distance_cells * grid.resolution_m, {}};
+  return Standing(set, {nearest->cell, nearest->distance_cells * grid.resolution_m, {}},
+                  nearest->frontier);
 }
 
 }  // namespace semnav::planning

@@ -8,6 +8,7 @@
 #include "services/planning/core/cell_grid.h"
 #include "services/planning/core/coverage_goal.h"
 #include "services/planning/core/eroi_utility.h"
+#include "services/planning/core/footprint_reach.h"
 #include "services/planning/core/frontier.h"
 #include "services/planning/core/frontier_scoring.h"
 #include "services/planning/core/frontier_value.h"
@@ -24,6 +25,9 @@ struct ExplorationGrid {
   double origin_y = 0.0;
   CellGrid<uint8_t> explored;  // 1 observed
   PassabilityGrid free;        // unknown counts as blocked
+  // A ground robot's footprint: the frontier strategies reach frontiers as its planner does and
+  // answer the cell it stands on (footprint_reach.h); unset = a point robot on `free`.
+  std::optional<FootprintReachConfig> footprint;
   Point2 CentreOf(Cell c) const {
     return {origin_x + (c.x + 0.5) * resolution_m, origin_y + (c.y + 0.5) * resolution_m};
   }
@@ -67,8 +71,11 @@ struct FrontierSet {
   std::vector<Frontier> frontiers;
   std::vector<FrontierCandidate> candidates;  // metres, path distances (-1 unreachable)
   std::vector<Cell> nearest_cells;            // each frontier's cell nearest by path
-  std::vector<double> path_cells;     // octile path distance from the robot to every cell (cells)
-  std::vector<FrontierScore> scores;  // seed 002
+  // Octile path distance from the robot to every cell (cells); with a footprint, to where the
+  // robot stands to reach each frontier cell.
+  std::vector<double> path_cells;
+  std::vector<FrontierScore> scores;    // seed 002
+  std::optional<FootprintReach> reach;  // set with the grid's footprint
 };
 
 FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery& query,
@@ -87,7 +94,8 @@ struct ExplorationChoice {
 // total; EROI_UTILITY is seed 000's utility. NOT_FOUND with reason NO_EXPLORATION_GOAL when
 // nothing is reachable. NEAREST_FRONTIER and SEMANTIC_FRONTIER keep query.keep_goal's frontier
 // while it is open. INVALID_ARGUMENT naming eroi_semantic_values when their count does not
-// match the grid.
+// match the grid. With the grid's footprint, the frontier strategies answer the cell the robot
+// stands on to reach their frontier cell.
 absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,
                                                         const ExplorationQuery& query,
                                                         ExplorationStrategy strategy,

@@ -139,6 +139,20 @@ struct GoalFilter {
   bool empty() const { return exclusions.goals.empty() && !bounds.area.has_value(); }
 };
 
+// Footprint radius and clearance limit, metres (a robot wider than 10 m is no ground robot).
+constexpr double kMaxFootprintM = 5.0;
+
+// A ground robot's footprint in cells: reached within twice the radius plus one cell, a start
+// inside the inflation snapped as GridPlanner snaps it.
+FootprintReachConfig FootprintOf(const pb::SelectExplorationGoalRequest& request,
+                                 const PlanningConfig& config, double resolution) {
+  const double radius_cells = request.robot_radius_m() / resolution;
+  return {.radius_cells = radius_cells,
+          .reach_cells = 2.0 * radius_cells + 1.0,
+          .start_snap_cells = config.grid_planner.start_snap_radius_m / resolution,
+          .clear_radius_cells = (request.robot_radius_m() + request.clearance_m()) / resolution};
+}
+
 // The checked request pieces as the core's grid and query.
 absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& field,
                                        const semnav::common::v1::Pose2D& robot, uint32_t min_cells,
@@ -335,6 +349,14 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   if (absl::Status s = CheckRange(request.keep_radius_m(), "keep_radius_m", 0.0, 50.0); !s.ok()) {
     return s;
   }
+  if (absl::Status s = CheckRange(request.robot_radius_m(), "robot_radius_m", 0.0, kMaxFootprintM);
+      !s.ok()) {
+    return s;
+  }
+  if (absl::Status s = CheckRange(request.clearance_m(), "clearance_m", 0.0, kMaxFootprintM);
+      !s.ok()) {
+    return s;
+  }
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};
@@ -346,6 +368,9 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   view->query.platform = FromProto(request.platform());
   if (request.has_keep_goal()) view->query.keep_goal = ToPoint(request.keep_goal());
   if (request.keep_radius_m() > 0.0) view->query.keep_radius_m = request.keep_radius_m();
+  if (request.robot_radius_m() > 0.0) {
+    view->grid.footprint = FootprintOf(request, config, view->frame.resolution);
+  }
   view->query.eroi_values.assign(request.eroi_semantic_values().begin(),
                                  request.eroi_semantic_values().end());
   ExplorationGoalConfig goal_config = config.exploration.GoalConfig(view->frame.resolution);

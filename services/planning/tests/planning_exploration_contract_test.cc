@@ -188,6 +188,38 @@ TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
   EXPECT_DOUBLE_EQ(response.score(), 3.0);
 }
 
+TEST_F(ExplorationContract, AGroundRobotsGoalIsWhereItsFootprintStands) {
+  // A 1 m footprint inflates the structure and the unknown by one cell: the nearest frontier
+  // cell (0,3) borders the unknown at (0,4), so the robot stands at (0,2), 2 cells up, and
+  // reaches it from there (score 3, as before).
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
+  request.set_robot_radius_m(1.0);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(Stub()->SelectExplorationGoal(&context, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(0, 2).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(0, 2).y());
+  EXPECT_DOUBLE_EQ(response.score(), 3.0);
+  // PlanPath with that footprint reaches the answer as given.
+  pb::PlanPathRequest plan;
+  *plan.mutable_source()->mutable_grid() = ExplorationGrid();
+  *plan.mutable_start() = CellCentre(0, 0);
+  *plan.mutable_goal() = response.goal();
+  plan.set_robot_radius_m(1.0);
+  pb::PlanPathResponse path;
+  grpc::ClientContext plan_context;
+  ASSERT_TRUE(Stub()->PlanPath(&plan_context, plan, &path).ok());
+  EXPECT_FALSE(path.goal_adjusted());
+  // A radius that is not a finite number in [0, 5] m is refused by name.
+  for (const double bad : {-1.0, 6.0, std::nan("")}) {
+    request.set_robot_radius_m(bad);
+    grpc::ClientContext bad_context;
+    const grpc::Status status = Stub()->SelectExplorationGoal(&bad_context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("robot_radius_m"), std::string::npos);
+  }
+}
+
 TEST_F(ExplorationContract, ExcludedGoalsRemoveTheirFrontierCells) {
   // The left cluster's nearest cell (0,3) was spent; a 1.2 m radius removes (0,3) and (1,3).
   pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);

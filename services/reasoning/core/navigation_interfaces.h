@@ -49,6 +49,10 @@ struct ExplorationQuery {
   std::optional<Eigen::Vector3d> keep_goal;
   double keep_radius_m = 0.0;   // 0 = planning's 1 m
   int live_map_max_age_ms = 0;  // as PathQuery's
+  // A ground robot's footprint and path clearance, as PathQuery's: planning answers a cell the
+  // footprint stands on, reached as PlanPath reaches it. 0 = a point robot (a frontier cell).
+  double robot_radius_m = 0.0;
+  double clearance_m = 0.0;
 };
 
 // A dependency of the planner ("planning", or "mapping" behind it) is unreachable or timed out:

@@ -133,15 +133,17 @@ std::vector<RobotCommand> TaskExecutor::Navigate(double now, const Eigen::Vector
   return {command};
 }
 
+double TaskExecutor::PathClearance() const {
+  // After a block the path keeps more clearance (re-plan with inflated costs).
+  return (config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0) + extra_clearance_m_;
+}
+
 absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(
     const Eigen::Vector3d& goal, const std::optional<Eigen::Vector3d>& reach_target) {
   if ((goal - pose_.position).head<2>().norm() < 1e-6)
     return std::vector<Eigen::Vector3d>{};  // turn in place
-  // After a block the path keeps more clearance (re-plan with inflated costs).
-  const double clearance =
-      (config_.robot_radius_m > 0.0 ? config_.path_clearance_m : 0.0) + extra_clearance_m_;
-  PathQuery query{pose_.position,         goal,      config_.multi_modal,
-                  config_.robot_radius_m, clearance, std::nullopt};
+  PathQuery query{pose_.position,  goal,        config_.multi_modal, config_.robot_radius_m,
+                  PathClearance(), std::nullopt};
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
   if (reach_target.has_value() &&
       (absl::IsFailedPrecondition(path.status()) || absl::IsNotFound(path.status()))) {
@@ -456,12 +458,19 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
 
 ExplorationQuery TaskExecutor::ExplorationRequest(
     const std::optional<Eigen::Vector3d>& keep_goal) const {
-  return {pose_,
-          spent_explore_goals_,
-          config_.explore_exclusion_radius_m,
-          config_.platform,
-          keep_goal,
-          keep_goal.has_value() ? config_.explore_keep_radius_m : 0.0};
+  ExplorationQuery query{pose_,
+                         spent_explore_goals_,
+                         config_.explore_exclusion_radius_m,
+                         config_.platform,
+                         keep_goal,
+                         keep_goal.has_value() ? config_.explore_keep_radius_m : 0.0};
+  // A rolling robot's goal is a cell its footprint stands on, so the path to it is planned at
+  // the first try; a multi-modal one flies over what blocks the footprint.
+  if (config_.explore_with_footprint && !config_.multi_modal) {
+    query.robot_radius_m = config_.robot_radius_m;
+    query.clearance_m = PathClearance();
+  }
+  return query;
 }
 
 bool TaskExecutor::LeadsAway(const absl::StatusOr<std::vector<Eigen::Vector3d>>& path,

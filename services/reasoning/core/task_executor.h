@@ -69,9 +69,13 @@ struct ExecutorConfig {
   double explore_keep_radius_m = 1.0;
   double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
   double min_explore_step_m = 0.5;  // an exploration goal whose path ends closer is spent unvisited
-  bool model_available = false;     // offer slow-path model requests
-  int grounding_max_objects = 15;   // ESCA budget of a slow-path request
-  bool multi_modal = false;         // the robot can fly-roll: plan multi-modal paths
+  // A rolling robot's exploration goals are cells its footprint stands on, reached with it
+  // (SelectExplorationGoalRequest.robot_radius_m). Off: measured, it did not settle the fleet's
+  // command tail and found fewer SEMANTIC_FRONTIER targets (docs/performance/mission.md).
+  bool explore_with_footprint = false;
+  bool model_available = false;    // offer slow-path model requests
+  int grounding_max_objects = 15;  // ESCA budget of a slow-path request
+  bool multi_modal = false;        // the robot can fly-roll: plan multi-modal paths
   RobotPlatform platform = RobotPlatform::kUnspecified;  // told to planning's exploration
   double robot_radius_m = 0.0;  // the robot's footprint radius for path planning
   // Paths keep this much more than the footprint from mapped obstacles (Nav2 inflates beyond the
@@ -343,6 +347,8 @@ class TaskExecutor {
   // The exploration request from here, with the spent goals and the goal to keep (none: the
   // strategy's best).
   ExplorationQuery ExplorationRequest(const std::optional<Eigen::Vector3d>& keep_goal) const;
+  // The clearance PlanPath asks for beyond the footprint.
+  double PathClearance() const;
   // The path to an exploration goal takes the robot at least min_explore_step_m away (an empty
   // path: the robot plans locally to the goal).
   bool LeadsAway(const absl::StatusOr<std::vector<Eigen::Vector3d>>& path,

@@ -281,6 +281,30 @@ TEST_F(GatewayTaskExecutorTest, ApproachWithNothingFreeWithinReachTakesTheLineOf
   EXPECT_DOUBLE_EQ(planner_.queries[2].goal_tolerance_m, 0.0);
 }
 
+TEST_F(GatewayTaskExecutorTest, ExplorationSendsTheFootprintOnlyWhenAsked) {
+  // Rolling robot of radius 0.3 m with the default 0.1 m path clearance.
+  for (const bool footprint : {false, true}) {
+    planner_.frontiers = {Eigen::Vector3d(10, 0, 0)};
+    ExecutorConfig config;
+    config.robot_radius_m = 0.3;
+    config.explore_with_footprint = footprint;
+    TaskExecutor task = Make(FindTarget(), config);
+    task.Start(0, At(0));
+    ASSERT_FALSE(planner_.exploration_queries.empty());
+    EXPECT_DOUBLE_EQ(planner_.exploration_queries.back().robot_radius_m, footprint ? 0.3 : 0.0);
+    EXPECT_DOUBLE_EQ(planner_.exploration_queries.back().clearance_m, footprint ? 0.1 : 0.0);
+  }
+  // A multi-modal robot flies over what blocks its footprint: none is sent.
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0)};
+  ExecutorConfig config;
+  config.robot_radius_m = 0.3;
+  config.explore_with_footprint = true;
+  config.multi_modal = true;
+  TaskExecutor task = Make(FindTarget(), config);
+  task.Start(0, At(0));
+  EXPECT_DOUBLE_EQ(planner_.exploration_queries.back().robot_radius_m, 0.0);
+}
+
 TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppears) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
   ExecutorConfig config;

@@ -62,6 +62,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
       .Read("explore_reselect_s", &c.executor.explore_reselect_s)
       .Read("explore_keep_radius_m", &c.executor.explore_keep_radius_m)
+      .Read("explore_with_footprint", &c.executor.explore_with_footprint)
       .Read("grounding_max_objects", &c.executor.grounding_max_objects)
       .Read("dependency_retry_s", &c.executor.dependency_retry_s)
       .Read("dependency_timeout_s", &c.executor.dependency_timeout_s)
