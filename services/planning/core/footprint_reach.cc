@@ -9,8 +9,7 @@ namespace semnav::planning {
 
 FootprintReach::FootprintReach(const PassabilityGrid& free, Cell robot,
                                const FootprintReachConfig& config)
-    : config_(config),
-      inflated_(InflateObstacles(free, config.radius_cells)),
+    : inflated_(InflateObstacles(free, config.radius_cells)),
       reach_disc_(DiscOffsets(config.reach_cells)) {
   clear_ = config.clear_radius_cells > config.radius_cells
                ? InflateObstacles(free, config.clear_radius_cells)

@@ -48,7 +48,6 @@ class FootprintReach {
   };
   Stand Best(Cell c) const;
 
-  FootprintReachConfig config_;
   PassabilityGrid inflated_;
   PassabilityGrid clear_;  // preferred stands (the inflated grid when no preference)
   std::vector<double> field_;

@@ -143,7 +143,7 @@ struct GoalFilter {
 constexpr double kMaxFootprintM = 5.0;
 
 // A ground robot's footprint in cells: reached within twice the radius plus one cell, a start
-// inside the inflation snapped as GridPlanner snaps it.
+// the inflation blocks or boxes in left through GridPlanner's snap radius.
 FootprintReachConfig FootprintOf(const pb::SelectExplorationGoalRequest& request,
                                  const PlanningConfig& config, double resolution) {
   const double radius_cells = request.robot_radius_m() / resolution;
