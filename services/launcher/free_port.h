@@ -4,8 +4,10 @@
 
 namespace semnav::launcher {
 
-// A loopback TCP port the kernel reports free right now. Another process may still take it
-// before a service binds; that service's start then fails loudly.
+// A loopback TCP port free right now, picked at random below the kernel's ephemeral range (so
+// no outgoing connection takes it meanwhile; the kernel's own pick when that range leaves no
+// room). Another process may still take it before a service binds; that service's start then
+// fails loudly.
 absl::StatusOr<int> FreeLoopbackPort();
 
 }  // namespace semnav::launcher
