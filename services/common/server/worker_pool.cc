@@ -1,9 +1,31 @@
 #include "services/common/server/worker_pool.h"
 
-namespace semnav {
+#include <sys/resource.h>
+#include <unistd.h>
 
-WorkerPool::WorkerPool(int threads) {
-  for (int i = 0; i < threads; ++i) threads_.emplace_back([this] { Run(); });
+#include <algorithm>
+
+namespace semnav {
+namespace {
+
+void LowerThisThreadsPriority(int nice_increment) {
+  if (nice_increment <= 0) return;
+  const pid_t thread = gettid();
+  const int current = getpriority(PRIO_PROCESS, static_cast<id_t>(thread));
+  // Raising nice needs no privilege; a failure leaves the thread at its priority.
+  (void)setpriority(PRIO_PROCESS, static_cast<id_t>(thread),
+                    std::min(19, current + nice_increment));
+}
+
+}  // namespace
+
+WorkerPool::WorkerPool(int threads, int nice_increment) {
+  for (int i = 0; i < threads; ++i) {
+    threads_.emplace_back([this, nice_increment] {
+      LowerThisThreadsPriority(nice_increment);
+      Run();
+    });
+  }
 }
 
 WorkerPool::~WorkerPool() { Shutdown(); }

@@ -12,7 +12,9 @@ namespace semnav {
 
 class WorkerPool {
  public:
-  explicit WorkerPool(int threads);
+  // `nice_increment` > 0 lowers the threads' scheduling priority (Linux nice is per thread, and
+  // threads they start inherit it): background work yields the CPU to latency-bound calls.
+  explicit WorkerPool(int threads, int nice_increment = 0);
   ~WorkerPool();  // Shutdown()
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;

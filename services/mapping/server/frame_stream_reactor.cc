@@ -8,7 +8,8 @@
 
 namespace semnav::mapping {
 
-FrameStreamReactor::FrameStreamReactor(MappingEngine& engine) : engine_(engine) {
+FrameStreamReactor::FrameStreamReactor(MappingEngine& engine, WorkerPool& integration)
+    : engine_(engine), integration_(integration) {
   StartRead(&request_);
 }
 
@@ -17,6 +18,13 @@ void FrameStreamReactor::OnReadDone(bool ok) {
     Finish(grpc::Status::OK);
     return;
   }
+  // No operation is outstanding until Integrate writes, so the reactor lives until then.
+  if (!integration_.Submit([this] { Integrate(); })) {
+    Finish(grpc::Status(grpc::StatusCode::UNAVAILABLE, "the mapping service is stopping"));
+  }
+}
+
+void FrameStreamReactor::Integrate() {
   response_.Clear();
   v1::FrameAck* ack = response_.mutable_ack();
   ack->set_sequence(sequence_++);

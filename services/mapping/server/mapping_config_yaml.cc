@@ -199,7 +199,9 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("occupancy_chunk_bytes", &config.occupancy_chunk_bytes)
       .Read("max_window_cells", &config.window_limits.max_cells)
       .Read("max_abs_coordinate_m", &config.window_limits.max_abs_coordinate_m)
-      .Read("live_snapshot_interval_s", &config.live_snapshot_interval_s);
+      .Read("live_snapshot_interval_s", &config.live_snapshot_interval_s)
+      .Read("integration_threads", &config.integration_threads)
+      .Read("integration_nice", &config.integration_nice);
   section.Check(!config.store_directory.empty(), "store_directory", "must not be empty");
   section.Check(config.watch_min_interval_ms >= 10, "watch_min_interval_ms", "must be >= 10");
   section.Check(config.occupancy_chunk_bytes >= 1024 && config.occupancy_chunk_bytes <= (1 << 20),
@@ -209,6 +211,10 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
                 "live_snapshot_interval_s", "must be in [0, 3600]");
   section.Check(config.window_limits.max_abs_coordinate_m > 0, "max_abs_coordinate_m",
                 "must be > 0");
+  section.Check(config.integration_threads >= 1 && config.integration_threads <= 16,
+                "integration_threads", "must be in [1, 16]");
+  section.Check(config.integration_nice >= 0 && config.integration_nice <= 19, "integration_nice",
+                "must be in [0, 19]");
 
   ConfigReader landmarks = section.Child("landmarks");
   SceneLandmarkConfig& l = config.landmarks;

@@ -14,13 +14,17 @@ namespace semnav::mapping {
 // Service-level settings around the core pipeline.
 struct MappingServiceConfig {
   MappingConfig core;
-  std::string store_directory = "var/maps";    // map store (created if missing)
-  int watch_min_interval_ms = 200;             // grid/scene watch rate limit (floor for clients)
-  double query_min_cosine = 0.2;               // QueryObjects default when the request says 0
-  size_t idempotency_cache_size = 1024;        // remembered request_ids
-  int occupancy_chunk_bytes = 1 << 20;         // GetOccupancy DataChunk size (protocol max 1 MiB)
-  WindowLimits window_limits;                  // GetGridMap / WatchGridMap window bounds
-  double live_snapshot_interval_s = 5.0;       // crash-recovery snapshot of the live map; 0 = off
+  std::string store_directory = "var/maps";  // map store (created if missing)
+  int watch_min_interval_ms = 200;           // grid/scene watch rate limit (floor for clients)
+  double query_min_cosine = 0.2;             // QueryObjects default when the request says 0
+  size_t idempotency_cache_size = 1024;      // remembered request_ids
+  int occupancy_chunk_bytes = 1 << 20;       // GetOccupancy DataChunk size (protocol max 1 MiB)
+  WindowLimits window_limits;                // GetGridMap / WatchGridMap window bounds
+  double live_snapshot_interval_s = 5.0;     // crash-recovery snapshot of the live map; 0 = off
+  // Frames integrate on these threads, off gRPC's few callback threads (which then answer grid
+  // and scene reads at once), at a lower priority (nice) than the calls a command waits for.
+  int integration_threads = 2;
+  int integration_nice = 10;
   SceneLandmarkConfig landmarks;               // scene-graph instances -> relocalization landmarks
   LandmarkPublisherConfig landmark_publisher;  // where and how often they are pushed
 
@@ -49,6 +53,8 @@ struct MappingServiceConfig {
 //   occupancy_chunk_bytes [1048576, in 1024..1048576]
 //   max_window_cells [16777216]   max_abs_coordinate_m [100000]: grid-window request bounds
 //   live_snapshot_interval_s [5, 0 = off]: crash-recovery snapshot in <store_directory>/live
+//   integration_threads [2, in 1..16]   integration_nice [10, in 0..19]: the frame integration
+//   threads and how much lower than the service's own their scheduling priority is
 //   landmarks: {min_detections [3], labels [[]], embedding_dim [64], embedding_weight [0.5],
 //               live_map_id [live], interval_s [2], deadline_ms [2000],
 //               relocalization: {address [empty = no push], tls..., auth...}}: the landmark map

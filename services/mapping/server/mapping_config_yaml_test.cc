@@ -3,6 +3,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace semnav::mapping {
 namespace {
 
@@ -145,6 +149,29 @@ TEST(MappingConfigYamlTest, LandmarkSettingsAreCheckedWithTheirKeyPath) {
   const absl::Status status = MappingServiceConfig::FromYaml(section).status();
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.landmarks.live_map_id"));
+}
+
+TEST(MappingConfigYamlTest, IntegrationThreadsAndTheirPriorityAreReadAndBounded) {
+  absl::StatusOr<ConfigReader> root =
+      ConfigReader::FromString("mapping:\n  integration_threads: 3\n  integration_nice: 0\n");
+  ASSERT_TRUE(root.ok());
+  ConfigReader section = root->Child("mapping");
+  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->integration_threads, 3);
+  EXPECT_EQ(config->integration_nice, 0);
+  for (const auto& [yaml, key] : std::vector<std::pair<std::string, std::string>>{
+           {"mapping:\n  integration_threads: 0\n", "mapping.integration_threads"},
+           {"mapping:\n  integration_threads: 17\n", "mapping.integration_threads"},
+           {"mapping:\n  integration_nice: -1\n", "mapping.integration_nice"},
+           {"mapping:\n  integration_nice: 20\n", "mapping.integration_nice"}}) {
+    absl::StatusOr<ConfigReader> bad_root = ConfigReader::FromString(yaml);
+    ASSERT_TRUE(bad_root.ok());
+    ConfigReader bad_section = bad_root->Child("mapping");
+    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << yaml;
+    EXPECT_THAT(std::string(status.message()), HasSubstr(key));
+  }
 }
 
 }  // namespace

@@ -118,7 +118,8 @@ MappingServiceImpl::MappingServiceImpl(const MappingServiceConfig& config, MapSt
     : config_(config),
       store_(std::move(store)),
       engine_(config.core),
-      idempotency_(config.idempotency_cache_size) {}
+      idempotency_(config.idempotency_cache_size),
+      integration_(config.integration_threads, config.integration_nice) {}
 
 absl::Status MappingServiceImpl::StartLiveSnapshots() {
   if (config_.live_snapshot_interval_s <= 0) return absl::OkStatus();
@@ -166,7 +167,7 @@ grpc::Status MappingServiceImpl::Idempotent(const std::string& method,
 
 grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse>*
 MappingServiceImpl::StreamFrames(grpc::CallbackServerContext*) {
-  return new FrameStreamReactor(engine_);
+  return new FrameStreamReactor(engine_, integration_);
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::GetGridMap(grpc::CallbackServerContext* context,

@@ -7,6 +7,7 @@
 
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "services/common/idempotency/first_answer_cache.h"
+#include "services/common/server/worker_pool.h"
 #include "services/mapping/core/map_store.h"
 #include "services/mapping/core/mapping_engine.h"
 #include "services/mapping/landmarks/landmark_publisher.h"
@@ -87,6 +88,8 @@ class MappingServiceImpl final : public v1::MappingService::CallbackService {
   std::atomic<bool> stopping_{false};
   std::unique_ptr<LiveSnapshot> live_snapshot_;
   std::unique_ptr<LandmarkPublisher> landmark_publisher_;  // null without a relocalization service
+  // Last: destroyed first, so the frames it still holds integrate into a live engine.
+  WorkerPool integration_;
 };
 
 }  // namespace semnav::mapping
