@@ -32,6 +32,7 @@ void LiveGridCache::Put(const semnav::planning::v1::LiveMapGrid& live,
   auto same = std::find_if(entries_.begin(), entries_.end(),
                            [&](const Entry& e) { return e.window == window; });
   if (same != entries_.end()) {
+    same->refreshing = false;
     if (same->fetched_at > fetched_at) return;
     same->fetched_at = fetched_at;
     same->grid = std::move(grid);
@@ -43,6 +44,27 @@ void LiveGridCache::Put(const semnav::planning::v1::LiveMapGrid& live,
         [](const Entry& a, const Entry& b) { return a.fetched_at < b.fetched_at; }));
   }
   entries_.push_back(Entry{window, fetched_at, std::move(grid)});
+}
+
+bool LiveGridCache::ClaimRefresh(const semnav::planning::v1::LiveMapGrid& live, absl::Time now,
+                                 absl::Duration refresh_after) {
+  const Window window = WindowOf(live);
+  absl::MutexLock lock(&mu_);
+  for (Entry& entry : entries_) {
+    if (entry.window != window) continue;
+    if (entry.refreshing || now - entry.fetched_at <= refresh_after) return false;
+    entry.refreshing = true;
+    return true;
+  }
+  return false;
+}
+
+void LiveGridCache::EndRefresh(const semnav::planning::v1::LiveMapGrid& live) {
+  const Window window = WindowOf(live);
+  absl::MutexLock lock(&mu_);
+  for (Entry& entry : entries_) {
+    if (entry.window == window) entry.refreshing = false;
+  }
 }
 
 }  // namespace semnav::planning

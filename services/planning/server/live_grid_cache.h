@@ -28,6 +28,13 @@ class LiveGridCache {
   void Put(const semnav::planning::v1::LiveMapGrid& live,
            std::shared_ptr<const semnav::common::v1::GridMap> grid, absl::Time fetched_at)
       ABSL_LOCKS_EXCLUDED(mu_);
+  // Refresh ahead: true when `live`'s window keeps a grid fetched before now - refresh_after and
+  // no refresh of it is running; the caller then fetches it again off the call's path and ends
+  // with Put, or with EndRefresh when the fetch failed. Calls that accept the kept grid's age go
+  // on using it meanwhile, so a steady stream of calls never waits for a fetch.
+  bool ClaimRefresh(const semnav::planning::v1::LiveMapGrid& live, absl::Time now,
+                    absl::Duration refresh_after) ABSL_LOCKS_EXCLUDED(mu_);
+  void EndRefresh(const semnav::planning::v1::LiveMapGrid& live) ABSL_LOCKS_EXCLUDED(mu_);
 
  private:
   struct Window {
@@ -39,6 +46,7 @@ class LiveGridCache {
     Window window;
     absl::Time fetched_at;
     std::shared_ptr<const semnav::common::v1::GridMap> grid;
+    bool refreshing = false;  // ClaimRefresh answered true; Put or EndRefresh not yet called
   };
   static Window WindowOf(const semnav::planning::v1::LiveMapGrid& live);
 

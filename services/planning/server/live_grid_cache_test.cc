@@ -68,5 +68,26 @@ TEST(LiveGridCache, TheWindowFetchedLongestAgoGoesFirst) {
   EXPECT_EQ(Found(cache, Window(0.0, 3.0), now, absl::Seconds(1)), 3u);
 }
 
+TEST(LiveGridCache, ARefreshIsClaimedOnceAfterHalfTheAgeAndEndsWithPutOrEndRefresh) {
+  LiveGridCache cache;
+  const absl::Time t0 = absl::FromUnixSeconds(1000);
+  const LiveMapGrid whole;
+  const absl::Duration after = absl::Milliseconds(250);
+  EXPECT_FALSE(cache.ClaimRefresh(whole, t0, after));  // nothing kept: the call fetches itself
+  cache.Put(whole, GridOfRevision(7), t0);
+  EXPECT_FALSE(cache.ClaimRefresh(whole, t0 + absl::Milliseconds(250), after));  // still fresh
+  EXPECT_TRUE(cache.ClaimRefresh(whole, t0 + absl::Milliseconds(251), after));
+  EXPECT_FALSE(cache.ClaimRefresh(whole, t0 + absl::Milliseconds(300), after));  // one at a time
+  EXPECT_FALSE(cache.ClaimRefresh(Window(0.0, 5.0), t0 + absl::Milliseconds(300), after));
+  // Meanwhile calls still get the kept grid while they accept its age.
+  EXPECT_EQ(Found(cache, whole, t0 + absl::Milliseconds(300), absl::Milliseconds(500)), 7u);
+  cache.Put(whole, GridOfRevision(8), t0 + absl::Milliseconds(320));
+  EXPECT_EQ(Found(cache, whole, t0 + absl::Milliseconds(330), absl::Milliseconds(500)), 8u);
+  EXPECT_FALSE(cache.ClaimRefresh(whole, t0 + absl::Milliseconds(400), after));  // fresh again
+  EXPECT_TRUE(cache.ClaimRefresh(whole, t0 + absl::Milliseconds(600), after));
+  cache.EndRefresh(whole);  // the fetch failed: the next call may try again
+  EXPECT_TRUE(cache.ClaimRefresh(whole, t0 + absl::Milliseconds(610), after));
+}
+
 }  // namespace
 }  // namespace semnav::planning

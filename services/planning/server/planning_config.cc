@@ -79,11 +79,14 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromYaml(ConfigReader& section) {
 
   section.Read("max_planning_time_ms", &config.max_planning_time_ms)
       .Read("deadline_margin_ms", &config.deadline_margin_ms)
-      .Read("worker_threads", &config.worker_threads);
+      .Read("worker_threads", &config.worker_threads)
+      .Read("live_map_refresh_ahead", &config.live_map_refresh_ahead);
   section.Check(config.max_planning_time_ms > 0, "max_planning_time_ms", "must be > 0");
   section.Check(config.deadline_margin_ms >= 0, "deadline_margin_ms", "must be >= 0");
   section.Check(config.worker_threads >= 1 && config.worker_threads <= 64, "worker_threads",
                 "must be in 1..64");
+  section.Check(config.live_map_refresh_ahead >= 0.0 && config.live_map_refresh_ahead <= 1.0,
+                "live_map_refresh_ahead", "must be in [0, 1]");
   ConfigReader mapping = section.Child("mapping");
   config.mapping = ClientOptions::FromConfig(mapping, config.mapping);
   return config;

@@ -46,6 +46,10 @@ struct PlanningConfig {
   int deadline_margin_ms = 50;
   // worker_threads: searches run on this many threads, off the gRPC threads.
   int worker_threads = 2;
+  // live_map_refresh_ahead: a call that finds a kept live grid older than this share of its
+  // max_age_ms has it fetched again on a thread of its own, while this and later calls use the
+  // kept one; 0 = a grid is fetched only when a call finds none young enough.
+  double live_map_refresh_ahead = 0.5;
   // mapping: how to reach the mapping service for live-map requests.
   ClientOptions mapping = [] {
     ClientOptions options;

@@ -78,8 +78,8 @@ absl::Status CheckRequest(const pb::PlanPathRequest& request) {
 }
 
 absl::Status FetchLiveGrid(semnav::mapping::v1::MappingService::Stub& mapping,
-                           grpc::CallbackServerContext* context, const pb::LiveMapGrid& live,
-                           GridMap* grid) {
+                           std::chrono::system_clock::time_point deadline,
+                           const pb::LiveMapGrid& live, GridMap* grid) {
   semnav::mapping::v1::GetGridMapRequest fetch;
   // Only the layers grid_conversion reads: mapping then skips the semantic layer, most of a
   // GetGridMap's cost (callgrind, docs/performance/gateway.md).
@@ -97,7 +97,7 @@ absl::Status FetchLiveGrid(semnav::mapping::v1::MappingService::Stub& mapping,
     fetch.mutable_window()->mutable_max()->set_y(live.window_max().y());
   }
   grpc::ClientContext call;
-  call.set_deadline(context->deadline());
+  call.set_deadline(deadline);
   semnav::mapping::v1::GetGridMapResponse reply;
   const grpc::Status status = mapping.GetGridMap(&call, fetch, &reply);
   if (!status.ok()) {
@@ -121,7 +121,8 @@ PlanningServiceImpl::PlanningServiceImpl(PlanningConfig config,
       mapping_(semnav::mapping::v1::MappingService::NewStub(std::move(mapping))),
       jump_astar_(static_cast<size_t>(config_.jump_astar_cache_mb) << 20,
                   [this](std::function<void()> job) { (void)workers_.Submit(std::move(job)); }),
-      workers_(config_.worker_threads) {}
+      workers_(config_.worker_threads),
+      refresher_(1) {}
 
 grpc::ServerUnaryReactor* PlanningServiceImpl::Serve(grpc::CallbackServerContext* context,
                                                      std::function<absl::Status()> fn) {
@@ -198,12 +199,17 @@ absl::StatusOr<std::shared_ptr<const GridMap>> PlanningServiceImpl::ResolveGrid(
                        absl::StrCat("max_age_ms must be at most ", kMaxLiveGridAgeMs));
       }
       const absl::Time now = absl::Now();
-      if (std::shared_ptr<const GridMap> kept =
-              live_grids_.Find(live, now, absl::Milliseconds(live.max_age_ms()))) {
+      const absl::Duration max_age = absl::Milliseconds(live.max_age_ms());
+      if (std::shared_ptr<const GridMap> kept = live_grids_.Find(live, now, max_age)) {
+        if (config_.live_map_refresh_ahead > 0.0 &&
+            live_grids_.ClaimRefresh(live, now, max_age * config_.live_map_refresh_ahead)) {
+          RefreshAhead(live);
+        }
         return kept;
       }
       auto fetched = std::make_shared<GridMap>();
-      if (absl::Status s = FetchLiveGrid(*mapping_, context, live, fetched.get()); !s.ok()) {
+      if (absl::Status s = FetchLiveGrid(*mapping_, context->deadline(), live, fetched.get());
+          !s.ok()) {
         return s;
       }
       // Kept for later calls that accept its age, whatever this one asked.
@@ -213,6 +219,22 @@ absl::StatusOr<std::shared_ptr<const GridMap>> PlanningServiceImpl::ResolveGrid(
     default:
       return Invalid("source", "set source.grid (inline) or source.live_map");
   }
+}
+
+void PlanningServiceImpl::RefreshAhead(const pb::LiveMapGrid& live) {
+  const bool queued = refresher_.Submit([this, live] {
+    // A fetch the caller does not wait for: a deadline of its own, the same as a search's cap.
+    const auto deadline =
+        std::chrono::system_clock::now() + std::chrono::milliseconds(config_.max_planning_time_ms);
+    auto fetched = std::make_shared<GridMap>();
+    const absl::Time started = absl::Now();
+    if (FetchLiveGrid(*mapping_, deadline, live, fetched.get()).ok()) {
+      live_grids_.Put(live, std::move(fetched), started);
+    } else {
+      live_grids_.EndRefresh(live);  // the next call that needs a fetch makes it itself
+    }
+  });
+  if (!queued) live_grids_.EndRefresh(live);
 }
 
 absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,

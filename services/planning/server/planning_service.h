@@ -48,8 +48,11 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
       const semnav::planning::v1::SmoothTrajectoryRequest* request,
       semnav::planning::v1::SmoothTrajectoryResponse* response) override;
 
-  // Finishes queued searches and stops the workers.
-  void Shutdown() { workers_.Shutdown(); }
+  // Finishes queued searches and refreshes and stops their threads.
+  void Shutdown() {
+    refresher_.Shutdown();
+    workers_.Shutdown();
+  }
 
  private:
   absl::Status Plan(grpc::CallbackServerContext* context,
@@ -68,6 +71,8 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
   absl::StatusOr<std::shared_ptr<const semnav::common::v1::GridMap>> ResolveGrid(
       grpc::CallbackServerContext* context, const semnav::planning::v1::GridSource& source,
       std::string* field);
+  // Fetches `live`'s window again on refresher_ and keeps it (LiveGridCache::ClaimRefresh).
+  void RefreshAhead(const semnav::planning::v1::LiveMapGrid& live);
 
   const PlanningConfig config_;
   std::unique_ptr<semnav::mapping::v1::MappingService::Stub> mapping_;
@@ -76,6 +81,8 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
   // declared after it so it drains them before the cache goes.
   JumpAStarCache jump_astar_;
   semnav::WorkerPool workers_;
+  // Refreshes ahead (one thread: one fetch at a time); last, so it stops first.
+  semnav::WorkerPool refresher_;
 };
 
 }  // namespace semnav::planning

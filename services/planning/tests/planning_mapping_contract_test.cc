@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 
+#include "absl/time/clock.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/mapping/testing/frame_proto.h"
@@ -164,6 +165,41 @@ TEST_F(PlanningWithMapping, AGridOfAnAcceptedAgeIsTheOneFetchedBefore) {
   const uint64_t now = plan_revision(0);   // fetched again
   EXPECT_GT(now, first);
   EXPECT_EQ(plan_revision(10000), now);  // and the newer one is kept
+}
+
+// planning.live_map_refresh_ahead (0.5): a call that finds the kept grid older than half its
+// max_age_ms is answered from it and has it fetched again meanwhile, so a later call within the
+// same age gets mapping's newer grid without fetching it itself.
+TEST_F(PlanningWithMapping, AKeptGridPastHalfItsAgeIsFetchedAgainAhead) {
+  MapTheRoom("planning_mapping_refresh_ahead");
+  if (HasFatalFailure()) return;
+  constexpr uint32_t kMaxAgeMs = 4000;
+  auto plan_revision = [&](uint32_t max_age_ms) -> uint64_t {
+    pb::PlanPathRequest request;
+    request.mutable_source()->mutable_live_map()->set_max_age_ms(max_age_ms);
+    *request.mutable_start() = *start_;
+    *request.mutable_goal() = *goal_;
+    pb::PlanPathResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = planning_->PlanPath(&context, request, &response);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+    return response.map_revision();
+  };
+  const absl::Time fetched_by = absl::Now();
+  const uint64_t first = plan_revision(0);  // fetched now, and kept
+  StreamRoomTour(*mapping_, 2, &stamp_);
+  // Within half the age: the kept grid, and no refresh.
+  if (absl::Now() - fetched_by < absl::Milliseconds(kMaxAgeMs / 2)) {
+    EXPECT_EQ(plan_revision(kMaxAgeMs), first);
+  }
+  absl::SleepFor(fetched_by + absl::Milliseconds(kMaxAgeMs / 2 + 200) - absl::Now());
+  EXPECT_EQ(plan_revision(kMaxAgeMs), first);  // still young enough: answered from it at once
+  uint64_t later = first;
+  while (later == first && absl::Now() - fetched_by < absl::Milliseconds(kMaxAgeMs - 300)) {
+    absl::SleepFor(absl::Milliseconds(100));
+    later = plan_revision(kMaxAgeMs);
+  }
+  EXPECT_GT(later, first) << "the kept grid was not fetched again ahead of its age";
 }
 
 }  // namespace
