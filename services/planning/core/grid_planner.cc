@@ -82,11 +82,10 @@ Cell Shift(Cell c, int dx, int dy) { return {c.x + dx, c.y + dy}; }
 
 absl::StatusOr<GridPath> GridPlanner::Search(const PassabilityGrid& grid, Cell start, Cell goal,
                                              const GridPlanRequest& request) {
-  if (!clearance_cost_.empty()) {
-    absl::StatusOr<GridPath> path =
-        astar_.Plan(grid, start, goal, request.limits, &clearance_cost_);
+  if (clearance_cost_ != nullptr) {
+    absl::StatusOr<GridPath> path = astar_.Plan(grid, start, goal, request.limits, clearance_cost_);
     if (path.ok()) {
-      path->waypoints = ShortcutPath(grid, clearance_cost_, path->waypoints);
+      path->waypoints = ShortcutPath(grid, *clearance_cost_, path->waypoints);
       path->length_cells = PolylineLengthCells(path->waypoints);
     }
     return path;
@@ -151,6 +150,7 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& re
   // The robot stands there, so the strip between it and the map is taken as free; so is the
   // strip out to a goal beyond the map when outside counts as free.
   GridPlanRequest padded = request;
+  padded.prepared = nullptr;  // prepared for the grid before padding
   padded.free = Padded<uint8_t>(request.free, pad, 1);
   padded.obstacle_probability = Padded<uint8_t>(request.obstacle_probability, pad, 0);
   padded.start = Shift(request.start, pad.left, pad.bottom);
@@ -166,9 +166,29 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& re
   return result;
 }
 
+PreparedFootprint GridPlanner::Prepare(const PassabilityGrid& free, double resolution_m,
+                                       double robot_radius_m, bool keep_clearance) const {
+  PreparedFootprint prepared;
+  prepared.robot_radius_m = robot_radius_m;
+  prepared.with_clearance = keep_clearance;
+  prepared.inflated = InflateObstacles(free, robot_radius_m / resolution_m);
+  if (keep_clearance) {
+    prepared.clearance_cost = ClearanceCost(prepared.inflated, resolution_m, config_.clearance);
+  }
+  return prepared;
+}
+
 absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& original) {
-  const PassabilityGrid grid =
-      InflateObstacles(original.free, original.robot_radius_m / original.resolution_m);
+  std::shared_ptr<const PreparedFootprint> prepared = original.prepared;
+  const bool fits = prepared != nullptr && prepared->robot_radius_m == original.robot_radius_m &&
+                    prepared->with_clearance == original.keep_clearance &&
+                    prepared->inflated.width() == original.free.width() &&
+                    prepared->inflated.height() == original.free.height();
+  if (!fits) {
+    prepared = std::make_shared<const PreparedFootprint>(Prepare(
+        original.free, original.resolution_m, original.robot_radius_m, original.keep_clearance));
+  }
+  const PassabilityGrid& grid = prepared->inflated;
   GridPlanRequest request = original;
   if (grid.Contains(original.start) && grid.at(original.start) == 0 &&
       config_.start_snap_radius_m > 0.0) {
@@ -183,10 +203,9 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& or
     }
     request.start = *free;
   }
-  clearance_cost_.clear();
-  if (request.keep_clearance) {
-    clearance_cost_ = ClearanceCost(grid, request.resolution_m, config_.clearance);
-  }
+  clearance_cost_ = request.keep_clearance && !prepared->clearance_cost.empty()
+                        ? &prepared->clearance_cost
+                        : nullptr;  // no cost (clearance 0): JPS, as without clearance
   absl::StatusOr<GridPlanResult> result = PlanStages(grid, request);
   if (PlanFailureOf(result.status()) == PlanFailure::kNoPath && config_.start_snap_radius_m > 0.0 &&
       IsFree(grid, request.goal.x, request.goal.y)) {
@@ -201,7 +220,7 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanInside(const GridPlanRequest& or
       result = PlanStages(grid, request);
     }
   }
-  clearance_cost_.clear();
+  clearance_cost_ = nullptr;
   if (!result.ok()) return result;
   result->planned_start = request.start;
   if (!(request.start == original.start)) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,16 @@ struct GridPlannerConfig {
   ClearanceConfig clearance;
 };
 
+// The footprint work on one grid: `free` inflated by the robot's radius and, with clearance, the
+// clearance cost over it. The same for every call on the same grid and radius, so a caller that
+// keeps a grid (planning's kept live grid) prepares it once (GridPlanner::Prepare).
+struct PreparedFootprint {
+  double robot_radius_m = 0.0;
+  bool with_clearance = false;
+  PassabilityGrid inflated;
+  std::vector<float> clearance_cost;  // empty without clearance
+};
+
 struct GridPlanRequest {
   PassabilityGrid free;  // base traversability (1 free, 0 blocked)
   // Seed 004 obstacle probability map, percent 0-100 per cell; empty = none.
@@ -58,6 +69,9 @@ struct GridPlanRequest {
   // Cells beyond the grid are free like its unknown cells (planning's grid.unknown_is_free).
   bool outside_is_free = false;
   SearchLimits limits;
+  // Prepare(free, resolution_m, robot_radius_m, keep_clearance), made before; null or one that
+  // does not fit (another radius, clearance or size) = prepared in the call.
+  std::shared_ptr<const PreparedFootprint> prepared;
 };
 
 struct GridPlanResult {
@@ -85,6 +99,9 @@ class GridPlanner {
   explicit GridPlanner(GridPlannerConfig config) : config_(config) {}
 
   absl::StatusOr<GridPlanResult> Plan(const GridPlanRequest& request);
+  // What Plan computes first for a request on `free` with this footprint and clearance.
+  PreparedFootprint Prepare(const PassabilityGrid& free, double resolution_m, double robot_radius_m,
+                            bool keep_clearance) const;
 
  private:
   absl::StatusOr<GridPath> Search(const PassabilityGrid& grid, Cell start, Cell goal,
@@ -97,7 +114,8 @@ class GridPlanner {
   absl::StatusOr<GridPlanResult> PlanStages(const PassabilityGrid& grid,
                                             const GridPlanRequest& request);
 
-  std::vector<float> clearance_cost_;  // of the current query; empty = none
+  // Of the current query (points into its PreparedFootprint); null = none.
+  const std::vector<float>* clearance_cost_ = nullptr;
 
   GridPlannerConfig config_;
   AStarPlanner astar_;

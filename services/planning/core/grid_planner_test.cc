@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "services/common/status/field_error.h"
 #include "services/planning/core/alternative_point.h"
@@ -321,6 +324,40 @@ TEST(GridPlanner, GapNarrowerThanTheRobotIsRefusedWithClearanceOn) {
     if (c.y == 5) through_middle = c.x == 5;
   }
   EXPECT_TRUE(through_middle);
+}
+
+// A footprint prepared once gives each call the same path as one prepared in the call; one that
+// does not fit the request (another radius) is not used.
+TEST(GridPlanner, APreparedFootprintPlansAsTheCallsOwnAndOneThatDoesNotFitIsIgnored) {
+  std::vector<std::string> rows(11, std::string(11, '.'));
+  rows[5] = "@@@@...@@@@";
+  const PassabilityGrid grid = GridFromRows(rows);
+  GridPlanRequest request = RequestOn(grid, {5, 0}, {5, 10});
+  request.resolution_m = 0.1;
+  request.robot_radius_m = 0.1;
+  request.keep_clearance = true;
+  GridPlannerConfig config;
+  config.clearance = {.clearance_m = 0.4, .cost_scaling_per_m = 3.0, .cost_penalty = 2.0};
+  GridPlanner planner(config);
+  const absl::StatusOr<GridPlanResult> own = planner.Plan(request);
+  ASSERT_TRUE(own.ok()) << own.status();
+
+  request.prepared = std::make_shared<const PreparedFootprint>(
+      planner.Prepare(grid, request.resolution_m, request.robot_radius_m, true));
+  EXPECT_EQ(request.prepared->inflated.at(4, 5), 0);  // the wall's end grown by one cell
+  EXPECT_EQ(request.prepared->clearance_cost.size(), 121u);
+  for (int call = 0; call < 2; ++call) {
+    const absl::StatusOr<GridPlanResult> reused = planner.Plan(request);
+    ASSERT_TRUE(reused.ok()) << reused.status();
+    EXPECT_EQ(reused->path.waypoints, own->path.waypoints);
+    EXPECT_DOUBLE_EQ(reused->path.length_cells, own->path.length_cells);
+  }
+  // Prepared for a 0.2 m robot, which the gap refuses: this 0.1 m request still passes.
+  request.prepared = std::make_shared<const PreparedFootprint>(
+      planner.Prepare(grid, request.resolution_m, 0.2, true));
+  const absl::StatusOr<GridPlanResult> other = planner.Plan(request);
+  ASSERT_TRUE(other.ok()) << other.status();
+  EXPECT_EQ(other->path.waypoints, own->path.waypoints);
 }
 
 TEST(ClearanceCost, DecaysExponentiallyWithDistance) {

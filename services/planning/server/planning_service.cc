@@ -327,6 +327,10 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     plan.outside_is_free = config_.unknown_is_free;
     plan.limits = limits;
     GridPlanner planner(config_.grid_planner);
+    plan.prepared = footprints_.Get(*resolved, plan.robot_radius_m, plan.keep_clearance, [&] {
+      return planner.Prepare(plan.free, plan.resolution_m, plan.robot_radius_m,
+                             plan.keep_clearance);
+    });
     absl::StatusOr<GridPlanResult> result = planner.Plan(plan);
     if (result.ok()) FillResponse(*frame, *result, response);
     failure = result.status();

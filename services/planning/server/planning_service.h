@@ -11,6 +11,7 @@
 #include "semnav/planning/v1/planning_service.grpc.pb.h"
 #include "services/common/server/worker_pool.h"
 #include "services/planning/core/jump_astar_cache.h"
+#include "services/planning/server/footprint_cache.h"
 #include "services/planning/server/live_grid_cache.h"
 #include "services/planning/server/planning_config.h"
 
@@ -77,6 +78,7 @@ class PlanningServiceImpl final : public semnav::planning::v1::PlanningService::
   const PlanningConfig config_;
   std::unique_ptr<semnav::mapping::v1::MappingService::Stub> mapping_;
   LiveGridCache live_grids_;
+  FootprintCache footprints_;  // of the kept grids, for PlanPath's 2D planners
   // Per-map Jump A* state; its landmark builds run on workers_, which is
   // declared after it so it drains them before the cache goes.
   JumpAStarCache jump_astar_;
