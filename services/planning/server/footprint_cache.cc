@@ -10,12 +10,14 @@ std::shared_ptr<const PreparedFootprint> FootprintCache::Get(
   if (grid.use_count() == 0 || max_entries_ == 0) {
     return std::make_shared<const PreparedFootprint>(prepare());
   }
+  // An expired entry never matches: its grid is gone, even if a new one took its address.
   const auto same = [&](const Entry& e) {
-    return e.grid == grid && e.robot_radius_m == robot_radius_m &&
-           e.keep_clearance == keep_clearance;
+    return e.robot_radius_m == robot_radius_m && e.keep_clearance == keep_clearance &&
+           e.grid.lock() == grid;
   };
   {
     absl::MutexLock lock(&mu_);
+    std::erase_if(entries_, [](const Entry& e) { return e.grid.expired(); });
     auto kept = std::find_if(entries_.begin(), entries_.end(), same);
     if (kept != entries_.end()) {
       kept->last_used = ++uses_;

@@ -17,8 +17,8 @@ namespace semnav::planning {
 class FootprintCache {
  public:
   // Keeps the footprints of at most `max_entries` (grid, radius, clearance) triples; the one
-  // used longest ago goes first. Each entry holds its grid, so a grid's address is never reused
-  // while an entry names it.
+  // used longest ago goes first, and a footprint goes with its grid: entries only watch their
+  // grid (weak_ptr), so the cache never keeps a grid the live-grid cache has let go.
   explicit FootprintCache(size_t max_entries = 8) : max_entries_(max_entries) {}
 
   // The footprint of `grid` for (robot_radius_m, keep_clearance): the kept one, or `prepare()`'s,
@@ -29,7 +29,7 @@ class FootprintCache {
 
  private:
   struct Entry {
-    std::shared_ptr<const semnav::common::v1::GridMap> grid;
+    std::weak_ptr<const semnav::common::v1::GridMap> grid;
     double robot_radius_m = 0.0;
     bool keep_clearance = false;
     std::shared_ptr<const PreparedFootprint> footprint;

@@ -66,5 +66,19 @@ TEST(FootprintCache, TheFootprintUsedLongestAgoGoesFirst) {
   EXPECT_EQ(prepare.calls, 4);
 }
 
+TEST(FootprintCache, AFootprintGoesWithItsGrid) {
+  FootprintCache cache;
+  CountingPrepare prepare;
+  auto grid = std::make_shared<const GridMap>();
+  std::weak_ptr<const PreparedFootprint> footprint =
+      cache.Get(grid, 0.3, true, [&] { return prepare(0.3); });
+  EXPECT_FALSE(footprint.expired());  // kept while its grid lives
+  grid.reset();                       // the live-grid cache lets the grid go
+  const auto newer = std::make_shared<const GridMap>();
+  cache.Get(newer, 0.3, true, [&] { return prepare(0.3); });
+  EXPECT_TRUE(footprint.expired());  // dropped with it, not kept until evicted
+  EXPECT_EQ(prepare.calls, 2);
+}
+
 }  // namespace
 }  // namespace semnav::planning
