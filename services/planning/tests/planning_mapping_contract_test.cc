@@ -108,6 +108,19 @@ class PlanningWithMapping : public ::testing::Test {
     planning_ = pb::PlanningService::NewStub(services_.planning->channel());
   }
 
+  // The map revision of the grid a live-map PlanPath from start_ to goal_ was planned on.
+  uint64_t PlanRevision(uint32_t max_age_ms) {
+    pb::PlanPathRequest request;
+    request.mutable_source()->mutable_live_map()->set_max_age_ms(max_age_ms);
+    *request.mutable_start() = *start_;
+    *request.mutable_goal() = *goal_;
+    pb::PlanPathResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = planning_->PlanPath(&context, request, &response);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+    return response.map_revision();
+  }
+
   TwoServices services_;
   std::unique_ptr<mpb::MappingService::Stub> mapping_;
   std::unique_ptr<pb::PlanningService::Stub> planning_;
@@ -147,24 +160,13 @@ TEST_F(PlanningWithMapping, LiveMapPlanEqualsInlinePlanOnTheSameGrid) {
 TEST_F(PlanningWithMapping, AGridOfAnAcceptedAgeIsTheOneFetchedBefore) {
   MapTheRoom("planning_mapping_kept_grid");
   if (HasFatalFailure()) return;
-  auto plan_revision = [&](uint32_t max_age_ms) -> uint64_t {
-    pb::PlanPathRequest request;
-    request.mutable_source()->mutable_live_map()->set_max_age_ms(max_age_ms);
-    *request.mutable_start() = *start_;
-    *request.mutable_goal() = *goal_;
-    pb::PlanPathResponse response;
-    grpc::ClientContext context;
-    const grpc::Status status = planning_->PlanPath(&context, request, &response);
-    EXPECT_TRUE(status.ok()) << status.error_message();
-    return response.map_revision();
-  };
   const uint64_t first = grid_.grid().revision();
-  EXPECT_EQ(plan_revision(0), first);  // fetched now, and kept
+  EXPECT_EQ(PlanRevision(0), first);  // fetched now, and kept
   StreamRoomTour(*mapping_, 2, &stamp_);
-  EXPECT_EQ(plan_revision(10000), first);  // the kept grid is young enough
-  const uint64_t now = plan_revision(0);   // fetched again
+  EXPECT_EQ(PlanRevision(10000), first);  // the kept grid is young enough
+  const uint64_t now = PlanRevision(0);   // fetched again
   EXPECT_GT(now, first);
-  EXPECT_EQ(plan_revision(10000), now);  // and the newer one is kept
+  EXPECT_EQ(PlanRevision(10000), now);  // and the newer one is kept
 }
 
 // planning.live_map_refresh_ahead (0.5): a call that finds the kept grid older than half its
@@ -174,30 +176,19 @@ TEST_F(PlanningWithMapping, AKeptGridPastHalfItsAgeIsFetchedAgainAhead) {
   MapTheRoom("planning_mapping_refresh_ahead");
   if (HasFatalFailure()) return;
   constexpr uint32_t kMaxAgeMs = 4000;
-  auto plan_revision = [&](uint32_t max_age_ms) -> uint64_t {
-    pb::PlanPathRequest request;
-    request.mutable_source()->mutable_live_map()->set_max_age_ms(max_age_ms);
-    *request.mutable_start() = *start_;
-    *request.mutable_goal() = *goal_;
-    pb::PlanPathResponse response;
-    grpc::ClientContext context;
-    const grpc::Status status = planning_->PlanPath(&context, request, &response);
-    EXPECT_TRUE(status.ok()) << status.error_message();
-    return response.map_revision();
-  };
   const absl::Time fetched_by = absl::Now();
-  const uint64_t first = plan_revision(0);  // fetched now, and kept
+  const uint64_t first = PlanRevision(0);  // fetched now, and kept
   StreamRoomTour(*mapping_, 2, &stamp_);
   // Within half the age: the kept grid, and no refresh.
   if (absl::Now() - fetched_by < absl::Milliseconds(kMaxAgeMs / 2)) {
-    EXPECT_EQ(plan_revision(kMaxAgeMs), first);
+    EXPECT_EQ(PlanRevision(kMaxAgeMs), first);
   }
   absl::SleepFor(fetched_by + absl::Milliseconds(kMaxAgeMs / 2 + 200) - absl::Now());
-  EXPECT_EQ(plan_revision(kMaxAgeMs), first);  // still young enough: answered from it at once
+  EXPECT_EQ(PlanRevision(kMaxAgeMs), first);  // still young enough: answered from it at once
   uint64_t later = first;
   while (later == first && absl::Now() - fetched_by < absl::Milliseconds(kMaxAgeMs - 300)) {
     absl::SleepFor(absl::Milliseconds(100));
-    later = plan_revision(kMaxAgeMs);
+    later = PlanRevision(kMaxAgeMs);
   }
   EXPECT_GT(later, first) << "the kept grid was not fetched again ahead of its age";
 }
