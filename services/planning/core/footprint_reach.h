@@ -43,13 +43,14 @@ class FootprintReach {
 
  private:
   struct Stand {
-    double distance;
+    double distance;  // path to the stand plus the reach from it
+    double reach;     // straight distance from the stand to the cell
     std::optional<Cell> cell;
   };
   Stand Best(Cell c) const;
 
   PassabilityGrid inflated_;
-  PassabilityGrid clear_;  // preferred stands (the inflated grid when no preference)
+  std::optional<PassabilityGrid> clear_;  // preferred stands; none = no preference
   std::vector<double> field_;
   std::vector<Cell> reach_disc_;
 };

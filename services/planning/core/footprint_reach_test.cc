@@ -7,21 +7,13 @@
 #include <vector>
 
 #include "services/planning/core/distance_field.h"
+#include "services/planning/core/test_grids.h"
 
 namespace semnav::planning {
 namespace {
 
-// Rows from the top: '.' free, '#' blocked (an obstacle or unknown space).
-PassabilityGrid GridOf(const std::vector<std::string>& rows) {
-  const int height = static_cast<int>(rows.size());
-  PassabilityGrid grid(static_cast<int>(rows[0].size()), height, 1);
-  for (int r = 0; r < height; ++r) {
-    for (int x = 0; x < grid.width(); ++x) grid.at(x, height - 1 - r) = rows[r][x] == '.' ? 1 : 0;
-  }
-  return grid;
-}
-
-// Columns 0-9 free, 10-11 unknown: the frontier is column 9.
+// Rows are y (GridFromRows: '.' free, anything else blocked: an obstacle or unknown space); every
+// grid here is the same upside down. Columns 0-9 free, 10-11 unknown: the frontier is column 9.
 const std::vector<std::string> kRoomEdge = {
     "..........##", "..........##", "..........##", "..........##",
     "..........##", "..........##", "..........##",
@@ -30,7 +22,7 @@ const std::vector<std::string> kRoomEdge = {
 TEST(FootprintReach, AFrontierCellIsReachedFromTheEdgeOfTheInflation) {
   // Radius 1 blocks column 9; (9, 3) is reached from (8, 3): 6 cells from (2, 3), then 1.
   // (7, 3) and (6, 3) are as short a way (5 + 2, 4 + 3) but stand further from it.
-  const PassabilityGrid grid = GridOf(kRoomEdge);
+  const PassabilityGrid grid = GridFromRows(kRoomEdge);
   const FootprintReach reach(grid, {2, 3}, {.radius_cells = 1.0, .reach_cells = 3.0});
   EXPECT_DOUBLE_EQ(reach.Distance({9, 3}), 7.0);
   EXPECT_EQ(reach.StandFor({9, 3}), (Cell{8, 3}));
@@ -42,7 +34,7 @@ TEST(FootprintReach, AFrontierCellIsReachedFromTheEdgeOfTheInflation) {
 TEST(FootprintReach, AStandKeepingTheClearanceIsPreferred) {
   // Inflated by 2 (the clearance), columns 8-9 are blocked: (7, 3) keeps it; the distance is
   // still the shortest way.
-  const PassabilityGrid grid = GridOf(kRoomEdge);
+  const PassabilityGrid grid = GridFromRows(kRoomEdge);
   const FootprintReach reach(grid, {2, 3},
                              {.radius_cells = 1.0, .reach_cells = 3.0, .clear_radius_cells = 2.0});
   EXPECT_DOUBLE_EQ(reach.Distance({9, 3}), 7.0);
@@ -51,7 +43,7 @@ TEST(FootprintReach, AStandKeepingTheClearanceIsPreferred) {
 
 TEST(FootprintReach, ARobotInsideTheInflationLeavesItForTheFreeCellsNearby) {
   // (9, 3) is inflated; (8, 3) is 1 cell away, and (9, 3) is reached from it.
-  const PassabilityGrid grid = GridOf(kRoomEdge);
+  const PassabilityGrid grid = GridFromRows(kRoomEdge);
   const FootprintReach reach(grid, {9, 3},
                              {.radius_cells = 1.0, .reach_cells = 3.0, .start_snap_cells = 2.0});
   EXPECT_DOUBLE_EQ(reach.Distance({8, 3}), 1.0);
@@ -71,7 +63,7 @@ TEST(FootprintReach, ARobotBoxedInByTheInflationLeavesThroughTheSnapRadius) {
       ".....#....##", ".....#....##", ".....#....##", ".....#....##",
       ".....#....##", ".....#....##", ".....#....##",
   };
-  const PassabilityGrid grid = GridOf(rows);
+  const PassabilityGrid grid = GridFromRows(rows);
   const FootprintReach boxed(grid, {3, 3}, {.radius_cells = 1.0, .reach_cells = 3.0});
   EXPECT_EQ(boxed.Distance({9, 3}), kUnreachable);
   const FootprintReach reach(grid, {3, 3},
@@ -88,7 +80,7 @@ const std::vector<std::string> kGap = {
 };
 
 TEST(FootprintReach, AGapNarrowerThanTheRobotIsNoWayThrough) {
-  const PassabilityGrid grid = GridOf(kGap);
+  const PassabilityGrid grid = GridFromRows(kGap);
   // A point robot goes through the gap to the far frontier (13, 3): 11 cells.
   EXPECT_DOUBLE_EQ(OctileDistanceField(grid, {2, 3})[grid.Index(13, 3)], 11.0);
   // Radius 1.5 closes the gap: the far frontier is out of reach, ...

@@ -229,7 +229,7 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
     SetPose(goal, request.add_excluded_goals());
   request.set_excluded_radius_m(query.excluded_radius_m);
   request.set_robot_radius_m(query.robot_radius_m);
-  request.set_clearance_m(query.robot_radius_m > 0.0 ? query.clearance_m : 0.0);
+  request.set_clearance_m(query.clearance_m);
   if (query.keep_goal.has_value()) {
     SetPose(*query.keep_goal, request.mutable_keep_goal());
     request.set_keep_radius_m(query.keep_radius_m);
