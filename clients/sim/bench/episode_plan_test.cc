@@ -123,5 +123,31 @@ TEST(SimBenchEpisodePlanTest, PoseLossGroupsRerunTheIndoorEpisodesWithDriftAndAK
   EXPECT_EQ(PlanEpisodes(worlds, counts, 1)[3].kidnap_to->position, plan[3].kidnap_to->position);
 }
 
+// Regression (mission bench, kidnapped group): the destination was any free cell 2-5 m from the
+// start, and the raster covers the world bounds, so 9 of 20 robots were carried outside the
+// building, where no map can answer. A room 6.4 m across around the start: every destination
+// must lie in it.
+TEST(SimBenchEpisodePlanTest, KidnappedRobotsAreCarriedWithinTheSpaceTheStartReaches) {
+  World world = testing::OpenWorld();
+  world.name = "room";
+  world.objects.push_back(testing::Object("sink_1", "sink", testing::Box(2.0, 2.0, 0.5, 0.5, 0.8)));
+  for (const auto& [x, y, sx, sy] : std::vector<std::array<double, 4>>{{0.0, 3.3, 6.8, 0.2},
+                                                                       {0.0, -3.3, 6.8, 0.2},
+                                                                       {3.3, 0.0, 0.2, 6.8},
+                                                                       {-3.3, 0.0, 0.2, 6.8}}) {
+    world.obstacles.push_back(Obstacle{"wall", Rgb{}, testing::Box(x, y, sx, sy, 2.0)});
+  }
+  EpisodeCounts counts{0, 0, 0};
+  counts.kidnapped = 12;
+  const std::vector<loop::EpisodeSpec> plan = PlanEpisodes({world}, counts, 1);
+  ASSERT_EQ(plan.size(), 12u);
+  for (const loop::EpisodeSpec& spec : plan) {
+    ASSERT_TRUE(spec.kidnap_to.has_value());
+    const Eigen::Vector2d at = spec.kidnap_to->position.head<2>();
+    EXPECT_LT(at.cwiseAbs().maxCoeff(), 3.2) << spec.robot_id << " carried to " << at.transpose();
+    EXPECT_GE(at.norm(), 2.0);
+  }
+}
+
 }  // namespace
 }  // namespace semnav::sim::bench
