@@ -40,7 +40,8 @@ CellIndex HierarchicalGrid::CellOf(double x_m, double y_m) const {
 }
 
 void HierarchicalGrid::Update(const VoxelColumns& columns,
-                              const absl::flat_hash_set<VoxelColumns::ColumnId>& observed) {
+                              const absl::flat_hash_set<VoxelColumns::ColumnId>& observed,
+                              std::vector<CellIndex>* turned_occupied) {
   absl::flat_hash_map<CellIndex, CellObservation> observation;
   const double voxel = columns.resolution();
   for (VoxelColumns::ColumnId id : observed) {
@@ -61,14 +62,22 @@ void HierarchicalGrid::Update(const VoxelColumns& columns,
   }
   const auto hit = static_cast<float>(Logit(config_.p_hit));
   const auto miss = static_cast<float>(Logit(config_.p_miss));
+  const auto occupied_log_odds = static_cast<float>(Logit(config_.p_threshold));
   for (const auto& [index, o] : observation) {
-    Cell& cell = cells_[index];
+    const auto [it, is_new] = cells_.try_emplace(index);
+    Cell& cell = it->second;
+    const bool was_occupied = !is_new && (cell.structure || cell.log_odds >= occupied_log_odds);
     cell.structure = o.structure;
-    if (o.structure) continue;
-    cell.log_odds = std::clamp(cell.log_odds + (o.obstacle ? hit : miss),
-                               static_cast<float>(config_.log_odds_min),
-                               static_cast<float>(config_.log_odds_max));
-    if (o.obstacle) cell.height = HeightValue(o.top_m);
+    if (!o.structure) {
+      cell.log_odds = std::clamp(cell.log_odds + (o.obstacle ? hit : miss),
+                                 static_cast<float>(config_.log_odds_min),
+                                 static_cast<float>(config_.log_odds_max));
+      if (o.obstacle) cell.height = HeightValue(o.top_m);
+    }
+    if (turned_occupied != nullptr && !was_occupied &&
+        (cell.structure || cell.log_odds >= occupied_log_odds)) {
+      turned_occupied->push_back(index);
+    }
   }
 }
 

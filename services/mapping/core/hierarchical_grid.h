@@ -44,9 +44,11 @@ class HierarchicalGrid {
   // One observation o_t: the `observed` voxel columns are classified by climbing, each column
   // covers grid cells by eq. 1-2, a cell takes the highest obstacle voxel covering it (eq. 3-4),
   // and its log-odds moves by eq. 6-7 (obstacle: logit(p_hit), free: logit(p_miss)). Structure
-  // cells are 100.
+  // cells are 100. With `turned_occupied`, the cells that read as free or unknown before and as
+  // obstacle or structure after are appended to it.
   void Update(const VoxelColumns& columns,
-              const absl::flat_hash_set<VoxelColumns::ColumnId>& observed);
+              const absl::flat_hash_set<VoxelColumns::ColumnId>& observed,
+              std::vector<CellIndex>* turned_occupied = nullptr);
 
   // Eq. 9: 100 structure; h_o when p_t >= p_th; 0 when observed and below; 255 never observed.
   uint8_t Value(CellIndex cell) const;

@@ -51,6 +51,7 @@ struct MappingEngine::State {
     last_stamp.clear();
     pose_untrusted.clear();
     lost_scans.clear();
+    recent_walls.clear();
     embedding_dim = 0;
     for (const SceneObject& o : scene.objects()) {
       if (!o.embedding.empty()) embedding_dim = static_cast<int>(o.embedding.size());
@@ -69,8 +70,18 @@ struct MappingEngine::State {
   struct LostScan {
     absl::flat_hash_set<CellIndex> cells;
     Eigen::Vector2d robot = Eigen::Vector2d::Zero();  // the latest frame's camera, reported
+    // Cells the robot's own frames turned occupied in the lookback before it reported the loss:
+    // drawn at the pose it wrongly believed, so its matches do not count them as walls.
+    absl::flat_hash_set<CellIndex> own_walls;
   };
   absl::flat_hash_map<std::string, LostScan> lost_scans;
+  // Per robot: the cells each of its trusted frames turned occupied, for the lookback
+  // (SceneGraphConfig::untrusted_lookback_s), at most lost_scan_max_cells in all.
+  struct RecentWalls {
+    std::deque<std::pair<int64_t, std::vector<CellIndex>>> frames;
+    size_t cells = 0;
+  };
+  absl::flat_hash_map<std::string, RecentWalls> recent_walls;
   int embedding_dim = 0;
   std::deque<std::pair<uint64_t, GridWindow>> grid_changes;
   uint64_t grid_forgotten_before = 0;
@@ -168,10 +179,22 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   const std::vector<TouchedVoxel> touched = ApplyVoxelUpdates(*s.tree, std::move(updates));
   result.voxels_updated = static_cast<uint32_t>(touched.size());
   const absl::flat_hash_set<VoxelColumns::ColumnId> columns = s.columns.Apply(touched);
-  s.grid.Update(s.columns, columns);
+  std::vector<CellIndex> turned_occupied;
+  s.grid.Update(s.columns, columns, &turned_occupied);
+  const int64_t lookback_ns = static_cast<int64_t>(config_.scene.untrusted_lookback_s * 1e9);
   if (frame.pose_untrusted) {
     State::LostScan& lost = s.lost_scans[frame.robot_id];
-    if (!s.pose_untrusted[frame.robot_id]) lost.cells.clear();  // a new loss
+    if (!s.pose_untrusted[frame.robot_id]) {  // a new loss
+      lost.cells.clear();
+      lost.own_walls.clear();
+      if (const auto recent = s.recent_walls.find(frame.robot_id); recent != s.recent_walls.end()) {
+        for (const auto& [stamp_ns, cells] : recent->second.frames) {
+          if (stamp_ns >= frame.stamp_ns - lookback_ns)
+            lost.own_walls.insert(cells.begin(), cells.end());
+        }
+        s.recent_walls.erase(recent);
+      }
+    }
     lost.robot = frame.pose.position.head<2>();
     absl::flat_hash_set<CellIndex>& scan = lost.cells;
     const ClimbingHeights& heights = s.grid.heights();
@@ -184,6 +207,16 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
     }
   } else {
     s.lost_scans.erase(frame.robot_id);
+    State::RecentWalls& recent = s.recent_walls[frame.robot_id];
+    if (!turned_occupied.empty()) {
+      recent.cells += turned_occupied.size();
+      recent.frames.emplace_back(frame.stamp_ns, std::move(turned_occupied));
+    }
+    while (!recent.frames.empty() && (recent.frames.front().first < frame.stamp_ns - lookback_ns ||
+                                      recent.cells > config_.lost_scan_max_cells)) {
+      recent.cells -= recent.frames.front().second.size();
+      recent.frames.pop_front();
+    }
   }
 
   std::vector<ObjectObservation> observations;
@@ -549,6 +582,14 @@ absl::StatusOr<ScanMatchResult> MappingEngine::MatchLostScan(
                          "MAP_TOO_LARGE");
     }
     raster = GridRaster(s.grid, window, /*free_and_opaque=*/!coarse.has_value());
+    for (const CellIndex& cell : found->second.own_walls) {
+      const int x = cell.x - window.min.x;
+      const int y = cell.y - window.min.y;
+      if (x < 0 || y < 0 || x >= window.width || y >= window.height) continue;
+      const size_t at = static_cast<size_t>(y) * window.width + x;
+      raster.occupied[at] = 0;
+      if (!raster.opaque.empty()) raster.opaque[at] = 0;
+    }
   }
   if (coarse.has_value()) return MatchScan(raster, scan, *coarse, config_.scan_match);
   return MatchScanGlobally(raster, scan, robot, config_.scan_match, config_.global_scan_match);

@@ -351,12 +351,16 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnRefinement(
                            SceneGraph{});
     }
     if (!refinement->refined) {
+      // Where the best pose would put the robot, so that a log can tell a right answer refused
+      // from a wrong one.
+      const RobotPose best = Compose(refinement->map_from_reported, map_from_odom_).Apply(pose_);
       return AttemptFailed(
           now,
-          absl::StrFormat("%s; no unique global scan match (score %.2f, the best "
-                          "other pose %.2f, rays through walls %.0f %%)",
-                          failed_why_, refinement->score, refinement->runner_up_score,
-                          100.0 * refinement->ray_conflicts),
+          absl::StrFormat("%s; no unique global scan match (score %.2f at (%.2f, %.2f, %.0f deg), "
+                          "the best other pose %.2f, rays through walls %.0f %%)",
+                          failed_why_, refinement->score, best.position.x(), best.position.y(),
+                          std::remainder(best.yaw, 2.0 * M_PI) * 180.0 / M_PI,
+                          refinement->runner_up_score, 100.0 * refinement->ray_conflicts),
           SceneGraph{});
     }
     RelocalizationAnswer found;

@@ -502,12 +502,15 @@ TEST(RelocalizationLoopScanRefinementTest, ANonUniqueGlobalMatchOnTheLastAttempt
   ScanRefinement ambiguous;
   ambiguous.score = 0.7;
   ambiguous.runner_up_score = 0.69;
+  // Its best pose: the robot (at the odometry origin, no correction yet) at (2, 1), turned a
+  // quarter; the reason names it.
+  ambiguous.map_from_reported = PlanarTransform{Eigen::Vector3d(2.0, 1.0, 0.0), M_PI / 2};
   const std::vector<RelocalizationAction> actions = loop.OnRefinement(12.5, ambiguous);
   ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand, Kind::kFailTask}));
   EXPECT_EQ(actions[0].command.kind, CommandKind::kStop);
   EXPECT_TRUE(absl::StrContains(actions[1].message,
                                 "saw 0 objects, 3 needed; no unique global "
-                                "scan match (score 0.70, the best other "
+                                "scan match (score 0.70 at (2.00, 1.00, 90 deg), the best other "
                                 "pose 0.69, rays through walls 0 %)"))
       << actions[1].message;
   EXPECT_FALSE(loop.trusted());
