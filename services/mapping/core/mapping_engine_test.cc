@@ -214,10 +214,10 @@ std::vector<CameraPose> LookAround(const Eigen::Vector2d& at, int count) {
 }
 
 // A kidnapped robot keeps mapping at the pose it wrongly believes until its localizer reports the
-// loss (2.5 s in the simulator). The walls those frames drew put 15 % of a right global match's
-// rays through walls in the kidnapped bench group, and it was refused. The robot's match now
-// leaves out the cells its own frames turned occupied in the lookback before its first lost frame;
-// walls it drew longer before stay (the lookback is the localizer's latency).
+// loss (2.5 s in the simulator). The walls those frames drew lie across the right pose's rays: in
+// this room 15 % of them, and the right global match is refused. The robot's match now leaves out
+// the cells its own frames turned occupied in the lookback before its first lost frame; walls it
+// drew longer before stay (the lookback is the localizer's latency), as the 4 s case shows.
 TEST(MappingEngineTest, ALostRobotsMatchLeavesOutTheWallsItDrewInTheLookback) {
   MappingConfig config;
   config.scene.untrusted_lookback_s = 2.5;
