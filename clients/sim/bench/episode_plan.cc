@@ -93,7 +93,7 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
 // from it, drawn by `rng` (nullopt when 200 draws find none). A free cell the start cannot reach
 // lies outside the building (the raster covers the world bounds) or in a closed-off space: a
 // robot carried there sees nothing of the map it was building, which no relocalization answers
-// (9 of 20 kidnaps went there; docs/performance/mission.md, "Kidnapped within the building").
+// (7 of 19 lost robots went there; docs/performance/mission.md, "Kidnapped within the building").
 std::optional<Pose> KidnapDestination(const World& world, const StartPose& start,
                                       const KidnapPlan& kidnap, Rng& rng) {
   const GroundTruthGrid grid = RasterizeOccupancy(

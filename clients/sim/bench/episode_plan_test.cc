@@ -124,7 +124,7 @@ TEST(SimBenchEpisodePlanTest, PoseLossGroupsRerunTheIndoorEpisodesWithDriftAndAK
 }
 
 // Regression (mission bench, kidnapped group): the destination was any free cell 2-5 m from the
-// start, and the raster covers the world bounds, so 9 of 20 robots were carried outside the
+// start, and the raster covers the world bounds, so 7 of 19 robots were carried outside the
 // building, where no map can answer. A room 6.4 m across around the start: every destination
 // must lie in it.
 TEST(SimBenchEpisodePlanTest, KidnappedRobotsAreCarriedWithinTheSpaceTheStartReaches) {
