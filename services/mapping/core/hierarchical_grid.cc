@@ -63,10 +63,13 @@ void HierarchicalGrid::Update(const VoxelColumns& columns,
   const auto hit = static_cast<float>(Logit(config_.p_hit));
   const auto miss = static_cast<float>(Logit(config_.p_miss));
   const auto occupied_log_odds = static_cast<float>(Logit(config_.p_threshold));
+  const auto reads_occupied = [&](const Cell& cell) {
+    return cell.structure || cell.log_odds >= occupied_log_odds;
+  };
   for (const auto& [index, o] : observation) {
     const auto [it, is_new] = cells_.try_emplace(index);
     Cell& cell = it->second;
-    const bool was_occupied = !is_new && (cell.structure || cell.log_odds >= occupied_log_odds);
+    const bool was_occupied = !is_new && reads_occupied(cell);
     cell.structure = o.structure;
     if (!o.structure) {
       cell.log_odds = std::clamp(cell.log_odds + (o.obstacle ? hit : miss),
@@ -74,8 +77,7 @@ void HierarchicalGrid::Update(const VoxelColumns& columns,
                                  static_cast<float>(config_.log_odds_max));
       if (o.obstacle) cell.height = HeightValue(o.top_m);
     }
-    if (turned_occupied != nullptr && !was_occupied &&
-        (cell.structure || cell.log_odds >= occupied_log_odds)) {
+    if (turned_occupied != nullptr && !was_occupied && reads_occupied(cell)) {
       turned_occupied->push_back(index);
     }
   }

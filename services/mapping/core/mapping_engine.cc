@@ -181,10 +181,12 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
   const absl::flat_hash_set<VoxelColumns::ColumnId> columns = s.columns.Apply(touched);
   std::vector<CellIndex> turned_occupied;
   s.grid.Update(s.columns, columns, &turned_occupied);
+  // The robot reports its loss: its frames of the lookback before it were at the wrong pose too.
+  const bool new_loss = frame.pose_untrusted && !s.pose_untrusted[frame.robot_id];
   const int64_t lookback_ns = static_cast<int64_t>(config_.scene.untrusted_lookback_s * 1e9);
   if (frame.pose_untrusted) {
     State::LostScan& lost = s.lost_scans[frame.robot_id];
-    if (!s.pose_untrusted[frame.robot_id]) {  // a new loss
+    if (new_loss) {
       lost.cells.clear();
       lost.own_walls.clear();
       if (const auto recent = s.recent_walls.find(frame.robot_id); recent != s.recent_walls.end()) {
@@ -226,12 +228,8 @@ absl::StatusOr<FrameResult> MappingEngine::AddFrame(const SensorFrame& frame) {
       s.embedding_dim = static_cast<int>(detection->embedding.size());
   }
   result.detections_used = static_cast<uint32_t>(observations.size());
-  bool& untrusted = s.pose_untrusted[frame.robot_id];
-  if (frame.pose_untrusted && !untrusted) {  // the robot reports its loss: the frames just before
-    s.scene.MarkPoseUntrustedSince(          // it were already at the wrong pose
-        frame.stamp_ns - static_cast<int64_t>(config_.scene.untrusted_lookback_s * 1e9));
-  }
-  untrusted = frame.pose_untrusted;
+  if (new_loss) s.scene.MarkPoseUntrustedSince(frame.stamp_ns - lookback_ns);
+  s.pose_untrusted[frame.robot_id] = frame.pose_untrusted;
   for (ObjectObservation& observation : observations)
     observation.pose_untrusted = frame.pose_untrusted;
   // Negative evidence only from what the robot trusts and its detector really looked at.

@@ -105,20 +105,14 @@ TEST(MappingConfigYamlTest, ExistenceIsReadAndRangeChecked) {
 }
 
 TEST(MappingConfigYamlTest, BodyHeightIsReadAndMustFitBetweenFootAndCeiling) {
-  absl::StatusOr<ConfigReader> root =
-      ConfigReader::FromString("mapping:\n  grid: {body_height_m: 0.5}\n");
-  ASSERT_TRUE(root.ok());
-  ConfigReader section = root->Child("mapping");
-  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  const absl::StatusOr<MappingServiceConfig> config =
+      Load("mapping:\n  grid: {body_height_m: 0.5}\n");
   ASSERT_TRUE(config.ok()) << config.status();
   EXPECT_EQ(config->core.heights.body_m, 0.5);
   // Defaults h_f 0.1, h_c 2.3: at most 2.2 m; negative is refused too.
   for (const char* bad :
        {"mapping:\n  grid: {body_height_m: 2.3}\n", "mapping:\n  grid: {body_height_m: -0.1}\n"}) {
-    absl::StatusOr<ConfigReader> bad_root = ConfigReader::FromString(bad);
-    ASSERT_TRUE(bad_root.ok());
-    ConfigReader bad_section = bad_root->Child("mapping");
-    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    const absl::Status status = Load(bad).status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
     EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.grid.body_height_m"));
   }
@@ -127,11 +121,8 @@ TEST(MappingConfigYamlTest, BodyHeightIsReadAndMustFitBetweenFootAndCeiling) {
 // Regression: a landmarks section without `relocalization` (or none at all, as in deploy/k8s)
 // must not demand a relocalization address; mapping then pushes nothing.
 TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
-  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
+  const absl::StatusOr<MappingServiceConfig> config = Load(
       "mapping:\n  landmarks: {min_detections: 5, labels: [chair, table], embedding_dim: 0}\n");
-  ASSERT_TRUE(root.ok());
-  ConfigReader section = root->Child("mapping");
-  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
   ASSERT_TRUE(config.ok()) << config.status();
   EXPECT_EQ(config->landmarks.min_detections, 5);
   EXPECT_EQ(config->landmarks.labels, (std::vector<std::string>{"chair", "table"}));
@@ -141,22 +132,18 @@ TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
 }
 
 TEST(MappingConfigYamlTest, LandmarkSettingsAreCheckedWithTheirKeyPath) {
-  absl::StatusOr<ConfigReader> root = ConfigReader::FromString(
-      "mapping:\n  landmarks: {live_map_id: '../x', relocalization: {address: "
-      "'127.0.0.1:50053'}}\n");
-  ASSERT_TRUE(root.ok());
-  ConfigReader section = root->Child("mapping");
-  const absl::Status status = MappingServiceConfig::FromYaml(section).status();
+  const absl::Status status =
+      Load(
+          "mapping:\n  landmarks: {live_map_id: '../x', relocalization: {address: "
+          "'127.0.0.1:50053'}}\n")
+          .status();
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(std::string(status.message()), HasSubstr("mapping.landmarks.live_map_id"));
 }
 
 TEST(MappingConfigYamlTest, IntegrationThreadsAndTheirPriorityAreReadAndBounded) {
-  absl::StatusOr<ConfigReader> root =
-      ConfigReader::FromString("mapping:\n  integration_threads: 3\n  integration_nice: 0\n");
-  ASSERT_TRUE(root.ok());
-  ConfigReader section = root->Child("mapping");
-  const absl::StatusOr<MappingServiceConfig> config = MappingServiceConfig::FromYaml(section);
+  const absl::StatusOr<MappingServiceConfig> config =
+      Load("mapping:\n  integration_threads: 3\n  integration_nice: 0\n");
   ASSERT_TRUE(config.ok()) << config.status();
   EXPECT_EQ(config->integration_threads, 3);
   EXPECT_EQ(config->integration_nice, 0);
@@ -165,10 +152,7 @@ TEST(MappingConfigYamlTest, IntegrationThreadsAndTheirPriorityAreReadAndBounded)
            {"mapping:\n  integration_threads: 17\n", "mapping.integration_threads"},
            {"mapping:\n  integration_nice: -1\n", "mapping.integration_nice"},
            {"mapping:\n  integration_nice: 20\n", "mapping.integration_nice"}}) {
-    absl::StatusOr<ConfigReader> bad_root = ConfigReader::FromString(yaml);
-    ASSERT_TRUE(bad_root.ok());
-    ConfigReader bad_section = bad_root->Child("mapping");
-    const absl::Status status = MappingServiceConfig::FromYaml(bad_section).status();
+    const absl::Status status = Load(yaml).status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << yaml;
     EXPECT_THAT(std::string(status.message()), HasSubstr(key));
   }

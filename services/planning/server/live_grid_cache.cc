@@ -11,16 +11,20 @@ LiveGridCache::Window LiveGridCache::WindowOf(const semnav::planning::v1::LiveMa
                 live.window_max().y()};
 }
 
+LiveGridCache::Entry* LiveGridCache::EntryOf(const Window& window) {
+  auto same = std::find_if(entries_.begin(), entries_.end(),
+                           [&](const Entry& e) { return e.window == window; });
+  return same == entries_.end() ? nullptr : &*same;
+}
+
 std::shared_ptr<const semnav::common::v1::GridMap> LiveGridCache::Find(
     const semnav::planning::v1::LiveMapGrid& live, absl::Time now, absl::Duration max_age) {
   if (max_age <= absl::ZeroDuration()) return nullptr;
   const Window window = WindowOf(live);
   absl::MutexLock lock(&mu_);
-  for (const Entry& entry : entries_) {
-    // A fetch stamped after `now` (another worker's, just finished) is fresher still.
-    if (entry.window == window && now - entry.fetched_at <= max_age) return entry.grid;
-  }
-  return nullptr;
+  const Entry* entry = EntryOf(window);
+  // A fetch stamped after `now` (another worker's, just finished) is fresher still.
+  return entry != nullptr && now - entry->fetched_at <= max_age ? entry->grid : nullptr;
 }
 
 void LiveGridCache::Put(const semnav::planning::v1::LiveMapGrid& live,
@@ -29,9 +33,7 @@ void LiveGridCache::Put(const semnav::planning::v1::LiveMapGrid& live,
   if (max_windows_ == 0) return;
   const Window window = WindowOf(live);
   absl::MutexLock lock(&mu_);
-  auto same = std::find_if(entries_.begin(), entries_.end(),
-                           [&](const Entry& e) { return e.window == window; });
-  if (same != entries_.end()) {
+  if (Entry* same = EntryOf(window)) {
     same->refreshing = false;
     if (same->fetched_at > fetched_at) return;
     same->fetched_at = fetched_at;
@@ -50,21 +52,18 @@ bool LiveGridCache::ClaimRefresh(const semnav::planning::v1::LiveMapGrid& live, 
                                  absl::Duration refresh_after) {
   const Window window = WindowOf(live);
   absl::MutexLock lock(&mu_);
-  for (Entry& entry : entries_) {
-    if (entry.window != window) continue;
-    if (entry.refreshing || now - entry.fetched_at <= refresh_after) return false;
-    entry.refreshing = true;
-    return true;
+  Entry* entry = EntryOf(window);
+  if (entry == nullptr || entry->refreshing || now - entry->fetched_at <= refresh_after) {
+    return false;
   }
-  return false;
+  entry->refreshing = true;
+  return true;
 }
 
 void LiveGridCache::EndRefresh(const semnav::planning::v1::LiveMapGrid& live) {
   const Window window = WindowOf(live);
   absl::MutexLock lock(&mu_);
-  for (Entry& entry : entries_) {
-    if (entry.window == window) entry.refreshing = false;
-  }
+  if (Entry* entry = EntryOf(window)) entry->refreshing = false;
 }
 
 }  // namespace semnav::planning

@@ -49,6 +49,8 @@ class LiveGridCache {
     bool refreshing = false;  // ClaimRefresh answered true; Put or EndRefresh not yet called
   };
   static Window WindowOf(const semnav::planning::v1::LiveMapGrid& live);
+  // The entry of `window` (one per window), or null.
+  Entry* EntryOf(const Window& window) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
 
   const size_t max_windows_;
   absl::Mutex mu_;
