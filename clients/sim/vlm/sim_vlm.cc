@@ -83,10 +83,13 @@ std::string ChooseSearchAnswer(const FrameSighting& sighting, const std::vector<
     return code == nullptr ||
            std::hypot(code->pixel.x - pixel.x, code->pixel.y - pixel.y) <= max_code_distance_px;
   };
+  // A model reads the target as the operator wrote it: "汽车" is a car.
+  const std::string canonical = CanonicalTerm(target);
   // Recognition: the target (unless missed) and anything taken for it; the largest nameable first.
   std::optional<cv::Point2d> clue;
   for (const FrameSighting::Instance& instance : sighting.instances) {
-    const bool is_target = LabelNamesTarget(instance.label, target);
+    const bool is_target =
+        LabelNamesTarget(instance.label, target) || LabelNamesTarget(instance.label, canonical);
     const bool taken =
         is_target ? !rng.Bernoulli(errors.miss_rate) : rng.Bernoulli(errors.confusion_rate);
     if (taken && !clue.has_value() && nameable(instance.centroid)) clue = instance.centroid;

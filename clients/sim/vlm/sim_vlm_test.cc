@@ -194,6 +194,20 @@ TEST(SimVlmTest, AnImageTheCameraNeverTookShowsNothing) {
   EXPECT_TRUE(reasoning::ParseCodeDescriptions(reply->text).empty()) << reply->text;
 }
 
+// Regression (issue 15): the search prompt carries the target as the operator wrote it, and the
+// model compared that text with the labels in view, so "find 汽车" never saw a car (3 of the 15
+// outdoor episodes, 汽车 and 桥, searched blind). A model reads Chinese: "汽车" is a car.
+TEST(SimVlmTest, ATargetInChineseIsRecognised) {
+  const SimVlmErrors none{0, 0, 0, 0};
+  FrameSighting car;
+  car.instances.push_back({0, "car", 100, cv::Point2d(40, 60)});
+  const std::vector<PrintedCode> codes = {{"C5A", {}, {40, 60}}, {"D5A", {}, {90, 60}}};
+  Rng rng(3);
+  EXPECT_EQ(ChooseSearchAnswer(car, codes, "汽车", none, rng),
+            "Code: C5A, Description: 汽车 seen here");
+  EXPECT_EQ(ChooseSearchAnswer(car, codes, "长椅", none, rng), "No clue or passage.");  // a bench
+}
+
 // --- The error model: each rate measured over 4000 draws (binomial sd <= 0.008; bounds +-0.03).
 
 FrameSighting Seen(std::vector<std::string> labels) {

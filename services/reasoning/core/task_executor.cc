@@ -287,8 +287,7 @@ std::vector<RobotCommand> TaskExecutor::Refuse(const absl::Status& refused) {
 
 std::vector<RobotCommand> TaskExecutor::Replan(double now, const std::string& reason) {
   if (phase_ == Phase::kBackingOff) return ResumeAfterBackoff(now);
-  if (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan)
-    return ExplorationFailed(now, reason);
+  if (exploring()) return ExplorationFailed(now, reason);
   return CountedReplan(now, reason);
 }
 
@@ -935,7 +934,7 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
 std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
   if (phase_ == Phase::kBackingOff)
     return ResumeAfterBackoff(now);  // cannot back off: re-plan from here
-  const bool exploring = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
+  const bool was_exploring = exploring();
   if (!blocked_goal_.has_value() ||
       (active_goal_ - *blocked_goal_).head<2>().norm() > config_.blocked_spot_radius_m) {
     blocked_goal_ = active_goal_;
@@ -957,7 +956,7 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
                   : absl::StrCat("robot blocked ", blocks_on_goal_, " times on the way");
     blocked_goal_.reset();
     blocks_on_goal_ = 0;
-    if (exploring) {
+    if (was_exploring) {
       // Another route may reach it: the goal alone is spent, not its region.
       if (explore_goal_.has_value()) {
         SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
@@ -974,10 +973,10 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
     return Replan(now, why);
   }
   if (config_.backoff_m <= 0.0) {  // the robot's own controller backs up (Nav2's BackUp)
-    resume_exploring_ = exploring;
+    resume_exploring_ = was_exploring;
     return ResumeAfterBackoff(now);
   }
-  return BackOff(now, exploring, "robot blocked; backing off to re-plan with more clearance");
+  return BackOff(now, was_exploring, "robot blocked; backing off to re-plan with more clearance");
 }
 
 std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_exploring,
@@ -1111,8 +1110,7 @@ std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose
     return RetryDependency(now);
   }
   if (progress_.state != TaskState::kRunning || phase_ == Phase::kIdle) return {};
-  const bool searching = (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) &&
-                         current().type != SubgoalType::kExplore;
+  const bool searching = exploring() && current().type != SubgoalType::kExplore;
   if (searching && InEndgame(now) && TakeBestCandidate()) return GoToBestCandidate(now);
   WatchProgress(now);
   const bool timed =
@@ -1189,8 +1187,7 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now,
     }
     return {};
   }
-  const bool searching = (phase_ == Phase::kExploring || phase_ == Phase::kExploreScan) &&
-                         current().type != SubgoalType::kExplore;
+  const bool searching = exploring() && current().type != SubgoalType::kExplore;
   if (!searching) return {};
   if (TryResolve()) return EnterSubgoal(now);
   if (TakeLabelledCandidate()) return GoForCandidate(now);

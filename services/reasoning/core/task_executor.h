@@ -239,6 +239,8 @@ class TaskExecutor {
   const SceneGraph& scene_graph() const { return *graph_; }
   const std::vector<Subgoal>& subgoals() const { return subgoals_; }
   bool finished() const;
+  // Driving to, or looking around at, an exploration goal: the search has no object to go for.
+  bool exploring() const { return phase_ == Phase::kExploring || phase_ == Phase::kExploreScan; }
   // PAUSED because the planner's dependency is gone (not by the operator or the session).
   bool waiting_for_dependency() const { return dependency_wait_.has_value(); }
 

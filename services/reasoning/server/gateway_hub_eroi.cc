@@ -34,8 +34,10 @@ absl::Status GatewayHub::HandleCameraFrame(const std::string& robot_id, Robot& r
                                            const api::CameraFrame& frame) {
   if (backends_.model == nullptr || shut_down_) return absl::OkStatus();
   Task* task = tasks_.Find(robot.active_task);
+  // The search prompt asks where to explore: while the task drives to, or verifies, an object it
+  // located, no answer would be used before the object is confirmed or set aside.
   if (task == nullptr || task->eroi == nullptr || task->vision_busy ||
-      task->executor->progress().state != TaskState::kRunning) {
+      task->executor->progress().state != TaskState::kRunning || !task->executor->exploring()) {
     return absl::OkStatus();
   }
   absl::StatusOr<DecodedCameraFrame> decoded = DecodeCameraFrame(frame);

@@ -650,6 +650,41 @@ TEST(GatewayHubEroiTest, AFrameOfCodesAlreadyAskedAboutIsNotAsked) {
   EXPECT_EQ(fixture.model.asks.size(), 3u);
 }
 
+// Regression (issue 15, 33.7 vision calls per outdoor episode): frames went to the vision model
+// while the task drove to, and verified, an object it had located; the search prompt asks where
+// to explore, so those answers were never used before the object was confirmed or set aside.
+TEST(GatewayHubEroiTest, NoVisionCallWhileTheTaskGoesForALocatedObject) {
+  EroiHub fixture(GatewayConfig{});
+  api::SubmitInstructionRequest request = UavSearch("eroi-located", "find the cup");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-10.0);
+  area->set_min_y(-10.0);
+  area->set_max_x(40.0);
+  area->set_max_y(10.0);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = fixture.hub.Submit(request);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  const auto show = [&](double dx) {
+    ASSERT_TRUE(
+        fixture.hub
+            .OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), dx))
+            .ok());
+    if (fixture.model.asks.back().done) {
+      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
+      fixture.model.asks.back().done = nullptr;
+    }
+  };
+  show(0.0);
+  show(3.0);  // exploring: a new view asks
+  const size_t asked_while_exploring = fixture.model.asks.size();
+  ASSERT_GE(asked_while_exploring, 2u);
+  fixture.hub.OnSceneGraph(CupScene());  // the cup is located: the task drives to it
+  ASSERT_NE(fixture.hub.GetTask(submitted->task_id())->phase(), "exploring");
+  show(6.0);
+  show(9.0);
+  EXPECT_EQ(fixture.model.asks.size(), asked_while_exploring);
+}
+
 // The budget: after max_calls the task goes on without the model and says so once.
 TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
   GatewayConfig config;
