@@ -475,12 +475,33 @@ struct EroiHub {
       : hub(config, &ShippedLexicon(), &planner, GatewayBackends{&explorer, &model, nullptr}) {
     OpenUavSession(hub, &session);
   }
+  // Sends `frame` from the robot and answers the vision call it made, if any, with no clue.
+  void ShowAndAnswer(const api::CameraFrame& frame) {
+    ASSERT_TRUE(hub.OnCameraFrame(&session, frame).ok());
+    if (model.asks.back().done) {
+      model.Reply(model.asks.size() - 1, "No clue or passage.");
+      model.asks.back().done = nullptr;
+    }
+  }
   RobotLocalPlanner planner;
   ScriptedModel model;
   RecordingExplorer explorer;
   GatewayHub hub;
   RecordingSink session;
 };
+
+// An EROI_UTILITY search over the area from (-10, -10) to (40, 10): Frame()'s view along x.
+api::SubmitInstructionRequest EroiSearchAlongX(const std::string& request_id,
+                                               const std::string& instruction) {
+  api::SubmitInstructionRequest request = UavSearch(request_id, instruction);
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  api::SearchArea* area = request.mutable_search_area();
+  area->set_min_x(-10.0);
+  area->set_min_y(-10.0);
+  area->set_max_x(40.0);
+  area->set_max_y(10.0);
+  return request;
+}
 
 // Seed-000 loop through the hub: frames -> VLM with codes drawn -> semantic values -> region
 // score after theta = 3 records -> EROI_UTILITY exploration requests carry the values.
@@ -551,13 +572,8 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
 // gateway time make one call.
 TEST(GatewayHubEroiTest, FailingVisionCallsBackOffInsteadOfAskingOnEveryFrame) {
   EroiHub fixture(GatewayConfig{});
-  api::SubmitInstructionRequest request = UavSearch("eroi-storm", "find the red backpack");
-  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
-  api::SearchArea* area = request.mutable_search_area();
-  area->set_min_x(-10.0);
-  area->set_min_y(-10.0);
-  area->set_max_x(40.0);
-  area->set_max_y(10.0);
+  const api::SubmitInstructionRequest request =
+      EroiSearchAlongX("eroi-storm", "find the red backpack");
   ASSERT_TRUE(fixture.hub.Submit(request).ok());
   const absl::Time start = absl::Now();
   for (int i = 0; i < 300; ++i) {
@@ -580,23 +596,11 @@ TEST(GatewayHubEroiTest, FailingVisionCallsBackOffInsteadOfAskingOnEveryFrame) {
 // A robot holding still sends the same view: one call, however many frames.
 TEST(GatewayHubEroiTest, OnlyANewViewIsAskedAbout) {
   EroiHub fixture(GatewayConfig{});
-  api::SubmitInstructionRequest request = UavSearch("eroi-view", "find the red backpack");
-  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
-  api::SearchArea* area = request.mutable_search_area();
-  area->set_min_x(-10.0);
-  area->set_min_y(-10.0);
-  area->set_max_x(40.0);
-  area->set_max_y(10.0);
+  const api::SubmitInstructionRequest request =
+      EroiSearchAlongX("eroi-view", "find the red backpack");
   ASSERT_TRUE(fixture.hub.Submit(request).ok());
   for (int i = 0; i < 20; ++i) {
-    ASSERT_TRUE(
-        fixture.hub
-            .OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.05 * i))
-            .ok());
-    if (fixture.model.asks.back().done) {
-      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
-      fixture.model.asks.back().done = nullptr;
-    }
+    fixture.ShowAndAnswer(Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 0.05 * i));
   }
   EXPECT_EQ(fixture.model.asks.size(), 1u);  // 0.95 m moved, not turned: the same view
   ASSERT_TRUE(
@@ -631,14 +635,7 @@ TEST(GatewayHubEroiTest, AFrameOfCodesAlreadyAskedAboutIsNotAsked) {
   area->set_max_y(20.0);
   ASSERT_TRUE(fixture.hub.Submit(request).ok());
   const auto show = [&](double yaw) {
-    ASSERT_TRUE(fixture.hub
-                    .OnCameraFrame(&fixture.session,
-                                   Posed(Frame(common::v1::IMAGE_ENCODING_PNG), 0.0, 0.0, yaw))
-                    .ok());
-    if (fixture.model.asks.back().done) {
-      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
-      fixture.model.asks.back().done = nullptr;
-    }
+    fixture.ShowAndAnswer(Posed(Frame(common::v1::IMAGE_ENCODING_PNG), 0.0, 0.0, yaw));
   };
   show(0.0);
   EXPECT_EQ(fixture.model.asks.size(), 1u);
@@ -655,24 +652,11 @@ TEST(GatewayHubEroiTest, AFrameOfCodesAlreadyAskedAboutIsNotAsked) {
 // to explore, so those answers were never used before the object was confirmed or set aside.
 TEST(GatewayHubEroiTest, NoVisionCallWhileTheTaskGoesForALocatedObject) {
   EroiHub fixture(GatewayConfig{});
-  api::SubmitInstructionRequest request = UavSearch("eroi-located", "find the cup");
-  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
-  api::SearchArea* area = request.mutable_search_area();
-  area->set_min_x(-10.0);
-  area->set_min_y(-10.0);
-  area->set_max_x(40.0);
-  area->set_max_y(10.0);
+  const api::SubmitInstructionRequest request = EroiSearchAlongX("eroi-located", "find the cup");
   absl::StatusOr<api::SubmitInstructionResponse> submitted = fixture.hub.Submit(request);
   ASSERT_TRUE(submitted.ok()) << submitted.status();
   const auto show = [&](double dx) {
-    ASSERT_TRUE(
-        fixture.hub
-            .OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), dx))
-            .ok());
-    if (fixture.model.asks.back().done) {
-      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
-      fixture.model.asks.back().done = nullptr;
-    }
+    fixture.ShowAndAnswer(Moved(Frame(common::v1::IMAGE_ENCODING_PNG), dx));
   };
   show(0.0);
   show(3.0);  // exploring: a new view asks
@@ -690,24 +674,12 @@ TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
   GatewayConfig config;
   config.model_proxy.calls.max_calls = 3;
   EroiHub fixture(config);
-  api::SubmitInstructionRequest request = UavSearch("eroi-budget", "find the red backpack");
-  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
-  api::SearchArea* area = request.mutable_search_area();
-  area->set_min_x(-10.0);
-  area->set_min_y(-10.0);
-  area->set_max_x(40.0);
-  area->set_max_y(10.0);
+  const api::SubmitInstructionRequest request =
+      EroiSearchAlongX("eroi-budget", "find the red backpack");
   absl::StatusOr<api::SubmitInstructionResponse> submitted = fixture.hub.Submit(request);
   ASSERT_TRUE(submitted.ok());
   for (int i = 0; i < 10; ++i) {
-    ASSERT_TRUE(
-        fixture.hub
-            .OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 3.0 * i))
-            .ok());
-    if (fixture.model.asks.back().done) {
-      fixture.model.Reply(fixture.model.asks.size() - 1, "No clue or passage.");
-      fixture.model.asks.back().done = nullptr;
-    }
+    fixture.ShowAndAnswer(Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 3.0 * i));
   }
   EXPECT_EQ(fixture.model.asks.size(), 3u);
   int budget_events = 0;
