@@ -377,8 +377,18 @@ void TaskExecutor::MaybeRequestModel() {
   }
   GroundingConfig grounding;
   grounding.max_objects = config_.grounding_max_objects;
+  // The model reads labels: an object whose appearance contradicts its label is not offered.
+  const SceneGraph* source = graph_.get();
+  SceneGraph without_contradicted;
+  if (std::any_of(graph_->objects.begin(), graph_->objects.end(),
+                  [&](const SceneObject& object) { return AppearanceContradicts(object); })) {
+    without_contradicted = *graph_;
+    std::erase_if(without_contradicted.objects,
+                  [&](const SceneObject& object) { return AppearanceContradicts(object); });
+    source = &without_contradicted;
+  }
   GroundedGraph grounded =
-      SelectiveGrounding(ActiveTarget(), *graph_, resolver_->matcher(), grounding);
+      SelectiveGrounding(ActiveTarget(), *source, resolver_->matcher(), grounding);
   // No candidate could be named: the proxy refuses an empty list, and asking again on every new
   // revision made a call (and a warning) every 200 ms while the robot explored.
   if (grounded.open_vocabulary) {
@@ -624,7 +634,19 @@ std::set<int64_t> TaskExecutor::SkippedObjects() const {
     const SceneObject* object = graph_->FindObject(id);
     if (object != nullptr && object->detection_count <= detections) skip.insert(id);
   }
+  for (const SceneObject& object : graph_->objects) {
+    if (AppearanceContradicts(object)) skip.insert(object.id);
+  }
   return skip;
+}
+
+bool TaskExecutor::AppearanceContradicts(const SceneObject& object) const {
+  if (config_.min_appearance_agreement <= 0.0 || text_embedding_.empty() ||
+      object.embedding.empty()) {
+    return false;
+  }
+  return Cosine(object.embedding, text_embedding_) < config_.min_appearance_agreement &&
+         ReadsAsTarget(object);
 }
 
 bool TaskExecutor::ReadsAsTarget(const SceneObject& object) const {
@@ -1225,8 +1247,7 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
   progress_.target =
       LocatedTarget{object->id, object->position,      decision.confidence, ResolutionPath::kSlow,
                     0,          ReadsAsTarget(*object)};
-  const bool searching = phase_ == Phase::kExploring || phase_ == Phase::kExploreScan;
-  return searching ? EnterSubgoal(now) : std::vector<RobotCommand>{};
+  return exploring() ? EnterSubgoal(now) : std::vector<RobotCommand>{};
 }
 
 std::vector<RobotCommand> TaskExecutor::OnVisionVerdict(double now, bool confirmed) {

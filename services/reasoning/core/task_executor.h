@@ -135,6 +135,15 @@ struct ExecutorConfig {
   // the view has too few detections to pass the threshold. VERIFY sets it aside when it is not
   // confirmed. Above 1 = off.
   double approach_label_match = 1.0;
+  // An object whose label reads as the target but whose appearance embedding lies further than
+  // this (cosine) from the target's text embedding is not a candidate: its label is a detector
+  // confusion (seed 002's embedding term; a road reported once as "car" keeps the road's look).
+  // Without that check the slow path, which reads labels, named such objects, and the task
+  // verified them or confirmed one (docs/performance/mission.md, "A label the appearance
+  // contradicts"). Only when both embeddings are known; 0 = off. 0.5 suits an embedding space
+  // where an object and its class name lie at cosine ~0.9 and other classes near 0 (the
+  // simulator's; docs/simulation.md); a CLIP-scale space (matching pairs at ~0.3) needs its own.
+  double min_appearance_agreement = 0.5;
   // Such a candidate detected only once is looked at again before the robot drives to it: the
   // robot turns to face it and holds for glance_s; one more detection and the approach starts,
   // none and it is passed by until the detector reports it again. A single detection is as often
@@ -279,8 +288,12 @@ class TaskExecutor {
   std::vector<RobotCommand> ReleaseTarget(double now, const std::string& reason);
   // Ruled out by VERIFY and still where it was then.
   bool RuledOut(int64_t id) const;
-  // Objects the resolver must not pick: excluded, set aside, or ruled out.
+  // Objects the resolver must not pick: excluded, set aside, ruled out, or with a label their
+  // appearance contradicts.
   std::set<int64_t> SkippedObjects() const;
+  // Labelled as the target, but its appearance embedding is far from the target's text embedding
+  // (min_appearance_agreement).
+  bool AppearanceContradicts(const SceneObject& object) const;
   // The object's current label still matches the active target.
   bool ReadsAsTarget(const SceneObject& object) const;
   std::vector<RobotCommand> Search(double now);

@@ -305,6 +305,41 @@ TEST_F(GatewayTaskExecutorTest, ExplorationSendsTheFootprintOnlyWhenAsked) {
   EXPECT_DOUBLE_EQ(planner_.exploration_queries.back().robot_radius_m, 0.0);
 }
 
+// Regression (issue 15, indoor with the model, home_03 start 3): the slow path reads labels, so an
+// object the detector labelled as the target by confusion (its appearance embedding is another
+// class's) was named by the model and confirmed: a "bowl" 11 m from any bowl. With the target's
+// text embedding known, such an object is not offered to the model; the same object with a look
+// that agrees is the fast path's.
+TEST_F(GatewayTaskExecutorTest, AnObjectWhoseAppearanceContradictsItsLabelIsNoCandidate) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
+  ExecutorConfig config;
+  config.model_available = true;
+  TaskExecutor task = Make(FindTarget(), config);
+  task.SetTextEmbedding({1, 0, 0, 0});
+  SceneObject confused = Extinguisher(3);
+  confused.embedding = {0, 1, 0, 0};  // another class's look: cosine 0
+  task.OnSceneGraph(0, GraphWith({confused}, 1));
+  task.Start(0, At(0));
+  EXPECT_EQ(task.progress().phase, "exploring");
+  EXPECT_FALSE(task.TakeModelRequest().has_value());  // nothing left to ask about
+  EXPECT_FALSE(task.progress().target.has_value());
+  confused.embedding = {0.9f, 0.3f, 0, 0};  // cosine 0.95
+  task.OnSceneGraph(1, GraphWith({confused}, 2));
+  ASSERT_TRUE(task.progress().target.has_value());
+  EXPECT_EQ(task.progress().target->object_id, 7);
+  // Off (0): the confused object is offered to the model again, as before.
+  config.min_appearance_agreement = 0.0;
+  TaskExecutor unchecked = Make(FindTarget(), config);
+  unchecked.SetTextEmbedding({1, 0, 0, 0});
+  confused.embedding = {0, 1, 0, 0};
+  unchecked.OnSceneGraph(0, GraphWith({confused}, 1));
+  unchecked.Start(0, At(0));
+  std::optional<ModelRequest> request = unchecked.TakeModelRequest();
+  ASSERT_TRUE(request.has_value());
+  ASSERT_EQ(request->grounded.objects.size(), 1u);
+  EXPECT_EQ(request->grounded.objects[0].id, 7);
+}
+
 TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppears) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
   ExecutorConfig config;

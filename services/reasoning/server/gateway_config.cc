@@ -80,6 +80,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("time_budget_s", &c.executor.time_budget_s)
       .Read("endgame_s", &c.executor.endgame_s)
       .Read("approach_label_match", &c.executor.approach_label_match)
+      .Read("min_appearance_agreement", &c.executor.min_appearance_agreement)
       .Read("glance_s", &c.executor.glance_s);
   executor.Check(
       c.executor.explore_scan_duration_s >= 0.0 && c.executor.explore_scan_duration_s <= 120.0,
@@ -132,6 +133,10 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(
       std::isfinite(c.executor.approach_label_match) && c.executor.approach_label_match >= 0.0,
       "approach_label_match", "must be a finite value >= 0 (above 1 = off)");
+  executor.Check(std::isfinite(c.executor.min_appearance_agreement) &&
+                     c.executor.min_appearance_agreement >= 0.0 &&
+                     c.executor.min_appearance_agreement <= 1.0,
+                 "min_appearance_agreement", "must be in [0, 1] (0 = off)");
   executor.Check(std::isfinite(c.executor.glance_s) && c.executor.glance_s >= 0.0 &&
                      c.executor.glance_s <= 30.0,
                  "glance_s", "must be in [0, 30] (0 = no glance)");

@@ -132,7 +132,9 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
         "executor: {time_budget_s: -1}", "executor: {max_blocks_per_goal: 0}",
         "executor: {explore_scan_duration_s: -1}", "executor: {explore_scan_duration_s: 121}",
         "executor: {start_scan_duration_s: -0.5}", "executor: {explore_reselect_s: -1}",
-        "executor: {explore_reselect_s: .nan}", "executor: {explore_keep_radius_m: 51}"}) {
+        "executor: {explore_reselect_s: .nan}", "executor: {explore_keep_radius_m: 51}",
+        "executor: {min_appearance_agreement: 1.5}",
+        "executor: {min_appearance_agreement: -0.1}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
     const absl::Status status = GatewayConfig::FromYaml(*bad).status();
