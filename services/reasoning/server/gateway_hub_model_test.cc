@@ -490,17 +490,25 @@ struct EroiHub {
   RecordingSink session;
 };
 
-// An EROI_UTILITY search over the area from (-10, -10) to (40, 10): Frame()'s view along x.
-api::SubmitInstructionRequest EroiSearchAlongX(const std::string& request_id,
-                                               const std::string& instruction) {
+// An EROI_UTILITY search over the area from `min` to `max`.
+api::SubmitInstructionRequest EroiSearchOver(const std::string& request_id,
+                                             const std::string& instruction,
+                                             const Eigen::Vector2d& min,
+                                             const Eigen::Vector2d& max) {
   api::SubmitInstructionRequest request = UavSearch(request_id, instruction);
   request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
   api::SearchArea* area = request.mutable_search_area();
-  area->set_min_x(-10.0);
-  area->set_min_y(-10.0);
-  area->set_max_x(40.0);
-  area->set_max_y(10.0);
+  area->set_min_x(min.x());
+  area->set_min_y(min.y());
+  area->set_max_x(max.x());
+  area->set_max_y(max.y());
   return request;
+}
+
+// The area ahead of Frame()'s view along x.
+api::SubmitInstructionRequest EroiSearchAlongX(const std::string& request_id,
+                                               const std::string& instruction) {
+  return EroiSearchOver(request_id, instruction, {-10.0, -10.0}, {40.0, 10.0});
 }
 
 // Seed-000 loop through the hub: frames -> VLM with codes drawn -> semantic values -> region
@@ -626,13 +634,8 @@ api::CameraFrame Posed(api::CameraFrame frame, double x, double y, double yaw) {
 // at least half the printed codes must be new to the model.
 TEST(GatewayHubEroiTest, AFrameOfCodesAlreadyAskedAboutIsNotAsked) {
   EroiHub fixture(GatewayConfig{});
-  api::SubmitInstructionRequest request = UavSearch("eroi-codes", "find the red backpack");
-  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
-  api::SearchArea* area = request.mutable_search_area();
-  area->set_min_x(-20.0);
-  area->set_min_y(-20.0);
-  area->set_max_x(20.0);
-  area->set_max_y(20.0);
+  const api::SubmitInstructionRequest request =
+      EroiSearchOver("eroi-codes", "find the red backpack", {-20.0, -20.0}, {20.0, 20.0});
   ASSERT_TRUE(fixture.hub.Submit(request).ok());
   const auto show = [&](double yaw) {
     fixture.ShowAndAnswer(Posed(Frame(common::v1::IMAGE_ENCODING_PNG), 0.0, 0.0, yaw));
@@ -697,13 +700,8 @@ TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
 TEST(GatewayHubEroiTest, SearchAreaIsTheVolumeWhenNoneIsConfigured) {
   EroiHub fixture(GatewayConfig{});  // no eroi section
   RecordingExplorer& explorer = fixture.explorer;
-  api::SubmitInstructionRequest request = UavSearch("eroi-area", "find the red backpack");
-  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
-  api::SearchArea* area = request.mutable_search_area();
-  area->set_min_x(-6.0);
-  area->set_min_y(0.0);
-  area->set_max_x(4.0);
-  area->set_max_y(8.0);
+  const api::SubmitInstructionRequest request =
+      EroiSearchOver("eroi-area", "find the red backpack", {-6.0, 0.0}, {4.0, 8.0});
   ASSERT_TRUE(fixture.hub.Submit(request).ok());
   ASSERT_EQ(explorer.contexts.size(), 1u);
   ASSERT_EQ(explorer.contexts[0].eroi_values.size(), 20u);  // 5 x 4 centres cover 10 x 8 m
