@@ -419,6 +419,9 @@ void TaskExecutor::MaybeRequestModel() {
   } else {
     open_vocabulary_pending_.clear();
   }
+  offered_labels_.clear();
+  for (const SceneObject& object : grounded.graph.objects)
+    offered_labels_[object.id] = object.label;
   ModelRequest request;
   request.graph_revision = requested_revision_ = graph_->revision;
   request.request = BuildResolveRequest(instruction_, ActiveTarget(), grounded.graph);
@@ -1241,6 +1244,15 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
   if (object == nullptr) {
     progress_.reason =
         absl::StrCat("model answer for revision ", graph_revision, " names a vanished object");
+    return {};
+  }
+  // The model reads labels. One mapping has since outvoted was judged, not this object (a road
+  // first detected as a "car" was named the car, and then driven to and verified as one).
+  if (auto offered = offered_labels_.find(object->id);
+      offered != offered_labels_.end() && offered->second != object->label) {
+    progress_.reason =
+        absl::StrCat("model named object ", object->id, " as \"", offered->second,
+                     "\"; mapping now labels it \"", object->label, "\": asking again");
     return {};
   }
   // A vision-verify answer is only a candidate: the VERIFY subgoal confirms or rejects it.

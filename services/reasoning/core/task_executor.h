@@ -443,6 +443,8 @@ class TaskExecutor {
   // target (not shown again, so a class seen later gets its turn within the grounding budget).
   std::set<std::string> open_vocabulary_pending_;
   std::set<std::string> open_vocabulary_rejected_;
+  // The label of each object the request in flight offered: the model judged that label.
+  std::map<int64_t, std::string> offered_labels_;
   bool awaiting_model_ = false;
   std::optional<ModelRequest> pending_request_;
   struct DependencyWait {

@@ -530,6 +530,27 @@ TEST_F(GatewayTaskExecutorTest, SlowTargetTakenForItsLabelIsDroppedWhenTheLabelI
   EXPECT_EQ(out[0].kind, CommandKind::kNavigate);  // exploring again
 }
 
+// Regression (outdoor with the simulated VLM, outdoor_building_vehicles start 0 seed 2, "find
+// car"): the road's first detection came labelled "car"; the model was offered it under that
+// label and named it, but by the answer mapping had relabelled it "road". Taken anyway, it was
+// driven to and verified (VERIFY counts detections), and the episode ended 22 m from any car.
+TEST_F(GatewayTaskExecutorTest, AnswerAboutALabelMappingHasSinceChangedIsNotTaken) {
+  TaskExecutor task = AskingTheModel();  // object 7 offered as an extinguisher
+  task.OnSceneGraph(1, GraphWith({LabelledAs(Extinguisher(1), "chair")}, 2));
+  const std::vector<RobotCommand> out = task.OnSlowDecision(2, 1, ModelNamesObject(7));
+  EXPECT_TRUE(out.empty());
+  EXPECT_FALSE(task.progress().target.has_value());
+  EXPECT_TRUE(absl::StrContains(task.progress().reason,
+                                "model named object 7 as \"fire extinguisher\"; mapping now "
+                                "labels it \"chair\""))
+      << task.progress().reason;
+  // The same answer about an unchanged label is taken.
+  TaskExecutor unchanged = AskingTheModel();
+  unchanged.OnSceneGraph(1, GraphWith({Extinguisher(1)}, 2));
+  ASSERT_EQ(unchanged.OnSlowDecision(2, 1, ModelNamesObject(7)).size(), 1u);
+  EXPECT_TRUE(unchanged.progress().target.has_value());
+}
+
 // An open-vocabulary answer (a "printer" for "复印机") never read as the target by its label:
 // a relabelling is not a reason to drop it.
 TEST_F(GatewayTaskExecutorTest, SlowTargetNamedAcrossLabelsIsKeptWhenItsLabelChanges) {
