@@ -22,7 +22,8 @@ EroiSearch::EroiSearch(std::string target, EroiGrid grid, const EroiSearchConfig
                                                         : config.grid.delta),
       mapping_config_(config.mapping),
       regions_(grid_.get(), config.regions),
-      values_(grid_->size()) {}
+      values_(grid_->size()),
+      evidence_once_per_code_(config.evidence_once_per_code) {}
 
 EroiObservation EroiSearch::Annotate(const Eigen::Vector3d& position,
                                      const Eigen::Quaterniond& orientation,
@@ -51,7 +52,9 @@ EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
     absl::StatusOr<Eigen::Vector3d> centre = grid_->Decode(pair.code);
     if (!centre.ok()) continue;  // a code the VLM invented or misread
     ++evidence.codes_used;
-    values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
+    const bool first_time = evidenced_codes_.insert(pair.code).second;
+    if (first_time || !evidence_once_per_code_)
+      values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
     absl::StatusOr<std::optional<RegionDue>> due = regions_.Add(*centre, pair.description);
     if (due.ok() && due->has_value()) evidence.due.push_back(**due);
   }

@@ -25,6 +25,9 @@ struct EroiSearchConfig {
   InverseMappingConfig mapping;    // code label window and drawing
   RegionMapConfig regions;         // region units and theta
   double evidence_radius_m = 0.0;  // r of N_r (eq. 18); 0 = one EROI edge (the seed gives no value)
+  // A code the VLM names again adds no evidence: overlapping views of one passage are one
+  // observation, not independent ones. false = eq. 20 on every answer, as the seed writes.
+  bool evidence_once_per_code = true;
 };
 
 // A camera frame ready for the VLM: the prompt and the codes drawn into the image.
@@ -81,6 +84,8 @@ class EroiSearch {
   RegionMap regions_;
   SemanticValues values_;
   std::set<std::string> asked_codes_;  // printed into a frame the VLM was asked about
+  bool evidence_once_per_code_;
+  std::set<std::string> evidenced_codes_;  // named in an answer (evidence_once_per_code)
 };
 
 }  // namespace semnav::reasoning

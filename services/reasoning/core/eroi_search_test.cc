@@ -36,7 +36,9 @@ TEST(GatewayEroiSearchTest, VlmCodesAreStrongEvidenceWithinOneEdgeByHand) {
 }
 
 TEST(GatewayEroiSearchTest, ThirdRecordInARegionUnitTriggersTheRegionScoreByHand) {
-  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", Config());
+  EroiSearchConfig seed_literal = Config();
+  seed_literal.evidence_once_per_code = false;  // C2A's second answer is evidence again
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", seed_literal);
   ASSERT_TRUE(search.ok());
   search->OnVlmAnswer("Code: C2A, Description: shelf");
   search->OnVlmAnswer("Code: C2A, Description: counter");
@@ -56,6 +58,21 @@ TEST(GatewayEroiSearchTest, ThirdRecordInARegionUnitTriggersTheRegionScoreByHand
   EXPECT_NEAR(search->values().value(Flat(*search, 2, 1)), before, 1e-15);  // unchanged
   ASSERT_TRUE(search->OnRegionAnswer(region, "Score: 4").ok());
   EXPECT_NEAR(search->values().value(Flat(*search, 2, 1)), 0.392 + 0.608 * 0.2, 1e-12);
+}
+
+// Overlapping views name the same passage frame after frame: by default a code counts once
+// (0.05 -> 0.24, and 0.24 again), still a record of the region map; the seed's eq. 20 on every
+// answer gives 0.392 (the test above).
+TEST(GatewayEroiSearchTest, ACodeNamedAgainAddsNoEvidenceByHand) {
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("red mug", Config());
+  ASSERT_TRUE(search.ok());
+  search->OnVlmAnswer("Code: C2A, Description: road leading on");
+  EXPECT_EQ(search->OnVlmAnswer("code: c2a, description: road leading on").codes_used, 1);
+  EXPECT_NEAR(search->values().value(Flat(*search, 2, 1)), 0.24, 1e-12);
+  const EroiEvidence third = search->OnVlmAnswer("Code: D1A, Description: sink");
+  EXPECT_EQ(third.due.size(), 1u);  // three records of the unit, as before
+  // D1A's first time: (3, 0) at the grid's edge has m = 4, (1 - 1/4) 0.05 + 1/4 = 0.2875.
+  EXPECT_NEAR(search->values().value(Flat(*search, 3, 0)), 0.2875, 1e-12);
 }
 
 TEST(GatewayEroiSearchTest, PlanarValuesAndWindowMatchPlanningsRowMajorEroiGrid) {

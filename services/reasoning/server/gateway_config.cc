@@ -262,6 +262,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("ny", &search.grid.ny)
         .Read("nz", &search.grid.nz)
         .Read("evidence_radius_m", &search.evidence_radius_m)
+        .Read("evidence_once_per_code", &search.evidence_once_per_code)
         .Read("region_size", &search.regions.region_size)
         .Read("theta", &search.regions.theta)
         .Read("min_distance_m", &search.mapping.min_distance_m)

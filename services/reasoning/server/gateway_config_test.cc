@@ -39,7 +39,8 @@ TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
 TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
       "model_proxy: {address: 127.0.0.1:50054, deadline_ms: 800, vision_alias: vision}\n"
-      "eroi: {min: [-10, -20, 0], nx: 9, ny: 19, nz: 2, theta: 4}\n");
+      "eroi: {min: [-10, -20, 0], nx: 9, ny: 19, nz: 2, theta: 4, evidence_once_per_code: "
+      "false}\n");
   ASSERT_TRUE(reader.ok());
   const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
@@ -52,10 +53,12 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
   EXPECT_DOUBLE_EQ(config.eroi->grid.min.y(), -20.0);
   EXPECT_EQ(config.eroi->grid.nz, 2);
   EXPECT_EQ(config.eroi->regions.theta, 4);
+  EXPECT_FALSE(config.eroi->evidence_once_per_code);  // true by default
 
   for (const char* yaml :
        {"model_proxy: {address: x, deadline_ms: 0}", "model_proxy: {address: x, max_in_flight: 64}",
-        "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}"}) {
+        "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}",
+        "eroi: {evidence_once_per_code: 3}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
     const absl::Status status = GatewayConfig::FromYaml(*bad).status();

@@ -566,12 +566,13 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   EXPECT_EQ(hub.GetTask(submitted->task_id())->model_calls(),
             5);  // 3 frames, 1 region, 1 embedding
 
-  // The next exploration request carries the values: (2, 1) got C2A twice (0.392) then the
-  // region score 5 over k = 4 (eq. 22): 0.392 + 0.608 * 5 / 20 = 0.544.
+  // The next exploration request carries the values: (2, 1) got C2A's evidence once (0.24; a
+  // code counts once by default) then the region score 5 over k = 4 (eq. 22):
+  // 0.24 + 0.76 * 5 / 20 = 0.43.
   const api::RobotCommand explore = session.Last();
   Reached(hub, session, explore);  // -> next exploration goal
   ASSERT_EQ(explorer.contexts.size(), 2u);
-  EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.544, 1e-12);
+  EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.43, 1e-12);
 }
 
 // Regression (issue 15, the 636-call storm): with the offline proxy every vision call failed
