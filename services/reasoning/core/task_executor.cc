@@ -1246,8 +1246,9 @@ std::vector<RobotCommand> TaskExecutor::OnSlowDecision(double now, uint64_t grap
         absl::StrCat("model answer for revision ", graph_revision, " names a vanished object");
     return {};
   }
-  // The model reads labels. One mapping has since outvoted was judged, not this object (a road
-  // first detected as a "car" was named the car, and then driven to and verified as one).
+  // The model judged the label it was offered. If mapping has relabelled the object since, the
+  // answer is about that old label (a road first detected as a "car" was named, then driven to
+  // and verified as the car).
   if (auto offered = offered_labels_.find(object->id);
       offered != offered_labels_.end() && offered->second != object->label) {
     progress_.reason =

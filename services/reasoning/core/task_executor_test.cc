@@ -544,6 +544,10 @@ TEST_F(GatewayTaskExecutorTest, AnswerAboutALabelMappingHasSinceChangedIsNotTake
                                 "model named object 7 as \"fire extinguisher\"; mapping now "
                                 "labels it \"chair\""))
       << task.progress().reason;
+  SceneObject another = Extinguisher(1);
+  another.id = 8;
+  task.OnSceneGraph(3, GraphWith({LabelledAs(Extinguisher(2), "chair"), another}, 3));
+  EXPECT_TRUE(task.TakeModelRequest().has_value());  // asked again on the next revision
   // The same answer about an unchanged label is taken.
   TaskExecutor unchanged = AskingTheModel();
   unchanged.OnSceneGraph(1, GraphWith({Extinguisher(1)}, 2));
