@@ -52,8 +52,7 @@ EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
     absl::StatusOr<Eigen::Vector3d> centre = grid_->Decode(pair.code);
     if (!centre.ok()) continue;  // a code the VLM invented or misread
     ++evidence.codes_used;
-    const bool first_time = evidenced_codes_.insert(pair.code).second;
-    if (first_time || !evidence_once_per_code_)
+    if (!evidence_once_per_code_ || evidenced_codes_.insert(pair.code).second)
       values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
     absl::StatusOr<std::optional<RegionDue>> due = regions_.Add(*centre, pair.description);
     if (due.ok() && due->has_value()) evidence.due.push_back(**due);

@@ -85,7 +85,7 @@ class EroiSearch {
   SemanticValues values_;
   std::set<std::string> asked_codes_;  // printed into a frame the VLM was asked about
   bool evidence_once_per_code_;
-  std::set<std::string> evidenced_codes_;  // named in an answer (evidence_once_per_code)
+  std::set<std::string> evidenced_codes_;  // named in an answer; kept with evidence_once_per_code
 };
 
 }  // namespace semnav::reasoning

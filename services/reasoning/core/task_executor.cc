@@ -378,13 +378,14 @@ void TaskExecutor::MaybeRequestModel() {
   GroundingConfig grounding;
   grounding.max_objects = config_.grounding_max_objects;
   // The model reads labels: an object whose appearance contradicts its label is not offered.
+  const auto contradicted = [this](const SceneObject& object) {
+    return AppearanceContradicts(object);
+  };
   const SceneGraph* source = graph_.get();
   SceneGraph without_contradicted;
-  if (std::any_of(graph_->objects.begin(), graph_->objects.end(),
-                  [&](const SceneObject& object) { return AppearanceContradicts(object); })) {
+  if (std::any_of(graph_->objects.begin(), graph_->objects.end(), contradicted)) {
     without_contradicted = *graph_;
-    std::erase_if(without_contradicted.objects,
-                  [&](const SceneObject& object) { return AppearanceContradicts(object); });
+    std::erase_if(without_contradicted.objects, contradicted);
     source = &without_contradicted;
   }
   GroundedGraph grounded =
