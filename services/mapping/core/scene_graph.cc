@@ -32,10 +32,21 @@ double Cosine(const std::vector<float>& a, const std::vector<float>& b) {
 }
 
 SceneObject* SceneGraph::Match(const ObjectObservation& observation) {
+  // A view from a pose the robot does not trust is in an unknown frame: merged into a trusted
+  // instance it would drag that instance toward the wrong place and hide the view from
+  // relocalization, which needs what the robot sees in its own frame. A trusted view prefers the
+  // trusted instances, and joins one found while the robot was lost only when none matches.
+  if (observation.pose_untrusted) return MatchAmong(observation, /*untrusted=*/true);
+  SceneObject* trusted = MatchAmong(observation, /*untrusted=*/false);
+  return trusted != nullptr ? trusted : MatchAmong(observation, /*untrusted=*/true);
+}
+
+SceneObject* SceneGraph::MatchAmong(const ObjectObservation& observation, bool untrusted) {
   SceneObject* best = nullptr;
   if (!observation.embedding.empty()) {
     double best_cosine = config_.embedding_min_cosine;
     for (SceneObject& o : objects_) {
+      if (o.pose_untrusted != untrusted) continue;
       if ((o.position - observation.position).norm() > config_.embedding_max_distance_m) continue;
       const double c = Cosine(o.embedding, observation.embedding);
       if (c >= best_cosine) {
@@ -48,6 +59,7 @@ SceneObject* SceneGraph::Match(const ObjectObservation& observation) {
   // Fallback for instances the embedding cannot judge (either side has none).
   double best_distance = config_.label_max_distance_m;
   for (SceneObject& o : objects_) {
+    if (o.pose_untrusted != untrusted) continue;
     if (o.label != observation.label) continue;
     if (!observation.embedding.empty() && o.embedding.size() == observation.embedding.size())
       continue;

@@ -57,8 +57,9 @@ class SceneGraph {
 
   // Matches each observation to an instance embedding-first (best cosine >= embedding_min_cosine
   // within embedding_max_distance_m), else by same label nearest within label_max_distance_m among
-  // instances the embedding cannot judge (one side has none: two differing embeddings never merge);
-  // merges with EMA (position, size, embedding), counts detections and averages scores; new
+  // instances the embedding cannot judge (one side has none: two differing embeddings never merge).
+  // A view with pose_untrusted matches only untrusted instances; a trusted view trusted ones
+  // first. Merges with EMA (position, size, embedding), counts detections and averages scores; new
   // instances otherwise. Then prunes stale single detections (relative to `now_ns`) and rebuilds
   // relations and regions. Bumps the revision when anything changed.
   // Both overloads return the instances they removed.
@@ -89,6 +90,8 @@ class SceneGraph {
 
  private:
   SceneObject* Match(const ObjectObservation& observation);
+  // Match among the instances whose pose_untrusted equals `untrusted`.
+  SceneObject* MatchAmong(const ObjectObservation& observation, bool untrusted);
   void Merge(SceneObject& object, const ObjectObservation& observation);
   void Rebuild();
 

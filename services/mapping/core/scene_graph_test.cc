@@ -61,6 +61,35 @@ TEST(SceneGraphTest, EmbeddingMatchWinsOverNearestSameLabel) {
   EXPECT_EQ(graph.objects()[1].detection_count, 3);
 }
 
+// A kidnapped robot sees its map's chair from a pose 1 m off: the view is kept apart (the chair
+// stays where it was) and the robot's next untrusted views of it gather there.
+TEST(SceneGraphTest, AnUntrustedViewNeverMovesATrustedInstance) {
+  SceneGraph graph{SceneGraphConfig{}};
+  graph.Integrate({Obs("chair", {0, 0, 0}, 0.8, {1, 0, 0})}, 0);
+  ObjectObservation lost = Obs("chair", {1, 0, 0}, 0.8, {1, 0, 0});
+  lost.pose_untrusted = true;
+  graph.Integrate({lost}, 0);
+  ASSERT_EQ(graph.objects().size(), 2u);
+  EXPECT_EQ(graph.objects()[0].position, Eigen::Vector3d::Zero());
+  EXPECT_FALSE(graph.objects()[0].pose_untrusted);
+  EXPECT_EQ(graph.objects()[0].detection_count, 1);
+  EXPECT_TRUE(graph.objects()[1].pose_untrusted);
+  lost.position = {1.1, 0, 0};
+  graph.Integrate({lost}, 0);
+  ASSERT_EQ(graph.objects().size(), 2u);
+  EXPECT_EQ(graph.objects()[1].detection_count, 2);
+  EXPECT_NEAR(graph.objects()[1].position.x(), 1.03, 1e-12);  // 0.3 * 1.1 + 0.7 * 1
+  // The same without an embedding (the label fallback).
+  ObjectObservation lost_plain = Obs("table", {0.5, 0, 0});
+  lost_plain.pose_untrusted = true;
+  graph.Integrate({Obs("table", {0, 0, 0})}, 0);
+  graph.Integrate({lost_plain}, 0);
+  EXPECT_EQ(graph.objects().size(), 4u);
+  // A trusted view still merges into the trusted chair.
+  graph.Integrate({Obs("chair", {0.1, 0, 0}, 0.8, {1, 0, 0})}, 0);
+  EXPECT_EQ(graph.objects()[0].detection_count, 2);
+}
+
 TEST(SceneGraphTest, LabelIsTheBestScoredOfTheMergedDetections) {
   SceneGraph graph{SceneGraphConfig{}};
   // The first detection was a confusion (couch seen as "oven"); the embedding is the couch's.
