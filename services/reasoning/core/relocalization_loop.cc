@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 #include "absl/strings/str_format.h"
+#include "services/reasoning/core/fast_resolver.h"
 
 namespace semnav::reasoning {
 namespace {
@@ -145,6 +147,11 @@ std::vector<RelocalizationAction> RelocalizationLoop::Start(double now, const st
                                                             const SceneGraph& graph) {
   trigger_ = trigger;
   attempt_ = 0;
+  map_objects_.clear();
+  for (const SceneObject& object : graph.objects) {
+    if (!object.embedding.empty()) map_objects_.push_back(object);
+  }
+  turn_objects_.clear();
   paused_task_ = true;  // the hub pauses only a running task; resuming a task it did not pause is a
                         // no-op there
   std::vector<RelocalizationAction> actions;
@@ -163,6 +170,15 @@ std::vector<RelocalizationAction> RelocalizationLoop::LookAround(double now,
                                                                  const SceneGraph& graph) {
   std::vector<RelocalizationAction> actions;
   if (phase_ == Phase::kLookingAround) {
+    turn_objects_.clear();
+    std::unordered_set<int64_t> on_the_map;
+    for (const SceneObject& m : map_objects_) on_the_map.insert(m.id);
+    for (const SceneObject& object : graph.objects) {
+      if (on_the_map.count(object.id) == 0 && !object.embedding.empty() &&
+          object.detection_count >= config_.min_object_detections) {
+        turn_objects_.push_back(object);
+      }
+    }
     std::vector<ObservedObject> observed = Observed(graph);
     if (static_cast<int>(observed.size()) < config_.min_observed_objects) {
       return FailedOrGlobal(now,
@@ -350,7 +366,22 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnRefinement(
                                            refinement.status().message()),
                            SceneGraph{});
     }
-    if (!refinement->refined) {
+    // A refused match may still be taken when the turn's objects confirm it.
+    const bool may_confirm = !refinement->refined && config_.confirm_min_objects > 0 &&
+                             refinement->score >= config_.confirm_min_score &&
+                             refinement->ray_conflicts <= config_.confirm_max_ray_conflicts;
+    const int confirming = may_confirm ? ConfirmingObjects(refinement->map_from_reported) : 0;
+    std::string how;
+    if (refinement->refined) {
+      how = absl::StrFormat("global scan match (score %.2f, the best other pose %.2f) after: %s",
+                            refinement->score, refinement->runner_up_score, failed_why_);
+    } else if (may_confirm && confirming >= config_.confirm_min_objects) {
+      how = absl::StrFormat(
+          "global scan match confirmed by %d objects (score %.2f, the best other pose %.2f, rays "
+          "through walls %.0f %%) after: %s",
+          confirming, refinement->score, refinement->runner_up_score,
+          100.0 * refinement->ray_conflicts, failed_why_);
+    } else {
       // Where the best pose would put the robot, so that a log can tell a right answer refused
       // from a wrong one.
       const RobotPose best = Compose(refinement->map_from_reported, map_from_odom_).Apply(pose_);
@@ -366,10 +397,7 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnRefinement(
     RelocalizationAnswer found;
     found.map_from_odom = Compose(refinement->map_from_reported, map_from_odom_);
     found.reliable = true;
-    return Apply(now, found,
-                 absl::StrFormat("global scan match (score %.2f, the best other pose %.2f) after: "
-                                 "%s",
-                                 refinement->score, refinement->runner_up_score, failed_why_));
+    return Apply(now, found, how);
   }
   if (!refinement.ok()) {
     return Apply(now, pending_,
@@ -388,6 +416,25 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnRefinement(
                absl::StrFormat("scan-refined by %.2f m, %.1f deg (score %.2f -> %.2f)",
                                change.translation.head<2>().norm(), change.yaw * 180.0 / M_PI,
                                refinement->coarse_score, refinement->score));
+}
+
+int RelocalizationLoop::ConfirmingObjects(const PlanarTransform& map_from_reported) const {
+  std::vector<bool> used(turn_objects_.size(), false);
+  int confirming = 0;
+  for (const SceneObject& on_map : map_objects_) {
+    for (size_t i = 0; i < turn_objects_.size(); ++i) {
+      if (used[i]) continue;
+      const Eigen::Vector3d at = map_from_reported.Apply(turn_objects_[i].position);
+      if ((at - on_map.position).head<2>().norm() > config_.confirm_distance_m) continue;
+      if (Cosine(turn_objects_[i].embedding, on_map.embedding) < config_.confirm_min_cosine) {
+        continue;
+      }
+      used[i] = true;
+      ++confirming;
+      break;
+    }
+  }
+  return confirming;
 }
 
 std::vector<RelocalizationAction> RelocalizationLoop::Apply(double now,

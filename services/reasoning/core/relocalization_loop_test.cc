@@ -516,5 +516,93 @@ TEST(RelocalizationLoopScanRefinementTest, ANonUniqueGlobalMatchOnTheLastAttempt
   EXPECT_FALSE(loop.trusted());
 }
 
+// The robot believes it stands 10 m east of where it does. Its turn finds two chairs, at (11, 0)
+// and (15, 0) in the frame it believes: too few for relocalization, so the whole map is
+// scan-matched. The best pose (10 m west) scores below min_score, but it puts both chairs on the
+// map's chairs 1 and 2.
+SceneGraph TurnFinds(const std::vector<SceneObject>& found) {
+  SceneGraph graph = Before();
+  graph.revision = 2;
+  graph.objects.insert(graph.objects.end(), found.begin(), found.end());
+  return graph;
+}
+
+std::vector<RelocalizationAction> GlobalAnswer(RelocalizationLoop& loop, const SceneGraph& turn,
+                                               double score, double ray_conflicts,
+                                               double west_m = 10.0) {
+  loop.OnRequest(0.0, "", Before());
+  const std::vector<RelocalizationAction> asked =
+      loop.OnState(12.0, Pose(0, 0), LocalizationReport::kLost, turn, true);
+  EXPECT_EQ(Kinds(asked), (std::vector<Kind>{Kind::kRefine}));
+  EXPECT_TRUE(!asked.empty() && asked[0].global);
+  ScanRefinement refused;
+  refused.refined = false;
+  refused.map_from_reported = PlanarTransform{Eigen::Vector3d(-west_m, 0.0, 0.0), 0.0};
+  refused.score = score;
+  refused.runner_up_score = 0.4;
+  refused.ray_conflicts = ray_conflicts;
+  return loop.OnRefinement(12.5, refused);
+}
+
+TEST(RelocalizationLoopScanRefinementTest, ObjectsTheTurnFoundConfirmARefusedGlobalMatch) {
+  const SceneGraph turn = TurnFinds({Object(3, 11, 0, 2), Object(4, 15, 0, 2)});
+  RelocalizationLoop loop(RefiningConfig());
+  std::vector<RelocalizationAction> actions = GlobalAnswer(loop, turn, 0.5, 0.1);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  EXPECT_TRUE(absl::StrContains(actions[0].message,
+                                "global scan match confirmed by 2 objects (score 0.50, the best "
+                                "other pose 0.40, rays through walls 10 %) after: the look-around "
+                                "saw 2 objects, 3 needed"))
+      << actions[0].message;
+  EXPECT_NEAR(loop.map_from_odom().translation.x(), -10.0, 1e-12);
+  EXPECT_TRUE(loop.trusted());
+
+  // Each bound refuses it: too many rays through walls, too low a score, only one chair within
+  // 0.5 m (the pose 10.4 m west puts them 0.4 m off: still two; 10.6 m: none), a chair that
+  // looks different, and the rule turned off.
+  const auto refused = [](const std::vector<RelocalizationAction>& a) {
+    return Kinds(a) == std::vector<Kind>{Kind::kCommand} &&
+           a[0].command.kind == CommandKind::kRotate;
+  };
+  RelocalizationLoop walls(RefiningConfig());
+  EXPECT_TRUE(refused(GlobalAnswer(walls, turn, 0.5, 0.16)));
+  RelocalizationLoop low(RefiningConfig());
+  EXPECT_TRUE(refused(GlobalAnswer(low, turn, 0.44, 0.1)));
+  RelocalizationLoop near(RefiningConfig());
+  EXPECT_EQ(Kinds(GlobalAnswer(near, turn, 0.5, 0.1, 10.4)),
+            (std::vector<Kind>{Kind::kCorrect, Kind::kResumeTask}));
+  RelocalizationLoop off_by(RefiningConfig());
+  EXPECT_TRUE(refused(GlobalAnswer(off_by, turn, 0.5, 0.1, 10.6)));
+  SceneObject other = Object(4, 15, 0, 2);
+  other.embedding = {0.0f, 1.0f};
+  RelocalizationLoop looks_different(RefiningConfig());
+  EXPECT_TRUE(
+      refused(GlobalAnswer(looks_different, TurnFinds({Object(3, 11, 0, 2), other}), 0.5, 0.1)));
+  RelocalizationLoopConfig off = RefiningConfig();
+  off.confirm_min_objects = 0;
+  RelocalizationLoop without(off);
+  EXPECT_TRUE(refused(GlobalAnswer(without, turn, 0.5, 0.1)));
+}
+
+// One object of the turn confirms one map object: two map chairs 0.3 m apart under one found
+// chair are one confirmation, and objects already on the map before the loss confirm nothing.
+TEST(RelocalizationLoopScanRefinementTest, EachFoundObjectConfirmsOneMapObject) {
+  SceneGraph before{1, {Object(1, 1, 0, 4), Object(2, 1.3, 0, 3)}, {}, {}};
+  SceneGraph turn = before;
+  turn.objects.push_back(Object(3, 11.1, 0, 2));
+  turn.objects[0].detection_count = 9;  // seen again in the turn, but on the map before
+  RelocalizationLoop loop(RefiningConfig());
+  loop.OnRequest(0.0, "", before);
+  ASSERT_EQ(Kinds(loop.OnState(12.0, Pose(0, 0), LocalizationReport::kLost, turn, true)),
+            (std::vector<Kind>{Kind::kRefine}));
+  ScanRefinement refused;
+  refused.map_from_reported = PlanarTransform{Eigen::Vector3d(-10.0, 0.0, 0.0), 0.0};
+  refused.score = 0.55;
+  const std::vector<RelocalizationAction> actions = loop.OnRefinement(12.5, refused);
+  ASSERT_EQ(Kinds(actions), (std::vector<Kind>{Kind::kCommand}));
+  EXPECT_EQ(actions[0].command.kind, CommandKind::kRotate);
+  EXPECT_EQ(loop.recoveries(), 0);
+}
+
 }  // namespace
 }  // namespace semnav::reasoning

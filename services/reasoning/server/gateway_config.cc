@@ -193,7 +193,12 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("retrigger_after_s", &loop.retrigger_after_s)
         .Read("default_object_scale_m", &loop.default_object_scale_m)
         .Read("refine_with_scan", &loop.refine_with_scan)
-        .Read("global_scan_match", &loop.global_scan_match);
+        .Read("global_scan_match", &loop.global_scan_match)
+        .Read("confirm_min_objects", &loop.confirm_min_objects)
+        .Read("confirm_min_cosine", &loop.confirm_min_cosine)
+        .Read("confirm_distance_m", &loop.confirm_distance_m)
+        .Read("confirm_min_score", &loop.confirm_min_score)
+        .Read("confirm_max_ray_conflicts", &loop.confirm_max_ray_conflicts);
     reloc.Check(c.relocalization.map_id.size() <= 128, "map_id", "must be at most 128 characters");
     reloc.Check(c.relocalization.deadline_ms > 0, "deadline_ms", "must be > 0");
     reloc.Check(c.relocalization.scan_match_deadline_ms > 0, "scan_match_deadline_ms",
@@ -223,6 +228,16 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     reloc.Check(loop.max_attempts >= 1, "max_attempts", "must be >= 1");
     reloc.Check(loop.retrigger_after_s >= 0.0, "retrigger_after_s", "must be >= 0");
     reloc.Check(loop.default_object_scale_m > 0.0, "default_object_scale_m", "must be > 0");
+    reloc.Check(loop.confirm_min_objects >= 0 && loop.confirm_min_objects <= 100,
+                "confirm_min_objects", "must be in [0, 100] (0 = off)");
+    reloc.Check(loop.confirm_min_cosine >= -1.0 && loop.confirm_min_cosine <= 1.0,
+                "confirm_min_cosine", "must be in [-1, 1]");
+    reloc.Check(loop.confirm_distance_m >= 0.0 && loop.confirm_distance_m <= 10.0,
+                "confirm_distance_m", "must be in [0, 10]");
+    reloc.Check(loop.confirm_min_score >= 0.0 && loop.confirm_min_score <= 1.0, "confirm_min_score",
+                "must be in [0, 1]");
+    reloc.Check(loop.confirm_max_ray_conflicts >= 0.0 && loop.confirm_max_ray_conflicts <= 1.0,
+                "confirm_max_ray_conflicts", "must be in [0, 1]");
   }
   if (section.Has("model_proxy")) {  // absent: offline default, no slow-path calls
     ConfigReader model = section.Child("model_proxy");

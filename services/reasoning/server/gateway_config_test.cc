@@ -166,6 +166,36 @@ TEST(GatewayConfigTest, ReadsTheJournalKeysAndBoundsTheFlushInterval) {
   }
 }
 
+TEST(GatewayConfigTest, ReadsTheObjectConfirmationOfAGlobalMatchAndBoundsIt) {
+  const RelocalizationLoopConfig defaults;
+  EXPECT_EQ(defaults.confirm_min_objects, 2);
+  EXPECT_DOUBLE_EQ(defaults.confirm_max_ray_conflicts, 0.15);
+  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+      "relocalization:\n  address: 127.0.0.1:1\n  confirm_min_objects: 3\n"
+      "  confirm_distance_m: 0.3\n  confirm_min_score: 0.5\n  confirm_min_cosine: 0.9\n"
+      "  confirm_max_ray_conflicts: 0.15\n");
+  ASSERT_TRUE(reader.ok());
+  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const RelocalizationLoopConfig& loop = loaded->relocalization.loop;
+  EXPECT_EQ(loop.confirm_min_objects, 3);
+  EXPECT_DOUBLE_EQ(loop.confirm_distance_m, 0.3);
+  EXPECT_DOUBLE_EQ(loop.confirm_min_score, 0.5);
+  EXPECT_DOUBLE_EQ(loop.confirm_min_cosine, 0.9);
+  EXPECT_DOUBLE_EQ(loop.confirm_max_ray_conflicts, 0.15);
+  for (const char* bad :
+       {"confirm_min_objects: -1", "confirm_distance_m: .nan", "confirm_min_score: 1.5",
+        "confirm_min_cosine: 2", "confirm_max_ray_conflicts: -0.1"}) {
+    absl::StatusOr<ConfigReader> r = ConfigReader::FromString(
+        std::string("relocalization:\n  address: 127.0.0.1:1\n  ") + bad + "\n");
+    ASSERT_TRUE(r.ok());
+    const absl::Status status = GatewayConfig::FromYaml(*r).status();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
+    const std::string key(bad, std::string(bad).find(':'));
+    EXPECT_TRUE(absl::StrContains(status.message(), key)) << status.message();
+  }
+}
+
 TEST(GatewayConfigTest, ReadsHowManyFinishedTasksToKeepAndBoundsIt) {
   EXPECT_EQ(GatewayConfig{}.keep_finished_tasks, 256);
   absl::StatusOr<ConfigReader> reader = ConfigReader::FromString("keep_finished_tasks: 0\n");
