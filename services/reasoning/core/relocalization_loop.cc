@@ -418,6 +418,11 @@ std::vector<RelocalizationAction> RelocalizationLoop::OnRefinement(
                                refinement->coarse_score, refinement->score));
 }
 
+void RelocalizationLoop::ForgetObjects() {
+  map_objects_ = {};
+  turn_objects_ = {};
+}
+
 int RelocalizationLoop::ConfirmingObjects(const PlanarTransform& map_from_reported) const {
   std::vector<bool> used(turn_objects_.size(), false);
   int confirming = 0;
@@ -446,6 +451,7 @@ std::vector<RelocalizationAction> RelocalizationLoop::Apply(double now,
   ++recoveries_;
   phase_ = Phase::kTracking;
   last_ended_ = now;
+  ForgetObjects();
   std::vector<RelocalizationAction> actions;
   RelocalizationAction correct;
   correct.kind = RelocalizationAction::Kind::kCorrect;
@@ -482,6 +488,7 @@ std::vector<RelocalizationAction> RelocalizationLoop::AttemptFailed(double now,
   trusted_ = false;
   ++failures_;
   last_ended_ = now;
+  ForgetObjects();
   std::vector<RelocalizationAction> actions;
   RelocalizationAction hold;
   hold.kind = RelocalizationAction::Kind::kCommand;

@@ -220,6 +220,8 @@ class RelocalizationLoop {
   // Map objects (from before the loss) that the look-arounds' objects land on under
   // `map_from_reported`, each counted once (see confirm_min_objects).
   int ConfirmingObjects(const PlanarTransform& map_from_reported) const;
+  // The relocalization is over: its copies of the scene graph's objects go.
+  void ForgetObjects();
 
   RelocalizationLoopConfig config_;
   double max_speed_mps_;
