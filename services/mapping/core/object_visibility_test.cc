@@ -50,6 +50,24 @@ TEST(ObjectVisibilityTest, BehindTooFarTooSmallOrAtTheEdgeIsNot) {
   EXPECT_FALSE(expected(Box({2, 1.4, 0}, 0.5)));
 }
 
+// Regression (mission bench: false "refrigerator" and "car" detections lifted onto the floor got
+// a box 0.01 m high; width x height gave them no area, so no frame ever counted against them).
+TEST(ObjectVisibilityTest, AFlatBoxOnTheFloorAheadHasTheAreaItCovers) {
+  const Camera camera;
+  SceneObject mat = Box({2, 0, -0.5}, 0.5);
+  mat.size.z() = 0.0;
+  // u: 80 -+ 100 x 0.25 / 1.75 -> 28.57 px; v: 60 + 100 x 0.5 / 2.25 .. / 1.75 -> 6.35 px.
+  EXPECT_NEAR(ApparentArea(mat, camera.k, camera.pose, 160, 120),
+              (200.0 * 0.25 / 1.75) * (50.0 / 1.75 - 50.0 / 2.25), 1e-6);
+  EXPECT_TRUE(ExpectedInView(mat, camera.depth, camera.k, camera.pose, ExistenceConfig{}));
+  // The 0.5 m cube 2 m ahead: its near face's corners span 28.57 px both ways.
+  EXPECT_NEAR(ApparentArea(Box({2, 0, 0}, 0.5), camera.k, camera.pose, 160, 120),
+              std::pow(200.0 * 0.25 / 1.75, 2), 1e-6);
+  // Larger than the image: clipped to it.
+  EXPECT_DOUBLE_EQ(ApparentArea(Box({1, 0, 0}, 10.0), camera.k, camera.pose, 160, 120),
+                   160.0 * 120.0);
+}
+
 TEST(ObjectVisibilityTest, HiddenBySomethingNearerOrNoReadingIsNot) {
   Camera camera;
   const ExistenceConfig config;

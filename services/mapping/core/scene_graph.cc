@@ -148,7 +148,11 @@ std::vector<SceneObject> SceneGraph::Integrate(
   if (existence.enabled) {
     for (SceneObject& o : objects_) {
       if (std::find(matched.begin(), matched.end(), o.id) != matched.end()) continue;
-      if (expected_in_view(o)) ++o.misses;
+      if (!expected_in_view(o)) continue;
+      ++o.misses;
+      // Watchers get the count with the next revision; a miss alone does not make one, so the
+      // revisions (and what clients do per revision) stay those of the detections.
+      o.revision = revision_ + 1;
     }
   }
   const auto prune_ns = static_cast<int64_t>(config_.prune_single_after_s * 1e9);

@@ -171,6 +171,26 @@ TEST(SceneGraphTest, AnInstanceMissedThreeTimesPerDetectionGoes) {
   EXPECT_EQ(delta->removed_ids, std::vector<uint64_t>{bottle});
 }
 
+// The gateway's VERIFY reads miss counts (SceneObject.miss_count): a missed instance rides along
+// with the next revision's delta, while a miss alone makes no revision.
+TEST(SceneGraphTest, AMissedInstanceIsInTheNextRevisionsDelta) {
+  SceneGraph graph{SceneGraphConfig{}};
+  graph.Integrate({Obs("bottle", {0, 0, 0})}, 0);
+  graph.Integrate({Obs("chair", {5, 0, 0})}, 0);
+  const uint64_t bottle = graph.objects()[0].id;
+  const uint64_t seen = graph.revision();
+  graph.Integrate({}, 1, [&](const SceneObject& o) { return o.id == bottle; });
+  EXPECT_EQ(graph.revision(), seen);
+  graph.Integrate({Obs("table", {9, 0, 0})}, 2);  // a detection elsewhere: the next revision
+  ASSERT_EQ(graph.revision(), seen + 1);
+  const std::optional<SceneDelta> delta = graph.ChangesSince(seen);
+  ASSERT_TRUE(delta.has_value());
+  EXPECT_EQ(delta->upserted_ids.size(), 2u);  // the table and the missed bottle, not the chair
+  EXPECT_NE(std::find(delta->upserted_ids.begin(), delta->upserted_ids.end(), bottle),
+            delta->upserted_ids.end());
+  EXPECT_EQ(graph.Find(bottle)->misses, 1);
+}
+
 TEST(SceneGraphTest, ExistenceOffKeepsMissedInstances) {
   SceneGraphConfig config;
   config.existence.enabled = false;

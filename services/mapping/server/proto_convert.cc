@@ -1,5 +1,7 @@
 #include "services/mapping/server/proto_convert.h"
 
+#include <algorithm>
+
 #include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
 #include "services/common/status/field_error.h"
@@ -186,6 +188,7 @@ void ObjectToProto(const SceneObject& o, v1::SceneObject* p) {
   p->set_region_id(o.region_id);
   p->set_first_seen_ns(o.first_seen_ns);
   p->set_last_seen_ns(o.last_seen_ns);
+  p->set_miss_count(static_cast<uint32_t>(std::max(o.misses, 0)));
 }
 
 void SceneToProto(const SceneSnapshot& scene, v1::SceneGraph* proto) {

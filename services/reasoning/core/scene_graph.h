@@ -23,6 +23,9 @@ struct SceneObject {
   std::vector<float> embedding;         // visual embedding (CLIP-like); empty: none.
   // Mapping's 10-90 % extent of the seen points along map x, y, z, metres; zero: unknown.
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  // Frames that should have shown the object but did not detect it (mapping's existence evidence,
+  // SceneObject.miss_count); only ever grows while the instance lives.
+  int miss_count = 0;
 
   // Largest extent of mapping's box, metres; 0: unknown.
   double scale_m() const { return std::max(size.maxCoeff(), 0.0); }

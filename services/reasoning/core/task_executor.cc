@@ -779,8 +779,7 @@ std::vector<RobotCommand> TaskExecutor::EnterSubgoal(double now) {
     }
     case SubgoalType::kVerify: {
       if (!TryResolve()) return Search(now);
-      const SceneObject* object = graph_->FindObject(progress_.target->object_id);
-      progress_.target->detections_at_verify = object != nullptr ? object->detection_count : 0;
+      StartVerifyLook(graph_->FindObject(progress_.target->object_id));
       return MoveTo(now, pose_.position, YawTo(progress_.target->position), 0.0, Phase::kVerifying,
                     "turning to face the target to verify it");
     }
@@ -898,16 +897,28 @@ std::optional<std::vector<RobotCommand>> TaskExecutor::SuccessInView(double now,
                                          absl::SixDigits(distance), " m: stopping"));
 }
 
-std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
+void TaskExecutor::StartVerifyLook(const SceneObject* object) {
+  progress_.target->detections_at_verify = object != nullptr ? object->detection_count : 0;
+  progress_.target->misses_at_verify = object != nullptr ? object->miss_count : 0;
+}
+
+bool TaskExecutor::SeenMissing(const SceneObject& object) const {
+  return config_.verify_rule_out_misses > 0 &&
+         object.detection_count == progress_.target->detections_at_verify &&
+         object.miss_count - progress_.target->misses_at_verify >= config_.verify_rule_out_misses;
+}
+
+std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now, bool seen_missing) {
   if (glancing_) return PassBy(now);
   const int64_t id = progress_.target->object_id;
   const SceneObject* object = graph_->FindObject(id);
   const double distance = DistanceToTarget(pose_.position);
   // Accepted only when seen from within reach at least once: a misplaced or phantom object
-  // (office_03: a "tv" mapped on the wrong side of a cabinet) never is.
-  if (object != nullptr && distance <= config_.success_radius_m - config_.success_margin_m &&
-      close_target_ == id && close_detections_ >= 1 &&
-      object->detection_count >= config_.verify_accept_detections) {
+  // (office_03: a "tv" mapped on the wrong side of a cabinet) never is. The acceptance is for a
+  // camera that cannot frame the target close up; one that framed it and saw nothing does not.
+  if (!seen_missing && object != nullptr &&
+      distance <= config_.success_radius_m - config_.success_margin_m && close_target_ == id &&
+      close_detections_ >= 1 && object->detection_count >= config_.verify_accept_detections) {
     return TargetReached(now, absl::StrCat("object ", id, " accepted: ", object->detection_count,
                                            " detections, within reach, none new while facing it"));
   }
@@ -922,7 +933,7 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
     Eigen::Vector3d away = pose_.position - target;
     away.z() = 0.0;
     const double own_side = away.norm() > 1e-6 ? std::atan2(away.y(), away.x()) : pose_.yaw + M_PI;
-    progress_.target->detections_at_verify = object != nullptr ? object->detection_count : 0;
+    StartVerifyLook(object);
     for (int k = 0, planned = 0; k < kSides && planned < kViewPlans; ++k) {
       const int side = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);  // 0, +45, -45, +90, ... deg
       const double angle = own_side + side * (2.0 * M_PI / kSides);
@@ -948,13 +959,18 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now) {
   // candidate were false or another object's (home_04: one phantom "bowl" verified four times,
   // 100 s of the budget). Ruled out while the map keeps it there (a misplaced object that later
   // views move is tried at its new place); an object merely out of reach is set aside.
+  const std::string missing = absl::StrCat("not detected in ", config_.verify_rule_out_misses,
+                                           " views that should have shown it, twice");
   if (distance <= config_.success_radius_m) {
     ruled_out_at_[id] = progress_.target->position;
-    return ReleaseTarget(now, absl::StrCat("ruled out: not confirmed within reach in ",
-                                           config_.verify_timeout_s, " s, twice"));
+    return ReleaseTarget(now, seen_missing
+                                  ? absl::StrCat("ruled out: ", missing)
+                                  : absl::StrCat("ruled out: not confirmed within reach in ",
+                                                 config_.verify_timeout_s, " s, twice"));
   }
-  return SetTargetAside(
-      now, absl::StrCat("not confirmed within ", config_.verify_timeout_s, " s, twice"));
+  return SetTargetAside(now, seen_missing ? missing
+                                          : absl::StrCat("not confirmed within ",
+                                                         config_.verify_timeout_s, " s, twice"));
 }
 
 std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
@@ -1200,8 +1216,13 @@ std::vector<RobotCommand> TaskExecutor::OnSceneGraph(double now,
     return *std::move(reached);
   if (phase_ == Phase::kVerifying && progress_.target.has_value()) {
     const SceneObject* object = graph_->FindObject(progress_.target->object_id);
-    if (object == nullptr) return {};
+    // Mapping dropped it: missed far more often than seen, or seen once and never again.
+    if (object == nullptr) {
+      if (glancing_) return PassBy(now);
+      return ReleaseTarget(now, "left the map while being verified: not there");
+    }
     progress_.target->position = object->position;
+    if (SeenMissing(*object)) return VerifyTimedOut(now, /*seen_missing=*/true);
     if (glancing_) {
       if (object->detection_count <= kSeenOnce) return {};
       glancing_ = false;  // seen again: drive to it

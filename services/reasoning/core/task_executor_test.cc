@@ -889,6 +889,69 @@ TEST_F(GatewayTaskExecutorTest, VerifyAnswersTheRobotAtOnceWithAHoldForTheRestOf
   EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
 }
 
+// Regression (outdoor EROI episodes: 10 of 14 VERIFY looks were at "car"s the detector had made
+// up, each waited out for two 10 s windows): frames mapping says should have shown the target,
+// with no detection of it, end a look early; two such looks rule it out within reach.
+TEST_F(GatewayTaskExecutorTest, AVerifyLookEndsOnceMappingSeesTheTargetMissing) {
+  planner_.frontiers = {Eigen::Vector3d(-10, 0, 0)};
+  const auto missed = [](int detections, int misses) {
+    SceneObject object = Extinguisher(detections);
+    object.miss_count = misses;
+    return object;
+  };
+  TaskExecutor task = Make(GoToTarget());
+  task.OnSceneGraph(0, GraphWith({missed(15, 4)}, 1));  // misses from before the look do not count
+  task.Start(0, At(4.5));
+  ASSERT_EQ(current_type(task), SubgoalType::kVerify);
+  EXPECT_TRUE(task.OnSceneGraph(1, GraphWith({missed(15, 6)}, 2)).empty());  // 2 since the look
+  // A detection among the misses: the detector does see it, so the window runs on.
+  EXPECT_TRUE(task.OnSceneGraph(2, GraphWith({missed(16, 9)}, 3)).empty());
+  EXPECT_EQ(task.progress().phase, "verifying");
+  std::vector<RobotCommand> out = task.OnPose(10, At(4.5));  // accepted at the timeout as before
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+
+  TaskExecutor phantom = Make(GoToTarget());
+  phantom.OnSceneGraph(0, GraphWith({missed(15, 4)}, 1));
+  phantom.Start(0, At(4.5));
+  EXPECT_TRUE(phantom.OnSceneGraph(1, GraphWith({missed(15, 6)}, 2)).empty());
+  out = phantom.OnSceneGraph(1.5, GraphWith({missed(15, 7)}, 3));  // 3 misses, no detection
+  ASSERT_EQ(out.size(), 1u);  // the second look, 8.5 s before the timeout, and no acceptance
+  EXPECT_EQ(phantom.progress().phase, "verifying");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(4.2, 0, 0)));
+  phantom.OnPose(2.5, At(4.2));
+  ASSERT_EQ(phantom.OnFeedback(2.5, out[0].id, RobotFeedback::kGoalReached).at(0).kind,
+            CommandKind::kHold);
+  EXPECT_TRUE(phantom.OnSceneGraph(3, GraphWith({missed(15, 9)}, 4)).empty());
+  out = phantom.OnSceneGraph(3.5, GraphWith({missed(15, 10)}, 5));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));  // exploring again
+  EXPECT_FALSE(phantom.progress().target.has_value());
+  EXPECT_TRUE(absl::StrContains(phantom.progress().reason,
+                                "object 7 ruled out: not detected in 3 views that should have"))
+      << phantom.progress().reason;
+
+  ExecutorConfig off;
+  off.verify_rule_out_misses = 0;
+  TaskExecutor waits = Make(GoToTarget(), off);
+  waits.OnSceneGraph(0, GraphWith({missed(15, 0)}, 1));
+  waits.Start(0, At(4.5));
+  EXPECT_TRUE(waits.OnSceneGraph(1, GraphWith({missed(15, 50)}, 2)).empty());
+  EXPECT_EQ(waits.progress().phase, "verifying");
+
+  // Mapping drops the instance (missed more than 3 times per detection): released at once.
+  TaskExecutor dropped = Make(GoToTarget());
+  dropped.OnSceneGraph(0, GraphWith({missed(2, 0)}, 1));
+  dropped.Start(0, At(4.5));
+  ASSERT_EQ(current_type(dropped), SubgoalType::kVerify);
+  out = dropped.OnSceneGraph(1, GraphWith({}, 2));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(dropped.progress().phase, "exploring");
+  EXPECT_FALSE(dropped.progress().target.has_value());
+  EXPECT_TRUE(absl::StrContains(dropped.progress().reason, "object 7 left the map"))
+      << dropped.progress().reason;
+}
+
 // Regression (fleet bench: the gateway grew with every finished task): an ended task keeps its
 // progress for GetTask but no copy of the scene graph, and later graphs are not copied into it.
 TEST_F(GatewayTaskExecutorTest, AnEndedTaskKeepsNoSceneGraph) {

@@ -71,6 +71,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("success_margin_m", &c.executor.success_margin_m)
       .Read("verify_accept_detections", &c.executor.verify_accept_detections)
       .Read("verify_view_m", &c.executor.verify_view_m)
+      .Read("verify_rule_out_misses", &c.executor.verify_rule_out_misses)
       .Read("backoff_m", &c.executor.backoff_m)
       .Read("blocked_clearance_step_m", &c.executor.blocked_clearance_step_m)
       .Read("blocked_clearance_max_m", &c.executor.blocked_clearance_max_m)
@@ -117,6 +118,9 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(
       c.executor.verify_view_m > 0.0 && c.executor.verify_view_m <= c.executor.success_radius_m,
       "verify_view_m", "must be in (0, success_radius_m]");
+  executor.Check(
+      c.executor.verify_rule_out_misses >= 0 && c.executor.verify_rule_out_misses <= 1000,
+      "verify_rule_out_misses", "must be in [0, 1000] (0 = off)");
   executor.Check(c.executor.backoff_m >= 0.0 && c.executor.backoff_m <= 5.0, "backoff_m",
                  "must be in [0, 5]");
   executor.Check(c.executor.blocked_clearance_step_m >= 0.0, "blocked_clearance_step_m",

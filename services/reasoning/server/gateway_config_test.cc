@@ -104,7 +104,7 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
       "unreachable_region_m: 3,\n"
       "           time_budget_s: 250, endgame_s: 30, max_blocks_per_goal: 3,\n"
       "           explore_scan_duration_s: 6, start_scan_duration_s: 12.6,\n"
-      "           explore_reselect_s: 3, explore_keep_radius_m: 1.5}\n"
+      "           explore_reselect_s: 3, explore_keep_radius_m: 1.5, verify_rule_out_misses: 5}\n"
       "mapping: {address: 127.0.0.1:50051}\n");
   ASSERT_TRUE(reader.ok());
   const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
@@ -125,19 +125,29 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   EXPECT_DOUBLE_EQ(config.executor.start_scan_duration_s, 12.6);
   EXPECT_DOUBLE_EQ(config.executor.explore_reselect_s, 3.0);
   EXPECT_DOUBLE_EQ(config.executor.explore_keep_radius_m, 1.5);
+  EXPECT_EQ(config.executor.verify_rule_out_misses, 5);
   EXPECT_EQ(config.mapping.address, "127.0.0.1:50051");
 
-  for (const char* yaml :
-       {"fast_path: {fast_threshold: 1.5}", "executor: {success_radius_m: 0}",
-        "fast_path: {fast_treshold: 0.8}", "executor: {dependency_retry_s: 0}",
-        "executor: {dependency_timeout_s: 1}", "executor: {progress_timeout_s: 0}",
-        "executor: {success_margin_m: 1.0}", "executor: {verify_view_m: 1.5}",
-        "executor: {time_budget_s: -1}", "executor: {max_blocks_per_goal: 0}",
-        "executor: {explore_scan_duration_s: -1}", "executor: {explore_scan_duration_s: 121}",
-        "executor: {start_scan_duration_s: -0.5}", "executor: {explore_reselect_s: -1}",
-        "executor: {explore_reselect_s: .nan}", "executor: {explore_keep_radius_m: 51}",
-        "executor: {min_appearance_agreement: 1.5}",
-        "executor: {min_appearance_agreement: -0.1}"}) {
+  for (const char* yaml : {"fast_path: {fast_threshold: 1.5}",
+                           "executor: {success_radius_m: 0}",
+                           "fast_path: {fast_treshold: 0.8}",
+                           "executor: {dependency_retry_s: 0}",
+                           "executor: {dependency_timeout_s: 1}",
+                           "executor: {progress_timeout_s: 0}",
+                           "executor: {success_margin_m: 1.0}",
+                           "executor: {verify_view_m: 1.5}",
+                           "executor: {time_budget_s: -1}",
+                           "executor: {max_blocks_per_goal: 0}",
+                           "executor: {explore_scan_duration_s: -1}",
+                           "executor: {explore_scan_duration_s: 121}",
+                           "executor: {start_scan_duration_s: -0.5}",
+                           "executor: {explore_reselect_s: -1}",
+                           "executor: {explore_reselect_s: .nan}",
+                           "executor: {explore_keep_radius_m: 51}",
+                           "executor: {min_appearance_agreement: 1.5}",
+                           "executor: {min_appearance_agreement: -0.1}",
+                           "executor: {verify_rule_out_misses: -1}",
+                           "executor: {verify_rule_out_misses: 1001}"}) {
     absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
     ASSERT_TRUE(bad.ok());
     const absl::Status status = GatewayConfig::FromYaml(*bad).status();

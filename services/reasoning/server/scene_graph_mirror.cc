@@ -35,6 +35,7 @@ SceneObject FromProto(const mapping_api::SceneObject& in) {
   out.position = Eigen::Vector3d(in.position().x(), in.position().y(), in.position().z());
   out.score = in.score();
   out.detection_count = static_cast<int>(in.observation_count());
+  out.miss_count = static_cast<int>(std::min<uint32_t>(in.miss_count(), 1u << 30));
   out.region_id = in.region_id();
   out.embedding.assign(in.embedding().begin(), in.embedding().end());
   out.size = Eigen::Vector3d(in.size().x(), in.size().y(), in.size().z()).cwiseMax(0.0);

@@ -33,6 +33,7 @@ TEST(GatewaySceneGraphMirrorTest, SnapshotThenDeltasThenGap) {
   delta.mutable_delta()->set_revision(6);
   delta.mutable_delta()->add_removed_object_ids(2);
   *delta.mutable_delta()->add_upserted_objects() = Object(1, "door", 1.5, 4);
+  delta.mutable_delta()->mutable_upserted_objects(0)->set_miss_count(7);
   *delta.mutable_delta()->add_upserted_objects() = Object(3, "fire extinguisher", 1.8, 1);
   mapping_api::Relation* relation = delta.mutable_delta()->add_relations();
   relation->set_subject_id(3);
@@ -49,6 +50,7 @@ TEST(GatewaySceneGraphMirrorTest, SnapshotThenDeltasThenGap) {
   ASSERT_EQ(graph.objects.size(), 2u);
   EXPECT_DOUBLE_EQ(graph.FindObject(1)->position.x(), 1.5);
   EXPECT_EQ(graph.FindObject(1)->detection_count, 4);
+  EXPECT_EQ(graph.FindObject(1)->miss_count, 7);  // VERIFY's evidence against it
   EXPECT_EQ(graph.FindObject(2), nullptr);
   ASSERT_EQ(graph.relations.size(), 1u);
   EXPECT_EQ(graph.relations[0].relation, "near");
