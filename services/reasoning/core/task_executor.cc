@@ -960,7 +960,7 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now, bool seen_mis
   // 100 s of the budget). Ruled out while the map keeps it there (a misplaced object that later
   // views move is tried at its new place); an object merely out of reach is set aside.
   const std::string missing = absl::StrCat("not detected in ", config_.verify_rule_out_misses,
-                                           " views that should have shown it, twice");
+                                           " views that should have shown it, on a second look");
   if (distance <= config_.success_radius_m) {
     ruled_out_at_[id] = progress_.target->position;
     return ReleaseTarget(now, seen_missing
