@@ -147,11 +147,10 @@ std::vector<RelocalizationAction> RelocalizationLoop::Start(double now, const st
                                                             const SceneGraph& graph) {
   trigger_ = trigger;
   attempt_ = 0;
-  map_objects_.clear();
+  ForgetObjects();
   for (const SceneObject& object : graph.objects) {
     if (!object.embedding.empty()) map_objects_.push_back(object);
   }
-  turn_objects_.clear();
   paused_task_ = true;  // the hub pauses only a running task; resuming a task it did not pause is a
                         // no-op there
   std::vector<RelocalizationAction> actions;

@@ -6,6 +6,15 @@
 namespace semnav::reasoning {
 namespace {
 
+// The config `yaml` gives, or the error it is rejected with; YAML that does not parse fails the
+// test (every case here is well-formed YAML, judged by the gateway's own rules).
+absl::StatusOr<GatewayConfig> Load(const std::string& yaml) {
+  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(yaml);
+  EXPECT_TRUE(reader.ok()) << yaml << ": " << reader.status();
+  if (!reader.ok()) return reader.status();
+  return GatewayConfig::FromYaml(*reader);
+}
+
 TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
   ConfigReader empty = ConfigReader::Empty();
   const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(empty);
@@ -37,12 +46,10 @@ TEST(GatewayConfigTest, DefaultsAreTheSeedValues) {
 }
 
 TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
-  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+  const absl::StatusOr<GatewayConfig> loaded = Load(
       "model_proxy: {address: 127.0.0.1:50054, deadline_ms: 800, vision_alias: vision}\n"
       "eroi: {min: [-10, -20, 0], nx: 9, ny: 19, nz: 2, theta: 4, evidence_once_per_code: "
       "false}\n");
-  ASSERT_TRUE(reader.ok());
-  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const GatewayConfig& config = *loaded;
   EXPECT_EQ(config.model_proxy.channel.address, "127.0.0.1:50054");
@@ -59,9 +66,7 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
        {"model_proxy: {address: x, deadline_ms: 0}", "model_proxy: {address: x, max_in_flight: 64}",
         "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}",
         "eroi: {evidence_once_per_code: 3}"}) {
-    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
-    ASSERT_TRUE(bad.ok());
-    const absl::Status status = GatewayConfig::FromYaml(*bad).status();
+    const absl::Status status = Load(yaml).status();
     EXPECT_FALSE(status.ok()) << yaml;
     EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'm' ? "model_proxy." : "eroi."))
         << status;
@@ -69,11 +74,9 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
 }
 
 TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
-  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+  const absl::StatusOr<GatewayConfig> loaded = Load(
       "planning: {address: 127.0.0.1:50052, exploration_strategy: EROI_UTILITY, deadline_ms: "
       "500, live_map_max_age_ms: 250}\n");
-  ASSERT_TRUE(reader.ok());
-  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const GatewayConfig& config = *loaded;
   EXPECT_EQ(config.planning.channel.address, "127.0.0.1:50052");
@@ -82,22 +85,18 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   EXPECT_EQ(config.planning.live_map_max_age_ms, 250);
   EXPECT_EQ(PlanningSettings{}.live_map_max_age_ms, 500);
 
-  absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(
-      "planning: {address: 127.0.0.1:50052, exploration_strategy: RANDOM}\n");
-  ASSERT_TRUE(bad.ok());
-  const absl::Status status = GatewayConfig::FromYaml(*bad).status();
+  const absl::Status status =
+      Load("planning: {address: 127.0.0.1:50052, exploration_strategy: RANDOM}\n").status();
   EXPECT_FALSE(status.ok());
   EXPECT_TRUE(absl::StrContains(status.message(), "planning.exploration_strategy")) << status;
 
-  absl::StatusOr<ConfigReader> stale = ConfigReader::FromString(
-      "planning: {address: 127.0.0.1:50052, live_map_max_age_ms: 10001}\n");
-  ASSERT_TRUE(stale.ok());
-  const absl::Status too_old = GatewayConfig::FromYaml(*stale).status();
+  const absl::Status too_old =
+      Load("planning: {address: 127.0.0.1:50052, live_map_max_age_ms: 10001}\n").status();
   EXPECT_TRUE(absl::StrContains(too_old.message(), "planning.live_map_max_age_ms")) << too_old;
 }
 
 TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
-  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+  const absl::StatusOr<GatewayConfig> loaded = Load(
       "fast_path: {fast_threshold: 0.8}\n"
       "executor: {success_radius_m: 0.5, dependency_retry_s: 0.5, dependency_timeout_s: 5,\n"
       "           progress_timeout_s: 20, verify_view_m: 0.4, success_margin_m: 0.1, "
@@ -106,8 +105,6 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
       "           explore_scan_duration_s: 6, start_scan_duration_s: 12.6,\n"
       "           explore_reselect_s: 3, explore_keep_radius_m: 1.5, verify_rule_out_misses: 5}\n"
       "mapping: {address: 127.0.0.1:50051}\n");
-  ASSERT_TRUE(reader.ok());
-  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const GatewayConfig& config = *loaded;
   EXPECT_DOUBLE_EQ(config.fast_path.fast_threshold, 0.8);
@@ -148,9 +145,7 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
                            "executor: {min_appearance_agreement: -0.1}",
                            "executor: {verify_rule_out_misses: -1}",
                            "executor: {verify_rule_out_misses: 1001}"}) {
-    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
-    ASSERT_TRUE(bad.ok());
-    const absl::Status status = GatewayConfig::FromYaml(*bad).status();
+    const absl::Status status = Load(yaml).status();
     EXPECT_FALSE(status.ok()) << yaml;
     EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'f' ? "fast_path." : "executor."))
         << status;
@@ -158,20 +153,15 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
 }
 
 TEST(GatewayConfigTest, ReadsTheJournalKeysAndBoundsTheFlushInterval) {
-  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
-      "state_directory: /var/lib/semnav/gateway\njournal_flush_interval_s: 0.25\n");
-  ASSERT_TRUE(reader.ok());
-  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  const absl::StatusOr<GatewayConfig> loaded =
+      Load("state_directory: /var/lib/semnav/gateway\njournal_flush_interval_s: 0.25\n");
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const GatewayConfig& config = *loaded;
   EXPECT_EQ(config.state_directory, "/var/lib/semnav/gateway");
   EXPECT_DOUBLE_EQ(config.journal_flush_interval_s, 0.25);
   EXPECT_EQ(GatewayConfig{}.state_directory, "");  // memory only unless configured
   for (const char* yaml : {"journal_flush_interval_s: 0", "journal_flush_interval_s: 61"}) {
-    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
-    ASSERT_TRUE(bad.ok());
-    EXPECT_TRUE(absl::StrContains(GatewayConfig::FromYaml(*bad).status().message(),
-                                  "journal_flush_interval_s"))
+    EXPECT_TRUE(absl::StrContains(Load(yaml).status().message(), "journal_flush_interval_s"))
         << yaml;
   }
 }
@@ -180,12 +170,10 @@ TEST(GatewayConfigTest, ReadsTheObjectConfirmationOfAGlobalMatchAndBoundsIt) {
   const RelocalizationLoopConfig defaults;
   EXPECT_EQ(defaults.confirm_min_objects, 2);
   EXPECT_DOUBLE_EQ(defaults.confirm_max_ray_conflicts, 0.15);
-  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString(
+  const absl::StatusOr<GatewayConfig> loaded = Load(
       "relocalization:\n  address: 127.0.0.1:1\n  confirm_min_objects: 3\n"
       "  confirm_distance_m: 0.3\n  confirm_min_score: 0.5\n  confirm_min_cosine: 0.9\n"
       "  confirm_max_ray_conflicts: 0.15\n");
-  ASSERT_TRUE(reader.ok());
-  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const RelocalizationLoopConfig& loop = loaded->relocalization.loop;
   EXPECT_EQ(loop.confirm_min_objects, 3);
@@ -196,10 +184,8 @@ TEST(GatewayConfigTest, ReadsTheObjectConfirmationOfAGlobalMatchAndBoundsIt) {
   for (const char* bad :
        {"confirm_min_objects: -1", "confirm_distance_m: .nan", "confirm_min_score: 1.5",
         "confirm_min_cosine: 2", "confirm_max_ray_conflicts: -0.1"}) {
-    absl::StatusOr<ConfigReader> r = ConfigReader::FromString(
-        std::string("relocalization:\n  address: 127.0.0.1:1\n  ") + bad + "\n");
-    ASSERT_TRUE(r.ok());
-    const absl::Status status = GatewayConfig::FromYaml(*r).status();
+    const absl::Status status =
+        Load(std::string("relocalization:\n  address: 127.0.0.1:1\n  ") + bad + "\n").status();
     EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
     const std::string key(bad, std::string(bad).find(':'));
     EXPECT_TRUE(absl::StrContains(status.message(), key)) << status.message();
@@ -208,17 +194,11 @@ TEST(GatewayConfigTest, ReadsTheObjectConfirmationOfAGlobalMatchAndBoundsIt) {
 
 TEST(GatewayConfigTest, ReadsHowManyFinishedTasksToKeepAndBoundsIt) {
   EXPECT_EQ(GatewayConfig{}.keep_finished_tasks, 256);
-  absl::StatusOr<ConfigReader> reader = ConfigReader::FromString("keep_finished_tasks: 0\n");
-  ASSERT_TRUE(reader.ok());
-  const absl::StatusOr<GatewayConfig> loaded = GatewayConfig::FromYaml(*reader);
+  const absl::StatusOr<GatewayConfig> loaded = Load("keep_finished_tasks: 0\n");
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   EXPECT_EQ(loaded->keep_finished_tasks, 0);
   for (const char* yaml : {"keep_finished_tasks: -1", "keep_finished_tasks: 100001"}) {
-    absl::StatusOr<ConfigReader> bad = ConfigReader::FromString(yaml);
-    ASSERT_TRUE(bad.ok());
-    EXPECT_TRUE(
-        absl::StrContains(GatewayConfig::FromYaml(*bad).status().message(), "keep_finished_tasks"))
-        << yaml;
+    EXPECT_TRUE(absl::StrContains(Load(yaml).status().message(), "keep_finished_tasks")) << yaml;
   }
 }
 
