@@ -545,11 +545,13 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
     }
     absl::StatusOr<std::vector<Eigen::Vector3d>> path = PlanPath(target);
     if (absl::IsUnavailable(path.status())) return PauseExploring(now, path.status());
-    if (path.ok()) {
+    if (LeadsAway(path, target)) {
       return Navigate(now, target, *std::move(path), YawTo(target), 0.0, Phase::kExploring,
                       "exploring for the target");
     }
-    if (absl::IsNotFound(path.status())) failed_fallback_steps_.push_back(target);
+    // No path, or one that ends where the robot stands (the step lies in furniture next to it,
+    // and the free point nearest it is here): a step that leads nowhere.
+    if (path.ok() || absl::IsNotFound(path.status())) failed_fallback_steps_.push_back(target);
   }
   // Nothing can be planned from here: the robot may stand where planning cannot start (a narrow
   // gap, an inflated wall). Back off along the way it came once, then look around.

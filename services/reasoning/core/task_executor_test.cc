@@ -779,6 +779,23 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   EXPECT_GT((next[0].goal - failed_step).norm(), 2.0);
 }
 
+// Regression (house_expo_room_0000 with the model: "navigate to (2.43, 3.63) along 1 waypoints"
+// sent 10 times where the robot stood, until the exploration budget was spent). A fallback step
+// into furniture next to the robot plans to the free point nearest it: the robot's own spot. Such
+// a step leads nowhere; it is not sent, and not tried again.
+TEST_F(GatewayTaskExecutorTest, AFallbackStepThatEndsWhereTheRobotStandsIsNotSent) {
+  planner_.frontiers.clear();  // no memory: the least explored yaw is 0
+  planner_.failures = {absl::FailedPreconditionError("goal occupied")};  // the step east
+  planner_.alternative_point = Eigen::Vector3d(0.1, 0, 0);  // the free point nearest it: here
+  TaskExecutor task = Make(FindTarget());
+  const std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  const double leg = 3 / std::sqrt(2.0);  // the next direction, 45 degrees left
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(leg, leg, 0), 1e-9)) << out[0].goal.transpose();
+  EXPECT_EQ(task.progress().explore_goals, 1);
+}
+
 // Regression (issue 15, outdoor_road_vehicles start 3): planning had no goal at the start, the
 // fallback step went 3 m toward the least explored sector, out of the search area (the world's
 // edge 1.2 m away), and from outside planning never had a goal: 30 steps east, off the world.
