@@ -701,6 +701,25 @@ TEST_F(GatewayTaskExecutorTest, UnreachableTargetIsSetAsideAndSearchGoesOn) {
   EXPECT_EQ(task.progress().target->object_id, 7);
 }
 
+// Regression (house_expo_room_0000 with the model: a bed the robot had no path to was found at
+// each map update, and each time the same exploration goal was sent again and counted, 14 of the
+// 30). The robot drives on to its goal, and the budget is not spent.
+TEST_F(GatewayTaskExecutorTest, ATargetWithNoPathLeavesTheExplorationGoalAsItWas) {
+  planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
+  TaskExecutor task = Make(GoToTarget());
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_EQ(task.progress().explore_goals, 1);
+  for (int update = 1; update <= 2; ++update) {
+    planner_.failures = {absl::NotFoundError("no path")};
+    EXPECT_TRUE(task.OnSceneGraph(update, GraphWith({Extinguisher(15)}, update)).empty());
+    EXPECT_EQ(task.progress().replans, update);
+    EXPECT_EQ(task.progress().explore_goals, 1);
+    EXPECT_EQ(task.progress().phase, "exploring");
+  }
+}
+
 TEST_F(GatewayTaskExecutorTest, ApproachThatCannotGetCloserSetsTheTargetAside) {
   planner_.frontiers = {Eigen::Vector3d(0, 10, 0)};
   TaskExecutor task = Make(GoToTarget());
