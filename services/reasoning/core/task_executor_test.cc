@@ -801,7 +801,7 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
 // Regression (house_expo_room_0000 with the model: "navigate to (2.43, 3.63) along 1 waypoints"
 // sent 10 times where the robot stood, until the exploration budget was spent). A fallback step
 // into furniture next to the robot plans to the free point nearest it: the robot's own spot. Such
-// a step leads nowhere; it is not sent, and not tried again.
+// a step leads nowhere: it is not sent, and the next direction is tried.
 TEST_F(GatewayTaskExecutorTest, AFallbackStepThatEndsWhereTheRobotStandsIsNotSent) {
   planner_.frontiers.clear();  // no memory: the least explored yaw is 0
   planner_.failures = {absl::FailedPreconditionError("goal occupied")};  // the step east
