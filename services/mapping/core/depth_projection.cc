@@ -21,6 +21,14 @@ Eigen::Vector3d BackProject(const Intrinsics& k, double u, double v, double z) {
   return {(u - k.cx) * z / k.fx, (v - k.cy) * z / k.fy, z};
 }
 
+Eigen::Vector2d PixelOf(const Intrinsics& k, const Eigen::Vector3d& camera) {
+  return {k.fx * camera.x() / camera.z() + k.cx, k.fy * camera.y() / camera.z() + k.cy};
+}
+
+Eigen::Vector3d CameraFromMap(const CameraPose& pose, const Eigen::Vector3d& map_point) {
+  return pose.orientation.conjugate() * (map_point - pose.position);
+}
+
 std::vector<Eigen::Vector3f> ProjectDepth(const cv::Mat& depth_m, const Intrinsics& k,
                                           const CameraPose& pose, const DepthRange& range,
                                           int stride) {

@@ -25,5 +25,9 @@ std::vector<Eigen::Vector3f> ProjectDepth(const cv::Mat& depth_m, const Intrinsi
 
 // Camera-frame point of pixel (u, v) at depth z (metres).
 Eigen::Vector3d BackProject(const Intrinsics& k, double u, double v, double z);
+// Pixel (u, v) of a camera-frame point in front of the camera (z > 0): BackProject's inverse.
+Eigen::Vector2d PixelOf(const Intrinsics& k, const Eigen::Vector3d& camera);
+// Camera-frame (optical) coordinates of a map-frame point: the inverse of map = R * camera + t.
+Eigen::Vector3d CameraFromMap(const CameraPose& pose, const Eigen::Vector3d& map_point);
 
 }  // namespace semnav::mapping

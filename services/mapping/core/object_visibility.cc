@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "services/mapping/core/depth_projection.h"
+
 namespace semnav::mapping {
 
 double ApparentArea(const SceneObject& object, const Intrinsics& k, const CameraPose& pose,
@@ -16,11 +18,11 @@ double ApparentArea(const SceneObject& object, const Intrinsics& k, const Camera
     const Eigen::Vector3d offset(corner & 1 ? 0.5 : -0.5, corner & 2 ? 0.5 : -0.5,
                                  corner & 4 ? 0.5 : -0.5);
     const Eigen::Vector3d camera =
-        pose.orientation.conjugate() *
-        (object.position + offset.cwiseProduct(object.size) - pose.position);
+        CameraFromMap(pose, object.position + offset.cwiseProduct(object.size));
     if (camera.z() < kNearestZ) continue;
-    const double u = std::clamp(k.fx * camera.x() / camera.z() + k.cx, 0.0, width);
-    const double v = std::clamp(k.fy * camera.y() / camera.z() + k.cy, 0.0, height);
+    const Eigen::Vector2d pixel = PixelOf(k, camera);
+    const double u = std::clamp(pixel.x(), 0.0, width);
+    const double v = std::clamp(pixel.y(), 0.0, height);
     u_min = std::min(u_min, u);
     u_max = std::max(u_max, u);
     v_min = std::min(v_min, v);
@@ -33,11 +35,12 @@ bool ExpectedInView(const SceneObject& object, const cv::Mat& depth_m, const Int
                     const CameraPose& pose, const ExistenceConfig& config) {
   if (depth_m.empty() || k.fx <= 0.0 || k.fy <= 0.0) return false;
   // Optical frame: x right, y down, z forward; map = R * camera + t.
-  const Eigen::Vector3d camera = pose.orientation.conjugate() * (object.position - pose.position);
+  const Eigen::Vector3d camera = CameraFromMap(pose, object.position);
   const double z = camera.z();
   if (z <= 0.0 || z > config.max_range_m) return false;
-  const double u = k.fx * camera.x() / z + k.cx;
-  const double v = k.fy * camera.y() / z + k.cy;
+  const Eigen::Vector2d pixel = PixelOf(k, camera);
+  const double u = pixel.x();
+  const double v = pixel.y();
   const double width = std::min<double>(k.width, depth_m.cols);
   const double height = std::min<double>(k.height, depth_m.rows);
   const double margin_u = config.image_margin * width, margin_v = config.image_margin * height;
