@@ -57,11 +57,12 @@ absl::StatusOr<std::unique_ptr<SimStack>> SimStack::Start(const SimStackOptions&
     if (!relocalization.ok()) return relocalization.status();
     relocalization_address = *relocalization;
   }
-  // Mapping's own landmark map (docs/algorithms/relocalization.md, section 8).
+  // Mapping's own landmark map (docs/algorithms/relocalization.md, section 8), pushed with each
+  // frame: in lock-step time a relocalization must not depend on when a push thread ran.
   const std::string mapping_landmarks =
       options.relocalization && options.mapping_landmarks
           ? absl::StrCat(
-                "  landmarks:\n    live_map_id: live\n    interval_s: 0.05\n"
+                "  landmarks:\n    live_map_id: live\n    push_with_frames: true\n"
                 "    relocalization:\n      address: ",
                 relocalization_address, "\n")
           : "";

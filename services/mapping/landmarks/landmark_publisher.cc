@@ -77,8 +77,34 @@ void LandmarkPublisher::PublishSnapshot(const std::string& map_id,
 }
 
 void LandmarkPublisher::SceneReplaced() {
-  absl::MutexLock lock(&mu_);
-  scene_replaced_ = true;
+  {
+    absl::MutexLock lock(&mu_);
+    scene_replaced_ = true;
+  }
+  if (config_.push_with_frames) SyncLive();
+}
+
+void LandmarkPublisher::FrameIntegrated() {
+  if (config_.push_with_frames) SyncLive();
+}
+
+void LandmarkPublisher::SyncLive() {
+  absl::MutexLock push(&push_mu_);
+  bool replaced = false;
+  {
+    absl::MutexLock lock(&mu_);
+    if (stopping_) return;
+    replaced = scene_replaced_;
+    scene_replaced_ = false;
+  }
+  // The live map started over (ResetMap, LoadMap): so does its landmark map, or landmarks of
+  // the old scene (another building, for the simulator's next episode) would stay in it.
+  if (replaced) {
+    landmark_of_object_.clear();
+    have_published_ = false;
+    DeleteLiveMap();
+  }
+  PushLive();
 }
 
 void LandmarkPublisher::Run() {
@@ -93,21 +119,16 @@ void LandmarkPublisher::Run() {
       Snapshot next = std::move(snapshots_.front());
       snapshots_.pop_front();
       mu_.Unlock();  // remote calls never hold the lock
-      PushSnapshot(next);
+      {
+        absl::MutexLock push(&push_mu_);
+        PushSnapshot(next);
+      }
       mu_.Lock();
       continue;
     }
-    const bool replaced = scene_replaced_;
-    if (scene_replaced_) {
-      scene_replaced_ = false;
-      landmark_of_object_.clear();
-      have_published_ = false;
-    }
+    if (config_.push_with_frames) continue;  // the live map is pushed with the frames
     mu_.Unlock();
-    // The live map started over (ResetMap, LoadMap): so does its landmark map, or landmarks of
-    // the old scene (another building, for the simulator's next episode) would stay in it.
-    if (replaced) DeleteLiveMap();
-    PushLive();
+    SyncLive();
     mu_.Lock();
   }
 }

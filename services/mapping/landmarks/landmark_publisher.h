@@ -1,7 +1,8 @@
 // Mapping's client of the relocalization service: keeps the landmark map of the live scene graph
 // (map id `live_map_id`) up to date, and hands saved/loaded maps' landmarks over under their map
-// id. All pushes run on one background thread with a deadline: frame ingestion and map RPCs never
-// wait for relocalization, and an absent relocalization service is logged, not fatal.
+// id. Pushes run on one background thread with a deadline: frame ingestion and map RPCs never
+// wait for relocalization, and an absent relocalization service is logged, not fatal. A
+// simulator in lock-step time pushes the live map with each frame instead (push_with_frames).
 #pragma once
 
 #include <grpcpp/channel.h>
@@ -35,6 +36,11 @@ struct LandmarkPublisherConfig {
   // instances its frames made meanwhile must not be in the map when the loss marks them
   // (SceneObject::pose_untrusted). 0 = at once.
   double settle_s = 2.5;
+  // The live push runs with each frame, before its ack, and with ResetMap/LoadMap, instead of on
+  // the background thread's interval: the live landmark map then follows the scene graph frame by
+  // frame, so a lock-step simulated episode that relocalizes in it does not depend on when a
+  // thread ran. A real robot's frames keep off (they would wait for relocalization).
+  bool push_with_frames = false;
 };
 
 // INVALID_ARGUMENT naming live_map_id / interval_s / deadline_ms.
@@ -53,8 +59,12 @@ class LandmarkPublisher {
   // LoadMap). Returns at once.
   void PublishSnapshot(const std::string& map_id, std::vector<relocalization::Landmark> landmarks);
   // The live scene graph was replaced (LoadMap, ResetMap): its instance ids start over, so the
-  // live landmark map is deleted and its landmarks are inserted afresh.
+  // live landmark map is deleted and its landmarks are inserted afresh (on the caller's thread
+  // with push_with_frames).
   void SceneReplaced();
+  // A frame was integrated. With push_with_frames the live push runs here, on the frame's
+  // thread; otherwise nothing happens (the background thread pushes on its interval).
+  void FrameIntegrated();
   void Stop();
 
  private:
@@ -65,11 +75,13 @@ class LandmarkPublisher {
   LandmarkPublisher(const MappingEngine& engine, const SceneLandmarkConfig& landmarks,
                     const LandmarkPublisherConfig& config, std::shared_ptr<grpc::Channel> channel);
   void Run();
-  void PushLive();
-  void DeleteLiveMap();  // after the scene was replaced
-  void PushSnapshot(const Snapshot& snapshot);
+  void SyncLive();  // the scene's replacement, if any, then the live push
+  void PushLive() ABSL_EXCLUSIVE_LOCKS_REQUIRED(push_mu_);
+  void DeleteLiveMap() ABSL_EXCLUSIVE_LOCKS_REQUIRED(push_mu_);  // after the scene was replaced
+  void PushSnapshot(const Snapshot& snapshot) ABSL_EXCLUSIVE_LOCKS_REQUIRED(push_mu_);
   // Logs a change of reachability once (not every interval).
-  void NoteResult(const grpc::Status& status, absl::string_view what);
+  void NoteResult(const grpc::Status& status, absl::string_view what)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(push_mu_);
 
   const MappingEngine& engine_;
   const SceneLandmarkConfig landmarks_;
@@ -82,11 +94,14 @@ class LandmarkPublisher {
   std::deque<Snapshot> snapshots_ ABSL_GUARDED_BY(mu_);
   bool scene_replaced_ ABSL_GUARDED_BY(mu_) = false;
 
-  // Owned by the background thread.
-  uint64_t published_revision_ = 0;
-  bool have_published_ = false;
-  std::map<uint64_t, uint64_t> landmark_of_object_;  // scene instance id -> landmark id
-  bool reachable_ = true;
+  // One push at a time: the background thread's, and with push_with_frames the frame threads'.
+  // Never taken while holding mu_.
+  absl::Mutex push_mu_;
+  uint64_t published_revision_ ABSL_GUARDED_BY(push_mu_) = 0;
+  bool have_published_ ABSL_GUARDED_BY(push_mu_) = false;
+  // scene instance id -> landmark id
+  std::map<uint64_t, uint64_t> landmark_of_object_ ABSL_GUARDED_BY(push_mu_);
+  bool reachable_ ABSL_GUARDED_BY(push_mu_) = true;
 };
 
 }  // namespace semnav::mapping

@@ -8,8 +8,9 @@
 
 namespace semnav::mapping {
 
-FrameStreamReactor::FrameStreamReactor(MappingEngine& engine, WorkerPool& integration)
-    : engine_(engine), integration_(integration) {
+FrameStreamReactor::FrameStreamReactor(MappingEngine& engine, WorkerPool& integration,
+                                       LandmarkPublisher* landmarks)
+    : engine_(engine), integration_(integration), landmarks_(landmarks) {
   StartRead(&request_);
 }
 
@@ -36,6 +37,7 @@ void FrameStreamReactor::Integrate() {
     ack->set_voxels_updated(result->voxels_updated);
     ack->set_detections_used(result->detections_used);
     ack->set_blurred(result->blurred);
+    if (landmarks_ != nullptr) landmarks_->FrameIntegrated();
   } else {
     const absl::string_view message = result.status().message();
     ack->set_accepted(false);

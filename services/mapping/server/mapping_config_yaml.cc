@@ -226,7 +226,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("live_map_id", &p.live_map_id)
       .Read("interval_s", &p.interval_s)
       .Read("deadline_ms", &p.deadline_ms)
-      .Read("settle_s", &p.settle_s);
+      .Read("settle_s", &p.settle_s)
+      .Read("push_with_frames", &p.push_with_frames);
   // Without the section no relocalization service is used (FromConfig wants an address).
   if (landmarks.Has("relocalization")) {
     ConfigReader relocalization = landmarks.Child("relocalization");

@@ -57,7 +57,8 @@ struct MappingServiceConfig {
 //   integration_threads [2, in 1..16]   integration_nice [0, in 0..19]: the frame integration
 //   threads and how much lower than the service's own their scheduling priority is
 //   landmarks: {min_detections [3], labels [[]], embedding_dim [64], embedding_weight [0.5],
-//               live_map_id [live], interval_s [2], deadline_ms [2000],
+//               live_map_id [live], interval_s [2], deadline_ms [2000], settle_s [2.5],
+//               push_with_frames [false: the simulator's lock-step stack only],
 //               relocalization: {address [empty = no push], tls..., auth...}}: the landmark map
 //               that builds itself from the scene graph (docs/algorithms/relocalization.md)
 

@@ -129,6 +129,16 @@ TEST(MappingConfigYamlTest, LandmarksWithoutRelocalizationNeedNoAddress) {
   EXPECT_EQ(config->landmarks.embedding_dim, 0);
   EXPECT_TRUE(config->landmark_publisher.relocalization.address.empty());
   EXPECT_EQ(config->landmark_publisher.live_map_id, "live");
+  EXPECT_FALSE(config->landmark_publisher.push_with_frames);  // a real robot's frames never wait
+}
+
+TEST(MappingConfigYamlTest, TheLockStepSimulatorPushesLandmarksWithItsFrames) {
+  const absl::StatusOr<MappingServiceConfig> config =
+      Load("mapping:\n  landmarks: {push_with_frames: true}\n");
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_TRUE(config->landmark_publisher.push_with_frames);
+  EXPECT_EQ(Load("mapping:\n  landmarks: {push_with_frames: 3.5}\n").status().code(),
+            absl::StatusCode::kInvalidArgument);
 }
 
 TEST(MappingConfigYamlTest, LandmarkSettingsAreCheckedWithTheirKeyPath) {

@@ -167,7 +167,7 @@ grpc::Status MappingServiceImpl::Idempotent(const std::string& method,
 
 grpc::ServerBidiReactor<v1::StreamFramesRequest, v1::StreamFramesResponse>*
 MappingServiceImpl::StreamFrames(grpc::CallbackServerContext*) {
-  return new FrameStreamReactor(engine_, integration_);
+  return new FrameStreamReactor(engine_, integration_, landmark_publisher_.get());
 }
 
 grpc::ServerUnaryReactor* MappingServiceImpl::GetGridMap(grpc::CallbackServerContext* context,

@@ -48,7 +48,9 @@ v1::SensorFrame RoomFrame(int64_t stamp) {
 class MappingLandmarksContractTest : public ::testing::Test {
  protected:
   // `relocalization_address` empty = start a relocalization service and use it.
-  void StartServices(std::string relocalization_address = "") {
+  // `publisher_keys`: extra lines of mapping.landmarks (the push's timing).
+  void StartServices(std::string relocalization_address = "",
+                     const std::string& publisher_keys = "    interval_s: 0.1\n") {
     store_ = ::testing::TempDir() + "/mapping_landmarks_" +
              ::testing::UnitTest::GetInstance()->current_test_info()->name();
     std::filesystem::remove_all(store_);
@@ -64,7 +66,8 @@ class MappingLandmarksContractTest : public ::testing::Test {
     std::ofstream(config)
         << "mapping:\n  store_directory: " << store_
         << "\n  live_snapshot_interval_s: 0\n  landmarks:\n    labels: [chair, table]\n"
-        << "    embedding_dim: 4\n    live_map_id: robot_x\n    interval_s: 0.1\n"
+        << "    embedding_dim: 4\n    live_map_id: robot_x\n"
+        << publisher_keys
         // settle_s 0: the frames here are 0.1 s apart; the push itself is under test.
         << "    deadline_ms: 500\n    settle_s: 0\n    relocalization: {address: \""
         << relocalization_address << "\"}\n";
@@ -163,6 +166,46 @@ TEST_F(MappingLandmarksContractTest, LiveSceneGraphFillsTheLandmarkMapWithoutAnO
   ASSERT_EQ(again.size(), 1u);
   EXPECT_EQ(again[0].id(), live[0].id());
   EXPECT_EQ(again[0].observations(), 6u);
+}
+
+// The lock-step simulator's setting: once a frame's ack is back, the live landmark map already
+// holds what that frame made of the scene; no background interval (an hour here) decides. Before,
+// the kidnapped group's first relocalization answer depended on when the push thread had run.
+TEST_F(MappingLandmarksContractTest, PushWithFramesUpdatesTheLandmarkMapBeforeTheAck) {
+  ASSERT_NO_FATAL_FAILURE(StartServices("", "    interval_s: 3600\n    push_with_frames: true\n"));
+  auto live_now = [&] {
+    rv1::GetLandmarkMapRequest request;
+    request.set_map_id("robot_x");
+    grpc::ClientContext context;
+    auto reader = reloc_stub_->GetLandmarkMap(&context, request);
+    rv1::GetLandmarkMapResponse page;
+    std::vector<rv1::Landmark> out;
+    while (reader->Read(&page))
+      out.insert(out.end(), page.landmarks().begin(), page.landmarks().end());
+    const grpc::Status status = reader->Finish();
+    EXPECT_TRUE(status.ok() || status.error_code() == grpc::StatusCode::NOT_FOUND)
+        << status.error_message();
+    return out;
+  };
+  StreamTableFrames(2);  // below min_detections 3: nothing yet
+  EXPECT_TRUE(live_now().empty());
+  StreamTableFrames(1);
+  std::vector<rv1::Landmark> live = live_now();
+  ASSERT_EQ(live.size(), 1u);
+  EXPECT_EQ(live[0].observations(), 3u);
+  ExpectTableDescriptor(live[0]);
+  StreamTableFrames(1);
+  live = live_now();
+  ASSERT_EQ(live.size(), 1u);
+  EXPECT_EQ(live[0].observations(), 4u);
+
+  // ResetMap empties it before it answers, too.
+  v1::ResetMapRequest reset;
+  reset.set_request_id("reset-sync");
+  v1::ResetMapResponse reset_done;
+  ASSERT_TRUE(
+      Call([&](grpc::ClientContext* c) { return stub_->ResetMap(c, reset, &reset_done); }).ok());
+  EXPECT_TRUE(live_now().empty());
 }
 
 // Regression (kidnapped episodes with --landmarks mapping): ResetMap left the old scene's
