@@ -4,7 +4,9 @@
 # once on two stacks (--jobs 2) while two busy loops keep both cores loaded, once on one stack
 # (--jobs 1); the per-episode records must be identical and so must the timelines (object ids
 # aside: mapping keeps numbering objects across ResetMap, so they depend on the episodes run
-# before on the same stack).
+# before on the same stack). Then 3 kidnapped episodes relocalize in mapping's own landmark map
+# (--landmarks mapping), loaded and quiet the same way: that map must follow the frames, not a
+# push thread's wall-time interval.
 # usage: lockstep_determinism_test.sh BIN_DIR
 set -u
 bin=$1/semnav
@@ -16,13 +18,17 @@ cleanup() {
 }
 trap cleanup EXIT
 
-run() {  # run NAME JOBS
-  "$bin" bench mission --episodes 8 --strategies SEMANTIC_FRONTIER --jobs "$2" --out "$work/$1" \
-    --json "$work/$1.json" >"$work/$1.out" 2>"$work/$1.err"
+run() {  # run NAME JOBS [GROUP FLAGS]
+  local name=$1 jobs=$2
+  shift 2
+  local groups=("$@")
+  [[ ${#groups[@]} == 0 ]] && groups=(--episodes 8)
+  "$bin" bench mission "${groups[@]}" --strategies SEMANTIC_FRONTIER --jobs "$jobs" \
+    --out "$work/$name" --json "$work/$name.json" >"$work/$name.out" 2>"$work/$name.err"
   local rc=$?
   if [[ $rc != 0 ]]; then
-    echo "FAIL: run $1 exited $rc"
-    tail -20 "$work/$1.out" "$work/$1.err"
+    echo "FAIL: run $name exited $rc"
+    tail -20 "$work/$name.out" "$work/$name.err"
     exit 1
   fi
 }
@@ -31,38 +37,49 @@ for _ in 1 2; do
   (while :; do :; done) &
   busy+=($!)
 done
+kidnapped=(--episodes 0 --kidnapped-episodes 3 --landmarks mapping --max-steps 300)
 run loaded 2
+run kidnapped_loaded 2 "${kidnapped[@]}"
 for pid in "${busy[@]}"; do kill "$pid" 2>/dev/null; done
 busy=()
 run quiet 1
+run kidnapped_quiet 1 "${kidnapped[@]}"
 
 python3 - "$work" <<'PY'
 import glob, json, os, re, sys
 work = sys.argv[1]
 failures = []
-a = json.load(open(os.path.join(work, "loaded.json")))["episodes"]
-b = json.load(open(os.path.join(work, "quiet.json")))["episodes"]
-if len(a) != 8 or len(b) != 8:
-    failures.append("expected 8 episode records, got %d and %d" % (len(a), len(b)))
-for i, (x, y) in enumerate(zip(a, b)):
-    if x != y:
-        failures.append("episode %d differs:\n  loaded %s\n  quiet  %s" % (i, x, y))
-logs = sorted(os.path.basename(p) for p in glob.glob(os.path.join(work, "loaded", "*.log")))
-if len(logs) != 8:
-    failures.append("expected 8 timelines, got %d" % len(logs))
 mask = lambda text: re.sub(r"object \d+", "object N", text)
-for name in logs:
-    x = mask(open(os.path.join(work, "loaded", name)).read())
-    y = mask(open(os.path.join(work, "quiet", name)).read())
-    if x != y:
-        xs, ys = x.splitlines(), y.splitlines()
-        first = next((i for i in range(min(len(xs), len(ys))) if xs[i] != ys[i]), min(len(xs), len(ys)))
-        failures.append("timeline %s differs at line %d:\n  loaded %s\n  quiet  %s" %
-                        (name, first + 1, xs[first] if first < len(xs) else "<end>",
-                         ys[first] if first < len(ys) else "<end>"))
+def compare(loaded, quiet, count):
+    a = json.load(open(os.path.join(work, loaded + ".json")))["episodes"]
+    b = json.load(open(os.path.join(work, quiet + ".json")))["episodes"]
+    if len(a) != count or len(b) != count:
+        failures.append("%s: expected %d episode records, got %d and %d" %
+                        (loaded, count, len(a), len(b)))
+    for i, (x, y) in enumerate(zip(a, b)):
+        if x != y:
+            failures.append("%s: episode %d differs:\n  loaded %s\n  quiet  %s" % (loaded, i, x, y))
+    logs = sorted(os.path.basename(p) for p in glob.glob(os.path.join(work, loaded, "*.log")))
+    if len(logs) != count:
+        failures.append("%s: expected %d timelines, got %d" % (loaded, count, len(logs)))
+    for name in logs:
+        x = mask(open(os.path.join(work, loaded, name)).read())
+        y = mask(open(os.path.join(work, quiet, name)).read())
+        if x != y:
+            xs, ys = x.splitlines(), y.splitlines()
+            first = next((i for i in range(min(len(xs), len(ys))) if xs[i] != ys[i]),
+                         min(len(xs), len(ys)))
+            failures.append("timeline %s/%s differs at line %d:\n  loaded %s\n  quiet  %s" %
+                            (loaded, name, first + 1, xs[first] if first < len(xs) else "<end>",
+                             ys[first] if first < len(ys) else "<end>"))
+    return a
+a = compare("loaded", "quiet", 8)
+k = compare("kidnapped_loaded", "kidnapped_quiet", 3)
 if failures:
     print("FAIL:\n" + "\n".join(failures))
     sys.exit(1)
 print("8 episodes identical on 2 loaded stacks and 1 quiet stack; SR %.3f" %
       (sum(e["success"] for e in a) / len(a)))
+print("3 kidnapped episodes identical; %d losses, %d corrections" %
+      (sum(e["losses"] for e in k), sum(len(e["recovery_times_s"]) for e in k)))
 PY
