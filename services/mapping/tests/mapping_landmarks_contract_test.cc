@@ -93,19 +93,27 @@ class MappingLandmarksContractTest : public ::testing::Test {
     ASSERT_TRUE(stream->Finish().ok());
   }
 
+  // The landmarks of relocalization's map `map_id` now, and how the read ended.
+  std::vector<rv1::Landmark> ReadLandmarks(const std::string& map_id, grpc::Status* status) {
+    rv1::GetLandmarkMapRequest request;
+    request.set_map_id(map_id);
+    grpc::ClientContext context;
+    auto reader = reloc_stub_->GetLandmarkMap(&context, request);
+    rv1::GetLandmarkMapResponse page;
+    std::vector<rv1::Landmark> out;
+    while (reader->Read(&page))
+      out.insert(out.end(), page.landmarks().begin(), page.landmarks().end());
+    *status = reader->Finish();
+    return out;
+  }
+
   // The landmarks of relocalization's map `map_id`, waiting up to 10 s for it to appear.
   std::vector<rv1::Landmark> AwaitLandmarks(const std::string& map_id) {
     const absl::Time give_up = absl::Now() + absl::Seconds(10);
     while (absl::Now() < give_up) {
-      rv1::GetLandmarkMapRequest request;
-      request.set_map_id(map_id);
-      grpc::ClientContext context;
-      auto reader = reloc_stub_->GetLandmarkMap(&context, request);
-      rv1::GetLandmarkMapResponse page;
-      std::vector<rv1::Landmark> out;
-      while (reader->Read(&page))
-        out.insert(out.end(), page.landmarks().begin(), page.landmarks().end());
-      if (reader->Finish().ok() && !out.empty()) return out;
+      grpc::Status status;
+      std::vector<rv1::Landmark> out = ReadLandmarks(map_id, &status);
+      if (status.ok() && !out.empty()) return out;
       absl::SleepFor(absl::Milliseconds(50));
     }
     ADD_FAILURE() << "landmark map " << map_id << " never reached relocalization";
@@ -174,15 +182,8 @@ TEST_F(MappingLandmarksContractTest, LiveSceneGraphFillsTheLandmarkMapWithoutAnO
 TEST_F(MappingLandmarksContractTest, PushWithFramesUpdatesTheLandmarkMapBeforeTheAck) {
   ASSERT_NO_FATAL_FAILURE(StartServices("", "    interval_s: 3600\n    push_with_frames: true\n"));
   auto live_now = [&] {
-    rv1::GetLandmarkMapRequest request;
-    request.set_map_id("robot_x");
-    grpc::ClientContext context;
-    auto reader = reloc_stub_->GetLandmarkMap(&context, request);
-    rv1::GetLandmarkMapResponse page;
-    std::vector<rv1::Landmark> out;
-    while (reader->Read(&page))
-      out.insert(out.end(), page.landmarks().begin(), page.landmarks().end());
-    const grpc::Status status = reader->Finish();
+    grpc::Status status;
+    std::vector<rv1::Landmark> out = ReadLandmarks("robot_x", &status);
     EXPECT_TRUE(status.ok() || status.error_code() == grpc::StatusCode::NOT_FOUND)
         << status.error_message();
     return out;
