@@ -6,6 +6,7 @@ RobotConfig RobotConfig::ForModality(Modality modality) {
   RobotConfig config;
   switch (modality) {
     case Modality::kGround:
+      config.camera_tilt_max = 0.6;
       break;
     case Modality::kUav:
       config.radius = 0.3;

@@ -26,8 +26,11 @@ struct RobotConfig {
   // seed 004): at 0.785 the search found no more targets on the ground and fewer from the UAV,
   // whose camera no longer swept the scene at each bend (docs/performance/mission.md).
   double turn_while_moving_max_rad = 0.0;
-  double camera_height = 0.88;   // above the base (the Habitat agent's camera height)
-  double camera_pitch = 0.0;     // rad, positive looks down
+  double camera_height = 0.88;  // above the base (the Habitat agent's camera height)
+  double camera_pitch = 0.0;    // rad, positive looks down
+  // How far the camera tilts up from camera_pitch on command (RotateAction.camera_tilt_rad, a
+  // pan-tilt head), rad; 0 = fixed. Ground robots: 0.6, over Habitat's 30 deg LOOK_UP.
+  double camera_tilt_max = 0.0;
   double collision_step = 0.05;  // m between collision checks along a motion
   planning::EnergyModel energy;  // seed 003: 400 J/m rolling, 800 J/m flying
 

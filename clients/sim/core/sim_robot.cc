@@ -165,6 +165,16 @@ void SimRobot::Kidnap(const Pose& to) {
   turn_target_.reset();
 }
 
+absl::Status SimRobot::SetCameraTilt(double tilt_rad) {
+  if (!(tilt_rad >= 0.0 && tilt_rad <= robot_.camera_tilt_max + 1e-12)) {
+    return absl::InvalidArgumentError(absl::StrCat("camera_tilt_rad ", tilt_rad, " is outside [0, ",
+                                                   robot_.camera_tilt_max,
+                                                   "] (the camera's tilt range)"));
+  }
+  camera_tilt_ = tilt_rad;
+  return absl::OkStatus();
+}
+
 SensorFrame SimRobot::Capture() {
   SensorFrame frame;
   frame.index = frame_index_++;
@@ -172,9 +182,10 @@ SensorFrame SimRobot::Capture() {
   frame.true_pose = pose_;
   frame.odometry_pose = odometry_.pose();
   const Eigen::Vector3d up(0.0, 0.0, robot_.camera_height);
-  frame.world_from_camera = CameraPoseInWorld(pose_.position + up, pose_.yaw, robot_.camera_pitch);
+  const double pitch = robot_.camera_pitch - camera_tilt_;
+  frame.world_from_camera = CameraPoseInWorld(pose_.position + up, pose_.yaw, pitch);
   frame.odom_from_camera =
-      CameraPoseInWorld(odometry_.pose().position + up, odometry_.pose().yaw, robot_.camera_pitch);
+      CameraPoseInWorld(odometry_.pose().position + up, odometry_.pose().yaw, pitch);
   frame.intrinsics = sensors_.intrinsics;
   const RenderedView view = RenderView(scene_, sensors_.intrinsics, frame.world_from_camera,
                                        sensors_.min_range, sensors_.max_range);

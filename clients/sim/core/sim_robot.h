@@ -42,6 +42,10 @@ class SimRobot {
   // INVALID_ARGUMENT for an empty path or a fly waypoint on a ground robot (names the
   // waypoint); FAILED_PRECONDITION after Stop. State is unchanged on error.
   absl::Status Apply(const RobotCommand& command);
+  // Tilts the camera up from its default pitch (0 = the default view) for the frames captured
+  // from now on. INVALID_ARGUMENT outside [0, RobotConfig::camera_tilt_max]; unchanged then.
+  absl::Status SetCameraTilt(double tilt_rad);
+  double camera_tilt() const { return camera_tilt_; }
   // Advances simulated time by dt seconds (dt > 0), moving and checking collisions.
   StepReport Step(double dt);
   // Renders the sensors at the current time; frame indices count up from 0.
@@ -78,6 +82,7 @@ class SimRobot {
   std::deque<Waypoint> path_;
   std::optional<double> turn_target_;
   bool stopped_ = false;
+  double camera_tilt_ = 0.0;  // rad up from robot_.camera_pitch
   double time_s_ = 0.0;
   double roll_m_ = 0.0;
   double fly_m_ = 0.0;

@@ -101,11 +101,18 @@ bool CommandExecutor::BackUpThenReport(std::string detail) {
 
 Feedback CommandExecutor::Done(api::FeedbackKind kind, std::string detail) {
   phase_ = Phase::kIdle;
+  robot_.SetCameraTilt(0.0).IgnoreError();  // a tilt holds for its command only
   return Feedback{command_id_, kind, std::move(detail)};
 }
 
 Feedback CommandExecutor::Start(const api::RobotCommand& command) {
   command_id_ = command.command_id();
+  double tilt = 0.0;  // a tilt lasts for its command only
+  if (command.action_case() == api::RobotCommand::kRotate)
+    tilt = command.rotate().camera_tilt_rad();
+  if (command.action_case() == api::RobotCommand::kHold) tilt = command.hold().camera_tilt_rad();
+  if (absl::Status s = robot_.SetCameraTilt(tilt); !s.ok())
+    return Done(api::FEEDBACK_KIND_FAILED, std::string(s.message()));
   absl::Status status;
   switch (command.action_case()) {
     case api::RobotCommand::kNavigate: {

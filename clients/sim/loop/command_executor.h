@@ -36,6 +36,7 @@ class CommandExecutor {
   void Interrupt() {
     phase_ = Phase::kIdle;
     local_goal_.reset();
+    robot_.SetCameraTilt(0.0).IgnoreError();
   }
   // True once a (non-emergency) STOP was executed: the episode's stop action.
   bool stop_issued() const { return robot_.stopped(); }

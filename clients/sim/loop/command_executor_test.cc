@@ -92,6 +92,35 @@ TEST_F(CommandExecutorTest, RotateTurnsAtTheRateForTheDuration) {
   EXPECT_NEAR(robot_.pose().yaw, 1.0, 1e-6);
 }
 
+// The camera looks 0.5 rad higher while the rotation runs (a wall clock's turn), and back at its
+// default pitch once it ends; a tilt beyond the head's 0.6 rad fails and changes nothing.
+TEST_F(CommandExecutorTest, ARotationWithTheCameraTiltedUpCapturesHigherAndEndsLevel) {
+  const double default_pitch = RobotConfig::ForModality(Modality::kGround).camera_pitch;
+  auto camera_pitch = [&] {  // from the captured frame: the camera's +z (optical axis) in the world
+    const SensorFrame frame = robot_.Capture();
+    const Eigen::Vector3d axis = frame.world_from_camera.linear() * Eigen::Vector3d::UnitZ();
+    return -std::asin(axis.z());  // positive looks down
+  };
+  EXPECT_NEAR(camera_pitch(), default_pitch, 1e-9);
+  api::RobotCommand command;
+  command.set_command_id(4);
+  command.mutable_rotate()->set_angular_speed_rps(0.5);
+  command.mutable_rotate()->set_duration_s(1.0);
+  command.mutable_rotate()->set_camera_tilt_rad(0.5);
+  ASSERT_EQ(executor_.Start(command).kind, api::FEEDBACK_KIND_ACCEPTED);
+  EXPECT_FALSE(executor_.Step(0.5).has_value());
+  EXPECT_NEAR(camera_pitch(), default_pitch - 0.5, 1e-9);
+  ASSERT_TRUE(executor_.Step(0.5).has_value());
+  EXPECT_NEAR(camera_pitch(), default_pitch, 1e-9);
+
+  command.set_command_id(5);
+  command.mutable_rotate()->set_camera_tilt_rad(0.7);
+  const Feedback refused = executor_.Start(command);
+  EXPECT_EQ(refused.kind, api::FEEDBACK_KIND_FAILED);
+  EXPECT_NE(refused.detail.find("camera_tilt_rad"), std::string::npos);
+  EXPECT_NEAR(camera_pitch(), default_pitch, 1e-9);
+}
+
 TEST_F(CommandExecutorTest, HoldEndsAfterItsDuration) {
   api::RobotCommand command;
   command.set_command_id(4);

@@ -29,6 +29,7 @@ api::SessionHello Hello(const std::string& robot_id, Modality modality, const Ro
   }
   caps->set_max_angular_speed_rps(robot.yaw_rate);
   caps->set_footprint_radius_m(robot.radius);
+  caps->set_camera_tilt_max_rad(robot.camera_tilt_max);
   return hello;
 }
 

@@ -94,8 +94,18 @@ absl::Status CheckCommand(const RobotCommand& command) {
           !s.ok()) {
         return s;
       }
+      if (absl::Status s =
+              CheckRange(command.camera_tilt_rad, "camera_tilt_rad", 0.0, kMaxCameraTiltRad);
+          !s.ok()) {
+        return s;
+      }
       return CheckRange(command.duration_s, "duration_s", 0.0, kMaxCommandDurationS);
     case CommandKind::kHold:
+      if (absl::Status s =
+              CheckRange(command.camera_tilt_rad, "camera_tilt_rad", 0.0, kMaxCameraTiltRad);
+          !s.ok()) {
+        return s;
+      }
       return CheckRange(command.duration_s, "duration_s", 0.0, kMaxCommandDurationS);
     case CommandKind::kStop:
       return absl::OkStatus();

@@ -24,6 +24,8 @@ inline constexpr std::size_t kMaxTargetColours = 16;
 // Speeds a robot reports or is sent, m/s and rad/s: beyond any robot semnav drives.
 inline constexpr double kMaxSpeedMps = 100.0;
 inline constexpr double kMaxAngularSpeedRps = 100.0;
+// A camera tilt up from the robot's default view, rad (straight up from level).
+inline constexpr double kMaxCameraTiltRad = 1.5707963267948966;
 // Rotate / hold durations sent to a robot, seconds.
 inline constexpr double kMaxCommandDurationS = 24 * 3600.0;
 

@@ -18,8 +18,9 @@ struct RobotRecord {
   double sim_now_s = 0.0;                // stamp of the last state (simulated clock)
   uint64_t synced_mapping_revision = 0;  // frames the scene graph was brought up to
   RobotPose pose;
-  bool fly_roll = false;            // the latest hello offered the fly-roll mode
-  double footprint_radius_m = 0.0;  // the latest hello's footprint
+  bool fly_roll = false;             // the latest hello offered the fly-roll mode
+  double footprint_radius_m = 0.0;   // the latest hello's footprint
+  double camera_tilt_max_rad = 0.0;  // the latest hello's camera tilt (0 = cannot tilt)
   RobotPlatform platform = RobotPlatform::kUnspecified;  // from the latest hello's modes
   bool emergency_stop = false;
   std::string active_task;  // "" = none

@@ -29,8 +29,9 @@ struct RobotCommand {
   double max_speed = 0.0;                          // kNavigate: m/s, 0 = robot default
   std::vector<Eigen::Vector3d> path;               // kNavigate: planned waypoints incl. goal
   double angular_speed = 0.0;                      // kRotate: rad/s (positive = counter-clockwise)
-  double duration_s = 0.0;  // kRotate / kHold: seconds, 0 = until next command
-  std::string reason;       // shown to the operator
+  double duration_s = 0.0;       // kRotate / kHold: seconds, 0 = until next command
+  double camera_tilt_rad = 0.0;  // kRotate / kHold: camera tilted up from the default view, rad
+  std::string reason;            // shown to the operator
 };
 
 }  // namespace semnav::reasoning

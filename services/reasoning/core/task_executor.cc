@@ -181,16 +181,31 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(
 }
 
 std::vector<RobotCommand> TaskExecutor::Rotate(double now, double rate, double duration,
-                                               Phase phase, const std::string& reason) {
+                                               Phase phase, const std::string& reason,
+                                               double camera_tilt_rad) {
   RobotCommand command = NewCommand(CommandKind::kRotate, reason);
   command.angular_speed = rate;
   command.duration_s = duration;
+  command.camera_tilt_rad = camera_tilt_rad;
   if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.phase = "looking_around";
   progress_.reason = reason;
   phase_ = phase;
   phase_deadline_ = now + duration;
   return {command};
+}
+
+double TaskExecutor::LookUpTilt() const {
+  const std::vector<std::string>& labels = config_.look_up_labels;
+  if (std::find(labels.begin(), labels.end(), ActiveTarget().name) == labels.end()) return 0.0;
+  return std::clamp(std::min(config_.look_up_tilt_rad, config_.camera_tilt_max_rad), 0.0,
+                    kMaxCameraTiltRad);
+}
+
+bool TaskExecutor::LooksUpHere() const {
+  if (LookUpTilt() <= 0.0 || config_.look_around_rate_rps <= 0.0) return false;
+  return !looked_up_at_.has_value() ||
+         (pose_.position - *looked_up_at_).head<2>().norm() >= config_.look_up_every_m;
 }
 
 std::vector<RobotCommand> TaskExecutor::Hold(double now, double duration,
@@ -817,6 +832,7 @@ std::vector<RobotCommand> TaskExecutor::HoldToVerify(double now) {
       absl::StrCat(glancing_ ? "glancing at object " : "verifying object ",
                    progress_.target->object_id, ": holding while detections confirm it"));
   command.duration_s = phase_deadline_ - now;
+  command.camera_tilt_rad = LookUpTilt();  // a target that hangs high is framed tilted up
   if (absl::Status refused = CheckCommand(command); !refused.ok()) return Refuse(refused);
   progress_.reason = command.reason;
   return {command};
@@ -922,9 +938,14 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now, bool seen_mis
   // Accepted only when seen from within reach at least once: a misplaced or phantom object
   // (office_03: a "tv" mapped on the wrong side of a cabinet) never is. The acceptance is for a
   // camera that cannot frame the target close up; one that framed it and saw nothing does not.
+  // A target that hangs high (look_up_labels) is above even the tilted camera's view within
+  // reach: the detections that confirmed it from afar (the glance's verify_detections) stand.
+  const bool hangs_high = LookUpTilt() > 0.0;
+  const bool seen_within_reach = close_target_ == id && close_detections_ >= 1;
+  const int needed = hangs_high ? config_.verify_detections : config_.verify_accept_detections;
   if (!seen_missing && object != nullptr &&
-      distance <= config_.success_radius_m - config_.success_margin_m && close_target_ == id &&
-      close_detections_ >= 1 && object->detection_count >= config_.verify_accept_detections) {
+      distance <= config_.success_radius_m - config_.success_margin_m &&
+      (seen_within_reach || hangs_high) && object->detection_count >= needed) {
     return TargetReached(now, absl::StrCat("object ", id, " accepted: ", object->detection_count,
                                            " detections, within reach, none new while facing it"));
   }
@@ -1122,6 +1143,12 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
       explore_turned_from_.clear();
       if (current().type == SubgoalType::kExplore)
         return NextSubgoal(now, "exploration goal reached");
+      if (LooksUpHere()) {
+        looked_up_at_ = pose_.position;
+        const double rate = config_.look_around_rate_rps;
+        return Rotate(now, rate, 2.0 * M_PI / rate, Phase::kExploreScan,
+                      "looking up at the exploration goal", LookUpTilt());
+      }
       if (config_.explore_scan_duration_s > 0.0) {
         return Rotate(now, config_.look_around_rate_rps, config_.explore_scan_duration_s,
                       Phase::kExploreScan, "scanning at the exploration goal");

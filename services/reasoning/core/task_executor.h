@@ -38,6 +38,17 @@ struct ExecutorConfig {
   // 0.5 rad/s is 12.6 s); 0 = none. Off: it raised SPL but lowered SR over 80 episodes
   // (docs/performance/mission.md).
   double start_scan_duration_s = 0.0;
+  // Targets that hang above a ground robot's default view: a wall clock at 1.8-2.2 m, where the
+  // simulator's camera (0.88 m high, pitched 20 deg down, 24 deg half view) sees nothing higher
+  // than 4 deg over the horizon, so the clock enters the image only from 12 m, twice the
+  // detector's range. While searching for one, a robot that can tilt its camera
+  // (Capabilities.camera_tilt_max_rad) turns once with the camera tilted up by look_up_tilt_rad
+  // at the first exploration goal it reaches, and again at each goal look_up_every_m (about the
+  // detector's range) from the last such turn. Empty = never; Habitat's agents have LOOK_UP.
+  std::vector<std::string> look_up_labels = {"clock"};
+  double look_up_tilt_rad = 0.5;
+  double look_up_every_m = 4.0;
+  double camera_tilt_max_rad = 0.0;   // the robot's (SetMobility); 0 = it cannot tilt
   double navigate_standoff_m = 1.0;   // NAVIGATE to an object stops this far from it
   double navigate_timeout_s = 120.0;  // per motion command before re-planning
   double verify_timeout_s = 10.0;     // VERIFY gives up (object rejected) after this
@@ -239,10 +250,12 @@ class TaskExecutor {
   std::vector<RobotCommand> Retarget(double now, const TargetSpec& target, bool exclude_current);
 
   // The robot's modality and footprint for planning (known once its session opened).
-  void SetMobility(bool multi_modal, double robot_radius_m, RobotPlatform platform) {
+  void SetMobility(bool multi_modal, double robot_radius_m, RobotPlatform platform,
+                   double camera_tilt_max_rad = 0.0) {
     config_.multi_modal = multi_modal;
     config_.robot_radius_m = robot_radius_m;
     config_.platform = platform;
+    config_.camera_tilt_max_rad = camera_tilt_max_rad;
   }
 
   // The target's text embedding from the model proxy (fast path's embedding term); empty = the
@@ -324,7 +337,12 @@ class TaskExecutor {
                                      std::vector<Eigen::Vector3d> path, double yaw, double speed,
                                      Phase phase, const std::string& reason);
   std::vector<RobotCommand> Rotate(double now, double rate, double duration, Phase phase,
-                                   const std::string& reason);
+                                   const std::string& reason, double camera_tilt_rad = 0.0);
+  // The camera tilt for the active target: look_up_tilt_rad within the robot's limit for a
+  // label in look_up_labels, else 0.
+  double LookUpTilt() const;
+  // A turn with the camera tilted up is due here (look_up_labels, look_up_every_m).
+  bool LooksUpHere() const;
   std::vector<RobotCommand> Hold(double now, double duration, const std::string& reason);
   std::vector<RobotCommand> CheckSuccessOrApproach(double now);
   // Horizontal distance from `point` to the located target's mapped extent (reach_extent_cap_m).
@@ -411,6 +429,8 @@ class TaskExecutor {
   double explore_chosen_at_ = 0.0;               // when it was last chosen or confirmed
   // Goals turned away from since the last one reached: not turned back to (hysteresis).
   std::vector<Eigen::Vector3d> explore_turned_from_;
+  std::optional<Eigen::Vector3d>
+      looked_up_at_;  // where the last turn with the camera tilted up was
   // Where the robot stood when a verified target was last found too far away: a second verdict
   // from the same spot means the approach cannot get closer.
   std::optional<Eigen::Vector3d> too_far_at_;

@@ -382,6 +382,102 @@ TEST_F(GatewayTaskExecutorTest, SearchExploresScansAndSwitchesWhenTheTargetAppea
   EXPECT_DOUBLE_EQ(out[0].max_speed, 0.15);
 }
 
+// A wall clock hangs above a ground robot's default view (docs/performance/mission.md, "Wall
+// clocks are above the camera's view"). A robot that can tilt its camera turns once with it
+// tilted up at the first exploration goal, and again only look_up_every_m from there; a robot
+// that cannot tilt, or a target that does not hang high, gets no such turn.
+TEST_F(GatewayTaskExecutorTest, ARobotLooksUpForAWallClockWhereItHasNotLookedUpYet) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(12, 0, 0),
+                        Eigen::Vector3d(20, 0, 0)};
+  std::vector<Subgoal> find_clock = FindTarget();
+  for (Subgoal& goal : find_clock) {
+    if (goal.target.empty()) continue;
+    goal.target = TargetSpec{};
+    goal.target.name = goal.target.text = "clock";
+  }
+  ExecutorConfig config;  // look_up_labels {clock}, tilt 0.5 rad, every 4 m
+  TaskExecutor task = Make(find_clock, config);
+  task.SetMobility(false, 0.25, RobotPlatform::kUnspecified, /*camera_tilt_max_rad=*/0.4);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  task.OnPose(20, At(10));
+  out = task.OnFeedback(20, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  EXPECT_DOUBLE_EQ(out[0].camera_tilt_rad, 0.4);  // the robot's limit, below look_up_tilt_rad
+  EXPECT_DOUBLE_EQ(out[0].angular_speed, 0.5);
+  EXPECT_NEAR(out[0].duration_s, 2.0 * M_PI / 0.5, 1e-9);  // one full turn
+  EXPECT_EQ(task.progress().reason, "looking up at the exploration goal");
+  out = task.OnFeedback(33, out[0].id, RobotFeedback::kGoalReached);  // turned: the next goal
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(12, 0, 0)));
+  // 2 m on: not again.
+  task.OnPose(40, At(12));
+  out = task.OnFeedback(40, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(20, 0, 0)));
+  // 10 m from the last turn: again.
+  task.OnPose(60, At(20));
+  out = task.OnFeedback(60, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  EXPECT_DOUBLE_EQ(out[0].camera_tilt_rad, 0.4);
+  // A clock seen once during the turn: the robot faces it, and the glance that would confirm it
+  // holds with the camera tilted up (the default view would not frame it).
+  SceneObject clock;
+  clock.id = 9;
+  clock.label = "clock";
+  clock.position = Eigen::Vector3d(24, 0, 2.0);
+  clock.score = 0.9;
+  clock.detection_count = 1;
+  out = task.OnSceneGraph(62, GraphWith({clock}, 1));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_DOUBLE_EQ(out[0].camera_tilt_rad, 0.0);
+  out = task.OnFeedback(63, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);
+  EXPECT_DOUBLE_EQ(out[0].camera_tilt_rad, 0.4);
+  // Confirmed by the glance (a second detection), approached: within reach the clock hangs above
+  // even the tilted view, so VERIFY sees nothing new and, at its timeout, accepts what the glance
+  // confirmed (verify_detections 2; any other target needs verify_accept_detections 4 and a
+  // sighting from within reach).
+  clock.detection_count = 2;
+  out = task.OnSceneGraph(64, GraphWith({clock}, 2));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(current_type(task), SubgoalType::kApproach);
+  task.OnPose(70, At(23.6));
+  out = task.OnFeedback(70, out[0].id, RobotFeedback::kGoalReached);
+  while (!out.empty() && out[0].kind == CommandKind::kNavigate &&
+         current_type(task) == SubgoalType::kVerify) {
+    out = task.OnFeedback(70.5, out[0].id, RobotFeedback::kGoalReached);  // faced it
+  }
+  ASSERT_EQ(current_type(task), SubgoalType::kVerify);
+  EXPECT_TRUE(task.OnPose(75, At(23.6)).empty());
+  out = task.OnPose(81, At(23.6));  // the 10 s window is over, nothing new seen
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kStop);
+  EXPECT_EQ(task.progress().state, TaskState::kSucceeded);
+
+  // A robot whose camera cannot tilt, and a target that does not hang high: on at once.
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(12, 0, 0)};
+  TaskExecutor fixed = Make(find_clock, config);
+  out = fixed.Start(0, At(0));
+  fixed.OnPose(20, At(10));
+  out = fixed.OnFeedback(20, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  TaskExecutor low = Make(FindTarget(), config);
+  low.SetMobility(false, 0.25, RobotPlatform::kUnspecified, 0.6);
+  out = low.Start(0, At(0));
+  low.OnPose(20, At(10));
+  out = low.OnFeedback(20, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+}
+
 TEST_F(GatewayTaskExecutorTest, WithoutAScanTheNextExplorationGoalFollowsAtOnce) {
   planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0)};
   ExecutorConfig config;

@@ -4,6 +4,7 @@
 
 #include "services/common/place_prior/place_prior.h"
 #include "services/common/status/field_error.h"
+#include "services/reasoning/core/input_limits.h"
 
 namespace semnav::reasoning {
 
@@ -47,6 +48,9 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("look_around_duration_s", &c.executor.look_around_duration_s)
       .Read("explore_scan_duration_s", &c.executor.explore_scan_duration_s)
       .Read("start_scan_duration_s", &c.executor.start_scan_duration_s)
+      .Read("look_up_labels", &c.executor.look_up_labels)
+      .Read("look_up_tilt_rad", &c.executor.look_up_tilt_rad)
+      .Read("look_up_every_m", &c.executor.look_up_every_m)
       .Read("navigate_standoff_m", &c.executor.navigate_standoff_m)
       .Read("navigate_timeout_s", &c.executor.navigate_timeout_s)
       .Read("verify_timeout_s", &c.executor.verify_timeout_s)
@@ -89,6 +93,13 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(
       c.executor.start_scan_duration_s >= 0.0 && c.executor.start_scan_duration_s <= 120.0,
       "start_scan_duration_s", "must be in [0, 120] (0 = no turn)");
+  executor.Check(std::isfinite(c.executor.look_up_tilt_rad) && c.executor.look_up_tilt_rad >= 0.0 &&
+                     c.executor.look_up_tilt_rad <= kMaxCameraTiltRad,
+                 "look_up_tilt_rad", "must be in [0, pi/2] (0 = never)");
+  executor.Check(std::isfinite(c.executor.look_up_every_m) && c.executor.look_up_every_m >= 0.0 &&
+                     c.executor.look_up_every_m <= 1000.0,
+                 "look_up_every_m", "must be in [0, 1000]");
+  executor.Check(c.executor.look_up_labels.size() <= 64, "look_up_labels", "at most 64 labels");
   executor.Check(c.executor.success_radius_m > 0.0, "success_radius_m", "must be > 0");
   executor.Check(c.executor.max_replans >= 0, "max_replans", "must be >= 0");
   executor.Check(c.executor.explore_exclusion_radius_m >= 0.0, "explore_exclusion_radius_m",

@@ -103,7 +103,8 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
       "unreachable_region_m: 3,\n"
       "           time_budget_s: 250, endgame_s: 30, max_blocks_per_goal: 3,\n"
       "           explore_scan_duration_s: 6, start_scan_duration_s: 12.6,\n"
-      "           explore_reselect_s: 3, explore_keep_radius_m: 1.5, verify_rule_out_misses: 5}\n"
+      "           explore_reselect_s: 3, explore_keep_radius_m: 1.5, verify_rule_out_misses: 5,\n"
+      "           look_up_labels: [clock, tv], look_up_tilt_rad: 0.4, look_up_every_m: 6}\n"
       "mapping: {address: 127.0.0.1:50051}\n");
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const GatewayConfig& config = *loaded;
@@ -123,6 +124,9 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
   EXPECT_DOUBLE_EQ(config.executor.explore_reselect_s, 3.0);
   EXPECT_DOUBLE_EQ(config.executor.explore_keep_radius_m, 1.5);
   EXPECT_EQ(config.executor.verify_rule_out_misses, 5);
+  EXPECT_EQ(config.executor.look_up_labels, (std::vector<std::string>{"clock", "tv"}));
+  EXPECT_DOUBLE_EQ(config.executor.look_up_tilt_rad, 0.4);
+  EXPECT_DOUBLE_EQ(config.executor.look_up_every_m, 6.0);
   EXPECT_EQ(config.mapping.address, "127.0.0.1:50051");
 
   for (const char* yaml : {"fast_path: {fast_threshold: 1.5}",
@@ -136,6 +140,9 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
                            "executor: {time_budget_s: -1}",
                            "executor: {max_blocks_per_goal: 0}",
                            "executor: {explore_scan_duration_s: -1}",
+                           "executor: {look_up_tilt_rad: 1.6}",
+                           "executor: {look_up_tilt_rad: .nan}",
+                           "executor: {look_up_every_m: -1}",
                            "executor: {explore_scan_duration_s: 121}",
                            "executor: {start_scan_duration_s: -0.5}",
                            "executor: {explore_reselect_s: -1}",

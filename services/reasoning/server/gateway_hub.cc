@@ -281,7 +281,8 @@ std::vector<RobotCommand> GatewayHub::GiveSceneGraph(Task& task, double now) {
 }
 
 void GatewayHub::SetMobility(Task& task, const Robot& robot) {
-  task.executor->SetMobility(robot.fly_roll, robot.footprint_radius_m, robot.platform);
+  task.executor->SetMobility(robot.fly_roll, robot.footprint_radius_m, robot.platform,
+                             robot.camera_tilt_max_rad);
 }
 
 absl::StatusOr<api::SubmitInstructionResponse> GatewayHub::Submit(

@@ -74,6 +74,7 @@ absl::StatusOr<api::SessionAccepted> GatewayHub::OpenSession(
   robot.fly_roll =
       std::find(modes.begin(), modes.end(), api::LOCOMOTION_MODE_FLY_ROLL) != modes.end();
   robot.footprint_radius_m = hello.capabilities().footprint_radius_m();
+  robot.camera_tilt_max_rad = hello.capabilities().camera_tilt_max_rad();
   robot.platform = PlatformOf(modes);
   robot.simulated_clock = hello.clock() == api::CLOCK_KIND_SIMULATED;
   // A new simulated session is a new simulation: its clock and frames start over.

@@ -365,6 +365,13 @@ TEST_F(GatewayHubValidationTest, HelloAndCameraFramesAreChecked) {
   hello.mutable_capabilities()->add_modes(static_cast<api::LocomotionMode>(42));
   EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()), "hello.capabilities.modes[0]");
   hello.mutable_capabilities()->clear_modes();
+  for (double tilt : {std::nan(""), -0.1, 2.0, 1e300}) {  // a camera tilts up by at most pi/2
+    hello.mutable_capabilities()->set_camera_tilt_max_rad(tilt);
+    EXPECT_EQ(ErrorField(hub_.OpenSession(hello, &session).status()),
+              "hello.capabilities.camera_tilt_max_rad");
+  }
+  EXPECT_TRUE(session.messages().empty());
+  hello.mutable_capabilities()->set_camera_tilt_max_rad(0.6);
   ASSERT_TRUE(hub_.OpenSession(hello, &session).ok());
 
   api::CameraFrame frame;

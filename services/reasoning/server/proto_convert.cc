@@ -80,12 +80,14 @@ api::RobotCommand ToProto(const RobotCommand& command, uint64_t session_command_
     case CommandKind::kRotate:
       out.mutable_rotate()->set_angular_speed_rps(command.angular_speed);
       out.mutable_rotate()->set_duration_s(command.duration_s);
+      out.mutable_rotate()->set_camera_tilt_rad(command.camera_tilt_rad);
       break;
     case CommandKind::kStop:
       out.mutable_stop();
       break;
     case CommandKind::kHold:
       out.mutable_hold()->set_duration_s(command.duration_s);
+      out.mutable_hold()->set_camera_tilt_rad(command.camera_tilt_rad);
       break;
   }
   return out;

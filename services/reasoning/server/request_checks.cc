@@ -212,7 +212,8 @@ absl::Status Validate(const api::SessionHello& hello) {
       {caps.max_angular_speed_rps(), "hello.capabilities.max_angular_speed_rps",
        kMaxAngularSpeedRps},
       {caps.max_vertical_speed_mps(), "hello.capabilities.max_vertical_speed_mps", kMaxSpeedMps},
-      {caps.footprint_radius_m(), "hello.capabilities.footprint_radius_m", kMaxFootprintRadiusM}};
+      {caps.footprint_radius_m(), "hello.capabilities.footprint_radius_m", kMaxFootprintRadiusM},
+      {caps.camera_tilt_max_rad(), "hello.capabilities.camera_tilt_max_rad", kMaxCameraTiltRad}};
   for (const auto& [value, field, max] : limits) {
     if (absl::Status s = CheckRange(value, field, 0.0, max); !s.ok()) return s;
   }
