@@ -101,7 +101,7 @@ bool CommandExecutor::BackUpThenReport(std::string detail) {
 
 Feedback CommandExecutor::Done(api::FeedbackKind kind, std::string detail) {
   phase_ = Phase::kIdle;
-  robot_.SetCameraTilt(0.0).IgnoreError();  // a tilt holds for its command only
+  robot_.SetCameraTilt(0.0).IgnoreError();  // a tilt lasts for its command only
   return Feedback{command_id_, kind, std::move(detail)};
 }
 

@@ -94,12 +94,7 @@ absl::Status CheckCommand(const RobotCommand& command) {
           !s.ok()) {
         return s;
       }
-      if (absl::Status s =
-              CheckRange(command.camera_tilt_rad, "camera_tilt_rad", 0.0, kMaxCameraTiltRad);
-          !s.ok()) {
-        return s;
-      }
-      return CheckRange(command.duration_s, "duration_s", 0.0, kMaxCommandDurationS);
+      [[fallthrough]];  // then what a hold is checked for
     case CommandKind::kHold:
       if (absl::Status s =
               CheckRange(command.camera_tilt_rad, "camera_tilt_rad", 0.0, kMaxCameraTiltRad);

@@ -78,6 +78,19 @@ TEST(GatewayInputLimitsTest, CommandsCarryOnlyFiniteSaneNumbers) {
   EXPECT_TRUE(CheckCommand(rotate).ok());
   rotate.angular_speed = INFINITY;
   EXPECT_EQ(ErrorField(CheckCommand(rotate)), "angular_speed_rps");
+  // A camera tilt is in [0, pi/2], on a rotation and on a hold alike.
+  rotate.angular_speed = 0.5;
+  RobotCommand hold;
+  hold.kind = CommandKind::kHold;
+  hold.duration_s = 2.0;
+  for (RobotCommand* command : {&rotate, &hold}) {
+    command->camera_tilt_rad = 0.5;
+    EXPECT_TRUE(CheckCommand(*command).ok());
+    for (double tilt : {static_cast<double>(NAN), -0.1, 1.6}) {
+      command->camera_tilt_rad = tilt;
+      EXPECT_EQ(ErrorField(CheckCommand(*command)), "camera_tilt_rad");
+    }
+  }
 }
 
 }  // namespace

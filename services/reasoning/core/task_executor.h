@@ -429,8 +429,8 @@ class TaskExecutor {
   double explore_chosen_at_ = 0.0;               // when it was last chosen or confirmed
   // Goals turned away from since the last one reached: not turned back to (hysteresis).
   std::vector<Eigen::Vector3d> explore_turned_from_;
-  std::optional<Eigen::Vector3d>
-      looked_up_at_;  // where the last turn with the camera tilted up was
+  // Where the last turn with the camera tilted up was (look_up_every_m counts from it).
+  std::optional<Eigen::Vector3d> looked_up_at_;
   // Where the robot stood when a verified target was last found too far away: a second verdict
   // from the same spot means the approach cannot get closer.
   std::optional<Eigen::Vector3d> too_far_at_;
