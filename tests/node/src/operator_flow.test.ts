@@ -29,8 +29,12 @@ test('instruction -> task -> robot commands -> watched to SUCCEEDED -> events', 
   assert.equal(submitted.task.task_id, taskId);
   assert.deepEqual(submitted.task.subgoals.map((s: any) => s.type), ['SUBGOAL_TYPE_LOOK_AROUND', 'SUBGOAL_TYPE_WAIT']);
 
-  // Watching from revision 0 starts with the current snapshot, so nothing is missed.
+  // Watching from revision 0 starts with the current snapshot, so nothing is missed. The robot
+  // answers only after that first snapshot arrived: otherwise the task can end before the watch
+  // reaches the gateway, and the watch then rightly sees only the final snapshot.
   const watch = new StreamReader((operator as any).WatchTask({ task_id: taskId, since_revision: 0 }));
+  const opening = (await watch.next()).task;
+  assert.notEqual(opening.status, 'TASK_STATUS_SUCCEEDED');
 
   const rotate = await robot.nextCommand();
   assert.equal(rotate.action, 'rotate');
@@ -45,7 +49,7 @@ test('instruction -> task -> robot commands -> watched to SUCCEEDED -> events', 
 
   const { messages, status } = await watch.drain();
   assert.equal(status.code, grpc.status.OK, 'WatchTask ends OK when the task finishes');
-  const snapshots = messages.map((m: any) => m.task);
+  const snapshots = [opening, ...messages.map((m: any) => m.task)];
   assert.ok(snapshots.length >= 2, `snapshots: ${snapshots.length}`);
   for (let i = 1; i < snapshots.length; ++i) assert.ok(snapshots[i].revision > snapshots[i - 1].revision);
   const last = snapshots[snapshots.length - 1];
