@@ -426,12 +426,9 @@ TEST_F(GatewayTaskExecutorTest, ARobotLooksUpForAWallClockWhereItHasNotLookedUpY
   EXPECT_DOUBLE_EQ(out[0].camera_tilt_rad, 0.4);
   // A clock seen once during the turn: the robot faces it, and the glance that would confirm it
   // holds with the camera tilted up (the default view would not frame it).
-  SceneObject clock;
+  SceneObject clock = LabelledAs(Extinguisher(1), "clock");  // score 0.9, no colour
   clock.id = 9;
-  clock.label = "clock";
   clock.position = Eigen::Vector3d(24, 0, 2.0);
-  clock.score = 0.9;
-  clock.detection_count = 1;
   out = task.OnSceneGraph(62, GraphWith({clock}, 1));
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
