@@ -80,6 +80,36 @@ bool LineClear(const std::vector<Shape>& blockers, const Eigen::Vector2d& from,
   return true;
 }
 
+// Straight distance from `from` to the nearest point of the box footprint seen from it at
+// height z, infinity when none within `reach` is. The nearest point is tried first; when a
+// solid hides it, points spread over the footprint (at most every 5 cm, 16 per side) are, since
+// Habitat's view points need some of the object in view, not its nearest point (a laptop
+// behind a monitor's corner is seen past the monitor's edge).
+double VisibleFootprintDistance(const std::vector<Shape>& blockers, const BoxShape& box,
+                                const Eigen::Vector2d& from, double z, double reach) {
+  const Eigen::Vector2d nearest = NearestFootprintPoint(box, from);
+  const double straight = (nearest - from).norm();
+  if (straight > reach) return kInfinity;
+  if (LineClear(blockers, from, nearest, z)) return straight;
+  const Eigen::Vector2d u(std::cos(box.yaw), std::sin(box.yaw));
+  const Eigen::Vector2d v(-u.y(), u.x());
+  auto samples = [](double extent) {
+    return std::clamp(static_cast<int>(std::ceil(extent / 0.05)) + 1, 2, 16);
+  };
+  const int nu = samples(box.size.x()), nv = samples(box.size.y());
+  double best = kInfinity;
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      const Eigen::Vector2d point = box.center + (i / (nu - 1.0) - 0.5) * box.size.x() * u +
+                                    (j / (nv - 1.0) - 0.5) * box.size.y() * v;
+      const double distance = (point - from).norm();
+      if (distance > reach || distance >= best) continue;
+      if (LineClear(blockers, from, point, z)) best = distance;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 double DistanceToNearestInstance(const World& world, std::string_view label,
@@ -105,7 +135,7 @@ SuccessRegion SuccessRegion::Build(const World& world, std::string_view label,
   std::vector<double> cost(cells, kInfinity);
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  // View cells: free, within the radius of a footprint, with a clear straight line to it.
+  // View cells: free, with a clear straight line to a point of a footprint within the radius.
   for (const ObjectInstance& object : world.objects) {
     if (object.label != label) continue;
     const std::vector<Shape> blockers = Blockers(world, object, success_radius);
@@ -126,12 +156,12 @@ SuccessRegion SuccessRegion::Build(const World& world, std::string_view label,
         const int index = y * g.width + x;
         if (!region.free_[index]) continue;
         const Eigen::Vector2d centre = g.CellCentre(x, y);
-        const Eigen::Vector2d nearest = NearestFootprintPoint(object.box, centre);
-        const double straight = (nearest - centre).norm();
-        if (straight > success_radius || straight >= cost[index]) continue;
-        if (!LineClear(blockers, centre, nearest, mid_z)) continue;
-        cost[index] = straight;
-        open.push({straight, index});
+        if (DistanceToBoxFootprint(object.box, centre) >= cost[index]) continue;
+        const double seen =
+            VisibleFootprintDistance(blockers, object.box, centre, mid_z, success_radius);
+        if (seen >= cost[index]) continue;
+        cost[index] = seen;
+        open.push({seen, index});
       }
     }
   }

@@ -31,11 +31,12 @@ double DistanceToNearestInstance(const World& world, std::string_view label,
 // et al. 2020, "ObjectNav revisited"): the cells of the robot body's true occupancy grid whose
 // geodesic distance to the footprint of an instance of the label is at most the success radius.
 // The geodesic distance of a free cell is the shortest 8-connected path over free cells to a
-// view cell plus the view cell's straight distance to the footprint; a view cell is a free cell
-// within the radius of a footprint whose straight line to it, at the instance's mid-height,
-// meets no solid. Solids that overlap the instance's footprint and are not structure (the
-// table under a cup, the shelf holding a book) do not block; walls and buildings always do.
-// So a target 0.5 m behind a thin wall is 0.5 m away only from its own side.
+// view cell plus the view cell's straight distance to the footprint's nearest point it sees; a
+// view cell is a free cell from which a straight line to a point of a footprint within the
+// radius, at the instance's mid-height, meets no solid (some of the object in view, not
+// necessarily its nearest point). Solids that overlap the instance's footprint and are not
+// structure (the table under a cup, the shelf holding a book) do not block; walls and buildings
+// always do. So a target 0.5 m behind a thin wall is 0.5 m away only from its own side.
 class SuccessRegion {
  public:
   static SuccessRegion Build(const World& world, std::string_view label,

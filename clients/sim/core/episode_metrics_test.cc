@@ -109,6 +109,33 @@ TEST(SimEpisodeMetricsTest, SupportDoesNotBlockButATallSolidDoes) {
   EXPECT_FALSE(hidden.Contains({0.0, -0.95}));  // 0.9 m away, behind the cabinet
 }
 
+// Regression (office_01, start 2, "find laptop"): the robot stopped 0.66 m from a laptop on a
+// desk, seeing it past the corner of a monitor that hid only the laptop's nearest point; the
+// other desk kept the robot's body from any cell that saw that point, and the stop was scored a
+// failure. Some of the object in view is enough, as for Habitat's view points.
+TEST(SimEpisodeMetricsTest, ObjectSeenPastAnOccludersEdgeIsReached) {
+  World world = testing::OpenWorld();
+  world.obstacles.push_back(Obstacle{"desk_1", Rgb{}, Box(0.443, 0.896, 1.4, 0.7, 0.75, 3.142)});
+  world.obstacles.push_back(Obstacle{"desk_2", Rgb{}, Box(1.124, -0.625, 1.4, 0.7, 0.75, 1.571)});
+  BoxShape monitor = Box(0.391, 0.716, 0.6, 0.15, 0.4, 3.142);
+  monitor.base_z = 0.75;
+  world.objects.push_back(testing::Object("tv_1", "tv", monitor));
+  BoxShape laptop = Box(0.901, 0.885, 0.35, 0.25, 0.03, 3.142);
+  laptop.base_z = 0.75;
+  world.objects.push_back(testing::Object("laptop_1", "laptop", laptop));
+  const GroundTruthGrid body = RasterizeOccupancy(world, RasterOptions{});  // 0.25 m robot
+  const SuccessRegion region = SuccessRegion::Build(world, "laptop", body);
+  // The line to the laptop's near edge (y = 0.76) clears the monitor's corner (0.69, 0.64) from
+  // x = 0.76 on; the nearest sample there, (0.78, 0.76), is 0.68 m away. Its nearest point,
+  // (0.73, 0.76), is hidden.
+  EXPECT_TRUE(region.Contains({0.43, 0.17}));
+  EXPECT_NEAR(region.GeodesicDistance({0.43, 0.17}), 0.68, 0.03);
+  // A monitor as wide as the laptop's whole side hides it from there.
+  world.objects[0].box = Box(0.65, 0.68, 1.2, 0.1, 0.4, 3.142);
+  world.objects[0].box.base_z = 0.75;
+  EXPECT_FALSE(SuccessRegion::Build(world, "laptop", body).Contains({0.43, 0.17}));
+}
+
 TEST(SimEpisodeMetricsTest, AggregatesPerStrategyByHand) {
   auto record = [](std::string strategy, bool success, double l, double p, double d, double t,
                    double energy, int calls, int resolved, int fast) {
