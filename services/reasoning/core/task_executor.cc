@@ -573,12 +573,15 @@ std::vector<RobotCommand> TaskExecutor::FallbackStep(double now) {
     if (path.ok() || absl::IsNotFound(path.status())) failed_fallback_steps_.push_back(target);
   }
   // Nothing can be planned from here: the robot may stand where planning cannot start (a narrow
-  // gap, an inflated wall). Back off along the way it came once, then look around.
-  if (!last_fallback_backed_off_ && trail_.size() >= 2) {
-    last_fallback_backed_off_ = true;
-    --progress_.explore_goals;  // the exploration step after backing off asks again
-    return BackOff(now, /*resume_exploring=*/true,
-                   "no path to the exploration goal from here; backing off");
+  // gap, an inflated wall). Retrace the way it came once, then look around.
+  if (!last_fallback_backed_off_) {
+    std::vector<RobotCommand> retreat =
+        RetraceTrail(now, "no path to the exploration goal from here; backing off");
+    if (!retreat.empty()) {
+      last_fallback_backed_off_ = true;
+      --progress_.explore_goals;  // the exploration step after backing off asks again
+      return retreat;
+    }
   }
   last_fallback_backed_off_ = false;
   return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
@@ -1075,6 +1078,30 @@ std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_explorin
   return Navigate(now, back, std::move(path), pose_.yaw, 0.0, Phase::kBackingOff, reason);
 }
 
+std::vector<RobotCommand> TaskExecutor::RetraceTrail(double now, const std::string& reason) {
+  // Regression (drift group, office_04 start 2): this retreat was BackOff's, whose length is the
+  // blocked recovery's backoff_m, 0 by default, so "backing off" sent the robot to its own spot
+  // and the task alternated it with looking around for the last 125 s of the budget.
+  if (config_.no_path_retreat_m <= 0.0) return {};
+  std::vector<Eigen::Vector3d> path = {pose_.position};
+  double length = 0.0;
+  std::size_t kept = trail_.size();
+  for (auto it = trail_.rbegin(); it != trail_.rend() && length < config_.no_path_retreat_m; ++it) {
+    const double step = (*it - path.back()).head<2>().norm();
+    --kept;
+    if (step < 1e-3) continue;
+    length += step;
+    path.push_back(*it);
+  }
+  if (length < config_.no_path_retreat_m) return {};
+  // What it retraced is no longer the way it came: the next retreat goes on from there.
+  trail_.resize(kept + 1);
+  for (Eigen::Vector3d& point : path) point.z() = pose_.position.z();
+  resume_exploring_ = true;
+  const Eigen::Vector3d back = path.back();
+  return Navigate(now, back, std::move(path), YawTo(back), 0.0, Phase::kBackingOff, reason);
+}
+
 std::vector<RobotCommand> TaskExecutor::ResumeAfterBackoff(double now) {
   // A blocked navigation planned again is a re-plan: it counts toward max_replans.
   if (!resume_exploring_) return CountedReplan(now, "re-planning after backing off");
@@ -1174,7 +1201,9 @@ std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose
     pose_ = pose;
     constexpr double kTrailSpacingM = 0.25;
     constexpr std::size_t kTrailPoints = 40;
-    if (trail_.empty() || (trail_.back() - pose_.position).head<2>().norm() >= kTrailSpacingM) {
+    // Not while backing off: a retreat is not the way the robot came.
+    if (phase_ != Phase::kBackingOff &&
+        (trail_.empty() || (trail_.back() - pose_.position).head<2>().norm() >= kTrailSpacingM)) {
       trail_.push_back(pose_.position);
       if (trail_.size() > kTrailPoints) trail_.erase(trail_.begin());
     }

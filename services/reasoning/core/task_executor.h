@@ -79,6 +79,10 @@ struct ExecutorConfig {
   double explore_reselect_s = 2.0;
   double explore_keep_radius_m = 1.0;
   double fallback_explore_step_m = 3.0;  // without frontiers: step toward the least-explored sector
+  // When no fallback step has a path from where the robot stands (a nook walled in by inflated
+  // or misplaced walls), it first retraces the way it came, through space it drove, by this much
+  // before it looks around. 0 = it only looks around.
+  double no_path_retreat_m = 1.0;
   double min_explore_step_m = 0.5;  // an exploration goal whose path ends closer is spent unvisited
   // A rolling robot's exploration goals are cells its footprint stands on, reached with it
   // (SelectExplorationGoalRequest.robot_radius_m). Off: measured, it did not settle the fleet's
@@ -365,6 +369,9 @@ class TaskExecutor {
   std::vector<RobotCommand> Blocked(double now);
   // Drive back along the recent trail (known free space); then ResumeAfterBackoff.
   std::vector<RobotCommand> BackOff(double now, bool resume_exploring, const std::string& reason);
+  // Back along the trail by no_path_retreat_m, then explore again; empty when the trail is
+  // shorter than that.
+  std::vector<RobotCommand> RetraceTrail(double now, const std::string& reason);
   std::vector<RobotCommand> ResumeAfterBackoff(double now);
   // The watchdog fired: the phase's recovery.
   std::vector<RobotCommand> NoProgress(double now);

@@ -891,6 +891,52 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   EXPECT_GT((next[0].goal - failed_step).norm(), 2.0);
 }
 
+// Regression (drift group, office_04 start 2): with no path from where the robot stood, the task
+// "backed off" to the robot's own spot (the blocked recovery's backoff_m, 0 by default) and looked
+// around, in turn, for the last 125 s of the budget. It retraces the way it came instead, 1 m,
+// and the next retreat goes on back from there, not forward over the retraced part.
+TEST_F(GatewayTaskExecutorTest, WithNoPathFromHereTheRobotRetracesTheWayItCame) {
+  planner_.frontiers = {Eigen::Vector3d(3, 0, 0)};
+  TaskExecutor task = Make(FindTarget());
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  for (int i = 1; i <= 12; ++i) task.OnPose(0.5 * i, At(0.25 * i));  // drives east to x = 3
+  planner_.unreachable = true;  // nothing to explore, no fallback step has a path
+  out = task.OnFeedback(6.5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_EQ(task.progress().phase, "backing_off");
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(2, 0, 0), 1e-9)) << out[0].goal.transpose();
+  ASSERT_GE(out[0].path.size(), 2u);
+  EXPECT_TRUE(out[0].path.front().isApprox(Eigen::Vector3d(3, 0, 0), 1e-9));
+  for (int i = 1; i <= 4; ++i) task.OnPose(6.5 + 0.5 * i, At(3 - 0.25 * i));
+  // Back at x = 2 there is still no path: it looks around.
+  out = task.OnFeedback(8.5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  // Then it goes on back, to x = 1.
+  out = task.OnFeedback(20.5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(1, 0, 0), 1e-9)) << out[0].goal.transpose();
+  EXPECT_EQ(task.progress().state, TaskState::kRunning);
+}
+
+// With no_path_retreat_m 0 (or no trail yet) it only looks around.
+TEST_F(GatewayTaskExecutorTest, WithoutARetreatNoPathFromHereLooksAround) {
+  planner_.frontiers = {Eigen::Vector3d(3, 0, 0)};
+  ExecutorConfig config;
+  config.no_path_retreat_m = 0.0;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  for (int i = 1; i <= 12; ++i) task.OnPose(0.5 * i, At(0.25 * i));
+  planner_.unreachable = true;
+  out = task.OnFeedback(6.5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+}
+
 // Regression (house_expo_room_0000 with the model: "navigate to (2.43, 3.63) along 1 waypoints"
 // sent 10 times where the robot stood, until the exploration budget was spent). A fallback step
 // into furniture next to the robot plans to the free point nearest it: the robot's own spot. Such

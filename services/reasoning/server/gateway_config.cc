@@ -64,6 +64,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("path_clearance_m", &c.executor.path_clearance_m)
       .Read("min_explore_step_m", &c.executor.min_explore_step_m)
       .Read("fallback_explore_step_m", &c.executor.fallback_explore_step_m)
+      .Read("no_path_retreat_m", &c.executor.no_path_retreat_m)
       .Read("explore_reselect_s", &c.executor.explore_reselect_s)
       .Read("explore_keep_radius_m", &c.executor.explore_keep_radius_m)
       .Read("explore_with_footprint", &c.executor.explore_with_footprint)
@@ -134,6 +135,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       "verify_rule_out_misses", "must be in [0, 1000] (0 = off)");
   executor.Check(c.executor.backoff_m >= 0.0 && c.executor.backoff_m <= 5.0, "backoff_m",
                  "must be in [0, 5]");
+  executor.Check(c.executor.no_path_retreat_m >= 0.0 && c.executor.no_path_retreat_m <= 5.0,
+                 "no_path_retreat_m", "must be in [0, 5]");
   executor.Check(c.executor.blocked_clearance_step_m >= 0.0, "blocked_clearance_step_m",
                  "must be >= 0");
   executor.Check(
