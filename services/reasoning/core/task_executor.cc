@@ -1079,6 +1079,7 @@ std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_explorin
 }
 
 std::vector<RobotCommand> TaskExecutor::RetraceTrail(double now, const std::string& reason) {
+  constexpr double kMaxTrailStepM = 1.0;
   // Regression (drift group, office_04 start 2): this retreat was BackOff's, whose length is the
   // blocked recovery's backoff_m, 0 by default, so "backing off" sent the robot to its own spot
   // and the task alternated it with looking around for the last 125 s of the budget.
@@ -1088,6 +1089,9 @@ std::vector<RobotCommand> TaskExecutor::RetraceTrail(double now, const std::stri
   std::size_t kept = trail_.size();
   for (auto it = trail_.rbegin(); it != trail_.rend() && length < config_.no_path_retreat_m; ++it) {
     const double step = (*it - path.back()).head<2>().norm();
+    // Trail points lie 0.25-0.5 m apart; a longer step is a jump of the pose (a relocalization's
+    // correction), not space the robot drove through: the trail ends there.
+    if (step > kMaxTrailStepM) break;
     --kept;
     if (step < 1e-3) continue;
     length += step;

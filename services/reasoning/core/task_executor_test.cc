@@ -923,6 +923,21 @@ TEST_F(GatewayTaskExecutorTest, WithNoPathFromHereTheRobotRetracesTheWayItCame) 
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
 }
 
+// A pose that jumped (a relocalization's correction) breaks the trail: the robot is not sent
+// along the straight line between where it was believed to be and where it is.
+TEST_F(GatewayTaskExecutorTest, NoRetreatAcrossAJumpOfThePose) {
+  planner_.frontiers = {Eigen::Vector3d(3, 0, 0)};
+  TaskExecutor task = Make(FindTarget());
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  for (int i = 1; i <= 12; ++i) task.OnPose(0.5 * i, At(0.25 * i));
+  task.OnPose(6.25, At(3, 2));  // corrected 2 m north
+  task.OnPose(6.5, At(3.25, 2));
+  planner_.unreachable = true;
+  out = task.OnFeedback(6.5, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);  // 0.25 m of trail since the jump: no retreat
+}
+
 // With no_path_retreat_m 0 (or no trail yet) it only looks around.
 TEST_F(GatewayTaskExecutorTest, WithoutARetreatNoPathFromHereLooksAround) {
   planner_.frontiers = {Eigen::Vector3d(3, 0, 0)};
