@@ -1,6 +1,7 @@
 #include "clients/sim/core/episode_metrics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -91,8 +92,9 @@ double VisibleFootprintDistance(const std::vector<Shape>& blockers, const BoxSha
   const double straight = (nearest - from).norm();
   if (straight > reach) return kInfinity;
   if (LineClear(blockers, from, nearest, z)) return straight;
-  const Eigen::Vector2d u(std::cos(box.yaw), std::sin(box.yaw));
-  const Eigen::Vector2d v(-u.y(), u.x());
+  // Corners 0 -> 1 run along the box's x side, 0 -> 3 along its y side (BoxCorners).
+  const std::array<Eigen::Vector2d, 4> corner = BoxCorners(box);
+  const Eigen::Vector2d along_x = corner[1] - corner[0], along_y = corner[3] - corner[0];
   auto samples = [](double extent) {
     return std::clamp(static_cast<int>(std::ceil(extent / 0.05)) + 1, 2, 16);
   };
@@ -100,8 +102,7 @@ double VisibleFootprintDistance(const std::vector<Shape>& blockers, const BoxSha
   double best = kInfinity;
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {
-      const Eigen::Vector2d point = box.center + (i / (nu - 1.0) - 0.5) * box.size.x() * u +
-                                    (j / (nv - 1.0) - 0.5) * box.size.y() * v;
+      const Eigen::Vector2d point = corner[0] + i / (nu - 1.0) * along_x + j / (nv - 1.0) * along_y;
       const double distance = (point - from).norm();
       if (distance > reach || distance >= best) continue;
       if (LineClear(blockers, from, point, z)) best = distance;

@@ -14,6 +14,13 @@ namespace {
 // The detection count the glance doubts: a candidate seen exactly once.
 constexpr int kSeenOnce = 1;
 
+// The trail (the way the robot came): a point each time it has moved kTrailSpacingM, the newest
+// kTrailPoints kept. Poses arrive every 0.5 m at most, so a longer step between two points is a
+// jump of the pose (a relocalization's correction), not space the robot drove through.
+constexpr double kTrailSpacingM = 0.25;
+constexpr std::size_t kTrailPoints = 40;
+constexpr double kTrailMaxStepM = 1.0;
+
 // Horizontal length of the way from `from` along `path`.
 double HorizontalLength(const Eigen::Vector3d& from, const std::vector<Eigen::Vector3d>& path) {
   double length = 0.0;
@@ -1079,7 +1086,6 @@ std::vector<RobotCommand> TaskExecutor::BackOff(double now, bool resume_explorin
 }
 
 std::vector<RobotCommand> TaskExecutor::RetraceTrail(double now, const std::string& reason) {
-  constexpr double kMaxTrailStepM = 1.0;
   // Regression (drift group, office_04 start 2): this retreat was BackOff's, whose length is the
   // blocked recovery's backoff_m, 0 by default, so "backing off" sent the robot to its own spot
   // and the task alternated it with looking around for the last 125 s of the budget.
@@ -1089,9 +1095,7 @@ std::vector<RobotCommand> TaskExecutor::RetraceTrail(double now, const std::stri
   std::size_t kept = trail_.size();
   for (auto it = trail_.rbegin(); it != trail_.rend() && length < config_.no_path_retreat_m; ++it) {
     const double step = (*it - path.back()).head<2>().norm();
-    // Trail points lie 0.25-0.5 m apart; a longer step is a jump of the pose (a relocalization's
-    // correction), not space the robot drove through: the trail ends there.
-    if (step > kMaxTrailStepM) break;
+    if (step > kTrailMaxStepM) break;  // a jump of the pose: the trail ends there
     --kept;
     if (step < 1e-3) continue;
     length += step;
@@ -1203,8 +1207,6 @@ std::vector<RobotCommand> TaskExecutor::OnFeedback(double now, uint64_t command_
 std::vector<RobotCommand> TaskExecutor::OnPose(double now, const RobotPose& pose) {
   if (CheckRobotPose(pose, "pose").ok()) {  // keep the last good pose
     pose_ = pose;
-    constexpr double kTrailSpacingM = 0.25;
-    constexpr std::size_t kTrailPoints = 40;
     // Not while backing off: a retreat is not the way the robot came.
     if (phase_ != Phase::kBackingOff &&
         (trail_.empty() || (trail_.back() - pose_.position).head<2>().norm() >= kTrailSpacingM)) {

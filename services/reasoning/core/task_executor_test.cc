@@ -891,19 +891,26 @@ TEST_F(GatewayTaskExecutorTest, NothingToExploreAndNoPathLooksAroundInsteadOfFai
   EXPECT_GT((next[0].goal - failed_step).norm(), 2.0);
 }
 
+// The retreat tests' robot: sent to a frontier at x = 3, it drives there along y = 0 (a trail
+// point every 0.25 m). Returns the id of the command it drove on.
+uint64_t DriveEastToThree(TaskExecutor& task, ScriptedPlanner& planner) {
+  planner.frontiers = {Eigen::Vector3d(3, 0, 0)};
+  const std::vector<RobotCommand> out = task.Start(0, At(0));
+  EXPECT_EQ(out.size(), 1u);
+  EXPECT_EQ(out.at(0).kind, CommandKind::kNavigate);
+  for (int i = 1; i <= 12; ++i) task.OnPose(0.5 * i, At(0.25 * i));
+  return out.at(0).id;
+}
+
 // Regression (drift group, office_04 start 2): with no path from where the robot stood, the task
 // "backed off" to the robot's own spot (the blocked recovery's backoff_m, 0 by default) and looked
 // around, in turn, for the last 125 s of the budget. It retraces the way it came instead, 1 m,
 // and the next retreat goes on back from there, not forward over the retraced part.
 TEST_F(GatewayTaskExecutorTest, WithNoPathFromHereTheRobotRetracesTheWayItCame) {
-  planner_.frontiers = {Eigen::Vector3d(3, 0, 0)};
   TaskExecutor task = Make(FindTarget());
-  std::vector<RobotCommand> out = task.Start(0, At(0));
-  ASSERT_EQ(out.size(), 1u);
-  ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
-  for (int i = 1; i <= 12; ++i) task.OnPose(0.5 * i, At(0.25 * i));  // drives east to x = 3
+  const uint64_t drove_on = DriveEastToThree(task, planner_);
   planner_.unreachable = true;  // nothing to explore, no fallback step has a path
-  out = task.OnFeedback(6.5, out[0].id, RobotFeedback::kGoalReached);
+  std::vector<RobotCommand> out = task.OnFeedback(6.5, drove_on, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
   EXPECT_EQ(task.progress().phase, "backing_off");
@@ -926,28 +933,24 @@ TEST_F(GatewayTaskExecutorTest, WithNoPathFromHereTheRobotRetracesTheWayItCame) 
 // A pose that jumped (a relocalization's correction) breaks the trail: the robot is not sent
 // along the straight line between where it was believed to be and where it is.
 TEST_F(GatewayTaskExecutorTest, NoRetreatAcrossAJumpOfThePose) {
-  planner_.frontiers = {Eigen::Vector3d(3, 0, 0)};
   TaskExecutor task = Make(FindTarget());
-  std::vector<RobotCommand> out = task.Start(0, At(0));
-  for (int i = 1; i <= 12; ++i) task.OnPose(0.5 * i, At(0.25 * i));
+  const uint64_t drove_on = DriveEastToThree(task, planner_);
   task.OnPose(6.25, At(3, 2));  // corrected 2 m north
   task.OnPose(6.5, At(3.25, 2));
   planner_.unreachable = true;
-  out = task.OnFeedback(6.5, out[0].id, RobotFeedback::kGoalReached);
+  const std::vector<RobotCommand> out = task.OnFeedback(6.5, drove_on, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kRotate);  // 0.25 m of trail since the jump: no retreat
 }
 
 // With no_path_retreat_m 0 (or no trail yet) it only looks around.
 TEST_F(GatewayTaskExecutorTest, WithoutARetreatNoPathFromHereLooksAround) {
-  planner_.frontiers = {Eigen::Vector3d(3, 0, 0)};
   ExecutorConfig config;
   config.no_path_retreat_m = 0.0;
   TaskExecutor task = Make(FindTarget(), config);
-  std::vector<RobotCommand> out = task.Start(0, At(0));
-  for (int i = 1; i <= 12; ++i) task.OnPose(0.5 * i, At(0.25 * i));
+  const uint64_t drove_on = DriveEastToThree(task, planner_);
   planner_.unreachable = true;
-  out = task.OnFeedback(6.5, out[0].id, RobotFeedback::kGoalReached);
+  const std::vector<RobotCommand> out = task.OnFeedback(6.5, drove_on, RobotFeedback::kGoalReached);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].kind, CommandKind::kRotate);
 }
