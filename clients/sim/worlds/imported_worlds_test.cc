@@ -5,8 +5,10 @@
 #include <fstream>
 
 #include "clients/sim/core/scene.h"
+#include "clients/sim/core/world_yaml.h"
 #include "clients/sim/worlds/houseexpo_world.h"
 #include "clients/sim/worlds/octomap_world.h"
+#include "clients/sim/worlds/start_poses.h"
 
 namespace semnav::sim {
 namespace {
@@ -68,6 +70,40 @@ TEST(SimOctomapWorldTest, Fr079VoxelsMergeIntoBoxes) {
   EXPECT_GE(world->objects.size(), 5u);
   ExpectStartsFree(*world);
   EXPECT_EQ(OctomapWorld("/nonexistent.bt", "x", 1).status().code(), absl::StatusCode::kNotFound);
+}
+
+// Regression: the scan's outside was free, so the robot's region (where every start and object
+// is drawn) ran round the outside of the building from room to room, and the corridor was out
+// of reach. Now the region stays inside: none of it lies on the edge of the bounds, and it spans
+// the corridor, the building's long axis (x -8..31, SOURCE.txt).
+TEST(SimOctomapWorldTest, Fr079RobotsStayInsideTheScannedBuilding) {
+  const auto world =
+      OctomapWorld(kData + "/pointclouds-octomaps/octomap_share/geb079.bt", "fr079", 1);
+  ASSERT_TRUE(world.ok()) << world.status();
+  // The walls that close it lie within the bounds, as a world file's must.
+  const absl::StatusOr<World> reloaded = ParseWorldYaml(WorldToYaml(*world));
+  EXPECT_TRUE(reloaded.ok()) << reloaded.status();
+  const GroundTruthGrid grid = ModalityGrid(*world, Modality::kGround, 0.0);
+  const std::vector<uint8_t> region = LargestFreeRegion(grid);
+  for (int x = 0; x < grid.width; ++x) {
+    for (const int y : {0, grid.height - 1}) {
+      EXPECT_EQ(region[static_cast<size_t>(y) * grid.width + x], 0) << x << ", " << y;
+    }
+  }
+  for (int y = 0; y < grid.height; ++y) {
+    for (const int x : {0, grid.width - 1}) {
+      EXPECT_EQ(region[static_cast<size_t>(y) * grid.width + x], 0) << x << ", " << y;
+    }
+  }
+  // The corridor runs the length of the building: the region spans it.
+  int min_x = grid.width, max_x = -1;
+  for (size_t i = 0; i < region.size(); ++i) {
+    if (region[i] == 0) continue;
+    min_x = std::min(min_x, static_cast<int>(i % grid.width));
+    max_x = std::max(max_x, static_cast<int>(i % grid.width));
+  }
+  EXPECT_LT(grid.origin.x() + min_x * grid.resolution, 0.0);
+  EXPECT_GT(grid.origin.x() + max_x * grid.resolution, 25.0);
 }
 
 }  // namespace

@@ -2,7 +2,10 @@
 
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <memory>
 
 #include "absl/strings/str_cat.h"
@@ -94,6 +97,89 @@ PlaceFilter SeenFloor(const VoxelGrid& grid, int floor, int widen) {
     const int y = static_cast<int>(std::floor((p.y() - origin.y()) / r));
     return x >= 0 && y >= 0 && x < w && y < h && (*seen)[static_cast<size_t>(y) * w + x] != 0;
   };
+}
+
+// Columns outside the scanned building. FR-079's scan shows its rooms' doors to the corridor
+// closed and its outer walls with gaps (windows, open doors), and with the outside free a robot
+// in a room drove out of the building and round it to the other rooms: every start and object
+// was drawn in that region, the corridor was out of reach (docs/simulation.md, "FR-079").
+// Habitat-Sim confines agents to the navmesh of the scanned floor for the same reason.
+// Outside = never seen as floor, no structure, and reached from the edge of the bounds without
+// passing within `gap_cells` of structure (gaps in the outer wall up to twice that stay closed;
+// rooms whose floor the scan saw little of stay open), grown back by `gap_cells` toward the
+// walls. The scanned floor is never outside.
+std::vector<uint8_t> OutsideColumns(const VoxelGrid& grid, int floor, const PlaceFilter& seen,
+                                    int gap_cells) {
+  const int w = grid.dims.x(), h = grid.dims.y();
+  const size_t n = static_cast<size_t>(w) * h;
+  constexpr int kFar = std::numeric_limits<int>::max();
+  std::vector<uint8_t> open(n, 0);
+  std::vector<int> to_structure(n, kFar);
+  std::vector<size_t> front;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      bool solid = false;
+      for (int z = floor + 1; z < grid.dims.z() && !solid; ++z) solid = grid.At(x, y, z);
+      const Eigen::Vector2d centre =
+          grid.origin.head<2>() + grid.resolution * Eigen::Vector2d(x + 0.5, y + 0.5);
+      open[i] = !solid && !seen(centre) ? 1 : 0;
+      if (solid) {
+        to_structure[i] = 0;
+        front.push_back(i);
+      }
+    }
+  }
+  // Breadth first over 8 neighbours from `queue` into the cells `enter` allows, up to `limit`.
+  const auto spread = [&](std::vector<int>& depth, std::vector<size_t>& queue,
+                          const std::function<bool(size_t)>& enter, int limit) {
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const size_t i = queue[head];
+      if (depth[i] >= limit) continue;
+      const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u < 0 || v < 0 || u >= w || v >= h) continue;
+          const size_t j = static_cast<size_t>(v) * w + u;
+          if (depth[j] <= depth[i] + 1 || !enter(j)) continue;
+          depth[j] = depth[i] + 1;
+          queue.push_back(j);
+        }
+      }
+    }
+  };
+  spread(
+      to_structure, front, [](size_t) { return true; }, gap_cells);
+  const auto away_from_structure = [&](size_t i) {
+    return open[i] != 0 && to_structure[i] > gap_cells;
+  };
+  std::vector<int> from_edge(n, kFar);
+  front.clear();
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      const bool edge = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+      if (edge && away_from_structure(i)) {
+        from_edge[i] = 0;
+        front.push_back(i);
+      }
+    }
+  }
+  spread(from_edge, front, away_from_structure, kFar - 1);
+  std::vector<int> grown(n, kFar);
+  front.clear();
+  for (size_t i = 0; i < n; ++i) {
+    if (from_edge[i] != kFar) {
+      grown[i] = 0;
+      front.push_back(i);
+    }
+  }
+  spread(
+      grown, front, [&](size_t i) { return open[i] != 0; }, gap_cells);
+  std::vector<uint8_t> outside(n, 0);
+  for (size_t i = 0; i < n; ++i) outside[i] = grown[i] != kFar ? 1 : 0;
+  return outside;
 }
 
 // Greedy merge: grow each unvisited voxel into the largest box along x, then y, then z.
@@ -207,6 +293,10 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
   }
   const double floor_top = grid.origin.z() + (floor + 1) * grid.resolution;
   const PlaceFilter inside = SeenFloor(grid, floor, 3);
+  // Before MergeBoxes, which empties the voxels it takes; gaps up to 1.2 m stay closed.
+  VoxelGrid outside{
+      grid.origin, grid.resolution, Eigen::Vector3i(grid.dims.x(), grid.dims.y(), 1),
+      OutsideColumns(grid, floor, inside, static_cast<int>(std::ceil(0.6 / grid.resolution)))};
   int occupied = 0;
   for (int z = floor + 1; z < grid.dims.z(); ++z)
     for (int y = 0; y < grid.dims.y(); ++y)
@@ -221,7 +311,29 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
   for (const BoxShape& box : MergeBoxes(grid, floor + 1, -floor_top)) {
     world.obstacles.push_back(Obstacle{"wall", Rgb{205, 200, 190}, box});
   }
+  // As high as the scan's structure; 2 m when the map holds nothing above its floor.
+  const double height =
+      std::max(2.0, grid.resolution * static_cast<double>(grid.dims.z() - floor - 1));
+  for (BoxShape box : MergeBoxes(outside, 0, 0.0)) {
+    box.base_z = 0.0;
+    box.size.z() = height;
+    world.obstacles.push_back(Obstacle{"wall", Rgb{205, 200, 190}, box});
+  }
   const Eigen::Vector2d lo = world.bounds_min, hi = world.bounds_max;
+  // Nor does a scanned floor that runs to the edge of the bounds lead past it: a wall along the
+  // inside of the edge (the world's boxes lie within its bounds).
+  constexpr double kEdgeM = 0.1;
+  const Eigen::Vector2d span = hi - lo;
+  for (const auto& [centre, size] : std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>{
+           {{lo.x() + span.x() / 2, lo.y() + kEdgeM / 2}, {span.x(), kEdgeM}},
+           {{lo.x() + span.x() / 2, hi.y() - kEdgeM / 2}, {span.x(), kEdgeM}},
+           {{lo.x() + kEdgeM / 2, lo.y() + span.y() / 2}, {kEdgeM, span.y()}},
+           {{hi.x() - kEdgeM / 2, lo.y() + span.y() / 2}, {kEdgeM, span.y()}}}) {
+    BoxShape edge;
+    edge.center = centre;
+    edge.size = Eigen::Vector3d(size.x(), size.y(), height);
+    world.obstacles.push_back(Obstacle{"wall", Rgb{205, 200, 190}, edge});
+  }
   world.rooms.push_back(
       Room{"building_1",
            "corridor",
