@@ -177,7 +177,9 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     planning.Read("exploration_strategy", &strategy)
         .Read("deadline_ms", &c.planning.deadline_ms)
         .Read("goal_tolerance_m", &c.planning.goal_tolerance_m)
-        .Read("live_map_max_age_ms", &c.planning.live_map_max_age_ms);
+        .Read("live_map_max_age_ms", &c.planning.live_map_max_age_ms)
+        .Read("clearance_detour_factor", &c.planning.clearance_detour_factor)
+        .Read("clearance_detour_m", &c.planning.clearance_detour_m);
     const std::optional<ExplorationStrategy> parsed = ParseExplorationStrategy(strategy);
     planning.Check(parsed.has_value(), "exploration_strategy",
                    "must be NEAREST_FRONTIER, COVERAGE_MAX, SEMANTIC_FRONTIER or EROI_UTILITY");
@@ -186,6 +188,12 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
     planning.Check(c.planning.goal_tolerance_m >= 0.0, "goal_tolerance_m", "must be >= 0");
     planning.Check(c.planning.live_map_max_age_ms >= 0 && c.planning.live_map_max_age_ms <= 10000,
                    "live_map_max_age_ms", "must be in [0, 10000]");
+    planning.Check(
+        c.planning.clearance_detour_factor == 0.0 || (c.planning.clearance_detour_factor >= 1.0 &&
+                                                      c.planning.clearance_detour_factor <= 10.0),
+        "clearance_detour_factor", "must be 0 (off) or in [1, 10]");
+    planning.Check(c.planning.clearance_detour_m >= 0.0 && c.planning.clearance_detour_m <= 100.0,
+                   "clearance_detour_m", "must be in [0, 100]");
   }
 
   if (section.Has("relocalization")) {  // absent: no relocalization loop

@@ -32,6 +32,13 @@ struct PlanningSettings {
   // as Nav2's planners read a global costmap updated at 1 Hz: one fetch then serves the calls
   // of many robots. Simulated-clock sessions always ask for a fresh grid. 0 = always fresh.
   int live_map_max_age_ms = 500;
+  // A path planned with the executor's clearance that is longer than the straight line by this
+  // factor and these metres is also planned with the bare footprint, and the bare way is taken
+  // when the clearance's is longer than it by as much: a gap narrower than footprint plus
+  // clearance on the short way sent a robot 16 m the wrong way through space it had not seen
+  // (FR-079 start 1, docs/performance/mission.md). factor 0 = always the clearance's way.
+  double clearance_detour_factor = 1.5;
+  double clearance_detour_m = 3.0;
 };
 
 // The model proxy (section "model_proxy"). No address = offline default: fast path, the commonsense

@@ -1,6 +1,7 @@
 #include "services/reasoning/server/gateway_config.h"
 
 #include "absl/strings/match.h"
+#include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
 
 namespace semnav::reasoning {
@@ -93,6 +94,18 @@ TEST(GatewayConfigTest, ReadsThePlanningClientAndRejectsUnknownStrategies) {
   const absl::Status too_old =
       Load("planning: {address: 127.0.0.1:50052, live_map_max_age_ms: 10001}\n").status();
   EXPECT_TRUE(absl::StrContains(too_old.message(), "planning.live_map_max_age_ms")) << too_old;
+
+  const absl::StatusOr<GatewayConfig> detour = Load(
+      "planning: {address: 127.0.0.1:50052, clearance_detour_factor: 2, clearance_detour_m: 5}\n");
+  ASSERT_TRUE(detour.ok()) << detour.status();
+  EXPECT_DOUBLE_EQ(detour->planning.clearance_detour_factor, 2.0);
+  EXPECT_DOUBLE_EQ(detour->planning.clearance_detour_m, 5.0);
+  for (const char* bad : {"clearance_detour_factor: 0.5", "clearance_detour_factor: .nan",
+                          "clearance_detour_m: -1", "clearance_detour_m: 1e300"}) {
+    const absl::Status refused =
+        Load(absl::StrCat("planning: {address: 127.0.0.1:50052, ", bad, "}\n")).status();
+    EXPECT_TRUE(absl::StrContains(refused.message(), "planning.clearance_detour")) << refused;
+  }
 }
 
 TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {

@@ -111,6 +111,23 @@ std::vector<Eigen::Vector3d> RobotPath(const pb::PlanPathResponse& response,
   return path;
 }
 
+double PathLength(const Eigen::Vector3d& start, const pb::PlanPathResponse& response) {
+  double length = 0.0;
+  Eigen::Vector2d at = start.head<2>();
+  for (const auto& point : response.path()) {
+    const Eigen::Vector2d next(point.x(), point.y());
+    length += (next - at).norm();
+    at = next;
+  }
+  return length;
+}
+
+bool PlanningClient::MuchLonger(double length_m, double than_m) const {
+  return settings_.clearance_detour_factor > 0.0 &&
+         length_m > settings_.clearance_detour_factor * than_m &&
+         length_m - than_m > settings_.clearance_detour_m;
+}
+
 PlanningClient::PlanningClient(std::shared_ptr<grpc::Channel> channel, PlanningSettings settings)
     : channel_(channel),
       stub_(pb::PlanningService::NewStub(channel)),
@@ -152,19 +169,38 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   pb::PlanPathResponse response;
   grpc::Status status;
   pb::PlanFailureReason reason = pb::PLAN_FAILURE_REASON_UNSPECIFIED;
-  // With the clearance first; when that inflates the robot's own position (it stands near a
-  // wall), with the bare footprint.
-  for (const double radius : {query.robot_radius_m + query.clearance_m, query.robot_radius_m}) {
+  const auto plan_with = [&](double radius, pb::PlanPathResponse* answer) {
     request.set_robot_radius_m(radius);
     grpc::ClientContext context;
     SetDeadline(context, settings_.deadline_ms);
-    status = stub_->PlanPath(&context, request, &response);
+    const grpc::Status answered = stub_->PlanPath(&context, request, answer);
     const std::optional<pb::PlanFailureDetail> detail =
-        status.ok() ? std::nullopt : GetDetail<pb::PlanFailureDetail>(status);
+        answered.ok() ? std::nullopt : GetDetail<pb::PlanFailureDetail>(answered);
     reason = detail.has_value() ? detail->reason() : pb::PLAN_FAILURE_REASON_UNSPECIFIED;
-    const bool footprint_may_help = reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED ||
-                                    reason == pb::PLAN_FAILURE_REASON_NO_PATH;
-    if (!footprint_may_help || query.clearance_m <= 0.0) break;
+    return answered;
+  };
+  // With the clearance first; when that inflates the robot's own position (it stands near a
+  // wall) or leaves no way, with the bare footprint.
+  status = plan_with(query.robot_radius_m + query.clearance_m, &response);
+  const bool footprint_may_help =
+      reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED || reason == pb::PLAN_FAILURE_REASON_NO_PATH;
+  if (!status.ok() && footprint_may_help && query.clearance_m > 0.0) {
+    status = plan_with(query.robot_radius_m, &response);
+  } else if (status.ok() && query.clearance_m > 0.0 && response.path_size() > 0) {
+    // A way round where the short way passes a gap narrower than the footprint and the
+    // clearance: the bare footprint's way is taken when it is much shorter. The clearance is a
+    // preference, as Nav2's inflation cost is, not a wall.
+    const double with_clearance = PathLength(query.start, response);
+    const Eigen::Vector2d end(response.path(response.path_size() - 1).x(),
+                              response.path(response.path_size() - 1).y());
+    if (MuchLonger(with_clearance, (end - query.start.head<2>()).norm())) {
+      pb::PlanPathResponse bare;
+      if (plan_with(query.robot_radius_m, &bare).ok() && bare.path_size() > 0 &&
+          MuchLonger(with_clearance, PathLength(query.start, bare))) {
+        response = std::move(bare);
+      }
+      reason = pb::PLAN_FAILURE_REASON_UNSPECIFIED;
+    }
   }
   if (!status.ok()) {
     if (reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED)

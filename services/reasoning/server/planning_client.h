@@ -33,6 +33,9 @@ void AddEroiValues(const ExplorationContext& context,
 std::vector<Eigen::Vector3d> RobotPath(const planning::v1::PlanPathResponse& response,
                                        const PathQuery& query);
 
+// Length of a PlanPath answer's path from `start` through its points (planar, metres).
+double PathLength(const Eigen::Vector3d& start, const planning::v1::PlanPathResponse& response);
+
 // SelectGoal sends the task's SemanticContext (SEMANTIC_FRONTIER's language and grounding inputs);
 // ExplorationGoal without a task asks with the configured strategy and no context.
 class PlanningClient : public PathPlanner, public ExplorationService {
@@ -47,6 +50,8 @@ class PlanningClient : public PathPlanner, public ExplorationService {
 
  private:
   absl::Status Ready(const char* call);
+  // `length_m` exceeds `than_m` by clearance_detour_factor and by clearance_detour_m.
+  bool MuchLonger(double length_m, double than_m) const;
   grpc::Status Select(const planning::v1::SelectExplorationGoalRequest& request,
                       planning::v1::SelectExplorationGoalResponse* response);
 

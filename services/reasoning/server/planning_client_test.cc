@@ -30,7 +30,16 @@ class RecordingPlanning final : public pb::PlanningService::Service {
       AttachDetail(no_path, detail);
       return ToGrpcStatus(no_path);
     }
-    if (failure.ok()) *response->add_path() = request->goal();
+    if (failure.ok()) {
+      if (request->robot_radius_m() > detour_above_m) {
+        for (const auto& [x, y] : detour) {
+          common::v1::Pose2D* point = response->add_path();
+          point->set_x(x);
+          point->set_y(y);
+        }
+      }
+      *response->add_path() = request->goal();
+    }
     return failure;
   }
   grpc::Status SelectExplorationGoal(grpc::ServerContext*,
@@ -50,7 +59,9 @@ class RecordingPlanning final : public pb::PlanningService::Service {
   absl::Mutex mu;
   bool refuse_values = false;
   grpc::Status failure;  // every answer's (PlanPath answers OK with the goal as its path otherwise)
-  double no_path_above_m = 1e9;            // PlanPath: NO_PATH for a robot_radius_m above this
+  double no_path_above_m = 1e9;  // PlanPath: NO_PATH for a robot_radius_m above this
+  double detour_above_m = 1e9;   // PlanPath: for a robot_radius_m above this, by `detour` first
+  std::vector<std::pair<double, double>> detour;
   std::vector<double> radii;               // PlanPath's robot_radius_m, in call order
   std::vector<double> tolerances;          // PlanPath's goal_tolerance_m, in call order
   std::vector<uint32_t> path_max_ages_ms;  // PlanPath's source.live_map.max_age_ms, in call order
@@ -70,12 +81,14 @@ class GatewayPlanningClientTest : public ::testing::Test {
     ASSERT_TRUE(
         channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(5)));
     const PlanningSettings settings;  // SEMANTIC_FRONTIER by default, 2 s deadline
+    client_channel_ = channel;
     client_ = std::make_unique<PlanningClient>(channel, settings);
   }
   void TearDown() override { server_->Shutdown(); }
 
   RecordingPlanning planning_;
   std::unique_ptr<grpc::Server> server_;
+  std::shared_ptr<grpc::Channel> client_channel_;
   std::unique_ptr<PlanningClient> client_;
 };
 
@@ -247,6 +260,49 @@ TEST_F(GatewayPlanningClientTest, NoPathWithTheClearanceIsRetriedWithTheBareFoot
   EXPECT_TRUE(absl::IsNotFound(client_->Plan(query).status()));
   absl::MutexLock lock(&planning_.mu);
   EXPECT_EQ(planning_.radii.size(), 2u);
+}
+
+// Regression (FR-079 start 1): with the clearance the way to a trash can 5.6 m west ran 63
+// waypoints east through rooms the robot had not seen, past a pillar the footprint alone clears;
+// the robot drove 16 m the wrong way. A way much longer than the straight line is planned again
+// with the bare footprint, whose way is taken when it is much shorter; a way only a little longer
+// is kept without a second call.
+TEST_F(GatewayPlanningClientTest, ALongWayRoundForTheClearanceGivesWayToTheBareFootprints) {
+  const PathQuery query{
+      Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.25, 0.15, std::nullopt};
+  {
+    absl::MutexLock lock(&planning_.mu);
+    planning_.detour_above_m = 0.3;
+    planning_.detour = {{0, 10}, {3, 10}};  // 23 m against 3 m straight
+  }
+  absl::StatusOr<std::vector<Eigen::Vector3d>> planned = client_->Plan(query);
+  ASSERT_TRUE(planned.ok()) << planned.status();
+  ASSERT_EQ(planned->size(), 1u);  // the bare footprint's straight way
+  EXPECT_DOUBLE_EQ(planned->back().x(), 3.0);
+  {
+    absl::MutexLock lock(&planning_.mu);
+    EXPECT_EQ(planning_.radii, (std::vector<double>{0.4, 0.25}));
+    planning_.radii.clear();
+    planning_.detour = {{1.5, 1.0}};  // 3.6 m: a little longer than 3 m, kept
+  }
+  planned = client_->Plan(query);
+  ASSERT_TRUE(planned.ok()) << planned.status();
+  EXPECT_EQ(planned->size(), 2u);
+  {
+    absl::MutexLock lock(&planning_.mu);
+    EXPECT_EQ(planning_.radii, (std::vector<double>{0.4}));
+    planning_.radii.clear();
+    planning_.detour = {{0, 10}, {3, 10}};
+  }
+  // Off (factor 0): the clearance's way, however long.
+  PlanningSettings off;
+  off.clearance_detour_factor = 0.0;
+  PlanningClient keeps_clearance(client_channel_, off);
+  planned = keeps_clearance.Plan(query);
+  ASSERT_TRUE(planned.ok()) << planned.status();
+  EXPECT_EQ(planned->size(), 3u);
+  absl::MutexLock lock(&planning_.mu);
+  EXPECT_EQ(planning_.radii, (std::vector<double>{0.4}));
 }
 
 // The executor's approach asks for the free point nearest an object within reach: the query's
