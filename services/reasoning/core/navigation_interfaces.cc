@@ -11,6 +11,16 @@ constexpr char kDependencyPayload[] = "type.semnav.dev/reasoning.UnavailableDepe
 
 }  // namespace
 
+double HorizontalLength(const Eigen::Vector3d& from, const std::vector<Eigen::Vector3d>& path) {
+  double length = 0.0;
+  Eigen::Vector3d at = from;
+  for (const Eigen::Vector3d& point : path) {
+    length += (point - at).head<2>().norm();
+    at = point;
+  }
+  return length;
+}
+
 absl::Status DependencyUnavailableError(absl::string_view dependency, absl::string_view detail) {
   absl::Status status = absl::UnavailableError(absl::StrCat(dependency, " unavailable: ", detail));
   status.SetPayload(kDependencyPayload, absl::Cord(dependency));

@@ -55,6 +55,9 @@ struct ExplorationQuery {
   double clearance_m = 0.0;
 };
 
+// Horizontal length of the way from `from` along `path` (metres).
+double HorizontalLength(const Eigen::Vector3d& from, const std::vector<Eigen::Vector3d>& path);
+
 // A dependency of the planner ("planning", or "mapping" behind it) is unreachable or timed out:
 // UNAVAILABLE naming it, so the executor pauses the task instead of driving blind.
 absl::Status DependencyUnavailableError(absl::string_view dependency, absl::string_view detail);

@@ -21,17 +21,6 @@ constexpr double kTrailSpacingM = 0.25;
 constexpr std::size_t kTrailPoints = 40;
 constexpr double kTrailMaxStepM = 1.0;
 
-// Horizontal length of the way from `from` along `path`.
-double HorizontalLength(const Eigen::Vector3d& from, const std::vector<Eigen::Vector3d>& path) {
-  double length = 0.0;
-  Eigen::Vector3d at = from;
-  for (const Eigen::Vector3d& point : path) {
-    length += (point - at).head<2>().norm();
-    at = point;
-  }
-  return length;
-}
-
 }  // namespace
 
 std::string_view TaskStateName(TaskState state) {

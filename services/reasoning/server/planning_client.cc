@@ -111,17 +111,6 @@ std::vector<Eigen::Vector3d> RobotPath(const pb::PlanPathResponse& response,
   return path;
 }
 
-double PathLength(const Eigen::Vector3d& start, const pb::PlanPathResponse& response) {
-  double length = 0.0;
-  Eigen::Vector2d at = start.head<2>();
-  for (const auto& point : response.path()) {
-    const Eigen::Vector2d next(point.x(), point.y());
-    length += (next - at).norm();
-    at = next;
-  }
-  return length;
-}
-
 bool PlanningClient::MuchLonger(double length_m, double than_m) const {
   return settings_.clearance_detour_factor > 0.0 &&
          length_m > settings_.clearance_detour_factor * than_m &&
@@ -190,16 +179,14 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
     // A way round where the short way passes a gap narrower than the footprint and the
     // clearance: the bare footprint's way is taken when it is much shorter. The clearance is a
     // preference, as Nav2's inflation cost is, not a wall.
-    const double with_clearance = PathLength(query.start, response);
-    const Eigen::Vector2d end(response.path(response.path_size() - 1).x(),
-                              response.path(response.path_size() - 1).y());
-    if (MuchLonger(with_clearance, (end - query.start.head<2>()).norm())) {
-      pb::PlanPathResponse bare;
+    const std::vector<Eigen::Vector3d> way = RobotPath(response, query);
+    const double with_clearance = HorizontalLength(query.start, way);
+    if (MuchLonger(with_clearance, (way.back() - query.start).head<2>().norm())) {
+      pb::PlanPathResponse bare;  // its failure leaves the clearance's way
       if (plan_with(query.robot_radius_m, &bare).ok() && bare.path_size() > 0 &&
-          MuchLonger(with_clearance, PathLength(query.start, bare))) {
+          MuchLonger(with_clearance, HorizontalLength(query.start, RobotPath(bare, query)))) {
         response = std::move(bare);
       }
-      reason = pb::PLAN_FAILURE_REASON_UNSPECIFIED;
     }
   }
   if (!status.ok()) {

@@ -33,9 +33,6 @@ void AddEroiValues(const ExplorationContext& context,
 std::vector<Eigen::Vector3d> RobotPath(const planning::v1::PlanPathResponse& response,
                                        const PathQuery& query);
 
-// Length of a PlanPath answer's path from `start` through its points (planar, metres).
-double PathLength(const Eigen::Vector3d& start, const planning::v1::PlanPathResponse& response);
-
 // SelectGoal sends the task's SemanticContext (SEMANTIC_FRONTIER's language and grounding inputs);
 // ExplorationGoal without a task asks with the configured strategy and no context.
 class PlanningClient : public PathPlanner, public ExplorationService {
