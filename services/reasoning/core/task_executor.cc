@@ -242,6 +242,7 @@ void TaskExecutor::ReleaseSearchState() {
   spent_explore_goals_ = {};
   trail_ = {};
   blocked_spots_ = {};
+  looked_around_at_blocks_ = {};
   failed_fallback_steps_ = {};
   pending_request_.reset();
 }
@@ -1009,10 +1010,12 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
     blocks_on_goal_ = 0;
   }
   ++blocks_on_goal_;
-  const bool same_spot =
-      std::any_of(blocked_spots_.begin(), blocked_spots_.end(), [&](const Eigen::Vector3d& spot) {
-        return (spot - pose_.position).head<2>().norm() <= config_.blocked_spot_radius_m;
-      });
+  const auto near_here = [&](const Eigen::Vector3d& spot) {
+    return (spot - pose_.position).head<2>().norm() <= config_.blocked_spot_radius_m;
+  };
+  const int blocks_here =
+      static_cast<int>(std::count_if(blocked_spots_.begin(), blocked_spots_.end(), near_here));
+  const bool same_spot = blocks_here > 0;
   blocked_spots_.push_back(pose_.position);
   extra_clearance_m_ = std::min(extra_clearance_m_ + config_.blocked_clearance_step_m,
                                 config_.blocked_clearance_max_m);
@@ -1030,6 +1033,17 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
         SpendExploreGoal(*explore_goal_, /*unreachable=*/false);
         explore_goal_.reset();
         --progress_.explore_goals;  // never reached: no budget used
+        if (config_.look_around_after_blocks_at_spot > 0 &&
+            blocks_here >= config_.look_around_after_blocks_at_spot &&
+            std::none_of(looked_around_at_blocks_.begin(), looked_around_at_blocks_.end(),
+                         near_here)) {
+          looked_around_at_blocks_.push_back(pose_.position);
+          return Rotate(now, config_.look_around_rate_rps, config_.look_around_duration_s,
+                        Phase::kExploreScan,
+                        absl::StrCat("robot blocked ", blocks_here + 1,
+                                     " times at this spot; looking around to map what blocks "
+                                     "it"));
+        }
         std::vector<RobotCommand> out = Explore(now);
         if (progress_.state == TaskState::kRunning)
           progress_.reason = absl::StrCat(progress_.reason, " (", why, ")");

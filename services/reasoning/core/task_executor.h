@@ -137,6 +137,12 @@ struct ExecutorConfig {
   double blocked_clearance_max_m = 0.3;
   int max_blocks_per_goal = 2;
   double blocked_spot_radius_m = 0.5;
+  // Blocked at one spot this many times before, exploring (the goal given up each time), the
+  // robot first looks around once there: what stops it is missing from the map, and paths to any
+  // goal keep starting into it (flyroll_02 start 2: 13 paths in a row began with the same step
+  // into a crate the camera had not mapped, until a look-around mapped it; docs/performance/
+  // mission.md, "Blocked where the map has nothing"). 0 = never.
+  int look_around_after_blocks_at_spot = 2;
   // An exploration goal with no path (or the robot blocked on it) is set aside with the region
   // within unreachable_region_m around it: frontiers of the same unreachable pocket are not tried
   // one by one.
@@ -464,6 +470,7 @@ class TaskExecutor {
   std::optional<Eigen::Vector3d> blocked_goal_;
   int blocks_on_goal_ = 0;
   std::vector<Eigen::Vector3d> blocked_spots_;
+  std::vector<Eigen::Vector3d> looked_around_at_blocks_;  // once per spot
   double extra_clearance_m_ = 0.0;
   bool resume_exploring_ = false;
   // Fallback steps with no path: other directions are tried next.

@@ -1748,6 +1748,55 @@ TEST_F(GatewayTaskExecutorTest, BlockedTwiceAtTheSameSpotGivesTheExplorationGoal
   EXPECT_EQ(task.progress().state, TaskState::kRunning);
 }
 
+// Regression (flyroll_02 start 2, "collision loop"): blocked at one spot, every path to every
+// goal began with the same step into a crate the map lacked. The third block at the spot (the
+// goal given up again) makes the robot look around there once before it explores on; a fourth
+// block there explores on at once.
+TEST_F(GatewayTaskExecutorTest, BlockedAtOneSpotAgainAndAgainLooksAroundThereOnce) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0),
+                        Eigen::Vector3d(-10, 0, 0), Eigen::Vector3d(0, -10, 0)};
+  ExecutorConfig config;
+  config.robot_radius_m = 0.2;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  task.OnPose(4, At(1));
+  out = task.OnFeedback(4, out[0].id, RobotFeedback::kBlocked);  // 1st: the same goal again
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(10, 0, 0)));
+  task.OnPose(5, At(1));
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kBlocked);  // 2nd here: goal given up
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  task.OnPose(6, At(1.1));
+  out = task.OnFeedback(6, out[0].id, RobotFeedback::kBlocked);  // 3rd here: look around
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kRotate);
+  EXPECT_NE(task.progress().reason.find("blocked 3 times at this spot; looking around"),
+            std::string::npos)
+      << task.progress().reason;
+  out = task.OnPose(18.5, At(1.1));  // the 12 s turn is done (the gateway's clock ends it)
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(-10, 0, 0)));
+  task.OnPose(19, At(1));
+  out = task.OnFeedback(19, out[0].id, RobotFeedback::kBlocked);  // 4th here: explores on
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kNavigate);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, -10, 0)));
+
+  config.look_around_after_blocks_at_spot = 0;  // off: no look-around for the blocks
+  TaskExecutor off = Make(FindTarget(), config);
+  out = off.Start(0, At(0));
+  for (double t : {4.0, 5.0, 6.0}) {
+    off.OnPose(t, At(1));
+    out = off.OnFeedback(t, out[0].id, RobotFeedback::kBlocked);
+    ASSERT_EQ(out.size(), 1u);
+  }
+  EXPECT_EQ(off.progress().reason.find("times at this spot"), std::string::npos)
+      << off.progress().reason;
+}
+
 // Default (the robot backs up by itself): a block re-plans the same goal at once, with more
 // clearance, from where the robot stands.
 TEST_F(GatewayTaskExecutorTest, BlockedReplansTheSameGoalWithMoreClearance) {

@@ -82,6 +82,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("blocked_clearance_max_m", &c.executor.blocked_clearance_max_m)
       .Read("max_blocks_per_goal", &c.executor.max_blocks_per_goal)
       .Read("blocked_spot_radius_m", &c.executor.blocked_spot_radius_m)
+      .Read("look_around_after_blocks_at_spot", &c.executor.look_around_after_blocks_at_spot)
       .Read("unreachable_region_m", &c.executor.unreachable_region_m)
       .Read("time_budget_s", &c.executor.time_budget_s)
       .Read("endgame_s", &c.executor.endgame_s)
@@ -144,6 +145,9 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       "blocked_clearance_max_m", "must be in [0, 2]");
   executor.Check(c.executor.max_blocks_per_goal >= 1, "max_blocks_per_goal", "must be >= 1");
   executor.Check(c.executor.blocked_spot_radius_m >= 0.0, "blocked_spot_radius_m", "must be >= 0");
+  executor.Check(c.executor.look_around_after_blocks_at_spot >= 0 &&
+                     c.executor.look_around_after_blocks_at_spot <= 100,
+                 "look_around_after_blocks_at_spot", "must be in [0, 100] (0 = never)");
   executor.Check(c.executor.unreachable_region_m >= 0.0 && c.executor.unreachable_region_m <= 20.0,
                  "unreachable_region_m", "must be in [0, 20]");
   executor.Check(c.executor.time_budget_s >= 0.0, "time_budget_s", "must be >= 0 (0 = none)");

@@ -152,6 +152,8 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
                            "executor: {verify_view_m: 1.5}",
                            "executor: {time_budget_s: -1}",
                            "executor: {max_blocks_per_goal: 0}",
+                           "executor: {look_around_after_blocks_at_spot: -1}",
+                           "executor: {look_around_after_blocks_at_spot: 101}",
                            "executor: {explore_scan_duration_s: -1}",
                            "executor: {look_up_tilt_rad: 1.6}",
                            "executor: {look_up_tilt_rad: .nan}",
