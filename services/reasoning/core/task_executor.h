@@ -138,9 +138,9 @@ struct ExecutorConfig {
   int max_blocks_per_goal = 2;
   double blocked_spot_radius_m = 0.5;
   // Blocked at one spot this many times before, exploring (the goal given up each time), the
-  // robot first looks around once there: what stops it is missing from the map, and paths to any
+  // robot first looks around once there: what stops it is missing from the map, so paths to any
   // goal keep starting into it (flyroll_02 start 2: 13 paths in a row began with the same step
-  // into a crate the camera had not mapped, until a look-around mapped it; docs/performance/
+  // into a crate's corner; after a look-around the path left the spot; docs/performance/
   // mission.md, "Blocked where the map has nothing"). 0 = never.
   int look_around_after_blocks_at_spot = 2;
   // An exploration goal with no path (or the robot blocked on it) is set aside with the region
