@@ -18,6 +18,8 @@
 namespace semnav::sim {
 namespace {
 
+const Rgb kWallColour{205, 200, 190};  // the scan's walls and the closed outside alike
+
 struct VoxelGrid {
   Eigen::Vector3d origin;
   double resolution = 0.1;
@@ -309,7 +311,7 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
   world.bounds_max = grid.origin.head<2>() + grid.resolution * grid.dims.head<2>().cast<double>();
   world.floor_colour = Rgb{160, 160, 150};
   for (const BoxShape& box : MergeBoxes(grid, floor + 1, -floor_top)) {
-    world.obstacles.push_back(Obstacle{"wall", Rgb{205, 200, 190}, box});
+    world.obstacles.push_back(Obstacle{"wall", kWallColour, box});
   }
   // As high as the scan's structure; 2 m when the map holds nothing above its floor.
   const double height =
@@ -317,7 +319,7 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
   for (BoxShape box : MergeBoxes(outside, 0, 0.0)) {
     box.base_z = 0.0;
     box.size.z() = height;
-    world.obstacles.push_back(Obstacle{"wall", Rgb{205, 200, 190}, box});
+    world.obstacles.push_back(Obstacle{"wall", kWallColour, box});
   }
   const Eigen::Vector2d lo = world.bounds_min, hi = world.bounds_max;
   // Nor does a scanned floor that runs to the edge of the bounds lead past it: a wall along the
@@ -332,7 +334,7 @@ absl::StatusOr<World> OctomapWorld(const std::string& bt_path, const std::string
     BoxShape edge;
     edge.center = centre;
     edge.size = Eigen::Vector3d(size.x(), size.y(), height);
-    world.obstacles.push_back(Obstacle{"wall", Rgb{205, 200, 190}, edge});
+    world.obstacles.push_back(Obstacle{"wall", kWallColour, edge});
   }
   world.rooms.push_back(
       Room{"building_1",

@@ -173,19 +173,22 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   status = plan_with(query.robot_radius_m + query.clearance_m, &response);
   const bool footprint_may_help =
       reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED || reason == pb::PLAN_FAILURE_REASON_NO_PATH;
+  std::vector<Eigen::Vector3d> way;  // the answer's path in the robot's terms, converted once
   if (!status.ok() && footprint_may_help && query.clearance_m > 0.0) {
     status = plan_with(query.robot_radius_m, &response);
   } else if (status.ok() && query.clearance_m > 0.0 && response.path_size() > 0) {
     // A way round where the short way passes a gap narrower than the footprint and the
     // clearance: the bare footprint's way is taken when it is much shorter. The clearance is a
     // preference, as Nav2's inflation cost is, not a wall.
-    const std::vector<Eigen::Vector3d> way = RobotPath(response, query);
+    way = RobotPath(response, query);
     const double with_clearance = HorizontalLength(query.start, way);
     if (MuchLonger(with_clearance, (way.back() - query.start).head<2>().norm())) {
       pb::PlanPathResponse bare;  // its failure leaves the clearance's way
-      if (plan_with(query.robot_radius_m, &bare).ok() && bare.path_size() > 0 &&
-          MuchLonger(with_clearance, HorizontalLength(query.start, RobotPath(bare, query)))) {
-        response = std::move(bare);
+      if (plan_with(query.robot_radius_m, &bare).ok() && bare.path_size() > 0) {
+        std::vector<Eigen::Vector3d> bare_way = RobotPath(bare, query);
+        if (MuchLonger(with_clearance, HorizontalLength(query.start, bare_way))) {
+          way = std::move(bare_way);
+        }
       }
     }
   }
@@ -203,7 +206,7 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
                                    {"fallback", "robot plans locally"}});
     return std::vector<Eigen::Vector3d>{};
   }
-  return RobotPath(response, query);
+  return way.empty() ? RobotPath(response, query) : way;
 }
 
 grpc::Status PlanningClient::Select(const pb::SelectExplorationGoalRequest& request,
