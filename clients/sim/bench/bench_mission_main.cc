@@ -49,7 +49,7 @@ constexpr char kUsage[] =
     "                            [--model-config FILE | --model sim [--vlm-sweep LIST]] [--bin-dir "
     "DIR]\n"
     "                            [--jobs N] [--drift-episodes N] [--kidnapped-episodes N]\n"
-    "                            [--landmarks oracle|mapping]\n"
+    "                            [--landmarks oracle|mapping] [--localizer map|truth]\n"
     "  --suite DIR            folder of world YAML files, or of suite folders (semnav-sim-worlds "
     "--out DIR\n"
     "                         writes indoor, outdoor, flyroll, houseexpo, fr079); default: 4 "
@@ -85,6 +85,9 @@ constexpr char kUsage[] =
     "  --landmarks L          the pose-loss groups' landmark maps: oracle (the world's objects, "
     "upserted\n"
     "                         before each episode; default) or mapping (filled by mapping)\n"
+    "  --localizer R          what the pose-loss groups' localizer model compares the believed "
+    "pose with:\n"
+    "                         map (the map the robot drew; default) or truth (docs/simulation.md)\n"
     "  --jobs N               episodes run at once, each on its own stack of services (default 2, "
     "one\n"
     "                         per core of the reference machine; 1 = one after another)\n";
@@ -106,7 +109,8 @@ const std::vector<semnav::FlagSpec> kFlags = {{"suite", "DIR", ""},
                                               {"jobs", "N", ""},
                                               {"drift-episodes", "N", ""},
                                               {"kidnapped-episodes", "N", ""},
-                                              {"landmarks", "KIND", ""}};
+                                              {"landmarks", "KIND", ""},
+                                              {"localizer", "REFERENCE", ""}};
 
 // Compared side by side on the same episodes. EROI_UTILITY needs a vision model, so it joins
 // only on request.
@@ -153,7 +157,8 @@ int main(int argc, char** argv) {
                                               {"--jobs", "2"},
                                               {"--drift-episodes", "0"},
                                               {"--kidnapped-episodes", "0"},
-                                              {"--landmarks", "oracle"}};
+                                              {"--landmarks", "oracle"},
+                                              {"--localizer", "map"}};
   const semnav::ParsedFlags given =
       semnav::ParseFlagsOrExit(argc, argv, kFlags, "semnav-bench-mission", kUsage);
   for (const auto& [name, value] : given.values) flags["--" + name] = value;
@@ -171,12 +176,18 @@ int main(int argc, char** argv) {
     std::cerr << "semnav-bench-mission: --landmarks: oracle or mapping\n" << kUsage;
     return 2;
   }
+  if (flags["--localizer"] != "map" && flags["--localizer"] != "truth") {
+    std::cerr << "semnav-bench-mission: --localizer: map or truth\n" << kUsage;
+    return 2;
+  }
   const bool pose_loss = counts.drift > 0 || counts.kidnapped > 0;
   std::vector<std::string> unscorable;
   std::vector<loop::EpisodeSpec> plan =
       semnav::sim::bench::PlanEpisodes(*worlds, counts, seed, &unscorable);
   for (loop::EpisodeSpec& spec : plan) {
     if (!spec.landmarks.empty()) spec.landmarks = flags["--landmarks"];
+    spec.localizer.reference = flags["--localizer"] == "truth" ? loop::LocalizerReference::kTruth
+                                                               : loop::LocalizerReference::kMap;
   }
   for (const std::string& line : unscorable) std::cerr << "semnav-bench-mission: " << line << "\n";
   if (plan.empty()) {

@@ -310,7 +310,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     api::ConnectRequest state =
         StepStateMessage(robot, spec.robot_id, step_number, mapping_revision);
     const api::LocalizationStatus status =
-        localizer.Update(robot.time_s(), believed(), robot.pose());
+        localizer.Update(robot.time_s(), believed(), robot.pose(), !gateway_relocalizing);
     state.mutable_state()->set_localization(status);
     reported = status;
     recovery.OnReport(robot.time_s(), status);
@@ -325,7 +325,8 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
                            std::abs(corrected.yaw - map_from_odom.yaw) > 1e-12;
       map_from_odom = corrected;
       if (changed) {
-        recovery.OnCorrection(robot.time_s(), believed(), robot.pose());
+        recovery.OnCorrection(robot.time_s(), believed(),
+                              localizer.Expected(believed(), robot.pose()));
         result.timeline.push_back(absl::StrCat(
             Stamp(robot),
             absl::StrFormat(

@@ -1,6 +1,7 @@
 #include "clients/sim/loop/localization_model.h"
 
 #include <cmath>
+#include <functional>
 
 namespace semnav::sim::loop {
 
@@ -52,12 +53,60 @@ void ToTruthFrame(api::RobotCommand& command, const Pose& truth_from_odom) {
   for (api::PathWaypoint& w : *navigate->mutable_path()) move(w.mutable_position());
 }
 
-api::LocalizationStatus SimLocalizer::Update(double time_s, const Pose& believed,
-                                             const Pose& truth) {
+namespace {
+
+bool Differ(const Pose& a, const Pose& b, const LocalizerConfig& config) {
+  return (a.position - b.position).head<2>().norm() > config.lost_distance_m ||
+         std::abs(WrapAngle(a.yaw - b.yaw)) > config.lost_yaw_rad;
+}
+
+}  // namespace
+
+SimLocalizer::Cell SimLocalizer::CellOf(const Pose& pose) const {
+  return {static_cast<int64_t>(std::floor(pose.position.x() / config_.map_cell_m)),
+          static_cast<int64_t>(std::floor(pose.position.y() / config_.map_cell_m))};
+}
+
+void SimLocalizer::ForSquaresInView(const Pose& believed,
+                                    const std::function<void(const Cell&, double)>& visit) const {
+  const Cell at = CellOf(believed);
+  const auto reach = static_cast<int64_t>(std::ceil(config_.view_m / config_.map_cell_m));
+  for (int64_t dx = -reach; dx <= reach; ++dx) {
+    for (int64_t dy = -reach; dy <= reach; ++dy) {
+      const Cell square{at.first + dx, at.second + dy};
+      const Eigen::Vector2d centre((static_cast<double>(square.first) + 0.5) * config_.map_cell_m,
+                                   (static_cast<double>(square.second) + 0.5) * config_.map_cell_m);
+      const double distance_m = (centre - believed.position.head<2>()).norm();
+      if (distance_m <= config_.view_m) visit(square, distance_m);
+    }
+  }
+}
+
+std::optional<Pose> SimLocalizer::Reference(const Pose& believed) const {
+  if (config_.reference == LocalizerReference::kTruth) return Pose{};
+  std::optional<Pose> nearest;
+  double nearest_m = config_.view_m;
+  ForSquaresInView(believed, [&](const Cell& square, double distance_m) {
+    const auto it = drawn_with_.find(square);
+    if (it == drawn_with_.end() || distance_m > nearest_m) return;
+    nearest_m = distance_m;
+    nearest = it->second;
+  });
+  return nearest;
+}
+
+Pose SimLocalizer::Expected(const Pose& believed, const Pose& truth) const {
+  const std::optional<Pose> reference = Reference(believed);
+  return reference.has_value() ? Compose(*reference, truth) : truth;
+}
+
+api::LocalizationStatus SimLocalizer::Update(double time_s, const Pose& believed, const Pose& truth,
+                                             bool mapping) {
   if (!config_.enabled) return api::LOCALIZATION_STATUS_UNSPECIFIED;
+  const std::optional<Pose> reference = Reference(believed);
+  // Nothing drawn here: the verdict stands.
   const bool mismatch =
-      (believed.position - truth.position).head<2>().norm() > config_.lost_distance_m ||
-      std::abs(WrapAngle(believed.yaw - truth.yaw)) > config_.lost_yaw_rad;
+      reference.has_value() ? Differ(believed, Compose(*reference, truth), config_) : lost_;
   if (mismatch == lost_) {
     changing_since_.reset();
   } else {
@@ -66,6 +115,12 @@ api::LocalizationStatus SimLocalizer::Update(double time_s, const Pose& believed
       lost_ = mismatch;
       changing_since_.reset();
     }
+  }
+  if (config_.reference == LocalizerReference::kMap && mapping && !lost_) {
+    const Pose believed_from_truth = Compose(believed, Inverse(truth));
+    ForSquaresInView(believed, [&](const Cell& square, double) {
+      drawn_with_.try_emplace(square, believed_from_truth);
+    });
   }
   return lost_ ? api::LOCALIZATION_STATUS_LOST : api::LOCALIZATION_STATUS_OK;
 }
@@ -83,12 +138,12 @@ void RecoveryTracker::OnReport(double time_s, api::LocalizationStatus status) {
   }
 }
 
-void RecoveryTracker::OnCorrection(double time_s, const Pose& believed, const Pose& truth) {
+void RecoveryTracker::OnCorrection(double time_s, const Pose& believed, const Pose& expected) {
   if (!open_since_.has_value())
     return;  // a correction without a loss (operator request, drift check)
   times_s_.push_back(time_s - *open_since_);
-  errors_m_.push_back((believed.position - truth.position).head<2>().norm());
-  errors_deg_.push_back(std::abs(WrapAngle(believed.yaw - truth.yaw)) * 180.0 / M_PI);
+  errors_m_.push_back((believed.position - expected.position).head<2>().norm());
+  errors_deg_.push_back(std::abs(WrapAngle(believed.yaw - expected.yaw)) * 180.0 / M_PI);
   open_since_.reset();
 }
 

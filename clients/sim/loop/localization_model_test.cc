@@ -27,6 +27,7 @@ TEST(PoseAlgebraTest, ComposeAndInverseAreRigidTransforms) {
 TEST(SimLocalizerTest, ReportsLostOnlyAfterTheMismatchHeldForTheLatencyAndOkAfterAgreementHeld) {
   LocalizerConfig config;
   config.enabled = true;
+  config.reference = LocalizerReference::kTruth;
   config.lost_distance_m = 0.5;
   config.latency_s = 2.0;
   SimLocalizer localizer(config);
@@ -42,6 +43,53 @@ TEST(SimLocalizerTest, ReportsLostOnlyAfterTheMismatchHeldForTheLatencyAndOkAfte
   // A yaw mismatch alone counts too (15 deg default).
   EXPECT_EQ(localizer.Update(7.0, At(3, 0, 0.3), At(3, 0)), api::LOCALIZATION_STATUS_OK);
   EXPECT_EQ(localizer.Update(9.0, At(3, 0, 0.3), At(3, 0)), api::LOCALIZATION_STATUS_LOST);
+}
+
+// Hand-checked with 1 m squares seen within 3 m: drift that the map was drawn with is no loss;
+// coming back to a square drawn with another drift is.
+TEST(SimLocalizerTest, MapReferenceAcceptsTheDriftTheMapWasDrawnWithAndCatchesARevisit) {
+  LocalizerConfig config;
+  config.enabled = true;
+  config.latency_s = 2.0;
+  SimLocalizer localizer(config);
+  // Drawn at t = 0 with no drift: square (0, 0).
+  EXPECT_EQ(localizer.Update(0.0, At(0.5, 0.5), At(0.5, 0.5)), api::LOCALIZATION_STATUS_OK);
+  // 10 m on, the belief is 0.8 m ahead of the truth: a truth reference would say LOST, but no
+  // square within 3 m is drawn, and then square (10, 0) is drawn with this drift.
+  EXPECT_EQ(localizer.Update(1.0, At(10.8, 0.5), At(10.0, 0.5)), api::LOCALIZATION_STATUS_OK);
+  EXPECT_EQ(localizer.Update(4.0, At(10.8, 0.5), At(10.0, 0.5)), api::LOCALIZATION_STATUS_OK);
+  EXPECT_NEAR(localizer.Expected(At(10.8, 0.5), At(10.0, 0.5)).position.x(), 10.8, 1e-12);
+  // Back near square (0, 0) with the same 0.8 m: the nearest drawn square has no drift.
+  EXPECT_EQ(localizer.Update(5.0, At(2.3, 0.5), At(1.5, 0.5)), api::LOCALIZATION_STATUS_OK);
+  EXPECT_EQ(localizer.Update(7.0, At(2.3, 0.5), At(1.5, 0.5)), api::LOCALIZATION_STATUS_LOST);
+  EXPECT_NEAR(localizer.Expected(At(2.3, 0.5), At(1.5, 0.5)).position.x(), 1.5, 1e-12);
+  // While lost nothing is drawn: with no drawn square in view the verdict stands.
+  EXPECT_EQ(localizer.Update(8.0, At(20.5, 5.5), At(20.5, 5.5)), api::LOCALIZATION_STATUS_LOST);
+  EXPECT_EQ(localizer.Update(11.0, At(20.5, 5.5), At(20.5, 5.5)), api::LOCALIZATION_STATUS_LOST);
+  // A correction to where the map has the place: OK after the latency.
+  EXPECT_EQ(localizer.Update(12.0, At(1.5, 0.5), At(1.5, 0.5)), api::LOCALIZATION_STATUS_LOST);
+  EXPECT_EQ(localizer.Update(14.0, At(1.5, 0.5), At(1.5, 0.5)), api::LOCALIZATION_STATUS_OK);
+}
+
+TEST(SimLocalizerTest, MapReferenceCatchesAKidnapAndAcceptsTheRightCorrectionNearTheMap) {
+  LocalizerConfig config;
+  config.enabled = true;
+  SimLocalizer localizer(config);
+  // Not mapping (the gateway relocalizes): square (9, 9) is not drawn.
+  EXPECT_EQ(localizer.Update(0.0, At(9.5, 9.5), At(9.5, 9.5), /*mapping=*/false),
+            api::LOCALIZATION_STATUS_OK);
+  EXPECT_EQ(localizer.Update(1.0, At(0.5, 0.5), At(0.5, 0.5)), api::LOCALIZATION_STATUS_OK);
+  // Carried 3 m without being told: the belief stays in square (0, 0).
+  EXPECT_EQ(localizer.Update(2.0, At(0.5, 0.5), At(3.5, 0.5)), api::LOCALIZATION_STATUS_OK);
+  EXPECT_EQ(localizer.Update(4.0, At(0.5, 0.5), At(3.5, 0.5)), api::LOCALIZATION_STATUS_LOST);
+  EXPECT_NEAR(localizer.Expected(At(0.5, 0.5), At(3.5, 0.5)).position.x(), 3.5, 1e-12);
+  // The right correction puts the belief in square (3, 0), never drawn; square (0, 0), 3 m
+  // away, agrees with it.
+  EXPECT_EQ(localizer.Update(5.0, At(3.5, 0.5), At(3.5, 0.5)), api::LOCALIZATION_STATUS_LOST);
+  EXPECT_EQ(localizer.Update(7.0, At(3.5, 0.5), At(3.5, 0.5)), api::LOCALIZATION_STATUS_OK);
+  // Nothing drawn near square (9, 9): a wrong belief there is no evidence.
+  EXPECT_EQ(localizer.Update(8.0, At(9.5, 9.5), At(3.5, 0.5)), api::LOCALIZATION_STATUS_OK);
+  EXPECT_EQ(localizer.Update(11.0, At(9.5, 9.5), At(3.5, 0.5)), api::LOCALIZATION_STATUS_OK);
 }
 
 TEST(SimLocalizerTest, DisabledSaysNothing) {
