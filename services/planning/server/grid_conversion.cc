@@ -1,5 +1,6 @@
 #include "services/planning/server/grid_conversion.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
@@ -157,6 +158,55 @@ absl::StatusOr<LayeredGrid> ToLayeredGrid(const GridMap& grid, bool unknown_is_f
                                     : (v > kStructureValue ? kStructureValue : v);
   }
   return out;
+}
+
+void StampContacts(const std::vector<Eigen::Vector2d>& contacts, double radius_m, GridMap& grid) {
+  const int width = static_cast<int>(grid.width());
+  const int height = static_cast<int>(grid.height());
+  const double resolution = grid.resolution();
+  std::string* hierarchical = nullptr;
+  std::string* occupancy = nullptr;
+  for (semnav::common::v1::GridLayer& layer : *grid.mutable_layers()) {
+    if (layer.kind() == semnav::common::v1::GRID_LAYER_KIND_HIERARCHICAL)
+      hierarchical = layer.mutable_data();
+    if (layer.kind() == semnav::common::v1::GRID_LAYER_KIND_OCCUPANCY)
+      occupancy = layer.mutable_data();
+  }
+  constexpr double kSameObstacleM = 0.5;
+  constexpr uint8_t kTallestFlyable = kStructureValue - 1;
+  // Cells whose centre lies within `reach` of `point`, and the cell under it.
+  const auto for_cells_near = [&](const Eigen::Vector2d& point, double reach, auto&& visit) {
+    const double col = (point.x() - grid.origin().x()) / resolution;
+    const double row = (point.y() - grid.origin().y()) / resolution;
+    const int under_x = static_cast<int>(std::floor(col));
+    const int under_y = static_cast<int>(std::floor(row));
+    const int span = static_cast<int>(std::ceil(reach / resolution));
+    for (int y = std::max(under_y - span, 0); y <= std::min(under_y + span, height - 1); ++y) {
+      for (int x = std::max(under_x - span, 0); x <= std::min(under_x + span, width - 1); ++x) {
+        const double dx = (x + 0.5 - col) * resolution;
+        const double dy = (y + 0.5 - row) * resolution;
+        if ((x == under_x && y == under_y) || dx * dx + dy * dy <= reach * reach)
+          visit(static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x));
+      }
+    }
+  };
+  for (const Eigen::Vector2d& point : contacts) {
+    if (hierarchical != nullptr) {
+      uint8_t tallest = 0;
+      for_cells_near(point, kSameObstacleM, [&](size_t i) {
+        const auto v = static_cast<uint8_t>((*hierarchical)[i]);
+        if (v != kUnknown && v < kStructureValue) tallest = std::max(tallest, v);
+      });
+      const uint8_t stamp = tallest > 0 ? tallest : kTallestFlyable;
+      for_cells_near(point, radius_m, [&](size_t i) {
+        const auto v = static_cast<uint8_t>((*hierarchical)[i]);
+        if (v >= kStructureValue && v != kUnknown) return;
+        (*hierarchical)[i] = static_cast<char>(v == kUnknown ? stamp : std::max(v, stamp));
+      });
+    }
+    if (occupancy != nullptr)
+      for_cells_near(point, radius_m, [&](size_t i) { (*occupancy)[i] = static_cast<char>(100); });
+  }
 }
 
 }  // namespace semnav::planning

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "semnav/common/v1/geometry.pb.h"
@@ -64,5 +66,14 @@ absl::StatusOr<CellGrid<uint8_t>> ToExplored(const semnav::common::v1::GridMap& 
 // structure unless unknown_is_free. FAILED_PRECONDITION when absent.
 absl::StatusOr<LayeredGrid> ToLayeredGrid(const semnav::common::v1::GridMap& grid,
                                           bool unknown_is_free, const std::string& field);
+
+// Marks each of `contacts` (map frame) as an obstacle in `grid`'s HIERARCHICAL and OCCUPANCY
+// layers: every cell whose centre lies within radius_m of the point, and the cell under it.
+// Building structure stays structure; an obstacle takes the tallest obstacle height within
+// 0.5 m of the point (what the robot met is part of it), or the tallest flyable height when
+// none is mapped there. Points outside the grid change nothing. The grid's geometry must have
+// been checked (ReadGridFrame).
+void StampContacts(const std::vector<Eigen::Vector2d>& contacts, double radius_m,
+                   semnav::common::v1::GridMap& grid);
 
 }  // namespace semnav::planning

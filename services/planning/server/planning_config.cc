@@ -13,7 +13,8 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromYaml(ConfigReader& section) {
       .Read("start_snap_radius_m", &config.grid_planner.start_snap_radius_m)
       .Read("max_start_outside_m", &config.grid_planner.max_start_outside_m)
       .Read("max_goal_outside_m", &config.grid_planner.max_goal_outside_m)
-      .Read("max_free_goal_outside_m", &config.grid_planner.max_free_goal_outside_m);
+      .Read("max_free_goal_outside_m", &config.grid_planner.max_free_goal_outside_m)
+      .Read("contact_radius_m", &config.contact_radius_m);
   ClearanceConfig& clearance = config.grid_planner.clearance;
   ConfigReader clear = section.Child("clearance");
   clear.Read("clearance_m", &clearance.clearance_m)
@@ -44,6 +45,9 @@ absl::StatusOr<PlanningConfig> PlanningConfig::FromYaml(ConfigReader& section) {
                  config.grid_planner.max_free_goal_outside_m >= 0 &&
                  config.grid_planner.max_free_goal_outside_m <= 100,
              "max_free_goal_outside_m", "must be in [0, 100]");
+  grid.Check(std::isfinite(config.contact_radius_m) && config.contact_radius_m >= 0 &&
+                 config.contact_radius_m <= 1,
+             "contact_radius_m", "must be in [0, 1]");
   grid.Check(config.occupied_percent >= 1 && config.occupied_percent <= 100, "occupied_percent",
              "must be in 1..100");
   grid.Check(config.grid_planner.max_low_probability_percent >= 0 &&

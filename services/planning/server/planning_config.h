@@ -15,6 +15,11 @@ struct PlanningConfig {
   // grid.occupied_percent: an OCCUPANCY cell at or above this blocks 2D
   // planning (seed 003 eq. 9, p_th = 0.65).
   int occupied_percent = 65;
+  // grid.contact_radius_m: each contact of a PlanPathRequest (where the robot touched something)
+  // becomes an obstacle disc of this radius before the footprint inflation; one 5 cm cell. A
+  // wider disc closes doorways the robot brushed (a 0.9 m door with a 0.25 m robot leaves
+  // 0.4 m for the centre line).
+  double contact_radius_m = 0.05;
   // grid.unknown_is_free: unknown cells (255) count as free instead of blocked.
   bool unknown_is_free = false;
   // grid.max_low_probability_percent: seed 004 second-stage limit;

@@ -65,6 +65,14 @@ absl::Status CheckRequest(const pb::PlanPathRequest& request) {
   if (request.has_first_sighting()) {
     if (absl::Status s = CheckPose2D(request.first_sighting(), "first_sighting"); !s.ok()) return s;
   }
+  if (request.contacts_size() > kMaxContacts) {
+    return Invalid("contacts", absl::StrCat("at most ", kMaxContacts, " contacts"));
+  }
+  for (int i = 0; i < request.contacts_size(); ++i) {
+    if (absl::Status s = CheckPose2D(request.contacts(i), absl::StrCat("contacts[", i, "]"));
+        !s.ok())
+      return s;
+  }
   const pb::MultiModalOptions& mm = request.multimodal();
   if (mm.has_alpha() && (!NonNegative(mm.alpha()) || mm.alpha() > kMaxScore)) {
     return Invalid("multimodal.alpha",
@@ -246,9 +254,19 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
   absl::StatusOr<std::shared_ptr<const GridMap>> resolved =
       ResolveGrid(context, request.source(), &grid_field);
   if (!resolved.ok()) return resolved.status();
-  const GridMap& map = **resolved;
-  absl::StatusOr<GridFrame> frame = ReadGridFrame(map, grid_field);
+  std::shared_ptr<const GridMap> grid = *std::move(resolved);
+  absl::StatusOr<GridFrame> frame = ReadGridFrame(*grid, grid_field);
   if (!frame.ok()) return frame.status();
+  if (request.contacts_size() > 0) {
+    // A copy of its own: the kept live grid stays as mapping drew it for other calls.
+    auto stamped = std::make_shared<GridMap>(*grid);
+    std::vector<Eigen::Vector2d> contacts;
+    for (const semnav::common::v1::Pose2D& c : request.contacts())
+      contacts.emplace_back(c.x(), c.y());
+    StampContacts(contacts, config_.contact_radius_m, *stamped);
+    grid = std::move(stamped);
+  }
+  const GridMap& map = *grid;
   // 2D planners pad the grid to a start just outside it (GridPlannerConfig::max_start_outside_m).
   absl::StatusOr<Cell> start = request.planner() == pb::PLANNER_KIND_JUMP_ASTAR
                                    ? frame->ToCell(request.start(), "start")
@@ -327,7 +345,9 @@ absl::Status PlanningServiceImpl::Plan(grpc::CallbackServerContext* context,
     plan.outside_is_free = config_.unknown_is_free;
     plan.limits = limits;
     GridPlanner planner(config_.grid_planner);
-    plan.prepared = footprints_.Get(*resolved, plan.robot_radius_m, plan.keep_clearance, [&] {
+    // A grid stamped with contacts is this call's alone: prepared, not kept (an empty owner).
+    const std::shared_ptr<const GridMap> kept_grid = request.contacts_size() > 0 ? nullptr : grid;
+    plan.prepared = footprints_.Get(kept_grid, plan.robot_radius_m, plan.keep_clearance, [&] {
       return planner.Prepare(plan.free, plan.resolution_m, plan.robot_radius_m,
                              plan.keep_clearance);
     });

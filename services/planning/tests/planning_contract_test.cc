@@ -287,6 +287,42 @@ void ExpectFieldError(const grpc::Status& status, const std::string& field) {
   EXPECT_EQ(info->field(), field);
 }
 
+// A contact (where the robot touched something the grid lacks) is an obstacle for that call
+// alone: the path goes round it, and the next call without it goes straight again.
+TEST_F(PlanningContract, AContactIsAnObstacleForThatCallOnly) {
+  const std::vector<std::string> open_rows = {".......", ".......", ".......", ".......",
+                                              "......."};
+  pb::PlanPathRequest request;
+  *request.mutable_source()->mutable_grid() = MakeGrid(open_rows, 0.5);
+  *request.mutable_start() = At(0, 2, 0.5);
+  *request.mutable_goal() = At(6, 2, 0.5);
+  pb::PlanPathResponse straight;
+  ASSERT_TRUE(Plan(request, &straight).ok());
+  EXPECT_NEAR(straight.length_m(), 3.0, 1e-9);
+
+  pb::PlanPathRequest touched = request;
+  *touched.add_contacts() = At(3, 2, 0.5);  // cell (3, 2), on the straight line
+  pb::PlanPathResponse around;
+  const grpc::Status status = Plan(touched, &around);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_GT(around.length_m(), 3.0 + 0.1);
+  for (const auto& p : around.path()) {
+    EXPECT_FALSE(std::abs(p.x() - At(3, 2, 0.5).x()) < 0.25 &&
+                 std::abs(p.y() - At(3, 2, 0.5).y()) < 0.25)
+        << p.x() << ", " << p.y();
+  }
+  // A contact outside the grid changes nothing.
+  pb::PlanPathRequest outside = request;
+  outside.add_contacts()->set_x(50.0);
+  pb::PlanPathResponse same;
+  ASSERT_TRUE(Plan(outside, &same).ok());
+  EXPECT_NEAR(same.length_m(), 3.0, 1e-9);
+
+  pb::PlanPathResponse again;
+  ASSERT_TRUE(Plan(request, &again).ok());
+  EXPECT_NEAR(again.length_m(), 3.0, 1e-9);
+}
+
 TEST_F(PlanningContract, BadInputNamesTheFieldAndChangesNothing) {
   pb::PlanPathResponse before;
   ASSERT_TRUE(Plan(DoorRequest(pb::PLANNER_KIND_JPS), &before).ok());
@@ -326,6 +362,14 @@ TEST_F(PlanningContract, BadInputNamesTheFieldAndChangesNothing) {
   pb::PlanPathRequest stale = DoorRequest(pb::PLANNER_KIND_JPS);
   stale.mutable_source()->mutable_live_map()->set_max_age_ms(10001);
   ExpectFieldError(Plan(stale, &response), "source.live_map.max_age_ms");
+
+  pb::PlanPathRequest nan_contact = DoorRequest(pb::PLANNER_KIND_JPS);
+  *nan_contact.add_contacts() = At(1, 1, 0.5);
+  nan_contact.add_contacts()->set_y(std::nan(""));
+  ExpectFieldError(Plan(nan_contact, &response), "contacts[1].y");
+  pb::PlanPathRequest many_contacts = DoorRequest(pb::PLANNER_KIND_JPS);
+  for (int i = 0; i < 33; ++i) *many_contacts.add_contacts() = At(1, 1, 0.5);
+  ExpectFieldError(Plan(many_contacts, &response), "contacts");
 
   // The service still answers, and the same request gives the same plan.
   pb::PlanPathResponse after;

@@ -33,6 +33,8 @@ struct PathQuery {
   // Planning may answer from a live grid it fetched this long ago (wall time); 0 = a grid fetched
   // for this call. The gateway sets it per robot session (PerTaskPathPlanner).
   int live_map_max_age_ms = 0;
+  // Points the robot ran into on its way (map frame): obstacles the map may lack.
+  std::vector<Eigen::Vector3d> contacts{};
 };
 
 // One exploration request: where the robot is and which goals are spent (it failed to reach

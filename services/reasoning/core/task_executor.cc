@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
@@ -144,6 +145,7 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> TaskExecutor::PlanPath(
     return std::vector<Eigen::Vector3d>{};  // turn in place
   PathQuery query{pose_.position,  goal,        config_.multi_modal, config_.robot_radius_m,
                   PathClearance(), std::nullopt};
+  query.contacts = contacts_;
   absl::StatusOr<std::vector<Eigen::Vector3d>> path = planner_->Plan(query);
   if (reach_target.has_value() &&
       (absl::IsFailedPrecondition(path.status()) || absl::IsNotFound(path.status()))) {
@@ -1000,6 +1002,38 @@ std::vector<RobotCommand> TaskExecutor::VerifyTimedOut(double now, bool seen_mis
                                                          config_.verify_timeout_s, " s, twice"));
 }
 
+void TaskExecutor::RecordContact() {
+  // Not for fly-roll robots: most of their blocks come in flight, above a crate whose top the map
+  // lacks, and a contact stamped at the height mapped nearby kept them flying into it; measured
+  // on the fly-roll bench, SR fell from 0.900 to 0.800 (docs/performance/mission.md, "Contacts").
+  if (config_.max_contacts <= 0 || config_.multi_modal) return;
+  // The way the robot was going: along the path's segment nearest it; its heading when the path
+  // gives none.
+  const Eigen::Vector2d here = pose_.position.head<2>();
+  Eigen::Vector2d heading(std::cos(pose_.yaw), std::sin(pose_.yaw));
+  const std::vector<Eigen::Vector3d>& path = progress_.path;
+  double nearest_m = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    const Eigen::Vector2d a = path[i].head<2>();
+    const Eigen::Vector2d along = path[i + 1].head<2>() - a;
+    if (along.norm() < 1e-6) continue;
+    const double t = std::clamp((here - a).dot(along) / along.squaredNorm(), 0.0, 1.0);
+    const double distance_m = (a + t * along - here).norm();
+    if (distance_m < nearest_m) {
+      nearest_m = distance_m;
+      heading = along.normalized();
+    }
+  }
+  if (path.size() == 1 && (path[0].head<2>() - here).norm() > 1e-6)
+    heading = (path[0].head<2>() - here).normalized();
+  constexpr double kHalfCellM = 0.025;
+  Eigen::Vector3d contact = pose_.position;
+  contact.head<2>() = here + (config_.robot_radius_m + kHalfCellM) * heading;
+  contacts_.push_back(contact);
+  if (contacts_.size() > static_cast<size_t>(config_.max_contacts))
+    contacts_.erase(contacts_.begin());
+}
+
 std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
   if (phase_ == Phase::kBackingOff)
     return ResumeAfterBackoff(now);  // cannot back off: re-plan from here
@@ -1017,6 +1051,7 @@ std::vector<RobotCommand> TaskExecutor::Blocked(double now) {
       static_cast<int>(std::count_if(blocked_spots_.begin(), blocked_spots_.end(), near_here));
   const bool same_spot = blocks_here > 0;
   blocked_spots_.push_back(pose_.position);
+  RecordContact();
   extra_clearance_m_ = std::min(extra_clearance_m_ + config_.blocked_clearance_step_m,
                                 config_.blocked_clearance_max_m);
   // Fly-roll robots too: the multi-modal search inflates by the footprint and the clearance, so

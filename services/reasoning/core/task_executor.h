@@ -143,6 +143,12 @@ struct ExecutorConfig {
   // into a crate's corner; after a look-around the path left the spot; docs/performance/
   // mission.md, "Blocked where the map has nothing"). 0 = never.
   int look_around_after_blocks_at_spot = 2;
+  // Each block leaves a contact: the point the robot ran into, one footprint radius (plus
+  // half a 5 cm cell) ahead of it along its path. The task's next path requests carry its last
+  // max_contacts contacts, which planning marks as obstacles the map may lack (Nav2's collision
+  // monitor and bumper layers serve the same end). Robots that plan on the ground only (not
+  // multi_modal). 0 = none sent.
+  int max_contacts = 16;
   // An exploration goal with no path (or the robot blocked on it) is set aside with the region
   // within unreachable_region_m around it: frontiers of the same unreachable pocket are not tried
   // one by one.
@@ -373,6 +379,8 @@ class TaskExecutor {
   std::vector<RobotCommand> VerifyTimedOut(double now, bool seen_missing = false);
   // The robot reported BLOCKED: back off and re-plan with more clearance, or give the goal up.
   std::vector<RobotCommand> Blocked(double now);
+  // Adds the point the robot ran into to contacts_ (ExecutorConfig::max_contacts).
+  void RecordContact();
   // Drive back along the recent trail (known free space); then ResumeAfterBackoff.
   std::vector<RobotCommand> BackOff(double now, bool resume_exploring, const std::string& reason);
   // Back along the trail by no_path_retreat_m, then explore again; empty when the trail is
@@ -471,6 +479,7 @@ class TaskExecutor {
   int blocks_on_goal_ = 0;
   std::vector<Eigen::Vector3d> blocked_spots_;
   std::vector<Eigen::Vector3d> looked_around_at_blocks_;  // once per spot
+  std::vector<Eigen::Vector3d> contacts_;  // where blocks stopped the robot, oldest first
   double extra_clearance_m_ = 0.0;
   bool resume_exploring_ = false;
   // Fallback steps with no path: other directions are tried next.

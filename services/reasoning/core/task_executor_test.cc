@@ -1797,6 +1797,50 @@ TEST_F(GatewayTaskExecutorTest, BlockedAtOneSpotAgainAndAgainLooksAroundThereOnc
       << off.progress().reason;
 }
 
+// Each block leaves a contact one footprint radius (0.2 m) and half a cell (0.025 m) ahead of the
+// robot along its path's nearest segment, not along its heading (yaw 0 here); the next path
+// requests carry the newest max_contacts of them.
+TEST_F(GatewayTaskExecutorTest, BlocksLeaveContactsAheadAlongThePathForTheNextPlans) {
+  planner_.frontiers = {Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0),
+                        Eigen::Vector3d(-10, 0, 0)};
+  ExecutorConfig config;
+  config.robot_radius_m = 0.2;
+  config.max_contacts = 2;
+  TaskExecutor task = Make(FindTarget(), config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  EXPECT_TRUE(planner_.queries.back().contacts.empty());
+  task.OnPose(4, At(1));
+  out = task.OnFeedback(4, out[0].id, RobotFeedback::kBlocked);  // on (0, 0) -> (10, 0)
+  ASSERT_EQ(planner_.queries.back().contacts.size(), 1u);
+  EXPECT_TRUE(planner_.queries.back().contacts[0].isApprox(Eigen::Vector3d(1.225, 0, 0)));
+  task.OnPose(5, At(1));
+  out = task.OnFeedback(5, out[0].id, RobotFeedback::kBlocked);  // goal given up: to (0, 10)
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  EXPECT_EQ(planner_.queries.back().contacts.size(), 2u);
+  task.OnPose(6, At(1.0, 0.6));  // 0.6 m from the first spot: a new one, the goal re-planned
+  out = task.OnFeedback(6, out[0].id, RobotFeedback::kBlocked);  // on (1, 0) -> (0, 10)
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(0, 10, 0)));
+  // Hand-checked: the segment's direction is (-1, 10) / sqrt(101); 0.225 m along it from (1, 0.6).
+  const Eigen::Vector3d expected(1.0 - 0.225 / std::sqrt(101.0), 0.6 + 2.25 / std::sqrt(101.0), 0);
+  ASSERT_EQ(planner_.queries.back().contacts.size(), 2u);  // the oldest dropped
+  EXPECT_TRUE(planner_.queries.back().contacts[0].isApprox(Eigen::Vector3d(1.225, 0, 0)));
+  EXPECT_TRUE(planner_.queries.back().contacts[1].isApprox(expected, 1e-9))
+      << planner_.queries.back().contacts[1].transpose();
+
+  for (const bool multi_modal : {false, true}) {  // off, or a fly-roll robot: no contact sent
+    config.max_contacts = multi_modal ? 2 : 0;
+    config.multi_modal = multi_modal;
+    TaskExecutor off = Make(FindTarget(), config);
+    out = off.Start(0, At(0));
+    off.OnPose(4, At(1));
+    out = off.OnFeedback(4, out[0].id, RobotFeedback::kBlocked);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_TRUE(planner_.queries.back().contacts.empty()) << multi_modal;
+  }
+}
+
 // Default (the robot backs up by itself): a block re-plans the same goal at once, with more
 // clearance, from where the robot stands.
 TEST_F(GatewayTaskExecutorTest, BlockedReplansTheSameGoalWithMoreClearance) {

@@ -83,6 +83,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
       .Read("max_blocks_per_goal", &c.executor.max_blocks_per_goal)
       .Read("blocked_spot_radius_m", &c.executor.blocked_spot_radius_m)
       .Read("look_around_after_blocks_at_spot", &c.executor.look_around_after_blocks_at_spot)
+      .Read("max_contacts", &c.executor.max_contacts)
       .Read("unreachable_region_m", &c.executor.unreachable_region_m)
       .Read("time_budget_s", &c.executor.time_budget_s)
       .Read("endgame_s", &c.executor.endgame_s)
@@ -148,6 +149,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
   executor.Check(c.executor.look_around_after_blocks_at_spot >= 0 &&
                      c.executor.look_around_after_blocks_at_spot <= 100,
                  "look_around_after_blocks_at_spot", "must be in [0, 100] (0 = never)");
+  executor.Check(c.executor.max_contacts >= 0 && c.executor.max_contacts <= 32, "max_contacts",
+                 "must be in [0, 32] (planning takes at most 32)");
   executor.Check(c.executor.unreachable_region_m >= 0.0 && c.executor.unreachable_region_m <= 20.0,
                  "unreachable_region_m", "must be in [0, 20]");
   executor.Check(c.executor.time_budget_s >= 0.0, "time_budget_s", "must be >= 0 (0 = none)");

@@ -154,6 +154,8 @@ TEST(GatewayConfigTest, ReadsValuesAndNamesBadKeys) {
                            "executor: {max_blocks_per_goal: 0}",
                            "executor: {look_around_after_blocks_at_spot: -1}",
                            "executor: {look_around_after_blocks_at_spot: 101}",
+                           "executor: {max_contacts: -1}",
+                           "executor: {max_contacts: 33}",
                            "executor: {explore_scan_duration_s: -1}",
                            "executor: {look_up_tilt_rad: 1.6}",
                            "executor: {look_up_tilt_rad: .nan}",

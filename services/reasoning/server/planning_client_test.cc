@@ -21,9 +21,11 @@ class RecordingPlanning final : public pb::PlanningService::Service {
                         pb::PlanPathResponse* response) override {
     absl::MutexLock lock(&mu);
     radii.push_back(request->robot_radius_m());
+    contact_counts.push_back(request->contacts_size());
     tolerances.push_back(request->goal_tolerance_m());
     path_max_ages_ms.push_back(request->source().live_map().max_age_ms());
-    if (request->robot_radius_m() > no_path_above_m) {
+    if (request->robot_radius_m() > no_path_above_m ||
+        (no_path_with_contacts && request->contacts_size() > 0)) {
       absl::Status no_path = absl::NotFoundError("goal is not reachable from start");
       pb::PlanFailureDetail detail;
       detail.set_reason(pb::PLAN_FAILURE_REASON_NO_PATH);
@@ -62,6 +64,8 @@ class RecordingPlanning final : public pb::PlanningService::Service {
   double no_path_above_m = 1e9;  // PlanPath: NO_PATH for a robot_radius_m above this
   double detour_above_m = 1e9;   // PlanPath: for a robot_radius_m above this, by `detour` first
   std::vector<std::pair<double, double>> detour;
+  bool no_path_with_contacts = false;      // PlanPath: NO_PATH for any request with contacts
+  std::vector<int> contact_counts;         // PlanPath's contacts_size(), in call order
   std::vector<double> radii;               // PlanPath's robot_radius_m, in call order
   std::vector<double> tolerances;          // PlanPath's goal_tolerance_m, in call order
   std::vector<uint32_t> path_max_ages_ms;  // PlanPath's source.live_map.max_age_ms, in call order
@@ -260,6 +264,31 @@ TEST_F(GatewayPlanningClientTest, NoPathWithTheClearanceIsRetriedWithTheBareFoot
   EXPECT_TRUE(absl::IsNotFound(client_->Plan(query).status()));
   absl::MutexLock lock(&planning_.mu);
   EXPECT_EQ(planning_.radii.size(), 2u);
+}
+
+// Contacts reach planning; when they leave no way (one where the robot brushed a door frame), the
+// way is planned without them, with the clearance and then the bare footprint.
+TEST_F(GatewayPlanningClientTest, ContactsReachPlanningAndAWayTheyCloseIsPlannedWithoutThem) {
+  PathQuery query{
+      Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), false, 0.25, 0.15, std::nullopt};
+  query.contacts = {Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d(0.3, 0.1, 0)};
+  ASSERT_TRUE(client_->Plan(query).ok());
+  {
+    absl::MutexLock lock(&planning_.mu);
+    EXPECT_EQ(planning_.contact_counts, (std::vector<int>{2}));
+    planning_.contact_counts.clear();
+    planning_.radii.clear();
+    planning_.no_path_with_contacts = true;
+  }
+  absl::StatusOr<std::vector<Eigen::Vector3d>> planned = client_->Plan(query);
+  ASSERT_TRUE(planned.ok()) << planned.status();
+  EXPECT_DOUBLE_EQ(planned->back().x(), 3.0);
+  {
+    absl::MutexLock lock(&planning_.mu);
+    // With contacts: clearance, bare footprint; without: clearance (a way).
+    EXPECT_EQ(planning_.contact_counts, (std::vector<int>{2, 2, 0}));
+    EXPECT_EQ(planning_.radii, (std::vector<double>{0.4, 0.25, 0.4}));
+  }
 }
 
 // Regression (FR-079 start 1): with the clearance the way to a trash can 5.6 m west ran 63
