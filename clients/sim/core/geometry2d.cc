@@ -29,14 +29,6 @@ double PolygonArea(const Polygon2& polygon) {
   return std::abs(twice) / 2.0;
 }
 
-double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 double DistanceToPolygonBoundary(const Polygon2& polygon, const Eigen::Vector2d& point) {
   double best = std::numeric_limits<double>::infinity();
   const size_t n = polygon.size();

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "clients/sim/core/world.h"
+#include "services/common/geometry/segment.h"
 
 // Small 2D helpers on footprints (the xy plane).
 namespace semnav::sim {
@@ -13,9 +14,7 @@ using Polygon2 = std::vector<Eigen::Vector2d>;
 
 bool PointInPolygon(const Polygon2& polygon, const Eigen::Vector2d& point);
 double PolygonArea(const Polygon2& polygon);  // absolute value
-// Distance from a point to the segment [a, b].
-double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b);
+using semnav::geometry::DistanceToSegment;
 // Distance from a point to the polygon boundary (0 on the edge, also inside).
 double DistanceToPolygonBoundary(const Polygon2& polygon, const Eigen::Vector2d& point);
 // Four footprint corners of a box, counter-clockwise.

@@ -22,8 +22,8 @@ inline constexpr double kMaxScore = 1e6;
 inline constexpr double kMaxPathM = 100 * 2e5;
 // Per-request lists (frontiers, visited poses, objects, excluded goals, path points).
 inline constexpr size_t kMaxListItems = 65536;
-// PlanPathRequest.contacts: the points a robot touched on its way to one goal; the gateway sends
-// at most 16.
+// PlanPathRequest.contacts: the points a robot touched during one task; the gateway sends its
+// newest executor.max_contacts (16 by default, at most 32).
 inline constexpr int kMaxContacts = 32;
 // LiveMapGrid.max_age_ms: a grid older than this is no live map.
 inline constexpr uint32_t kMaxLiveGridAgeMs = 10000;

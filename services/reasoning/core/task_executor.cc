@@ -7,6 +7,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
+#include "services/common/geometry/segment.h"
 #include "services/reasoning/core/input_limits.h"
 
 namespace semnav::reasoning {
@@ -1016,9 +1017,8 @@ void TaskExecutor::RecordContact() {
   for (size_t i = 0; i + 1 < path.size(); ++i) {
     const Eigen::Vector2d a = path[i].head<2>();
     const Eigen::Vector2d along = path[i + 1].head<2>() - a;
-    if (along.norm() < 1e-6) continue;
-    const double t = std::clamp((here - a).dot(along) / along.squaredNorm(), 0.0, 1.0);
-    const double distance_m = (a + t * along - here).norm();
+    if (along.norm() < 1e-6) continue;  // no direction
+    const double distance_m = geometry::DistanceToSegment(here, a, path[i + 1].head<2>());
     if (distance_m < nearest_m) {
       nearest_m = distance_m;
       heading = along.normalized();

@@ -171,9 +171,12 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
   };
   // With the clearance first; when that inflates the robot's own position (it stands near a
   // wall) or leaves no way, with the bare footprint.
+  const auto bare_footprint_may_help = [](pb::PlanFailureReason failure) {
+    return failure == pb::PLAN_FAILURE_REASON_START_OCCUPIED ||
+           failure == pb::PLAN_FAILURE_REASON_NO_PATH;
+  };
   status = plan_with(query.robot_radius_m + query.clearance_m, &response);
-  const bool footprint_may_help =
-      reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED || reason == pb::PLAN_FAILURE_REASON_NO_PATH;
+  const bool footprint_may_help = bare_footprint_may_help(reason);
   std::vector<Eigen::Vector3d> way;  // the answer's path in the robot's terms, converted once
   if (!status.ok() && footprint_may_help && query.clearance_m > 0.0) {
     status = plan_with(query.robot_radius_m, &response);
@@ -200,9 +203,7 @@ absl::StatusOr<std::vector<Eigen::Vector3d>> PlanningClient::Plan(const PathQuer
       (footprint_may_help || reason == pb::PLAN_FAILURE_REASON_GOAL_OCCUPIED)) {
     request.clear_contacts();
     status = plan_with(query.robot_radius_m + query.clearance_m, &response);
-    const bool bare_may_help = reason == pb::PLAN_FAILURE_REASON_START_OCCUPIED ||
-                               reason == pb::PLAN_FAILURE_REASON_NO_PATH;
-    if (!status.ok() && bare_may_help && query.clearance_m > 0.0)
+    if (!status.ok() && bare_footprint_may_help(reason) && query.clearance_m > 0.0)
       status = plan_with(query.robot_radius_m, &response);
   }
   if (!status.ok()) {
