@@ -9,7 +9,6 @@
 #include "absl/strings/str_cat.h"
 #include "clients/sim/bench/target_names.h"
 #include "clients/sim/core/episode_metrics.h"
-#include "clients/sim/core/nearest_goal_search.h"
 #include "clients/sim/core/occupancy_raster.h"
 #include "clients/sim/core/rng.h"
 #include "clients/sim/loop/shortest_path.h"
@@ -89,36 +88,10 @@ void PlanGroup(const std::vector<World>& worlds, Modality modality, int episodes
   }
 }
 
-// A free cell of the body's true raster between min and max distance from the start and reachable
-// from it, drawn by `rng` (nullopt when 200 draws find none). A free cell the start cannot reach
-// lies outside the building (the raster covers the world bounds) or in a closed-off space: a
-// robot carried there sees nothing of the map it was building, which no relocalization answers
-// (7 of 19 lost robots went there; docs/performance/mission.md, "Kidnapped within the building").
-std::optional<Pose> KidnapDestination(const World& world, const StartPose& start,
-                                      const KidnapPlan& kidnap, Rng& rng) {
-  const GroundTruthGrid grid = RasterizeOccupancy(
-      world, BodyRaster(RobotConfig::ForModality(start.modality), start.position.z()));
-  for (int attempt = 0; attempt < 200; ++attempt) {
-    const double angle = rng.Uniform(-M_PI, M_PI);
-    const double distance = rng.Uniform(kidnap.min_distance_m, kidnap.max_distance_m);
-    const Eigen::Vector2d at =
-        start.position.head<2>() + distance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
-    const std::optional<Eigen::Vector2i> cell = grid.CellOf(at);
-    if (!cell.has_value() || grid.at(cell->x(), cell->y()) != 0) continue;
-    const Eigen::Vector2d centre = grid.CellCentre(cell->x(), cell->y());
-    const auto is_destination = [&](const Eigen::Vector2d& p) {
-      return (p - centre).squaredNorm() < 0.25 * grid.resolution * grid.resolution;
-    };
-    if (!NearestReachableGoal(grid, start.position.head<2>(), is_destination).has_value()) continue;
-    return Pose{Eigen::Vector3d(at.x(), at.y(), start.position.z()), rng.Uniform(-M_PI, M_PI)};
-  }
-  return std::nullopt;
-}
-
 // Copies of the first `count` ground episodes for a pose-loss group.
 void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count,
-                       const std::string& group, uint64_t seed, const KidnapPlan* kidnap,
-                       std::vector<loop::EpisodeSpec>& plan, std::vector<std::string>* unscorable) {
+                       const std::string& group, const loop::KidnapConfig* kidnap,
+                       std::vector<loop::EpisodeSpec>& plan) {
   for (int i = 0; i < count && i < static_cast<int>(ground.size()); ++i) {
     loop::EpisodeSpec spec = ground[static_cast<size_t>(i)];
     spec.sensors.odometry.enabled = true;  // the simulator's default noise (OdometryDriftConfig)
@@ -126,19 +99,7 @@ void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count,
     spec.landmarks = "oracle";
     spec.robot_id = absl::StrCat("sim-", group, "-", i);
     spec.report_group = group;
-    if (kidnap != nullptr) {
-      Rng rng(MixSeed(MixSeed(seed, 200), static_cast<uint64_t>(i)));
-      spec.kidnap_to =
-          KidnapDestination(spec.world, spec.world.starts[spec.start_index], *kidnap, rng);
-      spec.kidnap_at_s = kidnap->at_s;
-      if (!spec.kidnap_to.has_value()) {
-        if (unscorable != nullptr) {
-          unscorable->push_back(absl::StrCat(group, " episode ", i, ": ", spec.world.name,
-                                             ": no free kidnap destination; left out"));
-        }
-        continue;
-      }
-    }
+    if (kidnap != nullptr) spec.kidnap = *kidnap;  // the destination is drawn when it happens
     plan.push_back(std::move(spec));
   }
 }
@@ -148,7 +109,7 @@ void PlanPoseLossGroup(const std::vector<loop::EpisodeSpec>& ground, int count,
 std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds,
                                             const EpisodeCounts& counts, uint64_t seed,
                                             std::vector<std::string>* unscorable,
-                                            const KidnapPlan& kidnap) {
+                                            const loop::KidnapConfig& kidnap) {
   std::vector<loop::EpisodeSpec> plan;
   PlanGroup(worlds, Modality::kGround, counts.indoor, seed, plan, unscorable);
   if (counts.drift > 0 || counts.kidnapped > 0) {
@@ -156,8 +117,8 @@ std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds,
     std::vector<loop::EpisodeSpec> ground;
     PlanGroup(worlds, Modality::kGround, std::max(counts.drift, counts.kidnapped), seed, ground,
               nullptr);
-    PlanPoseLossGroup(ground, counts.drift, "drift", seed, nullptr, plan, unscorable);
-    PlanPoseLossGroup(ground, counts.kidnapped, "kidnapped", seed, &kidnap, plan, unscorable);
+    PlanPoseLossGroup(ground, counts.drift, "drift", nullptr, plan);
+    PlanPoseLossGroup(ground, counts.kidnapped, "kidnapped", &kidnap, plan);
   }
   PlanGroup(worlds, Modality::kUav, counts.outdoor, seed, plan, unscorable);
   PlanGroup(worlds, Modality::kFlyRoll, counts.flyroll, seed, plan, unscorable);

@@ -23,13 +23,6 @@ struct EpisodeCounts {
   int kidnapped = 0;
 };
 
-// Where the kidnapped group's robots are carried and when.
-struct KidnapPlan {
-  double at_s = 60.0;           // simulated seconds into the episode
-  double min_distance_m = 2.0;  // from the start, on free space of the body's true raster
-  double max_distance_m = 5.0;
-};
-
 // Per group, episode i uses world i mod W (of the worlds with a start of the group's modality and
 // objects), that world's start (i / W) mod S of the modality, and one of the world's object
 // labels chosen by (seed, group, i), drawn again while the label cannot be scored: unreachable
@@ -41,6 +34,6 @@ struct KidnapPlan {
 std::vector<loop::EpisodeSpec> PlanEpisodes(const std::vector<World>& worlds,
                                             const EpisodeCounts& counts, uint64_t seed,
                                             std::vector<std::string>* unscorable = nullptr,
-                                            const KidnapPlan& kidnap = {});
+                                            const loop::KidnapConfig& kidnap = {});
 
 }  // namespace semnav::sim::bench

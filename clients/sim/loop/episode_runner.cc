@@ -7,12 +7,14 @@
 #include "absl/strings/str_format.h"
 #include "clients/sim/core/class_embedding.h"
 #include "clients/sim/core/occupancy_raster.h"
+#include "clients/sim/core/rng.h"
 #include "clients/sim/core/scene.h"
 #include "clients/sim/core/sim_robot.h"
 #include "clients/sim/loop/command_executor.h"
 #include "clients/sim/loop/frame_encoder.h"
 #include "clients/sim/loop/frame_stream.h"
 #include "clients/sim/loop/instruction.h"
+#include "clients/sim/loop/kidnap.h"
 #include "clients/sim/loop/local_planner.h"
 #include "clients/sim/loop/localization_model.h"
 #include "clients/sim/loop/robot_messages.h"
@@ -31,6 +33,8 @@ namespace api = semnav::reasoning::v1;
 // for its last state. This bounds a gateway that hangs; reaching it fails the episode (and the
 // bench) rather than letting the simulation run on without its commands.
 constexpr absl::Duration kStepDoneTimeout = absl::Seconds(120);
+// The kidnap destination's random stream, apart from the robot's (SimRobot mixes small numbers).
+constexpr uint64_t kKidnapStream = 0x6b69646e6170;  // "kidnap"
 
 bool Terminal(api::TaskStatus status) {
   return status == api::TASK_STATUS_SUCCEEDED || status == api::TASK_STATUS_FAILED ||
@@ -257,7 +261,7 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
   RecoveryTracker recovery;
   Pose map_from_odom;
   bool kidnapped = false;
-  const bool frames_differ = spec.sensors.odometry.enabled || spec.kidnap_to.has_value();
+  const bool frames_differ = spec.sensors.odometry.enabled || spec.kidnap.has_value();
   auto believed = [&]() { return Compose(map_from_odom, robot.odometry_pose()); };
   // The robot distrusts its pose while its localizer reports LOST/UNCERTAIN or the gateway
   // relocalizes it; its frames then say so (SensorFrame.pose_untrusted), so mapping keeps what they
@@ -366,19 +370,27 @@ absl::StatusOr<EpisodeResult> RunEpisode(const EpisodeSpec& spec, const Endpoint
     RecordTask(*task, robot, result);
     // The agent's stop action ends the episode; a task that ended without one ends it too.
     if (executor.stop_issued() || Terminal(result.final_status) || step == spec.max_steps) break;
-    if (spec.kidnap_to.has_value() && !kidnapped && robot.time_s() >= spec.kidnap_at_s) {
+    if (spec.kidnap.has_value() && !kidnapped && robot.time_s() >= spec.kidnap->at_s) {
       kidnapped = true;
-      robot.Kidnap(*spec.kidnap_to);
-      executor.Interrupt();
-      recovery.OnKidnap(robot.time_s());
-      const Pose odom = believed();
-      result.timeline.push_back(absl::StrCat(
-          Stamp(robot),
-          absl::StrFormat("kidnapped to (%.2f, %.2f, %.0f deg); the robot believes (%.2f, %.2f, "
-                          "%.0f deg)",
-                          spec.kidnap_to->position.x(), spec.kidnap_to->position.y(),
-                          spec.kidnap_to->yaw * 180.0 / M_PI, odom.position.x(), odom.position.y(),
-                          odom.yaw * 180.0 / M_PI)));
+      std::vector<Eigen::Vector2d> went = result.trajectory;
+      went.push_back(start.position.head<2>());
+      Rng rng(MixSeed(spec.seed, kKidnapStream));
+      const std::optional<Pose> to = KidnapDestination(grid, robot.pose(), went, *spec.kidnap, rng);
+      if (!to.has_value()) {
+        result.timeline.push_back(
+            absl::StrCat(Stamp(robot), "not kidnapped: no free cell on its way qualifies"));
+      } else {
+        robot.Kidnap(*to);
+        executor.Interrupt();
+        recovery.OnKidnap(robot.time_s());
+        const Pose odom = believed();
+        result.timeline.push_back(absl::StrCat(
+            Stamp(robot),
+            absl::StrFormat("kidnapped to (%.2f, %.2f, %.0f deg); the robot believes (%.2f, "
+                            "%.2f, %.0f deg)",
+                            to->position.x(), to->position.y(), to->yaw * 180.0 / M_PI,
+                            odom.position.x(), odom.position.y(), odom.yaw * 180.0 / M_PI)));
+      }
     }
     const std::optional<Feedback> outcome = executor.Step(spec.step_s);
     result.steps = step + 1;

@@ -18,6 +18,7 @@
 #include "clients/sim/core/world.h"
 #include "clients/sim/loop/episode_trace.h"
 #include "clients/sim/loop/failure_taxonomy.h"
+#include "clients/sim/loop/kidnap.h"
 #include "clients/sim/loop/localization_model.h"
 #include "semnav/reasoning/v1/task.pb.h"
 
@@ -54,11 +55,10 @@ struct EpisodeSpec {
   // Thresholds that name a failed episode's cause (EpisodeRecord::failure_cause).
   FailureTaxonomyConfig taxonomy;
   // Losing the pose (docs/simulation.md): odometry drift is sensors.odometry; the localizer model
-  // reports LOST when the believed pose departs from the truth; a kidnap carries the robot to
-  // kidnap_to at kidnap_at_s without telling it (unset = never).
+  // reports LOST when the believed pose departs from the truth; a kidnap carries the robot at
+  // kidnap->at_s to a KidnapDestination drawn then, without telling it (unset = never).
   LocalizerConfig localizer;
-  std::optional<Pose> kidnap_to;
-  double kidnap_at_s = 0.0;
+  std::optional<KidnapConfig> kidnap;
   // The robot's landmark map for relocalization (map id = robot_id): "oracle" upserts the world's
   // objects (true centres, largest box extent, the detector's class embedding) before the
   // episode; "mapping" leaves it to mapping filling landmark maps from its scene graph; "" = none.

@@ -244,10 +244,12 @@ void Offsets(const std::vector<Eigen::Vector2d>& relative, double yaw, double re
   }
 }
 
-// Share of the rays from the robot's cell to its scan cells (offsets at the pose) that meet an
-// opaque map cell before their last `slack` cells (a grid line walk, Bresenham).
+// Share of the rays from the robot's cell to its scan cells (offsets at the pose) that pass
+// through an opaque map cell and come out of it: `emerge` non-opaque cells in a row after it,
+// all short of the ray's last `slack` cells (a grid line walk, Bresenham). A ray that only
+// grazes the wall its end lies on never comes out of it. emerge <= 0: every wall met counts.
 double RayConflicts(const OccupiedRaster& map, const std::vector<int>& cols,
-                    const std::vector<int>& rows, int col, int row, int slack) {
+                    const std::vector<int>& rows, int col, int row, int slack, int emerge) {
   if (cols.empty()) return 0.0;
   const std::vector<uint8_t>& opaque = map.opaque.empty() ? map.occupied : map.opaque;
   int conflicts = 0;
@@ -255,11 +257,19 @@ double RayConflicts(const OccupiedRaster& map, const std::vector<int>& cols,
     const int dx = cols[i];
     const int dy = rows[i];
     const int steps = std::max(std::abs(dx), std::abs(dy));
+    bool in_wall = false;
+    int beyond = 0;  // non-opaque cells in a row since the ray met a wall
     for (int t = 1; t < steps - slack; ++t) {
       const int c = col + static_cast<int>(std::lround(static_cast<double>(dx) * t / steps));
       const int r = row + static_cast<int>(std::lround(static_cast<double>(dy) * t / steps));
       if (c < 0 || r < 0 || c >= map.width || r >= map.height) break;
       if (opaque[static_cast<size_t>(r) * map.width + c] != 0) {
+        in_wall = true;
+        beyond = 0;
+      } else if (in_wall) {
+        ++beyond;
+      }
+      if (in_wall && beyond >= std::max(emerge, 0)) {
         ++conflicts;
         break;
       }
@@ -398,8 +408,8 @@ absl::StatusOr<ScanMatchResult> MatchScanGlobally(const OccupiedRaster& map,
   result.correction = {shift.x(), shift.y(), std::remainder(top.yaw, 2.0 * M_PI)};
   result.score = top.score;
   Offsets(relative, top.yaw, res, &cols, &rows);
-  result.ray_conflicts =
-      RayConflicts(map, cols, rows, top.col, top.row, config.ray_end_slack_cells);
+  result.ray_conflicts = RayConflicts(map, cols, rows, top.col, top.row, config.ray_end_slack_cells,
+                                      config.ray_emerge_cells);
   result.refined = top.score >= config.min_score &&
                    1.0 - result.runner_up_score >= config.min_misfit_ratio * (1.0 - top.score) &&
                    result.ray_conflicts <= config.max_ray_conflicts;

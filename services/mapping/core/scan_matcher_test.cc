@@ -251,5 +251,27 @@ TEST(GlobalScanMatcherTest, AnAnswerWhoseRaysCrossTheMapsWallsIsNoAnswer) {
   EXPECT_TRUE(result->refined);
 }
 
+TEST(GlobalScanMatcherTest, RaysThatGrazeTheWallTheRobotStandsByStillFindIt) {
+  // The robot stands 15 cm from the room's long wall. Its rays to that wall's far points run
+  // along the wall's cells for their last metres: they meet it, but never come out beyond it.
+  const PlanarCorrection truth{5.0, -3.0, 120 * kDeg};
+  const Eigen::Vector2d robot_in_map(3.0, 0.65);
+  const Eigen::Vector2d robot_reported = truth.Inverse().Apply(robot_in_map);
+  GlobalMatchConfig any_wall_met;
+  any_wall_met.ray_emerge_cells = 0;  // every wall met counts (the rule before 2026-12-01)
+  absl::StatusOr<ScanMatchResult> result =
+      MatchScanGlobally(WithFreeInside(Room(), true), ScanInReportedFrame(truth), robot_reported,
+                        ScanMatchConfig{}, any_wall_met);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_GT(result->ray_conflicts, 0.1);
+  EXPECT_FALSE(result->refined);
+  result = MatchScanGlobally(WithFreeInside(Room(), true), ScanInReportedFrame(truth),
+                             robot_reported, ScanMatchConfig{}, GlobalMatchConfig{});
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_LT(result->ray_conflicts, 0.02);
+  EXPECT_TRUE(result->refined) << result->score << " vs " << result->runner_up_score;
+  EXPECT_LT((result->correction.Apply(robot_reported) - robot_in_map).norm(), 0.08);
+}
+
 }  // namespace
 }  // namespace semnav::mapping

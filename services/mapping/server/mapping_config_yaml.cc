@@ -75,6 +75,7 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
       .Read("global_min_score", &g.min_score)
       .Read("global_min_misfit_ratio", &g.min_misfit_ratio)
       .Read("global_max_ray_conflicts", &g.max_ray_conflicts)
+      .Read("global_ray_emerge_cells", &g.ray_emerge_cells)
       .Read("global_max_cells", &global_max_cells);
   // The search visits (2 w / r + 1)^2 (2 a / s + 1) poses: the bounds keep it under ~10^6.
   scan.Check(m.linear_window_m >= 0.0 && m.linear_window_m <= 2.0, "linear_window_m",
@@ -103,6 +104,8 @@ absl::StatusOr<MappingServiceConfig> MappingServiceConfig::FromYaml(ConfigReader
              "must be in [1, 100]");
   scan.Check(g.max_ray_conflicts >= 0.0 && g.max_ray_conflicts <= 1.0, "global_max_ray_conflicts",
              "must be in [0, 1]");
+  scan.Check(g.ray_emerge_cells >= 0 && g.ray_emerge_cells <= 20, "global_ray_emerge_cells",
+             "must be in [0, 20]");
   scan.Check(global_max_cells >= 1 && global_max_cells <= 16'000'000, "global_max_cells",
              "must be in [1, 16000000]");
   c.global_scan_match_max_cells = static_cast<size_t>(std::clamp(global_max_cells, 1, 16'000'000));

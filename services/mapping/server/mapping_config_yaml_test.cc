@@ -86,6 +86,23 @@ TEST(MappingConfigYamlTest, SemanticPruningIsReadAndRangeChecked) {
   }
 }
 
+TEST(MappingConfigYamlTest, TheGlobalMatchsRayCheckIsReadAndRangeChecked) {
+  absl::StatusOr<MappingServiceConfig> config =
+      Load("mapping:\n  scan_match: {global_ray_emerge_cells: 0, global_max_ray_conflicts: 0.2}\n");
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->core.global_scan_match.ray_emerge_cells, 0);
+  EXPECT_EQ(config->core.global_scan_match.max_ray_conflicts, 0.2);
+  EXPECT_EQ(Load("mapping: {}\n")->core.global_scan_match.ray_emerge_cells, 3);  // the default
+  for (const char* bad : {"global_ray_emerge_cells: 21", "global_ray_emerge_cells: -1"}) {
+    const absl::Status status =
+        Load(std::string("mapping:\n  scan_match: {") + bad + "}\n").status();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_THAT(std::string(status.message()),
+                HasSubstr("mapping.scan_match.global_ray_emerge_cells"))
+        << bad;
+  }
+}
+
 TEST(MappingConfigYamlTest, ExistenceIsReadAndRangeChecked) {
   const absl::StatusOr<MappingServiceConfig> config = Load(
       "mapping:\n  scene_graph: {existence: {max_range_m: 3, min_misses: 5, enabled: false}}\n");
