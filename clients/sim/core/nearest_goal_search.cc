@@ -1,5 +1,6 @@
 #include "clients/sim/core/nearest_goal_search.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -22,6 +23,7 @@ std::optional<NearestGoal> NearestReachableGoal(
                            std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, int>;  // cost in cells, cell index
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  std::vector<int> parent(cost.size(), -1);
   cost[static_cast<size_t>(sy) * grid.width + sx] = 0.0;
   open.push({0.0, sy * grid.width + sx});
   while (!open.empty()) {
@@ -29,8 +31,13 @@ std::optional<NearestGoal> NearestReachableGoal(
     open.pop();
     if (c > cost[index]) continue;
     const int x = index % grid.width, y = index / grid.width;
-    if (is_goal(grid.CellCentre(x, y)))
-      return NearestGoal{grid.CellCentre(x, y), c * grid.resolution};
+    if (is_goal(grid.CellCentre(x, y))) {
+      NearestGoal found{grid.CellCentre(x, y), c * grid.resolution, {}};
+      for (int at = index; at >= 0; at = parent[at])
+        found.path.push_back(grid.CellCentre(at % grid.width, at / grid.width));
+      std::reverse(found.path.begin(), found.path.end());
+      return found;
+    }
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         if ((dx == 0 && dy == 0) || !free(x + dx, y + dy)) continue;
@@ -39,6 +46,7 @@ std::optional<NearestGoal> NearestReachableGoal(
         const int n = (y + dy) * grid.width + x + dx;
         if (next < cost[n]) {
           cost[n] = next;
+          parent[n] = index;
           open.push({next, n});
         }
       }

@@ -5,14 +5,16 @@
 #include <Eigen/Core>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "clients/sim/core/occupancy_raster.h"
 
 namespace semnav::sim {
 
 struct NearestGoal {
-  Eigen::Vector2d goal;   // centre of the nearest goal cell, world xy
-  double length_m = 0.0;  // its path length from the start cell's centre
+  Eigen::Vector2d goal;               // centre of the nearest goal cell, world xy
+  double length_m = 0.0;              // its path length from the start cell's centre
+  std::vector<Eigen::Vector2d> path;  // cell centres from the start's cell to the goal's
 };
 
 // Dijkstra from the cell holding `start` over the free (0) cells of `grid`, 8-connected with

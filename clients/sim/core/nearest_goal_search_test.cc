@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace semnav::sim {
 namespace {
 
@@ -35,6 +37,19 @@ TEST(SimNearestGoalTest, WallsAreWalkedRoundWithoutCuttingCorners) {
       grid, {0.5, 0.5}, [](const Eigen::Vector2d& p) { return p.x() < 1 && p.y() > 2; });
   ASSERT_TRUE(goal.has_value());
   EXPECT_DOUBLE_EQ(goal->length_m, 10.0);
+  // The path: start cell to goal cell, in steps to neighbours, as long as length_m, never on the
+  // wall.
+  ASSERT_GE(goal->path.size(), 2u);
+  EXPECT_EQ(goal->path.front(), Eigen::Vector2d(0.5, 0.5));
+  EXPECT_EQ(goal->path.back(), goal->goal);
+  double walked = 0.0;
+  for (size_t i = 1; i < goal->path.size(); ++i) {
+    const double step = (goal->path[i] - goal->path[i - 1]).norm();
+    EXPECT_LE(step, std::sqrt(2.0) + 1e-9);
+    walked += step;
+    EXPECT_FALSE(goal->path[i].y() == 1.5 && goal->path[i].x() < 4.0) << goal->path[i].transpose();
+  }
+  EXPECT_NEAR(walked, goal->length_m, 1e-9);
   // A diagonal step costs sqrt(2): (0,0) -> (1,1) on an open grid.
   const auto diagonal = NearestReachableGoal(Grid(3, 3), {0.5, 0.5}, [](const Eigen::Vector2d& p) {
     return p.x() > 1 && p.x() < 2 && p.y() > 1 && p.y() < 2;

@@ -11,6 +11,8 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "clients/sim/core/camera_model.h"
+#include "clients/sim/core/detector.h"
 #include "clients/sim/core/geometry2d.h"
 #include "clients/sim/core/nearest_goal_search.h"
 #include "clients/sim/core/rng.h"
@@ -18,6 +20,7 @@
 #include "clients/sim/core/sim_robot.h"
 #include "clients/sim/loop/frame_encoder.h"
 #include "clients/sim/loop/frame_stream.h"
+#include "clients/sim/loop/stop_on_sight.h"
 #include "clients/sim/worlds/indoor_generator.h"
 #include "clients/sim/worlds/start_poses.h"
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
@@ -506,17 +509,25 @@ absl::StatusOr<TwoRobotWorldResult> RunTwoRobotWorld(const TwoRobotOptions& opti
       result.trials.push_back(trial);
       continue;
     }
-    trial.path_m = moved_m + route->length_m;
+    const CameraIntrinsics camera;
+    const size_t stop =
+        StopOnSight(route->path, world, scene, *target.object,
+                    RobotConfig::ForModality(Modality::kGround).camera_height,
+                    std::atan(0.5 * camera.width / camera.fx), DetectorConfig{}.max_range,
+                    options.success_radius_m - options.sight_margin_m);
+    double driven = 0.0;
+    for (size_t i = 0; i < stop; ++i) driven += (route->path[i + 1] - route->path[i]).norm();
+    const Eigen::Vector2d stopped_at = route->path.empty() ? at : route->path[stop];
+    trial.path_m = moved_m + driven;
     trial.look_m = moved_m;
     const std::optional<NearestGoal> straight =
         NearestReachableGoal(grid, at, [&](const Eigen::Vector2d& p) {
           return DistanceToBoxFootprint(target.object->box, p) <= options.success_radius_m;
         });
-    trial.route_ratio =
-        straight && straight->length_m > 0.0 ? route->length_m / straight->length_m : 1.0;
+    trial.route_ratio = straight && straight->length_m > 0.0 ? driven / straight->length_m : 1.0;
     trial.path_ratio =
         trial.shortest_m > 0.0 ? trial.path_m / trial.shortest_m : (trial.path_m > 0.0 ? 1e9 : 1.0);
-    trial.distance_to_target_m = DistanceToBoxFootprint(target.object->box, route->goal);
+    trial.distance_to_target_m = DistanceToBoxFootprint(target.object->box, stopped_at);
     trial.success = trial.distance_to_target_m <= options.success_radius_m;
     if (!trial.success) trial.failure = "stopped outside the success radius";
     result.trials.push_back(trial);

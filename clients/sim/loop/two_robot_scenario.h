@@ -24,6 +24,9 @@ struct TwoRobotOptions {
   double success_radius_m = 1.0;  // B succeeds stopping this close to the target's footprint
   // B aims this much inside the success radius, to absorb the alignment error.
   double approach_margin_m = 0.25;
+  // On its way B stops where its camera sees the target within the success radius less this
+  // (the gateway executor's success_margin_m: success in view); what it sees needs no alignment.
+  double sight_margin_m = 0.2;
   double look_step_deg = 10.0;    // heading step of B's look-arounds
   double survey_step_deg = 10.0;  // heading step of A's look-around in every room
   double max_offset_m = 30.0;     // B's unknown offset: translation up to this, any heading
