@@ -110,7 +110,8 @@ TEST(SimBenchEpisodePlanTest, PoseLossGroupsRerunTheIndoorEpisodesWithDriftAndAK
   EXPECT_FALSE(drift.kidnap.has_value());
   EXPECT_FALSE(plan[0].sensors.odometry.enabled);  // the indoor group is unchanged
   for (int k = 3; k < 5; ++k) {
-    ASSERT_TRUE(plan[k].kidnap.has_value());  // where to is drawn in the episode (KidnapDestination)
+    ASSERT_TRUE(
+        plan[k].kidnap.has_value());  // where to is drawn in the episode (KidnapDestination)
     EXPECT_EQ(plan[k].report_group, "kidnapped");
     EXPECT_DOUBLE_EQ(plan[k].kidnap->at_s, 60.0);
     EXPECT_DOUBLE_EQ(plan[k].kidnap->min_distance_m, 2.0);
