@@ -111,6 +111,24 @@ FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery
   return set;
 }
 
+absl::StatusOr<Padding> TakeInRobot(ExplorationGrid& grid, ExplorationQuery& query,
+                                    double max_outside_m) {
+  const Padding pad = PaddingFor(grid.free.width(), grid.free.height(), query.robot);
+  if (!pad.any()) return pad;
+  const double outside_m = pad.OutsideCells() * grid.resolution_m;
+  if (!(outside_m <= max_outside_m)) {
+    return InvalidField(
+        "robot", absl::StrCat("robot is ", outside_m, " m outside the ", grid.free.width(), " x ",
+                              grid.free.height(), " grid (max ", max_outside_m, " m)"));
+  }
+  grid.explored = Padded<uint8_t>(grid.explored, pad, 0);
+  grid.free = Padded<uint8_t>(grid.free, pad, 1);
+  grid.origin_x -= pad.left * grid.resolution_m;
+  grid.origin_y -= pad.bottom * grid.resolution_m;
+  query.robot = IntoPadded(query.robot, pad);
+  return pad;
+}
+
 absl::StatusOr<ExplorationChoice> SelectExplorationGoal(const ExplorationGrid& grid,
                                                         const ExplorationQuery& query,
                                                         ExplorationStrategy strategy,

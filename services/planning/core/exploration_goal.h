@@ -12,6 +12,7 @@
 #include "services/planning/core/frontier.h"
 #include "services/planning/core/frontier_scoring.h"
 #include "services/planning/core/frontier_value.h"
+#include "services/planning/core/grid_padding.h"
 #include "services/planning/core/semantic_discount.h"
 
 namespace semnav::planning {
@@ -80,6 +81,14 @@ struct FrontierSet {
 
 FrontierSet CollectFrontiers(const ExplorationGrid& grid, const ExplorationQuery& query,
                              const FrontierScoreConfig& score);
+
+// A robot that stands up to `max_outside_m` beyond the grid's edge (at the start the camera has
+// not seen the cell it stands on, so the map it drew may end in front of it) is taken in as
+// GridPlanner takes in such a start: the grid grows to the robot's cell, the strip between
+// passable (the robot stands in it) and unexplored. Returns the padding, none when the robot is
+// inside; INVALID_ARGUMENT naming "robot" when it lies farther out.
+absl::StatusOr<Padding> TakeInRobot(ExplorationGrid& grid, ExplorationQuery& query,
+                                    double max_outside_m);
 
 struct ExplorationChoice {
   Cell goal;

@@ -6,6 +6,7 @@
 #include "absl/strings/str_cat.h"
 #include "services/common/status/field_error.h"
 #include "services/planning/core/alternative_point.h"
+#include "services/planning/core/grid_padding.h"
 #include "services/planning/core/inflation.h"
 #include "services/planning/core/nearest_cell.h"
 #include "services/planning/core/octile.h"
@@ -49,34 +50,6 @@ std::optional<Cell> NearestFreeCell(const PassabilityGrid& grid, Cell start, Cel
         return long{c.x - goal.x} * (c.x - goal.x) + long{c.y - goal.y} * (c.y - goal.y);
       });
 }
-
-// Cells the start lies beyond each edge of a width x height grid.
-struct Padding {
-  int left = 0, right = 0, bottom = 0, top = 0;
-  bool any() const { return left + right + bottom + top > 0; }
-};
-
-Padding PaddingFor(const PassabilityGrid& grid, Cell start) {
-  return {std::max(0, -start.x), std::max(0, start.x - (grid.width() - 1)), std::max(0, -start.y),
-          std::max(0, start.y - (grid.height() - 1))};
-}
-
-Padding Union(const Padding& a, const Padding& b) {
-  return {std::max(a.left, b.left), std::max(a.right, b.right), std::max(a.bottom, b.bottom),
-          std::max(a.top, b.top)};
-}
-
-template <typename T>
-CellGrid<T> Padded(const CellGrid<T>& grid, const Padding& pad, T fill) {
-  if (grid.size() == 0) return grid;
-  CellGrid<T> out(grid.width() + pad.left + pad.right, grid.height() + pad.bottom + pad.top, fill);
-  for (int y = 0; y < grid.height(); ++y) {
-    for (int x = 0; x < grid.width(); ++x) out.at(x + pad.left, y + pad.bottom) = grid.at(x, y);
-  }
-  return out;
-}
-
-Cell Shift(Cell c, int dx, int dy) { return {c.x + dx, c.y + dy}; }
 
 }  // namespace
 
@@ -134,13 +107,13 @@ absl::StatusOr<GridPlanResult> GridPlanner::Plan(const GridPlanRequest& original
 
 absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& request,
                                                        bool pad_to_goal) {
-  const Padding to_start = PaddingFor(request.free, request.start);
+  const int width = request.free.width();
+  const int height = request.free.height();
+  const Padding to_start = PaddingFor(width, height, request.start);
   const Padding pad =
-      pad_to_goal ? Union(to_start, PaddingFor(request.free, request.goal)) : to_start;
+      pad_to_goal ? Union(to_start, PaddingFor(width, height, request.goal)) : to_start;
   if (!pad.any()) return PlanInside(request);
-  const double outside_m =
-      std::hypot(std::max(to_start.left, to_start.right), std::max(to_start.bottom, to_start.top)) *
-      request.resolution_m;
+  const double outside_m = to_start.OutsideCells() * request.resolution_m;
   if (outside_m > config_.max_start_outside_m) {
     return InvalidField(
         "start", absl::StrCat("start (", request.start.x, ", ", request.start.y, ") is ", outside_m,
@@ -153,15 +126,14 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& re
   padded.prepared = nullptr;  // prepared for the grid before padding
   padded.free = Padded<uint8_t>(request.free, pad, 1);
   padded.obstacle_probability = Padded<uint8_t>(request.obstacle_probability, pad, 0);
-  padded.start = Shift(request.start, pad.left, pad.bottom);
-  padded.goal = Shift(request.goal, pad.left, pad.bottom);
-  if (padded.first_sighting)
-    padded.first_sighting = Shift(*request.first_sighting, pad.left, pad.bottom);
+  padded.start = IntoPadded(request.start, pad);
+  padded.goal = IntoPadded(request.goal, pad);
+  if (padded.first_sighting) padded.first_sighting = IntoPadded(*request.first_sighting, pad);
   absl::StatusOr<GridPlanResult> result = PlanInside(padded);
   if (!result.ok()) return result;
-  for (Cell& c : result->path.waypoints) c = Shift(c, -pad.left, -pad.bottom);
-  result->planned_goal = Shift(result->planned_goal, -pad.left, -pad.bottom);
-  result->planned_start = Shift(result->planned_start, -pad.left, -pad.bottom);
+  for (Cell& c : result->path.waypoints) c = OutOfPadded(c, pad);
+  result->planned_goal = OutOfPadded(result->planned_goal, pad);
+  result->planned_start = OutOfPadded(result->planned_start, pad);
   result->grid_padded = true;
   return result;
 }

@@ -158,8 +158,8 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
                                        const semnav::common::v1::Pose2D& robot, uint32_t min_cells,
                                        const std::string& min_cells_field,
                                        const pb::SemanticContext& semantics,
-                                       const PlanningConfig& config,
-                                       const GoalFilter& filter = {}) {
+                                       const PlanningConfig& config, const GoalFilter& filter = {},
+                                       bool take_in_robot = true) {
   FrontierView view;
   if (absl::Status s = CheckSemantics(semantics, "semantics"); !s.ok()) return s;
   if (min_cells > kMaxMinCells) {
@@ -168,7 +168,8 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
   absl::StatusOr<GridFrame> frame = ReadGridFrame(grid, field);
   if (!frame.ok()) return frame.status();
   view.frame = *frame;
-  absl::StatusOr<Cell> cell = view.frame.ToCell(robot, "robot");
+  absl::StatusOr<Cell> cell =
+      take_in_robot ? view.frame.ToCellAnywhere(robot, "robot") : view.frame.ToCell(robot, "robot");
   if (!cell.ok()) return cell.status();
   view.query.robot = *cell;
   view.query.robot_yaw_rad = robot.yaw();
@@ -192,6 +193,17 @@ absl::StatusOr<FrontierView> BuildView(const GridMap& grid, const std::string& f
       ToPassability(grid, {config.occupied_percent, false}, field);
   if (!free.ok()) return free.status();
   view.grid.free = *std::move(free);
+  // A robot just outside the map it drew (its own cell unseen yet) is taken in, as PlanPath's
+  // 2D planners take in such a start; the frame follows the grown grid. Not for EROI_UTILITY:
+  // the caller's EROI values are counted over the grid as mapping sent it.
+  if (!take_in_robot) return view;
+  absl::StatusOr<Padding> pad =
+      TakeInRobot(view.grid, view.query, config.grid_planner.max_start_outside_m);
+  if (!pad.ok()) return pad.status();
+  view.frame.origin_x = view.grid.origin_x;
+  view.frame.origin_y = view.grid.origin_y;
+  view.frame.width += pad->left + pad->right;
+  view.frame.height += pad->bottom + pad->top;
   return view;
 }
 
@@ -360,11 +372,11 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};
+  const ExplorationStrategy strategy = FromProto(request.strategy());
   absl::StatusOr<FrontierView> view =
       BuildView(grid, field, request.robot(), request.min_frontier_cells(), "min_frontier_cells",
-                request.semantics(), config, filter);
+                request.semantics(), config, filter, strategy != ExplorationStrategy::kEroiUtility);
   if (!view.ok()) return view.status();
-  const ExplorationStrategy strategy = FromProto(request.strategy());
   view->query.platform = FromProto(request.platform());
   if (request.has_keep_goal()) view->query.keep_goal = ToPoint(request.keep_goal());
   if (request.keep_radius_m() > 0.0) view->query.keep_radius_m = request.keep_radius_m();

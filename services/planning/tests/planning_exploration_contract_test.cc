@@ -188,6 +188,32 @@ TEST_F(ExplorationContract, NearestFrontierIsTheClosestByPath) {
   EXPECT_DOUBLE_EQ(response.score(), 3.0);
 }
 
+TEST_F(ExplorationContract, ARobotJustOutsideTheMapItDrewGetsAGoal) {
+  // At the start the camera has not seen the cell the robot stands on, so the map can end in
+  // front of it (the hold-out clinic ward's east start: "robot ... is outside the grid", and the
+  // robot drove a blind fallback step into the wall behind it for 15 s). One cell (1 m, the
+  // planning default max_start_outside_m) left of column 0, the grid grows to the robot with a
+  // passable, unexplored strip, so column 0's explored cells border the unknown: the nearest
+  // frontier cell is (0, 0), one cell away.
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_NEAREST_FRONTIER);
+  *request.mutable_robot() = CellCentre(-1, 0);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  const grpc::Status status = Stub()->SelectExplorationGoal(&context, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_DOUBLE_EQ(response.goal().x(), CellCentre(0, 0).x());
+  EXPECT_DOUBLE_EQ(response.goal().y(), CellCentre(0, 0).y());
+  EXPECT_DOUBLE_EQ(response.score(), 1.0);
+  // Three cells out (3 m) is no robot of this map: refused by name.
+  *request.mutable_robot() = CellCentre(-3, 0);
+  grpc::ClientContext far_context;
+  const grpc::Status far = Stub()->SelectExplorationGoal(&far_context, request, &response);
+  EXPECT_EQ(far.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(far);
+  ASSERT_TRUE(info.has_value());
+  EXPECT_EQ(info->field(), "robot");
+}
+
 TEST_F(ExplorationContract, AGroundRobotsGoalIsWhereItsFootprintStands) {
   // A 1 m footprint inflates the structure and the unknown by one cell: the nearest frontier
   // cell (0,3) borders the unknown at (0,4), so the robot stands at (0,2), 2 cells up, and
