@@ -122,6 +122,31 @@ TEST(GridPlanner, GoalToleranceMovesAnOccupiedGoal) {
   EXPECT_EQ(result->planned_goal, (Cell{3, 2}));  // the only free cell 1 m away
 }
 
+TEST(GridPlanner, GoalToleranceStaysOnTheRobotsSideOfAWall) {
+  // A desk (@) against a wall (#) with a door at the bottom row; the goal is the desk's cell by
+  // the wall, 3 m tolerance. The nearest free cell, (6, 2), lies beyond the wall: 2 cells from the
+  // goal but a way of about 11 round through the door. On the robot's side (1, 2) and (4, 5) lie
+  // 3 cells from the goal, 1 and 5.2 cells from the start (within the 2 x 3 allowance of the
+  // first); the shorter way wins the tie.
+  const PassabilityGrid grid = GridFromRows({
+      "..@@@#..",  // y 0
+      "..@@@#..", "..@@@#..", "..@@@#..", "..@@@#..", ".....#..",
+      "........",  // y 6: the door
+  });
+  GridPlanner planner({});
+  GridPlanRequest request = RequestOn(grid, {0, 2}, {4, 2});
+  request.goal_tolerance_m = 3.0;
+  absl::StatusOr<GridPlanResult> result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_TRUE(result->goal_adjusted);
+  EXPECT_EQ(result->planned_goal, (Cell{1, 2}));
+  // Seen from beyond the wall the same goal is reached on that side.
+  request.start = {7, 0};
+  result = planner.Plan(request);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->planned_goal, (Cell{6, 2}));
+}
+
 TEST(GridPlanner, ZeroProbabilityCellsFirstThenLowProbability) {
   PassabilityGrid grid(5, 3, 1);
   CellGrid<uint8_t> probability(5, 3, 0);
