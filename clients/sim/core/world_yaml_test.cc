@@ -114,6 +114,14 @@ TEST(SimWorldYamlTest, HandDrawnHoldoutWorldsLoad) {
   EXPECT_EQ(suite->back().name, "warehouse_aisles");
 }
 
+TEST(SimWorldYamlTest, HandDrawnBlindStartWorldsLoad) {
+  // Starts that face a wall or a dead end closely: the first frame shows little.
+  const auto suite = LoadSuite(SEMNAV_SOURCE_DIR "/tests/worlds/hand_drawn_blind_starts");
+  ASSERT_TRUE(suite.ok()) << suite.status();
+  ASSERT_EQ(suite->size(), 1u);
+  EXPECT_EQ(suite->front().name, "hotel_floor");
+}
+
 TEST(SimWorldYamlTest, RejectsLabelsTheLexiconDoesNotKnow) {
   ExpectInvalidField(Replace(kWorld, "label: refrigerator", "label: flux capacitor"),
                      "objects[0].label");

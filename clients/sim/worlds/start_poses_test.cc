@@ -154,5 +154,9 @@ TEST(SimStartPosesTest, HandDrawnHoldoutWorldStartsHaveClearance) {
                          {"clinic_ward", "home_bungalow", "open_office", "warehouse_aisles"}, 3);
 }
 
+TEST(SimStartPosesTest, HandDrawnBlindStartWorldStartsHaveClearance) {
+  ExpectDrawnStartsClear("hand_drawn_blind_starts", {"hotel_floor"}, 4);
+}
+
 }  // namespace
 }  // namespace semnav::sim
