@@ -121,6 +121,10 @@ absl::StatusOr<Padding> TakeInRobot(ExplorationGrid& grid, ExplorationQuery& que
         "robot", absl::StrCat("robot is ", outside_m, " m outside the ", grid.free.width(), " x ",
                               grid.free.height(), " grid (max ", max_outside_m, " m)"));
   }
+  if (PaddedCells(grid.free.width(), grid.free.height(), pad) > kMaxPaddedCells) {
+    return InvalidField("robot", absl::StrCat("the grid padded to the robot would exceed ",
+                                              kMaxPaddedCells, " cells"));
+  }
   grid.explored = Padded<uint8_t>(grid.explored, pad, 0);
   grid.free = Padded<uint8_t>(grid.free, pad, 1);
   grid.origin_x -= pad.left * grid.resolution_m;

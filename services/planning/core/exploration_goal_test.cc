@@ -79,6 +79,23 @@ TEST(TakeInRobotTest, ARobotFartherOutIsRefusedByName) {
   EXPECT_EQ(query.robot, (Cell{4, 3}));  // padding right and top keeps the indices
 }
 
+TEST(TakeInRobotTest, APaddingBeyondTheCellBudgetIsRefused) {
+  // One row of 2^17 millimetre cells and a robot 0.6 m (600 cells) above it: 2^17 x 601 cells
+  // exceed the 2^26 a request grid may hold, so nothing is allocated.
+  ExplorationGrid grid;
+  grid.resolution_m = 0.001;
+  grid.explored = CellGrid<uint8_t>(1 << 17, 1, 1);
+  grid.free = PassabilityGrid(1 << 17, 1, 1);
+  ExplorationQuery query;
+  query.robot = {5, 600};
+  absl::StatusOr<Padding> pad = TakeInRobot(grid, query, 1.0);
+  ASSERT_FALSE(pad.ok());
+  EXPECT_EQ(pad.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(pad.status().message().find("would exceed 67108864 cells"), std::string::npos)
+      << pad.status();
+  EXPECT_EQ(grid.free.height(), 1);
+}
+
 TEST(TakeInRobotTest, ARobotJustOutsideGetsAFrontierGoal) {
   // Before, the robot outside the grid had no goal at all. Taken in, the nearest frontier is the
   // unexplored row's edge: row 0 cells border row 1, and the strip's column borders column 0.

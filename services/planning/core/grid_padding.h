@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "services/planning/core/cell_grid.h"
 
@@ -16,6 +17,15 @@ struct Padding {
   // How far the padded-to cell lay beyond the grid, in cells (the diagonal of the two sides).
   double OutsideCells() const { return std::hypot(std::max(left, right), std::max(bottom, top)); }
 };
+
+// A padded grid holds at most this many cells, the budget of a grid in a request (8192 x 8192):
+// a one-row grid of fine cells padded by a metre would otherwise need gigabytes.
+inline constexpr int64_t kMaxPaddedCells = int64_t{1} << 26;
+
+// Cells of a width x height grid grown by `pad`.
+inline int64_t PaddedCells(int width, int height, const Padding& pad) {
+  return (int64_t{width} + pad.left + pad.right) * (int64_t{height} + pad.bottom + pad.top);
+}
 
 // The padding a width x height grid needs to contain `c`.
 inline Padding PaddingFor(int width, int height, Cell c) {

@@ -148,6 +148,11 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanPadded(const GridPlanRequest& re
                               " m outside the ", request.free.width(), " x ", request.free.height(),
                               " grid (max_start_outside_m ", config_.max_start_outside_m, ")"));
   }
+  if (PaddedCells(width, height, pad) > kMaxPaddedCells) {
+    return InvalidField(
+        pad_to_goal ? "goal" : "start",
+        absl::StrCat("the grid padded to it would exceed ", kMaxPaddedCells, " cells"));
+  }
   // The robot stands there, so the strip between it and the map is taken as free; so is the
   // strip out to a goal beyond the map when outside counts as free.
   GridPlanRequest padded = request;

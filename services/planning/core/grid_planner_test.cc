@@ -147,6 +147,19 @@ TEST(GridPlanner, GoalToleranceStaysOnTheRobotsSideOfAWall) {
   EXPECT_EQ(result->planned_goal, (Cell{6, 2}));
 }
 
+TEST(GridPlanner, APaddingBeyondTheCellBudgetIsRefused) {
+  // One row of 2^17 millimetre cells and a start 0.6 m above it (within max_start_outside_m):
+  // the padded grid would hold 2^17 x 601 cells, more than a request grid may (2^26).
+  GridPlanRequest request = RequestOn(PassabilityGrid(1 << 17, 1, 1), {5, 600}, {50, 0});
+  request.resolution_m = 0.001;
+  GridPlanner planner({});
+  const absl::StatusOr<GridPlanResult> result = planner.Plan(request);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(result.status().message().find("would exceed 67108864 cells"), std::string::npos)
+      << result.status();
+}
+
 TEST(GridPlanner, ZeroProbabilityCellsFirstThenLowProbability) {
   PassabilityGrid grid(5, 3, 1);
   CellGrid<uint8_t> probability(5, 3, 0);
