@@ -39,13 +39,9 @@ std::optional<Cell> ToleranceGoal(const PassabilityGrid& grid, Cell start, Cell 
     return IsFree(grid, c.x, c.y) && way[grid.Index(c)] != kUnreachable;
   };
   double shortest = kUnreachable;
-  const int r = static_cast<int>(std::floor(radius));
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const Cell c{goal.x + dx, goal.y + dy};
-      if (dx * dx + dy * dy > radius * radius || !reachable_free(c)) continue;
-      shortest = std::min(shortest, way[grid.Index(c)]);
-    }
+  for (const Cell& o : DiscOffsets(radius)) {
+    const Cell c{goal.x + o.x, goal.y + o.y};
+    if (reachable_free(c)) shortest = std::min(shortest, way[grid.Index(c)]);
   }
   if (shortest == kUnreachable) return std::nullopt;
   const double longest = shortest + 2.0 * radius;
@@ -267,7 +263,6 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanOn(const PassabilityGrid& grid,
       failure == PlanFailure::kGoalOccupied || failure == PlanFailure::kNoPath;
   const bool may_replace = request.goal_tolerance_m > 0.0 || request.first_sighting.has_value();
   if (!path.ok() && goal_problem && may_replace) {
-    const std::vector<uint8_t> reachable = ReachableFrom(grid, request.start);
     std::optional<Cell> replacement;
     if (request.goal_tolerance_m > 0.0) {
       replacement = ToleranceGoal(grid, request.start, request.goal,
@@ -276,7 +271,8 @@ absl::StatusOr<GridPlanResult> GridPlanner::PlanOn(const PassabilityGrid& grid,
       if (replacement) result.adjustment_reason = "goal moved within goal_tolerance_m";
     }
     if (!replacement && request.first_sighting && grid.Contains(*request.first_sighting)) {
-      replacement = FindAlternativePoint(grid, reachable, *request.first_sighting, request.goal);
+      replacement = FindAlternativePoint(grid, ReachableFrom(grid, request.start),
+                                         *request.first_sighting, request.goal);
       result.alternative_used = replacement.has_value();
       if (replacement) {
         result.adjustment_reason = absl::StrCat(
