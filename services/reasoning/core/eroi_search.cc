@@ -10,6 +10,10 @@ namespace semnav::reasoning {
 
 absl::StatusOr<EroiSearch> EroiSearch::Create(std::string target, const EroiSearchConfig& config) {
   if (target.empty()) return InvalidField("target", "is required for the EROI search");
+  if (!(config.inspect_distance_m >= 0.0 && config.inspect_distance_m <= 50.0))
+    return InvalidField("inspect_distance_m", "must be in [0, 50] m");
+  if (config.sighting_namings < 1 || config.sighting_namings > 10)
+    return InvalidField("sighting_namings", "must be in [1, 10]");
   absl::StatusOr<EroiGrid> grid = EroiGrid::Create(config.grid);
   if (!grid.ok()) return grid.status();
   return EroiSearch(std::move(target), *std::move(grid), config);
@@ -23,7 +27,9 @@ EroiSearch::EroiSearch(std::string target, EroiGrid grid, const EroiSearchConfig
       mapping_config_(config.mapping),
       regions_(grid_.get(), config.regions),
       values_(grid_->size()),
-      evidence_once_per_code_(config.evidence_once_per_code) {}
+      evidence_once_per_code_(config.evidence_once_per_code),
+      inspect_distance_m_(config.inspect_distance_m),
+      sighting_namings_(config.sighting_namings) {}
 
 EroiObservation EroiSearch::Annotate(const Eigen::Vector3d& position,
                                      const Eigen::Quaterniond& orientation,
@@ -46,14 +52,30 @@ void EroiSearch::OnAsked(const EroiObservation& observation) {
   for (const CodeLabel& label : observation.labels) asked_codes_.insert(label.code);
 }
 
+bool EroiSearch::Corroborated(const Eigen::Vector3d& centre) {
+  const double near_m = 2.0 * grid_->spec().delta;
+  const int earlier =
+      static_cast<int>(std::count_if(namings_.begin(), namings_.end(), [&](const Naming& naming) {
+        return naming.answer != answers_ && (naming.centre - centre).head<2>().norm() <= near_m;
+      }));
+  namings_.push_back({centre, answers_});
+  return earlier + 1 >= sighting_namings_;
+}
+
 EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
   EroiEvidence evidence;
+  ++answers_;
   for (const CodeDescription& pair : ParseCodeDescriptions(answer)) {
     absl::StatusOr<Eigen::Vector3d> centre = grid_->Decode(pair.code);
     if (!centre.ok()) continue;  // a code the VLM invented or misread
     ++evidence.codes_used;
     if (!evidence_once_per_code_ || evidenced_codes_.insert(pair.code).second)
       values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
+    if (DescriptionNamesTarget(pair.description, target_) && Corroborated(*centre) &&
+        sighting_codes_.insert(pair.code).second) {
+      sightings_.push_back(*centre);
+      ++evidence.sightings;
+    }
     absl::StatusOr<std::optional<RegionDue>> due = regions_.Add(*centre, pair.description);
     if (due.ok() && due->has_value()) evidence.due.push_back(**due);
   }

@@ -3,7 +3,9 @@
 // recognition-evaluation-transfer prompt; each `Code: G5A, Description: ...` answer is strong
 // evidence for the EROIs within r of the decoded centre (eq. 17-20) and a <position, description>
 // record of the region map; every theta = 3 records of a region unit trigger an LLM region score
-// (eq. 21-23). The values feed planning's EROI_UTILITY strategy on the same grid.
+// (eq. 21-23). The values feed planning's EROI_UTILITY strategy on the same grid. A code whose
+// description names the target itself is also kept as a sighting: the robot goes to look
+// (SightingGoal), since its EROI may hold no unknown cells left to draw the search there.
 #pragma once
 
 #include <memory>
@@ -28,6 +30,16 @@ struct EroiSearchConfig {
   // A code the VLM names again adds no evidence: overlapping views of one passage are one
   // observation, not independent ones. false = eq. 20 on every answer, as the seed writes.
   bool evidence_once_per_code = true;
+  // A code whose description names the target is looked at from this far (SightingGoal): within
+  // the detector's range (the simulated one's 6 m) with the EROI's cell and an off-by-one code
+  // still in view. 0 = sightings are only evidence, as in the seed.
+  double inspect_distance_m = 3.0;
+  // Answers (of different frames) that must name the target within two EROI edges before the
+  // robot goes to look. The model also names the target where it is not (hallucinated clues,
+  // confusions) and a look costs a detour of up to the codes' 12 m, but waiting for a second
+  // naming lost more than it saved: outdoor mean path 52.3 / 50.4 m with 1, 58.9 / 67.7 m with 2
+  // (seeds 1 / 2, docs/performance/mission.md).
+  int sighting_namings = 1;
 };
 
 // A camera frame ready for the VLM: the prompt and the codes drawn into the image.
@@ -39,6 +51,7 @@ struct EroiObservation {
 // What a VLM answer changed.
 struct EroiEvidence {
   int codes_used = 0;          // pairs whose code decoded inside the grid
+  int sightings = 0;           // of them, new codes whose description names the target
   std::vector<RegionDue> due;  // region units now due for an LLM score
 };
 
@@ -70,12 +83,18 @@ class EroiSearch {
   Eigen::Vector2d WindowMin() const;
   Eigen::Vector2d WindowMax() const;
 
+  // Centres of the codes whose description named the target, in the order first named.
+  const std::vector<Eigen::Vector3d>& sightings() const { return sightings_; }
+  double inspect_distance_m() const { return inspect_distance_m_; }
   const EroiGrid& grid() const { return *grid_; }
   const SemanticValues& values() const { return values_; }
   const std::string& target() const { return target_; }
 
  private:
   EroiSearch(std::string target, EroiGrid grid, const EroiSearchConfig& config);
+  // Records a naming of the target at `centre`; true when sighting_namings answers (this one
+  // included) named it within two edges.
+  bool Corroborated(const Eigen::Vector3d& centre);
 
   std::string target_;
   std::unique_ptr<const EroiGrid> grid_;  // stable address: the region map refers to it
@@ -85,7 +104,17 @@ class EroiSearch {
   SemanticValues values_;
   std::set<std::string> asked_codes_;  // printed into a frame the VLM was asked about
   bool evidence_once_per_code_;
+  double inspect_distance_m_;
+  int sighting_namings_;
+  struct Naming {
+    Eigen::Vector3d centre;
+    int answer = 0;
+  };
+  std::vector<Naming> namings_;  // every code an answer described as the target
+  int answers_ = 0;
   std::set<std::string> evidenced_codes_;  // named in an answer; kept with evidence_once_per_code
+  std::set<std::string> sighting_codes_;
+  std::vector<Eigen::Vector3d> sightings_;
 };
 
 }  // namespace semnav::reasoning

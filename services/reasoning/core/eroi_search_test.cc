@@ -1,5 +1,7 @@
 #include "services/reasoning/core/eroi_search.h"
 
+#include <cmath>
+
 #include "gtest/gtest.h"
 
 namespace semnav::reasoning {
@@ -73,6 +75,39 @@ TEST(GatewayEroiSearchTest, ACodeNamedAgainAddsNoEvidenceByHand) {
   EXPECT_EQ(third.due.size(), 1u);  // three records of the unit, as before
   // D1A's first time: (3, 0) at the grid's edge has m = 4, (1 - 1/4) 0.05 + 1/4 = 0.2875.
   EXPECT_NEAR(search->values().value(Flat(*search, 3, 0)), 0.2875, 1e-12);
+}
+
+TEST(GatewayEroiSearchTest, ATargetNamedByTwoAnswersWithinTwoEdgesIsASightingOnce) {
+  EroiSearchConfig two = Config();
+  two.sighting_namings = 2;
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("car", two);
+  ASSERT_TRUE(search.ok()) << search.status();
+  EXPECT_EQ(search->OnVlmAnswer("Code: C2A, Description: no car here; road leading on").sightings,
+            0);
+  // D1A = (3, 0, 0) = (6, 0) m; A4A = (0, 3) = (0, 6) m is 8.5 m from it. One answer naming both
+  // corroborates neither.
+  EXPECT_EQ(
+      search->OnVlmAnswer("Code: D1A, Description: car seen here\nCode: A4A, Description: a car")
+          .sightings,
+      0);
+  // B1A = (2, 0) m, 4 m from D1A (two edges): the second answer corroborates it.
+  EXPECT_EQ(search->OnVlmAnswer("Code: B1A, Description: a red car").sightings, 1);
+  EXPECT_EQ(search->OnVlmAnswer("Code: B1A, Description: the car again").sightings, 0);
+  EXPECT_EQ(search->OnVlmAnswer("Code: A1A, Description: no car; a road").sightings, 0);
+  EXPECT_EQ(search->OnVlmAnswer("Code: Z9Z, Description: car off the grid").sightings, 0);
+  ASSERT_EQ(search->sightings().size(), 1u);
+  EXPECT_EQ(search->sightings()[0], Eigen::Vector3d(2, 0, 0));
+  EXPECT_DOUBLE_EQ(search->inspect_distance_m(), 3.0);
+  // One naming suffices by default (sighting_namings 1).
+  absl::StatusOr<EroiSearch> eager = EroiSearch::Create("car", Config());
+  ASSERT_TRUE(eager.ok()) << eager.status();
+  EXPECT_EQ(eager->OnVlmAnswer("Code: D1A, Description: car seen here").sightings, 1);
+  EroiSearchConfig bad = Config();
+  bad.inspect_distance_m = std::nan("");
+  EXPECT_FALSE(EroiSearch::Create("car", bad).ok());
+  bad = Config();
+  bad.sighting_namings = 0;
+  EXPECT_FALSE(EroiSearch::Create("car", bad).ok());
 }
 
 TEST(GatewayEroiSearchTest, PlanarValuesAndWindowMatchPlanningsRowMajorEroiGrid) {

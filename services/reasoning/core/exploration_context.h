@@ -55,6 +55,10 @@ struct ExplorationContext {
   Eigen::Vector2d eroi_window_min = Eigen::Vector2d::Zero();
   Eigen::Vector2d eroi_window_max = Eigen::Vector2d::Zero();
   double eroi_edge_m = 0.0;
+  // Where the vision model said it saw the target (EroiSearch::sightings), map frame; the robot
+  // looks from eroi_inspect_distance_m before planning's next goal (SightingGoal).
+  std::vector<Eigen::Vector3d> eroi_sightings;
+  double eroi_inspect_distance_m = 0.0;   // 0 = sightings are not looked at
   std::optional<SearchArea> search_area;  // unset = the whole map
 };
 

@@ -1,6 +1,7 @@
 // The PathPlanner each task's executor gets: paths come from the shared planner; exploration goals
 // are asked with the task's strategy and its semantic context (target, scene graph, visited
-// places, commonsense co-occurrence), which the executor itself does not know. Both carry the
+// places, commonsense co-occurrence), which the executor itself does not know; a place where the
+// vision model saw the target comes first (SightingGoal). Both carry the
 // live-map age the robot's session accepts.
 // Every call to planning goes through the task's RemoteCallRunner, which lets the gateway run it
 // without its lock (docs/algorithms/gateway.md, "Remote calls").
@@ -13,6 +14,7 @@
 #include "services/reasoning/core/exploration_context.h"
 #include "services/reasoning/core/exploration_strategy.h"
 #include "services/reasoning/core/navigation_interfaces.h"
+#include "services/reasoning/core/sighting_goal.h"
 
 namespace semnav::reasoning {
 
@@ -63,6 +65,14 @@ class PerTaskPathPlanner final : public PathPlanner {
       return goal;
     }
     const ExplorationContext context = context_();
+    // A place the vision model saw the target at is looked at before planning's next goal.
+    if (std::optional<Eigen::Vector3d> look =
+            context.eroi_inspect_distance_m > 0.0
+                ? SightingGoal(context.eroi_sightings, asked, context.eroi_inspect_distance_m)
+                : std::nullopt;
+        look.has_value()) {
+      return *look;
+    }
     Remote([&] { goal = explorer_->SelectGoal(asked, strategy_, context); });
     return goal;
   }

@@ -18,4 +18,11 @@ struct CodeDescription {
 // empty answer when no target clue is visible).
 std::vector<CodeDescription> ParseCodeDescriptions(std::string_view answer);
 
+// True when a pair's description says the target itself is at the code ("red car parked by the
+// wall", "汽车 seen here"), not a clue or a passage toward it: the target (as written, its
+// canonical name, or the last word of either: "red mug" -> "mug") appears, as whole words (as a
+// substring in CJK text), in a clause with no negation before it ("no car here; road ..." names
+// a passage). Case-insensitive. A heuristic on free text: a wrong reading costs one look.
+bool DescriptionNamesTarget(std::string_view description, std::string_view target);
+
 }  // namespace semnav::reasoning

@@ -21,6 +21,29 @@ TEST(GatewayVlmAnswerTest, SeedExampleAndVariants) {
   EXPECT_TRUE(ParseCodeDescriptions("").empty());
 }
 
+TEST(GatewayVlmAnswerTest, ADescriptionNamesTheTargetOnlyWhenItSaysTheTargetIsThere) {
+  // The simulated model's two forms: the target seen, or a passage beyond "no <target> here".
+  EXPECT_TRUE(DescriptionNamesTarget("car seen here", "car"));
+  EXPECT_FALSE(DescriptionNamesTarget("no car here; road leading to another area", "car"));
+  EXPECT_FALSE(DescriptionNamesTarget("road leading to another area", "car"));
+  // Free text of a real model: whole words, any case, adjectives dropped, negations anywhere
+  // before the mention in its clause.
+  EXPECT_TRUE(DescriptionNamesTarget("A red Car parked by the wall", "car"));
+  EXPECT_TRUE(DescriptionNamesTarget("a mug on the kitchen shelf", "red mug"));
+  EXPECT_FALSE(DescriptionNamesTarget("a carpet in the hall", "car"));
+  EXPECT_FALSE(DescriptionNamesTarget("there is not a single car", "car"));
+  EXPECT_FALSE(DescriptionNamesTarget("this isn't a car, it is a van", "car"));
+  EXPECT_FALSE(DescriptionNamesTarget("road without cars", "car"));  // "cars" is another word
+  // A clause of its own after a negated one: "sofa" reads as the lexicon's "couch".
+  EXPECT_TRUE(DescriptionNamesTarget("No sofa in the hall, but a couch by the window", "sofa"));
+  // Chinese: substrings, full-width clause marks, 没有 negates.
+  EXPECT_TRUE(DescriptionNamesTarget("汽车停在楼旁", "汽车"));
+  EXPECT_FALSE(DescriptionNamesTarget("这里没有汽车", "汽车"));
+  EXPECT_TRUE(DescriptionNamesTarget("这里没有人，汽车停在路边", "汽车"));
+  EXPECT_FALSE(DescriptionNamesTarget("", "car"));
+  EXPECT_FALSE(DescriptionNamesTarget("car seen here", ""));
+}
+
 TEST(GatewaySearchPromptTest, ZeroShotReplacementKeepsTheLogic) {
   const std::string helmet = BuildSearchPrompt("bicycle helmet");
   const std::string umbrella = BuildSearchPrompt("umbrella");

@@ -311,6 +311,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("nz", &search.grid.nz)
         .Read("evidence_radius_m", &search.evidence_radius_m)
         .Read("evidence_once_per_code", &search.evidence_once_per_code)
+        .Read("inspect_distance_m", &search.inspect_distance_m)
+        .Read("sighting_namings", &search.sighting_namings)
         .Read("region_size", &search.regions.region_size)
         .Read("theta", &search.regions.theta)
         .Read("min_distance_m", &search.mapping.min_distance_m)
@@ -321,6 +323,10 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
                "grid must have delta > 0, nx, ny, nz >= 0 and at most 26 letters on x and z");
     eroi.Check(search.regions.region_size >= 1, "region_size", "must be >= 1");
     eroi.Check(search.regions.theta >= 1, "theta", "must be >= 1");
+    eroi.Check(search.inspect_distance_m >= 0.0 && search.inspect_distance_m <= 50.0,
+               "inspect_distance_m", "must be in [0, 50] m");
+    eroi.Check(search.sighting_namings >= 1 && search.sighting_namings <= 10, "sighting_namings",
+               "must be in [1, 10]");
     c.eroi = search;
   }
 

@@ -86,9 +86,10 @@ void GatewayHub::OnVisionAnswer(const std::string& task_id, absl::StatusOr<std::
   }
   t.calls.OnAnswer(prompt_tokens + EstimateTokens("", *answer, false));
   const EroiEvidence evidence = t.eroi->OnVlmAnswer(*answer);
-  LogDebug(
-      "eroi_vision_answer",
-      {{"task", task_id}, {"codes", evidence.codes_used}, {"regions_due", evidence.due.size()}});
+  LogDebug("eroi_vision_answer", {{"task", task_id},
+                                  {"codes", evidence.codes_used},
+                                  {"sightings", evidence.sightings},
+                                  {"regions_due", evidence.due.size()}});
   for (const RegionDue& region : evidence.due) {
     if (!AllowModelCall(t, t.calls.MayAsk(NowFor(t.robot_id)))) break;
     t.calls.OnAsked();

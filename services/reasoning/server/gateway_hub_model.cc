@@ -303,6 +303,8 @@ ExplorationContext GatewayHub::ContextFor(const std::string& task_id) {
     context.eroi_window_min = search->WindowMin();
     context.eroi_window_max = search->WindowMax();
     context.eroi_edge_m = search->grid().spec().delta;
+    context.eroi_sightings = search->sightings();
+    context.eroi_inspect_distance_m = search->inspect_distance_m();
   }
   context.search_area = task->search_area;
   return context;

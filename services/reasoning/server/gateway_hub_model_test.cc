@@ -557,7 +557,7 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   // (Each next frame from 2.5 m further on: the same view is not asked about twice.)
   model.Reply(0, "Code: C2A, Description: a bag by the bench");
   ASSERT_TRUE(hub.OnCameraFrame(&session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 2.5)).ok());
-  model.Reply(1, "Code: C2A, Description: backpack strap");
+  model.Reply(1, "Code: C2A, Description: a strap by the bench");  // names no target: no look
   ASSERT_TRUE(hub.OnCameraFrame(&session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 5.0)).ok());
   model.Reply(2, "Code: D1A, Description: bench");
   ASSERT_EQ(model.asks.size(), 4u);
@@ -573,6 +573,47 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   Reached(hub, session, explore);  // -> next exploration goal
   ASSERT_EQ(explorer.contexts.size(), 2u);
   EXPECT_NEAR(explorer.contexts[1].eroi_values[7], 0.43, 1e-12);
+}
+
+// Regression (issue 15, outdoor EROI paths): the model named the target at a code whose EROI the
+// depth camera had already mapped, so no viewpoint there had information gain and the UAV flew
+// elsewhere (with a start turn, a bench 8.6 m from road start 4 was named three times, and found
+// after 180 m). With sighting_namings 2, two answers naming the target at one code now send the
+// robot to look at it from 3 m, before planning is asked again (1, the default, sends it at once).
+TEST(GatewayHubEroiTest, ATargetTheModelNamedTwiceIsLookedAtBeforePlanningIsAsked) {
+  GatewayConfig config;
+  EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0)
+  eroi.grid.delta = 2.0;
+  eroi.grid.nx = 4;
+  eroi.grid.ny = 3;
+  eroi.sighting_namings = 2;
+  config.eroi = eroi;
+  config.model_proxy.calls.new_view_min_new_code_share = 0.0;
+  EroiHub fixture(config);
+  api::SubmitInstructionRequest request = UavSearch("eroi-look", "find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = fixture.hub.Submit(request);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  ASSERT_EQ(fixture.explorer.contexts.size(), 1u);
+  ASSERT_TRUE(
+      fixture.hub.OnCameraFrame(&fixture.session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  fixture.model.Reply(0, "Code: C2A, Description: a red backpack on the bench");
+  // One naming is not enough: the next goal is planning's.
+  Reached(fixture.hub, fixture.session, fixture.session.Last());
+  ASSERT_EQ(fixture.explorer.contexts.size(), 2u);
+  EXPECT_TRUE(fixture.explorer.contexts[1].eroi_sightings.empty());
+  ASSERT_TRUE(
+      fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 2.5))
+          .ok());
+  fixture.model.Reply(1, "Code: C2A, Description: the backpack");
+  // C2A's centre is (4, 2); the robot stands at (0, 0): 3 m short of it is (4, 2) - 3 (4, 2) /
+  // |(4, 2)| = (1.317, 0.658), and planning is not asked.
+  Reached(fixture.hub, fixture.session, fixture.session.Last());
+  EXPECT_EQ(fixture.explorer.contexts.size(), 2u);
+  const api::RobotCommand look = fixture.session.Last();
+  ASSERT_TRUE(look.has_navigate()) << look.DebugString();
+  EXPECT_NEAR(look.navigate().goal().x(), 4.0 - 12.0 / std::sqrt(20.0), 1e-6);
+  EXPECT_NEAR(look.navigate().goal().y(), 2.0 - 6.0 / std::sqrt(20.0), 1e-6);
 }
 
 // Regression (issue 15, the 636-call storm): with the offline proxy every vision call failed
