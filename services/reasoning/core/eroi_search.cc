@@ -53,6 +53,10 @@ void EroiSearch::OnAsked(const EroiObservation& observation) {
 }
 
 bool EroiSearch::Corroborated(const Eigen::Vector3d& centre) {
+  if (sighting_namings_ <= 1) return true;
+  // An answer can list many pairs: keep the count check linear in a bounded record.
+  constexpr size_t kMaxNamings = 4096;
+  if (namings_.size() >= kMaxNamings) namings_.erase(namings_.begin());
   const double near_m = 2.0 * grid_->spec().delta;
   const int earlier =
       static_cast<int>(std::count_if(namings_.begin(), namings_.end(), [&](const Naming& naming) {

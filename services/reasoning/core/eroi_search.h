@@ -110,7 +110,7 @@ class EroiSearch {
     Eigen::Vector3d centre;
     int answer = 0;
   };
-  std::vector<Naming> namings_;  // every code an answer described as the target
+  std::vector<Naming> namings_;  // codes answers described as the target (the last 4096)
   int answers_ = 0;
   std::set<std::string> evidenced_codes_;  // named in an answer; kept with evidence_once_per_code
   std::set<std::string> sighting_codes_;
