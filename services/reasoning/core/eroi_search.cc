@@ -3,17 +3,22 @@
 #include <algorithm>
 
 #include "services/common/status/field_error.h"
+#include "services/common/status/value_checks.h"
 #include "services/reasoning/core/search_prompts.h"
 #include "services/reasoning/core/vlm_answer.h"
 
 namespace semnav::reasoning {
 
+absl::Status ValidateSightings(const EroiSearchConfig& config) {
+  if (absl::Status s = CheckRange(config.inspect_distance_m, "inspect_distance_m", 0.0, 50.0);
+      !s.ok())
+    return s;
+  return CheckRange(config.sighting_namings, "sighting_namings", 1, 10);
+}
+
 absl::StatusOr<EroiSearch> EroiSearch::Create(std::string target, const EroiSearchConfig& config) {
   if (target.empty()) return InvalidField("target", "is required for the EROI search");
-  if (!(config.inspect_distance_m >= 0.0 && config.inspect_distance_m <= 50.0))
-    return InvalidField("inspect_distance_m", "must be in [0, 50] m");
-  if (config.sighting_namings < 1 || config.sighting_namings > 10)
-    return InvalidField("sighting_namings", "must be in [1, 10]");
+  if (absl::Status s = ValidateSightings(config); !s.ok()) return s;
   absl::StatusOr<EroiGrid> grid = EroiGrid::Create(config.grid);
   if (!grid.ok()) return grid.status();
   return EroiSearch(std::move(target), *std::move(grid), config);
@@ -76,7 +81,7 @@ EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
     if (!evidence_once_per_code_ || evidenced_codes_.insert(pair.code).second)
       values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
     if (DescriptionNamesTarget(pair.description, target_) && Corroborated(*centre) &&
-        sighting_codes_.insert(pair.code).second) {
+        std::find(sightings_.begin(), sightings_.end(), *centre) == sightings_.end()) {
       sightings_.push_back(*centre);
       ++evidence.sightings;
     }

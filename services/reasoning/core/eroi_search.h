@@ -42,6 +42,10 @@ struct EroiSearchConfig {
   int sighting_namings = 1;
 };
 
+// INVALID_ARGUMENT naming the field: inspect_distance_m outside [0, 50] m, sighting_namings
+// outside [1, 10].
+absl::Status ValidateSightings(const EroiSearchConfig& config);
+
 // A camera frame ready for the VLM: the prompt and the codes drawn into the image.
 struct EroiObservation {
   std::string prompt;
@@ -83,7 +87,7 @@ class EroiSearch {
   Eigen::Vector2d WindowMin() const;
   Eigen::Vector2d WindowMax() const;
 
-  // Centres of the codes whose description named the target, in the order first named.
+  // Centres of the codes whose description named the target, each once, in the order named.
   const std::vector<Eigen::Vector3d>& sightings() const { return sightings_; }
   double inspect_distance_m() const { return inspect_distance_m_; }
   const EroiGrid& grid() const { return *grid_; }
@@ -113,7 +117,6 @@ class EroiSearch {
   std::vector<Naming> namings_;  // codes answers described as the target (the last 4096)
   int answers_ = 0;
   std::set<std::string> evidenced_codes_;  // named in an answer; kept with evidence_once_per_code
-  std::set<std::string> sighting_codes_;
   std::vector<Eigen::Vector3d> sightings_;
 };
 

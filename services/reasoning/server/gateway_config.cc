@@ -323,10 +323,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
                "grid must have delta > 0, nx, ny, nz >= 0 and at most 26 letters on x and z");
     eroi.Check(search.regions.region_size >= 1, "region_size", "must be >= 1");
     eroi.Check(search.regions.theta >= 1, "theta", "must be >= 1");
-    eroi.Check(search.inspect_distance_m >= 0.0 && search.inspect_distance_m <= 50.0,
-               "inspect_distance_m", "must be in [0, 50] m");
-    eroi.Check(search.sighting_namings >= 1 && search.sighting_namings <= 10, "sighting_namings",
-               "must be in [1, 10]");
+    const absl::Status sightings = ValidateSightings(search);
+    eroi.Check(sightings.ok(), ErrorField(sightings).value_or("eroi"), sightings.message());
     c.eroi = search;
   }
 
