@@ -109,8 +109,8 @@ TEST(SimWorldYamlTest, HandDrawnHoldoutWorldsLoad) {
   // Drawn by another hand and never tuned on: only a check that the strategy generalises.
   const auto suite = LoadSuite(SEMNAV_SOURCE_DIR "/tests/worlds/hand_drawn_holdout");
   ASSERT_TRUE(suite.ok()) << suite.status();
-  ASSERT_EQ(suite->size(), 4u);
-  EXPECT_EQ(suite->front().name, "clinic_ward");
+  ASSERT_EQ(suite->size(), 5u);
+  EXPECT_EQ(suite->front().name, "campus_quad");
   EXPECT_EQ(suite->back().name, "warehouse_aisles");
 }
 

@@ -152,6 +152,7 @@ TEST(SimStartPosesTest, HandDrawnWorldStartsHaveClearance) {
 TEST(SimStartPosesTest, HandDrawnHoldoutWorldStartsHaveClearance) {
   ExpectDrawnStartsClear("hand_drawn_holdout",
                          {"clinic_ward", "home_bungalow", "open_office", "warehouse_aisles"}, 3);
+  ExpectDrawnStartsClear("hand_drawn_holdout", {"campus_quad"}, 4);
 }
 
 TEST(SimStartPosesTest, HandDrawnBlindStartWorldStartsHaveClearance) {

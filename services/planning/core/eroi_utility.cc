@@ -134,13 +134,23 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
     }
   }
   std::optional<EroiChoice> best;
+  // The path to the nearest clue viewpoint (nodes leave the queue in path order). A clue ignores
+  // its path length against the rest, as eq. 24 says; between clues, eq. 24 read literally chose
+  // by I s alone, and as gains shrank under the camera the UAV flew from one end of a clue-lit
+  // road to the other and back (20 m legs, outdoor_building_vehicles start 4, seed 2).
+  std::optional<double> nearest_clue;
   while (!open.empty()) {
     const auto [l, i] = open.top();
     open.pop();
     if (l > dist[i]) continue;
     if (nodes[i].eroi >= 0) {
       const double value = nodes[i].gain * s(nodes[i].eroi);  // U_b = I s
-      const double u = greedy(nodes[i].eroi) ? value : value * std::exp(-config.lambda * l);
+      double u = value * std::exp(-config.lambda * l);
+      if (greedy(nodes[i].eroi)) {
+        if (!nearest_clue) nearest_clue = l;
+        u = config.clues_pay_extra_path ? value * std::exp(-config.lambda * (l - *nearest_clue))
+                                        : value;
+      }
       if (!best || u > best->utility) {
         best = EroiChoice{nodes[i].cell, nodes[i].eroi, nodes[i].gain, s(nodes[i].eroi), l, u, {}};
         for (int at = i; at >= 0; at = parent[at]) best->route.push_back(nodes[at].cell);

@@ -21,6 +21,9 @@ struct EroiConfig {
   double lambda = 0.05;                // eq. 24 path-cost coefficient, per cell
   double k = 0.8;                      // eq. 24 dynamic threshold tau = k max s
   int min_gain_cells = 0;              // viewpoints revealing fewer unknown cells are dropped
+  // Clue viewpoints farther than the nearest clue viewpoint pay the path cost beyond it (false:
+  // the seed's eq. 24, where every clue ignores its path length).
+  bool clues_pay_extra_path = true;
 };
 
 // A map cell's state for the EROI search.
@@ -53,12 +56,12 @@ int ViewpointGain(const ExplorationLayers& layers, Cell viewpoint, const EroiCon
 // radius by collision-free straight segments; Dijkstra from the robot
 // expands nodes in path order; each gets U_b = I s, and U = U_b e^(-lambda
 // L) unless s > tau = k max s and s is above the lowest value (a clue: eq. 23
-// keeps every EROI at or above the prior), when U = U_b; the best U wins. `semantic`
-// holds s per EROI (size EroiCount); empty = uniform 1/N (the seed's
-// initial value). nullopt when no viewpoint is reachable.
-// `excluded` (optional) drops viewpoints: the caller's spent goals (a viewpoint the robot
-// stands on keeps its gain when the camera cannot see what is left, and was chosen again and
-// again at path length 0).
+// keeps every EROI at or above the prior), when U = U_b e^(-lambda (L - L_clue)) with L_clue the
+// path to the nearest clue viewpoint (U = U_b with clues_pay_extra_path off); the best U wins.
+// `semantic` holds s per EROI (size EroiCount); empty = uniform 1/N (the seed's initial value).
+// nullopt when no viewpoint is reachable. `excluded` (optional) drops viewpoints: the caller's
+// spent goals (a viewpoint the robot stands on keeps its gain when the camera cannot see what is
+// left, and was chosen again and again at path length 0).
 std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell robot,
                                          const std::vector<double>& semantic,
                                          const EroiConfig& config,

@@ -97,6 +97,25 @@ TEST(EroiUtility, WithoutAClueEveryViewpointPaysThePathCost) {
   EXPECT_DOUBLE_EQ(clue->utility, clue->gain * 0.5);
 }
 
+// Regression (issue 15): between two clues eq. 24 read literally chose by I s alone, and the UAV
+// flew 20 m legs back and forth along a road whose codes the model named. Both EROIs here are
+// clues (0.9 and 1.0 > tau 0.8, above the floor 0); the far strip's gain (100 cells) and value beat
+// the near block's (50 cells), but it lies 40+ cells farther: it pays e^(-lambda (L - L_near)).
+TEST(EroiUtility, TheFartherOfTwoCluesPaysThePathBeyondTheNearer) {
+  const ExplorationLayers layers = TwoUnknownStrips();
+  EroiConfig config = SmallConfig();
+  std::optional<EroiChoice> choice = SelectEroiGoal(layers, {2, 15}, {0.9, 0.0, 1.0}, config);
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_EQ(choice->eroi, 0);
+  EXPECT_LT(choice->path_cells, 20.0);
+  EXPECT_LE(choice->utility, choice->gain * 0.9);  // the nearest clue viewpoint pays nothing
+  config.clues_pay_extra_path = false;             // the seed's reading
+  choice = SelectEroiGoal(layers, {2, 15}, {0.9, 0.0, 1.0}, config);
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_EQ(choice->eroi, 2);
+  EXPECT_DOUBLE_EQ(choice->utility, choice->gain * 1.0);
+}
+
 // Regression (issue 15, the UAV's closed loop): a robot standing in explored space wider than
 // the connect radius had no straight roadmap edge to any viewpoint, so no goal at all; the
 // gateway then took blind 3 m steps east. 100 x 20 cells, all explored and free but the strip

@@ -17,6 +17,7 @@ EroiConfig ExplorationConfig::EroiInCells(double resolution_m) const {
   c.connect_radius_cells = eroi_connect_radius_m / resolution_m;
   c.lambda = eroi_lambda_per_m * resolution_m;
   c.k = eroi_k;
+  c.clues_pay_extra_path = eroi_clues_pay_extra_path;
   c.min_gain_cells = static_cast<int>(std::ceil(eroi_min_gain_m2 / (resolution_m * resolution_m)));
   return c;
 }
@@ -108,6 +109,7 @@ void ExplorationConfig::Read(ConfigReader& section) {
       .Read("connect_radius_m", &eroi_connect_radius_m)
       .Read("lambda_per_m", &eroi_lambda_per_m)
       .Read("k", &eroi_k)
+      .Read("clues_pay_extra_path", &eroi_clues_pay_extra_path)
       .Read("min_gain_m2", &eroi_min_gain_m2);
   eroi.Check(eroi_size_m > 0 && eroi_ray_range_m > 0 && eroi_connect_radius_m > 0, "size_m",
              "EROI lengths must be > 0");

@@ -23,8 +23,9 @@ struct ExplorationConfig {
   int eroi_rays = 72;
   double eroi_ray_range_m = 5.0;
   double eroi_connect_radius_m = 3.0;
-  double eroi_lambda_per_m = 1.0;  // eq. 24 lambda
-  double eroi_k = 0.8;             // eq. 24 tau = k max s
+  double eroi_lambda_per_m = 1.0;         // eq. 24 lambda
+  double eroi_k = 0.8;                    // eq. 24 tau = k max s
+  bool eroi_clues_pay_extra_path = true;  // between clues, the farther pays the extra path
   // Viewpoints revealing less unknown area are dropped: about a bench's footprint (1.1 m^2), the
   // smallest target of the seed-000 scenes; smaller pockets are depth noise (our choice, the seed
   // gives no floor).
