@@ -119,4 +119,11 @@ std::string CanonicalTerm(absl::string_view phrase) {
   return absl::StrJoin(out, " ");
 }
 
+bool IsAscii(std::string_view text) {
+  for (char c : text) {
+    if (static_cast<unsigned char>(c) >= 0x80) return false;
+  }
+  return true;
+}
+
 }  // namespace semnav

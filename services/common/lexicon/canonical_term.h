@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "absl/strings/string_view.h"
 
@@ -13,5 +14,9 @@ namespace semnav {
 // singularized by suffix rules, then the lexicon's object and room forms (up to three words,
 // longest first; Chinese forms as substrings, longest first) replaced by their canonical names.
 std::string CanonicalTerm(absl::string_view phrase);
+
+// True when every byte is ASCII. Lexicon phrases in ASCII are words separated by spaces; others
+// (Chinese) join without spaces and match as substrings.
+bool IsAscii(std::string_view text);
 
 }  // namespace semnav

@@ -7,6 +7,13 @@
 namespace semnav {
 namespace {
 
+TEST(CanonicalTermTest, IsAsciiIsFalseForAnyByteAbove127) {
+  EXPECT_TRUE(IsAscii("red mug"));
+  EXPECT_TRUE(IsAscii(""));
+  EXPECT_FALSE(IsAscii("汽车"));
+  EXPECT_FALSE(IsAscii("caf\xC3\xA9"));  // "café": one non-ASCII letter is enough
+}
+
 TEST(CanonicalTermTest, NormalizesCaseArticlesPluralsAndSynonyms) {
   EXPECT_EQ(CanonicalTerm("Sofas"), "couch");
   EXPECT_EQ(CanonicalTerm("the Living_Room"), "living room");

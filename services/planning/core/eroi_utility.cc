@@ -145,12 +145,12 @@ std::optional<EroiChoice> SelectEroiGoal(const ExplorationLayers& layers, Cell r
     if (l > dist[i]) continue;
     if (nodes[i].eroi >= 0) {
       const double value = nodes[i].gain * s(nodes[i].eroi);  // U_b = I s
-      double u = value * std::exp(-config.lambda * l);
+      double paid_path = l;                                   // the path length U pays for
       if (greedy(nodes[i].eroi)) {
         if (!nearest_clue) nearest_clue = l;
-        u = config.clues_pay_extra_path ? value * std::exp(-config.lambda * (l - *nearest_clue))
-                                        : value;
+        paid_path = config.clues_pay_extra_path ? l - *nearest_clue : 0.0;
       }
+      const double u = value * std::exp(-config.lambda * paid_path);
       if (!best || u > best->utility) {
         best = EroiChoice{nodes[i].cell, nodes[i].eroi, nodes[i].gain, s(nodes[i].eroi), l, u, {}};
         for (int at = i; at >= 0; at = parent[at]) best->route.push_back(nodes[at].cell);

@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "services/common/lexicon/canonical_term.h"
 #include "services/reasoning/core/phrase_matcher.h"
 
 namespace semnav::reasoning {
@@ -12,13 +13,6 @@ const LexiconEntry* EntryOfKind(const Phrase& phrase, TermKind kind) {
     if (entry->kind == kind) return entry;
   }
   return nullptr;
-}
-
-bool IsAscii(const std::string& text) {
-  for (unsigned char c : text) {
-    if (c >= 0x80) return false;
-  }
-  return true;
 }
 
 // Builds one clause from its phrases. Objects and relations are collected in order and

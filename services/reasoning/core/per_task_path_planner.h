@@ -66,12 +66,11 @@ class PerTaskPathPlanner final : public PathPlanner {
     }
     const ExplorationContext context = context_();
     // A place the vision model saw the target at is looked at before planning's next goal.
-    if (std::optional<Eigen::Vector3d> look =
-            context.eroi_inspect_distance_m > 0.0
-                ? SightingGoal(context.eroi_sightings, asked, context.eroi_inspect_distance_m)
-                : std::nullopt;
-        look.has_value()) {
-      return *look;
+    if (context.eroi_inspect_distance_m > 0.0) {
+      if (std::optional<Eigen::Vector3d> look =
+              SightingGoal(context.eroi_sightings, asked, context.eroi_inspect_distance_m)) {
+        return *look;
+      }
     }
     Remote([&] { goal = explorer_->SelectGoal(asked, strategy_, context); });
     return goal;

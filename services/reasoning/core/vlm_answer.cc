@@ -36,12 +36,6 @@ namespace {
 
 bool IsWordByte(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; }
 
-bool IsAscii(std::string_view text) {
-  for (char c : text)
-    if (static_cast<unsigned char>(c) >= 0x80) return false;
-  return true;
-}
-
 // Where `term` first occurs in `clause`: as whole words for ASCII terms, as a substring for others
 // (CJK has no spaces); npos if absent.
 size_t FindTerm(std::string_view clause, std::string_view term) {
