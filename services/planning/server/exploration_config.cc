@@ -40,7 +40,10 @@ std::vector<std::string> DiscountPlatformNames(const SemanticDiscountConfig& dis
 
 void ExplorationConfig::Read(ConfigReader& section) {
   section.Read("min_frontier_cells", &min_frontier_cells)
-      .Read("l_max_steps", &coverage.l_max_steps);
+      .Read("l_max_steps", &coverage.l_max_steps)
+      .Read("look_clearance_m", &look_clearance_m);
+  section.Check(std::isfinite(look_clearance_m) && look_clearance_m >= 0 && look_clearance_m <= 10,
+                "look_clearance_m", "must be in [0, 10]");
   section.Check(min_frontier_cells >= 1, "min_frontier_cells", "must be >= 1");
   section.Check(coverage.l_max_steps >= 1, "l_max_steps", "must be >= 1");
   ConfigReader score_section = section.Child("semantic_frontier");

@@ -10,6 +10,7 @@
 #include "services/common/status/grpc_status.h"
 #include "services/common/status/value_checks.h"
 #include "services/planning/core/exploration_goal.h"
+#include "services/planning/core/look_goal.h"
 #include "services/planning/server/request_checks.h"
 
 namespace semnav::planning {
@@ -245,6 +246,27 @@ ExplorationStrategy FromProto(pb::ExplorationStrategy strategy) {
   }
 }
 
+// SelectExplorationGoal with look_at: where to look at a sighting from (look_goal.h).
+absl::Status LookOn(const GridMap& grid, const std::string& field,
+                    const pb::SelectExplorationGoalRequest& request, const PlanningConfig& config,
+                    ExplorationStrategy strategy, pb::SelectExplorationGoalResponse* response) {
+  absl::StatusOr<FrontierView> view =
+      BuildView(grid, field, request.robot(), 0, "min_frontier_cells", request.semantics(), config);
+  if (!view.ok()) return view.status();
+  const LookGoalConfig look{
+      .distance_m = request.look_distance_m() > 0.0 ? request.look_distance_m() : 3.0,
+      .clearance_m = std::max(config.exploration.look_clearance_m,
+                              request.robot_radius_m() + request.clearance_m())};
+  const Point2 robot = ToPoint(request.robot());
+  const Point2 goal = LookGoal(view->grid, robot, ToPoint(request.look_at()), look);
+  response->set_strategy(ToProto(strategy));
+  response->set_map_revision(grid.revision());
+  response->mutable_goal()->set_x(goal.x);
+  response->mutable_goal()->set_y(goal.y);
+  response->set_score(std::hypot(goal.x - robot.x, goal.y - robot.y));
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::Status ExtractFrontiersOn(const GridMap& grid, const std::string& field,
@@ -369,10 +391,18 @@ absl::Status SelectGoalOn(const GridMap& grid, const std::string& field,
       !s.ok()) {
     return s;
   }
+  if (request.has_look_at()) {
+    if (absl::Status s = CheckPose2D(request.look_at(), "look_at"); !s.ok()) return s;
+  }
+  if (absl::Status s = CheckRange(request.look_distance_m(), "look_distance_m", 0.0, 50.0);
+      !s.ok()) {
+    return s;
+  }
   absl::StatusOr<SearchBounds> bounds = ReadSearchBounds(request);
   if (!bounds.ok()) return bounds.status();
   const GoalFilter filter{ReadExclusions(request), *bounds};
   const ExplorationStrategy strategy = FromProto(request.strategy());
+  if (request.has_look_at()) return LookOn(grid, field, request, config, strategy, response);
   absl::StatusOr<FrontierView> view =
       BuildView(grid, field, request.robot(), request.min_frontier_cells(), "min_frontier_cells",
                 request.semantics(), config, filter, strategy != ExplorationStrategy::kEroiUtility);

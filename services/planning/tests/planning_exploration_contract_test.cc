@@ -484,6 +484,50 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
   EXPECT_EQ(info->field(), "eroi_size_m");
 }
 
+TEST_F(ExplorationContract, ALookAtASightingGoesRoundTheStructureTheMapKnows) {
+  // Row 3 is free: from (-0.5, 1.5) the look at (6.5, 1.5) from 3 m is (3.5, 1.5), whatever the
+  // strategy.
+  pb::SelectExplorationGoalRequest request = GoalRequest(pb::EXPLORATION_STRATEGY_EROI_UTILITY);
+  *request.mutable_robot() = CellCentre(0, 3);
+  *request.mutable_look_at() = CellCentre(7, 3);
+  request.set_look_distance_m(3.0);
+  pb::SelectExplorationGoalResponse response;
+  grpc::ClientContext context;
+  grpc::Status status = Stub()->SelectExplorationGoal(&context, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_DOUBLE_EQ(response.goal().x(), 3.5);
+  EXPECT_DOUBLE_EQ(response.goal().y(), 1.5);
+  EXPECT_DOUBLE_EQ(response.score(), 4.0);
+  EXPECT_EQ(response.route_size(), 0);
+  // Row 2 has the structure at x in [1, 3), 2 and 3 m along the line from (-0.5, 0.5). The
+  // straight look (x = 3.5, 4 m along) is within the 1 m look clearance plus half a cell's
+  // diagonal (1.707 m) of it; the seen free cell nearest it and clear of the structure is
+  // column 5, 5 m along: (4.5, 0.5), beyond the structure.
+  *request.mutable_robot() = CellCentre(0, 2);
+  *request.mutable_look_at() = CellCentre(7, 2);
+  grpc::ClientContext wall_context;
+  status = Stub()->SelectExplorationGoal(&wall_context, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_DOUBLE_EQ(response.goal().x(), 4.5);
+  EXPECT_DOUBLE_EQ(response.goal().y(), 0.5);
+  EXPECT_DOUBLE_EQ(response.score(), 5.0);
+  // A look point that is not a finite pose, or a distance outside [0, 50] m, is refused by name.
+  pb::SelectExplorationGoalRequest bad_point = request;
+  bad_point.mutable_look_at()->set_x(std::nan(""));
+  pb::SelectExplorationGoalRequest bad_distance = request;
+  bad_distance.set_look_distance_m(51.0);
+  for (const auto& [bad, field] :
+       {std::pair{bad_point, "look_at"}, std::pair{bad_distance, "look_distance_m"}}) {
+    grpc::ClientContext bad_context;
+    const grpc::Status refused = Stub()->SelectExplorationGoal(&bad_context, bad, &response);
+    EXPECT_EQ(refused.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    std::optional<semnav::common::v1::ErrorInfo> info =
+        GetDetail<semnav::common::v1::ErrorInfo>(refused);
+    ASSERT_TRUE(info.has_value());
+    EXPECT_EQ(info->field().rfind(field, 0), 0u) << info->field();
+  }
+}
+
 TEST_F(ExplorationContract, SmoothTrajectoryRespectsTheLimits) {
   pb::SmoothTrajectoryRequest request;
   *request.mutable_source()->mutable_grid() = ExplorationGrid();

@@ -5,7 +5,7 @@
 // record of the region map; every theta = 3 records of a region unit trigger an LLM region score
 // (eq. 21-23). The values feed planning's EROI_UTILITY strategy on the same grid. A code whose
 // description names the target itself is also kept as a sighting: the robot goes to look
-// (SightingGoal), since its EROI may hold no unknown cells left to draw the search there.
+// (sighting_goal.h), since its EROI may hold no unknown cells left to draw the search there.
 #pragma once
 
 #include <memory>
@@ -30,7 +30,7 @@ struct EroiSearchConfig {
   // A code the VLM names again adds no evidence: overlapping views of one passage are one
   // observation, not independent ones. false = eq. 20 on every answer, as the seed writes.
   bool evidence_once_per_code = true;
-  // A code whose description names the target is looked at from this far (SightingGoal): within
+  // A code whose description names the target is looked at from this far (sighting_goal.h): within
   // the detector's range (the simulated one's 6 m) with the EROI's cell and an off-by-one code
   // still in view. 0 = sightings are only evidence, as in the seed.
   double inspect_distance_m = 3.0;

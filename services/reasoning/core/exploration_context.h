@@ -56,9 +56,13 @@ struct ExplorationContext {
   Eigen::Vector2d eroi_window_max = Eigen::Vector2d::Zero();
   double eroi_edge_m = 0.0;
   // Where the vision model said it saw the target (EroiSearch::sightings), map frame; the robot
-  // looks from eroi_inspect_distance_m before planning's next goal (SightingGoal).
+  // looks from eroi_inspect_distance_m before the next exploration goal (sighting_goal.h).
   std::vector<Eigen::Vector3d> eroi_sightings;
-  double eroi_inspect_distance_m = 0.0;   // 0 = sightings are not looked at
+  double eroi_inspect_distance_m = 0.0;  // 0 = sightings are not looked at
+  // Set (by PerTaskPathPlanner): planning answers where to look at this sighting from, from
+  // look_distance_m, instead of an exploration goal.
+  std::optional<Eigen::Vector3d> look_at;
+  double look_distance_m = 0.0;
   std::optional<SearchArea> search_area;  // unset = the whole map
 };
 

@@ -1,12 +1,13 @@
 // The PathPlanner each task's executor gets: paths come from the shared planner; exploration goals
 // are asked with the task's strategy and its semantic context (target, scene graph, visited
 // places, commonsense co-occurrence), which the executor itself does not know; a place where the
-// vision model saw the target comes first (SightingGoal). Both carry the
-// live-map age the robot's session accepts.
+// vision model saw the target comes first (NextSighting, looked at from where planning says). Both
+// carry the live-map age the robot's session accepts.
 // Every call to planning goes through the task's RemoteCallRunner, which lets the gateway run it
 // without its lock (docs/algorithms/gateway.md, "Remote calls").
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 
@@ -67,9 +68,9 @@ class PerTaskPathPlanner final : public PathPlanner {
     const ExplorationContext context = context_();
     // A place the vision model saw the target at is looked at before planning's next goal.
     if (context.eroi_inspect_distance_m > 0.0) {
-      if (std::optional<Eigen::Vector3d> look =
-              SightingGoal(context.eroi_sightings, asked, context.eroi_inspect_distance_m)) {
-        return *look;
+      if (std::optional<Eigen::Vector3d> sighting = NextSighting(
+              context.eroi_sightings, asked, context.eroi_inspect_distance_m, looks_)) {
+        return LookGoalFromPlanning(asked, context, *sighting);
       }
     }
     Remote([&] { goal = explorer_->SelectGoal(asked, strategy_, context); });
@@ -78,6 +79,25 @@ class PerTaskPathPlanner final : public PathPlanner {
   std::optional<ExplorationStrategy> strategy() const { return strategy_; }
 
  private:
+  // Planning's goal to look at `sighting` from (it knows the walls); the straight line when
+  // planning has no answer but is there.
+  absl::StatusOr<Eigen::Vector3d> LookGoalFromPlanning(const ExplorationQuery& asked,
+                                                       const ExplorationContext& context,
+                                                       const Eigen::Vector3d& sighting) {
+    ExplorationContext look = context;
+    look.look_at = sighting;
+    look.look_distance_m = context.eroi_inspect_distance_m;
+    absl::StatusOr<Eigen::Vector3d> goal;
+    Remote([&] { goal = explorer_->SelectGoal(asked, strategy_, look); });
+    if (absl::IsUnavailable(goal.status())) return goal;
+    if (!goal.ok()) goal = StraightLookGoal(sighting, asked, context.eroi_inspect_distance_m);
+    // The same answer again adds nothing; the list stays bounded by what the task saw.
+    const bool known = std::any_of(looks_.begin(), looks_.end(), [&](const SightingLook& l) {
+      return l.sighting == sighting && (l.goal - *goal).head<2>().norm() < 0.05;
+    });
+    if (!known && looks_.size() < kMaxLooks) looks_.push_back({sighting, *goal});
+    return goal;
+  }
   void Remote(absl::FunctionRef<void()> call) {
     if (remote_) {
       remote_(call);
@@ -92,6 +112,8 @@ class PerTaskPathPlanner final : public PathPlanner {
   std::function<ExplorationContext()> context_;
   RemoteCallRunner remote_;
   std::function<int()> live_map_max_age_ms_;
+  static constexpr size_t kMaxLooks = 4096;
+  std::vector<SightingLook> looks_;  // goals given to look at sightings
 };
 
 }  // namespace semnav::reasoning

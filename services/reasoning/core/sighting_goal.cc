@@ -3,28 +3,53 @@
 #include <algorithm>
 
 namespace semnav::reasoning {
+namespace {
 
-std::optional<Eigen::Vector3d> SightingGoal(const std::vector<Eigen::Vector3d>& sightings,
+bool NearAny(const std::vector<Eigen::Vector3d>& goals, const Eigen::Vector2d& place,
+             double radius) {
+  return std::any_of(goals.begin(), goals.end(), [&](const Eigen::Vector3d& goal) {
+    return (goal.head<2>() - place).norm() <= radius;
+  });
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector3d> NextSighting(const std::vector<Eigen::Vector3d>& sightings,
                                             const ExplorationQuery& query,
-                                            double inspect_distance_m) {
+                                            double inspect_distance_m,
+                                            const std::vector<SightingLook>& looks) {
   const Eigen::Vector2d robot = query.pose.position.head<2>();
-  const double looked_at = inspect_distance_m + query.excluded_radius_m;
-  std::optional<Eigen::Vector2d> nearest;
+  const auto spent = [&](const Eigen::Vector3d& sighting) {
+    if (NearAny(query.excluded_goals, sighting.head<2>(),
+                inspect_distance_m + query.excluded_radius_m)) {
+      return true;
+    }
+    return std::any_of(looks.begin(), looks.end(), [&](const SightingLook& look) {
+      return look.sighting == sighting &&
+             NearAny(query.excluded_goals, look.goal.head<2>(), query.excluded_radius_m);
+    });
+  };
+  std::optional<Eigen::Vector3d> nearest;
   for (const Eigen::Vector3d& sighting : sightings) {
-    const Eigen::Vector2d place = sighting.head<2>();
-    const bool spent = std::any_of(
-        query.excluded_goals.begin(), query.excluded_goals.end(),
-        [&](const Eigen::Vector3d& goal) { return (goal.head<2>() - place).norm() <= looked_at; });
-    if (!spent && (!nearest.has_value() || (place - robot).norm() < (*nearest - robot).norm()))
-      nearest = place;
+    if (spent(sighting)) continue;
+    if (!nearest.has_value() ||
+        (sighting.head<2>() - robot).norm() < (nearest->head<2>() - robot).norm()) {
+      nearest = sighting;
+    }
   }
-  if (!nearest.has_value()) return std::nullopt;
-  const Eigen::Vector2d away = robot - *nearest;
+  return nearest;
+}
+
+Eigen::Vector3d StraightLookGoal(const Eigen::Vector3d& sighting, const ExplorationQuery& query,
+                                 double inspect_distance_m) {
+  const Eigen::Vector2d robot = query.pose.position.head<2>();
+  const Eigen::Vector2d place = sighting.head<2>();
+  const Eigen::Vector2d away = robot - place;
   const double distance = away.norm();
   const Eigen::Vector2d goal =
       distance <= inspect_distance_m
           ? robot
-          : Eigen::Vector2d(*nearest + away * (inspect_distance_m / distance));
+          : Eigen::Vector2d(place + away * (inspect_distance_m / distance));
   return Eigen::Vector3d(goal.x(), goal.y(), query.pose.position.z());
 }
 

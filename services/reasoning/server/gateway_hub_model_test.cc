@@ -579,8 +579,9 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
 // depth camera had already mapped, so no viewpoint there had information gain and the UAV flew
 // elsewhere (with a start turn, a bench 8.6 m from road start 4 was named three times, and found
 // after 180 m). With sighting_namings 2, two answers naming the target at one code now send the
-// robot to look at it from 3 m, before planning is asked again (1, the default, sends it at once).
-TEST(GatewayHubEroiTest, ATargetTheModelNamedTwiceIsLookedAtBeforePlanningIsAsked) {
+// robot to look at it from 3 m, before the next exploration goal (1, the default, sends it at
+// once).
+TEST(GatewayHubEroiTest, ATargetTheModelNamedTwiceIsLookedAtBeforeTheNextExplorationGoal) {
   GatewayConfig config;
   EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0)
   eroi.grid.delta = 2.0;
@@ -606,10 +607,15 @@ TEST(GatewayHubEroiTest, ATargetTheModelNamedTwiceIsLookedAtBeforePlanningIsAske
       fixture.hub.OnCameraFrame(&fixture.session, Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 2.5))
           .ok());
   fixture.model.Reply(1, "Code: C2A, Description: the backpack");
-  // C2A's centre is (4, 2); the robot stands at (0, 0): 3 m short of it is (4, 2) - 3 (4, 2) /
-  // |(4, 2)| = (1.317, 0.658), and planning is not asked.
+  // C2A's centre is (4, 2): planning is asked where to look at it from, 3 m away. This planning
+  // has no answer, so the straight line from the robot at (0, 0) is left: (4, 2) - 3 (4, 2) /
+  // |(4, 2)| = (1.317, 0.658).
   Reached(fixture.hub, fixture.session, fixture.session.Last());
-  EXPECT_EQ(fixture.explorer.contexts.size(), 2u);
+  ASSERT_EQ(fixture.explorer.contexts.size(), 3u);
+  ASSERT_TRUE(fixture.explorer.contexts[2].look_at.has_value());
+  EXPECT_NEAR(fixture.explorer.contexts[2].look_at->x(), 4.0, 1e-9);
+  EXPECT_NEAR(fixture.explorer.contexts[2].look_at->y(), 2.0, 1e-9);
+  EXPECT_DOUBLE_EQ(fixture.explorer.contexts[2].look_distance_m, 3.0);
   const api::RobotCommand look = fixture.session.Last();
   ASSERT_TRUE(look.has_navigate()) << look.DebugString();
   EXPECT_NEAR(look.navigate().goal().x(), 4.0 - 12.0 / std::sqrt(20.0), 1e-6);

@@ -246,8 +246,10 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
   const pb::ExplorationStrategy chosen = ToProto(strategy.value_or(settings_.exploration_strategy));
   // COVERAGE_MAX (a point ahead of the robot) and EROI_UTILITY (a viewpoint route) have no
   // frontier to see cleared: their goals are driven to the end, so the goal to keep is the answer.
-  if (query.keep_goal.has_value() && (chosen == pb::EXPLORATION_STRATEGY_COVERAGE_MAX ||
-                                      chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY)) {
+  const bool look = context.look_at.has_value();
+  if (!look && query.keep_goal.has_value() &&
+      (chosen == pb::EXPLORATION_STRATEGY_COVERAGE_MAX ||
+       chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY)) {
     return *query.keep_goal;
   }
   request.set_strategy(chosen);
@@ -262,17 +264,22 @@ absl::StatusOr<Eigen::Vector3d> PlanningClient::SelectGoal(
   }
   for (const Eigen::Vector3d& place : context.visited)
     SetPose(place, request.mutable_semantics()->add_visited());
+  // A look needs the whole live map, not the EROI window.
   const bool eroi_values =
-      chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
+      !look && chosen == pb::EXPLORATION_STRATEGY_EROI_UTILITY && !context.eroi_values.empty();
   if (eroi_values) AddEroiValues(context, &request);
   for (const Eigen::Vector3d& goal : query.excluded_goals)
     SetPose(goal, request.add_excluded_goals());
   request.set_excluded_radius_m(query.excluded_radius_m);
   request.set_robot_radius_m(query.robot_radius_m);
   request.set_clearance_m(query.clearance_m);
-  if (query.keep_goal.has_value()) {
+  if (query.keep_goal.has_value() && !look) {
     SetPose(*query.keep_goal, request.mutable_keep_goal());
     request.set_keep_radius_m(query.keep_radius_m);
+  }
+  if (look) {
+    SetPose(*context.look_at, request.mutable_look_at());
+    request.set_look_distance_m(context.look_distance_m);
   }
   if (context.search_area.has_value()) {
     pb::SearchArea* area = request.mutable_search_area();

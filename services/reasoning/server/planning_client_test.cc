@@ -196,6 +196,36 @@ TEST_F(GatewayPlanningClientTest, TheGoalToKeepReachesTheFrontierStrategiesOnly)
   EXPECT_EQ(planning_.requests[0].keep_radius_m(), 0.75);
 }
 
+// A look at a sighting goes to planning even with a goal to keep (EROI_UTILITY keeps its goal
+// without a call otherwise), over the whole live map (no EROI window or values), with the
+// sighting and the distance and no goal to keep.
+TEST_F(GatewayPlanningClientTest, ALookAtASightingAlwaysAsksPlanningOverTheWholeMap) {
+  RobotPose pose;
+  pose.position = Eigen::Vector3d(1.0, 2.0, 1.5);
+  const ExplorationQuery query{
+      pose, {}, 1.0, RobotPlatform::kAerial, Eigen::Vector3d(7.0, -2.0, 1.5), 0.75};
+  ExplorationContext context;
+  context.eroi_values = {0.25, 0.75};
+  context.eroi_window_min = Eigen::Vector2d(-1.0, -1.0);
+  context.eroi_window_max = Eigen::Vector2d(3.0, 1.0);
+  context.eroi_edge_m = 2.0;
+  context.look_at = Eigen::Vector3d(9.0, 5.0, 0.0);
+  context.look_distance_m = 3.0;
+  absl::StatusOr<Eigen::Vector3d> goal =
+      client_->SelectGoal(query, ExplorationStrategy::kEroiUtility, context);
+  ASSERT_TRUE(goal.ok()) << goal.status();
+  EXPECT_TRUE(goal->isApprox(Eigen::Vector3d(4.0, -1.0, 1.5)));  // planning's answer
+  absl::MutexLock lock(&planning_.mu);
+  ASSERT_EQ(planning_.requests.size(), 1u);
+  const pb::SelectExplorationGoalRequest& request = planning_.requests[0];
+  EXPECT_EQ(request.look_at().x(), 9.0);
+  EXPECT_EQ(request.look_at().y(), 5.0);
+  EXPECT_EQ(request.look_distance_m(), 3.0);
+  EXPECT_FALSE(request.has_keep_goal());
+  EXPECT_EQ(request.eroi_semantic_values_size(), 0);
+  EXPECT_FALSE(request.source().live_map().has_window_min());
+}
+
 // Issue "Fleet and faults": planning or mapping gone is UNAVAILABLE naming it, so the task
 // pauses; it used to be an empty path (robot-local planning) and NOT_FOUND (a blind step).
 TEST_F(GatewayPlanningClientTest, PlanningOrMappingGoneIsUnavailableNamingIt) {
