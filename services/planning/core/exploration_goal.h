@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -34,6 +35,11 @@ struct ExplorationGrid {
   }
   Point2 CentreOf(double col, double row) const {
     return {origin_x + (col + 0.5) * resolution_m, origin_y + (row + 0.5) * resolution_m};
+  }
+  // The cell a map-frame point lies in (off the grid for a point outside it).
+  Cell CellOf(Point2 p) const {
+    return {static_cast<int>(std::floor((p.x - origin_x) / resolution_m)),
+            static_cast<int>(std::floor((p.y - origin_y) / resolution_m))};
   }
 };
 

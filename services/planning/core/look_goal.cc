@@ -23,11 +23,6 @@ double ExitDistance(Point2 from, Point2 dir, Point2 lo, Point2 hi) {
   return std::max(0.0, t);
 }
 
-Cell CellOf(const ExplorationGrid& grid, Point2 p) {
-  return {static_cast<int>(std::floor((p.x - grid.origin_x) / grid.resolution_m)),
-          static_cast<int>(std::floor((p.y - grid.origin_y) / grid.resolution_m))};
-}
-
 bool KnownFree(const ExplorationGrid& grid, Cell c) {
   return grid.explored.Contains(c) && grid.explored.at(c) != 0 && IsFree(grid.free, c.x, c.y);
 }
@@ -54,10 +49,10 @@ Point2 LookGoal(const ExplorationGrid& grid, Point2 robot, Point2 sighting,
   const Point2 hi{grid.origin_x + grid.explored.width() * res,
                   grid.origin_y + grid.explored.height() * res};
   const double walk = std::min(length, ExitDistance(robot, dir, lo, hi));
-  const Cell start = CellOf(grid, robot);
+  const Cell start = grid.CellOf(robot);
   std::vector<double> blocked;  // along the line, metres (cell centres)
   std::vector<double> free;
-  for (const Cell& c : LineCells(start, CellOf(grid, at(walk)))) {
+  for (const Cell& c : LineCells(start, grid.CellOf(at(walk)))) {
     // The robot's own cell is not in front of it (mapping may mark a wall it stands beside).
     if (c.x == start.x && c.y == start.y) continue;
     const Point2 centre = grid.CentreOf(c);
@@ -75,7 +70,7 @@ Point2 LookGoal(const ExplorationGrid& grid, Point2 robot, Point2 sighting,
   const bool blocked_before =
       std::any_of(blocked.begin(), blocked.end(), [&](double b) { return b < straight + keep; });
   if (!blocked_before) return at(straight);
-  if (KnownFree(grid, CellOf(grid, at(straight))) && clear_of_blocked(straight)) {
+  if (KnownFree(grid, grid.CellOf(at(straight))) && clear_of_blocked(straight)) {
     return at(straight);
   }
   std::optional<double> best;
