@@ -54,7 +54,7 @@ Point2 LookGoal(const ExplorationGrid& grid, Point2 robot, Point2 sighting,
   std::vector<double> free;
   for (const Cell& c : LineCells(start, grid.CellOf(at(walk)))) {
     // The robot's own cell is not in front of it (mapping may mark a wall it stands beside).
-    if (c.x == start.x && c.y == start.y) continue;
+    if (c == start) continue;
     const Point2 centre = grid.CentreOf(c);
     const double along = (centre.x - robot.x) * dir.x + (centre.y - robot.y) * dir.y;
     if (KnownBlocked(grid, c)) blocked.push_back(along);

@@ -1,12 +1,13 @@
 // Where a robot goes to look at a place its vision model said it saw the target (a sighting).
-// The straight look is `distance_m` short of the sighting on the line from the robot. Where that
-// point lies in space the map has not seen and a wall the map knows stands on the line before it,
-// the point may be inside a building (a code printed on an EROI inside it; campus_quad, seed 1,
-// start 2: the UAV flew round the library into its walls three times on the straight look). The
-// look then goes to the seed-004 alternative point (alternative_point.h) on the line to the
-// sighting: the cell the map knows is free, `clearance_m` from every blocked cell on the line,
-// nearest to the straight look. A straight look in seen free space stands: a low bridge or a
-// tree on the line is flown round, and the target beyond it stays in view.
+// The straight look is `distance_m` short of the sighting on the line from the robot. Where a
+// cell the map knows is blocked stands on the line before that point (or within the clearance of
+// it) and the point is unseen, it may be inside a building (a code printed on an EROI inside it;
+// campus_quad, seed 1, start 2: the UAV flew round the library into its walls three times on the
+// straight look). The look then goes to the seed-004 alternative point (alternative_point.h) on the
+// line to the sighting: the cell the map knows is free, `clearance_m` from every blocked cell on
+// the line, nearest to the straight look. A straight look in seen free space clear of blocked cells
+// stands, and the nearest cell may lie beyond a blocked one: a low bridge or a tree the map has
+// seen past is flown round, and the target beyond it stays in view.
 #pragma once
 
 #include "services/planning/core/exploration_goal.h"

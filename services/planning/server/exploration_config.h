@@ -30,10 +30,10 @@ struct ExplorationConfig {
   // smallest target of the seed-000 scenes; smaller pockets are depth noise (our choice, the seed
   // gives no floor).
   double eroi_min_gain_m2 = 1.0;
-  // A look at a sighting (SelectExplorationGoalRequest.look_at) stops this far before the first
-  // known-blocked cell on its line: a UAV's 0.3 m radius, the executor's re-plan clearance up to
-  // 0.4 m, and the rest for the map's one-cell error (look_goal.h). The caller's robot radius
-  // plus clearance, when larger, wins.
+  // A look at a sighting (SelectExplorationGoalRequest.look_at) moved off its straight line keeps
+  // this far from the blocked cells on that line: a UAV's 0.3 m radius, the executor's re-plan
+  // clearance up to 0.4 m, and the rest for the map's one-cell error (look_goal.h). The caller's
+  // robot radius plus clearance, when larger, wins.
   double look_clearance_m = 1.0;
 
   EroiConfig EroiInCells(double resolution_m) const;

@@ -254,7 +254,8 @@ absl::Status LookOn(const GridMap& grid, const std::string& field,
       BuildView(grid, field, request.robot(), 0, "min_frontier_cells", request.semantics(), config);
   if (!view.ok()) return view.status();
   const LookGoalConfig look{
-      .distance_m = request.look_distance_m() > 0.0 ? request.look_distance_m() : 3.0,
+      .distance_m =
+          request.look_distance_m() > 0.0 ? request.look_distance_m() : LookGoalConfig{}.distance_m,
       .clearance_m = std::max(config.exploration.look_clearance_m,
                               request.robot_radius_m() + request.clearance_m())};
   const Point2 robot = ToPoint(request.robot());

@@ -24,7 +24,7 @@ struct SightingLook {
 // The nearest sighting not yet looked at; nullopt when none is left. A sighting counts as looked
 // at once a spent goal (`query.excluded_goals`) lies within inspect_distance_m +
 // query.excluded_radius_m of it, or within query.excluded_radius_m of a goal `looks` gave for it
-// (a look cut short before a wall ends farther from the sighting).
+// (a look planning moved off the straight line, before a wall, ends farther from the sighting).
 std::optional<Eigen::Vector3d> NextSighting(const std::vector<Eigen::Vector3d>& sightings,
                                             const ExplorationQuery& query,
                                             double inspect_distance_m,
