@@ -23,12 +23,8 @@ double ExitDistance(Point2 from, Point2 dir, Point2 lo, Point2 hi) {
   return std::max(0.0, t);
 }
 
-bool KnownFree(const ExplorationGrid& grid, Cell c) {
-  return grid.explored.Contains(c) && grid.explored.at(c) != 0 && IsFree(grid.free, c.x, c.y);
-}
-
-bool KnownBlocked(const ExplorationGrid& grid, Cell c) {
-  return grid.explored.Contains(c) && grid.explored.at(c) != 0 && !IsFree(grid.free, c.x, c.y);
+bool Seen(const ExplorationGrid& grid, Cell c) {
+  return grid.explored.Contains(c) && grid.explored.at(c) != 0;
 }
 
 }  // namespace
@@ -57,8 +53,7 @@ Point2 LookGoal(const ExplorationGrid& grid, Point2 robot, Point2 sighting,
     if (c == start) continue;
     const Point2 centre = grid.CentreOf(c);
     const double along = (centre.x - robot.x) * dir.x + (centre.y - robot.y) * dir.y;
-    if (KnownBlocked(grid, c)) blocked.push_back(along);
-    if (KnownFree(grid, c)) free.push_back(along);
+    if (Seen(grid, c)) (IsFree(grid.free, c.x, c.y) ? free : blocked).push_back(along);
   }
   // A blocked cell is kept clear of by the clearance plus half its diagonal (where the line may
   // enter it).
@@ -70,7 +65,9 @@ Point2 LookGoal(const ExplorationGrid& grid, Point2 robot, Point2 sighting,
   const bool blocked_before =
       std::any_of(blocked.begin(), blocked.end(), [&](double b) { return b < straight + keep; });
   if (!blocked_before) return at(straight);
-  if (KnownFree(grid, grid.CellOf(at(straight))) && clear_of_blocked(straight)) {
+  const Cell straight_cell = grid.CellOf(at(straight));
+  if (Seen(grid, straight_cell) && IsFree(grid.free, straight_cell.x, straight_cell.y) &&
+      clear_of_blocked(straight)) {
     return at(straight);
   }
   std::optional<double> best;

@@ -21,6 +21,16 @@ namespace pb = semnav::planning::v1;
 using semnav::common::v1::GridMap;
 using semnav::common::v1::Pose2D;
 
+// The field an INVALID_ARGUMENT refusal names in its ErrorInfo; a test failure, and "", for any
+// other status or a refusal without one.
+std::string RefusedField(const grpc::Status& status) {
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << status.error_message();
+  const std::optional<semnav::common::v1::ErrorInfo> info =
+      GetDetail<semnav::common::v1::ErrorInfo>(status);
+  EXPECT_TRUE(info.has_value()) << status.error_message();
+  return info.has_value() ? info->field() : "";
+}
+
 // 1 m cells, origin (-1, -2), row 0 lowest: '.' explored free, '#' explored
 // structure, '?' unexplored.
 const std::vector<std::string> kRows = {
@@ -161,11 +171,7 @@ TEST_F(ExplorationContract, ScoreFrontiersNamesTheBadField) {
     pb::ScoreFrontiersResponse response;
     grpc::ClientContext context;
     const grpc::Status status = Stub()->ScoreFrontiers(&context, request, &response);
-    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << field;
-    std::optional<semnav::common::v1::ErrorInfo> info =
-        GetDetail<semnav::common::v1::ErrorInfo>(status);
-    ASSERT_TRUE(info.has_value()) << field;
-    EXPECT_EQ(info->field(), field);
+    EXPECT_EQ(RefusedField(status), field);
   }
   // No frontiers: nothing to score, nothing best.
   pb::ScoreFrontiersResponse response;
@@ -208,10 +214,7 @@ TEST_F(ExplorationContract, ARobotJustOutsideTheMapItDrewGetsAGoal) {
   *request.mutable_robot() = CellCentre(-3, 0);
   grpc::ClientContext far_context;
   const grpc::Status far = Stub()->SelectExplorationGoal(&far_context, request, &response);
-  EXPECT_EQ(far.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(far);
-  ASSERT_TRUE(info.has_value());
-  EXPECT_EQ(info->field(), "robot");
+  EXPECT_EQ(RefusedField(far), "robot");
 }
 
 TEST_F(ExplorationContract, AGroundRobotsGoalIsWhereItsFootprintStands) {
@@ -403,10 +406,7 @@ TEST_F(ExplorationContract, SemanticFrontierTakesTheDiscountOnlyOnConfiguredPlat
   request.set_platform(static_cast<pb::ExplorationPlatform>(42));
   grpc::ClientContext bad_context;
   const grpc::Status bad = stub->SelectExplorationGoal(&bad_context, request, &response);
-  EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info = GetDetail<semnav::common::v1::ErrorInfo>(bad);
-  ASSERT_TRUE(info.has_value());
-  EXPECT_EQ(info->field(), "platform");
+  EXPECT_EQ(RefusedField(bad), "platform");
 
   // An unknown platform name in the config is refused at start, naming the key.
   const std::string wrong = ::testing::TempDir() + "/planning_discount_wrong.yaml";
@@ -460,11 +460,7 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
   bad.add_eroi_semantic_values(0.5);  // the grid has 4 x 3 EROIs of 2 m
   grpc::ClientContext bad_context;
   const grpc::Status status = Stub()->SelectExplorationGoal(&bad_context, bad, &response);
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info =
-      GetDetail<semnav::common::v1::ErrorInfo>(status);
-  ASSERT_TRUE(info.has_value());
-  EXPECT_EQ(info->field(), "eroi_semantic_values");
+  EXPECT_EQ(RefusedField(status), "eroi_semantic_values");
 
   // The caller's EROI edge: 12 values fit 2 m EROIs, not 4 m ones (2 x 2 of them); an edge below
   // 0.1 m is refused by field.
@@ -478,10 +474,7 @@ TEST_F(ExplorationContract, EroiUtilityAndItsBadInput) {
   wide.set_eroi_size_m(0.05);
   grpc::ClientContext tiny_context;
   const grpc::Status tiny = Stub()->SelectExplorationGoal(&tiny_context, wide, &response);
-  EXPECT_EQ(tiny.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  info = GetDetail<semnav::common::v1::ErrorInfo>(tiny);
-  ASSERT_TRUE(info.has_value());
-  EXPECT_EQ(info->field(), "eroi_size_m");
+  EXPECT_EQ(RefusedField(tiny), "eroi_size_m");
 }
 
 TEST_F(ExplorationContract, ALookAtASightingGoesRoundTheStructureTheMapKnows) {
@@ -520,11 +513,8 @@ TEST_F(ExplorationContract, ALookAtASightingGoesRoundTheStructureTheMapKnows) {
        {std::pair{bad_point, "look_at"}, std::pair{bad_distance, "look_distance_m"}}) {
     grpc::ClientContext bad_context;
     const grpc::Status refused = Stub()->SelectExplorationGoal(&bad_context, bad, &response);
-    EXPECT_EQ(refused.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-    std::optional<semnav::common::v1::ErrorInfo> info =
-        GetDetail<semnav::common::v1::ErrorInfo>(refused);
-    ASSERT_TRUE(info.has_value());
-    EXPECT_EQ(info->field().rfind(field, 0), 0u) << info->field();
+    const std::string named = RefusedField(refused);
+    EXPECT_EQ(named.rfind(field, 0), 0u) << named;
   }
 }
 
@@ -548,11 +538,7 @@ TEST_F(ExplorationContract, SmoothTrajectoryRespectsTheLimits) {
   *blocked.mutable_path(1) = CellCentre(2, 2);  // structure
   grpc::ClientContext bad_context;
   const grpc::Status status = Stub()->SmoothTrajectory(&bad_context, blocked, &response);
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  std::optional<semnav::common::v1::ErrorInfo> info =
-      GetDetail<semnav::common::v1::ErrorInfo>(status);
-  ASSERT_TRUE(info.has_value());
-  EXPECT_EQ(info->field(), "path[1]");
+  EXPECT_EQ(RefusedField(status), "path[1]");
 }
 
 }  // namespace
