@@ -462,7 +462,18 @@ std::vector<RobotCommand> TaskExecutor::Explore(double now) {
     return GoToBestCandidate(now);
   if (current().type != SubgoalType::kExplore && TakeLabelledCandidate())
     return GoForCandidate(now);
-  if (progress_.explore_goals >= config_.max_explore_goals) {
+  // What ends a search: a task with a time budget searches until it is spent (the step budget of
+  // Habitat's ObjectNav, VLFM and ApexNav); one without stops after max_explore_goals. A goal
+  // count alone charges a strategy by the shortness of its legs: seed 000's search flies short
+  // hops between the regions the model names, and stopped on the 30th with a fifth of the budget
+  // left. An exploration step of a plan keeps the count: the steps after it need the time.
+  const bool budget_ends_search =
+      config_.time_budget_s > 0.0 && current().type != SubgoalType::kExplore;
+  if (budget_ends_search && now - start_time_ >= config_.time_budget_s) {
+    return Fail(absl::StrCat("target not found in the time budget (", progress_.explore_goals,
+                             " exploration goals)"));
+  }
+  if (!budget_ends_search && progress_.explore_goals >= config_.max_explore_goals) {
     if (current().type == SubgoalType::kExplore) return NextSubgoal(now, "exploration budget used");
     return Fail(
         absl::StrCat("target not found after ", progress_.explore_goals, " exploration goals"));

@@ -68,8 +68,9 @@ struct ExecutorConfig {
   double reach_detour_slack_m = 3.0;
   int max_replans = 3;                      // failures to reach one target before it is set aside
   double explore_exclusion_radius_m = 1.0;  // a failed exploration goal blocks frontiers this close
-  int max_explore_goals =
-      30;  // exploration goals per search before giving up (failed ones do not count)
+  // Exploration goals per search before giving up (failed ones do not count), for a task
+  // without a time budget and for a plan's exploration step; a budgeted search runs to its end.
+  int max_explore_goals = 30;
   // While driving to an exploration goal, planning is asked again this often (simulated or
   // robot seconds): a frontier seen from afar is cleared before the robot gets there, and a new
   // detection can make another one worth more (VLFM and ApexNav choose again every step). The
@@ -154,6 +155,7 @@ struct ExecutorConfig {
   // one by one.
   double unreachable_region_m = 2.0;
   // The task's time budget, seconds from Start (0 = none: real robots run until cancelled).
+  // A search with a budget runs until it is spent instead of max_explore_goals.
   // With less than endgame_s left and no accepted target, the robot goes to the best candidate
   // seen (the fast path's best label match, even below its threshold) instead of a new frontier.
   double time_budget_s = 0.0;

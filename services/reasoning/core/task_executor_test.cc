@@ -1044,6 +1044,44 @@ TEST_F(GatewayTaskExecutorTest, FailedExplorationGoalIsExcludedAndExplorationGoe
   EXPECT_EQ(task.progress().explore_goals, 1);  // goals never reached do not use the budget
 }
 
+// Regression (issue 15, drawn world yard_parking, seed 1): seed 000's search flies short hops
+// between the regions the model names, and 6 of its 7 lost episodes there ended on the 30th
+// exploration goal with 30-90 s of the 250 s budget left. A task with a time budget searches
+// until the budget is spent; without one, the goal count ends it as before.
+TEST_F(GatewayTaskExecutorTest, ABudgetedSearchRunsPastTheGoalCountUntilTheBudgetIsSpent) {
+  for (const double budget_s : {0.0, 100.0}) {
+    SCOPED_TRACE(budget_s);
+    planner_.frontiers = {Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(4, 0, 0),
+                          Eigen::Vector3d(6, 0, 0), Eigen::Vector3d(8, 0, 0)};
+    ExecutorConfig config;
+    config.max_explore_goals = 2;
+    config.time_budget_s = budget_s;
+    config.endgame_s = 0.0;
+    TaskExecutor task = Make(FindTarget(), config);
+    std::vector<RobotCommand> out = task.Start(0, At(0));
+    for (int goal = 1; goal <= 3; ++goal) {  // each reached 10 s after the last
+      ASSERT_EQ(out.size(), 1u);
+      ASSERT_EQ(out[0].kind, CommandKind::kNavigate);
+      task.OnPose(10.0 * goal, At(2.0 * goal));
+      out = task.OnFeedback(10.0 * goal, out[0].id, RobotFeedback::kGoalReached);
+      if (budget_s == 0.0 && goal == 2) break;
+    }
+    if (budget_s == 0.0) {  // the 2 goals are used: the search ends at 20 s
+      EXPECT_EQ(task.progress().state, TaskState::kFailed);
+      EXPECT_EQ(task.progress().reason, "target not found after 2 exploration goals");
+      continue;
+    }
+    EXPECT_EQ(task.progress().state, TaskState::kRunning);  // the fourth goal at 30 s
+    EXPECT_EQ(task.progress().explore_goals, 4);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(8, 0, 0))) << out[0].goal.transpose();
+    task.OnPose(100, At(8));  // reached as the budget runs out
+    out = task.OnFeedback(100, out[0].id, RobotFeedback::kGoalReached);
+    EXPECT_EQ(task.progress().state, TaskState::kFailed);
+    EXPECT_EQ(task.progress().reason, "target not found in the time budget (4 exploration goals)");
+  }
+}
+
 // Regression (fleet bench, command p99 3.2 s): once the robot faced the target, VERIFY sent it
 // nothing until detections confirmed it, so the robot's GOAL_REACHED went unanswered for seconds.
 // Now every report is answered at once: a hold for the rest of the window, which the executor's
