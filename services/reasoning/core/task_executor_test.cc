@@ -1082,6 +1082,30 @@ TEST_F(GatewayTaskExecutorTest, ABudgetedSearchRunsPastTheGoalCountUntilTheBudge
   }
 }
 
+// A plan's explore steps keep the goal count under a time budget: the steps after them need the
+// time. With one goal allowed, the second explore step is skipped and the plan goes on.
+TEST_F(GatewayTaskExecutorTest, APlansExploreStepsKeepTheGoalCountUnderATimeBudget) {
+  planner_.frontiers = {Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(4, 0, 0)};
+  std::vector<Subgoal> plan(3);
+  plan[0].type = SubgoalType::kExplore;
+  plan[1].type = SubgoalType::kExplore;
+  plan[2].type = SubgoalType::kWait;
+  plan[2].duration_s = 5.0;
+  ExecutorConfig config;
+  config.max_explore_goals = 1;
+  config.time_budget_s = 100.0;
+  TaskExecutor task = Make(plan, config);
+  std::vector<RobotCommand> out = task.Start(0, At(0));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].goal.isApprox(Eigen::Vector3d(2, 0, 0)));
+  task.OnPose(10, At(2));
+  out = task.OnFeedback(10, out[0].id, RobotFeedback::kGoalReached);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, CommandKind::kHold);  // the second explore step was skipped
+  EXPECT_EQ(current_type(task), SubgoalType::kWait);
+  EXPECT_EQ(task.progress().explore_goals, 1);
+}
+
 // Regression (fleet bench, command p99 3.2 s): once the robot faced the target, VERIFY sent it
 // nothing until detections confirmed it, so the robot's GOAL_REACHED went unanswered for seconds.
 // Now every report is answered at once: a hold for the rest of the window, which the executor's
