@@ -292,7 +292,10 @@ int main(int argc, char** argv) {
           << "modelproxy:\n  backends:\n    sim-vlm:\n      kind: openai\n      base_url: \""
           << (*endpoint)->base_url()
           << "\"\n      model: sim-vlm\n      retry: {max_attempts: 1}\n  aliases:\n    default: "
-             "[sim-vlm, offline]\n";
+             "[sim-vlm, offline]\n"
+             // No answer cache: a question an earlier episode on this stack asked would be
+             // answered at once, so an episode would depend on which ran before it (--jobs, load).
+             "  cache: {capacity: 0}\n";
       endpoints.push_back(*std::move(endpoint));
     }
     absl::StatusOr<std::unique_ptr<loop::SimStack>> stack = loop::SimStack::Start(options);
@@ -370,13 +373,15 @@ int main(int argc, char** argv) {
       std::string model_line;
       if (sim_model) {
         const sim::vlm::SimVlmServer::Served after = endpoints[worker]->served();
-        model_line = absl::StrFormat(
-            " model: %d calls (gateway), %d answers, %d tokens, %.1f s model time",
-            result->record.model_calls, after.answers - model_before.answers,
-            after.tokens - model_before.tokens, after.latency_s - model_before.latency_s);
+        const double model_s =
+            static_cast<double>(after.latency_ms - model_before.latency_ms) / 1000.0;
+        model_line =
+            absl::StrFormat(" model: %d calls (gateway), %d answers, %d tokens, %.1f s model time",
+                            result->record.model_calls, after.answers - model_before.answers,
+                            after.tokens - model_before.tokens, model_s);
         log << "model:" << model_line << "\n";
         result->record.model_tokens = after.tokens - model_before.tokens;
-        result->record.model_wait_s = after.latency_s - model_before.latency_s;
+        result->record.model_wait_s = model_s;
         result->record.vision_calls = after.vision_answers - model_before.vision_answers;
       }
       if (absl::Status s =

@@ -169,6 +169,9 @@ SimVlm::TextEmbedding SimVlm::EmbedText(absl::string_view text) const {
   out.vector = NoisyEmbedding(
       ClassEmbedding(out.concept_name, config_.embedding_dim, config_.embedding_seed),
       config_.text_embedding_noise, rng);
+  const SimVlmLatency& l = config_.latency;
+  out.latency_s =
+      std::round(1000.0 * LogNormal(rng, l.embedding_median_s, l.sigma, l.max_s)) / 1000.0;
   return out;
 }
 
@@ -237,7 +240,8 @@ std::string SimVlm::AnswerRegionScore(absl::string_view target,
   return absl::StrCat(score);
 }
 
-absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_json) const {
+absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_json,
+                                                      uint64_t* content_key) const {
   const nlohmann::json task = nlohmann::json::parse(task_json, nullptr, false);
   if (!task.is_object() || !task.contains("candidates") || !task["candidates"].is_array() ||
       !task.value("target", nlohmann::json()).is_string()) {
@@ -245,7 +249,15 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
   }
   const std::string target = task["target"].get<std::string>();
   const std::string known_class = KnownClassOf(target);  // "复印机": a printer
-  Rng rng(MixSeed(config_.seed, HashString(std::string(task_json))));
+  std::string content = target;
+  for (const nlohmann::json& candidate : task["candidates"]) {
+    if (!candidate.is_object())
+      return absl::InvalidArgumentError("match_target: a candidate is not an object");
+    absl::StrAppend(&content, "\n", candidate.value("label", ""), "\t",
+                    candidate.value("description", ""));
+  }
+  *content_key = HashString(content);
+  Rng rng(MixSeed(config_.seed, *content_key));
   nlohmann::json ranking = nlohmann::json::array();
   std::string best;
   std::vector<std::string> others;
@@ -271,13 +283,15 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
 absl::StatusOr<VlmReply> SimVlm::Answer(const VlmQuestion& question) const {
   VlmReply reply;
   uint64_t frame_key = 0;
+  uint64_t text_key = HashString(question.text);
   const bool vision = !question.images.empty();
   if (const size_t at = question.text.rfind("{\"candidates\"");
       at != std::string::npos && question.text.find("match_target", at) != std::string::npos) {
     const size_t end = question.text.find('\n', at);
     absl::StatusOr<std::string> answer =
         AnswerMatchTarget(absl::string_view(question.text)
-                              .substr(at, end == std::string::npos ? std::string::npos : end - at));
+                              .substr(at, end == std::string::npos ? std::string::npos : end - at),
+                          &text_key);
     if (!answer.ok()) return answer.status();
     reply.text = *std::move(answer);
   } else if (question.text.find("Output the code") != std::string::npos) {
@@ -298,7 +312,7 @@ absl::StatusOr<VlmReply> SimVlm::Answer(const VlmQuestion& question) const {
     return absl::InvalidArgumentError(
         "the simulated model answers the search, region-score and match_target prompts");
   }
-  Rng rng(MixSeed(MixSeed(config_.seed ^ 0x5ca1ab1e, HashString(question.text)), frame_key));
+  Rng rng(MixSeed(MixSeed(config_.seed ^ 0x5ca1ab1e, text_key), frame_key));
   const SimVlmLatency& l = config_.latency;
   // Whole milliseconds, so the stated header value is exact.
   reply.latency_s = std::round(1000.0 * LogNormal(rng, vision ? l.vision_median_s : l.text_median_s,

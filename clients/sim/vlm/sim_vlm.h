@@ -88,6 +88,7 @@ class SimVlm {
   struct TextEmbedding {
     std::vector<float> vector;
     std::string concept_name;
+    double latency_s = 0.0;  // simulated, drawn per (seed, text)
   };
   TextEmbedding EmbedText(absl::string_view text) const;
 
@@ -100,7 +101,11 @@ class SimVlm {
                                            uint64_t* frame_key) const;
   std::string AnswerRegionScore(absl::string_view target,
                                 const std::vector<std::string>& descriptions) const;
-  absl::StatusOr<std::string> AnswerMatchTarget(absl::string_view task_json) const;
+  // `content_key` (out) keys the answer's draws: the target and the candidates' labels and
+  // descriptions in order, not their ids, which mapping numbers over the life of the service, so
+  // an episode's answers do not depend on the episodes mapped before it.
+  absl::StatusOr<std::string> AnswerMatchTarget(absl::string_view task_json,
+                                                uint64_t* content_key) const;
 
   World world_;
   Scene scene_;

@@ -26,9 +26,10 @@ absl::Status ValidateSimVlmConfig(const SimVlmConfig& config) {
     if (absl::Status s = CheckRange(value, field, 0.0, 1.0); !s.ok()) return s;
   }
   const SimVlmLatency& l = config.latency;
-  for (const auto& [value, field] :
-       {std::pair{l.vision_median_s, "latency.vision_median_s"},
-        std::pair{l.text_median_s, "latency.text_median_s"}, std::pair{l.max_s, "latency.max_s"}}) {
+  for (const auto& [value, field] : {std::pair{l.vision_median_s, "latency.vision_median_s"},
+                                     std::pair{l.text_median_s, "latency.text_median_s"},
+                                     std::pair{l.embedding_median_s, "latency.embedding_median_s"},
+                                     std::pair{l.max_s, "latency.max_s"}}) {
     if (absl::Status s = CheckRange(value, field, 1e-6, 600.0); !s.ok()) return s;
   }
   if (absl::Status s = CheckRange(l.sigma, "latency.sigma", 0.0, 3.0); !s.ok()) return s;

@@ -21,6 +21,9 @@ struct SimVlmErrors {
 struct SimVlmLatency {
   double vision_median_s = 1.4;  // mean 1.51 s with sigma 0.4 (seed 000 table 6)
   double text_median_s = 0.32;   // mean 0.35 s (seed 000 table 6)
+  // One call to the text encoder (POST <base>/embeddings): a CLIP-class text tower served on the
+  // ground station answers in tens of milliseconds (assumed; no seed gives a figure).
+  double embedding_median_s = 0.03;
   double sigma = 0.4;
   double max_s = 10.0;
 };

@@ -2,6 +2,8 @@
 // URL, model name, key; the answer's latency is the simulated one the endpoint states.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
 
@@ -82,7 +84,7 @@ TEST(SimVlmProxyTest, SearchPromptThroughTheProxyGetsTheCodeAndTheStatedLatency)
   EXPECT_EQ(served.answers, 1);
   EXPECT_EQ(served.vision_answers, 1);
   EXPECT_EQ(served.tokens, direct->input_tokens + direct->output_tokens);
-  EXPECT_DOUBLE_EQ(served.latency_s, direct->latency_s);
+  EXPECT_EQ(served.latency_ms, std::llround(1000.0 * direct->latency_s));
 
   ::setenv(kKeyEnv, "wrong-key", 1);
   std::unique_ptr<ModelProxy> wrong = ProxyFor((*server)->base_url());
@@ -118,6 +120,13 @@ TEST(SimVlmProxyTest, EmbeddingsThroughTheProxyAreTheTextEncodersVectors) {
   const SimVlmServer::Served served = (*server)->served();
   EXPECT_EQ(served.embedding_answers, 1);
   EXPECT_EQ(served.answers, 0);
+  // The call takes the encoder's stated (simulated) time, the batch's slowest text, not the
+  // proxy's wall time: a simulated robot's episode must not depend on the machine's load.
+  const double stated = std::max((*twin)->EmbedText("backpack").latency_s,
+                                 (*twin)->EmbedText("红色的背包").latency_s);
+  EXPECT_GT(stated, 0.0);
+  EXPECT_EQ(result->latency, absl::Seconds(stated));
+  EXPECT_EQ(served.latency_ms, std::llround(1000.0 * stated));
 }
 
 TEST(SimVlmServerTest, EmbeddingsBodyIsValidatedByField) {

@@ -2,6 +2,8 @@
 
 #include <httplib.h>
 
+#include <algorithm>
+#include <cmath>
 #include <opencv2/imgcodecs.hpp>
 
 #include "absl/strings/escaping.h"
@@ -141,18 +143,24 @@ absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_pt
     }
     nlohmann::json data = nlohmann::json::array();
     int tokens = 0;
+    double latency_s = 0.0;  // the texts of one call are encoded as one batch
     for (size_t i = 0; i < texts->size(); ++i) {
-      data.push_back({{"object", "embedding"},
-                      {"index", i},
-                      {"embedding", model->EmbedText((*texts)[i]).vector}});
+      SimVlm::TextEmbedding embedded = model->EmbedText((*texts)[i]);
+      latency_s = std::max(latency_s, embedded.latency_s);
+      data.push_back(
+          {{"object", "embedding"}, {"index", i}, {"embedding", std::move(embedded.vector)}});
       tokens += 1 + static_cast<int>((*texts)[i].size() / 4);
     }
     {
       absl::MutexLock lock(&self->mu_);
       ++self->served_.embedding_answers;
       self->served_.tokens += tokens;
+      self->served_.latency_ms += std::llround(1000.0 * latency_s);
     }
     const nlohmann::json request = nlohmann::json::parse(req.body, nullptr, false);
+    // Stated like a chat answer's, so the encoder's time is simulated time too: without it the
+    // proxy reported its wall time, and when the embedding arrived depended on the machine's load.
+    res.set_header(modelproxy::kSimulatedLatencyHeader, absl::StrFormat("%.3f", latency_s));
     res.set_content(nlohmann::json{{"object", "list"},
                                    {"data", data},
                                    {"model", request.value("model", "sim-vlm")},
@@ -176,7 +184,7 @@ absl::StatusOr<std::unique_ptr<SimVlmServer>> SimVlmServer::Start(std::unique_pt
       ++self->served_.answers;
       if (!question->images.empty()) ++self->served_.vision_answers;
       self->served_.tokens += reply->input_tokens + reply->output_tokens;
-      self->served_.latency_s += reply->latency_s;
+      self->served_.latency_ms += std::llround(1000.0 * reply->latency_s);
       self->answers_.push_back(reply->text.substr(0, 200));
       if (self->answers_.size() > 1000) self->answers_.pop_front();
     }

@@ -42,7 +42,9 @@ class SimVlmServer {
     int vision_answers = 0;     // of which about an image (the seed-000 search prompt)
     int embedding_answers = 0;  // /embeddings calls answered (not in `answers`)
     int64_t tokens = 0;         // input + output
-    double latency_s = 0.0;     // simulated model time
+    // Simulated model time in whole milliseconds (as stated): per-episode differences of a
+    // running sum of doubles carried the rounding of the episodes before on the stack.
+    int64_t latency_ms = 0;
   };
   Served served() const;
   // The answers served so far, oldest first (at most the last 1000), for episode timelines.

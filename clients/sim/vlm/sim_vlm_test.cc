@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <set>
+#include <string>
+#include <utility>
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
@@ -11,6 +13,7 @@
 #include "clients/sim/core/detector.h"
 #include "clients/sim/vlm/code_reader.h"
 #include "clients/sim/vlm/sim_vlm_test_world.h"
+#include "nlohmann/json.hpp"
 #include "services/common/status/field_error.h"
 #include "services/reasoning/core/search_prompts.h"
 #include "services/reasoning/core/vlm_answer.h"
@@ -359,6 +362,55 @@ TEST(SimVlmTest, RegionScoreAndMatchTarget) {
             absl::StatusCode::kInvalidArgument);
 }
 
+// Mapping numbers objects over the service's life, so the ids a question names depend on the
+// episodes mapped before it on the same stack: the answer and its latency must not.
+TEST(SimVlmTest, MatchTargetAnswerAndLatencyDoNotDependOnTheCandidatesIds) {
+  const World world = SearchWorld();
+  FrameLog log;
+  SimVlmConfig config;
+  config.errors.confusion_rate = 0.5;  // so that the draws decide half of the answers
+  auto model = SimVlm::Create(world, &log, config);
+  ASSERT_TRUE(model.ok());
+  auto ask = [&](int first_id, const std::string& target) {
+    const std::string task =
+        absl::StrCat(R"({"candidates":[{"id":")", first_id, R"(","label":"bench"},{"id":")",
+                     first_id + 1, R"(","label":"backpack"},{"id":")", first_id + 2,
+                     R"(","label":"road"}],"target":")", target, R"(","task":"match_target"})");
+    absl::StatusOr<VlmReply> reply = (*model)->Answer({absl::StrCat("Find it.\n", task), {}});
+    EXPECT_TRUE(reply.ok()) << reply.status();
+    const nlohmann::json answer = nlohmann::json::parse(reply->text);
+    const std::string best = answer["best_id"].get<std::string>();
+    const int chosen = best.empty() ? -1 : std::stoi(best) - first_id;  // candidate index
+    return std::make_pair(chosen, reply->latency_s);
+  };
+  int confused = 0;
+  for (int i = 0; i < 40; ++i) {
+    const std::string target = absl::StrCat("backpack number ", i);
+    const auto fresh = ask(1, target);
+    EXPECT_EQ(ask(57, target), fresh) << target;  // the same episode after 56 earlier objects
+    confused += fresh.first != 1;
+  }
+  EXPECT_GT(confused, 5);  // the draws did decide answers
+  EXPECT_LT(confused, 35);
+}
+
+TEST(SimVlmErrorModelTest, TextEncoderLatencyIsDrawnPerTextAroundItsMedian) {
+  const World world = SearchWorld();
+  FrameLog log;
+  SimVlmConfig config;
+  config.latency.embedding_median_s = 0.03;
+  config.latency.sigma = 0.4;
+  auto model = SimVlm::Create(world, &log, config);
+  ASSERT_TRUE(model.ok());
+  std::vector<double> latencies;
+  for (int i = 0; i < 2000; ++i)
+    latencies.push_back((*model)->EmbedText(absl::StrCat("thing ", i)).latency_s);
+  std::sort(latencies.begin(), latencies.end());
+  EXPECT_NEAR(latencies[1000], 0.03, 0.003);  // the median, in whole milliseconds
+  EXPECT_GT(latencies.front(), 0.0);
+  EXPECT_EQ((*model)->EmbedText("backpack").latency_s, (*model)->EmbedText("backpack").latency_s);
+}
+
 TEST(SimVlmTest, ConfigIsValidated) {
   const World world = SearchWorld();
   FrameLog log;
@@ -370,6 +422,9 @@ TEST(SimVlmTest, ConfigIsValidated) {
   config = SimVlmConfig();
   config.latency.vision_median_s = -1;
   EXPECT_EQ(ErrorField(SimVlm::Create(world, &log, config).status()), "latency.vision_median_s");
+  config = SimVlmConfig();
+  config.latency.embedding_median_s = 0;
+  EXPECT_EQ(ErrorField(SimVlm::Create(world, &log, config).status()), "latency.embedding_median_s");
   config = SimVlmConfig();
   config.embedding_dim = 0;
   EXPECT_EQ(ErrorField(SimVlm::Create(world, &log, config).status()), "embedding_dim");

@@ -92,7 +92,9 @@ absl::StatusOr<EmbeddingReply> HttpBackend::Embed(const EmbeddingRequest& reques
   if (!response.ok()) return response.status();
   absl::StatusOr<EmbeddingReply> reply =
       OpenAiWire::ParseEmbeddings(response->body, request.texts.size());
-  if (reply.ok() && reply->model.empty()) reply->model = spec_.model;
+  if (!reply.ok()) return reply;
+  if (reply->model.empty()) reply->model = spec_.model;
+  reply->stated_latency = StatedLatency(response->headers);
   return reply;
 }
 

@@ -175,9 +175,7 @@ ModelProxy::ChainOutcome<Reply> ModelProxy::RunChain(
       ++m->attempts;
       if (reply.ok()) {
         m->breaker.RecordSuccess();
-        absl::Duration reported = latency;
-        if constexpr (std::is_same_v<Reply, BackendReply>)
-          reported = reply->stated_latency.value_or(latency);
+        const absl::Duration reported = reply->stated_latency.value_or(latency);
         out.attempts.push_back(Attempt{m->entry.name, absl::OkStatus(), reported});
         out.reply = std::move(reply);
         out.backend = m->entry.name;
@@ -317,7 +315,7 @@ absl::StatusOr<EmbeddingResult> ModelProxy::Embed(EmbeddingRequest request, cons
   result.backend = std::move(outcome.backend);
   result.attempts = std::move(outcome.attempts);
   usage_.RecordAnswer(caller, result.backend, result.reply.usage, /*cached=*/false);
-  result.latency = absl::Now() - start;
+  result.latency = result.reply.stated_latency.value_or(absl::Now() - start);
   return result;
 }
 

@@ -62,6 +62,8 @@ struct EmbeddingReply {
   std::vector<std::vector<float>> vectors;  // one per input text, same order
   std::string model;
   Usage usage;
+  // As BackendReply's: a simulated encoder states its (simulated) time.
+  std::optional<absl::Duration> stated_latency;
 };
 
 // Who is calling, from gRPC metadata; empty ids are accounted as "".
