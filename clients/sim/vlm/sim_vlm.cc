@@ -251,8 +251,15 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
   const std::string known_class = KnownClassOf(target);  // "复印机": a printer
   std::string content = target;
   for (const nlohmann::json& candidate : task["candidates"]) {
-    if (!candidate.is_object())
-      return absl::InvalidArgumentError("match_target: a candidate is not an object");
+    // json::value throws on a field of another type: checked here, before anything reads one.
+    const auto text_or_absent = [&](const char* field) {
+      return !candidate.contains(field) || candidate[field].is_string();
+    };
+    if (!candidate.is_object() || !text_or_absent("id") || !text_or_absent("label") ||
+        !text_or_absent("description")) {
+      return absl::InvalidArgumentError(
+          "match_target: each candidate is an object whose id, label and description are strings");
+    }
     absl::StrAppend(&content, "\n", candidate.value("label", ""), "\t",
                     candidate.value("description", ""));
   }

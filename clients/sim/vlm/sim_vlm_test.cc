@@ -360,6 +360,15 @@ TEST(SimVlmTest, RegionScoreAndMatchTarget) {
   EXPECT_TRUE(absl::StrContains(match->text, R"("best_id":"9")")) << match->text;
   EXPECT_EQ((*model)->Answer({"tell me a joke", {}}).status().code(),
             absl::StatusCode::kInvalidArgument);
+  for (const char* bad_candidates :
+       {R"([{"id":4,"label":"bench"}])", R"([{"id":"4","label":["bench"]}])",
+        R"([{"id":"4","label":"bench","description":7}])", R"(["bench"])"}) {
+    const std::string bad = absl::StrCat(R"({"candidates":)", bad_candidates,
+                                         R"(,"target":"backpack","task":"match_target"})");
+    EXPECT_EQ((*model)->Answer({absl::StrCat("Find it.\n", bad), {}}).status().code(),
+              absl::StatusCode::kInvalidArgument)
+        << bad;
+  }
 }
 
 // Mapping numbers objects over the service's life, so the ids a question names depend on the
