@@ -33,8 +33,11 @@ std::string Between(absl::string_view text, absl::string_view open, absl::string
   return std::string(text.substr(from, end - from));
 }
 
-double LogNormal(Rng& rng, double median, double sigma, double cap) {
-  return std::min(cap, median * std::exp(sigma * rng.Normal()));
+// A stated latency: log-normal around `median` with the configured spread and cap, in whole
+// milliseconds so the header value the endpoint sends is exact.
+double DrawLatency(Rng& rng, double median, const SimVlmLatency& latency) {
+  const double seconds = std::min(latency.max_s, median * std::exp(latency.sigma * rng.Normal()));
+  return std::round(1000.0 * seconds) / 1000.0;
 }
 
 // A neighbouring cell's code: the letter or the number moved by one (never below 1 or 'A').
@@ -169,9 +172,7 @@ SimVlm::TextEmbedding SimVlm::EmbedText(absl::string_view text) const {
   out.vector = NoisyEmbedding(
       ClassEmbedding(out.concept_name, config_.embedding_dim, config_.embedding_seed),
       config_.text_embedding_noise, rng);
-  const SimVlmLatency& l = config_.latency;
-  out.latency_s =
-      std::round(1000.0 * LogNormal(rng, l.embedding_median_s, l.sigma, l.max_s)) / 1000.0;
+  out.latency_s = DrawLatency(rng, config_.latency.embedding_median_s, config_.latency);
   return out;
 }
 
@@ -250,6 +251,9 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
   const std::string target = task["target"].get<std::string>();
   const std::string known_class = KnownClassOf(target);  // "复印机": a printer
   std::string content = target;
+  nlohmann::json ranking = nlohmann::json::array();
+  std::string best;
+  std::vector<std::string> others;
   for (const nlohmann::json& candidate : task["candidates"]) {
     // json::value throws on a field of another type: checked here, before anything reads one.
     const auto text_or_absent = [&](const char* field) {
@@ -260,17 +264,9 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
       return absl::InvalidArgumentError(
           "match_target: each candidate is an object whose id, label and description are strings");
     }
-    absl::StrAppend(&content, "\n", candidate.value("label", ""), "\t",
-                    candidate.value("description", ""));
-  }
-  *content_key = HashString(content);
-  Rng rng(MixSeed(config_.seed, *content_key));
-  nlohmann::json ranking = nlohmann::json::array();
-  std::string best;
-  std::vector<std::string> others;
-  for (const nlohmann::json& candidate : task["candidates"]) {
     const std::string id = candidate.value("id", "");
     const std::string label = candidate.value("label", "");
+    absl::StrAppend(&content, "\n", label, "\t", candidate.value("description", ""));
     const bool match = LabelNamesTarget(label, target) ||
                        (!known_class.empty() && LabelNamesTarget(label, known_class));
     if (match && best.empty()) best = id;
@@ -279,6 +275,8 @@ absl::StatusOr<std::string> SimVlm::AnswerMatchTarget(absl::string_view task_jso
                        {"score", match ? 0.9 : 0.05},
                        {"reason", match ? "the label names the target" : "another class"}});
   }
+  *content_key = HashString(content);
+  Rng rng(MixSeed(config_.seed, *content_key));
   double confidence = best.empty() ? 0.0 : 0.85;
   if (!others.empty() && rng.Bernoulli(config_.errors.confusion_rate)) {  // label confusion
     best = others[rng.UniformInt(0, static_cast<int>(others.size()) - 1)];
@@ -321,10 +319,7 @@ absl::StatusOr<VlmReply> SimVlm::Answer(const VlmQuestion& question) const {
   }
   Rng rng(MixSeed(MixSeed(config_.seed ^ 0x5ca1ab1e, text_key), frame_key));
   const SimVlmLatency& l = config_.latency;
-  // Whole milliseconds, so the stated header value is exact.
-  reply.latency_s = std::round(1000.0 * LogNormal(rng, vision ? l.vision_median_s : l.text_median_s,
-                                                  l.sigma, l.max_s)) /
-                    1000.0;
+  reply.latency_s = DrawLatency(rng, vision ? l.vision_median_s : l.text_median_s, l);
   reply.input_tokens = vision ? config_.vision_input_tokens : config_.text_input_tokens;
   reply.output_tokens = 1 + static_cast<int>(reply.text.size() / 4);
   return reply;
