@@ -183,8 +183,18 @@ std::vector<SceneObject> SceneGraph::Integrate(
 }
 
 void SceneGraph::Rebuild() {
+  std::vector<int> region_before;
+  region_before.reserve(objects_.size());
+  for (const SceneObject& o : objects_) region_before.push_back(o.region_id);
   relations_ = ComputeRelations(objects_, config_.relations);
   regions_ = ComputeRegions(objects_, config_.relations);
+  // Region ids follow the lowest member id, so a removal or a merge renumbers the regions of
+  // instances that did not change themselves. They ride along with this revision's delta: a
+  // watcher's mirror kept their old ids, disagreeing with the regions it was sent, and the
+  // gateway's graph then depended on whether a watch delta or a full fetch brought a revision.
+  for (size_t i = 0; i < objects_.size(); ++i) {
+    if (objects_[i].region_id != region_before[i]) objects_[i].revision = revision_;
+  }
 }
 
 std::string SceneGraph::Summary() const { return Summarize(objects_, regions_); }

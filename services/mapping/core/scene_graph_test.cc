@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <optional>
 
 #include "services/mapping/core/scene_relations.h"
@@ -131,7 +132,46 @@ TEST(SceneGraphTest, PrunesInstancesSeenOnceAndReportsRemoval) {
   const std::optional<SceneDelta> delta = graph.ChangesSince(before);
   ASSERT_TRUE(delta.has_value());
   EXPECT_EQ(delta->removed_ids, std::vector<uint64_t>{1});
-  EXPECT_TRUE(delta->upserted_ids.empty());
+  // The ghost's region (lowest id 1) was region 0 and the sofa's region 1; with the ghost gone
+  // the sofa's region is region 0, so the sofa is in the delta although it did not move.
+  EXPECT_EQ(delta->upserted_ids, std::vector<uint64_t>{2});
+  EXPECT_EQ(graph.objects()[0].region_id, 0);
+}
+
+// Regression (2026-12-02): a removal renumbered the regions of instances that did not change,
+// but the delta left them out. A watcher applying deltas kept their old region ids, which
+// disagreed with the regions it was sent; whether the gateway saw that or a full fetch decided
+// which objects its model question offered (seed 1, outdoor_road_vehicles start 0: 2 or 3 model
+// calls from run to run).
+TEST(SceneGraphTest, AWatcherApplyingDeltasKeepsRegionIdsThatAgreeWithTheRegions) {
+  SceneGraph graph{SceneGraphConfig{}};
+  // Three clusters far apart: a road seen once (id 1), a bench (id 2), a tree (id 3).
+  graph.Integrate({Obs("road", {0, 0, 0}, 0.5, {}, 0)}, 0);
+  graph.Integrate({Obs("bench", {10, 0, 0}, 0.9, {}, 0), Obs("tree", {20, 0, 0}, 0.9, {}, 0)}, 0);
+  graph.Integrate(
+      {Obs("bench", {10, 0, 0}, 0.9, {}, kSecond), Obs("tree", {20, 0, 0}, 0.9, {}, kSecond)},
+      kSecond);
+  std::map<uint64_t, SceneObject> mirror;  // what a watcher holds after the full graph
+  for (const SceneObject& o : graph.objects()) mirror[o.id] = o;
+  ASSERT_EQ(mirror.size(), 3u);
+  EXPECT_EQ(mirror[2].region_id, 1);
+  EXPECT_EQ(mirror[3].region_id, 2);
+
+  const uint64_t seen = graph.revision();
+  ASSERT_EQ(graph.Integrate({}, 11 * kSecond).size(), 1u);  // the road, seen once, is pruned
+  const std::optional<SceneDelta> delta = graph.ChangesSince(seen);
+  ASSERT_TRUE(delta.has_value());
+  for (uint64_t id : delta->removed_ids) mirror.erase(id);
+  for (uint64_t id : delta->upserted_ids) mirror[id] = *graph.Find(id);
+
+  ASSERT_EQ(mirror.size(), 2u);
+  for (const Region& region : graph.regions()) {
+    for (uint64_t id : region.object_ids) {
+      EXPECT_EQ(mirror[id].region_id, region.id) << "object " << id;
+    }
+  }
+  EXPECT_EQ(mirror[2].region_id, 0);  // hand-checked: the bench's cluster now has the lowest id
+  EXPECT_EQ(mirror[3].region_id, 1);
 }
 
 SceneObject Object(uint64_t id, const std::string& label, Eigen::Vector3d position,
