@@ -13,7 +13,9 @@ absl::Status ValidateSightings(const EroiSearchConfig& config) {
   if (absl::Status s = CheckRange(config.inspect_distance_m, "inspect_distance_m", 0.0, 50.0);
       !s.ok())
     return s;
-  return CheckRange(config.sighting_namings, "sighting_namings", 1, 10);
+  if (absl::Status s = CheckRange(config.sighting_namings, "sighting_namings", 1, 10); !s.ok())
+    return s;
+  return CheckRange(config.failed_clues_to_geometric, "failed_clues_to_geometric", 0, 1000);
 }
 
 absl::StatusOr<EroiSearch> EroiSearch::Create(std::string target, const EroiSearchConfig& config) {
@@ -34,7 +36,8 @@ EroiSearch::EroiSearch(std::string target, EroiGrid grid, const EroiSearchConfig
       values_(grid_->size()),
       evidence_once_per_code_(config.evidence_once_per_code),
       inspect_distance_m_(config.inspect_distance_m),
-      sighting_namings_(config.sighting_namings) {}
+      sighting_namings_(config.sighting_namings),
+      failed_clues_to_geometric_(config.failed_clues_to_geometric) {}
 
 EroiObservation EroiSearch::Annotate(const Eigen::Vector3d& position,
                                      const Eigen::Quaterniond& orientation,
@@ -78,8 +81,14 @@ EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
     absl::StatusOr<Eigen::Vector3d> centre = grid_->Decode(pair.code);
     if (!centre.ok()) continue;  // a code the VLM invented or misread
     ++evidence.codes_used;
-    if (!evidence_once_per_code_ || evidenced_codes_.insert(pair.code).second)
+    if (!evidence_once_per_code_ || evidenced_codes_.insert(pair.code).second) {
       values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
+      const auto same_column = [&](const Eigen::Vector3d& clue) {
+        return (clue - *centre).head<2>().norm() < 1e-6;
+      };
+      if (std::none_of(open_clues_.begin(), open_clues_.end(), same_column))
+        open_clues_.push_back(*centre);
+    }
     if (DescriptionNamesTarget(pair.description, target_) && Corroborated(*centre) &&
         std::find(sightings_.begin(), sightings_.end(), *centre) == sightings_.end()) {
       sightings_.push_back(*centre);
@@ -102,9 +111,27 @@ absl::Status EroiSearch::OnRegionAnswer(const RegionDue& region, std::string_vie
   return absl::OkStatus();
 }
 
+void EroiSearch::OnRobotAt(const Eigen::Vector3d& position) {
+  // A clue raised the EROIs within r of it; from inspect_distance_m beyond those the detector
+  // would have seen the target there.
+  const double reach_m = evidence_radius_m_ + inspect_distance_m_;
+  const auto near = [&](const Eigen::Vector3d& clue) {
+    return (clue - position).head<2>().norm() <= reach_m;
+  };
+  const auto reached = std::remove_if(open_clues_.begin(), open_clues_.end(), near);
+  failed_clues_ += static_cast<int>(open_clues_.end() - reached);
+  open_clues_.erase(reached, open_clues_.end());
+}
+
+bool EroiSearch::geometric() const {
+  return failed_clues_to_geometric_ > 0 && failed_clues_ >= failed_clues_to_geometric_;
+}
+
 std::vector<double> EroiSearch::PlanarValues() const {
   const EroiGridSpec& spec = grid_->spec();
-  std::vector<double> planar(static_cast<std::size_t>((spec.nx + 1) * (spec.ny + 1)), 0.0);
+  std::vector<double> planar(static_cast<std::size_t>((spec.nx + 1) * (spec.ny + 1)),
+                             geometric() ? values_.prior() : 0.0);
+  if (geometric()) return planar;
   for (int flat = 0; flat < grid_->size(); ++flat) {
     const EroiIndex index = grid_->Unflatten(flat);
     double& column = planar[static_cast<std::size_t>(index.j * (spec.nx + 1) + index.i)];

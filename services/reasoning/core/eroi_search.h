@@ -6,6 +6,8 @@
 // (eq. 21-23). The values feed planning's EROI_UTILITY strategy on the same grid. A code whose
 // description names the target itself is also kept as a sighting: the robot goes to look
 // (sighting_goal.h), since its EROI may hold no unknown cells left to draw the search there.
+// Clues the robot reached without finding the target count against the model; after enough of
+// them the values stop steering (failed_clues_to_geometric).
 #pragma once
 
 #include <memory>
@@ -40,10 +42,16 @@ struct EroiSearchConfig {
   // naming lost more than it saved: outdoor mean path 52.3 / 50.4 m with 1, 58.9 / 67.7 m with 2
   // (seeds 1 / 2, docs/performance/mission.md).
   int sighting_namings = 1;
+  // ApexNav's switch from semantic to geometric exploration, taken on the model's track record:
+  // once the robot has come within r + inspect_distance_m (x-y) of this many clues (codes whose
+  // answer raised values) and the search goes on, the model's clues are taken to mislead in this
+  // place, and the values stop steering the search (PlanarValues is the prior everywhere;
+  // sightings are still looked at). 0 = never, as in the seed.
+  int failed_clues_to_geometric = 6;
 };
 
 // INVALID_ARGUMENT naming the field: inspect_distance_m outside [0, 50] m, sighting_namings
-// outside [1, 10].
+// outside [1, 10], failed_clues_to_geometric outside [0, 1000].
 absl::Status ValidateSightings(const EroiSearchConfig& config);
 
 // A camera frame ready for the VLM: the prompt and the codes drawn into the image.
@@ -78,9 +86,16 @@ class EroiSearch {
   std::string RegionPrompt(const RegionDue& region) const;
   // Eq. 21-23 with the LLM's score; INVALID_ARGUMENT (values unchanged) for an unusable answer.
   absl::Status OnRegionAnswer(const RegionDue& region, std::string_view answer);
+  // The robot is at `position` and still searching: clues within r + inspect_distance_m of it
+  // (x-y) have failed.
+  void OnRobotAt(const Eigen::Vector3d& position);
+  // Clues failed so far, and whether the search has turned geometric on them.
+  int failed_clues() const { return failed_clues_; }
+  bool geometric() const;
 
-  // Values per x-y column (the best over z), row-major with x fastest: the order of planning's
-  // eroi_semantic_values over the window PlanningWindow() describes.
+  // Values per x-y column (the best over z; the prior everywhere once geometric), row-major with x
+  // fastest: the order of planning's eroi_semantic_values over the window PlanningWindow()
+  // describes.
   std::vector<double> PlanarValues() const;
   // The map-frame rectangle whose EROIs (edge delta, from its lower-left corner) are this grid's
   // x-y columns: centres at min + delta * (i, j), so the window starts half an edge lower.
@@ -118,6 +133,9 @@ class EroiSearch {
   int answers_ = 0;
   std::set<std::string> evidenced_codes_;  // named in an answer; kept with evidence_once_per_code
   std::vector<Eigen::Vector3d> sightings_;
+  int failed_clues_to_geometric_;
+  std::vector<Eigen::Vector3d> open_clues_;  // evidenced codes the robot has not come near yet
+  int failed_clues_ = 0;
 };
 
 }  // namespace semnav::reasoning

@@ -110,6 +110,50 @@ TEST(GatewayEroiSearchTest, ATargetNamedByTwoAnswersWithinTwoEdgesIsASightingOnc
   EXPECT_FALSE(EroiSearch::Create("car", bad).ok());
 }
 
+// Clues the robot reached while the search went on have failed; after failed_clues_to_geometric
+// of them the values stop steering (ApexNav's switch to geometric exploration).
+TEST(GatewayEroiSearchTest, CluesTheRobotReachedWithoutTheTargetTurnTheSearchGeometric) {
+  EroiSearchConfig config = Config();
+  config.failed_clues_to_geometric = 2;
+  absl::StatusOr<EroiSearch> search = EroiSearch::Create("car", config);
+  ASSERT_TRUE(search.ok()) << search.status();
+  // A1A = (0, 0) m, C2A = (4, 2) m, E4A = (8, 6) m: three clues.
+  search->OnVlmAnswer("Code: A1A, Description: no car here; road leading on");
+  search->OnVlmAnswer("Code: C2A, Description: no car here; gate\nCode: E4A, Description: car");
+  search->OnVlmAnswer("Code: C2A, Description: the gate again");  // one clue, not two
+  const std::vector<double> steered = search->PlanarValues();
+  EXPECT_NEAR(steered[1 * 5 + 2], 0.24, 1e-12);  // C2A's column, as in the first test
+  // A clue is reached within r + inspect_distance_m = 2 + 3 m (x-y; the height is the UAV's).
+  search->OnRobotAt({-4.0, 6.0, 5.0});  // 7.2 m from A1A, 8.9 m from C2A
+  EXPECT_EQ(search->failed_clues(), 0);
+  search->OnRobotAt({-3.0, -3.0, 5.0});  // 4.2 m from A1A, 8.6 m from C2A
+  EXPECT_EQ(search->failed_clues(), 1);
+  EXPECT_FALSE(search->geometric());
+  EXPECT_EQ(search->PlanarValues(), steered);
+  search->OnRobotAt({-3.0, -3.0, 5.0});  // A1A again: a clue fails once
+  EXPECT_EQ(search->failed_clues(), 1);
+  search->OnRobotAt({4.0, 2.0, 0.0});  // C2A; E4A is 5.7 m away
+  EXPECT_EQ(search->failed_clues(), 2);
+  EXPECT_TRUE(search->geometric());
+  EXPECT_EQ(search->PlanarValues(), std::vector<double>(20, 0.05));
+  // The sighting is still there to be looked at.
+  ASSERT_EQ(search->sightings().size(), 1u);
+  EXPECT_EQ(search->sightings()[0], Eigen::Vector3d(8, 6, 0));
+
+  // 0 keeps the seed's search: reached clues never turn it.
+  config.failed_clues_to_geometric = 0;
+  absl::StatusOr<EroiSearch> seed = EroiSearch::Create("car", config);
+  ASSERT_TRUE(seed.ok());
+  seed->OnVlmAnswer("Code: A1A, Description: no car here; road leading on");
+  seed->OnRobotAt({0.0, 0.0, 0.0});
+  EXPECT_EQ(seed->failed_clues(), 1);
+  EXPECT_FALSE(seed->geometric());
+  // A1A in the corner: N_r holds it and its 2 side neighbours, (1 - 1/3) 0.05 + 1/3.
+  EXPECT_NEAR(seed->PlanarValues()[0], 0.05 * 2.0 / 3.0 + 1.0 / 3.0, 1e-12);
+  config.failed_clues_to_geometric = -1;
+  EXPECT_EQ(EroiSearch::Create("car", config).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
 TEST(GatewayEroiSearchTest, PlanarValuesAndWindowMatchPlanningsRowMajorEroiGrid) {
   EroiSearchConfig config = Config();
   config.grid.nz = 1;  // two layers: a column's value is the better of the two

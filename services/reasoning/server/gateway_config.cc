@@ -313,6 +313,7 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
         .Read("evidence_once_per_code", &search.evidence_once_per_code)
         .Read("inspect_distance_m", &search.inspect_distance_m)
         .Read("sighting_namings", &search.sighting_namings)
+        .Read("failed_clues_to_geometric", &search.failed_clues_to_geometric)
         .Read("region_size", &search.regions.region_size)
         .Read("theta", &search.regions.theta)
         .Read("min_distance_m", &search.mapping.min_distance_m)

@@ -50,7 +50,7 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
   const absl::StatusOr<GatewayConfig> loaded = Load(
       "model_proxy: {address: 127.0.0.1:50054, deadline_ms: 800, vision_alias: vision}\n"
       "eroi: {min: [-10, -20, 0], nx: 9, ny: 19, nz: 2, theta: 4, evidence_once_per_code: "
-      "false, inspect_distance_m: 4.5, sighting_namings: 1}\n");
+      "false, inspect_distance_m: 4.5, sighting_namings: 1, failed_clues_to_geometric: 0}\n");
   ASSERT_TRUE(loaded.ok()) << loaded.status();
   const GatewayConfig& config = *loaded;
   EXPECT_EQ(config.model_proxy.channel.address, "127.0.0.1:50054");
@@ -64,12 +64,14 @@ TEST(GatewayConfigTest, ReadsTheModelProxyAndTheEroiVolumeAndNamesBadValues) {
   EXPECT_FALSE(config.eroi->evidence_once_per_code);  // true by default
   EXPECT_DOUBLE_EQ(config.eroi->inspect_distance_m, 4.5);
   EXPECT_EQ(config.eroi->sighting_namings, 1);
+  EXPECT_EQ(config.eroi->failed_clues_to_geometric, 0);  // 0 = the seed's search
 
   for (const char* yaml :
        {"model_proxy: {address: x, deadline_ms: 0}", "model_proxy: {address: x, max_in_flight: 64}",
         "eroi: {min: [0, 0]}", "eroi: {nx: 30}", "eroi: {theta: 0}",
         "eroi: {evidence_once_per_code: 3}", "eroi: {inspect_distance_m: .nan}",
-        "eroi: {inspect_distance_m: -1}", "eroi: {sighting_namings: 0}"}) {
+        "eroi: {inspect_distance_m: -1}", "eroi: {sighting_namings: 0}",
+        "eroi: {failed_clues_to_geometric: -1}", "eroi: {failed_clues_to_geometric: 1e9}"}) {
     const absl::Status status = Load(yaml).status();
     EXPECT_FALSE(status.ok()) << yaml;
     EXPECT_TRUE(absl::StrContains(status.message(), yaml[0] == 'm' ? "model_proxy." : "eroi."))

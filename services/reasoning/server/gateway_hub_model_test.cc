@@ -5,6 +5,7 @@
 #include <thread>
 #include <vector>
 
+#include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
 #include "services/common/status/field_error.h"
@@ -740,6 +741,52 @@ TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
   for (const api::Event& event : events->events())
     budget_events += event.kind() == api::EVENT_KIND_MODEL_BUDGET;
   EXPECT_EQ(budget_events, 1);
+  EXPECT_EQ(fixture.hub.GetTask(submitted->task_id())->status(), api::TASK_STATUS_RUNNING);
+}
+
+// ApexNav's switch through the hub: the robot's states within reach of the model's clues turn the
+// search geometric; a named event says so, and planning's next request has the prior everywhere.
+TEST(GatewayHubEroiTest, CluesTheRobotReachedTurnTheSearchGeometricAsANamedEvent) {
+  GatewayConfig config;
+  EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0): N = 20, prior 0.05
+  eroi.grid.delta = 2.0;
+  eroi.grid.nx = 4;
+  eroi.grid.ny = 3;
+  eroi.failed_clues_to_geometric = 2;
+  config.eroi = eroi;
+  EroiHub fixture(config);
+  api::SubmitInstructionRequest request = UavSearch("eroi-geometric", "find the red backpack");
+  request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
+  absl::StatusOr<api::SubmitInstructionResponse> submitted = fixture.hub.Submit(request);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  ASSERT_TRUE(
+      fixture.hub.OnCameraFrame(&fixture.session, Frame(common::v1::IMAGE_ENCODING_PNG)).ok());
+  // Clues at A1A = (0, 0) and E4A = (8, 6); reach = r + inspect distance = 2 + 3 m.
+  fixture.model.Reply(0,
+                      "Code: A1A, Description: no backpack here; road leading on\n"
+                      "Code: E4A, Description: no backpack here; gate");
+  const auto geometric_events = [&] {
+    int count = 0;
+    const absl::StatusOr<api::ListEventsResponse> events =
+        fixture.hub.ListEvents(api::ListEventsRequest());
+    for (const api::Event& event : events->events())
+      count += absl::StrContains(event.message(), "search turned geometric");
+    return count;
+  };
+  ASSERT_TRUE(fixture.hub.OnRobotState(&fixture.session, At(0.0, 0.0)).ok());  // A1A
+  Reached(fixture.hub, fixture.session, fixture.session.Last());
+  ASSERT_EQ(fixture.explorer.contexts.size(), 2u);
+  // One clue failed: the values still steer. E4A (i 4, j 3) in the corner: m = 3.
+  EXPECT_NEAR(fixture.explorer.contexts[1].eroi_values[3 * 5 + 4], 0.05 * 2.0 / 3.0 + 1.0 / 3.0,
+              1e-12);
+  EXPECT_EQ(geometric_events(), 0);
+  ASSERT_TRUE(fixture.hub.OnRobotState(&fixture.session, At(5.0, 3.0)).ok());  // 4.2 m from E4A
+  EXPECT_EQ(geometric_events(), 1);
+  ASSERT_TRUE(fixture.hub.OnRobotState(&fixture.session, At(8.0, 6.0)).ok());
+  EXPECT_EQ(geometric_events(), 1);  // said once
+  Reached(fixture.hub, fixture.session, fixture.session.Last());
+  ASSERT_EQ(fixture.explorer.contexts.size(), 3u);
+  EXPECT_EQ(fixture.explorer.contexts[2].eroi_values, std::vector<double>(20, 0.05));
   EXPECT_EQ(fixture.hub.GetTask(submitted->task_id())->status(), api::TASK_STATUS_RUNNING);
 }
 

@@ -257,6 +257,16 @@ void GatewayHub::HandlePose(const std::string& robot_id, Robot& robot, const api
     if (!robot.simulated_clock && task->graph_revision != scene_graph_->revision) {
       Apply(*task, GiveSceneGraph(*task, NowFor(robot_id)));
     }
+    // Clues the robot reached while still searching have failed (EroiSearch::OnRobotAt).
+    if (EroiSearch* search = task->eroi.get(); search != nullptr && task->executor->exploring()) {
+      const bool was_geometric = search->geometric();
+      search->OnRobotAt(robot.pose.position);
+      if (search->geometric() && !was_geometric) {
+        Log(api::EVENT_KIND_TASK_STATUS, robot_id, task->task_id,
+            absl::StrCat("search turned geometric: the robot reached ", search->failed_clues(),
+                         " of the model's clues without finding the target"));
+      }
+    }
     Apply(*task, task->executor->OnPose(NowFor(robot_id), robot.pose));
   }
 }
