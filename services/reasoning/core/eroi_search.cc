@@ -129,9 +129,9 @@ bool EroiSearch::geometric() const {
 
 std::vector<double> EroiSearch::PlanarValues() const {
   const EroiGridSpec& spec = grid_->spec();
-  std::vector<double> planar(static_cast<std::size_t>((spec.nx + 1) * (spec.ny + 1)),
-                             geometric() ? values_.prior() : 0.0);
-  if (geometric()) return planar;
+  const std::size_t columns = static_cast<std::size_t>((spec.nx + 1) * (spec.ny + 1));
+  if (geometric()) return std::vector<double>(columns, values_.prior());
+  std::vector<double> planar(columns, 0.0);
   for (int flat = 0; flat < grid_->size(); ++flat) {
     const EroiIndex index = grid_->Unflatten(flat);
     double& column = planar[static_cast<std::size_t>(index.j * (spec.nx + 1) + index.i)];

@@ -512,15 +512,20 @@ api::SubmitInstructionRequest EroiSearchAlongX(const std::string& request_id,
   return EroiSearchOver(request_id, instruction, {-10.0, -10.0}, {40.0, 10.0});
 }
 
+// 5 x 4 x 1 EROIs of 2 m from (0, 0, 0): N = 20, prior 0.05.
+EroiSearchConfig SmallEroiGrid() {
+  EroiSearchConfig eroi;
+  eroi.grid.delta = 2.0;
+  eroi.grid.nx = 4;
+  eroi.grid.ny = 3;
+  return eroi;
+}
+
 // Seed-000 loop through the hub: frames -> VLM with codes drawn -> semantic values -> region
 // score after theta = 3 records -> EROI_UTILITY exploration requests carry the values.
 TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
   GatewayConfig config;
-  EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0): N = 20, prior 0.05
-  eroi.grid.delta = 2.0;
-  eroi.grid.nx = 4;
-  eroi.grid.ny = 3;
-  config.eroi = eroi;
+  config.eroi = SmallEroiGrid();
   // This test follows the values; which frames are new to the model has its own test
   // (AFrameOfCodesAlreadyAskedAboutIsNotAsked): here every moved frame that prints a code asks.
   config.model_proxy.calls.new_view_min_new_code_share = 0.0;
@@ -584,12 +589,8 @@ TEST(GatewayHubEroiTest, CameraFramesFeedSemanticValuesThatPlanningReceives) {
 // once).
 TEST(GatewayHubEroiTest, ATargetTheModelNamedTwiceIsLookedAtBeforeTheNextExplorationGoal) {
   GatewayConfig config;
-  EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0)
-  eroi.grid.delta = 2.0;
-  eroi.grid.nx = 4;
-  eroi.grid.ny = 3;
-  eroi.sighting_namings = 2;
-  config.eroi = eroi;
+  config.eroi = SmallEroiGrid();
+  config.eroi->sighting_namings = 2;
   config.model_proxy.calls.new_view_min_new_code_share = 0.0;
   EroiHub fixture(config);
   api::SubmitInstructionRequest request = UavSearch("eroi-look", "find the red backpack");
@@ -748,12 +749,8 @@ TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
 // search geometric; a named event says so, and planning's next request has the prior everywhere.
 TEST(GatewayHubEroiTest, CluesTheRobotReachedTurnTheSearchGeometricAsANamedEvent) {
   GatewayConfig config;
-  EroiSearchConfig eroi;  // 5 x 4 x 1 EROIs of 2 m from (0, 0, 0): N = 20, prior 0.05
-  eroi.grid.delta = 2.0;
-  eroi.grid.nx = 4;
-  eroi.grid.ny = 3;
-  eroi.failed_clues_to_geometric = 2;
-  config.eroi = eroi;
+  config.eroi = SmallEroiGrid();
+  config.eroi->failed_clues_to_geometric = 2;
   EroiHub fixture(config);
   api::SubmitInstructionRequest request = UavSearch("eroi-geometric", "find the red backpack");
   request.set_exploration_strategy(api::EXPLORATION_STRATEGY_EROI_UTILITY);
