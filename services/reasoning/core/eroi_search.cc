@@ -9,7 +9,7 @@
 
 namespace semnav::reasoning {
 
-absl::Status ValidateSightings(const EroiSearchConfig& config) {
+absl::Status ValidateSearchRules(const EroiSearchConfig& config) {
   if (absl::Status s = CheckRange(config.inspect_distance_m, "inspect_distance_m", 0.0, 50.0);
       !s.ok())
     return s;
@@ -20,7 +20,7 @@ absl::Status ValidateSightings(const EroiSearchConfig& config) {
 
 absl::StatusOr<EroiSearch> EroiSearch::Create(std::string target, const EroiSearchConfig& config) {
   if (target.empty()) return InvalidField("target", "is required for the EROI search");
-  if (absl::Status s = ValidateSightings(config); !s.ok()) return s;
+  if (absl::Status s = ValidateSearchRules(config); !s.ok()) return s;
   absl::StatusOr<EroiGrid> grid = EroiGrid::Create(config.grid);
   if (!grid.ok()) return grid.status();
   return EroiSearch(std::move(target), *std::move(grid), config);
@@ -83,11 +83,9 @@ EroiEvidence EroiSearch::OnVlmAnswer(std::string_view answer) {
     ++evidence.codes_used;
     if (!evidence_once_per_code_ || evidenced_codes_.insert(pair.code).second) {
       values_.ApplyVlmEvidence(grid_->Neighbourhood(*centre, evidence_radius_m_));
-      const auto same_column = [&](const Eigen::Vector3d& clue) {
-        return (clue - *centre).head<2>().norm() < 1e-6;
-      };
-      if (std::none_of(open_clues_.begin(), open_clues_.end(), same_column))
-        open_clues_.push_back(*centre);
+      const Eigen::Vector2d column = centre->head<2>();
+      if (std::find(open_clues_.begin(), open_clues_.end(), column) == open_clues_.end())
+        open_clues_.push_back(column);
     }
     if (DescriptionNamesTarget(pair.description, target_) && Corroborated(*centre) &&
         std::find(sightings_.begin(), sightings_.end(), *centre) == sightings_.end()) {
@@ -115,8 +113,8 @@ void EroiSearch::OnRobotAt(const Eigen::Vector3d& position) {
   // A clue raised the EROIs within r of it; from inspect_distance_m beyond those the detector
   // would have seen the target there.
   const double reach_m = evidence_radius_m_ + inspect_distance_m_;
-  const auto near = [&](const Eigen::Vector3d& clue) {
-    return (clue - position).head<2>().norm() <= reach_m;
+  const auto near = [&](const Eigen::Vector2d& clue) {
+    return (clue - position.head<2>()).norm() <= reach_m;
   };
   const auto reached = std::remove_if(open_clues_.begin(), open_clues_.end(), near);
   failed_clues_ += static_cast<int>(open_clues_.end() - reached);

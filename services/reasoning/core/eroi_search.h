@@ -52,7 +52,7 @@ struct EroiSearchConfig {
 
 // INVALID_ARGUMENT naming the field: inspect_distance_m outside [0, 50] m, sighting_namings
 // outside [1, 10], failed_clues_to_geometric outside [0, 1000].
-absl::Status ValidateSightings(const EroiSearchConfig& config);
+absl::Status ValidateSearchRules(const EroiSearchConfig& config);
 
 // A camera frame ready for the VLM: the prompt and the codes drawn into the image.
 struct EroiObservation {
@@ -134,7 +134,7 @@ class EroiSearch {
   std::set<std::string> evidenced_codes_;  // named in an answer; kept with evidence_once_per_code
   std::vector<Eigen::Vector3d> sightings_;
   int failed_clues_to_geometric_;
-  std::vector<Eigen::Vector3d> open_clues_;  // evidenced codes the robot has not come near yet
+  std::vector<Eigen::Vector2d> open_clues_;  // x-y of evidenced codes the robot has not reached
   int failed_clues_ = 0;
 };
 

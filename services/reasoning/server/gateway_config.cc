@@ -324,8 +324,8 @@ absl::StatusOr<GatewayConfig> GatewayConfig::FromYaml(ConfigReader& section) {
                "grid must have delta > 0, nx, ny, nz >= 0 and at most 26 letters on x and z");
     eroi.Check(search.regions.region_size >= 1, "region_size", "must be >= 1");
     eroi.Check(search.regions.theta >= 1, "theta", "must be >= 1");
-    const absl::Status sightings = ValidateSightings(search);
-    eroi.Check(sightings.ok(), ErrorField(sightings).value_or("eroi"), sightings.message());
+    const absl::Status rules = ValidateSearchRules(search);
+    eroi.Check(rules.ok(), ErrorField(rules).value_or("eroi"), rules.message());
     c.eroi = search;
   }
 

@@ -1,6 +1,8 @@
 // The hub's slow path with a scripted model: calls are made without blocking, the robot keeps
 // receiving exploration commands while the answer is pending, and the answer (delivered on
 // another thread, as the proxy client does) is validated and acted on.
+#include <algorithm>
+#include <functional>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -484,6 +486,13 @@ struct EroiHub {
       model.asks.back().done = nullptr;
     }
   }
+  // Events the hub logged that `match` accepts; -1 (and a failure) when they cannot be listed.
+  int CountEvents(const std::function<bool(const api::Event&)>& match) {
+    const absl::StatusOr<api::ListEventsResponse> events = hub.ListEvents(api::ListEventsRequest());
+    EXPECT_TRUE(events.ok()) << events.status();
+    if (!events.ok()) return -1;
+    return static_cast<int>(std::count_if(events->events().begin(), events->events().end(), match));
+  }
   RobotLocalPlanner planner;
   ScriptedModel model;
   RecordingExplorer explorer;
@@ -735,13 +744,10 @@ TEST(GatewayHubEroiTest, SpentModelBudgetIsANamedEventAndStopsTheCalls) {
     fixture.ShowAndAnswer(Moved(Frame(common::v1::IMAGE_ENCODING_PNG), 3.0 * i));
   }
   EXPECT_EQ(fixture.model.asks.size(), 3u);
-  int budget_events = 0;
-  const absl::StatusOr<api::ListEventsResponse> events =
-      fixture.hub.ListEvents(api::ListEventsRequest());
-  ASSERT_TRUE(events.ok()) << events.status();
-  for (const api::Event& event : events->events())
-    budget_events += event.kind() == api::EVENT_KIND_MODEL_BUDGET;
-  EXPECT_EQ(budget_events, 1);
+  const auto budget_event = [](const api::Event& event) {
+    return event.kind() == api::EVENT_KIND_MODEL_BUDGET;
+  };
+  EXPECT_EQ(fixture.CountEvents(budget_event), 1);
   EXPECT_EQ(fixture.hub.GetTask(submitted->task_id())->status(), api::TASK_STATUS_RUNNING);
 }
 
@@ -763,12 +769,9 @@ TEST(GatewayHubEroiTest, CluesTheRobotReachedTurnTheSearchGeometricAsANamedEvent
                       "Code: A1A, Description: no backpack here; road leading on\n"
                       "Code: E4A, Description: no backpack here; gate");
   const auto geometric_events = [&] {
-    int count = 0;
-    const absl::StatusOr<api::ListEventsResponse> events =
-        fixture.hub.ListEvents(api::ListEventsRequest());
-    for (const api::Event& event : events->events())
-      count += absl::StrContains(event.message(), "search turned geometric");
-    return count;
+    return fixture.CountEvents([](const api::Event& event) {
+      return absl::StrContains(event.message(), "search turned geometric");
+    });
   };
   ASSERT_TRUE(fixture.hub.OnRobotState(&fixture.session, At(0.0, 0.0)).ok());  // A1A
   Reached(fixture.hub, fixture.session, fixture.session.Last());
