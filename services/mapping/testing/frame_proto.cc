@@ -1,5 +1,7 @@
 #include "services/mapping/testing/frame_proto.h"
 
+#include "services/mapping/testing/synthetic_room.h"
+
 namespace semnav::mapping::testing {
 
 v1::SensorFrame FrameToProto(const SensorFrame& f) {
@@ -29,6 +31,27 @@ v1::SensorFrame FrameToProto(const SensorFrame& f) {
   pose->mutable_orientation()->set_y(f.pose.orientation.y());
   pose->mutable_orientation()->set_z(f.pose.orientation.z());
   return p;
+}
+
+CameraPose StandardRoomViewpoint() { return LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}); }
+
+v1::SensorFrame StandardRoomFrameWithTable(int64_t stamp_ns, const std::vector<float>& embedding) {
+  const CameraPose viewpoint = StandardRoomViewpoint();
+  v1::SensorFrame frame = FrameToProto(RenderFrame(StandardRoom(), viewpoint, stamp_ns));
+  const Intrinsics k = Vga();
+  const Eigen::Vector3d c =
+      viewpoint.orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - viewpoint.position);
+  const double u = k.fx * c.x() / c.z() + k.cx;
+  const double v = k.fy * c.y() / c.z() + k.cy;
+  v1::Detection* det = frame.add_detections();
+  det->set_label("table");
+  det->set_score(0.9);
+  det->mutable_box()->set_x_min(u - 40);
+  det->mutable_box()->set_y_min(v - 40);
+  det->mutable_box()->set_x_max(u + 40);
+  det->mutable_box()->set_y_max(v + 40);
+  det->mutable_embedding()->Assign(embedding.begin(), embedding.end());
+  return frame;
 }
 
 }  // namespace semnav::mapping::testing

@@ -25,26 +25,9 @@ using ::testing::HasSubstr;
 
 constexpr int64_t kFrameNs = 100'000'000;
 
-CameraPose Viewpoint() { return testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}); }
-
 // A room frame with a "table" detection around the static box, optionally with an embedding.
-v1::SensorFrame RoomFrame(int64_t stamp, std::vector<float> embedding = {}) {
-  v1::SensorFrame frame =
-      testing::FrameToProto(testing::RenderFrame(testing::StandardRoom(), Viewpoint(), stamp));
-  const Intrinsics k = testing::Vga();
-  const Eigen::Vector3d c =
-      Viewpoint().orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - Viewpoint().position);
-  const double u = k.fx * c.x() / c.z() + k.cx;
-  const double v = k.fy * c.y() / c.z() + k.cy;
-  v1::Detection* det = frame.add_detections();
-  det->set_label("table");
-  det->set_score(0.9);
-  det->mutable_box()->set_x_min(u - 40);
-  det->mutable_box()->set_y_min(v - 40);
-  det->mutable_box()->set_x_max(u + 40);
-  det->mutable_box()->set_y_max(v + 40);
-  det->mutable_embedding()->Assign(embedding.begin(), embedding.end());
-  return frame;
+v1::SensorFrame RoomFrame(int64_t stamp, const std::vector<float>& embedding = {}) {
+  return testing::StandardRoomFrameWithTable(stamp, embedding);
 }
 
 class MappingContractTest : public ::testing::Test {

@@ -12,7 +12,6 @@
 #include "semnav/mapping/v1/mapping_service.grpc.pb.h"
 #include "semnav/relocalization/v1/relocalization.grpc.pb.h"
 #include "services/mapping/testing/frame_proto.h"
-#include "services/mapping/testing/synthetic_room.h"
 #include "tests/support/service_process.h"
 
 namespace semnav::mapping {
@@ -23,26 +22,9 @@ namespace rv1 = semnav::relocalization::v1;
 constexpr int64_t kFrameNs = 100'000'000;
 const std::vector<float> kTableEmbedding = {0.0f, 3.0f, 0.0f, 4.0f};  // unit (0, 0.6, 0, 0.8)
 
-CameraPose Viewpoint() { return testing::LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}); }
-
 // A room frame with a "table" detection around the static box.
 v1::SensorFrame RoomFrame(int64_t stamp) {
-  v1::SensorFrame frame =
-      testing::FrameToProto(testing::RenderFrame(testing::StandardRoom(), Viewpoint(), stamp));
-  const Intrinsics k = testing::Vga();
-  const Eigen::Vector3d c =
-      Viewpoint().orientation.conjugate() * (Eigen::Vector3d(3.2, 1.3, 0.7) - Viewpoint().position);
-  const double u = k.fx * c.x() / c.z() + k.cx;
-  const double v = k.fy * c.y() / c.z() + k.cy;
-  v1::Detection* det = frame.add_detections();
-  det->set_label("table");
-  det->set_score(0.9);
-  det->mutable_box()->set_x_min(u - 40);
-  det->mutable_box()->set_y_min(v - 40);
-  det->mutable_box()->set_x_max(u + 40);
-  det->mutable_box()->set_y_max(v + 40);
-  det->mutable_embedding()->Assign(kTableEmbedding.begin(), kTableEmbedding.end());
-  return frame;
+  return testing::StandardRoomFrameWithTable(stamp, kTableEmbedding);
 }
 
 class MappingLandmarksContractTest : public ::testing::Test {
