@@ -47,7 +47,29 @@ EroiConfig SmallConfig() {
   config.eroi_size_cells = 20;
   config.viewpoint_radius_cells = 5;
   config.ray_range_cells = 30;
+  config.lambda = 0.05;  // the strips are drawn for a steep path cost: 1 per 20 cells
   return config;
+}
+
+// The default path cost (0.01 per cell, 0.2 per m at 5 cm) halves the utility every 70 cells:
+// with no clue, the far strip's larger unknown area, some 35 cells farther, outweighs the near
+// block. At 0.05 per cell (the old default, SmallConfig) the near block wins, and the UAV went
+// from one nearest pocket of unknown to the next (docs/performance/mission.md, "A gentler path
+// cost").
+TEST(EroiUtility, TheDefaultPathCostLetsALargerUnknownAreaAFewMetresOnWin) {
+  const ExplorationLayers layers = TwoUnknownStrips();
+  EroiConfig config = SmallConfig();
+  config.lambda = EroiConfig{}.lambda;
+  ASSERT_DOUBLE_EQ(config.lambda, 0.01);
+  std::optional<EroiChoice> gentle = SelectEroiGoal(layers, {2, 15}, {}, config);
+  std::optional<EroiChoice> steep = SelectEroiGoal(layers, {2, 15}, {}, SmallConfig());
+  ASSERT_TRUE(gentle.has_value());
+  ASSERT_TRUE(steep.has_value());
+  EXPECT_EQ(gentle->eroi, 2);
+  EXPECT_EQ(steep->eroi, 0);
+  EXPECT_GT(gentle->gain, steep->gain);
+  EXPECT_GT(gentle->path_cells, steep->path_cells + 20.0);
+  EXPECT_NEAR(gentle->utility, gentle->gain / 3.0 * std::exp(-0.01 * gentle->path_cells), 1e-12);
 }
 
 TEST(EroiUtility, HighSemanticValueIgnoresPathCost) {

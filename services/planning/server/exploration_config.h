@@ -23,7 +23,10 @@ struct ExplorationConfig {
   int eroi_rays = 72;
   double eroi_ray_range_m = 5.0;
   double eroi_connect_radius_m = 3.0;
-  double eroi_lambda_per_m = 1.0;         // eq. 24 lambda
+  // eq. 24 lambda (the seed gives none): the utility halves every 3.5 m, as SEMANTIC_FRONTIER's
+  // next-best-view decay. At 1.0 (halving every 0.7 m) the UAV went to the nearest pocket of
+  // unknown, strip by strip (docs/performance/mission.md, "A gentler path cost").
+  double eroi_lambda_per_m = 0.2;
   double eroi_k = 0.8;                    // eq. 24 tau = k max s
   bool eroi_clues_pay_extra_path = true;  // between clues, the farther pays the extra path
   // Viewpoints revealing less unknown area are dropped: about a bench's footprint (1.1 m^2), the
