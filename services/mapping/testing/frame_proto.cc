@@ -33,10 +33,8 @@ v1::SensorFrame FrameToProto(const SensorFrame& f) {
   return p;
 }
 
-CameraPose StandardRoomViewpoint() { return LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0}); }
-
 v1::SensorFrame StandardRoomFrameWithTable(int64_t stamp_ns, const std::vector<float>& embedding) {
-  const CameraPose viewpoint = StandardRoomViewpoint();
+  const CameraPose viewpoint = LookAt({0.5, 2.0, 1.2}, {4.0, 2.0, 0.0});
   v1::SensorFrame frame = FrameToProto(RenderFrame(StandardRoom(), viewpoint, stamp_ns));
   const Intrinsics k = Vga();
   const Eigen::Vector3d c =

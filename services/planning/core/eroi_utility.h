@@ -18,7 +18,7 @@ struct EroiConfig {
   int rays = 72;                       // rays cast per viewpoint for the geometric gain
   double ray_range_cells = 100.0;      // sensor range (5 m at 5 cm)
   double connect_radius_cells = 60.0;  // roadmap edges up to this length
-  double lambda = 0.01;                // eq. 24 path-cost coefficient, per cell (0.2 per m)
+  double lambda = 0.01;                // eq. 24 path-cost coefficient, per cell (0.2 per m at 5 cm)
   double k = 0.8;                      // eq. 24 dynamic threshold tau = k max s
   int min_gain_cells = 0;              // viewpoints revealing fewer unknown cells are dropped
   // Clue viewpoints farther than the nearest clue viewpoint pay the path cost beyond it (false:
